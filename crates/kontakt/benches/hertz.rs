@@ -1,0 +1,52 @@
+//! Criterion benchmarks of the Hertz hot paths. Figures are recorded in
+//! docs/PERFORMANCE.md.
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use kontakt::hertz::{HertzPointContact, PointGeometry};
+use kontakt::material::ElasticMaterial;
+use std::hint::black_box;
+
+fn bench_point(c: &mut Criterion) {
+    let steel = ElasticMaterial::STEEL;
+    let mut g = c.benchmark_group("hertz_point");
+    // Exact elliptical solve from scratch: curvature, eccentricity inversion, solution.
+    // Deep-groove ball / inner race: B/A about 17, b/a about 0.12.
+    g.bench_function("elliptical_full_solve", |bch| {
+        bch.iter(|| {
+            let geo = PointGeometry::new(
+                black_box([6.0, 6.0]),
+                black_box([20.0, -6.24]),
+                black_box(0.0),
+            )
+            .expect("valid geometry");
+            let c = HertzPointContact::new(geo, steel, steel).expect("valid contact");
+            c.solve_force(black_box(1000.0)).expect("valid force")
+        })
+    });
+    // Circular: sphere on flat, full solve.
+    g.bench_function("circular_full_solve", |bch| {
+        bch.iter(|| {
+            let geo = PointGeometry::new(
+                black_box([6.35, 6.35]),
+                black_box([f64::INFINITY; 2]),
+                black_box(0.0),
+            )
+            .expect("valid geometry");
+            let c = HertzPointContact::new(geo, steel, steel).expect("valid contact");
+            c.solve_force(black_box(100.0)).expect("valid force")
+        })
+    });
+    // Planned contact: force from approach (the multi-body path).
+    let geo = PointGeometry::new([6.0, 6.0], [20.0, -6.24], 0.0).expect("valid geometry");
+    let planned = HertzPointContact::new(geo, steel, steel).expect("valid contact");
+    g.bench_function("force_from_approach_planned", |bch| {
+        bch.iter(|| planned.force_from_approach(black_box(0.01)).expect("valid"))
+    });
+    g.bench_function("solve_force_planned", |bch| {
+        bch.iter(|| planned.solve_force(black_box(1000.0)).expect("valid"))
+    });
+    g.finish();
+}
+
+criterion_group!(benches, bench_point);
+criterion_main!(benches);

@@ -1,0 +1,135 @@
+//! Error types of the library.
+//!
+//! Every public function that can receive bad input returns [`Result<T>`](Result). An
+//! error names the offending field, the value received and the valid range, so that a
+//! user (or the CLI, which only adds the flag name) can fix the input without reading code.
+
+use std::borrow::Cow;
+
+/// Result alias used throughout kontakt.
+pub type Result<T, E = Error> = std::result::Result<T, E>;
+
+/// Everything that can go wrong in kontakt.
+#[non_exhaustive]
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum Error {
+    /// A single input value is out of its valid range (or not finite).
+    #[error("invalid {field} = {value}: expected {expected}")]
+    InvalidInput {
+        /// Name of the field, e.g. `poisson_ratio` or `body1.radii[0]`.
+        field: Cow<'static, str>,
+        /// The value received, formatted for humans.
+        value: String,
+        /// The valid range, e.g. `-1 < nu <= 0.5`.
+        expected: Cow<'static, str>,
+    },
+    /// The geometry admits no Hertzian point contact: the relative curvature is not
+    /// positive in every direction (conformal surfaces, bodies that do not touch, or a
+    /// line contact that needs [`crate::hertz::line`]).
+    #[error("{field}: {reason}")]
+    Geometry {
+        /// The field or group of fields at fault, e.g. `radii`.
+        field: Cow<'static, str>,
+        /// What is wrong and how to fix it.
+        reason: String,
+    },
+    /// An iterative computation did not reach its tolerance.
+    #[error("{what} did not converge after {iterations} iterations (residual {residual:e})")]
+    NotConverged {
+        /// The computation that failed.
+        what: Cow<'static, str>,
+        /// Iterations performed.
+        iterations: usize,
+        /// Final residual in the computation's own (documented) measure.
+        residual: f64,
+    },
+}
+
+impl Error {
+    /// Build an [`Error::InvalidInput`].
+    pub fn invalid(
+        field: impl Into<Cow<'static, str>>,
+        value: impl std::fmt::Display,
+        expected: impl Into<Cow<'static, str>>,
+    ) -> Self {
+        Error::InvalidInput {
+            field: field.into(),
+            value: value.to_string(),
+            expected: expected.into(),
+        }
+    }
+
+    /// The field this error is about, if any.
+    pub fn field(&self) -> Option<&str> {
+        match self {
+            Error::InvalidInput { field, .. } | Error::Geometry { field, .. } => Some(field),
+            Error::NotConverged { .. } => None,
+        }
+    }
+
+    /// Rename the field with `f`, e.g. to prefix it with the body it belongs to
+    /// (`youngs_modulus` → `body1.youngs_modulus`) or to map it to a CLI flag.
+    #[must_use]
+    pub fn map_field(self, f: impl FnOnce(&str) -> String) -> Self {
+        match self {
+            Error::InvalidInput {
+                field,
+                value,
+                expected,
+            } => Error::InvalidInput {
+                field: f(&field).into(),
+                value,
+                expected,
+            },
+            Error::Geometry { field, reason } => Error::Geometry {
+                field: f(&field).into(),
+                reason,
+            },
+            other => other,
+        }
+    }
+}
+
+/// Check that `value` is finite and strictly positive.
+pub(crate) fn positive(field: &'static str, value: f64) -> Result<f64> {
+    if value.is_finite() && value > 0.0 {
+        Ok(value)
+    } else {
+        Err(Error::invalid(field, value, "a finite number > 0"))
+    }
+}
+
+/// Check that `value` is finite and not negative.
+pub(crate) fn non_negative(field: &'static str, value: f64) -> Result<f64> {
+    if value.is_finite() && value >= 0.0 {
+        Ok(value)
+    } else {
+        Err(Error::invalid(field, value, "a finite number >= 0"))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn message_names_field_value_and_range() {
+        let e = Error::invalid("poisson_ratio", 0.7, "-1 < nu <= 0.5");
+        assert_eq!(
+            e.to_string(),
+            "invalid poisson_ratio = 0.7: expected -1 < nu <= 0.5"
+        );
+        let e = e.map_field(|f| format!("body2.{f}"));
+        assert_eq!(e.field(), Some("body2.poisson_ratio"));
+    }
+
+    #[test]
+    fn helpers_reject_nan_inf_and_sign() {
+        assert!(positive("x", f64::NAN).is_err());
+        assert!(positive("x", f64::INFINITY).is_err());
+        assert!(positive("x", 0.0).is_err());
+        assert!(positive("x", 1e-300).is_ok());
+        assert!(non_negative("x", 0.0).is_ok());
+        assert!(non_negative("x", -1e-300).is_err());
+    }
+}

@@ -1,0 +1,169 @@
+//! Complete elliptic integrals in Carlson's symmetric form, as used by the exact Hertz
+//! solution.
+//!
+//! With the complementary modulus $k' = b/a$ and $y = k'^2$, Legendre's integrals are
+//! $K = R_F(0, y, 1)$ and $E = R_F(0,y,1) - \tfrac{m}{3}R_D(0,y,1)$ with $m = 1 - y$
+//! (DLMF 19.25.1). Hertz' equations (Johnson 1982 eq. 56) only need
+//!
+//! - $K - E = \tfrac{m}{3} R_D$,
+//! - $(a/b)^2 E - K = \tfrac{m}{y}\,(R_F - R_D/3)$,
+//!
+//! so the factor $m = e^2$ cancels and the shape equation (57) becomes
+//! $B/A = (3R_F - R_D)/(y\,R_D)$: free of cancellation from the circle ($y = 1$) to
+//! extremely thin ellipses. The integrals themselves come from `ellip` (about 1 ulp).
+
+use crate::error::{Error, Result};
+use std::f64::consts::PI;
+
+/// $R_F(0, y, 1)$ and $R_D(0, y, 1)$ for $y = (b/a)^2 \in (0, 1]$.
+///
+/// At $y = 1$ the exact values $\pi/2$ and $3\pi/4$ are returned, so that the circular
+/// contact falls out of the general solution exactly.
+pub(crate) fn rf_rd(y: f64) -> Result<(f64, f64)> {
+    if y == 1.0 {
+        return Ok((0.5 * PI, 0.75 * PI));
+    }
+    let map = |what: &'static str| {
+        move |msg: &'static str| Error::invalid(what, format!("y = {y} ({msg})"), "0 < y <= 1")
+    };
+    let rf = ellip::elliprf(0.0, y, 1.0).map_err(map("elliprf"))?;
+    let rd = ellip::elliprd(0.0, y, 1.0).map_err(map("elliprd"))?;
+    Ok((rf, rd))
+}
+
+/// The Hertz shape function $B/A = (3R_F - R_D)/(y R_D)$ of $y = (b/a)^2$ (Johnson 1982
+/// eq. 57 in Carlson form). Strictly decreasing from $+\infty$ at $y \to 0$ to 1 at $y = 1$.
+pub(crate) fn shape_ratio(y: f64) -> Result<f64> {
+    let (rf, rd) = rf_rd(y)?;
+    Ok((3.0 * rf - rd) / (y * rd))
+}
+
+/// Solve the shape equation $B/A = $ `ratio` for $k' = b/a \in (0, 1]$.
+///
+/// Safeguarded secant iteration on $u = \ln k'$, where $\ln(B/A)$ is nearly linear
+/// (slope between -1 and about -2), started from Hamrock and Brewe's fit
+/// $a/b \approx 1.0339\,(B/A)^{0.636}$. Converges to machine precision in 4-6 evaluations.
+///
+/// Returns the root and the number of function evaluations.
+pub(crate) fn invert_shape_ratio(ratio: f64) -> Result<(f64, usize)> {
+    if !(ratio.is_finite() && ratio >= 1.0) {
+        return Err(Error::invalid("B/A", ratio, "a finite ratio >= 1"));
+    }
+    if ratio <= 1.0 + 4.0 * f64::EPSILON {
+        return Ok((1.0, 0));
+    }
+    let target = ratio.ln();
+    let g = |u: f64| -> Result<f64> { Ok(shape_ratio((2.0 * u).exp())?.ln() - target) };
+    // Bracket: g(0) = -ln(ratio) < 0; g decreases in u. The lower end must have g > 0.
+    let mut hi = 0.0_f64;
+    let mut g_hi = -target;
+    // Initial guess from Hamrock & Brewe, clamped into the admissible range.
+    let mut u0 = -(1.0339_f64.ln() + 0.636 * target);
+    u0 = u0.min(-1e-9);
+    let mut g0 = g(u0)?;
+    let mut evals = 1;
+    let mut lo = f64::NEG_INFINITY;
+    let mut g_lo = f64::NAN;
+    if g0 > 0.0 {
+        lo = u0;
+        g_lo = g0;
+    } else {
+        hi = u0;
+        g_hi = g0;
+    }
+    // Second point: a step along the local slope estimate of -2 (thin) .. -1 (round).
+    let mut u1 = u0 + g0 / 1.6;
+    if u1 >= 0.0 {
+        u1 = 0.5 * u0;
+    }
+    let mut g1 = g(u1)?;
+    evals += 1;
+    for _ in 0..100 {
+        if g1 > 0.0 {
+            if u1 > lo {
+                lo = u1;
+                g_lo = g1;
+            }
+        } else if u1 < hi {
+            hi = u1;
+            g_hi = g1;
+        }
+        if g1 == 0.0 {
+            return Ok((u1.exp(), evals));
+        }
+        let slope = (g1 - g0) / (u1 - u0);
+        let mut u2 = u1 - g1 / slope;
+        // Safeguard: stay inside the bracket; bisect (or expand) otherwise.
+        if !(u2.is_finite() && u2 < hi && (lo == f64::NEG_INFINITY || u2 > lo)) {
+            u2 = if lo.is_finite() {
+                // Regula falsi step inside the bracket.
+                lo - g_lo * (hi - lo) / (g_hi - g_lo)
+            } else {
+                hi - 2.0 * (hi - u1).abs().max(1.0)
+            };
+        }
+        if (u2 - u1).abs() <= 4.0 * f64::EPSILON * u1.abs().max(1e-300) {
+            return Ok((u2.exp(), evals));
+        }
+        u0 = u1;
+        g0 = g1;
+        u1 = u2;
+        g1 = g(u1)?;
+        evals += 1;
+        if g1.abs() <= 2.0 * f64::EPSILON * target.abs().max(1.0) {
+            return Ok((u1.exp(), evals));
+        }
+    }
+    Err(Error::NotConverged {
+        what: "Hertz eccentricity inversion (Johnson 1982 eq. 57)".into(),
+        iterations: evals,
+        residual: g1.abs(),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+
+    #[test]
+    fn legendre_identities() {
+        // K and E from Carlson agree with ellip's Legendre forms. Legendre's form takes
+        // m = 1 - k'^2, which rounds away the information in a small k': at k' = 1e-3 the
+        // Legendre value itself is only good to ~1e-11 (the reason we use Carlson's form).
+        for &(kp, tol) in &[(0.9, 1e-14), (0.5, 1e-14), (0.1, 1e-14), (1e-3, 1e-10)] {
+            let y: f64 = kp * kp;
+            let m = 1.0 - y;
+            let (rf, rd) = rf_rd(y).unwrap();
+            assert_relative_eq!(rf, ellip::ellipk(m).unwrap(), max_relative = tol);
+            assert_relative_eq!(
+                rf - m / 3.0 * rd,
+                ellip::ellipe(m).unwrap(),
+                max_relative = tol
+            );
+        }
+        assert_relative_eq!(shape_ratio(1.0).unwrap(), 1.0, max_relative = 1e-15);
+        // Continuity of the exact y = 1 branch.
+        assert_relative_eq!(shape_ratio(1.0 - 1e-12).unwrap(), 1.0, max_relative = 1e-11);
+    }
+
+    #[test]
+    fn inversion_round_trips_over_the_range() {
+        let mut max_evals = 0;
+        for i in 0..=400 {
+            let kp = 10f64.powf(-(i as f64) * 4.5 / 400.0);
+            let r = shape_ratio(kp * kp).unwrap();
+            let (k, evals) = invert_shape_ratio(r).unwrap();
+            max_evals = max_evals.max(evals);
+            assert_relative_eq!(k, kp, max_relative = 2e-13);
+        }
+        assert!(max_evals <= 8, "max evaluations {max_evals}");
+    }
+
+    #[test]
+    fn rejects_bad_ratio() {
+        assert!(invert_shape_ratio(0.5).is_err());
+        assert!(invert_shape_ratio(f64::NAN).is_err());
+        assert!(invert_shape_ratio(f64::INFINITY).is_err());
+    }
+}

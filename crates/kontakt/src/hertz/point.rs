@@ -1,0 +1,312 @@
+//! The exact Hertz solution for elliptical (and, as a special case, circular) point
+//! contact, with complete elliptic integrals.
+//!
+//! # Formulas
+//! With $k' = b/a \le 1$, $y = k'^2$ and Carlson's $R_F = R_F(0,y,1) = K(e)$,
+//! $R_D = R_D(0,y,1)$, Johnson's (1982) eqs (56a-c), (57) become
+//!
+//! $$\frac{B}{A} = \frac{3R_F - R_D}{y\,R_D},\qquad
+//! a^3 = \frac{F\,R_D}{2\pi E^* A},\qquad b = k'a,\qquad
+//! p_0 = \frac{3F}{2\pi ab},\qquad \delta = \frac{3F R_F}{2\pi a E^*}.$$
+//!
+//! The shape $k'$ depends only on the geometry, so [`HertzPointContact::new`] solves it once
+//! and every later call is a cube root: plan once, solve many. The derivation is written
+//! out in `docs/hertz.md`.
+//!
+//! # Assumptions
+//! Linear elastic, isotropic, homogeneous half-spaces (contact size ≪ radii), frictionless,
+//! quadratic gap (Johnson 1982 §1). Dissimilar materials are treated through $E^*$ only;
+//! the Dundurs coupling (beta ≠ 0) is neglected, as in Hertz' theory.
+//!
+//! # References
+//! - Hertz (1882), J. reine angew. Math. 92, 156-171.
+//! - Johnson (1982), "One hundred years of Hertz contact", Proc. IMechE 196, 363-378,
+//!   Appendix 1, eqs (50)-(61). doi:10.1243/PIME_PROC_1982_196_039_02
+//! - Johnson, *Contact Mechanics* (1985), §3.5, eqs (3.63)-(3.72).
+//! - Carlson (1995), Numer. Algorithms 10, 13-26; DLMF §19.25.
+
+use super::elliptic;
+use crate::error::{Error, Result};
+use crate::geometry::{Grid2, RelativeCurvature};
+use crate::material::{ElasticMaterial, effective_modulus};
+use crate::units::{Megapascal, Millimetre, Newton, Radian};
+use serde::Serialize;
+use std::f64::consts::PI;
+
+/// The undeformed geometry of a point contact: both bodies' principal radii and the angle
+/// between their principal planes (see the crate *Conventions*).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct PointGeometry {
+    body1_radii: [Millimetre; 2],
+    body2_radii: [Millimetre; 2],
+    angle: Radian,
+    curvature: RelativeCurvature,
+}
+
+impl PointGeometry {
+    /// Two bodies by their principal radii of curvature [mm] (convex > 0, concave < 0,
+    /// `f64::INFINITY` for flat) and the angle `angle` [rad] from body 1's first principal
+    /// direction to body 2's.
+    ///
+    /// # Errors
+    /// See [`RelativeCurvature::from_radii`]: zero/NaN radii, a non-finite angle, and
+    /// geometries that are conformal, separate or line contacts.
+    pub fn new(body1_radii: [Millimetre; 2], body2_radii: [Millimetre; 2], angle: Radian) -> Result<Self> {
+        let curvature = RelativeCurvature::from_radii(body1_radii, body2_radii, angle)?;
+        Ok(PointGeometry {
+            body1_radii,
+            body2_radii,
+            angle,
+            curvature,
+        })
+    }
+
+    /// A sphere of radius `radius` [mm] (> 0) on a flat.
+    ///
+    /// # Errors
+    /// A non-positive or non-finite radius.
+    pub fn sphere_on_flat(radius: Millimetre) -> Result<Self> {
+        crate::error::positive("radius", radius)?;
+        Self::new([radius; 2], [f64::INFINITY; 2], 0.0)
+    }
+
+    /// A geometry given directly by its relative curvature (for example the local
+    /// curvature of a substitute geometry). The body radii are then reported as
+    /// body 1 = (1/(2A), 1/(2B)) rotated by the orientation, body 2 flat.
+    pub fn from_curvature(curvature: RelativeCurvature) -> Self {
+        PointGeometry {
+            body1_radii: [0.5 / curvature.a_coef, 0.5 / curvature.b_coef],
+            body2_radii: [f64::INFINITY; 2],
+            angle: 0.0,
+            curvature,
+        }
+    }
+
+    /// Principal radii of body 1 [mm].
+    pub fn body1_radii(&self) -> [Millimetre; 2] {
+        self.body1_radii
+    }
+    /// Principal radii of body 2 [mm].
+    pub fn body2_radii(&self) -> [Millimetre; 2] {
+        self.body2_radii
+    }
+    /// Angle between the principal planes [rad].
+    pub fn angle(&self) -> Radian {
+        self.angle
+    }
+    /// The relative curvature A <= B and its orientation.
+    pub fn curvature(&self) -> RelativeCurvature {
+        self.curvature
+    }
+}
+
+/// A planned Hertz point contact: geometry, materials and the solved ellipse shape.
+///
+/// Constructing it inverts the shape equation once (about 0.3 µs); afterwards
+/// [`solve_force`](Self::solve_force) and [`solve_approach`](Self::solve_approach) cost a
+/// cube root each, which is what a multi-body simulation needs.
+///
+/// # Example
+/// A ball (R = 6 mm) in a groove of conformity 0.52 (groove radius -6.24 mm) of a ring
+/// whose raceway radius is 20 mm, 1000 N, steel:
+/// ```
+/// use kontakt::{hertz::{HertzPointContact, PointGeometry}, material::ElasticMaterial};
+/// let g = PointGeometry::new([6.0, 6.0], [20.0, -6.24], 0.0)?;
+/// let c = HertzPointContact::new(g, ElasticMaterial::STEEL, ElasticMaterial::STEEL)?;
+/// let s = c.solve_force(1000.0)?;
+/// assert!(s.semi_axes[0] > 3.0 * s.semi_axes[1]);   // long ellipse across the groove
+/// let f = c.force_from_approach(s.approach)?;        // inverse pair round-trips
+/// assert!((f - 1000.0).abs() < 1e-9);
+/// # Ok::<(), kontakt::Error>(())
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct HertzPointContact {
+    geometry: PointGeometry,
+    materials: [ElasticMaterial; 2],
+    e_star: Megapascal,
+    /// b/a.
+    axis_ratio: f64,
+    /// Semi-major axis at F = 1 N [mm].
+    a_unit: Millimetre,
+    /// Approach at F = 1 N [mm].
+    delta_unit: Millimetre,
+    /// Evaluations the shape inversion took.
+    shape_evaluations: usize,
+}
+
+/// The state of a Hertz point contact at one load.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct HertzPointSolution {
+    /// Semi-axes [a, b] of the contact ellipse [mm], a >= b.
+    pub semi_axes: [Millimetre; 2],
+    /// Angle from body 1's first principal direction to the major semi-axis a [rad].
+    pub orientation: Radian,
+    /// Normal force F [N].
+    pub force: Newton,
+    /// Approach delta of distant points [mm].
+    pub approach: Millimetre,
+    /// Maximum (central) pressure p0 = 3F / (2 pi a b) [MPa].
+    pub max_pressure: Megapascal,
+    /// Mean pressure F / (pi a b) = 2 p0 / 3 [MPa].
+    pub mean_pressure: Megapascal,
+    /// Contact area pi a b [mm²].
+    pub contact_area: f64,
+    /// Contact stiffness dF/d(delta) = 3F / (2 delta) [N/mm].
+    pub stiffness: f64,
+}
+
+impl HertzPointContact {
+    /// Plan a contact: validate, compute E* and solve the ellipse shape (eq. 57).
+    ///
+    /// # Errors
+    /// Only the shape inversion can fail (never observed for B/A in its valid range);
+    /// the geometry and materials are validated by their own constructors.
+    pub fn new(geometry: PointGeometry, body1: ElasticMaterial, body2: ElasticMaterial) -> Result<Self> {
+        let k = geometry.curvature;
+        let e_star = effective_modulus(&body1, &body2);
+        let (axis_ratio, shape_evaluations) = elliptic::invert_shape_ratio(k.ratio())?;
+        let (rf, rd) = elliptic::rf_rd(axis_ratio * axis_ratio)?;
+        let a_unit = (rd / (2.0 * PI * e_star * k.a_coef)).cbrt();
+        let delta_unit = 3.0 * rf / (2.0 * PI * a_unit * e_star);
+        Ok(HertzPointContact {
+            geometry,
+            materials: [body1, body2],
+            e_star,
+            axis_ratio,
+            a_unit,
+            delta_unit,
+            shape_evaluations,
+        })
+    }
+
+    /// The geometry this contact was planned for.
+    pub fn geometry(&self) -> &PointGeometry {
+        &self.geometry
+    }
+    /// The two materials.
+    pub fn materials(&self) -> [ElasticMaterial; 2] {
+        self.materials
+    }
+    /// Contact modulus E* [MPa].
+    pub fn e_star(&self) -> Megapascal {
+        self.e_star
+    }
+    /// Axis ratio b/a of the contact ellipse (load independent).
+    pub fn axis_ratio(&self) -> f64 {
+        self.axis_ratio
+    }
+    /// Eccentricity e = sqrt(1 - (b/a)²).
+    pub fn eccentricity(&self) -> f64 {
+        ((1.0 - self.axis_ratio) * (1.0 + self.axis_ratio)).sqrt()
+    }
+    /// Number of shape-function evaluations the eccentricity inversion used.
+    pub fn shape_evaluations(&self) -> usize {
+        self.shape_evaluations
+    }
+    /// Load coefficient k of the force law F = k delta^(3/2) [N/mm^1.5].
+    pub fn load_coefficient(&self) -> f64 {
+        self.delta_unit.powf(-1.5)
+    }
+
+    /// Approach [mm] for a normal force `force` [N] (> 0, finite).
+    ///
+    /// # Errors
+    /// Non-positive or non-finite force.
+    pub fn approach_from_force(&self, force: Newton) -> Result<Millimetre> {
+        crate::error::positive("force", force)?;
+        Ok(self.delta_unit * force.cbrt().powi(2))
+    }
+
+    /// Normal force [N] for an approach `approach` [mm] (> 0, finite):
+    /// $F = (\delta/\delta_1)^{3/2}$ with $\delta_1$ the approach at 1 N.
+    ///
+    /// # Errors
+    /// Non-positive or non-finite approach.
+    pub fn force_from_approach(&self, approach: Millimetre) -> Result<Newton> {
+        crate::error::positive("approach", approach)?;
+        let r = approach / self.delta_unit;
+        Ok(r * r.sqrt())
+    }
+
+    /// Full solution for a normal force `force` [N] (> 0, finite).
+    ///
+    /// # Errors
+    /// Non-positive or non-finite force.
+    pub fn solve_force(&self, force: Newton) -> Result<HertzPointSolution> {
+        crate::error::positive("force", force)?;
+        Ok(self.solution(force))
+    }
+
+    /// Full solution for an approach `approach` [mm] (> 0, finite).
+    ///
+    /// # Errors
+    /// Non-positive or non-finite approach.
+    pub fn solve_approach(&self, approach: Millimetre) -> Result<HertzPointSolution> {
+        let force = self.force_from_approach(approach)?;
+        let mut s = self.solution(force);
+        s.approach = approach;
+        Ok(s)
+    }
+
+    /// Maximum pressure at a force of 1 N [MPa]; p0 scales as F^(1/3).
+    pub fn max_pressure_at_unit_force(&self) -> Megapascal {
+        self.solution(1.0).max_pressure
+    }
+
+    fn solution(&self, force: Newton) -> HertzPointSolution {
+        let c = force.cbrt();
+        let a = self.a_unit * c;
+        let b = self.axis_ratio * a;
+        let area = PI * a * b;
+        let mean_pressure = force / area;
+        let approach = self.delta_unit * c * c;
+        HertzPointSolution {
+            semi_axes: [a, b],
+            orientation: self.geometry.curvature.orientation,
+            force,
+            approach,
+            max_pressure: 1.5 * mean_pressure,
+            mean_pressure,
+            contact_area: area,
+            stiffness: 1.5 * force / approach,
+        }
+    }
+}
+
+impl HertzPointSolution {
+    /// Hertz pressure [MPa] at the point (x, y) [mm] of the contact frame (x along body 1's
+    /// first principal direction):
+    /// $p = p_0\sqrt{1 - (x'/a)^2 - (y'/b)^2}$ inside the ellipse, 0 outside
+    /// (Johnson 1982 eq. 54).
+    pub fn pressure_at(&self, x: Millimetre, y: Millimetre) -> Megapascal {
+        let (s, c) = self.orientation.sin_cos();
+        let xp = c * x + s * y;
+        let yp = -s * x + c * y;
+        let [a, b] = self.semi_axes;
+        let r2 = (xp / a).powi(2) + (yp / b).powi(2);
+        if r2 < 1.0 {
+            self.max_pressure * (1.0 - r2).sqrt()
+        } else {
+            0.0
+        }
+    }
+
+    /// Pressure [MPa] sampled at every point of `grid`, row-major with x fastest.
+    pub fn sample_pressure(&self, grid: &Grid2) -> Vec<Megapascal> {
+        grid.points().map(|(x, y)| self.pressure_at(x, y)).collect()
+    }
+
+    /// Pressure sampled into a caller-provided buffer (no allocation).
+    ///
+    /// # Errors
+    /// `out.len()` differs from `grid.len()`.
+    pub fn sample_pressure_into(&self, grid: &Grid2, out: &mut [Megapascal]) -> Result<()> {
+        if out.len() != grid.len() {
+            return Err(Error::invalid("out.len()", out.len(), format!("{} (the grid size)", grid.len())));
+        }
+        for (o, (x, y)) in out.iter_mut().zip(grid.points()) {
+            *o = self.pressure_at(x, y);
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,90 @@
+//! # kontakt — contact mechanics for rolling bearings
+//!
+//! kontakt computes the contact between elastic bodies the way a bearing engineer needs it:
+//! exact Hertz theory (circular, elliptical, line), subsurface stresses and first yield,
+//! impact and adhesion; and, in the modules that follow, the PimP method for the roller
+//! end face against the rib, a coupled elastic half-space solver, tangential contact and
+//! traction curves, and bearing kinematics.
+//!
+//! The API takes and returns plain data, holds no global state and never panics on user
+//! input: every fallible function returns [`Result`]. Plan-once / solve-many types such as
+//! [`hertz::HertzPointContact`] let a multi-body simulation evaluate a contact millions of
+//! times cheaply.
+//!
+//! ## Quick example
+//! A 12.7 mm steel ball (radius 6.35 mm) pressed onto a flat steel plate with 100 N:
+//! ```
+//! use kontakt::{hertz::{HertzPointContact, PointGeometry}, material::ElasticMaterial};
+//! let geometry = PointGeometry::new([6.35, 6.35], [f64::INFINITY, f64::INFINITY], 0.0)?;
+//! let steel = ElasticMaterial::STEEL;
+//! let contact = HertzPointContact::new(geometry, steel, steel)?;
+//! let s = contact.solve_force(100.0)?;
+//! assert!((s.max_pressure - 2_478.2).abs() < 0.5);   // MPa
+//! assert!((s.semi_axes[0] - 0.13889).abs() < 1e-4);    // mm
+//! # Ok::<(), kontakt::Error>(())
+//! ```
+//!
+//! ## Conventions
+//! These definitions hold for the whole crate; every module refers back here.
+//!
+//! **Units.** millimetre, newton, megapascal (N/mm²), second, radian. Derived: energy in
+//! N·mm (= mJ), stiffness in N/mm, mass in tonnes (N·s²/mm), density in t/mm³ (steel
+//! 7.85e-9), surface energy in N/mm (1 J/m² = 1e-3 N/mm). See [`units`]. Nothing inside
+//! the library converts units.
+//!
+//! **Curvature signs.** A principal radius of curvature is *positive for a convex*
+//! surface (a ball), *negative for a concave* one (a bearing groove, the inner side of an
+//! outer race) and `f64::INFINITY` (either sign) for a flat direction. A radius of zero is
+//! invalid.
+//!
+//! **Contact frame.** Origin at the first point of contact, `z` along the common normal
+//! pointing *into* body 1 (so depth below the surface of body 1 is positive `z`), `x` along
+//! the first principal direction of body 1, `y = z × x`. The angle between the principal
+//! planes, `theta`, turns body 1's first principal direction into body 2's, positive
+//! counter-clockwise about `z`. The separation of the undeformed surfaces is
+//! `h(x, y) = A x'² + B y'²` with `A <= B` in the principal frame `x', y'` of the relative
+//! curvature; the contact ellipse's major semi-axis `a` lies along `x'` (the direction of
+//! *least* relative curvature) and the minor `b` along `y'`. Its orientation is reported
+//! as the angle from `x` to `x'`.
+//!
+//! **Loading.** The approach `delta` is the distance by which distant points of the two
+//! bodies move together; positive when the bodies are pressed into each other. The normal
+//! force `F` is positive in compression. Pressure is positive in compression.
+//! Stresses follow the elasticity convention: *tension positive*, so contact stresses
+//! below the surface are negative (as in Johnson 1982, eqs 20a/b).
+//!
+//! **Moduli.** Each is defined once in [`material`]: Young's modulus `E`, Poisson's ratio
+//! `nu` (-1 < nu <= 0.5), shear modulus `G = E / (2(1+nu))`, contact modulus
+//! `1/E* = (1-nu1²)/E1 + (1-nu2²)/E2` (Hamrock's `E'` is `2 E*`), Dundurs' `alpha` and
+//! `beta`. A parameter never changes its meaning depending on another argument.
+//!
+//! ## Modules
+//! | module | what | status |
+//! |---|---|---|
+//! | [`material`] | elastic materials, E*, G, Dundurs' parameters | done |
+//! | [`geometry`] | principal curvatures, relative curvature, sampling grids | curvature & grids done; analytic surfaces and ray tracing come with the PimP issue |
+//! | [`hertz`] | exact point (elliptical/circular) and line contact, approximations, subsurface stress and yield, impact, JKR adhesion | done |
+//! | [`io`] | serde case files (TOML) and stable, unit-suffixed result records (JSON) | Hertz cases |
+//!
+//! Planned, each in its own module with the same conventions: `pimp` (roller end / rib,
+//! Winkler bedding), `halfspace` (FFT boundary elements), `tangential` (Cattaneo-Mindlin,
+//! Carter, Kalker, FASTSIM), `bearing` (roller-end/rib geometry and kinematics) and
+//! `plot`. See `ARCHITECTURE.md`.
+//!
+//! ## References
+//! The bibliography is in `docs/references.md`; each item's docs cite equation numbers.
+
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+pub mod error;
+pub mod geometry;
+pub mod hertz;
+pub mod io;
+pub mod material;
+pub mod units;
+
+pub use error::{Error, Result};
+
+/// The version of this crate, echoed in every serialized result.
+pub const VERSION: &str = env!("CARGO_PKG_VERSION");
