@@ -128,11 +128,14 @@ impl RelativeCurvature {
         let lambda_max = mean + dev;
         // The smaller eigenvalue from the determinant avoids cancellation in mean - dev
         // when the contact is long and thin.
-        let lambda_min = if lambda_max > 0.0 {
-            (kxx * kyy - kxy * kxy) / lambda_max
+        let lambda_min = if kxy == 0.0 {
+            kxx.min(kyy)
+        } else if lambda_max > 0.0 {
+            ((kxx * kyy - kxy * kxy) / lambda_max).min(lambda_max)
         } else {
             mean - dev
         };
+        let lambda_max = if kxy == 0.0 { kxx.max(kyy) } else { lambda_max };
         // Direction of lambda_min: perpendicular to the major eigenvector.
         let phi_max = 0.5 * kxy.atan2(half_diff);
         let mut orientation = phi_max + std::f64::consts::FRAC_PI_2;

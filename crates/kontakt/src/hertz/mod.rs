@@ -15,4 +15,4 @@ pub mod line;
 pub mod point;
 pub mod subsurface;
 
-pub use point::{HertzPointContact, HertzPointSolution, PointGeometry};
+pub use point::{HertzPointContact, HertzPointSolution, PointGeometry, curvature_ratio};

@@ -33,6 +33,19 @@ use crate::units::{Megapascal, Millimetre, Newton, Radian};
 use serde::Serialize;
 use std::f64::consts::PI;
 
+/// The Hertz shape function: the curvature ratio $B/A = R'/R''$ that produces a contact
+/// ellipse of axis ratio `axis_ratio` $= b/a \in (0, 1]$ (Johnson 1982 eq. 57, in the
+/// cancellation-free Carlson form of `docs/hertz.md`). [`HertzPointContact::new`] inverts it.
+///
+/// # Errors
+/// `axis_ratio` outside (0, 1].
+pub fn curvature_ratio(axis_ratio: f64) -> Result<f64> {
+    if !(axis_ratio > 0.0 && axis_ratio <= 1.0) {
+        return Err(Error::invalid("axis_ratio", axis_ratio, "0 < b/a <= 1"));
+    }
+    elliptic::shape_ratio(axis_ratio * axis_ratio)
+}
+
 /// The undeformed geometry of a point contact: both bodies' principal radii and the angle
 /// between their principal planes (see the crate *Conventions*).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]

@@ -1,1 +1,11 @@
-//! Work in progress (being written in this change).
+//! Case files (TOML) and result reports (JSON) with stable, unit-suffixed keys.
+//!
+//! The CLI and the Python bindings are thin shells over [`case::CaseFile`] →
+//! [`run_case`] → [`report::ContactReport`]. The schema is documented in
+//! `docs/case-schema.md` and shown by the files in `examples/`.
+
+pub mod case;
+pub mod report;
+
+pub use case::CaseFile;
+pub use report::{ContactReport, run_case};

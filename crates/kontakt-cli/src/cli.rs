@@ -1,0 +1,92 @@
+//! Command-line definitions (raw arguments). Validation happens in the library.
+
+use clap::{Args, Parser, Subcommand};
+use std::path::PathBuf;
+
+/// Contact mechanics for rolling bearings. Units: mm, N, MPa.
+#[derive(Debug, Parser)]
+#[command(
+    name = "kontakt",
+    version,
+    about,
+    after_help = "Exit status: 0 success, 1 computation failed (e.g. not converged), 2 bad input.\n\
+                  Conventions: radii convex > 0, concave < 0, `inf` for flat; stresses tension positive."
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Hertz point-contact calculator (exact elliptical solution).
+    Hertz(HertzArgs),
+    /// Solve a case described in a TOML file (schema: docs/case-schema.md).
+    Solve(SolveArgs),
+    /// Run the built-in demonstration cases and print a summary table.
+    Demo(DemoArgs),
+}
+
+#[derive(Debug, Args)]
+#[command(group(clap::ArgGroup::new("load").required(true).args(["force", "approach"])))]
+pub struct HertzArgs {
+    /// Principal radii of body 1 [mm], "RX,RY": convex > 0, concave < 0, `inf` for flat.
+    #[arg(long, value_name = "RX,RY", value_delimiter = ',', allow_hyphen_values = true, required = true)]
+    pub body1_radii: Vec<f64>,
+    /// Principal radii of body 2 [mm], "RX,RY": convex > 0, concave < 0, `inf` for flat.
+    #[arg(long, value_name = "RX,RY", value_delimiter = ',', allow_hyphen_values = true, required = true)]
+    pub body2_radii: Vec<f64>,
+    /// Angle between the principal planes of the bodies [deg], finite.
+    #[arg(long, value_name = "DEG", default_value_t = 0.0, allow_hyphen_values = true)]
+    pub angle_deg: f64,
+    /// Young's modulus of body 1 [MPa], > 0.
+    #[arg(long, value_name = "MPA", default_value_t = 210_000.0, allow_hyphen_values = true)]
+    pub e1: f64,
+    /// Poisson's ratio of body 1, -1 < nu <= 0.5.
+    #[arg(long, value_name = "NU", default_value_t = 0.3, allow_hyphen_values = true)]
+    pub nu1: f64,
+    /// Young's modulus of body 2 [MPa], > 0.
+    #[arg(long, value_name = "MPA", default_value_t = 210_000.0, allow_hyphen_values = true)]
+    pub e2: f64,
+    /// Poisson's ratio of body 2, -1 < nu <= 0.5.
+    #[arg(long, value_name = "NU", default_value_t = 0.3, allow_hyphen_values = true)]
+    pub nu2: f64,
+    /// Normal force [N], > 0 (or give --approach).
+    #[arg(long, value_name = "N", allow_hyphen_values = true)]
+    pub force: Option<f64>,
+    /// Approach of distant points [mm], > 0 (or give --force).
+    #[arg(long, value_name = "MM", allow_hyphen_values = true)]
+    pub approach: Option<f64>,
+    /// Yield stress of the weaker body [MPa], > 0: reports the first-yield load.
+    #[arg(long, value_name = "MPA", allow_hyphen_values = true)]
+    pub yield_stress: Option<f64>,
+    /// Yield criterion for --yield-stress.
+    #[arg(long, value_enum, default_value_t = Criterion::VonMises)]
+    pub criterion: Criterion,
+    /// Print one JSON document instead of the table.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Debug, Clone, Copy, clap::ValueEnum)]
+pub enum Criterion {
+    VonMises,
+    Tresca,
+}
+
+#[derive(Debug, Args)]
+pub struct SolveArgs {
+    /// Case file (TOML), or `-` for standard input.
+    #[arg(value_name = "CASE.toml")]
+    pub case: PathBuf,
+    /// Print one JSON document instead of the table.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Debug, Args)]
+pub struct DemoArgs {
+    /// Print the demo results as a JSON array instead of the table.
+    #[arg(long)]
+    pub json: bool,
+}

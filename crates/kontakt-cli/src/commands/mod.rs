@@ -1,0 +1,116 @@
+//! Subcommands: turn arguments into library cases, run them, print.
+
+use crate::cli::{Cli, Command, Criterion, HertzArgs};
+use crate::output;
+use anyhow::{Context, Result};
+use kontakt::hertz::subsurface::YieldCriterion;
+use kontakt::io::case::{BodySpec, CaseFile, ContactKind, ContactSpec, LoadSpec, Method, YieldSpec};
+use kontakt::io::run_case;
+use std::io::{Read, Write};
+
+/// Bad input detected by the CLI itself (unreadable file).
+#[derive(Debug, thiserror::Error)]
+#[error("{0}")]
+pub struct InputError(pub String);
+
+/// The built-in demonstration cases: the files in `examples/`, compiled in.
+pub const DEMO_CASES: [(&str, &str); 6] = [
+    ("ball_on_flat.toml", include_str!("../../../../examples/ball_on_flat.toml")),
+    ("ball_inner_race.toml", include_str!("../../../../examples/ball_inner_race.toml")),
+    ("ball_outer_race.toml", include_str!("../../../../examples/ball_outer_race.toml")),
+    ("ceramic_ball.toml", include_str!("../../../../examples/ceramic_ball.toml")),
+    ("crossed_cylinders.toml", include_str!("../../../../examples/crossed_cylinders.toml")),
+    ("roller_line.toml", include_str!("../../../../examples/roller_line.toml")),
+];
+
+pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
+    match &cli.command {
+        Command::Hertz(args) => {
+            let case = hertz_case(args);
+            let report = run_case(&case).map_err(|e| e.map_field(flag_for_field))?;
+            output::print_report(out, &report, args.json)
+        }
+        Command::Solve(args) => {
+            let (label, text) = if args.case.as_os_str() == "-" {
+                let mut s = String::new();
+                std::io::stdin()
+                    .read_to_string(&mut s)
+                    .map_err(|e| InputError(format!("cannot read the case from stdin: {e}")))?;
+                ("<stdin>".to_string(), s)
+            } else {
+                let label = args.case.display().to_string();
+                let text = std::fs::read_to_string(&args.case)
+                    .map_err(|e| InputError(format!("cannot read case file {label}: {e}")))?;
+                (label, text)
+            };
+            let case = CaseFile::from_toml_str(&text).with_context(|| label.clone())?;
+            let report = run_case(&case).with_context(|| label.clone())?;
+            output::print_report(out, &report, args.json)
+        }
+        Command::Demo(args) => {
+            let mut reports = Vec::new();
+            for (file, text) in DEMO_CASES {
+                let case = CaseFile::from_toml_str(text).with_context(|| file.to_string())?;
+                reports.push(run_case(&case).with_context(|| file.to_string())?);
+            }
+            output::print_demo(out, &reports, args.json)
+        }
+    }
+}
+
+fn hertz_case(a: &HertzArgs) -> CaseFile {
+    CaseFile {
+        name: None,
+        method: Method::Hertz,
+        contact: ContactSpec {
+            kind: ContactKind::Point,
+            angle_deg: a.angle_deg,
+            length_mm: None,
+        },
+        body1: BodySpec {
+            radii_mm: a.body1_radii.clone(),
+            e_mpa: a.e1,
+            nu: a.nu1,
+        },
+        body2: BodySpec {
+            radii_mm: a.body2_radii.clone(),
+            e_mpa: a.e2,
+            nu: a.nu2,
+        },
+        load: LoadSpec {
+            force_n: a.force,
+            approach_mm: a.approach,
+            line_load_n_per_mm: None,
+        },
+        yield_check: a.yield_stress.map(|stress_mpa| YieldSpec {
+            stress_mpa,
+            criterion: match a.criterion {
+                Criterion::VonMises => YieldCriterion::VonMises,
+                Criterion::Tresca => YieldCriterion::Tresca,
+            },
+        }),
+    }
+}
+
+/// Map case-file keys to the `hertz` subcommand's flags for error messages.
+fn flag_for_field(field: &str) -> String {
+    let flag = if field.starts_with("body1.radii") {
+        "--body1-radii"
+    } else if field.starts_with("body2.radii") {
+        "--body2-radii"
+    } else {
+        match field {
+            "body1.e_mpa" => "--e1",
+            "body1.nu" => "--nu1",
+            "body2.e_mpa" => "--e2",
+            "body2.nu" => "--nu2",
+            "load.force_n" => "--force",
+            "load.approach_mm" => "--approach",
+            "contact.angle_deg" => "--angle-deg",
+            "yield.stress_mpa" => "--yield-stress",
+            "radii" => "--body1-radii/--body2-radii",
+            other => other,
+        }
+    };
+    flag.to_string()
+}

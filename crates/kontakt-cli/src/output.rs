@@ -1,0 +1,147 @@
+//! Human tables and JSON output.
+
+use anyhow::Result;
+use kontakt::io::ContactReport;
+use kontakt::io::case::ContactKind;
+use std::io::Write;
+
+fn opt(v: Option<f64>, prec: usize) -> String {
+    v.map_or_else(|| "-".to_string(), |x| fmt_num(x, prec))
+}
+
+/// Significant-digit formatting that stays readable for mm-scale and MPa-scale values.
+fn fmt_num(x: f64, sig: usize) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return format!("{x}");
+    }
+    let mag = x.abs().log10().floor() as i32;
+    if !(-4..7).contains(&mag) {
+        return format!("{x:.*e}", sig.saturating_sub(1));
+    }
+    let decimals = (sig as i32 - 1 - mag).max(0) as usize;
+    format!("{x:.decimals$}")
+}
+
+fn radii(r: &[f64]) -> String {
+    r.iter().map(|x| fmt_num(*x, 6)).collect::<Vec<_>>().join(", ")
+}
+
+/// One report as a two-column table, or as pretty JSON.
+pub fn print_report(out: &mut impl Write, r: &ContactReport, json: bool) -> Result<()> {
+    if json {
+        serde_json::to_writer_pretty(&mut *out, r)?;
+        writeln!(out)?;
+        return Ok(());
+    }
+    let title = match r.kind {
+        ContactKind::Point => "Hertz point contact (exact elliptical solution)",
+        ContactKind::Line => "Hertz line contact",
+    };
+    let name = r.name.as_deref().map(|n| format!(": {n}")).unwrap_or_default();
+    writeln!(out, "kontakt {} — {title}{name}", r.kontakt_version)?;
+    let i = &r.inputs;
+    let mut rows: Vec<(&str, String, &str)> = vec![
+        ("body 1 radii", radii(&i.body1_radii_mm), "mm"),
+        ("body 2 radii", radii(&i.body2_radii_mm), "mm"),
+        ("E1, nu1", format!("{}, {}", i.e1_mpa, i.nu1), "MPa, -"),
+        ("E2, nu2", format!("{}, {}", i.e2_mpa, i.nu2), "MPa, -"),
+        ("contact modulus E*", fmt_num(r.e_star_mpa, 7), "MPa"),
+    ];
+    match r.kind {
+        ContactKind::Point => {
+            rows.push(("angle between principal planes", format!("{}", i.angle_deg), "deg"));
+            rows.push((
+                "relative curvature A, B",
+                format!(
+                    "{}, {}",
+                    fmt_num(r.relative_curvature_per_mm[0], 6),
+                    fmt_num(r.relative_curvature_per_mm[1], 6)
+                ),
+                "1/mm",
+            ));
+            rows.push(("normal force F", opt(r.force_n, 6), "N"));
+            rows.push((
+                "semi-axes a, b",
+                format!("{}, {}", fmt_num(r.semi_axes_mm[0], 6), fmt_num(r.semi_axes_mm[1], 6)),
+                "mm",
+            ));
+            rows.push(("axis ratio b/a", fmt_num(r.axis_ratio, 6), "-"));
+            rows.push(("orientation of a", fmt_num(r.orientation_deg, 6), "deg"));
+        }
+        ContactKind::Line => {
+            rows.push(("length", opt(i.length_mm, 6), "mm"));
+            rows.push(("normal force F", opt(r.force_n, 6), "N"));
+            rows.push(("line load", opt(r.line_load_n_per_mm, 6), "N/mm"));
+            rows.push(("half-width b", fmt_num(r.semi_axes_mm[1], 6), "mm"));
+        }
+    }
+    rows.extend([
+        ("max pressure p0", fmt_num(r.max_pressure_mpa, 6), "MPa"),
+        ("mean pressure", fmt_num(r.mean_pressure_mpa, 6), "MPa"),
+        ("contact area", opt(r.contact_area_mm2, 6), "mm²"),
+        ("approach delta", opt(r.approach_mm, 6), "mm"),
+        ("stiffness dF/d(delta)", opt(r.stiffness_n_per_mm, 6), "N/mm"),
+        ("max shear stress", fmt_num(r.max_shear_stress_mpa, 6), "MPa"),
+        ("  at depth", fmt_num(r.max_shear_depth_mm, 6), "mm"),
+        ("max von Mises stress", fmt_num(r.max_von_mises_stress_mpa, 6), "MPa"),
+        ("  at depth", fmt_num(r.max_von_mises_depth_mm, 6), "mm"),
+    ]);
+    if let Some(y) = i.yield_stress_mpa {
+        rows.push(("yield stress", fmt_num(y, 6), "MPa"));
+        match r.kind {
+            ContactKind::Point => rows.push(("first-yield load", opt(r.first_yield_load_n, 6), "N")),
+            ContactKind::Line => {
+                rows.push(("first-yield line load", opt(r.first_yield_line_load_n_per_mm, 6), "N/mm"));
+                rows.push(("first-yield load", opt(r.first_yield_load_n, 6), "N"));
+            }
+        }
+        rows.push(("first-yield max pressure", opt(r.first_yield_max_pressure_mpa, 6), "MPa"));
+        rows.push(("yield margin p0,Y / p0", opt(r.yield_pressure_margin, 4), "-"));
+    }
+    let w = rows.iter().map(|(k, _, _)| k.chars().count()).max().unwrap_or(0);
+    let v = rows.iter().map(|(_, val, _)| val.chars().count()).max().unwrap_or(0);
+    for (k, val, unit) in rows {
+        writeln!(out, "  {k:<w$}  {val:>v$}  {unit}")?;
+    }
+    Ok(())
+}
+
+/// The demo summary: one row per case.
+pub fn print_demo(out: &mut impl Write, reports: &[ContactReport], json: bool) -> Result<()> {
+    if json {
+        serde_json::to_writer_pretty(&mut *out, reports)?;
+        writeln!(out)?;
+        return Ok(());
+    }
+    writeln!(
+        out,
+        "kontakt {} — built-in demo: Hertz contacts of rolling bearings (mm, N, MPa)\n",
+        kontakt::VERSION
+    )?;
+    writeln!(
+        out,
+        "| case | kind | F [N] | a [mm] | b [mm] | p0 [MPa] | delta [mm] | tau_max [MPa] | at z [mm] | F_yield [N] |"
+    )?;
+    writeln!(out, "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|")?;
+    for r in reports {
+        let kind = match r.kind {
+            ContactKind::Point => "point",
+            ContactKind::Line => "line",
+        };
+        writeln!(
+            out,
+            "| {} | {kind} | {} | {} | {} | {} | {} | {} | {} | {} |",
+            r.name.as_deref().unwrap_or("-"),
+            opt(r.force_n, 5),
+            fmt_num(r.semi_axes_mm[0], 4),
+            fmt_num(r.semi_axes_mm[1], 4),
+            fmt_num(r.max_pressure_mpa, 5),
+            opt(r.approach_mm, 4),
+            fmt_num(r.max_shear_stress_mpa, 4),
+            fmt_num(r.max_shear_depth_mm, 3),
+            opt(r.first_yield_load_n, 5),
+        )?;
+    }
+    writeln!(out, "\nCase files: examples/*.toml — run one with `kontakt solve examples/ball_on_flat.toml`.")?;
+    Ok(())
+}

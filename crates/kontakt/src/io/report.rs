@@ -1,0 +1,376 @@
+//! The result record of a case, with stable, unit-suffixed keys (`schema_version = 1`).
+//! Keys are never renamed without bumping the schema version; new keys may be added.
+
+use super::case::{BodySpec, CaseFile, ContactKind, LoadControl, Method};
+use crate::error::{Error, Result};
+use crate::hertz::line::LineContact;
+use crate::hertz::point_stress::FirstYield;
+use crate::hertz::subsurface::{self, StressPeaks, YieldCriterion};
+use crate::hertz::{HertzPointContact, PointGeometry};
+use crate::material::{ElasticMaterial, dundurs_beta};
+use serde::{Serialize, Serializer};
+use std::f64::consts::PI;
+
+/// Version of the JSON result schema.
+pub const SCHEMA_VERSION: u32 = 1;
+
+/// Result of one case. Every key carries its unit; `null` marks a quantity that does not
+/// apply (e.g. no yield stress given).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ContactReport {
+    /// Version of kontakt that produced the record.
+    pub kontakt_version: &'static str,
+    /// Version of this schema.
+    pub schema_version: u32,
+    /// The case's name, if any.
+    pub name: Option<String>,
+    /// `"hertz"`.
+    pub method: Method,
+    /// `"point"` or `"line"`.
+    pub kind: ContactKind,
+    /// The inputs, echoed (radii `"inf"` for flat).
+    pub inputs: InputsEcho,
+    /// Contact modulus E* [MPa].
+    pub e_star_mpa: f64,
+    /// Dundurs' beta (body 1 relative to body 2).
+    pub dundurs_beta: f64,
+    /// Relative curvature [A, B] [1/mm] (point) or [0, 1/(2R)] (line).
+    pub relative_curvature_per_mm: [f64; 2],
+    /// Semi-axes [a, b] [mm], a >= b; for a line contact [L/2, b] (L/2 null-free only when
+    /// the length is given, else `inf`).
+    #[serde(serialize_with = "ser_radii_array")]
+    pub semi_axes_mm: [f64; 2],
+    /// b/a (0 for a line contact).
+    pub axis_ratio: f64,
+    /// Angle from body 1's first principal direction to the major axis [deg].
+    pub orientation_deg: f64,
+    /// Normal force [N] (null for a line contact without length).
+    pub force_n: Option<f64>,
+    /// Line load [N/mm] (line contact only).
+    pub line_load_n_per_mm: Option<f64>,
+    /// Approach of distant points [mm] (line: Lundberg, needs the length).
+    pub approach_mm: Option<f64>,
+    /// Maximum contact pressure p0 [MPa].
+    pub max_pressure_mpa: f64,
+    /// Mean contact pressure [MPa].
+    pub mean_pressure_mpa: f64,
+    /// Contact area [mm²] (line: 2 b L, needs the length).
+    pub contact_area_mm2: Option<f64>,
+    /// Contact stiffness dF/d(delta) [N/mm].
+    pub stiffness_n_per_mm: Option<f64>,
+    /// Maximum principal shear stress below the surface [MPa].
+    pub max_shear_stress_mpa: f64,
+    /// Its depth [mm].
+    pub max_shear_depth_mm: f64,
+    /// Maximum von Mises stress below the surface [MPa].
+    pub max_von_mises_stress_mpa: f64,
+    /// Its depth [mm].
+    pub max_von_mises_depth_mm: f64,
+    /// Normal force (point) or line load (line) at first yield [N] or [N/mm].
+    pub first_yield_load_n: Option<f64>,
+    /// Line load at first yield [N/mm] (line contact).
+    pub first_yield_line_load_n_per_mm: Option<f64>,
+    /// Maximum pressure at first yield [MPa].
+    pub first_yield_max_pressure_mpa: Option<f64>,
+    /// Ratio of the first-yield pressure to the actual maximum pressure (> 1: elastic).
+    pub yield_pressure_margin: Option<f64>,
+}
+
+/// Inputs echoed in the report.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct InputsEcho {
+    /// Body 1 radii [mm].
+    #[serde(serialize_with = "ser_radii")]
+    pub body1_radii_mm: Vec<f64>,
+    /// Body 2 radii [mm].
+    #[serde(serialize_with = "ser_radii")]
+    pub body2_radii_mm: Vec<f64>,
+    /// Angle between principal planes [deg].
+    pub angle_deg: f64,
+    /// Contact length [mm] (line).
+    pub length_mm: Option<f64>,
+    /// Body 1 Young's modulus [MPa].
+    pub e1_mpa: f64,
+    /// Body 1 Poisson's ratio.
+    pub nu1: f64,
+    /// Body 2 Young's modulus [MPa].
+    pub e2_mpa: f64,
+    /// Body 2 Poisson's ratio.
+    pub nu2: f64,
+    /// Given force [N].
+    pub force_n: Option<f64>,
+    /// Given approach [mm].
+    pub approach_mm: Option<f64>,
+    /// Given line load [N/mm].
+    pub line_load_n_per_mm: Option<f64>,
+    /// Yield stress [MPa].
+    pub yield_stress_mpa: Option<f64>,
+    /// Yield criterion.
+    pub yield_criterion: Option<YieldCriterion>,
+}
+
+fn radius_value(r: f64) -> serde_json_like::Value {
+    if r.is_infinite() {
+        serde_json_like::Value::Str(if r > 0.0 { "inf" } else { "-inf" })
+    } else {
+        serde_json_like::Value::Num(r)
+    }
+}
+
+/// Minimal untagged value so that infinite radii serialize as `"inf"` (JSON has no inf).
+mod serde_json_like {
+    use serde::{Serialize, Serializer};
+    pub enum Value {
+        Num(f64),
+        Str(&'static str),
+    }
+    impl Serialize for Value {
+        fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+            match self {
+                Value::Num(x) => s.serialize_f64(*x),
+                Value::Str(t) => s.serialize_str(t),
+            }
+        }
+    }
+}
+
+fn ser_radii<S: Serializer>(radii: &[f64], s: S) -> std::result::Result<S::Ok, S::Error> {
+    s.collect_seq(radii.iter().map(|&r| radius_value(r)))
+}
+
+fn ser_radii_array<S: Serializer>(radii: &[f64; 2], s: S) -> std::result::Result<S::Ok, S::Error> {
+    ser_radii(radii, s)
+}
+
+fn material(body: &BodySpec, prefix: &'static str) -> Result<ElasticMaterial> {
+    ElasticMaterial::new(body.e_mpa, body.nu).map_err(|e| {
+        e.map_field(|f| {
+            let key = match f {
+                "youngs_modulus" => "e_mpa",
+                "poisson_ratio" => "nu",
+                other => other,
+            };
+            format!("{prefix}.{key}")
+        })
+    })
+}
+
+fn radii<const N: usize>(body: &BodySpec, prefix: &'static str, kind: &str) -> Result<[f64; N]> {
+    body.radii_mm.as_slice().try_into().map_err(|_| {
+        Error::invalid(
+            format!("{prefix}.radii_mm"),
+            format!("{} values", body.radii_mm.len()),
+            format!("{N} radii for a {kind} contact"),
+        )
+    })
+}
+
+/// Map the library's field names to the case file's keys (`body1.radii[0]` →
+/// `body1.radii_mm[0]`, `force` → `load.force_n`, ...).
+fn case_field(f: &str) -> String {
+    let f = f.replace(".radii", ".radii_mm").replace(".radius", ".radii_mm[0]");
+    match f.as_str() {
+        "force" => "load.force_n".into(),
+        "approach" => "load.approach_mm".into(),
+        "line_load" => "load.line_load_n_per_mm".into(),
+        "angle" => "contact.angle_deg".into(),
+        "length" => "contact.length_mm".into(),
+        "yield_stress" => "yield.stress_mpa".into(),
+        _ => f,
+    }
+}
+
+/// Solve a case.
+///
+/// # Errors
+/// Any invalid input, with the field named by its case-file key
+/// (e.g. `body1.e_mpa`, `load.force_n`, `body2.radii_mm[1]`).
+pub fn run_case(case: &CaseFile) -> Result<ContactReport> {
+    run_case_inner(case).map_err(|e| e.map_field(case_field))
+}
+
+fn run_case_inner(case: &CaseFile) -> Result<ContactReport> {
+    let m1 = material(&case.body1, "body1")?;
+    let m2 = material(&case.body2, "body2")?;
+    let control = case.load.control()?;
+    let inputs = InputsEcho {
+        body1_radii_mm: case.body1.radii_mm.clone(),
+        body2_radii_mm: case.body2.radii_mm.clone(),
+        angle_deg: case.contact.angle_deg,
+        length_mm: case.contact.length_mm,
+        e1_mpa: case.body1.e_mpa,
+        nu1: case.body1.nu,
+        e2_mpa: case.body2.e_mpa,
+        nu2: case.body2.nu,
+        force_n: case.load.force_n,
+        approach_mm: case.load.approach_mm,
+        line_load_n_per_mm: case.load.line_load_n_per_mm,
+        yield_stress_mpa: case.yield_check.map(|y| y.stress_mpa),
+        yield_criterion: case.yield_check.map(|y| y.criterion),
+    };
+    let beta = dundurs_beta(&m1, &m2);
+    match case.contact.kind {
+        ContactKind::Point => {
+            if case.contact.length_mm.is_some() {
+                return Err(Error::invalid(
+                    "contact.length_mm",
+                    case.contact.length_mm.unwrap_or_default(),
+                    "no length for a point contact (remove it or use kind = \"line\")",
+                ));
+            }
+            let angle = case.contact.angle_deg;
+            if !angle.is_finite() {
+                return Err(Error::invalid("angle", angle, "a finite angle in degrees"));
+            }
+            let geometry = PointGeometry::new(
+                radii::<2>(&case.body1, "body1", "point")?,
+                radii::<2>(&case.body2, "body2", "point")?,
+                angle.to_radians(),
+            )?;
+            let contact = HertzPointContact::new(geometry, m1, m2)?;
+            let sol = match control {
+                LoadControl::Force(f) => contact.solve_force(f)?,
+                LoadControl::Approach(d) => contact.solve_approach(d)?,
+                LoadControl::LineLoad(_) => {
+                    return Err(Error::invalid(
+                        "load.line_load_n_per_mm",
+                        "given",
+                        "force_n or approach_mm for a point contact",
+                    ));
+                }
+            };
+            let (peaks, _) = contact.subsurface_peaks(&sol)?;
+            let fy = case
+                .yield_check
+                .map(|y| contact.first_yield(y.stress_mpa, y.criterion))
+                .transpose()?;
+            let k = geometry.curvature();
+            Ok(ContactReport {
+                kontakt_version: crate::VERSION,
+                schema_version: SCHEMA_VERSION,
+                name: case.name.clone(),
+                method: case.method,
+                kind: ContactKind::Point,
+                inputs,
+                e_star_mpa: contact.e_star(),
+                dundurs_beta: beta,
+                relative_curvature_per_mm: [k.a_coef, k.b_coef],
+                semi_axes_mm: sol.semi_axes,
+                axis_ratio: contact.axis_ratio(),
+                orientation_deg: sol.orientation.to_degrees(),
+                force_n: Some(sol.force),
+                line_load_n_per_mm: None,
+                approach_mm: Some(sol.approach),
+                max_pressure_mpa: sol.max_pressure,
+                mean_pressure_mpa: sol.mean_pressure,
+                contact_area_mm2: Some(sol.contact_area),
+                stiffness_n_per_mm: Some(sol.stiffness),
+                max_shear_stress_mpa: peaks.max_shear,
+                max_shear_depth_mm: peaks.max_shear_depth,
+                max_von_mises_stress_mpa: peaks.max_von_mises,
+                max_von_mises_depth_mm: peaks.max_von_mises_depth,
+                first_yield_load_n: fy.map(|f: FirstYield| f.load),
+                first_yield_line_load_n_per_mm: None,
+                first_yield_max_pressure_mpa: fy.map(|f| f.max_pressure),
+                yield_pressure_margin: fy.map(|f| f.max_pressure / sol.max_pressure),
+            })
+        }
+        ContactKind::Line => {
+            let [r1] = radii::<1>(&case.body1, "body1", "line")?;
+            let [r2] = radii::<1>(&case.body2, "body2", "line")?;
+            if case.contact.angle_deg != 0.0 {
+                return Err(Error::invalid(
+                    "contact.angle_deg",
+                    case.contact.angle_deg,
+                    "0 for a line contact (parallel cylinders)",
+                ));
+            }
+            let length = case
+                .contact
+                .length_mm
+                .map(|l| crate::error::positive("length", l))
+                .transpose()?;
+            let contact = LineContact::new(r1, r2, m1, m2)?;
+            let line_load = match (control, length) {
+                (LoadControl::LineLoad(q), _) => q,
+                (LoadControl::Force(f), Some(l)) => {
+                    crate::error::positive("force", f)?;
+                    f / l
+                }
+                (LoadControl::Force(_), None) => {
+                    return Err(Error::invalid(
+                        "contact.length_mm",
+                        "missing",
+                        "a contact length > 0 mm when a line contact is loaded by force_n",
+                    ));
+                }
+                (LoadControl::Approach(_), _) => {
+                    return Err(Error::invalid(
+                        "load.approach_mm",
+                        "given",
+                        "force_n or line_load_n_per_mm for a line contact",
+                    ));
+                }
+            };
+            let sol = contact.solve(line_load)?;
+            let b = sol.half_width;
+            let force = length.map(|l| line_load * l);
+            let approach = match (force, length) {
+                (Some(f), Some(l)) => Some(contact.lundberg_approach(f, l)?),
+                _ => None,
+            };
+            // d(delta)/dF from Lundberg's formula with b ∝ F^(1/2).
+            let stiffness = length.map(|l| {
+                let half = 0.5 * l;
+                PI * half * contact.e_star() / ((half / b).ln() + crate::hertz::line::LUNDBERG_CONSTANT - 0.5)
+            });
+            let peaks: StressPeaks = subsurface::line_stress_peaks(sol.max_pressure, b, m1.poisson_ratio().max(m2.poisson_ratio()))?;
+            let yield_line_load = case
+                .yield_check
+                .map(|y| -> Result<(f64, f64)> {
+                    crate::error::positive("yield_stress", y.stress_mpa)?;
+                    let ratio = [m1, m2]
+                        .iter()
+                        .map(|m| subsurface::line_yield_pressure_ratio(m.poisson_ratio(), y.criterion))
+                        .collect::<Result<Vec<_>>>()?
+                        .into_iter()
+                        .fold(f64::INFINITY, f64::min);
+                    let p0y = ratio * y.stress_mpa;
+                    Ok((contact.line_load_from_max_pressure(p0y)?, p0y))
+                })
+                .transpose()?;
+            Ok(ContactReport {
+                kontakt_version: crate::VERSION,
+                schema_version: SCHEMA_VERSION,
+                name: case.name.clone(),
+                method: case.method,
+                kind: ContactKind::Line,
+                inputs,
+                e_star_mpa: contact.e_star(),
+                dundurs_beta: beta,
+                relative_curvature_per_mm: [0.0, 0.5 / contact.effective_radius()],
+                semi_axes_mm: [length.map_or(f64::INFINITY, |l| 0.5 * l), b],
+                axis_ratio: 0.0,
+                orientation_deg: 0.0,
+                force_n: force,
+                line_load_n_per_mm: Some(line_load),
+                approach_mm: approach,
+                max_pressure_mpa: sol.max_pressure,
+                mean_pressure_mpa: sol.mean_pressure,
+                contact_area_mm2: length.map(|l| 2.0 * b * l),
+                stiffness_n_per_mm: stiffness,
+                max_shear_stress_mpa: peaks.max_shear,
+                max_shear_depth_mm: peaks.max_shear_depth,
+                max_von_mises_stress_mpa: peaks.max_von_mises,
+                max_von_mises_depth_mm: peaks.max_von_mises_depth,
+                first_yield_load_n: match (yield_line_load, length) {
+                    (Some((q, _)), Some(l)) => Some(q * l),
+                    _ => None,
+                },
+                first_yield_line_load_n_per_mm: yield_line_load.map(|(q, _)| q),
+                first_yield_max_pressure_mpa: yield_line_load.map(|(_, p)| p),
+                yield_pressure_margin: yield_line_load.map(|(_, p)| p / sol.max_pressure),
+            })
+        }
+    }
+}
