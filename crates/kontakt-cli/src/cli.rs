@@ -31,25 +31,62 @@ pub enum Command {
 #[command(group(clap::ArgGroup::new("load").required(true).args(["force", "approach"])))]
 pub struct HertzArgs {
     /// Principal radii of body 1 [mm], "RX,RY": convex > 0, concave < 0, `inf` for flat.
-    #[arg(long, value_name = "RX,RY", value_delimiter = ',', allow_hyphen_values = true, required = true)]
+    #[arg(
+        long,
+        value_name = "RX,RY",
+        value_delimiter = ',',
+        allow_hyphen_values = true,
+        required = true
+    )]
     pub body1_radii: Vec<f64>,
     /// Principal radii of body 2 [mm], "RX,RY": convex > 0, concave < 0, `inf` for flat.
-    #[arg(long, value_name = "RX,RY", value_delimiter = ',', allow_hyphen_values = true, required = true)]
+    #[arg(
+        long,
+        value_name = "RX,RY",
+        value_delimiter = ',',
+        allow_hyphen_values = true,
+        required = true
+    )]
     pub body2_radii: Vec<f64>,
     /// Angle between the principal planes of the bodies [deg], finite.
-    #[arg(long, value_name = "DEG", default_value_t = 0.0, allow_hyphen_values = true)]
+    #[arg(
+        long,
+        value_name = "DEG",
+        default_value_t = 0.0,
+        allow_hyphen_values = true
+    )]
     pub angle_deg: f64,
     /// Young's modulus of body 1 [MPa], > 0.
-    #[arg(long, value_name = "MPA", default_value_t = 210_000.0, allow_hyphen_values = true)]
+    #[arg(
+        long,
+        value_name = "MPA",
+        default_value_t = 210_000.0,
+        allow_hyphen_values = true
+    )]
     pub e1: f64,
     /// Poisson's ratio of body 1, -1 < nu <= 0.5.
-    #[arg(long, value_name = "NU", default_value_t = 0.3, allow_hyphen_values = true)]
+    #[arg(
+        long,
+        value_name = "NU",
+        default_value_t = 0.3,
+        allow_hyphen_values = true
+    )]
     pub nu1: f64,
     /// Young's modulus of body 2 [MPa], > 0.
-    #[arg(long, value_name = "MPA", default_value_t = 210_000.0, allow_hyphen_values = true)]
+    #[arg(
+        long,
+        value_name = "MPA",
+        default_value_t = 210_000.0,
+        allow_hyphen_values = true
+    )]
     pub e2: f64,
     /// Poisson's ratio of body 2, -1 < nu <= 0.5.
-    #[arg(long, value_name = "NU", default_value_t = 0.3, allow_hyphen_values = true)]
+    #[arg(
+        long,
+        value_name = "NU",
+        default_value_t = 0.3,
+        allow_hyphen_values = true
+    )]
     pub nu2: f64,
     /// Normal force [N], > 0 (or give --approach).
     #[arg(long, value_name = "N", allow_hyphen_values = true)]

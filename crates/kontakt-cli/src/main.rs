@@ -18,7 +18,8 @@ use std::process::ExitCode;
 fn main() -> ExitCode {
     let args = cli::Cli::parse();
     let mut stdout = std::io::stdout().lock();
-    let result = commands::run(&args, &mut stdout).and_then(|()| stdout.flush().map_err(Into::into));
+    let result =
+        commands::run(&args, &mut stdout).and_then(|()| stdout.flush().map_err(Into::into));
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(err) => {

@@ -23,7 +23,10 @@ fn fmt_num(x: f64, sig: usize) -> String {
 }
 
 fn radii(r: &[f64]) -> String {
-    r.iter().map(|x| fmt_num(*x, 6)).collect::<Vec<_>>().join(", ")
+    r.iter()
+        .map(|x| fmt_num(*x, 6))
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 /// One report as a two-column table, or as pretty JSON.
@@ -37,7 +40,11 @@ pub fn print_report(out: &mut impl Write, r: &ContactReport, json: bool) -> Resu
         ContactKind::Point => "Hertz point contact (exact elliptical solution)",
         ContactKind::Line => "Hertz line contact",
     };
-    let name = r.name.as_deref().map(|n| format!(": {n}")).unwrap_or_default();
+    let name = r
+        .name
+        .as_deref()
+        .map(|n| format!(": {n}"))
+        .unwrap_or_default();
     writeln!(out, "kontakt {} — {title}{name}", r.kontakt_version)?;
     let i = &r.inputs;
     let mut rows: Vec<(&str, String, &str)> = vec![
@@ -49,7 +56,11 @@ pub fn print_report(out: &mut impl Write, r: &ContactReport, json: bool) -> Resu
     ];
     match r.kind {
         ContactKind::Point => {
-            rows.push(("angle between principal planes", format!("{}", i.angle_deg), "deg"));
+            rows.push((
+                "angle between principal planes",
+                format!("{}", i.angle_deg),
+                "deg",
+            ));
             rows.push((
                 "relative curvature A, B",
                 format!(
@@ -62,7 +73,11 @@ pub fn print_report(out: &mut impl Write, r: &ContactReport, json: bool) -> Resu
             rows.push(("normal force F", opt(r.force_n, 6), "N"));
             rows.push((
                 "semi-axes a, b",
-                format!("{}, {}", fmt_num(r.semi_axes_mm[0], 6), fmt_num(r.semi_axes_mm[1], 6)),
+                format!(
+                    "{}, {}",
+                    fmt_num(r.semi_axes_mm[0], 6),
+                    fmt_num(r.semi_axes_mm[1], 6)
+                ),
                 "mm",
             ));
             rows.push(("axis ratio b/a", fmt_num(r.axis_ratio, 6), "-"));
@@ -80,26 +95,60 @@ pub fn print_report(out: &mut impl Write, r: &ContactReport, json: bool) -> Resu
         ("mean pressure", fmt_num(r.mean_pressure_mpa, 6), "MPa"),
         ("contact area", opt(r.contact_area_mm2, 6), "mm²"),
         ("approach delta", opt(r.approach_mm, 6), "mm"),
-        ("stiffness dF/d(delta)", opt(r.stiffness_n_per_mm, 6), "N/mm"),
-        ("max shear stress", fmt_num(r.max_shear_stress_mpa, 6), "MPa"),
+        (
+            "stiffness dF/d(delta)",
+            opt(r.stiffness_n_per_mm, 6),
+            "N/mm",
+        ),
+        (
+            "max shear stress",
+            fmt_num(r.max_shear_stress_mpa, 6),
+            "MPa",
+        ),
         ("  at depth", fmt_num(r.max_shear_depth_mm, 6), "mm"),
-        ("max von Mises stress", fmt_num(r.max_von_mises_stress_mpa, 6), "MPa"),
+        (
+            "max von Mises stress",
+            fmt_num(r.max_von_mises_stress_mpa, 6),
+            "MPa",
+        ),
         ("  at depth", fmt_num(r.max_von_mises_depth_mm, 6), "mm"),
     ]);
     if let Some(y) = i.yield_stress_mpa {
         rows.push(("yield stress", fmt_num(y, 6), "MPa"));
         match r.kind {
-            ContactKind::Point => rows.push(("first-yield load", opt(r.first_yield_load_n, 6), "N")),
+            ContactKind::Point => {
+                rows.push(("first-yield load", opt(r.first_yield_load_n, 6), "N"))
+            }
             ContactKind::Line => {
-                rows.push(("first-yield line load", opt(r.first_yield_line_load_n_per_mm, 6), "N/mm"));
+                rows.push((
+                    "first-yield line load",
+                    opt(r.first_yield_line_load_n_per_mm, 6),
+                    "N/mm",
+                ));
                 rows.push(("first-yield load", opt(r.first_yield_load_n, 6), "N"));
             }
         }
-        rows.push(("first-yield max pressure", opt(r.first_yield_max_pressure_mpa, 6), "MPa"));
-        rows.push(("yield margin p0,Y / p0", opt(r.yield_pressure_margin, 4), "-"));
+        rows.push((
+            "first-yield max pressure",
+            opt(r.first_yield_max_pressure_mpa, 6),
+            "MPa",
+        ));
+        rows.push((
+            "yield margin p0,Y / p0",
+            opt(r.yield_pressure_margin, 4),
+            "-",
+        ));
     }
-    let w = rows.iter().map(|(k, _, _)| k.chars().count()).max().unwrap_or(0);
-    let v = rows.iter().map(|(_, val, _)| val.chars().count()).max().unwrap_or(0);
+    let w = rows
+        .iter()
+        .map(|(k, _, _)| k.chars().count())
+        .max()
+        .unwrap_or(0);
+    let v = rows
+        .iter()
+        .map(|(_, val, _)| val.chars().count())
+        .max()
+        .unwrap_or(0);
     for (k, val, unit) in rows {
         writeln!(out, "  {k:<w$}  {val:>v$}  {unit}")?;
     }
@@ -142,6 +191,9 @@ pub fn print_demo(out: &mut impl Write, reports: &[ContactReport], json: bool) -
             opt(r.first_yield_load_n, 5),
         )?;
     }
-    writeln!(out, "\nCase files: examples/*.toml — run one with `kontakt solve examples/ball_on_flat.toml`.")?;
+    writeln!(
+        out,
+        "\nCase files: examples/*.toml — run one with `kontakt solve examples/ball_on_flat.toml`."
+    )?;
     Ok(())
 }

@@ -80,7 +80,7 @@
 pub mod error;
 pub mod geometry;
 pub mod hertz;
-// pub mod io; (enabled once subsurface lands)
+pub mod io;
 pub mod material;
 pub mod units;
 

@@ -209,7 +209,10 @@ mod tests {
             (45.0, 0.25, 0.12),
         ] {
             let b = dundurs_beta(&from_g(g, nu), &steel);
-            assert!((b - beta).abs() <= 0.005 + 1e-12, "G={g} nu={nu}: {b} vs {beta}");
+            assert!(
+                (b - beta).abs() <= 0.005 + 1e-12,
+                "G={g} nu={nu}: {b} vs {beta}"
+            );
         }
         // WC row: printed moduli give -0.0998; G = 300 GPa gives the printed -0.14.
         assert!((dundurs_beta(&from_g(220.0, 0.22), &steel) + 0.0998).abs() < 5e-4);
@@ -225,14 +228,22 @@ mod tests {
         let b = ElasticMaterial::STEEL;
         assert_relative_eq!(dundurs_beta(&a, &b), -dundurs_beta(&b, &a), epsilon = 1e-15);
         assert_relative_eq!(dundurs_beta(&a, &a), 0.0);
-        assert_relative_eq!(dundurs_alpha(&a, &b), -dundurs_alpha(&b, &a), epsilon = 1e-15);
+        assert_relative_eq!(
+            dundurs_alpha(&a, &b),
+            -dundurs_alpha(&b, &a),
+            epsilon = 1e-15
+        );
         assert_relative_eq!(dundurs_alpha(&b, &ElasticMaterial::RIGID), -1.0);
     }
 
     #[test]
     fn effective_moduli() {
         let s = ElasticMaterial::STEEL;
-        assert_relative_eq!(effective_modulus(&s, &s), 210_000.0 / 1.82, max_relative = 1e-15);
+        assert_relative_eq!(
+            effective_modulus(&s, &s),
+            210_000.0 / 1.82,
+            max_relative = 1e-15
+        );
         // Rigid partner: E* = E/(1-nu^2).
         assert_relative_eq!(
             effective_modulus(&s, &ElasticMaterial::RIGID),

@@ -47,9 +47,19 @@ fn legendre_oracle(a_coef: f64, b_coef: f64, e_star: f64, force: f64) -> [f64; 4
     [a, b, p0, delta]
 }
 
-fn solve(r1: [f64; 2], r2: [f64; 2], deg: f64, m1: ElasticMaterial, m2: ElasticMaterial, f: f64) -> kontakt::hertz::HertzPointSolution {
+fn solve(
+    r1: [f64; 2],
+    r2: [f64; 2],
+    deg: f64,
+    m1: ElasticMaterial,
+    m2: ElasticMaterial,
+    f: f64,
+) -> kontakt::hertz::HertzPointSolution {
     let g = PointGeometry::new(r1, r2, deg.to_radians()).unwrap();
-    HertzPointContact::new(g, m1, m2).unwrap().solve_force(f).unwrap()
+    HertzPointContact::new(g, m1, m2)
+        .unwrap()
+        .solve_force(f)
+        .unwrap()
 }
 
 /// Sphere on plane and sphere on sphere: a = (3FR/4E*)^(1/3), p0 = 3F/(2 pi a^2),
@@ -68,7 +78,11 @@ fn spheres_match_closed_form() {
             let a = (3.0 * f * r / (4.0 * e_star)).cbrt();
             assert_relative_eq!(s.semi_axes[0], a, max_relative = 1e-13);
             assert_relative_eq!(s.semi_axes[1], a, max_relative = 1e-13);
-            assert_relative_eq!(s.max_pressure, 3.0 * f / (2.0 * PI * a * a), max_relative = 1e-13);
+            assert_relative_eq!(
+                s.max_pressure,
+                3.0 * f / (2.0 * PI * a * a),
+                max_relative = 1e-13
+            );
             assert_relative_eq!(s.approach, a * a / r, max_relative = 1e-13);
             assert_relative_eq!(s.stiffness, 2.0 * a * e_star, max_relative = 1e-13);
         }
@@ -109,7 +123,12 @@ fn crossed_cylinders_at_angles() {
         assert_relative_eq!(s.max_pressure, p0, max_relative = 1e-10);
         assert_relative_eq!(s.approach, d, max_relative = 1e-10);
         // Major axis along the bisector of the acute angle between the cylinder axes.
-        let expected = if deg <= 90.0 { deg / 2.0 } else { deg / 2.0 + 90.0 }.to_radians();
+        let expected = if deg <= 90.0 {
+            deg / 2.0
+        } else {
+            deg / 2.0 + 90.0
+        }
+        .to_radians();
         let o = s.orientation;
         let diff = ((o - expected) / PI).round() * PI - (o - expected);
         assert!(diff.abs() < 1e-12, "{deg}: orientation {o} vs {expected}");
@@ -153,7 +172,10 @@ fn thin_ellipse_approaches_line_contact() {
 #[test]
 fn sampled_pressure_integrates_to_force() {
     let g = PointGeometry::new([8.0, 30.0], [15.0, -90.0], 0.4).unwrap();
-    let s = HertzPointContact::new(g, STEEL, STEEL).unwrap().solve_force(400.0).unwrap();
+    let s = HertzPointContact::new(g, STEEL, STEEL)
+        .unwrap()
+        .solve_force(400.0)
+        .unwrap();
     let h = 1.05 * s.semi_axes[0];
     let grid = kontakt::geometry::Grid2::centered(h, h, 801, 801).unwrap();
     let p = s.sample_pressure(&grid);
@@ -165,7 +187,10 @@ fn sampled_pressure_integrates_to_force() {
     assert!(max <= s.max_pressure && max > 0.99 * s.max_pressure);
     // Outside the ellipse along the major axis: zero.
     let (sn, cs) = s.orientation.sin_cos();
-    assert_eq!(s.pressure_at(1.001 * s.semi_axes[0] * cs, 1.001 * s.semi_axes[0] * sn), 0.0);
+    assert_eq!(
+        s.pressure_at(1.001 * s.semi_axes[0] * cs, 1.001 * s.semi_axes[0] * sn),
+        0.0
+    );
     let mut buf = vec![0.0; grid.len()];
     s.sample_pressure_into(&grid, &mut buf).unwrap();
     assert_eq!(buf, p);

@@ -4,7 +4,9 @@ use crate::cli::{Cli, Command, Criterion, HertzArgs};
 use crate::output;
 use anyhow::{Context, Result};
 use kontakt::hertz::subsurface::YieldCriterion;
-use kontakt::io::case::{BodySpec, CaseFile, ContactKind, ContactSpec, LoadSpec, Method, YieldSpec};
+use kontakt::io::case::{
+    BodySpec, CaseFile, ContactKind, ContactSpec, LoadSpec, Method, YieldSpec,
+};
 use kontakt::io::run_case;
 use std::io::{Read, Write};
 
@@ -15,12 +17,30 @@ pub struct InputError(pub String);
 
 /// The built-in demonstration cases: the files in `examples/`, compiled in.
 pub const DEMO_CASES: [(&str, &str); 6] = [
-    ("ball_on_flat.toml", include_str!("../../../../examples/ball_on_flat.toml")),
-    ("ball_inner_race.toml", include_str!("../../../../examples/ball_inner_race.toml")),
-    ("ball_outer_race.toml", include_str!("../../../../examples/ball_outer_race.toml")),
-    ("ceramic_ball.toml", include_str!("../../../../examples/ceramic_ball.toml")),
-    ("crossed_cylinders.toml", include_str!("../../../../examples/crossed_cylinders.toml")),
-    ("roller_line.toml", include_str!("../../../../examples/roller_line.toml")),
+    (
+        "ball_on_flat.toml",
+        include_str!("../../../../examples/ball_on_flat.toml"),
+    ),
+    (
+        "ball_inner_race.toml",
+        include_str!("../../../../examples/ball_inner_race.toml"),
+    ),
+    (
+        "ball_outer_race.toml",
+        include_str!("../../../../examples/ball_outer_race.toml"),
+    ),
+    (
+        "ceramic_ball.toml",
+        include_str!("../../../../examples/ceramic_ball.toml"),
+    ),
+    (
+        "crossed_cylinders.toml",
+        include_str!("../../../../examples/crossed_cylinders.toml"),
+    ),
+    (
+        "roller_line.toml",
+        include_str!("../../../../examples/roller_line.toml"),
+    ),
 ];
 
 pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {

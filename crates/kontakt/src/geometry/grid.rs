@@ -24,7 +24,12 @@ impl Grid2 {
     ///
     /// # Errors
     /// `nx`/`ny` must be in 1..=65536 and each range finite with `min < max`.
-    pub fn new(x_range: [Millimetre; 2], y_range: [Millimetre; 2], nx: usize, ny: usize) -> Result<Self> {
+    pub fn new(
+        x_range: [Millimetre; 2],
+        y_range: [Millimetre; 2],
+        nx: usize,
+        ny: usize,
+    ) -> Result<Self> {
         for (field, n) in [("nx", nx), ("ny", ny)] {
             if !(1..=65_536).contains(&n) {
                 return Err(Error::invalid(field, n, "1 <= n <= 65536 cells"));

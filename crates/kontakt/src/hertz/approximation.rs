@@ -108,15 +108,23 @@ pub struct ApproximationError {
 ///
 /// # Errors
 /// Ratio below 1 or beyond [`crate::geometry::curvature::MAX_CURVATURE_RATIO`].
-pub fn approximation_error(curvature_ratio: f64, model: Approximation) -> Result<ApproximationError> {
+pub fn approximation_error(
+    curvature_ratio: f64,
+    model: Approximation,
+) -> Result<ApproximationError> {
     let k = RelativeCurvature::from_tensor(2.0, 2.0 * curvature_ratio, 0.0)?;
     if curvature_ratio < 1.0 {
-        return Err(crate::Error::invalid("curvature_ratio", curvature_ratio, ">= 1"));
+        return Err(crate::Error::invalid(
+            "curvature_ratio",
+            curvature_ratio,
+            ">= 1",
+        ));
     }
     let geometry = super::PointGeometry::from_curvature(k);
     let m = crate::material::ElasticMaterial::STEEL;
     let exact = super::HertzPointContact::new(geometry, m, m)?.solve_force(100.0)?;
-    let approx = approximate_point_contact(&k, crate::material::effective_modulus(&m, &m), 100.0, model)?;
+    let approx =
+        approximate_point_contact(&k, crate::material::effective_modulus(&m, &m), 100.0, model)?;
     let rel = |x: f64, y: f64| x / y - 1.0;
     Ok(ApproximationError {
         curvature_ratio,
@@ -136,7 +144,10 @@ mod tests {
         for i in 0..=80 {
             let r = max_ratio.powf(i as f64 / 80.0);
             let e = approximation_error(r, model).unwrap();
-            for (wi, v) in w.iter_mut().zip([e.semi_major, e.semi_minor, e.max_pressure, e.approach]) {
+            for (wi, v) in
+                w.iter_mut()
+                    .zip([e.semi_major, e.semi_minor, e.max_pressure, e.approach])
+            {
                 *wi = wi.max(v.abs());
             }
         }

@@ -136,7 +136,10 @@ impl LineContact {
     ///
     /// # Errors
     /// Non-positive or non-finite pressure.
-    pub fn line_load_from_max_pressure(&self, max_pressure: Megapascal) -> Result<NewtonPerMillimetre> {
+    pub fn line_load_from_max_pressure(
+        &self,
+        max_pressure: Megapascal,
+    ) -> Result<NewtonPerMillimetre> {
         crate::error::positive("max_pressure", max_pressure)?;
         Ok(PI * self.effective_radius * max_pressure * max_pressure / self.e_star)
     }
@@ -196,8 +199,16 @@ mod tests {
             .map(|i| sol.pressure_at(-sol.half_width + (i as f64 + 0.5) * h) * h)
             .sum();
         assert_relative_eq!(total, 300.0, max_relative = 1e-6);
-        assert_relative_eq!(sol.mean_pressure, PI / 4.0 * sol.max_pressure, max_relative = 1e-14);
-        assert_relative_eq!(c.line_load_from_max_pressure(sol.max_pressure).unwrap(), 300.0, max_relative = 1e-13);
+        assert_relative_eq!(
+            sol.mean_pressure,
+            PI / 4.0 * sol.max_pressure,
+            max_relative = 1e-14
+        );
+        assert_relative_eq!(
+            c.line_load_from_max_pressure(sol.max_pressure).unwrap(),
+            300.0,
+            max_relative = 1e-13
+        );
     }
 
     #[test]

@@ -13,6 +13,7 @@ mod elliptic;
 pub mod impact;
 pub mod line;
 pub mod point;
+pub mod point_stress;
 pub mod subsurface;
 
 pub use point::{HertzPointContact, HertzPointSolution, PointGeometry, curvature_ratio};

@@ -64,7 +64,11 @@ impl PointGeometry {
     /// # Errors
     /// See [`RelativeCurvature::from_radii`]: zero/NaN radii, a non-finite angle, and
     /// geometries that are conformal, separate or line contacts.
-    pub fn new(body1_radii: [Millimetre; 2], body2_radii: [Millimetre; 2], angle: Radian) -> Result<Self> {
+    pub fn new(
+        body1_radii: [Millimetre; 2],
+        body2_radii: [Millimetre; 2],
+        angle: Radian,
+    ) -> Result<Self> {
         let curvature = RelativeCurvature::from_radii(body1_radii, body2_radii, angle)?;
         Ok(PointGeometry {
             body1_radii,
@@ -174,7 +178,11 @@ impl HertzPointContact {
     /// # Errors
     /// Only the shape inversion can fail (never observed for B/A in its valid range);
     /// the geometry and materials are validated by their own constructors.
-    pub fn new(geometry: PointGeometry, body1: ElasticMaterial, body2: ElasticMaterial) -> Result<Self> {
+    pub fn new(
+        geometry: PointGeometry,
+        body1: ElasticMaterial,
+        body2: ElasticMaterial,
+    ) -> Result<Self> {
         let k = geometry.curvature;
         let e_star = effective_modulus(&body1, &body2);
         let (axis_ratio, shape_evaluations) = elliptic::invert_shape_ratio(k.ratio())?;
@@ -315,7 +323,11 @@ impl HertzPointSolution {
     /// `out.len()` differs from `grid.len()`.
     pub fn sample_pressure_into(&self, grid: &Grid2, out: &mut [Megapascal]) -> Result<()> {
         if out.len() != grid.len() {
-            return Err(Error::invalid("out.len()", out.len(), format!("{} (the grid size)", grid.len())));
+            return Err(Error::invalid(
+                "out.len()",
+                out.len(),
+                format!("{} (the grid size)", grid.len()),
+            ));
         }
         for (o, (x, y)) in out.iter_mut().zip(grid.points()) {
             *o = self.pressure_at(x, y);

@@ -21,7 +21,11 @@ impl HertzPointContact {
             return Ok((s1, 1));
         }
         let s2 = subsurface::axis_stress_peaks(p0, a, b, self.materials()[1].poisson_ratio())?;
-        Ok(if s2.max_shear > s1.max_shear { (s2, 2) } else { (s1, 1) })
+        Ok(if s2.max_shear > s1.max_shear {
+            (s2, 2)
+        } else {
+            (s1, 1)
+        })
     }
 
     /// The normal force [N] at which the material first yields below the surface, for a
@@ -34,11 +38,16 @@ impl HertzPointContact {
     ///
     /// # References
     /// Johnson (1982) eqs (21a/b); Johnson, *Contact Mechanics* (1985) §3.9.
-    pub fn first_yield(&self, yield_stress: Megapascal, criterion: YieldCriterion) -> Result<FirstYield> {
+    pub fn first_yield(
+        &self,
+        yield_stress: Megapascal,
+        criterion: YieldCriterion,
+    ) -> Result<FirstYield> {
         crate::error::positive("yield_stress", yield_stress)?;
         let mut best: Option<FirstYield> = None;
         for (i, m) in self.materials().iter().enumerate() {
-            let ratio = subsurface::yield_pressure_ratio(self.axis_ratio(), m.poisson_ratio(), criterion)?;
+            let ratio =
+                subsurface::yield_pressure_ratio(self.axis_ratio(), m.poisson_ratio(), criterion)?;
             let p0_yield = ratio * yield_stress;
             let p0_unit = self.max_pressure_at_unit_force();
             let load = (p0_yield / p0_unit).powi(3);
@@ -64,4 +73,3 @@ pub struct FirstYield {
     /// The body (1 or 2) that yields first.
     pub body: usize,
 }
-

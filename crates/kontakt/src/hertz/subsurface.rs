@@ -118,7 +118,11 @@ fn check_pressure(p0: f64) -> Result<f64> {
     if p0.is_finite() && p0 > 0.0 {
         Ok(p0)
     } else {
-        Err(Error::invalid("p0", p0, "a finite maximum pressure > 0 MPa"))
+        Err(Error::invalid(
+            "p0",
+            p0,
+            "a finite maximum pressure > 0 MPa",
+        ))
     }
 }
 
@@ -451,14 +455,14 @@ fn brent_root(
         }
         a = b;
         fa = fb;
-        b += if d.abs() > tol1 {
-            d
-        } else {
-            tol1.copysign(xm)
-        };
+        b += if d.abs() > tol1 { d } else { tol1.copysign(xm) };
         fb = f(b)?;
     }
-    Err(not_converged("Brent root of the stress slope", 100, fb.abs()))
+    Err(not_converged(
+        "Brent root of the stress slope",
+        100,
+        fb.abs(),
+    ))
 }
 
 /// Golden-section search for a maximum of `g` on `[lo, hi]` (fallback only).
@@ -1169,7 +1173,12 @@ pub fn first_yield_load_circular(
     crate::error::positive("y", y)?;
     let k = yield_pressure_ratio(1.0, nu, criterion)?;
     let q = k * y / e_star;
-    finite_load(PI.powi(3) / 6.0 * r_eff * r_eff * q * q * (k * y), r_eff, e_star, y)
+    finite_load(
+        PI.powi(3) / 6.0 * r_eff * r_eff * q * q * (k * y),
+        r_eff,
+        e_star,
+        y,
+    )
 }
 
 /// Line load at first yield of a plane-strain line (cylinder) contact from the exact
@@ -1276,8 +1285,14 @@ mod tests {
                 tmax = tmax.max(tau);
                 vmax = vmax.max(vm);
             }
-            assert!(t.value >= tmax - 1e-14 && t.value - tmax < 1e-8, "{ratio} {nu}");
-            assert!(m.value >= vmax - 1e-14 && m.value - vmax < 1e-8, "{ratio} {nu}");
+            assert!(
+                t.value >= tmax - 1e-14 && t.value - tmax < 1e-8,
+                "{ratio} {nu}"
+            );
+            assert!(
+                m.value >= vmax - 1e-14 && m.value - vmax < 1e-8,
+                "{ratio} {nu}"
+            );
         }
     }
 

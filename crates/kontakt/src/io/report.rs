@@ -168,7 +168,9 @@ fn radii<const N: usize>(body: &BodySpec, prefix: &'static str, kind: &str) -> R
 /// Map the library's field names to the case file's keys (`body1.radii[0]` →
 /// `body1.radii_mm[0]`, `force` → `load.force_n`, ...).
 fn case_field(f: &str) -> String {
-    let f = f.replace(".radii", ".radii_mm").replace(".radius", ".radii_mm[0]");
+    let f = f
+        .replace(".radii", ".radii_mm")
+        .replace(".radius", ".radii_mm[0]");
     match f.as_str() {
         "force" => "load.force_n".into(),
         "approach" => "load.approach_mm".into(),
@@ -322,16 +324,28 @@ fn run_case_inner(case: &CaseFile) -> Result<ContactReport> {
             // d(delta)/dF from Lundberg's formula with b ∝ F^(1/2).
             let stiffness = length.map(|l| {
                 let half = 0.5 * l;
-                PI * half * contact.e_star() / ((half / b).ln() + crate::hertz::line::LUNDBERG_CONSTANT - 0.5)
+                PI * half * contact.e_star()
+                    / ((half / b).ln() + crate::hertz::line::LUNDBERG_CONSTANT - 0.5)
             });
-            let peaks: StressPeaks = subsurface::line_stress_peaks(sol.max_pressure, b, m1.poisson_ratio().max(m2.poisson_ratio()))?;
+            // The bodies differ only through Poisson's ratio: report the more stressed one.
+            let peaks: StressPeaks = {
+                let p1 = subsurface::line_stress_peaks(sol.max_pressure, b, m1.poisson_ratio())?;
+                let p2 = subsurface::line_stress_peaks(sol.max_pressure, b, m2.poisson_ratio())?;
+                if p2.max_von_mises > p1.max_von_mises {
+                    p2
+                } else {
+                    p1
+                }
+            };
             let yield_line_load = case
                 .yield_check
                 .map(|y| -> Result<(f64, f64)> {
                     crate::error::positive("yield_stress", y.stress_mpa)?;
                     let ratio = [m1, m2]
                         .iter()
-                        .map(|m| subsurface::line_yield_pressure_ratio(m.poisson_ratio(), y.criterion))
+                        .map(|m| {
+                            subsurface::line_yield_pressure_ratio(m.poisson_ratio(), y.criterion)
+                        })
                         .collect::<Result<Vec<_>>>()?
                         .into_iter()
                         .fold(f64::INFINITY, f64::min);
