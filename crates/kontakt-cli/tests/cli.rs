@@ -1,0 +1,271 @@
+//! Behaviour of the `kontakt` binary: exit codes, one-line errors naming the flag or key,
+//! JSON keys, and snapshots of the human output.
+
+use assert_cmd::Command;
+use serde_json::Value;
+use std::path::PathBuf;
+
+fn kontakt() -> Command {
+    Command::cargo_bin("kontakt").expect("binary built")
+}
+
+fn examples() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples")
+}
+
+fn json(args: &[&str]) -> Value {
+    let out = kontakt().args(args).arg("--json").output().expect("runs");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).expect("valid JSON")
+}
+
+/// Run, expect exit status 2 and exactly one stderr line; return it.
+fn bad(args: &[&str]) -> String {
+    let out = kontakt().args(args).output().expect("runs");
+    assert_eq!(out.status.code(), Some(2), "args {args:?}");
+    let err = String::from_utf8(out.stderr).expect("utf8");
+    let lines: Vec<_> = err.lines().filter(|l| !l.trim().is_empty()).collect();
+    assert_eq!(lines.len(), 1, "not one line: {err}");
+    lines[0].to_string()
+}
+
+#[test]
+fn hertz_json_has_the_stable_keys_and_right_values() {
+    let v = json(&[
+        "hertz",
+        "--body1-radii",
+        "6.35,6.35",
+        "--body2-radii",
+        "inf,inf",
+        "--force",
+        "100",
+    ]);
+    for key in [
+        "semi_axes_mm",
+        "max_pressure_mpa",
+        "mean_pressure_mpa",
+        "approach_mm",
+        "contact_area_mm2",
+        "stiffness_n_per_mm",
+        "max_shear_stress_mpa",
+        "max_shear_depth_mm",
+        "e_star_mpa",
+        "inputs",
+        "kontakt_version",
+        "schema_version",
+    ] {
+        assert!(v.get(key).is_some(), "missing {key}");
+    }
+    // Closed form: a = (3FR/4E*)^(1/3), p0 = 3F/(2 pi a^2).
+    let e_star = 210_000.0 / 1.82;
+    let a = (3.0f64 * 100.0 * 6.35 / (4.0 * e_star)).cbrt();
+    let got_a = v["semi_axes_mm"][0].as_f64().unwrap();
+    assert!((got_a / a - 1.0).abs() < 1e-12);
+    let p0 = v["max_pressure_mpa"].as_f64().unwrap();
+    assert!((p0 / (300.0 / (2.0 * std::f64::consts::PI * a * a)) - 1.0).abs() < 1e-12);
+    // Huber: tau_max = 0.31 p0 near z = 0.48 a for nu = 0.3.
+    let tau = v["max_shear_stress_mpa"].as_f64().unwrap();
+    assert!((tau / p0 - 0.31).abs() < 0.005);
+    assert_eq!(v["inputs"]["body2_radii_mm"][0], "inf");
+    assert_eq!(v["kontakt_version"], env!("CARGO_PKG_VERSION"));
+}
+
+#[test]
+fn hertz_by_approach_round_trips() {
+    let by_force = json(&[
+        "hertz",
+        "--body1-radii",
+        "10,20",
+        "--body2-radii",
+        "30,-80",
+        "--angle-deg",
+        "30",
+        "--force",
+        "500",
+    ]);
+    let delta = by_force["approach_mm"].as_f64().unwrap().to_string();
+    let by_delta = json(&[
+        "hertz",
+        "--body1-radii",
+        "10,20",
+        "--body2-radii",
+        "30,-80",
+        "--angle-deg",
+        "30",
+        "--approach",
+        &delta,
+    ]);
+    let f = by_delta["force_n"].as_f64().unwrap();
+    assert!((f / 500.0 - 1.0).abs() < 1e-12, "{f}");
+}
+
+#[test]
+fn bad_flags_name_the_flag_value_and_range() {
+    let base = ["hertz", "--body1-radii", "5,5", "--body2-radii", "inf,inf"];
+    let with = |extra: &[&str]| {
+        let mut v: Vec<&str> = base.to_vec();
+        v.extend_from_slice(extra);
+        bad(&v)
+    };
+    assert_eq!(
+        with(&["--force", "100", "--nu1", "0.7"]),
+        "error: invalid --nu1 = 0.7: expected -1 < nu <= 0.5"
+    );
+    assert!(with(&["--force", "100", "--e2", "-5"]).starts_with("error: invalid --e2 = -5"));
+    assert!(with(&["--force", "-1"]).starts_with("error: invalid --force = -1"));
+    assert!(with(&["--approach", "0"]).starts_with("error: invalid --approach = 0"));
+    assert!(
+        with(&["--force", "1", "--yield-stress", "0"])
+            .starts_with("error: invalid --yield-stress = 0")
+    );
+    assert!(with(&["--force", "nan"]).contains("--force"));
+    // A ball that does not fit its groove.
+    let l = bad(&[
+        "hertz",
+        "--body1-radii",
+        "5,5",
+        "--body2-radii",
+        "-4,-4",
+        "--force",
+        "10",
+    ]);
+    assert!(
+        l.contains("--body1-radii/--body2-radii") && l.contains("conformal or separate"),
+        "{l}"
+    );
+    let l = bad(&[
+        "hertz",
+        "--body1-radii",
+        "5",
+        "--body2-radii",
+        "inf,inf",
+        "--force",
+        "10",
+    ]);
+    assert!(l.contains("--body1-radii") && l.contains("2 radii"), "{l}");
+    let l = bad(&[
+        "hertz",
+        "--body1-radii",
+        "0,5",
+        "--body2-radii",
+        "inf,inf",
+        "--force",
+        "10",
+    ]);
+    assert!(l.starts_with("error: invalid --body1-radii"), "{l}");
+    // Parallel cylinders are a line contact.
+    let l = bad(&[
+        "hertz",
+        "--body1-radii",
+        "inf,5",
+        "--body2-radii",
+        "inf,7",
+        "--force",
+        "10",
+    ]);
+    assert!(l.contains("line contact"), "{l}");
+    // clap's own usage errors also exit 2 (missing load).
+    let out = kontakt().args(base).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+}
+
+#[test]
+fn help_states_units_and_ranges() {
+    let out = kontakt().args(["hertz", "--help"]).output().unwrap();
+    let help = String::from_utf8(out.stdout).unwrap();
+    for s in [
+        "[mm]",
+        "[MPa]",
+        "[N]",
+        "[deg]",
+        "-1 < nu <= 0.5",
+        "> 0",
+        "inf",
+    ] {
+        assert!(help.contains(s), "help lacks {s}");
+    }
+}
+
+#[test]
+fn every_example_solves() {
+    let mut n = 0;
+    for entry in std::fs::read_dir(examples()).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_some_and(|e| e == "toml") {
+            let v = json(&["solve", path.to_str().unwrap()]);
+            assert!(v["max_pressure_mpa"].as_f64().unwrap() > 0.0);
+            n += 1;
+        }
+    }
+    assert!(n >= 6);
+}
+
+#[test]
+fn bad_case_files_fail_with_one_line() {
+    let dir = tempdir();
+    let write = |name: &str, text: &str| {
+        let p = dir.join(name);
+        std::fs::write(&p, text).unwrap();
+        p.to_str().unwrap().to_string()
+    };
+    let good = std::fs::read_to_string(examples().join("ball_on_flat.toml")).unwrap();
+    let p = write("nu.toml", &good.replacen("nu = 0.3", "nu = 0.7", 1));
+    let l = bad(&["solve", &p]);
+    assert!(
+        l.ends_with("invalid body1.nu = 0.7: expected -1 < nu <= 0.5"),
+        "{l}"
+    );
+    let p = write("typo.toml", &good.replace("force_n", "forse_n"));
+    let l = bad(&["solve", &p]);
+    assert!(l.contains("forse_n") && l.contains("line"), "{l}");
+    let p = write(
+        "two.toml",
+        &good.replace("force_n = 100.0", "force_n = 100.0\napproach_mm = 0.01"),
+    );
+    let l = bad(&["solve", &p]);
+    assert!(l.contains("exactly one of force_n"), "{l}");
+    let l = bad(&["solve", dir.join("missing.toml").to_str().unwrap()]);
+    assert!(l.contains("cannot read case file"), "{l}");
+}
+
+#[test]
+fn human_output_snapshots() {
+    let out = kontakt()
+        .args([
+            "solve",
+            examples().join("ball_inner_race.toml").to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    insta::assert_snapshot!(
+        "ball_inner_race_table",
+        String::from_utf8(out.stdout).unwrap()
+    );
+    let out = kontakt().arg("demo").output().unwrap();
+    assert!(out.status.success());
+    insta::assert_snapshot!("demo_table", String::from_utf8(out.stdout).unwrap());
+}
+
+#[test]
+fn stdin_case() {
+    let text = std::fs::read_to_string(examples().join("roller_line.toml")).unwrap();
+    let out = kontakt()
+        .args(["solve", "-", "--json"])
+        .write_stdin(text)
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let v: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["kind"], "line");
+}
+
+fn tempdir() -> PathBuf {
+    let d = std::env::temp_dir().join(format!("kontakt-cli-test-{}", std::process::id()));
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
