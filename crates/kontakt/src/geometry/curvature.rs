@@ -101,7 +101,11 @@ impl RelativeCurvature {
         let (k11, k12) = (1.0 / body1_radii[0], 1.0 / body1_radii[1]);
         let (k21, k22) = (1.0 / body2_radii[0], 1.0 / body2_radii[1]);
         // Curvature tensor of body 2 rotated into body 1's principal frame.
-        let (s, c) = angle.sin_cos();
+        let (s, c) = if angle == 0.0 {
+            (0.0, 1.0)
+        } else {
+            angle.sin_cos()
+        };
         let kxx = k11 + k21 * c * c + k22 * s * s;
         let kyy = k12 + k21 * s * s + k22 * c * c;
         let kxy = (k21 - k22) * s * c;
@@ -124,7 +128,15 @@ impl RelativeCurvature {
         }
         let mean = 0.5 * (kxx + kyy);
         let half_diff = 0.5 * (kxx - kyy);
-        let dev = half_diff.hypot(kxy);
+        // sqrt of the sum of squares is exact enough and much cheaper than hypot; hypot
+        // only where squaring could overflow (radii below 1e-150 mm).
+        let dev = if kxy == 0.0 {
+            half_diff.abs()
+        } else if half_diff.abs().max(kxy.abs()) < 1e150 {
+            (half_diff * half_diff + kxy * kxy).sqrt()
+        } else {
+            half_diff.hypot(kxy)
+        };
         let lambda_max = mean + dev;
         // The smaller eigenvalue from the determinant avoids cancellation in mean - dev
         // when the contact is long and thin.
@@ -137,7 +149,15 @@ impl RelativeCurvature {
         };
         let lambda_max = if kxy == 0.0 { kxx.max(kyy) } else { lambda_max };
         // Direction of lambda_min: perpendicular to the major eigenvector.
-        let phi_max = 0.5 * kxy.atan2(half_diff);
+        let phi_max = if kxy == 0.0 {
+            if half_diff >= 0.0 {
+                0.0
+            } else {
+                std::f64::consts::FRAC_PI_2
+            }
+        } else {
+            0.5 * kxy.atan2(half_diff)
+        };
         let mut orientation = phi_max + std::f64::consts::FRAC_PI_2;
         if orientation > std::f64::consts::FRAC_PI_2 {
             orientation -= std::f64::consts::PI;

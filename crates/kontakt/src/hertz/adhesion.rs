@@ -80,21 +80,21 @@ pub struct Jkr {
 /// The state of a JKR contact at one contact radius (plain data).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct JkrState {
-    /// $a$, contact radius [mm].
+    /// $a$, contact radius \[mm\].
     pub contact_radius: Millimetre,
-    /// $P$, normal load [N], positive in compression, negative (tensile) below the
+    /// $P$, normal load \[N\], positive in compression, negative (tensile) below the
     /// zero-load radius.
     pub load: Newton,
-    /// $\delta$, approach [mm] (may be negative: the adhering sphere is pulled out).
+    /// $\delta$, approach \[mm\] (may be negative: the adhering sphere is pulled out).
     pub approach: Millimetre,
-    /// $p_0 = 2E^*a/(\pi R)$, the Hertz pressure of radius $a$ [MPa].
+    /// $p_0 = 2E^*a/(\pi R)$, the Hertz pressure of radius $a$ \[MPa\].
     pub hertz_pressure: Megapascal,
-    /// $p_0' = \sqrt{2wE^*/(\pi a)}$, the coefficient of the tensile flat-punch term [MPa].
+    /// $p_0' = \sqrt{2wE^*/(\pi a)}$, the coefficient of the tensile flat-punch term \[MPa\].
     pub adhesive_pressure: Megapascal,
 }
 
 impl JkrState {
-    /// Contact pressure $p(r)$ [MPa] at radius `r` (positive in compression), Johnson (1982)
+    /// Contact pressure $p(r)$ \[MPa\] at radius `r` (positive in compression), Johnson (1982)
     /// eq. (42):
     ///
     /// $$p(r) = p_0\sqrt{1-r^2/a^2} - \frac{p_0'}{\sqrt{1-r^2/a^2}}\quad (r < a),
@@ -104,10 +104,10 @@ impl JkrState {
     /// contact the function returns 0, the value outside the open contact disc.
     ///
     /// # Arguments
-    /// - `r` — radial distance from the contact centre [mm], finite, >= 0.
+    /// - `r` — radial distance from the contact centre \[mm\], finite, >= 0.
     ///
     /// # Returns
-    /// $p(r)$ [MPa]; finite for every valid `r`.
+    /// $p(r)$ \[MPa\]; finite for every valid `r`.
     ///
     /// # Errors
     /// [`Error::InvalidInput`] naming `r` if it is negative or not finite.
@@ -147,10 +147,10 @@ impl Jkr {
     ///   \frac{1}{E^*} = \frac{1-\nu_1^2}{E_1} + \frac{1-\nu_2^2}{E_2},\qquad w = 2\gamma$$
     ///
     /// # Arguments
-    /// - `r_eff` — $R$, effective radius [mm], finite, > 0.
-    /// - `e_star` — $E^*$, contact modulus [MPa], finite, > 0
+    /// - `r_eff` — $R$, effective radius \[mm\], finite, > 0.
+    /// - `e_star` — $E^*$, contact modulus \[MPa\], finite, > 0
     ///   (see [`crate::material::effective_modulus`]).
-    /// - `work_of_adhesion` — $w = 2\gamma$ [N/mm] (1 J/m² = 1e-3 N/mm), finite, > 0. For
+    /// - `work_of_adhesion` — $w = 2\gamma$ \[N/mm\] (1 J/m² = 1e-3 N/mm), finite, > 0. For
     ///   $w = 0$ use Hertz theory; JKR tends to it as $w \to 0$.
     ///
     /// # Errors
@@ -204,41 +204,41 @@ impl Jkr {
         }
     }
 
-    /// Effective radius $R$ [mm].
+    /// Effective radius $R$ \[mm\].
     pub fn r_eff(&self) -> Millimetre {
         self.r_eff
     }
 
-    /// Contact modulus $E^*$ [MPa].
+    /// Contact modulus $E^*$ \[MPa\].
     pub fn e_star(&self) -> Megapascal {
         self.e_star
     }
 
-    /// Work of adhesion $w = 2\gamma$ [N/mm].
+    /// Work of adhesion $w = 2\gamma$ \[N/mm\].
     pub fn work_of_adhesion(&self) -> NewtonPerMillimetre {
         self.work_of_adhesion
     }
 
-    /// $K = 4E^*/(3R)$ [N/mm³].
+    /// $K = 4E^*/(3R)$ \[N/mm³\].
     fn stiffness_coefficient(&self) -> f64 {
         4.0 * self.e_star / (3.0 * self.r_eff)
     }
 
-    /// $s = \sqrt{8\pi w E^*}$ [N/mm^1.5].
+    /// $s = \sqrt{8\pi w E^*}$ \[N/mm^1.5\].
     fn adhesion_coefficient(&self) -> f64 {
         (8.0 * PI * self.work_of_adhesion).sqrt() * self.e_star.sqrt()
     }
 
-    /// Load [N] at contact radius `contact_radius`, Johnson (1982) eq. (48) solved for $P$
+    /// Load \[N\] at contact radius `contact_radius`, Johnson (1982) eq. (48) solved for $P$
     /// on its physical branch ($P \le 4E^*a^3/3R$):
     ///
     /// $$P = \frac{4E^*a^3}{3R} - \sqrt{8\pi w E^* a^3}$$
     ///
     /// # Arguments
-    /// - `contact_radius` — $a$ [mm], finite, > 0.
+    /// - `contact_radius` — $a$ \[mm\], finite, > 0.
     ///
     /// # Returns
-    /// $P$ [N], compressive positive; any $a > 0$ is an equilibrium (stable under load
+    /// $P$ \[N\], compressive positive; any $a > 0$ is an equilibrium (stable under load
     /// control only for $a \ge a_c$, see [`radius_at_pull_off`](Self::radius_at_pull_off)).
     ///
     /// # Errors
@@ -264,17 +264,17 @@ impl Jkr {
         finite("contact_radius", a, p)
     }
 
-    /// Contact radius [mm] at load `load` on the stable branch (the larger root of eq. 48):
+    /// Contact radius \[mm\] at load `load` on the stable branch (the larger root of eq. 48):
     ///
     /// $$a^{3/2} = \frac{\sqrt{8\pi wE^*} + \sqrt{\tfrac{16E^*}{3R}(P - P_c)}}{8E^*/(3R)},
     ///   \qquad P_c = -\tfrac32\pi wR$$
     ///
     /// # Arguments
-    /// - `load` — $P$ [N], finite, $P \ge P_c$ ([`pull_off_force`](Self::pull_off_force));
+    /// - `load` — $P$ \[N\], finite, $P \ge P_c$ ([`pull_off_force`](Self::pull_off_force));
     ///   negative values are tensile.
     ///
     /// # Returns
-    /// $a \ge a_c$ [mm]; $a = a_c$ at $P = P_c$, $a_0$ at $P = 0$.
+    /// $a \ge a_c$ \[mm\]; $a = a_c$ at $P = P_c$, $a_0$ at $P = 0$.
     ///
     /// # Errors
     /// [`Error::InvalidInput`] naming `load` if it is not finite, below the pull-off force
@@ -311,16 +311,16 @@ impl Jkr {
         finite("load", load, x.powf(2.0 / 3.0))
     }
 
-    /// Approach [mm] at contact radius `contact_radius`, Johnson (1982) eq. (44) with eqs
+    /// Approach \[mm\] at contact radius `contact_radius`, Johnson (1982) eq. (44) with eqs
     /// (42), (47):
     ///
     /// $$\delta = \frac{\pi a (p_0 - 2p_0')}{2E^*} = \frac{a^2}{R} - \sqrt{\frac{2\pi w a}{E^*}}$$
     ///
     /// # Arguments
-    /// - `contact_radius` — $a$ [mm], finite, > 0.
+    /// - `contact_radius` — $a$ \[mm\], finite, > 0.
     ///
     /// # Returns
-    /// $\delta$ [mm], positive when pressed together; negative for small $a$ (the adhering
+    /// $\delta$ \[mm\], positive when pressed together; negative for small $a$ (the adhering
     /// surfaces are pulled out of the undeformed touching position).
     ///
     /// # Errors
@@ -344,18 +344,18 @@ impl Jkr {
         finite("contact_radius", a, d)
     }
 
-    /// Contact radius [mm] at approach `approach` on the branch that is stable under
+    /// Contact radius \[mm\] at approach `approach` on the branch that is stable under
     /// displacement control ($a \ge a_0/36^{1/3}$), inverting
     /// $\delta = a^2/R - \sqrt{2\pi wa/E^*}$ by Newton's method in $\sqrt a$ (convex, started
     /// to the right of the root, so it converges monotonically).
     ///
     /// # Arguments
-    /// - `approach` — $\delta$ [mm], finite, $\delta \ge \delta_c$
+    /// - `approach` — $\delta$ \[mm\], finite, $\delta \ge \delta_c$
     ///   ([`approach_at_pull_off_fixed_grips`](Self::approach_at_pull_off_fixed_grips)
     ///   $= -\tfrac34(\pi^2w^2R/E^{*2})^{1/3}$).
     ///
     /// # Returns
-    /// $a$ [mm].
+    /// $a$ \[mm\].
     ///
     /// # Errors
     /// [`Error::InvalidInput`] naming `approach` if it is not finite or below $\delta_c$
@@ -403,7 +403,7 @@ impl Jkr {
                 return finite("approach", approach, s * s);
             }
             let next = (s - f / df).max(s_min);
-            if !(next < s) {
+            if next.is_nan() || next >= s {
                 return finite("approach", approach, s * s);
             }
             s = next;
@@ -419,7 +419,7 @@ impl Jkr {
     /// `contact_radius`.
     ///
     /// # Arguments
-    /// - `contact_radius` — $a$ [mm], finite, > 0.
+    /// - `contact_radius` — $a$ \[mm\], finite, > 0.
     ///
     /// # Errors
     /// As [`load_from_radius`](Self::load_from_radius).
@@ -454,7 +454,7 @@ impl Jkr {
     /// The state at load `load` on the stable (load-controlled) branch.
     ///
     /// # Arguments
-    /// - `load` — $P$ [N], finite, $\ge P_c$.
+    /// - `load` — $P$ \[N\], finite, $\ge P_c$.
     ///
     /// # Errors
     /// As [`radius_from_load`](Self::radius_from_load).
@@ -477,7 +477,7 @@ impl Jkr {
         Ok(state)
     }
 
-    /// Contact radius at zero load [mm] (point C of Johnson's Fig. 13):
+    /// Contact radius at zero load \[mm\] (point C of Johnson's Fig. 13):
     ///
     /// $$a_0 = \left(\frac{9\pi wR^2}{2E^*}\right)^{1/3} = \left(\frac{9\pi\gamma R^2}{E^*}\right)^{1/3}$$
     ///
@@ -496,7 +496,7 @@ impl Jkr {
         self.r_eff.cbrt().powi(2) * (4.5 * PI * self.work_of_adhesion / self.e_star).cbrt()
     }
 
-    /// Pull-off force under load control [N] (negative, tensile), Johnson (1982) eq. (49):
+    /// Pull-off force under load control \[N\] (negative, tensile), Johnson (1982) eq. (49):
     ///
     /// $$P_c = -\tfrac32\pi wR = -3\pi\gamma R$$
     ///
@@ -517,7 +517,7 @@ impl Jkr {
         -1.5 * PI * self.work_of_adhesion * self.r_eff
     }
 
-    /// Contact radius at pull-off under load control [mm] (point B of Fig. 13, where
+    /// Contact radius at pull-off under load control \[mm\] (point B of Fig. 13, where
     /// $dP/da = 0$):
     ///
     /// $$a_c = \left(\frac{9\pi wR^2}{8E^*}\right)^{1/3} = \frac{a_0}{4^{1/3}}
@@ -538,7 +538,7 @@ impl Jkr {
         self.radius_at_zero_load() / 4.0_f64.cbrt()
     }
 
-    /// Pull-off force under displacement control (fixed grips) [N]: $-\tfrac56\pi wR$,
+    /// Pull-off force under displacement control (fixed grips) \[N\]: $-\tfrac56\pi wR$,
     /// reached at [`radius_at_pull_off_fixed_grips`](Self::radius_at_pull_off_fixed_grips).
     ///
     /// # Example
@@ -557,7 +557,7 @@ impl Jkr {
         -5.0 / 6.0 * PI * self.work_of_adhesion * self.r_eff
     }
 
-    /// Contact radius where the contact breaks under displacement control [mm], where
+    /// Contact radius where the contact breaks under displacement control \[mm\], where
     /// $d\delta/da = 0$:
     ///
     /// $$a = \left(\frac{\pi w R^2}{8E^*}\right)^{1/3} = \frac{a_0}{36^{1/3}}$$
@@ -577,7 +577,7 @@ impl Jkr {
         self.radius_at_zero_load() / 36.0_f64.cbrt()
     }
 
-    /// Approach at pull-off under displacement control [mm], the minimum of $\delta(a)$:
+    /// Approach at pull-off under displacement control \[mm\], the minimum of $\delta(a)$:
     ///
     /// $$\delta_c = -\frac34\left(\frac{\pi^2 w^2 R}{E^{*2}}\right)^{1/3}$$
     ///
@@ -598,7 +598,7 @@ impl Jkr {
         -0.75 * q.cbrt().powi(2) * self.r_eff.cbrt()
     }
 
-    /// Mode-I stress intensity factor at the edge of the contact [MPa·mm^½], the same at
+    /// Mode-I stress intensity factor at the edge of the contact \[MPa·mm^½\], the same at
     /// every contact radius:
     ///
     /// $$K_I = \lim_{r\to a}\sqrt{2\pi(a-r)}\,\bigl(-p(r)\bigr) = p_0'\sqrt{\pi a} = \sqrt{2E^*w}$$

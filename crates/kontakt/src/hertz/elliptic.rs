@@ -44,16 +44,27 @@ pub(crate) fn shape_ratio(y: f64) -> Result<f64> {
 /// (slope between -1 and about -2), started from Hamrock and Brewe's fit
 /// $a/b \approx 1.0339\,(B/A)^{0.636}$. Converges to machine precision in 4-6 evaluations.
 ///
-/// Returns the root and the number of function evaluations.
-pub(crate) fn invert_shape_ratio(ratio: f64) -> Result<(f64, usize)> {
+/// Returns the root, the number of function evaluations and $(R_F, R_D)$ at the root.
+pub(crate) fn invert_shape_ratio(ratio: f64) -> Result<Inversion> {
     if !(ratio.is_finite() && ratio >= 1.0) {
         return Err(Error::invalid("B/A", ratio, "a finite ratio >= 1"));
     }
     if ratio <= 1.0 + 4.0 * f64::EPSILON {
-        return Ok((1.0, 0));
+        return Ok(Inversion {
+            axis_ratio: 1.0,
+            evaluations: 0,
+            rf_rd: rf_rd(1.0)?,
+        });
     }
     let target = ratio.ln();
-    let g = |u: f64| -> Result<f64> { Ok(shape_ratio((2.0 * u).exp())?.ln() - target) };
+    // The last (R_F, R_D) evaluated, so that the caller does not evaluate them again.
+    let mut last = (0.0, 0.0, 0.0);
+    let mut g = |u: f64| -> Result<f64> {
+        let y = (2.0 * u).exp();
+        let (rf, rd) = rf_rd(y)?;
+        last = (u, rf, rd);
+        Ok(((3.0 * rf - rd) / (y * rd)).ln() - target)
+    };
     // Bracket: g(0) = -ln(ratio) < 0; g decreases in u. The lower end must have g > 0.
     let mut hi = 0.0_f64;
     let mut g_hi = -target;
@@ -89,7 +100,7 @@ pub(crate) fn invert_shape_ratio(ratio: f64) -> Result<(f64, usize)> {
             g_hi = g1;
         }
         if g1 == 0.0 {
-            return Ok((u1.exp(), evals));
+            return finish(u1, evals, last);
         }
         let slope = (g1 - g0) / (u1 - u0);
         let mut u2 = u1 - g1 / slope;
@@ -103,7 +114,7 @@ pub(crate) fn invert_shape_ratio(ratio: f64) -> Result<(f64, usize)> {
             };
         }
         if (u2 - u1).abs() <= 4.0 * f64::EPSILON * u1.abs().max(1e-300) {
-            return Ok((u2.exp(), evals));
+            return finish(u2, evals, last);
         }
         u0 = u1;
         g0 = g1;
@@ -111,13 +122,39 @@ pub(crate) fn invert_shape_ratio(ratio: f64) -> Result<(f64, usize)> {
         g1 = g(u1)?;
         evals += 1;
         if g1.abs() <= 2.0 * f64::EPSILON * target.abs().max(1.0) {
-            return Ok((u1.exp(), evals));
+            return finish(u1, evals, last);
         }
     }
     Err(Error::NotConverged {
         what: "Hertz eccentricity inversion (Johnson 1982 eq. 57)".into(),
         iterations: evals,
         residual: g1.abs(),
+    })
+}
+
+/// Result of [`invert_shape_ratio`].
+pub(crate) struct Inversion {
+    /// b/a.
+    pub axis_ratio: f64,
+    /// Shape-function evaluations used.
+    pub evaluations: usize,
+    /// $(R_F, R_D)$ at $y = (b/a)^2$.
+    pub rf_rd: (f64, f64),
+}
+
+/// Package the root; reuse the last evaluation when it was taken at the root itself
+/// (the secant step that converged moved u by at most a few ulps, which changes R_F and
+/// R_D by far less than their own rounding; otherwise evaluate once more).
+fn finish(u: f64, evaluations: usize, last: (f64, f64, f64)) -> Result<Inversion> {
+    let rf_rd = if last.0 == u {
+        (last.1, last.2)
+    } else {
+        rf_rd((2.0 * u).exp())?
+    };
+    Ok(Inversion {
+        axis_ratio: u.exp(),
+        evaluations,
+        rf_rd,
     })
 }
 
@@ -153,9 +190,12 @@ mod tests {
         for i in 0..=400 {
             let kp = 10f64.powf(-(i as f64) * 4.5 / 400.0);
             let r = shape_ratio(kp * kp).unwrap();
-            let (k, evals) = invert_shape_ratio(r).unwrap();
-            max_evals = max_evals.max(evals);
-            assert_relative_eq!(k, kp, max_relative = 2e-13);
+            let inv = invert_shape_ratio(r).unwrap();
+            max_evals = max_evals.max(inv.evaluations);
+            assert_relative_eq!(inv.axis_ratio, kp, max_relative = 2e-13);
+            let (rf, rd) = rf_rd(inv.axis_ratio * inv.axis_ratio).unwrap();
+            assert_relative_eq!(inv.rf_rd.0, rf, max_relative = 1e-14);
+            assert_relative_eq!(inv.rf_rd.1, rd, max_relative = 1e-14);
         }
         assert!(max_evals <= 8, "max evaluations {max_evals}");
     }

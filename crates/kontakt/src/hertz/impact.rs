@@ -117,21 +117,21 @@ pub struct HertzImpact {
 /// Peak values of a quasi-static Hertz impact (plain data).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct ImpactResult {
-    /// $\delta^*$, maximum approach (compression) [mm].
+    /// $\delta^*$, maximum approach (compression) \[mm\].
     pub max_approach: Millimetre,
-    /// $F^* = k\,\delta^{*3/2}$, maximum contact force [N].
+    /// $F^* = k\,\delta^{*3/2}$, maximum contact force \[N\].
     pub max_force: Newton,
-    /// $T = c\,\delta^*/V$, duration of contact [s].
+    /// $T = c\,\delta^*/V$, duration of contact \[s\].
     pub contact_duration: Second,
-    /// $T/2$, the instant of maximum approach [s].
+    /// $T/2$, the instant of maximum approach \[s\].
     pub time_of_max_approach: Second,
     /// $\tfrac12 m V^2$, kinetic energy of the relative motion = elastic energy stored at
-    /// maximum approach [N·mm].
+    /// maximum approach \[N·mm\].
     pub kinetic_energy: NewtonMillimetre,
-    /// $a^* = \sqrt{R\,\delta^*}$, maximum contact radius [mm]; `Some` only for
+    /// $a^* = \sqrt{R\,\delta^*}$, maximum contact radius \[mm\]; `Some` only for
     /// [`HertzImpact::sphere`] (for a general $k$ solve the contact at `max_force`).
     pub max_contact_radius: Option<Millimetre>,
-    /// $p_0^* = 2E^*a^*/(\pi R)$, maximum Hertz pressure [MPa]; `Some` only for
+    /// $p_0^* = 2E^*a^*/(\pi R)$, maximum Hertz pressure \[MPa\]; `Some` only for
     /// [`HertzImpact::sphere`].
     pub max_pressure: Option<Megapascal>,
 }
@@ -143,9 +143,9 @@ impl HertzImpact {
     /// T = 2.943\,275\ldots\,\frac{\delta^*}{V}$$
     ///
     /// # Arguments
-    /// - `load_coefficient` — $k$ [N/mm^1.5], finite, > 0 (spheres: $\tfrac43E^*\sqrt R$).
-    /// - `effective_mass` — $m = m_1m_2/(m_1+m_2)$ [t], finite, > 0 (see [`effective_mass`]).
-    /// - `impact_velocity` — $V$, relative normal approach velocity at first touch [mm/s],
+    /// - `load_coefficient` — $k$ \[N/mm^1.5\], finite, > 0 (spheres: $\tfrac43E^*\sqrt R$).
+    /// - `effective_mass` — $m = m_1m_2/(m_1+m_2)$ \[t\], finite, > 0 (see [`effective_mass`]).
+    /// - `impact_velocity` — $V$, relative normal approach velocity at first touch \[mm/s\],
     ///   finite, > 0.
     ///
     /// # Returns
@@ -187,11 +187,11 @@ impl HertzImpact {
     /// p_0^* = \frac{2E^*a^*}{\pi R}$$
     ///
     /// # Arguments
-    /// - `r_eff` — $R$, effective radius $1/R = 1/R_1 + 1/R_2$ [mm], finite, > 0.
-    /// - `e_star` — $E^*$, contact modulus [MPa], finite, > 0
+    /// - `r_eff` — $R$, effective radius $1/R = 1/R_1 + 1/R_2$ \[mm\], finite, > 0.
+    /// - `e_star` — $E^*$, contact modulus \[MPa\], finite, > 0
     ///   (see [`crate::material::effective_modulus`]).
-    /// - `effective_mass` — $m$ [t], finite, > 0.
-    /// - `impact_velocity` — $V$ [mm/s], finite, > 0.
+    /// - `effective_mass` — $m$ \[t\], finite, > 0.
+    /// - `impact_velocity` — $V$ \[mm/s\], finite, > 0.
     ///
     /// # Returns
     /// The planned impact; [`ImpactResult::max_contact_radius`] and
@@ -289,22 +289,22 @@ impl HertzImpact {
         })
     }
 
-    /// The load coefficient $k$ [N/mm^1.5] of $F = k\delta^{3/2}$.
+    /// The load coefficient $k$ \[N/mm^1.5\] of $F = k\delta^{3/2}$.
     pub fn load_coefficient(&self) -> f64 {
         self.load_coefficient
     }
 
-    /// The effective mass $m$ [t].
+    /// The effective mass $m$ \[t\].
     pub fn effective_mass(&self) -> Tonne {
         self.effective_mass
     }
 
-    /// The impact velocity $V$ [mm/s].
+    /// The impact velocity $V$ \[mm/s\].
     pub fn impact_velocity(&self) -> MillimetrePerSecond {
         self.impact_velocity
     }
 
-    /// The rebound velocity [mm/s]: $e\,V = V$ (perfectly elastic,
+    /// The rebound velocity \[mm/s\]: $e\,V = V$ (perfectly elastic,
     /// [`COEFFICIENT_OF_RESTITUTION`] = 1).
     pub fn rebound_velocity(&self) -> MillimetrePerSecond {
         COEFFICIENT_OF_RESTITUTION * self.impact_velocity
@@ -316,7 +316,7 @@ impl HertzImpact {
         self.result
     }
 
-    /// Approach $\delta(t)$ [mm] at time `time` after first contact.
+    /// Approach $\delta(t)$ \[mm\] at time `time` after first contact.
     ///
     /// $$t = \frac{\delta^*}{V}\,I\!\left(\frac{\delta}{\delta^*}\right),\qquad
     /// I(x) = \int_0^x\frac{ds}{\sqrt{1-s^{5/2}}},\qquad \delta(T-t) = \delta(t)$$
@@ -325,10 +325,10 @@ impl HertzImpact {
     /// relative error a few ulp (tested against an independent ODE integration to 1e-10).
     ///
     /// # Arguments
-    /// - `time` — $t$ [s], $0 \le t \le T$ (= [`ImpactResult::contact_duration`]).
+    /// - `time` — $t$ \[s\], $0 \le t \le T$ (= [`ImpactResult::contact_duration`]).
     ///
     /// # Returns
-    /// $\delta(t)$ [mm], $0 \le \delta \le \delta^*$; zero at $t = 0$ and $t = T$.
+    /// $\delta(t)$ \[mm\], $0 \le \delta \le \delta^*$; zero at $t = 0$ and $t = T$.
     ///
     /// # Errors
     /// [`Error::InvalidInput`] naming `time` outside $[0, T]$ or not finite.
@@ -351,10 +351,10 @@ impl HertzImpact {
         Ok(self.result.max_approach * state.x)
     }
 
-    /// Contact force $F(t) = k\,\delta(t)^{3/2}$ [N] at time `time`.
+    /// Contact force $F(t) = k\,\delta(t)^{3/2}$ \[N\] at time `time`.
     ///
     /// # Arguments
-    /// - `time` — $t$ [s], $0 \le t \le T$.
+    /// - `time` — $t$ \[s\], $0 \le t \le T$.
     ///
     /// # Errors
     /// [`Error::InvalidInput`] naming `time` outside $[0, T]$ or not finite.
@@ -375,12 +375,12 @@ impl HertzImpact {
         Ok(self.result.max_force * state.x * state.x.sqrt())
     }
 
-    /// Rate of approach $\dot\delta(t)$ [mm/s] at time `time`: $+V\sqrt{1-(\delta/\delta^*)^{5/2}}$
+    /// Rate of approach $\dot\delta(t)$ \[mm/s\] at time `time`: $+V\sqrt{1-(\delta/\delta^*)^{5/2}}$
     /// during compression ($t < T/2$), the negative of that during restitution; $+V$ at
     /// $t=0$ and $-V$ at $t=T$.
     ///
     /// # Arguments
-    /// - `time` — $t$ [s], $0 \le t \le T$.
+    /// - `time` — $t$ \[s\], $0 \le t \le T$.
     ///
     /// # Errors
     /// [`Error::InvalidInput`] naming `time` outside $[0, T]$ or not finite.
@@ -403,13 +403,13 @@ impl HertzImpact {
         Ok(if state.restitution { -rate } else { rate })
     }
 
-    /// Time [s] after first contact at which the approach first reaches `approach`
+    /// Time \[s\] after first contact at which the approach first reaches `approach`
     /// (during compression); it is reached again, during restitution, at $T - t$.
     ///
     /// $$t(\delta) = \frac{\delta^*}{V}\int_0^{\delta/\delta^*}\frac{dx}{\sqrt{1-x^{5/2}}}$$
     ///
     /// # Arguments
-    /// - `approach` — $\delta$ [mm], $0 \le \delta \le \delta^*$.
+    /// - `approach` — $\delta$ \[mm\], $0 \le \delta \le \delta^*$.
     ///
     /// # Errors
     /// [`Error::InvalidInput`] naming `approach` outside $[0, \delta^*]$ or not finite.
@@ -538,7 +538,7 @@ fn invert_normalized_time(tau: f64) -> Result<(f64, f64)> {
             let u = x.powf(2.5);
             let f = normalized_time_from_start(x, u) - tau;
             let next = x - f * (1.0 - u).sqrt();
-            if !(next < x) || f <= 0.0 {
+            if next.is_nan() || next >= x || f <= 0.0 {
                 let u = x.powf(2.5);
                 return Ok((x, (1.0 - u).sqrt()));
             }
@@ -557,7 +557,7 @@ fn invert_normalized_time(tau: f64) -> Result<(f64, f64)> {
         let y = z * z;
         let f = normalized_time_to_peak(z) - tau_r;
         let next = z - f / (0.8 * (1.0 - y).powf(-0.6));
-        if !(next < z) || f <= 0.0 {
+        if next.is_nan() || next >= z || f <= 0.0 {
             let x = (0.4 * (-y).ln_1p()).exp();
             return Ok((x.min(1.0), z));
         }
@@ -582,11 +582,11 @@ fn positive_with(field: &'static str, value: f64, expected: &'static str) -> Res
     }
 }
 
-/// Mass of a solid sphere, $m = \tfrac43\pi R^3\rho$ [t].
+/// Mass of a solid sphere, $m = \tfrac43\pi R^3\rho$ \[t\].
 ///
 /// # Arguments
-/// - `radius` — $R$ [mm], finite, > 0.
-/// - `density` — $\rho$ [t/mm³], finite, > 0 (steel 7.85e-9).
+/// - `radius` — $R$ \[mm\], finite, > 0.
+/// - `density` — $\rho$ \[t/mm³\], finite, > 0 (steel 7.85e-9).
 ///
 /// # Errors
 /// [`Error::InvalidInput`] naming `radius` or `density`, or `radius` if the mass overflows.
@@ -616,12 +616,12 @@ pub fn sphere_mass(radius: Millimetre, density: TonnePerCubicMillimetre) -> Resu
     }
 }
 
-/// Effective (reduced) mass of two colliding bodies, $m = m_1 m_2/(m_1+m_2)$ [t].
+/// Effective (reduced) mass of two colliding bodies, $m = m_1 m_2/(m_1+m_2)$ \[t\].
 ///
 /// A massive, fixed body (a flat on the ground) is `f64::INFINITY`; then $m = m_1$.
 ///
 /// # Arguments
-/// - `mass1`, `mass2` — [t], each > 0 and not NaN; at most one of them infinite.
+/// - `mass1`, `mass2` — \[t\], each > 0 and not NaN; at most one of them infinite.
 ///
 /// # Errors
 /// [`Error::InvalidInput`] naming `mass1` or `mass2`.
@@ -669,22 +669,22 @@ pub fn effective_mass(mass1: Tonne, mass2: Tonne) -> Result<Tonne> {
     }
 }
 
-/// Impact velocity [mm/s] at which the maximum Hertz pressure of a spherical impact reaches
+/// Impact velocity \[mm/s\] at which the maximum Hertz pressure of a spherical impact reaches
 /// `yield_pressure`: the exact elastic limit for any effective mass.
 ///
 /// $$a_Y = \frac{\pi R\,p_{0Y}}{2E^*},\qquad \delta_Y = \frac{a_Y^2}{R},\qquad
 /// V_Y = \sqrt{\frac{4k\,\delta_Y^{5/2}}{5m}},\quad k = \tfrac43E^*\sqrt R$$
 ///
 /// # Arguments
-/// - `r_eff` — $R$, effective radius [mm], finite, > 0.
-/// - `e_star` — $E^*$ [MPa], finite, > 0.
-/// - `effective_mass` — $m$ [t], finite, > 0.
-/// - `yield_pressure` — $p_{0Y}$, maximum Hertz pressure at first yield [MPa], finite,
-///   > 0; for a circular contact $p_{0Y} = 1.60\,Y$ at $\nu = 0.3$
+/// - `r_eff` — $R$, effective radius \[mm\], finite, > 0.
+/// - `e_star` — $E^*$ \[MPa\], finite, > 0.
+/// - `effective_mass` — $m$ \[t\], finite, > 0.
+/// - `yield_pressure` — $p_{0Y}$, maximum Hertz pressure at first yield \[MPa\], finite and
+///   positive; for a circular contact $p_{0Y} = 1.60\,Y$ at $\nu = 0.3$
 ///   ([`DEFAULT_YIELD_PRESSURE_RATIO`]).
 ///
 /// # Returns
-/// $V_Y$ [mm/s]. Below it the impact is fully elastic.
+/// $V_Y$ \[mm/s\]. Below it the impact is fully elastic.
 ///
 /// # Errors
 /// [`Error::InvalidInput`] naming the bad argument, or `yield_pressure` on overflow.
@@ -723,7 +723,7 @@ pub fn yield_velocity(
     finite_velocity(v, "yield_pressure", yield_pressure)
 }
 
-/// Yield velocity [mm/s] of a solid sphere striking a massive flat (same or different
+/// Yield velocity \[mm/s\] of a solid sphere striking a massive flat (same or different
 /// material), exact within Hertz theory; independent of the sphere radius:
 ///
 /// $$\frac{\rho V_Y^2}{Y} = \frac{4}{5\pi}\left(\frac{\pi}{2}\frac{p_{0Y}}{Y}\right)^5
@@ -735,12 +735,12 @@ pub fn yield_velocity(
 /// formula).
 ///
 /// # Arguments
-/// - `density` — $\rho$ of the sphere [t/mm³], finite, > 0.
-/// - `e_star` — $E^*$ of sphere and flat [MPa], finite, > 0.
-/// - `yield_pressure` — $p_{0Y}$ [MPa], finite, > 0 (e.g. `1.60 * Y`).
+/// - `density` — $\rho$ of the sphere \[t/mm³\], finite, > 0.
+/// - `e_star` — $E^*$ of sphere and flat \[MPa\], finite, > 0.
+/// - `yield_pressure` — $p_{0Y}$ \[MPa\], finite, > 0 (e.g. `1.60 * Y`).
 ///
 /// # Returns
-/// $V_Y$ [mm/s].
+/// $V_Y$ \[mm/s\].
 ///
 /// # Errors
 /// [`Error::InvalidInput`] naming the bad argument, or `yield_pressure` on overflow.
@@ -777,7 +777,7 @@ pub fn yield_velocity_sphere_on_flat(
 }
 
 /// Johnson's (1982) approximation, eq. (38), for the velocity at which a sphere striking a
-/// massive flat starts to yield [mm/s]:
+/// massive flat starts to yield \[mm/s\]:
 ///
 /// $$\frac{\rho V_Y^2}{Y} = 85\left(\frac{Y}{E^*}\right)^4$$
 ///
@@ -788,12 +788,12 @@ pub fn yield_velocity_sphere_on_flat(
 /// value 0.135 m/s). Use this only to compare with the paper.
 ///
 /// # Arguments
-/// - `density` — $\rho$ [t/mm³], finite, > 0.
-/// - `e_star` — $E^*$ [MPa], finite, > 0.
-/// - `yield_stress` — $Y$, uniaxial yield stress of the softer body [MPa], finite, > 0.
+/// - `density` — $\rho$ \[t/mm³\], finite, > 0.
+/// - `e_star` — $E^*$ \[MPa\], finite, > 0.
+/// - `yield_stress` — $Y$, uniaxial yield stress of the softer body \[MPa\], finite, > 0.
 ///
 /// # Returns
-/// $V_Y$ [mm/s].
+/// $V_Y$ \[mm/s\].
 ///
 /// # Errors
 /// [`Error::InvalidInput`] naming the bad argument, or `yield_stress` on overflow.
@@ -853,7 +853,7 @@ mod tests {
     fn inversion_round_trips_over_the_half_period() {
         for i in 0..=1000 {
             let tau = 0.5 * HERTZ_IMPACT_DURATION_CONSTANT * f64::from(i) / 1000.0;
-            let (x, z) = invert_normalized_time(tau).unwrap();
+            let (x, z) = invert_normalized_time(tau).expect("invariant: tau in range");
             assert!((z * z + x.powf(2.5) - 1.0).abs() < 1e-15);
             let back = if x.powf(2.5) <= SPLIT_U {
                 normalized_time_from_start(x, x.powf(2.5))

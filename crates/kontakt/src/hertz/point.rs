@@ -185,8 +185,9 @@ impl HertzPointContact {
     ) -> Result<Self> {
         let k = geometry.curvature;
         let e_star = effective_modulus(&body1, &body2);
-        let (axis_ratio, shape_evaluations) = elliptic::invert_shape_ratio(k.ratio())?;
-        let (rf, rd) = elliptic::rf_rd(axis_ratio * axis_ratio)?;
+        let inversion = elliptic::invert_shape_ratio(k.ratio())?;
+        let (axis_ratio, shape_evaluations) = (inversion.axis_ratio, inversion.evaluations);
+        let (rf, rd) = inversion.rf_rd;
         let a_unit = (rd / (2.0 * PI * e_star * k.a_coef)).cbrt();
         let delta_unit = 3.0 * rf / (2.0 * PI * a_unit * e_star);
         Ok(HertzPointContact {
