@@ -481,6 +481,35 @@ fn eq38_printed_coefficient_and_example() {
     assert!((c0 - 5_172_194.153).abs() < 1.0);
 }
 
+/// Johnson's own eq. (21a), P_Y = 21 R^2 Y^3 / E*^2 (first yield of a static sphere
+/// contact, i.e. p0Y = (126/pi^3)^{1/3} Y = 1.596 Y), fed through the impact model gives
+/// rho V_Y^2 / Y = 25.20 (Y/E*)^4: consistent with the exact 25.5 and not with eq. (38)'s 85.
+#[test]
+fn eq21a_and_eq38_of_the_same_paper_disagree() {
+    let (rho, y, radius): (f64, f64, f64) = (7.85e-9, 1000.0, 6.35);
+    let steel = ElasticMaterial::STEEL;
+    let e_star = effective_modulus(&steel, &steel);
+    let m = sphere_mass(radius, rho).unwrap();
+    let p_y = 21.0 * radius * radius * y.powi(3) / (e_star * e_star);
+    // F* ∝ V^{6/5}: scale a reference impact to max_force = P_Y.
+    let reference = HertzImpact::sphere(radius, e_star, m, 100.0).unwrap();
+    let v_y = 100.0 * (p_y / reference.result().max_force).powf(5.0 / 6.0);
+    let at_yield = HertzImpact::sphere(radius, e_star, m, v_y)
+        .unwrap()
+        .result();
+    assert!((at_yield.max_force / p_y - 1.0).abs() < 1e-13);
+    let coefficient = rho * v_y * v_y / y / (y / e_star).powi(4);
+    // (4/(5 pi)) (pi/2)^5 (126/pi^3)^{5/3} = 25.20
+    let expected = 4.0 / (5.0 * PI) * (PI / 2.0).powi(5) * (126.0 / PI.powi(3)).powf(5.0 / 3.0);
+    assert!(
+        (coefficient / expected - 1.0).abs() < 1e-12,
+        "{coefficient} vs {expected}"
+    );
+    assert!((coefficient - 25.20).abs() < 0.01);
+    assert!((coefficient / 25.535 - 1.0).abs() < 0.02);
+    assert!(coefficient < 0.3 * JOHNSON_YIELD_VELOCITY_COEFFICIENT);
+}
+
 // ---------------------------------------------------------------------------------------
 // Impact: bad input
 // ---------------------------------------------------------------------------------------

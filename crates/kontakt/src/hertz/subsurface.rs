@@ -64,20 +64,20 @@ use std::f64::consts::PI;
 /// von Mises equivalents. Stresses in MPa, tension positive.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct AxisStress {
-    /// Depth `z` below the surface [mm] (>= 0).
+    /// Depth `z` below the surface \[mm\] (>= 0).
     pub depth: Millimetre,
-    /// Normal stress along `x` [MPa]: along the major semi-axis `a` (point contact), or
+    /// Normal stress along `x` \[MPa\]: along the major semi-axis `a` (point contact), or
     /// across the strip (line contact).
     pub sigma_x: Megapascal,
-    /// Normal stress along `y` [MPa]: along the minor semi-axis `b` (point contact), or
+    /// Normal stress along `y` \[MPa\]: along the minor semi-axis `b` (point contact), or
     /// along the cylinder axis (line contact, `nu (sigma_x + sigma_z)`).
     pub sigma_y: Megapascal,
-    /// Normal stress along the depth direction `z` [MPa].
+    /// Normal stress along the depth direction `z` \[MPa\].
     pub sigma_z: Megapascal,
-    /// Tresca maximum shear stress: half the largest principal stress difference [MPa].
+    /// Tresca maximum shear stress: half the largest principal stress difference \[MPa\].
     pub max_shear: Megapascal,
     /// Von Mises equivalent stress
-    /// $\sqrt{((\sigma_x-\sigma_y)^2+(\sigma_y-\sigma_z)^2+(\sigma_z-\sigma_x)^2)/2}$ [MPa].
+    /// $\sqrt{((\sigma_x-\sigma_y)^2+(\sigma_y-\sigma_z)^2+(\sigma_z-\sigma_x)^2)/2}$ \[MPa\].
     pub von_mises: Megapascal,
 }
 
@@ -85,13 +85,13 @@ pub struct AxisStress {
 /// axis, with the depths where they occur.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 pub struct StressPeaks {
-    /// Largest Tresca maximum shear stress on the axis [MPa].
+    /// Largest Tresca maximum shear stress on the axis \[MPa\].
     pub max_shear: Megapascal,
-    /// Depth of `max_shear` [mm].
+    /// Depth of `max_shear` \[mm\].
     pub max_shear_depth: Millimetre,
-    /// Largest von Mises stress on the axis [MPa].
+    /// Largest von Mises stress on the axis \[MPa\].
     pub max_von_mises: Megapascal,
-    /// Depth of `max_von_mises` [mm].
+    /// Depth of `max_von_mises` \[mm\].
     pub max_von_mises_depth: Millimetre,
 }
 
@@ -690,13 +690,13 @@ fn peaks_from(p0: f64, length: f64, tresca: Peak, mises: Peak) -> Result<StressP
 /// arctangent, so it keeps full relative precision at any depth.
 ///
 /// # Arguments
-/// - `p0` — $p_0$, maximum contact pressure [MPa], finite, > 0.
-/// - `a` — contact radius [mm], finite, > 0.
+/// - `p0` — $p_0$, maximum contact pressure \[MPa\], finite, > 0.
+/// - `a` — contact radius \[mm\], finite, > 0.
 /// - `nu` — Poisson's ratio of the body, −1 < ν ≤ 0.5.
-/// - `z` — depth below the surface [mm], finite, ≥ 0.
+/// - `z` — depth below the surface \[mm\], finite, ≥ 0.
 ///
 /// # Returns
-/// [`AxisStress`] with `sigma_x = sigma_y = sigma_r` [MPa].
+/// [`AxisStress`] with `sigma_x = sigma_y = sigma_r` \[MPa\].
 ///
 /// # Errors
 /// [`Error::InvalidInput`] naming `p0`, `a`, `nu` or `z` when out of range or not finite
@@ -746,14 +746,14 @@ pub fn axis_stress_circular(p0: f64, a: f64, nu: f64, z: f64) -> Result<AxisStre
 /// Huber's result for `b = a` and to McEwen's line-contact result as `b/a -> 0`.
 ///
 /// # Arguments
-/// - `p0` — $p_0$, maximum contact pressure [MPa], finite, > 0.
-/// - `a` — major semi-axis, along `x` [mm], finite, > 0.
-/// - `b` — minor semi-axis, along `y` [mm], finite, 0 < b ≤ a.
+/// - `p0` — $p_0$, maximum contact pressure \[MPa\], finite, > 0.
+/// - `a` — major semi-axis, along `x` \[mm\], finite, > 0.
+/// - `b` — minor semi-axis, along `y` \[mm\], finite, 0 < b ≤ a.
 /// - `nu` — Poisson's ratio of the body, −1 < ν ≤ 0.5.
-/// - `z` — depth below the surface [mm], finite, ≥ 0.
+/// - `z` — depth below the surface \[mm\], finite, ≥ 0.
 ///
 /// # Returns
-/// [`AxisStress`] [MPa]; `sigma_x` along the major axis, `sigma_y` along the minor axis.
+/// [`AxisStress`] \[MPa\]; `sigma_x` along the major axis, `sigma_y` along the minor axis.
 ///
 /// # Errors
 /// [`Error::InvalidInput`] naming `p0`, `a`, `b` (also when `b > a`), `nu` or `z`;
@@ -805,13 +805,13 @@ pub fn axis_stress_elliptical(p0: f64, a: f64, b: f64, nu: f64, z: f64) -> Resul
 /// $\sigma_z/p_0 = -1/s$ with $s = \sqrt{1+\zeta^2}$, $w = s+\zeta$, $\zeta = z/b$.
 ///
 /// # Arguments
-/// - `p0` — $p_0$, maximum contact pressure [MPa], finite, > 0.
-/// - `b` — half-width of the contact strip, along `x` [mm], finite, > 0.
+/// - `p0` — $p_0$, maximum contact pressure \[MPa\], finite, > 0.
+/// - `b` — half-width of the contact strip, along `x` \[mm\], finite, > 0.
 /// - `nu` — Poisson's ratio of the body, −1 < ν ≤ 0.5.
-/// - `z` — depth below the surface [mm], finite, ≥ 0.
+/// - `z` — depth below the surface \[mm\], finite, ≥ 0.
 ///
 /// # Returns
-/// [`AxisStress`] [MPa]; `sigma_x` across the strip, `sigma_y` along the cylinder axis.
+/// [`AxisStress`] \[MPa\]; `sigma_x` across the strip, `sigma_y` along the cylinder axis.
 ///
 /// # Errors
 /// [`Error::InvalidInput`] naming `p0`, `b`, `nu` or `z`.
@@ -854,13 +854,13 @@ pub fn axis_stress_line(p0: f64, b: f64, nu: f64, z: f64) -> Result<AxisStress> 
 /// A maximum at the surface (e.g. for strongly negative ν) is returned with depth 0.
 ///
 /// # Arguments
-/// - `p0` — maximum contact pressure [MPa], finite, > 0.
-/// - `a` — major semi-axis [mm], finite, > 0.
-/// - `b` — minor semi-axis [mm], finite, 0 < b ≤ a.
+/// - `p0` — maximum contact pressure \[MPa\], finite, > 0.
+/// - `a` — major semi-axis \[mm\], finite, > 0.
+/// - `b` — minor semi-axis \[mm\], finite, 0 < b ≤ a.
 /// - `nu` — Poisson's ratio, −1 < ν ≤ 0.5.
 ///
 /// # Returns
-/// [`StressPeaks`]: stresses [MPa], depths [mm].
+/// [`StressPeaks`]: stresses \[MPa\], depths \[mm\].
 ///
 /// # Errors
 /// [`Error::InvalidInput`] naming `p0`, `a`, `b` or `nu`; [`Error::NotConverged`] if the
@@ -902,12 +902,12 @@ pub fn axis_stress_peaks(p0: f64, a: f64, b: f64, nu: f64) -> Result<StressPeaks
 /// (`sigma_y = nu (sigma_x + sigma_z)` enters both criteria).
 ///
 /// # Arguments
-/// - `p0` — maximum contact pressure [MPa], finite, > 0.
-/// - `b` — half-width of the contact strip [mm], finite, > 0.
+/// - `p0` — maximum contact pressure \[MPa\], finite, > 0.
+/// - `b` — half-width of the contact strip \[mm\], finite, > 0.
 /// - `nu` — Poisson's ratio, −1 < ν ≤ 0.5.
 ///
 /// # Returns
-/// [`StressPeaks`]: stresses [MPa], depths [mm].
+/// [`StressPeaks`]: stresses \[MPa\], depths \[mm\].
 ///
 /// # Errors
 /// [`Error::InvalidInput`] naming `p0`, `b` or `nu`.
@@ -964,7 +964,7 @@ fn ratio_from(tresca: Peak, mises: Peak, criterion: YieldCriterion) -> Result<f6
 /// - `criterion` — [`YieldCriterion`].
 ///
 /// # Returns
-/// $p_{0Y}/Y$ [-].
+/// $p_{0Y}/Y$ \[-\].
 ///
 /// # Errors
 /// [`Error::InvalidInput`] naming `b_over_a` or `nu`.
@@ -1010,7 +1010,7 @@ pub fn yield_pressure_ratio(b_over_a: f64, nu: f64, criterion: YieldCriterion) -
 /// - `criterion` — [`YieldCriterion`].
 ///
 /// # Returns
-/// $p_{0Y}/Y$ [-].
+/// $p_{0Y}/Y$ \[-\].
 ///
 /// # Errors
 /// [`Error::InvalidInput`] naming `nu`.
@@ -1055,12 +1055,12 @@ fn finite_load(v: f64, r_eff: f64, e_star: f64, y: f64) -> Result<f64> {
 /// exact load for any ν and criterion is [`first_yield_load_circular`].
 ///
 /// # Arguments
-/// - `r_eff` — effective radius of relative curvature R [mm], finite, > 0.
-/// - `e_star` — contact modulus E* [MPa], finite, > 0.
-/// - `y` — yield stress in simple tension Y [MPa], finite, > 0.
+/// - `r_eff` — effective radius of relative curvature R \[mm\], finite, > 0.
+/// - `e_star` — contact modulus E* \[MPa\], finite, > 0.
+/// - `y` — yield stress in simple tension Y \[MPa\], finite, > 0.
 ///
 /// # Returns
-/// $P_Y$ [N].
+/// $P_Y$ \[N\].
 ///
 /// # Errors
 /// [`Error::InvalidInput`] naming `r_eff`, `e_star` or `y` (or all three if the load
@@ -1093,19 +1093,19 @@ pub fn first_yield_load_circular_johnson(r_eff: f64, e_star: f64, y: f64) -> Res
 }
 
 /// Johnson's closed form for the line load at first yield of a line (cylinder) contact:
-/// $P'_Y = 8.8\,R\,Y^2/E^*$ [N/mm].
+/// $P'_Y = 8.8\,R\,Y^2/E^*$ \[N/mm\].
 ///
 /// The constant 8.8 is $\pi (1.67)^2$ with the Tresca value $p_{0Y} = 1.67\,Y$; the
 /// von Mises value $p_{0Y} = 1.79\,Y$ gives 10.1 instead. The exact load for any ν and
 /// criterion is [`first_yield_line_load`].
 ///
 /// # Arguments
-/// - `r_eff` — effective radius of relative curvature R [mm], finite, > 0.
-/// - `e_star` — contact modulus E* [MPa], finite, > 0.
-/// - `y` — yield stress in simple tension Y [MPa], finite, > 0.
+/// - `r_eff` — effective radius of relative curvature R \[mm\], finite, > 0.
+/// - `e_star` — contact modulus E* \[MPa\], finite, > 0.
+/// - `y` — yield stress in simple tension Y \[MPa\], finite, > 0.
 ///
 /// # Returns
-/// $P'_Y$ [N/mm].
+/// $P'_Y$ \[N/mm\].
 ///
 /// # Errors
 /// [`Error::InvalidInput`] naming `r_eff`, `e_star` or `y`.
@@ -1140,14 +1140,14 @@ pub fn first_yield_line_load_johnson(
 /// from $p_0 = (6 P E^{*2}/(\pi^3 R^2))^{1/3}$ (Johnson 1982 eq. 14).
 ///
 /// # Arguments
-/// - `r_eff` — effective radius R [mm], finite, > 0.
-/// - `e_star` — contact modulus E* [MPa], finite, > 0.
-/// - `y` — yield stress Y [MPa], finite, > 0.
+/// - `r_eff` — effective radius R \[mm\], finite, > 0.
+/// - `e_star` — contact modulus E* \[MPa\], finite, > 0.
+/// - `y` — yield stress Y \[MPa\], finite, > 0.
 /// - `nu` — Poisson's ratio of the yielding body, −1 < ν ≤ 0.5.
 /// - `criterion` — [`YieldCriterion`].
 ///
 /// # Returns
-/// $P_Y$ [N].
+/// $P_Y$ \[N\].
 ///
 /// # Errors
 /// [`Error::InvalidInput`] naming the offending argument.
@@ -1194,14 +1194,14 @@ pub fn first_yield_load_circular(
 /// from $p_0 = \sqrt{P'E^*/(\pi R)}$ (Johnson 1982 eq. 11).
 ///
 /// # Arguments
-/// - `r_eff` — effective radius R [mm], finite, > 0.
-/// - `e_star` — contact modulus E* [MPa], finite, > 0.
-/// - `y` — yield stress Y [MPa], finite, > 0.
+/// - `r_eff` — effective radius R \[mm\], finite, > 0.
+/// - `e_star` — contact modulus E* \[MPa\], finite, > 0.
+/// - `y` — yield stress Y \[MPa\], finite, > 0.
 /// - `nu` — Poisson's ratio of the yielding body, −1 < ν ≤ 0.5.
 /// - `criterion` — [`YieldCriterion`].
 ///
 /// # Returns
-/// $P'_Y$ [N/mm].
+/// $P'_Y$ \[N/mm\].
 ///
 /// # Errors
 /// [`Error::InvalidInput`] naming the offending argument.
