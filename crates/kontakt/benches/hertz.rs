@@ -23,6 +23,19 @@ fn bench_point(c: &mut Criterion) {
             c.solve_force(black_box(1000.0)).expect("valid force")
         })
     });
+    // Worst case of the inversion: a very thin ellipse (B/A = 1e6, b/a about 3e-4).
+    g.bench_function("elliptical_thin_full_solve", |bch| {
+        bch.iter(|| {
+            let geo = PointGeometry::new(
+                black_box([1e6, 1.0]),
+                black_box([f64::INFINITY; 2]),
+                black_box(0.0),
+            )
+            .expect("valid geometry");
+            let c = HertzPointContact::new(geo, steel, steel).expect("valid contact");
+            c.solve_force(black_box(1000.0)).expect("valid force")
+        })
+    });
     // Circular: sphere on flat, full solve.
     g.bench_function("circular_full_solve", |bch| {
         bch.iter(|| {

@@ -68,8 +68,18 @@ pub(crate) fn invert_shape_ratio(ratio: f64) -> Result<Inversion> {
     // Bracket: g(0) = -ln(ratio) < 0; g decreases in u. The lower end must have g > 0.
     let mut hi = 0.0_f64;
     let mut g_hi = -target;
-    // Initial guess from Hamrock & Brewe, clamped into the admissible range.
-    let mut u0 = -(1.0339_f64.ln() + 0.636 * target);
+    // Initial guess: Hamrock & Brewe's fit for moderate ratios; for thin ellipses the
+    // asymptote B/A ≈ 1/(y (ln(4/k') - 1)) (from K → ln(4/k'), E → 1), iterated as a
+    // fixed point. Clamped into the admissible range.
+    let mut u0 = if ratio < 100.0 {
+        -(1.0339_f64.ln() + 0.636 * target)
+    } else {
+        let mut kp = ratio.sqrt().recip();
+        for _ in 0..3 {
+            kp = (ratio * ((4.0 / kp).ln() - 1.0)).sqrt().recip();
+        }
+        kp.ln()
+    };
     u0 = u0.min(-1e-9);
     let mut g0 = g(u0)?;
     let mut evals = 1;
