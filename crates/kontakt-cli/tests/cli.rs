@@ -1,6 +1,8 @@
 //! Behaviour of the `kontakt` binary: exit codes, one-line errors naming the flag or key,
 //! JSON keys, and snapshots of the human output.
 
+#![allow(clippy::unwrap_used)] // test helpers: a panic is a test failure with its message
+
 use assert_cmd::Command;
 use serde_json::Value;
 use std::path::PathBuf;
@@ -266,6 +268,6 @@ fn stdin_case() {
 
 fn tempdir() -> PathBuf {
     let d = std::env::temp_dir().join(format!("kontakt-cli-test-{}", std::process::id()));
-    std::fs::create_dir_all(&d).unwrap();
+    std::fs::create_dir_all(&d).expect("temp dir");
     d
 }

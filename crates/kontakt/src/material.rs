@@ -32,7 +32,7 @@ impl ElasticMaterial {
     /// A material from Young's modulus and Poisson's ratio.
     ///
     /// # Arguments
-    /// - `youngs_modulus` — E [MPa], finite and > 0.
+    /// - `youngs_modulus` — E \[MPa\], finite and > 0.
     /// - `poisson_ratio` — nu [-], -1 < nu <= 0.5 (0.5 is incompressible).
     ///
     /// # Errors
@@ -74,7 +74,7 @@ impl ElasticMaterial {
         poisson_ratio: 0.5,
     };
 
-    /// Young's modulus E [MPa].
+    /// Young's modulus E \[MPa\].
     pub fn youngs_modulus(&self) -> Megapascal {
         self.youngs_modulus
     }
@@ -84,12 +84,12 @@ impl ElasticMaterial {
         self.poisson_ratio
     }
 
-    /// Shear modulus G = E / (2 (1 + nu)) [MPa].
+    /// Shear modulus G = E / (2 (1 + nu)) \[MPa\].
     pub fn shear_modulus(&self) -> Megapascal {
         self.youngs_modulus / (2.0 * (1.0 + self.poisson_ratio))
     }
 
-    /// Plane-strain modulus E / (1 - nu²) [MPa] (infinite for nu = ±1 is excluded by
+    /// Plane-strain modulus E / (1 - nu²) \[MPa\] (infinite for nu = ±1 is excluded by
     /// validation; infinite for a rigid body).
     pub fn plane_strain_modulus(&self) -> Megapascal {
         self.youngs_modulus / (1.0 - self.poisson_ratio * self.poisson_ratio)
@@ -101,7 +101,7 @@ impl ElasticMaterial {
     }
 }
 
-/// Contact (composite) modulus $E^*$ of two bodies [MPa]:
+/// Contact (composite) modulus $E^*$ of two bodies \[MPa\]:
 ///
 /// $$\frac{1}{E^*} = \frac{1-\nu_1^2}{E_1} + \frac{1-\nu_2^2}{E_2}$$
 ///
@@ -121,7 +121,7 @@ pub fn effective_modulus(body1: &ElasticMaterial, body2: &ElasticMaterial) -> Me
 }
 
 /// Effective shear compliance used by Mindlin and Kalker:
-/// $$\frac{1}{G^*} = \frac{2-\nu_1}{G_1} + \frac{2-\nu_2}{G_2}$$ [MPa]
+/// $$\frac{1}{G^*} = \frac{2-\nu_1}{G_1} + \frac{2-\nu_2}{G_2}$$ \[MPa\]
 ///
 /// # References
 /// Johnson, *Contact Mechanics* (1985), eq. (7.41).

@@ -6,6 +6,8 @@
 //! The Legendre oracle bisects the shape equation to 1e-15 in e; 1e-10 covers the
 //! precision loss of m = e² in Legendre's form at moderate eccentricity.
 
+#![allow(clippy::unwrap_used)] // test helpers: a panic is a test failure with its message
+
 use approx::assert_relative_eq;
 use kontakt::geometry::RelativeCurvature;
 use kontakt::hertz::{HertzPointContact, PointGeometry, curvature_ratio};

@@ -10,6 +10,8 @@
 //! inputs to f64 changes the exact answer by less than 4e-16, so the tolerance measures the
 //! library, not the data.
 
+#![allow(clippy::unwrap_used)] // test helpers: a panic is a test failure with its message
+
 use kontakt::hertz::{HertzPointContact, PointGeometry};
 use kontakt::material::ElasticMaterial;
 use serde::Deserialize;

@@ -7,6 +7,8 @@
 //! approximate method (curve fits, table interpolation), and the file says why. The table of
 //! our values against the printed ones is in `docs/hertz_reference.md`.
 
+#![allow(clippy::unwrap_used)] // test helpers: a panic is a test failure with its message
+
 use kontakt::hertz::{HertzPointContact, HertzPointSolution, PointGeometry};
 use kontakt::material::ElasticMaterial;
 use serde::Deserialize;

@@ -9,6 +9,8 @@
 //! - An independent numerical integration of Boussinesq's point-load solution over the
 //!   Hertz pressure (helper below), for the elliptical contact.
 
+#![allow(clippy::unwrap_used)] // test helpers: a panic is a test failure with its message
+
 use kontakt::Error;
 use kontakt::hertz::subsurface::{
     AxisStress, StressPeaks, YieldCriterion, axis_stress_circular, axis_stress_elliptical,

@@ -20,7 +20,7 @@ use serde::Serialize;
 /// [`crate::hertz::line`] is the right model.
 pub const MAX_CURVATURE_RATIO: f64 = 1e10;
 
-/// Validate one principal radius of curvature [mm]: non-zero and not NaN; `±inf` is flat.
+/// Validate one principal radius of curvature \[mm\]: non-zero and not NaN; `±inf` is flat.
 pub fn validate_radius(field: &'static str, radius: Millimetre) -> Result<Millimetre> {
     if radius.is_nan() || radius == 0.0 {
         Err(Error::invalid(
@@ -37,7 +37,7 @@ pub fn validate_radius(field: &'static str, radius: Millimetre) -> Result<Millim
 /// direction of $A$.
 ///
 /// The gap is $h = A x'^2 + B y'^2$ with $A = 1/(2R')$, $B = 1/(2R'')$; `orientation` is
-/// the angle [rad] in (-pi/2, pi/2] from body 1's first principal direction (`x`) to `x'`,
+/// the angle \[rad\] in (-pi/2, pi/2] from body 1's first principal direction (`x`) to `x'`,
 /// the direction of *least* relative curvature, along which the contact ellipse's major
 /// semi-axis lies.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -46,7 +46,7 @@ pub struct RelativeCurvature {
     pub a_coef: f64,
     /// B = 1/(2R'') [1/mm], the larger coefficient, >= A.
     pub b_coef: f64,
-    /// Angle from body 1's first principal direction to the direction of A [rad].
+    /// Angle from body 1's first principal direction to the direction of A \[rad\].
     pub orientation: Radian,
 }
 
@@ -54,10 +54,10 @@ impl RelativeCurvature {
     /// Relative curvature of two bodies given by their principal radii.
     ///
     /// # Arguments
-    /// - `body1_radii`, `body2_radii` — principal radii of curvature [mm] of each body,
+    /// - `body1_radii`, `body2_radii` — principal radii of curvature \[mm\] of each body,
     ///   first along the body's first principal direction. Convex > 0, concave < 0,
     ///   `inf` for flat; zero and NaN are invalid.
-    /// - `angle` — theta [rad], the angle from body 1's first principal direction to
+    /// - `angle` — theta \[rad\], the angle from body 1's first principal direction to
     ///   body 2's, finite.
     ///
     /// # Errors
@@ -191,12 +191,12 @@ impl RelativeCurvature {
         })
     }
 
-    /// Equivalent radius $R_e = \sqrt{R'R''} = \tfrac12 (AB)^{-1/2}$ [mm] (Johnson 1982 eq. 53).
+    /// Equivalent radius $R_e = \sqrt{R'R''} = \tfrac12 (AB)^{-1/2}$ \[mm\] (Johnson 1982 eq. 53).
     pub fn equivalent_radius(&self) -> Millimetre {
         0.5 / (self.a_coef * self.b_coef).sqrt()
     }
 
-    /// Effective radius $R = 1/(2(A+B))$ [mm]; for a circular contact $R = R_e$, and in
+    /// Effective radius $R = 1/(2(A+B))$ \[mm\]; for a circular contact $R = R_e$, and in
     /// general $1/R = 1/R' + 1/R''$ (Hamrock's curvature sum).
     pub fn effective_radius(&self) -> Millimetre {
         0.5 / (self.a_coef + self.b_coef)

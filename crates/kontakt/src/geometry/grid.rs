@@ -4,7 +4,7 @@ use crate::error::{Error, Result};
 use crate::units::Millimetre;
 use serde::Serialize;
 
-/// A uniform, cell-centred grid of `nx × ny` points in the contact plane [mm].
+/// A uniform, cell-centred grid of `nx × ny` points in the contact plane \[mm\].
 ///
 /// Point `(i, j)` sits at `x = x_min + (i + 1/2) dx`, `y = y_min + (j + 1/2) dy`, the
 /// centre of cell `(i, j)`. Fields sampled on the grid are stored row-major with `x`
@@ -20,7 +20,7 @@ pub struct Grid2 {
 }
 
 impl Grid2 {
-    /// A grid covering `[x_min, x_max] × [y_min, y_max]` [mm] with `nx × ny` cells.
+    /// A grid covering `[x_min, x_max] × [y_min, y_max]` \[mm\] with `nx × ny` cells.
     ///
     /// # Errors
     /// `nx`/`ny` must be in 1..=65536 and each range finite with `min < max`.
@@ -54,7 +54,7 @@ impl Grid2 {
         })
     }
 
-    /// A grid centred on the origin with half-extents `half_x`, `half_y` [mm].
+    /// A grid centred on the origin with half-extents `half_x`, `half_y` \[mm\].
     ///
     /// # Errors
     /// As [`Grid2::new`]; half-extents must be finite and > 0.
@@ -78,23 +78,23 @@ impl Grid2 {
     pub fn is_empty(&self) -> bool {
         false
     }
-    /// Cell size along x [mm].
+    /// Cell size along x \[mm\].
     pub fn dx(&self) -> Millimetre {
         self.dx
     }
-    /// Cell size along y [mm].
+    /// Cell size along y \[mm\].
     pub fn dy(&self) -> Millimetre {
         self.dy
     }
-    /// Cell area [mm²].
+    /// Cell area \[mm²\].
     pub fn cell_area(&self) -> f64 {
         self.dx * self.dy
     }
-    /// x coordinate of column `i` [mm].
+    /// x coordinate of column `i` \[mm\].
     pub fn x(&self, i: usize) -> Millimetre {
         self.x_min + (i as f64 + 0.5) * self.dx
     }
-    /// y coordinate of row `j` [mm].
+    /// y coordinate of row `j` \[mm\].
     pub fn y(&self, j: usize) -> Millimetre {
         self.y_min + (j as f64 + 0.5) * self.dy
     }

@@ -44,7 +44,7 @@
 //!   Proc. R. Soc. Lond. A 324, 301-313. doi:10.1098/rspa.1971.0141
 //! - Johnson (1982), "One hundred years of Hertz contact", Proc. IMechE 196, 363-378, §9,
 //!   eqs (42)-(49), Fig. 13. doi:10.1243/PIME_PROC_1982_196_039_02
-//! - Johnson, *Contact Mechanics* (1985), §5.5.
+//! - Johnson, *Contact Mechanics* (1985), ch. 5.
 //! - Maugis (2000), *Contact, Adhesion and Rupture of Elastic Solids*, Springer, ch. 5
 //!   (fixed-grip instability, stress intensity factor).
 

@@ -32,7 +32,7 @@ pub enum Approximation {
 }
 
 /// Approximate solution of a point contact of relative curvature `curvature` and contact
-/// modulus `e_star` [MPa] under the force `force` [N] (> 0).
+/// modulus `e_star` \[MPa\] under the force `force` \[N\] (> 0).
 ///
 /// Greenwood: $c = \sqrt{ab} = (3FR_e/4E^*)^{1/3}$, $b/a = (A/B)^{2/3}$,
 /// $\delta = (9F^2/16E^{*2}R_e)^{1/3}$ with $R_e = (R'R'')^{1/2}$.

@@ -35,7 +35,7 @@
 //! - Hertz (1882), J. reine angew. Math. 92, 156-171 (impact section).
 //! - Johnson (1982), "One hundred years of Hertz contact", Proc. IMechE 196, 363-378,
 //!   §7, eqs (15), (36)-(38). doi:10.1243/PIME_PROC_1982_196_039_02
-//! - Johnson, *Contact Mechanics* (1985), §11.4.
+//! - Johnson, *Contact Mechanics* (1985), ch. 11.
 //! - DLMF §8.17 (incomplete Beta function), §5.12 (Beta function).
 
 use crate::error::{Error, Result};
@@ -60,9 +60,10 @@ pub const HERTZ_IMPACT_DURATION_CONSTANT: f64 = 2.943_275_184_324_704_7;
 pub const COEFFICIENT_OF_RESTITUTION: f64 = 1.0;
 
 /// Default ratio $p_{0Y}/Y$ of the maximum Hertz pressure at first yield to the uniaxial
-/// yield stress for a circular contact (von Mises, $\nu = 0.3$): 1.60 (Johnson 1982 §3;
-/// Johnson 1985 eq. 4.24 gives $p_{0Y} = 1.60\,Y$). The subsurface-stress module computes
-/// the ratio for other Poisson's ratios; pass `ratio * Y` as `yield_pressure`.
+/// yield stress for a circular contact (von Mises, $\nu = 0.3$): 1.60. Johnson (1982) §3,
+/// eq. (21a), $P_Y = 21R^2Y^3/E^{*2}$, is the same statement ($p_{0Y} = 1.596\,Y$). The
+/// subsurface-stress module computes the ratio for other Poisson's ratios; pass
+/// `ratio * Y` as `yield_pressure`.
 pub const DEFAULT_YIELD_PRESSURE_RATIO: f64 = 1.60;
 
 /// Johnson's (1982) coefficient in eq. (38), $\rho V_Y^2/Y = 85\,(Y/E^*)^4$, as printed.
@@ -172,7 +173,7 @@ impl HertzImpact {
     /// ```
     ///
     /// # References
-    /// Johnson (1982), eqs (15), (36); Johnson (1985), §11.4.
+    /// Johnson (1982), eqs (15), (36); Johnson (1985), ch. 11.
     pub fn new(
         load_coefficient: f64,
         effective_mass: Tonne,
@@ -345,7 +346,7 @@ impl HertzImpact {
     /// ```
     ///
     /// # References
-    /// Johnson (1982) §7; DLMF eq. 8.17.22 (series of the incomplete Beta function).
+    /// Johnson (1982) §7; DLMF §8.17 (series of the incomplete Beta function).
     pub fn approach_at(&self, time: Second) -> Result<Millimetre> {
         let state = self.state_at(time)?;
         Ok(self.result.max_approach * state.x)
@@ -479,7 +480,7 @@ const SERIES_MAX_TERMS: usize = 200;
 
 /// $I(x) = \int_0^x (1-s^{5/2})^{-1/2} ds = \tfrac25 B_u(\tfrac25,\tfrac12)$ with
 /// $u = x^{5/2} \le 1/2$:
-/// $I = x \sum_n \frac{(1/2)_n}{n!}\,\frac{(2/5)\,u^n}{n + 2/5}$ (DLMF 8.17.22 style).
+/// $I = x \sum_n \frac{(1/2)_n}{n!}\,\frac{(2/5)\,u^n}{n + 2/5}$ (binomial series, DLMF §8.17).
 fn normalized_time_from_start(x: f64, u: f64) -> f64 {
     let mut coef = 1.0; // (1/2)_n / n!
     let mut un = 1.0;
@@ -702,7 +703,7 @@ pub fn effective_mass(mass1: Tonne, mass2: Tonne) -> Result<Tonne> {
 /// ```
 ///
 /// # References
-/// Johnson (1982) §7 and eq. (14); Johnson (1985) §11.4.
+/// Johnson (1982) §7 and eq. (14); Johnson (1985) ch. 11.
 pub fn yield_velocity(
     r_eff: Millimetre,
     e_star: Megapascal,
@@ -758,7 +759,7 @@ pub fn yield_velocity(
 /// ```
 ///
 /// # References
-/// Johnson (1982) §7, eq. (38) (printed coefficient 85); Johnson (1985) §11.4.
+/// Johnson (1982) §7, eq. (38) (printed coefficient 85); Johnson (1985) ch. 11.
 pub fn yield_velocity_sphere_on_flat(
     density: TonnePerCubicMillimetre,
     e_star: Megapascal,

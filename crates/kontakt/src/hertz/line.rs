@@ -48,16 +48,16 @@ pub struct LineContact {
 pub struct LineSolution {
     /// Line load P' [N/mm].
     pub line_load: NewtonPerMillimetre,
-    /// Half-width b of the contact strip [mm].
+    /// Half-width b of the contact strip \[mm\].
     pub half_width: Millimetre,
-    /// Maximum pressure p0 [MPa].
+    /// Maximum pressure p0 \[MPa\].
     pub max_pressure: Megapascal,
-    /// Mean pressure P'/(2b) = pi p0 / 4 [MPa].
+    /// Mean pressure P'/(2b) = pi p0 / 4 \[MPa\].
     pub mean_pressure: Megapascal,
 }
 
 impl LineContact {
-    /// Two parallel cylinders of radii `body1_radius`, `body2_radius` [mm] (convex > 0,
+    /// Two parallel cylinders of radii `body1_radius`, `body2_radius` \[mm\] (convex > 0,
     /// concave < 0, `inf` for a flat).
     ///
     /// # Errors
@@ -102,15 +102,15 @@ impl LineContact {
         })
     }
 
-    /// Effective radius R = 1/(1/R1 + 1/R2) [mm].
+    /// Effective radius R = 1/(1/R1 + 1/R2) \[mm\].
     pub fn effective_radius(&self) -> Millimetre {
         self.effective_radius
     }
-    /// Contact modulus E* [MPa].
+    /// Contact modulus E* \[MPa\].
     pub fn e_star(&self) -> Megapascal {
         self.e_star
     }
-    /// The two radii [mm].
+    /// The two radii \[mm\].
     pub fn radii(&self) -> [Millimetre; 2] {
         self.radii
     }
@@ -131,7 +131,7 @@ impl LineContact {
         })
     }
 
-    /// Line load [N/mm] that produces a maximum pressure `max_pressure` [MPa]:
+    /// Line load [N/mm] that produces a maximum pressure `max_pressure` \[MPa\]:
     /// $P' = \pi R p_0^2 / E^*$.
     ///
     /// # Errors
@@ -144,8 +144,8 @@ impl LineContact {
         Ok(PI * self.effective_radius * max_pressure * max_pressure / self.e_star)
     }
 
-    /// Lundberg's approach [mm] at the centre of a contact of length `length` [mm] under the
-    /// total force `force` [N] (Johnson 1982 eq. 25, constant [`LUNDBERG_CONSTANT`]).
+    /// Lundberg's approach \[mm\] at the centre of a contact of length `length` \[mm\] under the
+    /// total force `force` \[N\] (Johnson 1982 eq. 25, constant [`LUNDBERG_CONSTANT`]).
     ///
     /// # Errors
     /// Non-positive force or length, or a contact shorter than
@@ -170,7 +170,7 @@ impl LineContact {
 }
 
 impl LineSolution {
-    /// Pressure p(x) = p0 sqrt(1 - x²/b²) [MPa] at the distance `x` [mm] from the centre
+    /// Pressure p(x) = p0 sqrt(1 - x²/b²) \[MPa\] at the distance `x` \[mm\] from the centre
     /// line; 0 outside the strip.
     pub fn pressure_at(&self, x: Millimetre) -> Megapascal {
         let r = x / self.half_width;

@@ -57,8 +57,8 @@ pub struct PointGeometry {
 }
 
 impl PointGeometry {
-    /// Two bodies by their principal radii of curvature [mm] (convex > 0, concave < 0,
-    /// `f64::INFINITY` for flat) and the angle `angle` [rad] from body 1's first principal
+    /// Two bodies by their principal radii of curvature \[mm\] (convex > 0, concave < 0,
+    /// `f64::INFINITY` for flat) and the angle `angle` \[rad\] from body 1's first principal
     /// direction to body 2's.
     ///
     /// # Errors
@@ -78,7 +78,7 @@ impl PointGeometry {
         })
     }
 
-    /// A sphere of radius `radius` [mm] (> 0) on a flat.
+    /// A sphere of radius `radius` \[mm\] (> 0) on a flat.
     ///
     /// # Errors
     /// A non-positive or non-finite radius.
@@ -99,15 +99,15 @@ impl PointGeometry {
         }
     }
 
-    /// Principal radii of body 1 [mm].
+    /// Principal radii of body 1 \[mm\].
     pub fn body1_radii(&self) -> [Millimetre; 2] {
         self.body1_radii
     }
-    /// Principal radii of body 2 [mm].
+    /// Principal radii of body 2 \[mm\].
     pub fn body2_radii(&self) -> [Millimetre; 2] {
         self.body2_radii
     }
-    /// Angle between the principal planes [rad].
+    /// Angle between the principal planes \[rad\].
     pub fn angle(&self) -> Radian {
         self.angle
     }
@@ -143,9 +143,9 @@ pub struct HertzPointContact {
     e_star: Megapascal,
     /// b/a.
     axis_ratio: f64,
-    /// Semi-major axis at F = 1 N [mm].
+    /// Semi-major axis at F = 1 N \[mm\].
     a_unit: Millimetre,
-    /// Approach at F = 1 N [mm].
+    /// Approach at F = 1 N \[mm\].
     delta_unit: Millimetre,
     /// Evaluations the shape inversion took.
     shape_evaluations: usize,
@@ -154,19 +154,19 @@ pub struct HertzPointContact {
 /// The state of a Hertz point contact at one load.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct HertzPointSolution {
-    /// Semi-axes [a, b] of the contact ellipse [mm], a >= b.
+    /// Semi-axes [a, b] of the contact ellipse \[mm\], a >= b.
     pub semi_axes: [Millimetre; 2],
-    /// Angle from body 1's first principal direction to the major semi-axis a [rad].
+    /// Angle from body 1's first principal direction to the major semi-axis a \[rad\].
     pub orientation: Radian,
-    /// Normal force F [N].
+    /// Normal force F \[N\].
     pub force: Newton,
-    /// Approach delta of distant points [mm].
+    /// Approach delta of distant points \[mm\].
     pub approach: Millimetre,
-    /// Maximum (central) pressure p0 = 3F / (2 pi a b) [MPa].
+    /// Maximum (central) pressure p0 = 3F / (2 pi a b) \[MPa\].
     pub max_pressure: Megapascal,
-    /// Mean pressure F / (pi a b) = 2 p0 / 3 [MPa].
+    /// Mean pressure F / (pi a b) = 2 p0 / 3 \[MPa\].
     pub mean_pressure: Megapascal,
-    /// Contact area pi a b [mm²].
+    /// Contact area pi a b \[mm²\].
     pub contact_area: f64,
     /// Contact stiffness dF/d(delta) = 3F / (2 delta) [N/mm].
     pub stiffness: f64,
@@ -209,7 +209,7 @@ impl HertzPointContact {
     pub fn materials(&self) -> [ElasticMaterial; 2] {
         self.materials
     }
-    /// Contact modulus E* [MPa].
+    /// Contact modulus E* \[MPa\].
     pub fn e_star(&self) -> Megapascal {
         self.e_star
     }
@@ -230,7 +230,7 @@ impl HertzPointContact {
         self.delta_unit.powf(-1.5)
     }
 
-    /// Approach [mm] for a normal force `force` [N] (> 0, finite).
+    /// Approach \[mm\] for a normal force `force` \[N\] (> 0, finite).
     ///
     /// # Errors
     /// Non-positive or non-finite force.
@@ -239,7 +239,7 @@ impl HertzPointContact {
         Ok(self.delta_unit * force.cbrt().powi(2))
     }
 
-    /// Normal force [N] for an approach `approach` [mm] (> 0, finite):
+    /// Normal force \[N\] for an approach `approach` \[mm\] (> 0, finite):
     /// $F = (\delta/\delta_1)^{3/2}$ with $\delta_1$ the approach at 1 N.
     ///
     /// # Errors
@@ -250,7 +250,7 @@ impl HertzPointContact {
         Ok(r * r.sqrt())
     }
 
-    /// Full solution for a normal force `force` [N] (> 0, finite).
+    /// Full solution for a normal force `force` \[N\] (> 0, finite).
     ///
     /// # Errors
     /// Non-positive or non-finite force.
@@ -259,7 +259,7 @@ impl HertzPointContact {
         Ok(self.solution(force))
     }
 
-    /// Full solution for an approach `approach` [mm] (> 0, finite).
+    /// Full solution for an approach `approach` \[mm\] (> 0, finite).
     ///
     /// # Errors
     /// Non-positive or non-finite approach.
@@ -270,7 +270,7 @@ impl HertzPointContact {
         Ok(s)
     }
 
-    /// Maximum pressure at a force of 1 N [MPa]; p0 scales as F^(1/3).
+    /// Maximum pressure at a force of 1 N \[MPa\]; p0 scales as F^(1/3).
     pub fn max_pressure_at_unit_force(&self) -> Megapascal {
         self.solution(1.0).max_pressure
     }
@@ -296,7 +296,7 @@ impl HertzPointContact {
 }
 
 impl HertzPointSolution {
-    /// Hertz pressure [MPa] at the point (x, y) [mm] of the contact frame (x along body 1's
+    /// Hertz pressure \[MPa\] at the point (x, y) \[mm\] of the contact frame (x along body 1's
     /// first principal direction):
     /// $p = p_0\sqrt{1 - (x'/a)^2 - (y'/b)^2}$ inside the ellipse, 0 outside
     /// (Johnson 1982 eq. 54).
@@ -313,7 +313,7 @@ impl HertzPointSolution {
         }
     }
 
-    /// Pressure [MPa] sampled at every point of `grid`, row-major with x fastest.
+    /// Pressure \[MPa\] sampled at every point of `grid`, row-major with x fastest.
     pub fn sample_pressure(&self, grid: &Grid2) -> Vec<Megapascal> {
         grid.points().map(|(x, y)| self.pressure_at(x, y)).collect()
     }

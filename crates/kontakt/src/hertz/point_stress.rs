@@ -28,8 +28,8 @@ impl HertzPointContact {
         })
     }
 
-    /// The normal force [N] at which the material first yields below the surface, for a
-    /// yield stress `yield_stress` [MPa] (> 0) common to both bodies (give the weaker
+    /// The normal force \[N\] at which the material first yields below the surface, for a
+    /// yield stress `yield_stress` \[MPa\] (> 0) common to both bodies (give the weaker
     /// body's value), by the chosen criterion. Uses p0 ∝ F^(1/3):
     /// $F_Y = (p_{0Y}/p_{0,1})^3$ with $p_{0,1}$ the maximum pressure at 1 N.
     ///
@@ -66,9 +66,9 @@ impl HertzPointContact {
 /// First yield of a Hertz contact.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct FirstYield {
-    /// Normal force at first yield [N].
+    /// Normal force at first yield \[N\].
     pub load: Newton,
-    /// Maximum contact pressure at first yield [MPa].
+    /// Maximum contact pressure at first yield \[MPa\].
     pub max_pressure: Megapascal,
     /// The body (1 or 2) that yields first.
     pub body: usize,

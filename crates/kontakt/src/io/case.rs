@@ -80,10 +80,10 @@ pub enum ContactKind {
 pub struct ContactSpec {
     /// Point or line.
     pub kind: ContactKind,
-    /// Angle between the principal planes of the bodies [deg] (point contact).
+    /// Angle between the principal planes of the bodies \[deg\] (point contact).
     #[serde(default)]
     pub angle_deg: f64,
-    /// Contact length [mm] (line contact; gives the approach, area and stiffness).
+    /// Contact length \[mm\] (line contact; gives the approach, area and stiffness).
     #[serde(default)]
     pub length_mm: Option<f64>,
 }
@@ -92,10 +92,10 @@ pub struct ContactSpec {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct BodySpec {
-    /// Principal radii of curvature [mm]: two for a point contact, one for a line contact.
+    /// Principal radii of curvature \[mm\]: two for a point contact, one for a line contact.
     /// Convex > 0, concave < 0, `inf` for flat.
     pub radii_mm: Vec<f64>,
-    /// Young's modulus [MPa], > 0.
+    /// Young's modulus \[MPa\], > 0.
     pub e_mpa: f64,
     /// Poisson's ratio, -1 < nu <= 0.5.
     pub nu: f64,
@@ -105,10 +105,10 @@ pub struct BodySpec {
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct LoadSpec {
-    /// Normal force [N].
+    /// Normal force \[N\].
     #[serde(default)]
     pub force_n: Option<f64>,
-    /// Approach of distant points [mm] (point contact).
+    /// Approach of distant points \[mm\] (point contact).
     #[serde(default)]
     pub approach_mm: Option<f64>,
     /// Load per unit length [N/mm] (line contact).
@@ -120,7 +120,7 @@ pub struct LoadSpec {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct YieldSpec {
-    /// Yield stress of the weaker body [MPa], > 0.
+    /// Yield stress of the weaker body \[MPa\], > 0.
     pub stress_mpa: f64,
     /// Criterion, `von_mises` (default) or `tresca`.
     #[serde(default = "default_criterion")]
@@ -134,9 +134,9 @@ fn default_criterion() -> YieldCriterion {
 /// The validated load control of a case.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum LoadControl {
-    /// Given normal force [N].
+    /// Given normal force \[N\].
     Force(f64),
-    /// Given approach [mm].
+    /// Given approach \[mm\].
     Approach(f64),
     /// Given line load [N/mm].
     LineLoad(f64),

@@ -30,47 +30,47 @@ pub struct ContactReport {
     pub kind: ContactKind,
     /// The inputs, echoed (radii `"inf"` for flat).
     pub inputs: InputsEcho,
-    /// Contact modulus E* [MPa].
+    /// Contact modulus E* \[MPa\].
     pub e_star_mpa: f64,
     /// Dundurs' beta (body 1 relative to body 2).
     pub dundurs_beta: f64,
     /// Relative curvature [A, B] [1/mm] (point) or [0, 1/(2R)] (line).
     pub relative_curvature_per_mm: [f64; 2],
-    /// Semi-axes [a, b] [mm], a >= b; for a line contact [L/2, b] (L/2 null-free only when
+    /// Semi-axes [a, b] \[mm\], a >= b; for a line contact [L/2, b] (L/2 null-free only when
     /// the length is given, else `inf`).
     #[serde(serialize_with = "ser_radii_array")]
     pub semi_axes_mm: [f64; 2],
     /// b/a (0 for a line contact).
     pub axis_ratio: f64,
-    /// Angle from body 1's first principal direction to the major axis [deg].
+    /// Angle from body 1's first principal direction to the major axis \[deg\].
     pub orientation_deg: f64,
-    /// Normal force [N] (null for a line contact without length).
+    /// Normal force \[N\] (null for a line contact without length).
     pub force_n: Option<f64>,
     /// Line load [N/mm] (line contact only).
     pub line_load_n_per_mm: Option<f64>,
-    /// Approach of distant points [mm] (line: Lundberg, needs the length).
+    /// Approach of distant points \[mm\] (line: Lundberg, needs the length).
     pub approach_mm: Option<f64>,
-    /// Maximum contact pressure p0 [MPa].
+    /// Maximum contact pressure p0 \[MPa\].
     pub max_pressure_mpa: f64,
-    /// Mean contact pressure [MPa].
+    /// Mean contact pressure \[MPa\].
     pub mean_pressure_mpa: f64,
-    /// Contact area [mm²] (line: 2 b L, needs the length).
+    /// Contact area \[mm²\] (line: 2 b L, needs the length).
     pub contact_area_mm2: Option<f64>,
     /// Contact stiffness dF/d(delta) [N/mm].
     pub stiffness_n_per_mm: Option<f64>,
-    /// Maximum principal shear stress below the surface [MPa].
+    /// Maximum principal shear stress below the surface \[MPa\].
     pub max_shear_stress_mpa: f64,
-    /// Its depth [mm].
+    /// Its depth \[mm\].
     pub max_shear_depth_mm: f64,
-    /// Maximum von Mises stress below the surface [MPa].
+    /// Maximum von Mises stress below the surface \[MPa\].
     pub max_von_mises_stress_mpa: f64,
-    /// Its depth [mm].
+    /// Its depth \[mm\].
     pub max_von_mises_depth_mm: f64,
-    /// Normal force (point) or line load (line) at first yield [N] or [N/mm].
+    /// Normal force (point) or line load (line) at first yield \[N\] or [N/mm].
     pub first_yield_load_n: Option<f64>,
     /// Line load at first yield [N/mm] (line contact).
     pub first_yield_line_load_n_per_mm: Option<f64>,
-    /// Maximum pressure at first yield [MPa].
+    /// Maximum pressure at first yield \[MPa\].
     pub first_yield_max_pressure_mpa: Option<f64>,
     /// Ratio of the first-yield pressure to the actual maximum pressure (> 1: elastic).
     pub yield_pressure_margin: Option<f64>,
@@ -79,31 +79,31 @@ pub struct ContactReport {
 /// Inputs echoed in the report.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct InputsEcho {
-    /// Body 1 radii [mm].
+    /// Body 1 radii \[mm\].
     #[serde(serialize_with = "ser_radii")]
     pub body1_radii_mm: Vec<f64>,
-    /// Body 2 radii [mm].
+    /// Body 2 radii \[mm\].
     #[serde(serialize_with = "ser_radii")]
     pub body2_radii_mm: Vec<f64>,
-    /// Angle between principal planes [deg].
+    /// Angle between principal planes \[deg\].
     pub angle_deg: f64,
-    /// Contact length [mm] (line).
+    /// Contact length \[mm\] (line).
     pub length_mm: Option<f64>,
-    /// Body 1 Young's modulus [MPa].
+    /// Body 1 Young's modulus \[MPa\].
     pub e1_mpa: f64,
     /// Body 1 Poisson's ratio.
     pub nu1: f64,
-    /// Body 2 Young's modulus [MPa].
+    /// Body 2 Young's modulus \[MPa\].
     pub e2_mpa: f64,
     /// Body 2 Poisson's ratio.
     pub nu2: f64,
-    /// Given force [N].
+    /// Given force \[N\].
     pub force_n: Option<f64>,
-    /// Given approach [mm].
+    /// Given approach \[mm\].
     pub approach_mm: Option<f64>,
     /// Given line load [N/mm].
     pub line_load_n_per_mm: Option<f64>,
-    /// Yield stress [MPa].
+    /// Yield stress \[MPa\].
     pub yield_stress_mpa: Option<f64>,
     /// Yield criterion.
     pub yield_criterion: Option<YieldCriterion>,
