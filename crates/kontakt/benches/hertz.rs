@@ -61,5 +61,21 @@ fn bench_point(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench_point);
+fn bench_subsurface(c: &mut Criterion) {
+    use kontakt::hertz::subsurface::{axis_stress_peaks, line_stress_peaks};
+    let mut g = c.benchmark_group("subsurface");
+    // Peak search on the load axis (maximum shear and von Mises with their depths).
+    g.bench_function("peaks_elliptical_b_over_a_0.2", |bch| {
+        bch.iter(|| axis_stress_peaks(black_box(2000.0), black_box(1.0), black_box(0.2), 0.3))
+    });
+    g.bench_function("peaks_circular", |bch| {
+        bch.iter(|| axis_stress_peaks(black_box(2000.0), black_box(1.0), black_box(1.0), 0.3))
+    });
+    g.bench_function("peaks_line", |bch| {
+        bch.iter(|| line_stress_peaks(black_box(2000.0), black_box(0.1), 0.3))
+    });
+    g.finish();
+}
+
+criterion_group!(benches, bench_point, bench_subsurface);
 criterion_main!(benches);
