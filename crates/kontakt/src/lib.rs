@@ -88,3 +88,8 @@ pub use error::{Error, Result};
 
 /// The version of this crate, echoed in every serialized result.
 pub const VERSION: &str = env!("CARGO_PKG_VERSION");
+
+/// The README's Rust example is compiled and run as a doctest, so it stays true.
+#[doc = include_str!("../../../README.md")]
+#[cfg(doctest)]
+pub struct ReadmeDoctests;
