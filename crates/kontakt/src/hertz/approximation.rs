@@ -112,14 +112,14 @@ pub fn approximation_error(
     curvature_ratio: f64,
     model: Approximation,
 ) -> Result<ApproximationError> {
-    let k = RelativeCurvature::from_tensor(2.0, 2.0 * curvature_ratio, 0.0)?;
-    if curvature_ratio < 1.0 {
+    if !(curvature_ratio >= 1.0) {
         return Err(crate::Error::invalid(
             "curvature_ratio",
             curvature_ratio,
             ">= 1",
         ));
     }
+    let k = RelativeCurvature::from_tensor(2.0, 2.0 * curvature_ratio, 0.0)?;
     let geometry = super::PointGeometry::from_curvature(k);
     let m = crate::material::ElasticMaterial::STEEL;
     let exact = super::HertzPointContact::new(geometry, m, m)?.solve_force(100.0)?;

@@ -766,15 +766,9 @@ pub fn yield_velocity_sphere_on_flat(
     yield_pressure: Megapascal,
 ) -> Result<MillimetrePerSecond> {
     positive_with("density", density, "a finite density > 0 t/mm^3")?;
-    positive_with("e_star", e_star, "a finite contact modulus > 0 MPa")?;
-    positive_with(
-        "yield_pressure",
-        yield_pressure,
-        "a finite pressure > 0 MPa",
-    )?;
-    let s = PI * yield_pressure / (2.0 * e_star);
-    let v = (4.0 * e_star / (5.0 * PI * density)).sqrt() * s.powf(2.5);
-    finite_velocity(v, "yield_pressure", yield_pressure)
+    // V_Y does not depend on the radius (m ∝ R³ cancels R^(3/2) twice): evaluate the
+    // general formula for a unit sphere.
+    yield_velocity(1.0, e_star, sphere_mass(1.0, density)?, yield_pressure)
 }
 
 /// Johnson's (1982) approximation, eq. (38), for the velocity at which a sphere striking a

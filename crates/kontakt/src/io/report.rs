@@ -36,8 +36,8 @@ pub struct ContactReport {
     pub dundurs_beta: f64,
     /// Relative curvature [A, B] [1/mm] (point) or [0, 1/(2R)] (line).
     pub relative_curvature_per_mm: [f64; 2],
-    /// Semi-axes [a, b] \[mm\], a >= b; for a line contact [L/2, b] (L/2 null-free only when
-    /// the length is given, else `inf`).
+    /// Semi-axes [a, b] \[mm\], a >= b; for a line contact [L/2, b], with L/2 written as
+    /// `"inf"` when no length is given.
     #[serde(serialize_with = "ser_radii_array")]
     pub semi_axes_mm: [f64; 2],
     /// b/a (0 for a line contact).
@@ -66,7 +66,7 @@ pub struct ContactReport {
     pub max_von_mises_stress_mpa: f64,
     /// Its depth \[mm\].
     pub max_von_mises_depth_mm: f64,
-    /// Normal force (point) or line load (line) at first yield \[N\] or [N/mm].
+    /// Normal force at first yield \[N\] (line contact: needs the length).
     pub first_yield_load_n: Option<f64>,
     /// Line load at first yield [N/mm] (line contact).
     pub first_yield_line_load_n_per_mm: Option<f64>,
