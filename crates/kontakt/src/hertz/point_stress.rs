@@ -44,12 +44,12 @@ impl HertzPointContact {
         criterion: YieldCriterion,
     ) -> Result<FirstYield> {
         crate::error::positive("yield_stress", yield_stress)?;
+        let p0_unit = self.max_pressure_at_unit_force();
         let mut best: Option<FirstYield> = None;
         for (i, m) in self.materials().iter().enumerate() {
             let ratio =
                 subsurface::yield_pressure_ratio(self.axis_ratio(), m.poisson_ratio(), criterion)?;
             let p0_yield = ratio * yield_stress;
-            let p0_unit = self.max_pressure_at_unit_force();
             let load = (p0_yield / p0_unit).powi(3);
             if best.is_none_or(|b| load < b.load) {
                 best = Some(FirstYield {
@@ -72,4 +72,56 @@ pub struct FirstYield {
     pub max_pressure: Megapascal,
     /// The body (1 or 2) that yields first.
     pub body: usize,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::hertz::PointGeometry;
+    use crate::material::{ElasticMaterial, effective_modulus};
+    use approx::assert_relative_eq;
+
+    /// Sphere on flat: the planned contact's first-yield load equals the subsurface
+    /// module's closed route P_Y = pi^3 R^2 p0Y^3 / (6 E*^2).
+    #[test]
+    fn first_yield_matches_sphere_formula() {
+        let s = ElasticMaterial::STEEL;
+        let c = HertzPointContact::new(PointGeometry::sphere_on_flat(12.0).unwrap(), s, s).unwrap();
+        for crit in [YieldCriterion::VonMises, YieldCriterion::Tresca] {
+            let fy = c.first_yield(1500.0, crit).unwrap();
+            let reference = subsurface::first_yield_load_circular(
+                12.0,
+                effective_modulus(&s, &s),
+                1500.0,
+                0.3,
+                crit,
+            )
+            .unwrap();
+            assert_relative_eq!(fy.load, reference, max_relative = 1e-12);
+            // At that load the maximum pressure is the first-yield pressure.
+            let sol = c.solve_force(fy.load).unwrap();
+            assert_relative_eq!(sol.max_pressure, fy.max_pressure, max_relative = 1e-12);
+        }
+    }
+
+    /// Dissimilar Poisson's ratios: the body whose ratio yields at the lower load is named.
+    #[test]
+    fn first_yield_picks_the_weaker_body() {
+        let a = ElasticMaterial::new(210_000.0, 0.3).unwrap();
+        let b = ElasticMaterial::new(210_000.0, 0.45).unwrap();
+        let g = PointGeometry::new([10.0, 20.0], [f64::INFINITY; 2], 0.0).unwrap();
+        let c = HertzPointContact::new(g, a, b).unwrap();
+        let fy = c.first_yield(1000.0, YieldCriterion::VonMises).unwrap();
+        let r = |nu| {
+            subsurface::yield_pressure_ratio(c.axis_ratio(), nu, YieldCriterion::VonMises).unwrap()
+        };
+        let expected_body = if r(0.3) <= r(0.45) { 1 } else { 2 };
+        assert_eq!(fy.body, expected_body);
+        assert_relative_eq!(
+            fy.max_pressure,
+            1000.0 * r(0.3).min(r(0.45)),
+            max_relative = 1e-14
+        );
+        assert!(c.first_yield(0.0, YieldCriterion::VonMises).is_err());
+    }
 }
