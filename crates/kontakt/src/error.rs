@@ -92,10 +92,16 @@ impl Error {
 
 /// Check that `value` is finite and strictly positive.
 pub(crate) fn positive(field: &'static str, value: f64) -> Result<f64> {
+    positive_as(field, value, "a finite number > 0")
+}
+
+/// Check that `value` is finite and strictly positive, stating the valid range as
+/// `expected` (with its unit, e.g. "a finite length > 0 mm").
+pub(crate) fn positive_as(field: &'static str, value: f64, expected: &'static str) -> Result<f64> {
     if value.is_finite() && value > 0.0 {
         Ok(value)
     } else {
-        Err(Error::invalid(field, value, "a finite number > 0"))
+        Err(Error::invalid(field, value, expected))
     }
 }
 
@@ -106,6 +112,15 @@ pub(crate) fn non_negative(field: &'static str, value: f64) -> Result<f64> {
     } else {
         Err(Error::invalid(field, value, "a finite number >= 0"))
     }
+}
+
+/// The error for an input whose result left the range of `f64` (absurdly large inputs).
+pub(crate) fn overflow(field: &'static str, value: f64) -> Error {
+    Error::invalid(
+        field,
+        value,
+        "a value small enough for the result to be a finite f64",
+    )
 }
 
 #[cfg(test)]

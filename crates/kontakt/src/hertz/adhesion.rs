@@ -172,9 +172,9 @@ impl Jkr {
         e_star: Megapascal,
         work_of_adhesion: NewtonPerMillimetre,
     ) -> Result<Self> {
-        check_positive("r_eff", r_eff, "a finite effective radius > 0 mm")?;
-        check_positive("e_star", e_star, "a finite contact modulus > 0 MPa")?;
-        check_positive(
+        crate::error::positive_as("r_eff", r_eff, "a finite effective radius > 0 mm")?;
+        crate::error::positive_as("e_star", e_star, "a finite contact modulus > 0 MPa")?;
+        crate::error::positive_as(
             "work_of_adhesion",
             work_of_adhesion,
             "a finite work of adhesion w = 2*gamma > 0 N/mm (1 J/m^2 = 1e-3 N/mm)",
@@ -258,7 +258,8 @@ impl Jkr {
     /// # References
     /// Johnson (1982), eq. (48); Johnson, Kendall, Roberts (1971), eq. (6).
     pub fn load_from_radius(&self, contact_radius: Millimetre) -> Result<Newton> {
-        let a = check_positive("contact_radius", contact_radius, "a finite radius > 0 mm")?;
+        let a =
+            crate::error::positive_as("contact_radius", contact_radius, "a finite radius > 0 mm")?;
         let x = a * a.sqrt(); // a^(3/2)
         let p = x * (self.stiffness_coefficient() * x - self.adhesion_coefficient());
         finite("contact_radius", a, p)
@@ -339,7 +340,8 @@ impl Jkr {
     /// # References
     /// Johnson (1982), eqs (44), (47); Johnson, Kendall, Roberts (1971).
     pub fn approach_from_radius(&self, contact_radius: Millimetre) -> Result<Millimetre> {
-        let a = check_positive("contact_radius", contact_radius, "a finite radius > 0 mm")?;
+        let a =
+            crate::error::positive_as("contact_radius", contact_radius, "a finite radius > 0 mm")?;
         let d = a * a / self.r_eff - (2.0 * PI * self.work_of_adhesion * a / self.e_star).sqrt();
         finite("contact_radius", a, d)
     }
@@ -621,22 +623,10 @@ impl Jkr {
     }
 }
 
-fn check_positive(field: &'static str, value: f64, expected: &'static str) -> Result<f64> {
-    if value.is_finite() && value > 0.0 {
-        Ok(value)
-    } else {
-        Err(Error::invalid(field, value, expected))
-    }
-}
-
 fn finite(field: &'static str, input: f64, output: f64) -> Result<f64> {
     if output.is_finite() {
         Ok(output)
     } else {
-        Err(Error::invalid(
-            field,
-            input,
-            "a value for which the result is finite (this one overflows f64)",
-        ))
+        Err(crate::error::overflow(field, input))
     }
 }

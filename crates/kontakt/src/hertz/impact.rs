@@ -225,8 +225,8 @@ impl HertzImpact {
         effective_mass: Tonne,
         impact_velocity: MillimetrePerSecond,
     ) -> Result<Self> {
-        positive_with("r_eff", r_eff, "a finite effective radius > 0 mm")?;
-        positive_with("e_star", e_star, "a finite contact modulus > 0 MPa")?;
+        crate::error::positive_as("r_eff", r_eff, "a finite effective radius > 0 mm")?;
+        crate::error::positive_as("e_star", e_star, "a finite contact modulus > 0 MPa")?;
         let k = 4.0 / 3.0 * e_star * r_eff.sqrt();
         if !(k.is_finite() && k > 0.0) {
             return Err(Error::invalid(
@@ -244,9 +244,9 @@ impl HertzImpact {
     }
 
     fn build(k: f64, m: Tonne, v: MillimetrePerSecond, sphere: Option<SphereData>) -> Result<Self> {
-        positive_with("load_coefficient", k, "a finite number > 0 N/mm^1.5")?;
-        positive_with("effective_mass", m, "a finite mass > 0 t")?;
-        positive_with("impact_velocity", v, "a finite velocity > 0 mm/s")?;
+        crate::error::positive_as("load_coefficient", k, "a finite number > 0 N/mm^1.5")?;
+        crate::error::positive_as("effective_mass", m, "a finite mass > 0 t")?;
+        crate::error::positive_as("impact_velocity", v, "a finite velocity > 0 mm/s")?;
         // Written to avoid v^2 under/overflow: delta* = (5m/4k)^(2/5) v^(4/5).
         let scale = (1.25 * m / k).powf(0.4);
         let max_approach = scale * v.powf(0.8);
@@ -575,14 +575,6 @@ fn not_converged(tau: f64) -> Error {
     }
 }
 
-fn positive_with(field: &'static str, value: f64, expected: &'static str) -> Result<f64> {
-    if value.is_finite() && value > 0.0 {
-        Ok(value)
-    } else {
-        Err(Error::invalid(field, value, expected))
-    }
-}
-
 /// Mass of a solid sphere, $m = \tfrac43\pi R^3\rho$ \[t\].
 ///
 /// # Arguments
@@ -599,8 +591,8 @@ fn positive_with(field: &'static str, value: f64, expected: &'static str) -> Res
 /// # Ok::<(), kontakt::Error>(())
 /// ```
 pub fn sphere_mass(radius: Millimetre, density: TonnePerCubicMillimetre) -> Result<Tonne> {
-    positive_with("radius", radius, "a finite radius > 0 mm")?;
-    positive_with(
+    crate::error::positive_as("radius", radius, "a finite radius > 0 mm")?;
+    crate::error::positive_as(
         "density",
         density,
         "a finite density > 0 t/mm^3 (steel 7.85e-9)",
@@ -710,10 +702,10 @@ pub fn yield_velocity(
     effective_mass: Tonne,
     yield_pressure: Megapascal,
 ) -> Result<MillimetrePerSecond> {
-    positive_with("r_eff", r_eff, "a finite effective radius > 0 mm")?;
-    positive_with("e_star", e_star, "a finite contact modulus > 0 MPa")?;
-    positive_with("effective_mass", effective_mass, "a finite mass > 0 t")?;
-    positive_with(
+    crate::error::positive_as("r_eff", r_eff, "a finite effective radius > 0 mm")?;
+    crate::error::positive_as("e_star", e_star, "a finite contact modulus > 0 MPa")?;
+    crate::error::positive_as("effective_mass", effective_mass, "a finite mass > 0 t")?;
+    crate::error::positive_as(
         "yield_pressure",
         yield_pressure,
         "a finite pressure > 0 MPa",
@@ -765,7 +757,7 @@ pub fn yield_velocity_sphere_on_flat(
     e_star: Megapascal,
     yield_pressure: Megapascal,
 ) -> Result<MillimetrePerSecond> {
-    positive_with("density", density, "a finite density > 0 t/mm^3")?;
+    crate::error::positive_as("density", density, "a finite density > 0 t/mm^3")?;
     // V_Y does not depend on the radius (m ∝ R³ cancels R^(3/2) twice): evaluate the
     // general formula for a unit sphere.
     yield_velocity(1.0, e_star, sphere_mass(1.0, density)?, yield_pressure)
@@ -808,9 +800,9 @@ pub fn yield_velocity_johnson(
     e_star: Megapascal,
     yield_stress: Megapascal,
 ) -> Result<MillimetrePerSecond> {
-    positive_with("density", density, "a finite density > 0 t/mm^3")?;
-    positive_with("e_star", e_star, "a finite contact modulus > 0 MPa")?;
-    positive_with("yield_stress", yield_stress, "a finite stress > 0 MPa")?;
+    crate::error::positive_as("density", density, "a finite density > 0 t/mm^3")?;
+    crate::error::positive_as("e_star", e_star, "a finite contact modulus > 0 MPa")?;
+    crate::error::positive_as("yield_stress", yield_stress, "a finite stress > 0 MPa")?;
     let r = yield_stress / e_star;
     let v = (JOHNSON_YIELD_VELOCITY_COEFFICIENT * yield_stress / density).sqrt() * r * r;
     finite_velocity(v, "yield_stress", yield_stress)

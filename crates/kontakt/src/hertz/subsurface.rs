@@ -118,23 +118,11 @@ pub enum YieldCriterion {
 // ---------------------------------------------------------------------------------------
 
 fn check_pressure(p0: f64) -> Result<f64> {
-    if p0.is_finite() && p0 > 0.0 {
-        Ok(p0)
-    } else {
-        Err(Error::invalid(
-            "p0",
-            p0,
-            "a finite maximum pressure > 0 MPa",
-        ))
-    }
+    crate::error::positive_as("p0", p0, "a finite maximum pressure > 0 MPa")
 }
 
 fn check_length(field: &'static str, value: f64) -> Result<f64> {
-    if value.is_finite() && value > 0.0 {
-        Ok(value)
-    } else {
-        Err(Error::invalid(field, value, "a finite length > 0 mm"))
-    }
+    crate::error::positive_as(field, value, "a finite length > 0 mm")
 }
 
 fn check_semi_axes(a: f64, b: f64) -> Result<()> {
@@ -160,15 +148,6 @@ fn check_nu(nu: f64) -> Result<f64> {
 
 fn check_depth(z: f64) -> Result<f64> {
     crate::error::non_negative("z", z)
-}
-
-/// An error for a result that left the range of `f64` (absurdly large inputs).
-fn overflow(field: &'static str, value: f64) -> Error {
-    Error::invalid(
-        field,
-        value,
-        "a value small enough for the result to be a finite f64",
-    )
 }
 
 // ---------------------------------------------------------------------------------------
@@ -218,7 +197,7 @@ fn axis_stress_from(depth: f64, p0: f64, s: [f64; 3]) -> Result<AxisStress> {
     if all.iter().all(|v| v.is_finite()) {
         Ok(out)
     } else {
-        Err(overflow("p0", p0))
+        Err(crate::error::overflow("p0", p0))
     }
 }
 
@@ -669,7 +648,7 @@ fn peaks_from(p0: f64, length: f64, tresca: Peak, mises: Peak) -> Result<StressP
     if out.max_shear.is_finite() && out.max_von_mises.is_finite() {
         Ok(out)
     } else {
-        Err(overflow("p0", p0))
+        Err(crate::error::overflow("p0", p0))
     }
 }
 
