@@ -82,6 +82,7 @@ pub mod geometry;
 pub mod hertz;
 pub mod io;
 pub mod material;
+pub mod pimp;
 pub mod units;
 
 pub use error::{Error, Result};

@@ -1,0 +1,477 @@
+//! The PimP method ("Pressungsverteilung im Punktkontakt", Wirsching, Schwarz & Tremmel
+//! 2020, seed 000 §2.2; Wirsching et al. 2019, seed 001): the pressure between two
+//! analytic surfaces from a substitute geometry pressed into a Winkler bedding.
+//!
+//! The four steps of the paper map onto this module as follows.
+//!
+//! 1. **Contact point** from the poses of the bodies:
+//!    [`crate::geometry::contact_point::find_contact`].
+//! 2. **Local geometry**: the contact plane at the contact point, ray-cast distance
+//!    functions `g1`, `g2` and the substitute geometry `g = g1 - g2` (a [`GapSource`],
+//!    sampled on a grid in the principal frame of the gap).
+//! 3. **Contact force**: the overlap `u = delta - g` pressed into uncoupled springs
+//!    (the [`Mode`] decides the law), the approach `delta` iterated to force
+//!    equilibrium by a bracketing root finder.
+//! 4. **Pressure distribution** and the contact zone ([`ContactZone`]): area, maximum
+//!    pressure, extents, centre of pressure, separate patches, centre-line curvature.
+//!
+//! Units: mm, N, MPa. The derivation of both bedding laws, and the reading of the
+//! paper's garbled equations, are in `docs/pimp.md`.
+//!
+//! # Example
+//! A 20 mm steel ball on a steel flat at 200 N, corrected mode, against Hertz:
+//! ```
+//! use kontakt::pimp::{Pimp, PimpOptions, QuadraticGap};
+//! use kontakt::geometry::RelativeCurvature;
+//! use kontakt::hertz::{HertzPointContact, PointGeometry};
+//! use kontakt::material::ElasticMaterial;
+//! let inf = f64::INFINITY;
+//! let k = RelativeCurvature::from_radii([20.0, 20.0], [inf, inf], 0.0)?;
+//! let steel = ElasticMaterial::STEEL;
+//! let pimp = Pimp::new(steel, steel, PimpOptions::default())?;
+//! let s = pimp.solve_force(&QuadraticGap::new(k), 200.0)?;
+//! let h = HertzPointContact::new(PointGeometry::from_curvature(k), steel, steel)?
+//!     .solve_force(200.0)?;
+//! assert!((s.max_pressure / h.max_pressure - 1.0).abs() < 0.01);
+//! assert!((s.approach / h.approach - 1.0).abs() < 0.01);
+//! # Ok::<(), kontakt::Error>(())
+//! ```
+
+mod bedding;
+mod gap;
+mod zone;
+
+pub use bedding::{Mode, SampledGap};
+pub use gap::{FnGap, GapSource, QuadraticGap};
+pub use zone::ContactZone;
+
+use crate::error::{Error, Result, positive_as};
+use crate::geometry::Grid2;
+use crate::hertz::{HertzPointContact, PointGeometry};
+use crate::material::ElasticMaterial;
+use crate::units::{Megapascal, Millimetre, Newton};
+use bedding::Bedding;
+use serde::{Deserialize, Serialize};
+
+/// Fewest loaded cells across the contact zone, in each direction, for a result to be
+/// trusted; a coarser zone is an error (fixed grid) or triggers a finer grid (adaptive).
+pub const MIN_CELLS_ACROSS: usize = 8;
+
+/// How many times the adaptive grid may be resized before giving up.
+const MAX_GRID_ROUNDS: usize = 12;
+
+/// Options of the PimP solver.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct PimpOptions {
+    /// The bedding law.
+    pub mode: Mode,
+    /// Cells `[nx, ny]` of the grid, each in 8..=4096 (default 64 × 64).
+    pub cells: [usize; 2],
+    /// Fixed half-extents `[x, y]` \[mm\] of the grid along the principal axes of the
+    /// gap; `None` (default) adapts the extent to the contact: it starts from the Hertz
+    /// estimate, grows when the zone reaches the border and shrinks once when the zone
+    /// fills less than half of it.
+    pub extent: Option<[Millimetre; 2]>,
+    /// Relative force tolerance of the equilibrium iteration (default 1e-10), in
+    /// (0, 1e-3\].
+    pub tolerance: f64,
+    /// Most force evaluations of the equilibrium iteration (default 200), >= 10.
+    pub max_iterations: usize,
+}
+
+impl Default for PimpOptions {
+    fn default() -> Self {
+        PimpOptions {
+            mode: Mode::Corrected,
+            cells: [64, 64],
+            extent: None,
+            tolerance: 1e-10,
+            max_iterations: 200,
+        }
+    }
+}
+
+impl PimpOptions {
+    /// Check every option; errors name the field, the value and the valid range.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] for an option out of range.
+    pub fn validate(&self) -> Result<()> {
+        for (field, n) in [("cells[0]", self.cells[0]), ("cells[1]", self.cells[1])] {
+            if !(8..=4096).contains(&n) {
+                return Err(Error::invalid(field, n, "8 <= cells <= 4096"));
+            }
+        }
+        if let Some([x, y]) = self.extent {
+            positive_as("extent[0]", x, "a finite half-extent > 0 mm")?;
+            positive_as("extent[1]", y, "a finite half-extent > 0 mm")?;
+        }
+        if !(self.tolerance > 0.0 && self.tolerance <= 1e-3) {
+            return Err(Error::invalid(
+                "tolerance",
+                self.tolerance,
+                "0 < tolerance <= 1e-3",
+            ));
+        }
+        if self.max_iterations < 10 {
+            return Err(Error::invalid(
+                "max_iterations",
+                self.max_iterations,
+                ">= 10",
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// The PimP solver for one pair of materials: plan once, solve many.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pimp {
+    body1: ElasticMaterial,
+    body2: ElasticMaterial,
+    options: PimpOptions,
+}
+
+/// The PimP result at one load.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PimpSolution {
+    /// The bedding law used.
+    pub mode: Mode,
+    /// Normal force \[N\].
+    pub force: Newton,
+    /// Rigid approach `delta` from first touch \[mm\] (the paper's penetration `d`).
+    pub approach: Millimetre,
+    /// Largest pressure \[MPa\].
+    pub max_pressure: Megapascal,
+    /// Mean pressure over the contact area \[MPa\].
+    pub mean_pressure: Megapascal,
+    /// Contact area \[mm²\].
+    pub contact_area: f64,
+    /// Half-extents of the zone along the grid's x and y \[mm\] (the semi-axes for an
+    /// elliptical zone).
+    pub semi_axes: [Millimetre; 2],
+    /// Angle \[rad\] from the gap source's `x` axis to the grid's `x` axis (the direction
+    /// of least relative curvature).
+    pub orientation: f64,
+    /// Shape of the zone in the grid frame.
+    pub zone: ContactZone,
+    /// Force evaluations of the equilibrium iteration (0 under approach control).
+    pub iterations: usize,
+    /// Grid resizes of the adaptive extent.
+    pub grid_rounds: usize,
+    /// The grid \[mm\] (principal frame).
+    pub grid: Grid2,
+    /// Pressure per cell \[MPa\], row-major with x fastest.
+    pub pressure: Vec<Megapascal>,
+}
+
+/// What the solver holds fixed.
+#[derive(Debug, Clone, Copy)]
+enum Target {
+    Force(Newton),
+    Approach(Millimetre),
+}
+
+impl Pimp {
+    /// A solver for body 1 against body 2 with `options`.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] for an invalid option (see [`PimpOptions::validate`]).
+    pub fn new(
+        body1: ElasticMaterial,
+        body2: ElasticMaterial,
+        options: PimpOptions,
+    ) -> Result<Self> {
+        options.validate()?;
+        Ok(Pimp {
+            body1,
+            body2,
+            options,
+        })
+    }
+
+    /// The options.
+    pub fn options(&self) -> &PimpOptions {
+        &self.options
+    }
+
+    /// Sample `source` on `grid` (in the principal frame of the gap) and prepare it for
+    /// the bedding law: the set-up of the multi-body path. Then
+    /// [`SampledGap::force`] gives the force for any approach without allocating.
+    ///
+    /// # Errors
+    /// Errors of the source.
+    pub fn sample(&self, source: &dyn GapSource, grid: Grid2) -> Result<SampledGap> {
+        let curvature = source.curvature();
+        let bedding = Bedding::new(self.options.mode, curvature, self.body1, self.body2)?;
+        let mut effective = vec![0.0; grid.len()];
+        source.sample(&grid, curvature.orientation, &mut effective)?;
+        if let Bedding::Corrected {
+            corrected: [a_p, b_p],
+            original: [a, b],
+            ..
+        } = bedding
+        {
+            // Direction-dependent rescaling of the gap (degree 0 in x, y): exact for the
+            // quadratic part, and zeros of g (other contact zones) stay where they are.
+            for (k, (x, y)) in grid.points().enumerate() {
+                let (xx, yy) = (x * x, y * y);
+                let q = a * xx + b * yy;
+                if q > 0.0 {
+                    effective[k] *= (a_p * xx + b_p * yy) / q;
+                }
+            }
+        }
+        Ok(SampledGap {
+            grid,
+            rotation: curvature.orientation,
+            effective,
+            bedding,
+        })
+    }
+
+    /// Solve for a normal force `force` \[N\] (> 0): the approach is iterated to force
+    /// equilibrium.
+    ///
+    /// # Errors
+    /// - [`Error::InvalidInput`] for a non-positive force.
+    /// - [`Error::Geometry`] when the zone reaches the border of a fixed grid, spans
+    ///   fewer than [`MIN_CELLS_ACROSS`] cells, or the adaptive grid cannot contain it.
+    /// - [`Error::NotConverged`] when the equilibrium iteration fails.
+    pub fn solve_force(&self, source: &dyn GapSource, force: Newton) -> Result<PimpSolution> {
+        positive_as("force", force, "a finite force > 0 N")?;
+        self.run(source, Target::Force(force))
+    }
+
+    /// Solve for a rigid approach `approach` \[mm\] (> 0) from first touch.
+    ///
+    /// # Errors
+    /// As [`Pimp::solve_force`], for `approach`.
+    pub fn solve_approach(
+        &self,
+        source: &dyn GapSource,
+        approach: Millimetre,
+    ) -> Result<PimpSolution> {
+        positive_as("approach", approach, "a finite approach > 0 mm")?;
+        self.run(source, Target::Approach(approach))
+    }
+
+    fn run(&self, source: &dyn GapSource, target: Target) -> Result<PimpSolution> {
+        let curvature = source.curvature();
+        let hertz = HertzPointContact::new(
+            PointGeometry::from_curvature(curvature),
+            self.body1,
+            self.body2,
+        )?;
+        let estimate = match target {
+            Target::Force(f) => hertz.solve_force(f)?,
+            Target::Approach(d) => hertz.solve_approach(d)?,
+        };
+        let mut half = match (self.options.extent, self.options.mode) {
+            (Some(e), _) => e,
+            (None, Mode::Corrected) => [1.25 * estimate.semi_axes[0], 1.25 * estimate.semi_axes[1]],
+            (None, Mode::Published) => {
+                // The published footprint is the contour g = d of the gap, d ≈ 0.6-1 delta.
+                let d = match target {
+                    Target::Force(_) => 0.7 * estimate.approach,
+                    Target::Approach(d) => d,
+                };
+                [
+                    1.25 * (d / curvature.a_coef).sqrt(),
+                    1.25 * (d / curvature.b_coef).sqrt(),
+                ]
+            }
+        };
+        let fixed = self.options.extent.is_some();
+        let [nx, ny] = self.options.cells;
+        let mut shrunk = false;
+        let mut guess = estimate.approach
+            * match self.options.mode {
+                Mode::Corrected => 1.0,
+                Mode::Published => 0.6,
+            };
+        for round in 0..MAX_GRID_ROUNDS {
+            let grid = Grid2::centered(half[0], half[1], nx, ny)?;
+            let sampled = self.sample(source, grid)?;
+            let (approach, iterations, scale) = match target {
+                Target::Force(f) => {
+                    let (d, it) = equilibrium(&sampled, f, guess, &self.options)?;
+                    let achieved = sampled.force(d);
+                    (d, it, f / achieved)
+                }
+                Target::Approach(d) => (d, 0, 1.0),
+            };
+            let mut pressure = vec![0.0; grid.len()];
+            sampled.pressure_into(approach, &mut pressure);
+            if scale != 1.0 {
+                // Published mode only: the strip weights jump when the footprint gains a
+                // column; at such a jump the weights are interpolated so the force
+                // balances exactly (docs/pimp.md).
+                pressure.iter_mut().for_each(|p| *p *= scale);
+            }
+            let mut zone = ContactZone::analyse(&grid, &pressure)?;
+            if zone.patches == 0 {
+                return Err(Error::Geometry {
+                    field: "extent".into(),
+                    reason: format!(
+                        "no grid cell is in contact (grid ±{:.4e} × ±{:.4e} mm, {nx} × {ny} \
+                         cells): the contact is smaller than one cell; use a smaller extent \
+                         or the adaptive grid",
+                        half[0], half[1]
+                    ),
+                });
+            }
+            let across = [
+                ((zone.extents[0][1] - zone.extents[0][0]) / grid.dx()).round() as usize,
+                ((zone.extents[1][1] - zone.extents[1][0]) / grid.dy()).round() as usize,
+            ];
+            guess = approach;
+            if zone.touches_border[0] || zone.touches_border[1] {
+                if fixed {
+                    return Err(Error::Geometry {
+                        field: "extent".into(),
+                        reason: format!(
+                            "the contact zone reaches the border of the fixed grid \
+                             ±{:.4e} × ±{:.4e} mm; enlarge `extent` or leave it out for the \
+                             adaptive grid",
+                            half[0], half[1]
+                        ),
+                    });
+                }
+                for axis in 0..2 {
+                    if zone.touches_border[axis] {
+                        half[axis] *= 1.6;
+                    }
+                }
+                continue;
+            }
+            if !fixed && !shrunk {
+                // Zoom in once when the zone fills less than half of the grid.
+                let reach = [
+                    zone.extents[0][0].abs().max(zone.extents[0][1].abs()),
+                    zone.extents[1][0].abs().max(zone.extents[1][1].abs()),
+                ];
+                if reach[0] < 0.6 * half[0] || reach[1] < 0.6 * half[1] {
+                    half = [
+                        (1.15 * reach[0]).min(half[0]),
+                        (1.15 * reach[1]).min(half[1]),
+                    ];
+                    shrunk = true;
+                    continue;
+                }
+            }
+            if across[0] < MIN_CELLS_ACROSS || across[1] < MIN_CELLS_ACROSS {
+                return Err(Error::Geometry {
+                    field: "cells".into(),
+                    reason: format!(
+                        "the grid is too coarse for the contact: the zone spans {} × {} cells, \
+                         at least {MIN_CELLS_ACROSS} are needed each way; use more cells or a \
+                         smaller extent",
+                        across[0], across[1]
+                    ),
+                });
+            }
+            if let Some(e) = sampled.extents(approach) {
+                zone.extents = e;
+            }
+            let force = match target {
+                Target::Force(f) => f,
+                Target::Approach(_) => zone.force,
+            };
+            return Ok(PimpSolution {
+                mode: self.options.mode,
+                force,
+                approach,
+                max_pressure: zone.max_pressure,
+                mean_pressure: force / zone.area,
+                contact_area: zone.area,
+                semi_axes: zone.half_extents(),
+                orientation: sampled.rotation,
+                zone,
+                iterations,
+                grid_rounds: round,
+                grid,
+                pressure,
+            });
+        }
+        Err(Error::Geometry {
+            field: "extent".into(),
+            reason: format!(
+                "the adaptive grid did not settle in {MAX_GRID_ROUNDS} rounds (last extent \
+                 ±{:.4e} × ±{:.4e} mm): the contact zone is unbounded or far from the contact \
+                 point",
+                half[0], half[1]
+            ),
+        })
+    }
+}
+
+/// Find the approach at which `sampled` carries `force`: expand a bracket from `guess`,
+/// then the Illinois variant of regula falsi (superlinear, never leaves the bracket).
+/// Returns the approach and the number of force evaluations.
+fn equilibrium(
+    sampled: &SampledGap,
+    force: Newton,
+    guess: Millimetre,
+    options: &PimpOptions,
+) -> Result<(Millimetre, usize)> {
+    let f = |d: f64| sampled.force(d) - force;
+    let tol = options.tolerance * force;
+    let mut evals = 0;
+    let (mut lo, mut flo) = (0.0, -force);
+    let mut hi = guess;
+    let mut fhi = f(hi);
+    evals += 1;
+    while fhi < 0.0 {
+        if evals >= options.max_iterations {
+            return Err(Error::NotConverged {
+                what: "PimP force bracket".into(),
+                iterations: evals,
+                residual: -fhi / force,
+            });
+        }
+        (lo, flo) = (hi, fhi);
+        hi *= 2.0;
+        fhi = f(hi);
+        evals += 1;
+    }
+    if fhi.abs() <= tol {
+        return Ok((hi, evals));
+    }
+    // `flo`/`fhi` are scaled by the Illinois rule; only `fd` is a true residual.
+    let mut side = 0i8;
+    while evals < options.max_iterations {
+        if hi - lo <= 4.0 * f64::EPSILON * hi {
+            // A jump of the published weights: the root is at the jump.
+            return Ok((hi, evals));
+        }
+        let mut d = (lo * fhi - hi * flo) / (fhi - flo);
+        if !(d > lo && d < hi) {
+            d = 0.5 * (lo + hi);
+        }
+        let fd = f(d);
+        evals += 1;
+        if fd.abs() <= tol {
+            return Ok((d, evals));
+        }
+        if fd < 0.0 {
+            (lo, flo) = (d, fd);
+            if side == -1 {
+                fhi *= 0.5;
+            }
+            side = -1;
+        } else {
+            (hi, fhi) = (d, fd);
+            if side == 1 {
+                flo *= 0.5;
+            }
+            side = 1;
+        }
+    }
+    Err(Error::NotConverged {
+        what: "PimP force equilibrium".into(),
+        iterations: evals,
+        residual: (hi - lo) / hi,
+    })
+}

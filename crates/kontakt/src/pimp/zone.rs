@@ -1,0 +1,182 @@
+//! The shape of a contact zone from a sampled pressure field: area, extents, centre of
+//! pressure, separate patches and the curvature of the zone's centre line.
+
+use crate::error::Result;
+use crate::geometry::Grid2;
+use crate::pimp::gap::check_len;
+use serde::Serialize;
+
+/// Shape statistics of a pressure field on a grid (all in the grid's frame).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ContactZone {
+    /// Contact area: the number of loaded cells times the cell area \[mm²\].
+    pub area: f64,
+    /// Resultant normal force, the sum of pressure times cell area \[N\].
+    pub force: f64,
+    /// Largest cell pressure \[MPa\].
+    pub max_pressure: f64,
+    /// Where the largest pressure acts `[x, y]` \[mm\].
+    pub max_pressure_at: [f64; 2],
+    /// `[[x_min, x_max], [y_min, y_max]]` \[mm\] of the loaded cells (cell edges).
+    pub extents: [[f64; 2]; 2],
+    /// Centre of pressure `[x, y]` \[mm\].
+    pub centroid: [f64; 2],
+    /// Number of separate loaded patches (cells joined through their edges).
+    pub patches: usize,
+    /// Curvature \[1/mm\] at `x = centroid` of the zone's centre line `y_c(x)`, the
+    /// force-weighted mean `y` of each column, fitted by a weighted parabola; positive
+    /// when the zone bends towards `+y` at its ends. `None` with fewer than 5 loaded
+    /// columns. Zero for an ellipse aligned with the grid, non-zero for the curved
+    /// ("banana") zones of tori.
+    pub centre_line_curvature: Option<f64>,
+    /// Whether loaded cells lie in the outermost column (`[0]`) or row (`[1]`) of the
+    /// grid: the zone may be cut off by the grid border.
+    pub touches_border: [bool; 2],
+}
+
+impl ContactZone {
+    /// Analyse `pressure` \[MPa\] sampled on `grid` (row-major, x fastest).
+    ///
+    /// # Errors
+    /// [`crate::Error::InvalidInput`] when the lengths disagree.
+    pub fn analyse(grid: &Grid2, pressure: &[f64]) -> Result<Self> {
+        check_len(grid, pressure)?;
+        let (nx, ny) = (grid.nx(), grid.ny());
+        let da = grid.cell_area();
+        let (mut force, mut cells, mut pmax, mut at) = (0.0, 0usize, 0.0, [0.0; 2]);
+        let (mut mx, mut my) = (0.0, 0.0);
+        let (mut i0, mut i1, mut j0, mut j1) = (usize::MAX, 0, usize::MAX, 0);
+        let mut border = [false; 2];
+        for j in 0..ny {
+            for i in 0..nx {
+                let p = pressure[j * nx + i];
+                if p > 0.0 {
+                    let (x, y) = (grid.x(i), grid.y(j));
+                    cells += 1;
+                    force += p * da;
+                    mx += p * x;
+                    my += p * y;
+                    if p > pmax {
+                        pmax = p;
+                        at = [x, y];
+                    }
+                    i0 = i0.min(i);
+                    i1 = i1.max(i);
+                    j0 = j0.min(j);
+                    j1 = j1.max(j);
+                    border[0] |= i == 0 || i + 1 == nx;
+                    border[1] |= j == 0 || j + 1 == ny;
+                }
+            }
+        }
+        if cells == 0 {
+            return Ok(ContactZone {
+                area: 0.0,
+                force: 0.0,
+                max_pressure: 0.0,
+                max_pressure_at: [0.0; 2],
+                extents: [[0.0; 2]; 2],
+                centroid: [0.0; 2],
+                patches: 0,
+                centre_line_curvature: None,
+                touches_border: [false; 2],
+            });
+        }
+        let (dx, dy) = (grid.dx(), grid.dy());
+        let psum = force / da;
+        let centroid = [mx / psum, my / psum];
+        Ok(ContactZone {
+            area: cells as f64 * da,
+            force,
+            max_pressure: pmax,
+            max_pressure_at: at,
+            extents: [
+                [grid.x(i0) - 0.5 * dx, grid.x(i1) + 0.5 * dx],
+                [grid.y(j0) - 0.5 * dy, grid.y(j1) + 0.5 * dy],
+            ],
+            centroid,
+            patches: count_patches(nx, ny, pressure),
+            centre_line_curvature: centre_line_curvature(grid, pressure, centroid[0]),
+            touches_border: border,
+        })
+    }
+
+    /// Half-extents `[(x_max - x_min)/2, (y_max - y_min)/2]` \[mm\]: the semi-axes for an
+    /// elliptical zone aligned with the grid.
+    pub fn half_extents(&self) -> [f64; 2] {
+        [
+            0.5 * (self.extents[0][1] - self.extents[0][0]),
+            0.5 * (self.extents[1][1] - self.extents[1][0]),
+        ]
+    }
+}
+
+/// Connected components of the loaded cells (4-neighbourhood), by flood fill.
+fn count_patches(nx: usize, ny: usize, pressure: &[f64]) -> usize {
+    let mut seen = vec![false; pressure.len()];
+    let mut stack = Vec::new();
+    let mut patches = 0;
+    for start in 0..pressure.len() {
+        if seen[start] || !(pressure[start] > 0.0) {
+            continue;
+        }
+        patches += 1;
+        seen[start] = true;
+        stack.push(start);
+        while let Some(k) = stack.pop() {
+            let (i, j) = (k % nx, k / nx);
+            let neighbours = [
+                (i > 0).then(|| k - 1),
+                (i + 1 < nx).then(|| k + 1),
+                (j > 0).then(|| k - nx),
+                (j + 1 < ny).then(|| k + nx),
+            ];
+            for n in neighbours.into_iter().flatten() {
+                if !seen[n] && pressure[n] > 0.0 {
+                    seen[n] = true;
+                    stack.push(n);
+                }
+            }
+        }
+    }
+    patches
+}
+
+/// Weighted least-squares parabola through the column centres `y_c(x)`, curvature at
+/// `x0`: `kappa = y'' / (1 + y'^2)^(3/2)`.
+fn centre_line_curvature(grid: &Grid2, pressure: &[f64], x0: f64) -> Option<f64> {
+    let (nx, ny) = (grid.nx(), grid.ny());
+    // Normal equations of y = c0 + c1 t + c2 t², t = x - x0, weights = column force.
+    let mut s = [0.0f64; 5]; // sums of w t^k, k = 0..4
+    let mut r = [0.0f64; 3]; // sums of w t^k y_c
+    let mut columns = 0;
+    for i in 0..nx {
+        let (mut w, mut wy) = (0.0, 0.0);
+        for j in 0..ny {
+            let p = pressure[j * nx + i];
+            if p > 0.0 {
+                w += p;
+                wy += p * grid.y(j);
+            }
+        }
+        if w > 0.0 {
+            columns += 1;
+            let (t, yc) = (grid.x(i) - x0, wy / w);
+            let mut tk = 1.0;
+            for (k, sk) in s.iter_mut().enumerate() {
+                *sk += w * tk;
+                if k < 3 {
+                    r[k] += w * tk * yc;
+                }
+                tk *= t;
+            }
+        }
+    }
+    if columns < 5 {
+        return None;
+    }
+    let m = nalgebra::Matrix3::new(s[0], s[1], s[2], s[1], s[2], s[3], s[2], s[3], s[4]);
+    let c = m.lu().solve(&nalgebra::Vector3::new(r[0], r[1], r[2]))?;
+    let slope = c[1];
+    Some(2.0 * c[2] / (1.0 + slope * slope).powf(1.5))
+}
