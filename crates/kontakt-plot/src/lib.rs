@@ -1,0 +1,378 @@
+//! Report-quality plots for kontakt: pressure maps and line plots, written as PNG or SVG.
+//!
+//! The crate is independent of the `kontakt` solver crate: it takes plain slices.
+//!
+//! * [`field_map`] draws a scalar field on a uniform cell-centred grid (e.g. a contact
+//!   pressure in MPa over x, y in mm) as a heat map with equal axis scales, a colour bar and
+//!   the outline of the contact region, optionally with the outlines of other fields overlaid.
+//! * [`line_plot`] draws curves and measured points with a legend.
+//! * [`contour_zero`] returns the boundary of the region `values > 0` as closed polylines.
+//!
+//! The output format follows the file extension (see [`Format`]). Text is rendered with a
+//! bundled DejaVu Sans font (Bitstream Vera licence, `assets/LICENSE-DejaVu.txt`), so PNG
+//! plots look the same on machines without any system fonts; SVG text names the
+//! `sans-serif` family and is laid out with the same font metrics.
+//!
+//! ```no_run
+//! use std::path::Path;
+//! use kontakt_plot::{FieldMap, field_map};
+//!
+//! let (nx, ny) = (64, 48);
+//! let values: Vec<f64> = (0..nx * ny)
+//!     .map(|k| {
+//!         let x = -1.2 + ((k % nx) as f64 + 0.5) * 2.4 / nx as f64;
+//!         let y = -0.6 + ((k / nx) as f64 + 0.5) * 1.2 / ny as f64;
+//!         1000.0 * (1.0 - x * x - 4.0 * y * y).max(0.0).sqrt()
+//!     })
+//!     .collect();
+//! let map = FieldMap {
+//!     nx,
+//!     ny,
+//!     x_min: -1.2,
+//!     y_min: -0.6,
+//!     dx: 2.4 / nx as f64,
+//!     dy: 1.2 / ny as f64,
+//!     values: &values,
+//!     title: "Contact pressure",
+//!     x_label: "x [mm]",
+//!     y_label: "y [mm]",
+//!     colorbar_label: "pressure [MPa]",
+//!     outline: true,
+//!     overlays: &[],
+//! };
+//! field_map(Path::new("pressure.png"), &map, (1000, 700))?;
+//! # Ok::<(), kontakt_plot::PlotError>(())
+//! ```
+
+mod colormap;
+mod contour;
+mod field;
+mod line;
+mod render;
+mod ticks;
+
+use std::path::{Path, PathBuf};
+
+pub use contour::contour_zero;
+
+/// Smallest accepted image size in pixels (width, height).
+pub const MIN_SIZE: (u32, u32) = (200, 150);
+/// Largest accepted image size in pixels along either axis.
+pub const MAX_SIZE: u32 = 8000;
+
+/// A fixed palette of distinct colours for series (the "tab10" colours of matplotlib:
+/// blue, orange, green, red, purple, brown, pink, grey).
+pub const PALETTE: [(u8, u8, u8); 8] = [
+    (31, 119, 180),
+    (255, 127, 14),
+    (44, 160, 44),
+    (214, 39, 40),
+    (148, 103, 189),
+    (140, 86, 75),
+    (227, 119, 194),
+    (127, 127, 127),
+];
+
+/// Output format, chosen from the file extension (`.png` / `.svg`, any letter case).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Format {
+    /// Raster image (8-bit RGB PNG).
+    Png,
+    /// Vector image (SVG 1.1; text as `<text>` elements with the `sans-serif` family).
+    Svg,
+}
+
+impl Format {
+    /// The format for a file name: `.png` or `.svg` (case-insensitive). Any other or a
+    /// missing extension is a [`PlotError::UnsupportedFormat`] naming the path and the valid
+    /// extensions.
+    pub fn from_path(path: &Path) -> Result<Format, PlotError> {
+        let ext = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .map(str::to_ascii_lowercase);
+        match ext.as_deref() {
+            Some("png") => Ok(Format::Png),
+            Some("svg") => Ok(Format::Svg),
+            _ => Err(PlotError::UnsupportedFormat {
+                path: path.to_path_buf(),
+            }),
+        }
+    }
+}
+
+/// Errors of the plotting functions. Invalid input is reported before anything is written.
+#[derive(Debug, thiserror::Error)]
+pub enum PlotError {
+    /// An input value is out of its valid range.
+    #[error("invalid {field} = {value}: expected {expected}")]
+    InvalidInput {
+        /// The offending input, e.g. `values[17]` or `series[1] ("measured").points[3]`.
+        field: String,
+        /// The value that was given.
+        value: String,
+        /// What would have been accepted.
+        expected: String,
+    },
+    /// The output file name has no supported extension.
+    #[error("cannot tell the plot format of {}: the file name must end in .png or .svg", path.display())]
+    UnsupportedFormat {
+        /// The output path as given.
+        path: PathBuf,
+    },
+    /// Writing the output file failed (e.g. its directory does not exist).
+    #[error("cannot write plot file {}: {source}", path.display())]
+    Io {
+        /// The output path.
+        path: PathBuf,
+        /// The underlying error.
+        source: std::io::Error,
+    },
+    /// The drawing backend, the bundled font or the PNG encoder failed.
+    #[error("drawing failed: {0}")]
+    Drawing(String),
+}
+
+impl PlotError {
+    fn invalid(
+        field: impl Into<String>,
+        value: impl ToString,
+        expected: impl Into<String>,
+    ) -> Self {
+        PlotError::InvalidInput {
+            field: field.into(),
+            value: value.to_string(),
+            expected: expected.into(),
+        }
+    }
+}
+
+/// A scalar field on a uniform cell-centred grid.
+///
+/// Value `(i, j)` belongs to the cell centred at `x = x_min + (i + 0.5) dx`,
+/// `y = y_min + (j + 0.5) dy`, and is stored row-major with x fastest (index `j*nx + i`).
+/// The grid covers `[x_min, x_min + nx dx] × [y_min, y_min + ny dy]`.
+#[derive(Debug, Clone, Copy)]
+pub struct FieldMap<'a> {
+    /// Number of cells along x (at least 2).
+    pub nx: usize,
+    /// Number of cells along y (at least 2).
+    pub ny: usize,
+    /// Left edge of the grid in mm.
+    pub x_min: f64,
+    /// Lower edge of the grid in mm.
+    pub y_min: f64,
+    /// Cell size along x in mm (finite, > 0).
+    pub dx: f64,
+    /// Cell size along y in mm (finite, > 0).
+    pub dy: f64,
+    /// The values, `nx*ny` of them, all finite (e.g. pressure in MPa); 0 means "no contact"
+    /// and is drawn as background.
+    pub values: &'a [f64],
+    /// Title at the top of the figure.
+    pub title: &'a str,
+    /// Label of the x axis, e.g. `"x [mm]"`.
+    pub x_label: &'a str,
+    /// Label of the y axis, e.g. `"y [mm]"`.
+    pub y_label: &'a str,
+    /// Label of the colour bar, e.g. `"pressure [MPa]"`.
+    pub colorbar_label: &'a str,
+    /// Draw the outline of the region `values > 0` (the contact boundary, see
+    /// [`contour_zero`]) as a closed black line.
+    pub outline: bool,
+    /// Extra outlines to overlay (e.g. another solver's contact boundary), each drawn as the
+    /// boundary of its `values > 0` in its colour (dashed), with a legend entry.
+    pub overlays: &'a [Overlay<'a>],
+}
+
+/// The contact boundary of another field on the same grid, overlaid on a [`FieldMap`].
+#[derive(Debug, Clone, Copy)]
+pub struct Overlay<'a> {
+    /// Legend entry.
+    pub label: &'a str,
+    /// Field values on the same grid as the map (`nx*ny`, finite); its region `> 0` is outlined.
+    pub values: &'a [f64],
+    /// Line colour as (r, g, b).
+    pub color: (u8, u8, u8),
+}
+
+/// Draw a heat map of the field into `path` (`.png` or `.svg`, see [`Format`]) with the
+/// image size `size` = (width, height) in pixels.
+///
+/// The figure has the title at the top, the map with equal scales on both axes (1 mm is the
+/// same length in x and y) and ticked axes in mm, a colour bar (viridis) with its label and
+/// tick values to the right, and the outline(s) of the contact region. Zero cells are left
+/// white. An all-zero field is allowed: the map is empty, with "no contact" in its centre.
+///
+/// For PNG the map is rasterised at the pixel resolution of the plotting area; for SVG each
+/// cell becomes a rectangle, after averaging blocks of cells down to at most 128×128 cells.
+///
+/// Errors: an unsupported extension, invalid input (see [`FieldMap`]; `size` must lie within
+/// [`MIN_SIZE`] and [`MAX_SIZE`]), or a file that cannot be written (a missing parent
+/// directory is not created).
+pub fn field_map(path: &Path, map: &FieldMap, size: (u32, u32)) -> Result<(), PlotError> {
+    let format = Format::from_path(path)?;
+    validate_size(size)?;
+    validate_field(map)?;
+    render::render(path, format, size, field::FieldFigure(map))
+}
+
+/// How the points of a [`Series`] are drawn.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum LineStyle {
+    /// Solid line through the points.
+    Solid,
+    /// Dashed line through the points.
+    Dashed,
+    /// Points only, as filled circles (measurements).
+    Markers,
+}
+
+/// One curve of a [`LinePlot`].
+#[derive(Debug, Clone, Copy)]
+pub struct Series<'a> {
+    /// Legend entry (an empty label gets no entry).
+    pub label: &'a str,
+    /// The (x, y) points, in drawing order; at least one, all finite.
+    pub points: &'a [(f64, f64)],
+    /// Colour as (r, g, b), e.g. from [`PALETTE`].
+    pub color: (u8, u8, u8),
+    /// Line or markers.
+    pub style: LineStyle,
+}
+
+/// A line plot: several series over common axes.
+#[derive(Debug, Clone, Copy)]
+pub struct LinePlot<'a> {
+    /// Title at the top of the figure.
+    pub title: &'a str,
+    /// Label of the x axis.
+    pub x_label: &'a str,
+    /// Label of the y axis.
+    pub y_label: &'a str,
+    /// The curves (at least one).
+    pub series: &'a [Series<'a>],
+}
+
+/// Draw a line plot into `path` (`.png` or `.svg`, see [`Format`]) with the image size
+/// `size` = (width, height) in pixels.
+///
+/// The ranges cover all points with a small margin; there is a light grid at the ticks and a
+/// legend in the corner of the plot with the fewest data in it.
+///
+/// Errors: an unsupported extension, `size` outside [`MIN_SIZE`]..[`MAX_SIZE`], no series, a
+/// series without points, a non-finite coordinate (the error names the series and the point
+/// index), or a file that cannot be written.
+pub fn line_plot(path: &Path, plot: &LinePlot, size: (u32, u32)) -> Result<(), PlotError> {
+    let format = Format::from_path(path)?;
+    validate_size(size)?;
+    validate_series(plot.series)?;
+    render::render(path, format, size, line::LineFigure(plot))
+}
+
+fn validate_size(size: (u32, u32)) -> Result<(), PlotError> {
+    let (w, h) = size;
+    if w < MIN_SIZE.0 || h < MIN_SIZE.1 || w > MAX_SIZE || h > MAX_SIZE {
+        return Err(PlotError::invalid(
+            "size",
+            format!("{w}×{h}"),
+            format!(
+                "at least {}×{} and at most {MAX_SIZE}×{MAX_SIZE} pixels",
+                MIN_SIZE.0, MIN_SIZE.1
+            ),
+        ));
+    }
+    Ok(())
+}
+
+fn validate_field(map: &FieldMap) -> Result<(), PlotError> {
+    if map.nx < 2 {
+        return Err(PlotError::invalid("nx", map.nx, "at least 2 cells"));
+    }
+    if map.ny < 2 {
+        return Err(PlotError::invalid("ny", map.ny, "at least 2 cells"));
+    }
+    for (name, v) in [("dx", map.dx), ("dy", map.dy)] {
+        if !(v > 0.0) || !v.is_finite() {
+            return Err(PlotError::invalid(name, v, "a finite cell size > 0 mm"));
+        }
+    }
+    for (name, v) in [("x_min", map.x_min), ("y_min", map.y_min)] {
+        if !v.is_finite() {
+            return Err(PlotError::invalid(name, v, "a finite coordinate in mm"));
+        }
+    }
+    // The far edges must be finite too (huge nx*dx).
+    let x_max = map.x_min + map.nx as f64 * map.dx;
+    let y_max = map.y_min + map.ny as f64 * map.dy;
+    if !x_max.is_finite() || !y_max.is_finite() {
+        return Err(PlotError::invalid(
+            "grid extent",
+            format!("x up to {x_max}, y up to {y_max}"),
+            "a finite grid",
+        ));
+    }
+    let n = map
+        .nx
+        .checked_mul(map.ny)
+        .ok_or_else(|| PlotError::invalid("nx*ny", "overflow", "a grid that fits in memory"))?;
+    check_values("values", map.values, n)?;
+    for (k, overlay) in map.overlays.iter().enumerate() {
+        check_values(
+            &format!("overlays[{k}] ({:?}).values", overlay.label),
+            overlay.values,
+            n,
+        )?;
+    }
+    Ok(())
+}
+
+fn check_values(name: &str, values: &[f64], n: usize) -> Result<(), PlotError> {
+    if values.len() != n {
+        return Err(PlotError::invalid(
+            format!("{name}.len()"),
+            values.len(),
+            format!("nx*ny = {n}"),
+        ));
+    }
+    if let Some(k) = values.iter().position(|v| !v.is_finite()) {
+        return Err(PlotError::invalid(
+            format!("{name}[{k}]"),
+            values[k],
+            "a finite number",
+        ));
+    }
+    Ok(())
+}
+
+fn validate_series(series: &[Series]) -> Result<(), PlotError> {
+    if series.is_empty() {
+        return Err(PlotError::invalid(
+            "series",
+            "an empty list",
+            "at least one series",
+        ));
+    }
+    for (s, item) in series.iter().enumerate() {
+        if item.points.is_empty() {
+            return Err(PlotError::invalid(
+                format!("series[{s}] ({:?}).points", item.label),
+                "no points",
+                "at least one point",
+            ));
+        }
+        if let Some(k) = item
+            .points
+            .iter()
+            .position(|(x, y)| !x.is_finite() || !y.is_finite())
+        {
+            let (x, y) = item.points[k];
+            return Err(PlotError::invalid(
+                format!("series[{s}] ({:?}).points[{k}]", item.label),
+                format!("({x}, {y})"),
+                "finite coordinates",
+            ));
+        }
+    }
+    Ok(())
+}
