@@ -23,7 +23,8 @@ pub enum Command {
     Hertz(HertzArgs),
     /// Solve a case described in a TOML file (schema: docs/case-schema.md).
     Solve(SolveArgs),
-    /// Run the built-in demonstration cases and print a summary table.
+    /// Run the roller-end/rib study (seed 000 Table 1, 100-400 N) and write a report
+    /// (Markdown, pressure maps, CSV) into a folder.
     Demo(DemoArgs),
 }
 
@@ -119,11 +120,20 @@ pub struct SolveArgs {
     /// Print one JSON document instead of the table.
     #[arg(long)]
     pub json: bool,
+    /// PimP cases: write the pressure field to this CSV file (x_mm, y_mm, pressure_mpa).
+    #[arg(long, value_name = "FILE.csv")]
+    pub csv: Option<PathBuf>,
+    /// PimP cases: draw the pressure map with the contact outline (.png or .svg).
+    #[arg(long, value_name = "FILE.png|svg")]
+    pub map: Option<PathBuf>,
 }
 
 #[derive(Debug, Args)]
 pub struct DemoArgs {
-    /// Print the demo results as a JSON array instead of the table.
+    /// Folder for the report (created if missing; files in it are overwritten).
+    #[arg(long, value_name = "DIR", default_value = "kontakt-demo")]
+    pub out: PathBuf,
+    /// Print the results as JSON instead of the summary table.
     #[arg(long)]
     pub json: bool,
 }

@@ -248,9 +248,105 @@ fn human_output_snapshots() {
         "ball_inner_race_table",
         String::from_utf8(out.stdout).unwrap()
     );
-    let out = kontakt().arg("demo").output().unwrap();
-    assert!(out.status.success());
-    insta::assert_snapshot!("demo_table", String::from_utf8(out.stdout).unwrap());
+}
+
+/// The README's main command: the roller-end/rib study writes its report folder.
+#[test]
+fn demo_writes_the_report() {
+    let dir = tempdir().join("demo");
+    let out = kontakt()
+        .args(["demo", "--out", dir.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    for name in ["sphere-cone-29", "torus-torus-28"] {
+        assert!(stdout.contains(name), "{stdout}");
+    }
+    assert!(stdout.contains("Report written to"));
+    let md = std::fs::read_to_string(dir.join("report.md")).unwrap();
+    assert!(md.contains("torus-cone-14_400N.png"));
+    for file in [
+        "results.csv",
+        "max_pressure.png",
+        "contact_area.png",
+        "torus-torus-14_400N.png",
+    ] {
+        let len = std::fs::metadata(dir.join(file)).unwrap().len();
+        assert!(len > 1000, "{file}: {len} bytes");
+    }
+    // 8 pairings x 2 modes x 7 loads + header.
+    let csv = std::fs::read_to_string(dir.join("results.csv")).unwrap();
+    assert_eq!(csv.lines().count(), 8 * 2 * 7 + 1);
+}
+
+/// A PimP case: JSON keys, CSV of the field, SVG map; and its bad-input paths.
+#[test]
+fn pimp_case_outputs_and_errors() {
+    let dir = tempdir().join("pimp");
+    std::fs::create_dir_all(&dir).unwrap();
+    let case = examples().join("roller_rib_torus_torus.toml");
+    let (csv, map) = (dir.join("p.csv"), dir.join("p.svg"));
+    let v = json(&[
+        "solve",
+        case.to_str().unwrap(),
+        "--csv",
+        csv.to_str().unwrap(),
+        "--map",
+        map.to_str().unwrap(),
+    ]);
+    assert_eq!(v["method"], "pimp");
+    for key in [
+        "patches",
+        "grid",
+        "iterations",
+        "max_pressure_mpa",
+        "contact_area_mm2",
+        "approach_mm",
+        "semi_axes_mm",
+    ] {
+        assert!(!v[key].is_null(), "missing {key}");
+    }
+    assert_eq!(v["patches"], 1);
+    let rows = std::fs::read_to_string(&csv).unwrap().lines().count();
+    assert_eq!(rows, 64 * 64 + 1);
+    assert!(
+        std::fs::read_to_string(&map)
+            .unwrap()
+            .contains("pressure [MPa]")
+    );
+    // Bad: unknown pairing, map with a bad extension, Hertz case with --map.
+    let bad_case = dir.join("bad.toml");
+    std::fs::write(
+        &bad_case,
+        std::fs::read_to_string(&case)
+            .unwrap()
+            .replace("torus-torus-14", "torus-torus-99"),
+    )
+    .unwrap();
+    let e = bad(&["solve", bad_case.to_str().unwrap()]);
+    assert!(
+        e.contains("geometry.pairing") && e.contains("torus-torus-14"),
+        "{e}"
+    );
+    let e = bad(&[
+        "solve",
+        case.to_str().unwrap(),
+        "--map",
+        dir.join("p.gif").to_str().unwrap(),
+    ]);
+    assert!(e.contains("gif") || e.contains("extension"), "{e}");
+    let e = bad(&[
+        "solve",
+        examples().join("ball_on_flat.toml").to_str().unwrap(),
+        "--map",
+        map.to_str().unwrap(),
+    ]);
+    assert!(e.contains("pimp"), "{e}");
 }
 
 #[test]

@@ -77,6 +77,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod bearing;
 pub mod error;
 pub mod geometry;
 pub mod hertz;

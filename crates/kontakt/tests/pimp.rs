@@ -210,11 +210,10 @@ fn two_zone_geometry_gives_two_patches() {
     .unwrap();
     let s = p.solve_force(&gap, 400.0).unwrap();
     assert_eq!(s.zone.patches, 2);
-    // Equal valleys should share the force equally (centre of pressure at y = -y0). The
-    // corrected law's anisotropy factor is taken at the contact point, so the far valley
-    // is scaled by B'/B and carries a little more (docs/pimp.md): 40-60 %.
+    // Equal valleys share the force equally: the centre of pressure lies at y = -y0.
     let share = -s.zone.centroid[1] / (2.0 * y0);
-    assert!((0.4..0.6).contains(&share), "far valley carries {share}");
+    // (to the grid: the two valleys sit differently on the cells).
+    assert!((share - 0.5).abs() < 1e-3, "far valley carries {share}");
 }
 
 /// A curved ("banana") zone: the gap's valley follows y = c x², so the zone's centre

@@ -7,41 +7,15 @@ use kontakt::hertz::subsurface::YieldCriterion;
 use kontakt::io::case::{
     BodySpec, CaseFile, ContactKind, ContactSpec, LoadSpec, Method, YieldSpec,
 };
-use kontakt::io::run_case;
+use kontakt::io::{Case, run_case, run_pimp_case};
+
+pub mod pimp;
 use std::io::{Read, Write};
 
 /// Bad input detected by the CLI itself (unreadable file).
 #[derive(Debug, thiserror::Error)]
 #[error("{0}")]
 pub struct InputError(pub String);
-
-/// The built-in demonstration cases: the files in `examples/`, compiled in.
-pub const DEMO_CASES: [(&str, &str); 6] = [
-    (
-        "ball_on_flat.toml",
-        include_str!("../../../../examples/ball_on_flat.toml"),
-    ),
-    (
-        "ball_inner_race.toml",
-        include_str!("../../../../examples/ball_inner_race.toml"),
-    ),
-    (
-        "ball_outer_race.toml",
-        include_str!("../../../../examples/ball_outer_race.toml"),
-    ),
-    (
-        "ceramic_ball.toml",
-        include_str!("../../../../examples/ceramic_ball.toml"),
-    ),
-    (
-        "crossed_cylinders.toml",
-        include_str!("../../../../examples/crossed_cylinders.toml"),
-    ),
-    (
-        "roller_line.toml",
-        include_str!("../../../../examples/roller_line.toml"),
-    ),
-];
 
 pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
     match &cli.command {
@@ -63,18 +37,36 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                     .map_err(|e| InputError(format!("cannot read case file {label}: {e}")))?;
                 (label, text)
             };
-            let case = CaseFile::from_toml_str(&text).with_context(|| label.clone())?;
-            let report = run_case(&case).with_context(|| label.clone())?;
-            output::print_report(out, &report, args.json)
-        }
-        Command::Demo(args) => {
-            let mut reports = Vec::new();
-            for (file, text) in DEMO_CASES {
-                let case = CaseFile::from_toml_str(text).with_context(|| file.to_string())?;
-                reports.push(run_case(&case).with_context(|| file.to_string())?);
+            match Case::from_toml_str(&text).with_context(|| label.clone())? {
+                Case::Hertz(case) => {
+                    if args.csv.is_some() || args.map.is_some() {
+                        return Err(InputError(format!(
+                            "{label}: --csv and --map need a pressure field: use method = \"pimp\""
+                        ))
+                        .into());
+                    }
+                    let report = run_case(&case).with_context(|| label.clone())?;
+                    output::print_report(out, &report, args.json)
+                }
+                Case::Pimp(case) => {
+                    let outcome = run_pimp_case(&case).with_context(|| label.clone())?;
+                    if let Some(path) = &args.csv {
+                        pimp::write_csv(path, &outcome.solution)?;
+                    }
+                    if let Some(path) = &args.map {
+                        let title = format!(
+                            "{}, {:.0} N, PimP {}",
+                            case.name.as_deref().unwrap_or(&outcome.report.geometry),
+                            outcome.report.force_n,
+                            outcome.report.mode.as_str()
+                        );
+                        pimp::write_map(path, &outcome.solution, &title)?;
+                    }
+                    pimp::print_report(out, &outcome.report, args.json)
+                }
             }
-            output::print_demo(out, &reports, args.json)
         }
+        Command::Demo(args) => pimp::demo(&args.out, out, args.json),
     }
 }
 

@@ -174,19 +174,53 @@ impl CaseFile {
     /// [`Error::InvalidInput`] with field `case` and the parser's message (with line and
     /// column) for malformed TOML, unknown keys or wrong types.
     pub fn from_toml_str(text: &str) -> Result<Self> {
-        toml::from_str(text).map_err(|e| {
-            let location = e
-                .span()
-                .map(|s| {
-                    let line = text[..s.start.min(text.len())].matches('\n').count() + 1;
-                    format!(" at line {line}")
-                })
-                .unwrap_or_default();
-            Error::invalid(
-                "case",
-                format!("TOML{location}: {}", e.message().trim()),
-                "a case file following docs/case-schema.md",
-            )
-        })
+        parse_toml(text)
+    }
+}
+
+/// Parse TOML into `T`, turning parser errors into [`Error::InvalidInput`] with field
+/// `case`, the line number and the parser's message.
+pub(crate) fn parse_toml<T: serde::de::DeserializeOwned>(text: &str) -> Result<T> {
+    toml::from_str(text).map_err(|e| {
+        let location = e
+            .span()
+            .map(|s| {
+                let line = text[..s.start.min(text.len())].matches('\n').count() + 1;
+                format!(" at line {line}")
+            })
+            .unwrap_or_default();
+        Error::invalid(
+            "case",
+            format!("TOML{location}: {}", e.message().trim()),
+            "a case file following docs/case-schema.md",
+        )
+    })
+}
+
+/// A case of any method: the `method` key decides the schema.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Case {
+    /// `method = "hertz"` (or absent).
+    Hertz(CaseFile),
+    /// `method = "pimp"`.
+    Pimp(super::pimp_case::PimpCase),
+}
+
+impl Case {
+    /// Parse a case of any method from TOML text.
+    ///
+    /// # Errors
+    /// As [`CaseFile::from_toml_str`]; an unknown `method` names the valid ones.
+    pub fn from_toml_str(text: &str) -> Result<Self> {
+        let table: toml::Table = parse_toml(text)?;
+        match table
+            .get("method")
+            .and_then(|m| m.as_str())
+            .unwrap_or("hertz")
+        {
+            "hertz" => Ok(Case::Hertz(parse_toml(text)?)),
+            "pimp" => Ok(Case::Pimp(parse_toml(text)?)),
+            other => Err(Error::invalid("method", other, "\"hertz\" or \"pimp\"")),
+        }
     }
 }

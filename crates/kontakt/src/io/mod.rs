@@ -5,7 +5,9 @@
 //! `docs/case-schema.md` and shown by the files in `examples/`.
 
 pub mod case;
+pub mod pimp_case;
 pub mod report;
 
-pub use case::CaseFile;
+pub use case::{Case, CaseFile};
+pub use pimp_case::{PimpCase, PimpOutcome, PimpReport, run_pimp_case};
 pub use report::{ContactReport, run_case};

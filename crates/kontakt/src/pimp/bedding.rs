@@ -9,7 +9,7 @@
 //!   `Y = 4 / (pi b)` taken from the half-extents `a`, `b` of the cut footprint
 //!   `{g < d}` along the principal axes, and `d` the rigid penetration (the approach).
 //! - [`Mode::Corrected`]: the square-root bedding `p = c E* sqrt(A' u)`,
-//!   `u = kappa delta - g (A' x'² + B' y'²) / (A x'² + B y'²)`, whose constants make force-approach,
+//!   `u = kappa delta - g - (A' - A) x'²`, whose constants make force-approach,
 //!   semi-axes and maximum pressure exact for every elliptical Hertz contact.
 
 use crate::error::Result;
@@ -50,17 +50,14 @@ impl Mode {
 pub(crate) enum Bedding {
     /// `p = E* (2/pi) (1/a + 1/b) u`.
     Published { e_star: Megapascal },
-    /// `p = stiffness sqrt(kappa delta - g̃)`, `g̃ = g (A' x'² + B' y'²) / (A x'² + B y'²)`.
+    /// `p = stiffness sqrt(kappa delta - g̃)`, `g̃ = g + (A' - A) x'²`.
     Corrected {
         /// `c_p E* sqrt(A')` \[MPa / mm^0.5\].
         stiffness: f64,
         /// Cut fraction `h / delta` (1/2 for the circle).
         kappa: f64,
-        /// Corrected quadratic form `[A', B']` \[1/mm\]: same trace as `[A, B]`, contour
-        /// axis ratio equal to the Hertz ellipse's.
-        corrected: [f64; 2],
-        /// The gap's own quadratic form `[A, B]` \[1/mm\].
-        original: [f64; 2],
+        /// `A' - A` \[1/mm\] (<= 0): the correction of the gap along the major axis.
+        d_a: f64,
     },
 }
 
@@ -84,17 +81,16 @@ impl Bedding {
                 let unit = hertz.solve_force(1.0)?;
                 let [a, _] = unit.semi_axes;
                 let k = hertz.axis_ratio();
-                // Corrected quadratic form: same trace, contour ratio = Hertz ratio.
-                let sum = curvature.a_coef + curvature.b_coef;
-                let a_p = sum * k * k / (1.0 + k * k);
-                let b_p = sum / (1.0 + k * k);
+                // Corrected quadratic form: B' = B, A' = B (b/a)² so that its contours
+                // have the Hertz axis ratio; only the direction of the major axis changes.
+                let b_p = curvature.b_coef;
+                let a_p = b_p * k * k;
                 let kappa = a_p * a * a / unit.approach;
                 let c_p = unit.max_pressure / (e_star * a_p * a);
                 Bedding::Corrected {
                     stiffness: c_p * e_star * a_p.sqrt(),
                     kappa,
-                    corrected: [a_p, b_p],
-                    original: [curvature.a_coef, curvature.b_coef],
+                    d_a: a_p - curvature.a_coef,
                 }
             }
         })
@@ -136,6 +132,9 @@ pub struct SampledGap {
     /// `g` (published) or the corrected `g̃` (corrected) per cell \[mm\].
     pub(crate) effective: Vec<f64>,
     pub(crate) bedding: Bedding,
+    /// Start value of the equilibrium iteration at 1 N \[mm\]: the Hertz approach of the
+    /// contact point's curvature (times 0.6 for the published law); scales as F^(2/3).
+    pub(crate) start_unit: Millimetre,
 }
 
 /// Footprint statistics of one evaluation.

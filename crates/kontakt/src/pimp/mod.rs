@@ -39,10 +39,12 @@
 
 mod bedding;
 mod gap;
+mod surfaces;
 mod zone;
 
 pub use bedding::{Mode, SampledGap};
 pub use gap::{FnGap, GapSource, QuadraticGap};
+pub use surfaces::SurfacePairGap;
 pub use zone::ContactZone;
 
 use crate::error::{Error, Result, positive_as};
@@ -205,22 +207,23 @@ impl Pimp {
     pub fn sample(&self, source: &dyn GapSource, grid: Grid2) -> Result<SampledGap> {
         let curvature = source.curvature();
         let bedding = Bedding::new(self.options.mode, curvature, self.body1, self.body2)?;
+        let hertz = HertzPointContact::new(
+            PointGeometry::from_curvature(curvature),
+            self.body1,
+            self.body2,
+        )?;
+        let start_unit = hertz.approach_from_force(1.0)?
+            * match self.options.mode {
+                Mode::Corrected => 1.0,
+                Mode::Published => 0.6,
+            };
         let mut effective = vec![0.0; grid.len()];
         source.sample(&grid, curvature.orientation, &mut effective)?;
-        if let Bedding::Corrected {
-            corrected: [a_p, b_p],
-            original: [a, b],
-            ..
-        } = bedding
-        {
-            // Direction-dependent rescaling of the gap (degree 0 in x, y): exact for the
-            // quadratic part, and zeros of g (other contact zones) stay where they are.
-            for (k, (x, y)) in grid.points().enumerate() {
-                let (xx, yy) = (x * x, y * y);
-                let q = a * xx + b * yy;
-                if q > 0.0 {
-                    effective[k] *= (a_p * xx + b_p * yy) / q;
-                }
+        if let Bedding::Corrected { d_a, .. } = bedding {
+            // Along the major axis only: exact on the quadratic part, and a zone displaced
+            // across the major axis is left untouched (docs/pimp.md §3).
+            for (k, (x, _)) in grid.points().enumerate() {
+                effective[k] += d_a * x * x;
             }
         }
         Ok(SampledGap {
@@ -228,6 +231,7 @@ impl Pimp {
             rotation: curvature.orientation,
             effective,
             bedding,
+            start_unit,
         })
     }
 
@@ -404,6 +408,25 @@ impl Pimp {
                 half[0], half[1]
             ),
         })
+    }
+}
+
+impl SampledGap {
+    /// The approach \[mm\] at which this sampled gap carries `force` \[N\] (> 0), and the
+    /// number of force evaluations it took; the grid is not adapted (the multi-body
+    /// path: sample once per pose, then solve for forces).
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] for a non-positive force, [`Error::NotConverged`] when the
+    /// force cannot be reached within `options.max_iterations` evaluations.
+    pub fn approach_for_force(
+        &self,
+        force: Newton,
+        options: &PimpOptions,
+    ) -> Result<(Millimetre, usize)> {
+        positive_as("force", force, "a finite force > 0 N")?;
+        let start = self.start_unit * force.cbrt().powi(2);
+        equilibrium(self, force, start, options)
     }
 }
 

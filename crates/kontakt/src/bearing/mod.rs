@@ -1,0 +1,12 @@
+//! Bearing level: the roller end face against the rib of a tapered roller bearing, built
+//! from the bearing's parameters (seed 000 §2.1, Figure 2b and Table 1).
+//!
+//! Units: mm, N, MPa; angles in degrees at this interface (the case-file convention).
+//! The construction and the reading of Table 1 are in `docs/bearing.md`.
+
+pub mod roller_rib;
+
+pub use roller_rib::{
+    CONTACT_HEIGHT, FaceShape, RibShape, RollerRib, RollerRibSpec, STUDY_FORCES, TABLE1,
+    TaperedRollerBearing,
+};

@@ -1,0 +1,593 @@
+//! PimP cases (`method = "pimp"`, `schema_version = 1`) and their JSON report.
+//!
+//! ```toml
+//! name = "torus/torus, r_R = 14 mm"
+//! method = "pimp"
+//!
+//! [geometry]                 # one of three kinds
+//! kind = "roller_rib"        # built-in pairing of seed 000 Table 1 ...
+//! pairing = "torus-torus-14"
+//! # ... or explicit: face = { shape = "torus", radius_mm = 14.0, eccentricity_mm = 2.0 },
+//! #                  rib = { shape = "torus", radius_mm = 30.0 }, contact_height_mm = 2.75,
+//! #                  bearing = { bore_mm = 60.0, ... }
+//! # kind = "hertz": radii1_mm = [10, 10], radii2_mm = [inf, inf], angle_deg = 0
+//! # kind = "surfaces": [geometry.body1] / [geometry.body2] placed surfaces (see below)
+//!
+//! [pimp]                     # optional
+//! mode = "corrected"         # or "published"
+//! cells = [64, 64]
+//! # extent_mm = [1.0, 0.5]   # fixed half-extents; adaptive when left out
+//!
+//! [body1]
+//! e_mpa = 210000.0
+//! nu = 0.3
+//! [body2]
+//! e_mpa = 210000.0
+//! nu = 0.3
+//!
+//! [load]
+//! force_n = 250.0            # or approach_mm; for kind = "surfaces" leave both out to
+//!                            # take the approach from the poses (multi-body path)
+//! ```
+//!
+//! A placed surface (`kind = "surfaces"`):
+//! ```toml
+//! [geometry.body1]
+//! shape = "sphere"           # plane | sphere | cone | torus | crowned
+//! radius_mm = 10.0           # sphere; torus: major_mm, minor_mm; cone: half_angle_deg;
+//!                            # crowned: radius_mm, crown_radius_mm, half_length_mm
+//! material = "inside"        # or "outside" (a cup, a groove)
+//! origin_mm = [0.0, 0.0, 10.0]
+//! axis = [0.0, 0.0, 1.0]     # the surface's axis (local z) in the world
+//! ```
+
+use crate::bearing::{FaceShape, RibShape, RollerRib, RollerRibSpec, TaperedRollerBearing};
+use crate::error::{Error, Result};
+use crate::geometry::RelativeCurvature;
+use crate::geometry::surface::{Material, PlacedSurface, Profile, Surface};
+use crate::hertz::{HertzPointContact, PointGeometry};
+use crate::material::ElasticMaterial;
+use crate::pimp::{GapSource, Mode, Pimp, PimpOptions, PimpSolution, QuadraticGap, SurfacePairGap};
+use nalgebra::{Isometry3, Point3, Translation3, Unit, UnitQuaternion, Vector3};
+use serde::{Deserialize, Serialize};
+
+/// A PimP case, as read from TOML.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PimpCase {
+    /// Optional label echoed in the report.
+    #[serde(default)]
+    pub name: Option<String>,
+    /// Must be `"pimp"`.
+    pub method: String,
+    /// The two surfaces.
+    pub geometry: GeometrySpec,
+    /// Solver options.
+    #[serde(default)]
+    pub pimp: PimpSpec,
+    /// Body 1 material (the roller for `roller_rib`).
+    pub body1: MaterialSpec,
+    /// Body 2 material (the ring for `roller_rib`).
+    pub body2: MaterialSpec,
+    /// Load control.
+    #[serde(default)]
+    pub load: PimpLoad,
+}
+
+/// `[body1]` / `[body2]`: the elastic constants.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MaterialSpec {
+    /// Young's modulus \[MPa\], > 0.
+    pub e_mpa: f64,
+    /// Poisson's ratio, -1 < nu <= 0.5.
+    pub nu: f64,
+}
+
+/// `[load]`: a force, an approach, or neither (the approach of the poses).
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PimpLoad {
+    /// Normal force \[N\].
+    #[serde(default)]
+    pub force_n: Option<f64>,
+    /// Rigid approach from first touch \[mm\].
+    #[serde(default)]
+    pub approach_mm: Option<f64>,
+}
+
+/// `[pimp]`: solver options.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct PimpSpec {
+    /// Bedding law.
+    pub mode: Mode,
+    /// Grid cells `[nx, ny]`.
+    pub cells: [usize; 2],
+    /// Fixed half-extents \[mm\]; adaptive when absent.
+    pub extent_mm: Option<[f64; 2]>,
+}
+
+impl Default for PimpSpec {
+    fn default() -> Self {
+        let o = PimpOptions::default();
+        PimpSpec {
+            mode: o.mode,
+            cells: o.cells,
+            extent_mm: o.extent,
+        }
+    }
+}
+
+/// `[geometry]`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+pub enum GeometrySpec {
+    /// Roller end face against the rib (seed 000).
+    RollerRib {
+        /// A built-in pairing of Table 1 (then leave out face and rib).
+        #[serde(default)]
+        pairing: Option<String>,
+        /// Roller face.
+        #[serde(default)]
+        face: Option<FaceShape>,
+        /// Rib.
+        #[serde(default)]
+        rib: Option<RibShape>,
+        /// Contact height \[mm\].
+        #[serde(default)]
+        contact_height_mm: Option<f64>,
+        /// Bearing data (default: the 60 mm bore bearing of docs/bearing.md).
+        #[serde(default)]
+        bearing: Option<TaperedRollerBearing>,
+    },
+    /// The Hertz gap of two bodies given by principal radii (convex > 0, inf flat).
+    Hertz {
+        /// Body 1 principal radii \[mm\].
+        radii1_mm: [f64; 2],
+        /// Body 2 principal radii \[mm\].
+        radii2_mm: [f64; 2],
+        /// Angle between the principal planes \[deg\].
+        #[serde(default)]
+        angle_deg: f64,
+    },
+    /// Two placed analytic surfaces.
+    Surfaces {
+        /// Body 1.
+        body1: SurfaceSpec,
+        /// Body 2.
+        body2: SurfaceSpec,
+        /// Optional start point for the contact search \[mm\].
+        #[serde(default)]
+        guess_mm: Option<[f64; 3]>,
+    },
+}
+
+/// A placed analytic surface in a case file.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SurfaceSpec {
+    /// `plane`, `sphere`, `cone`, `torus` or `crowned`.
+    pub shape: String,
+    /// Sphere radius; crowned: cylinder radius \[mm\].
+    #[serde(default)]
+    pub radius_mm: Option<f64>,
+    /// Cone half-angle \[deg\].
+    #[serde(default)]
+    pub half_angle_deg: Option<f64>,
+    /// Torus centre-circle radius \[mm\].
+    #[serde(default)]
+    pub major_mm: Option<f64>,
+    /// Torus tube radius \[mm\].
+    #[serde(default)]
+    pub minor_mm: Option<f64>,
+    /// Crowned roller: crown radius \[mm\].
+    #[serde(default)]
+    pub crown_radius_mm: Option<f64>,
+    /// Crowned roller: half length \[mm\].
+    #[serde(default)]
+    pub half_length_mm: Option<f64>,
+    /// Side of the material (default inside).
+    #[serde(default = "inside")]
+    pub material: Material,
+    /// Origin of the surface's local frame in the world \[mm\].
+    #[serde(default)]
+    pub origin_mm: [f64; 3],
+    /// The local z axis (axis of revolution, plane normal) in the world.
+    #[serde(default = "z_axis")]
+    pub axis: [f64; 3],
+}
+
+fn inside() -> Material {
+    Material::Inside
+}
+fn z_axis() -> [f64; 3] {
+    [0.0, 0.0, 1.0]
+}
+
+fn need(field: String, v: Option<f64>, shape: &str) -> Result<f64> {
+    v.ok_or_else(|| Error::invalid(field, "missing", format!("a value for shape = \"{shape}\"")))
+}
+
+impl SurfaceSpec {
+    /// Build the placed surface; `prefix` names it in errors (`geometry.body1`).
+    ///
+    /// # Errors
+    /// A missing or invalid parameter, an unknown shape, or a non-finite/zero axis.
+    pub fn build(&self, prefix: &str) -> Result<PlacedSurface> {
+        let f = |k: &str| format!("{prefix}.{k}");
+        let s = self.shape.as_str();
+        let surface = match s {
+            "plane" => Ok(Surface::plane(self.material)),
+            "sphere" => Surface::sphere(need(f("radius_mm"), self.radius_mm, s)?, self.material),
+            "cone" => Surface::cone(
+                need(f("half_angle_deg"), self.half_angle_deg, s)?.to_radians(),
+                self.material,
+            ),
+            "torus" => Surface::torus(
+                need(f("major_mm"), self.major_mm, s)?,
+                need(f("minor_mm"), self.minor_mm, s)?,
+                self.material,
+            ),
+            "crowned" => Surface::revolution(
+                Profile::Crowned {
+                    radius: need(f("radius_mm"), self.radius_mm, s)?,
+                    crown_radius: need(f("crown_radius_mm"), self.crown_radius_mm, s)?,
+                    half_length: need(f("half_length_mm"), self.half_length_mm, s)?,
+                },
+                self.material,
+            ),
+            other => {
+                return Err(Error::invalid(
+                    f("shape"),
+                    other,
+                    "one of plane, sphere, cone, torus, crowned",
+                ));
+            }
+        }
+        .map_err(|e| e.map_field(|k| format!("{prefix}.{k}")))?;
+        let axis = Vector3::from(self.axis);
+        let axis = if axis.iter().all(|c| c.is_finite()) {
+            Unit::try_new(axis, 1e-12)
+        } else {
+            None
+        }
+        .ok_or_else(|| {
+            Error::invalid(
+                f("axis"),
+                format!("{:?}", self.axis),
+                "a finite, non-zero direction",
+            )
+        })?;
+        if !self.origin_mm.iter().all(|c| c.is_finite()) {
+            return Err(Error::invalid(
+                f("origin_mm"),
+                format!("{:?}", self.origin_mm),
+                "finite coordinates in mm",
+            ));
+        }
+        let rotation =
+            UnitQuaternion::rotation_between(&Vector3::z(), &axis).unwrap_or_else(|| {
+                UnitQuaternion::from_axis_angle(&Vector3::x_axis(), std::f64::consts::PI)
+            });
+        let pose =
+            Isometry3::from_parts(Translation3::from(Vector3::from(self.origin_mm)), rotation);
+        PlacedSurface::new(surface, pose).map_err(|e| e.map_field(|k| format!("{prefix}.{k}")))
+    }
+}
+
+/// The JSON record of a PimP case: the Hertz report's keys where they apply, plus the
+/// zone shape, the grid and the iteration counts. Units in every key.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PimpReport {
+    /// Version of kontakt.
+    pub kontakt_version: &'static str,
+    /// Schema version (shared with the Hertz report).
+    pub schema_version: u32,
+    /// The case's name.
+    pub name: Option<String>,
+    /// `"pimp"`.
+    pub method: &'static str,
+    /// `"published"` or `"corrected"`.
+    pub mode: Mode,
+    /// What was solved, e.g. `roller_rib torus-torus-14`.
+    pub geometry: String,
+    /// Contact modulus E* \[MPa\].
+    pub e_star_mpa: f64,
+    /// Relative curvature [A, B] at the contact point [1/mm].
+    pub relative_curvature_per_mm: [f64; 2],
+    /// Half-extents of the zone along the grid axes \[mm\].
+    pub semi_axes_mm: [f64; 2],
+    /// Ratio of the half-extents (y / x).
+    pub axis_ratio: f64,
+    /// Angle from body 1's first principal direction to the grid's x axis \[deg\].
+    pub orientation_deg: f64,
+    /// Normal force \[N\].
+    pub force_n: f64,
+    /// Rigid approach from first touch \[mm\].
+    pub approach_mm: f64,
+    /// Largest pressure \[MPa\].
+    pub max_pressure_mpa: f64,
+    /// Mean pressure \[MPa\].
+    pub mean_pressure_mpa: f64,
+    /// Contact area \[mm²\].
+    pub contact_area_mm2: f64,
+    /// Number of separate contact patches.
+    pub patches: usize,
+    /// Centre of pressure in the grid frame \[mm\].
+    pub centroid_mm: [f64; 2],
+    /// Zone extents `[[x_min, x_max], [y_min, y_max]]` \[mm\].
+    pub extents_mm: [[f64; 2]; 2],
+    /// Curvature of the zone's centre line [1/mm] (null: fewer than 5 columns).
+    pub centre_line_curvature_per_mm: Option<f64>,
+    /// The grid.
+    pub grid: GridEcho,
+    /// Force evaluations of the equilibrium iteration.
+    pub iterations: usize,
+    /// Resizes of the adaptive grid.
+    pub grid_rounds: usize,
+    /// Separation of the given poses \[mm\] (surfaces only; < 0: interpenetration).
+    pub separation_mm: Option<f64>,
+    /// Rib angle alpha (roller/rib only) \[deg\].
+    pub rib_angle_deg: Option<f64>,
+    /// The Hertz solution for the curvature at the contact point, same load.
+    pub hertz: Option<HertzEcho>,
+}
+
+/// The grid of a PimP result.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct GridEcho {
+    /// Cells along x and y.
+    pub cells: [usize; 2],
+    /// Cell size \[mm\].
+    pub cell_mm: [f64; 2],
+    /// x range \[mm\].
+    pub x_range_mm: [f64; 2],
+    /// y range \[mm\].
+    pub y_range_mm: [f64; 2],
+}
+
+/// Hertz values for comparison.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct HertzEcho {
+    /// p0 \[MPa\].
+    pub max_pressure_mpa: f64,
+    /// pi a b \[mm²\].
+    pub contact_area_mm2: f64,
+    /// Approach \[mm\].
+    pub approach_mm: f64,
+    /// [a, b] \[mm\].
+    pub semi_axes_mm: [f64; 2],
+}
+
+/// A solved PimP case: the report and the full solution (pressure field for CSV/plots).
+#[derive(Debug, Clone, PartialEq)]
+pub struct PimpOutcome {
+    /// The JSON record.
+    pub report: PimpReport,
+    /// The solution with its pressure field.
+    pub solution: PimpSolution,
+}
+
+fn material(m: &MaterialSpec, prefix: &str) -> Result<ElasticMaterial> {
+    ElasticMaterial::new(m.e_mpa, m.nu).map_err(|e| {
+        e.map_field(|f| {
+            let key = match f {
+                "youngs_modulus" => "e_mpa",
+                "poisson_ratio" => "nu",
+                other => other,
+            };
+            format!("{prefix}.{key}")
+        })
+    })
+}
+
+/// Build a roller/rib pair from a `[geometry]` table of kind `roller_rib`.
+///
+/// # Errors
+/// An unknown pairing, a pairing combined with explicit shapes, or invalid dimensions.
+pub fn roller_rib_from_spec(geometry: &GeometrySpec) -> Result<Option<(String, RollerRib)>> {
+    let GeometrySpec::RollerRib {
+        pairing,
+        face,
+        rib,
+        contact_height_mm,
+        bearing,
+    } = geometry
+    else {
+        return Ok(None);
+    };
+    let (label, mut spec) = match (pairing, face, rib) {
+        (Some(p), None, None) => (
+            p.clone(),
+            RollerRibSpec::builtin(p).map_err(|e| e.map_field(|_| "geometry.pairing".into()))?,
+        ),
+        (None, Some(face), Some(rib)) => (
+            "custom".to_string(),
+            RollerRibSpec {
+                bearing: TaperedRollerBearing::default(),
+                face: *face,
+                rib: *rib,
+                contact_height: crate::bearing::CONTACT_HEIGHT,
+            },
+        ),
+        _ => {
+            return Err(Error::invalid(
+                "geometry.pairing",
+                "given together with face/rib, or face/rib incomplete",
+                "either `pairing` or both `face` and `rib`",
+            ));
+        }
+    };
+    if let Some(h) = contact_height_mm {
+        spec.contact_height = *h;
+    }
+    if let Some(b) = bearing {
+        spec.bearing = *b;
+    }
+    let pair = RollerRib::new(spec).map_err(|e| e.map_field(|f| format!("geometry.{f}")))?;
+    Ok(Some((label, pair)))
+}
+
+/// Solve a PimP case.
+///
+/// # Errors
+/// Invalid input (named by its case-file key), bodies that do not touch under pose
+/// control (the error states the separation), grid and convergence failures.
+pub fn run_pimp_case(case: &PimpCase) -> Result<PimpOutcome> {
+    if case.method != "pimp" {
+        return Err(Error::invalid(
+            "method",
+            &case.method,
+            "\"pimp\" for this schema",
+        ));
+    }
+    let m1 = material(&case.body1, "body1")?;
+    let m2 = material(&case.body2, "body2")?;
+    let options = PimpOptions {
+        mode: case.pimp.mode,
+        cells: case.pimp.cells,
+        extent: case.pimp.extent_mm,
+        ..PimpOptions::default()
+    };
+    let pimp = Pimp::new(m1, m2, options).map_err(|e| {
+        e.map_field(|f| match f {
+            "extent[0]" => "pimp.extent_mm[0]".into(),
+            "extent[1]" => "pimp.extent_mm[1]".into(),
+            other => format!("pimp.{other}"),
+        })
+    })?;
+    let (label, source, separation, rib_angle): (
+        String,
+        Box<dyn GapSource>,
+        Option<f64>,
+        Option<f64>,
+    ) = match &case.geometry {
+        g @ GeometrySpec::RollerRib { .. } => {
+            let (label, pair) = roller_rib_from_spec(g)?.ok_or_else(|| {
+                Error::invalid("geometry.kind", "roller_rib", "a roller/rib geometry")
+            })?;
+            let angle = pair.rib_angle_deg;
+            let gap = SurfacePairGap::new(pair.face, pair.rib, pair.contact)?;
+            (
+                format!("roller_rib {label}"),
+                Box::new(gap),
+                None,
+                Some(angle),
+            )
+        }
+        GeometrySpec::Hertz {
+            radii1_mm,
+            radii2_mm,
+            angle_deg,
+        } => {
+            let k = RelativeCurvature::from_radii(*radii1_mm, *radii2_mm, angle_deg.to_radians())
+                .map_err(|e| {
+                e.map_field(|f| {
+                    f.replace("body1.radii", "geometry.radii1_mm")
+                        .replace("body2.radii", "geometry.radii2_mm")
+                })
+            })?;
+            (
+                "hertz gap".into(),
+                Box::new(QuadraticGap::new(k)),
+                None,
+                None,
+            )
+        }
+        GeometrySpec::Surfaces {
+            body1,
+            body2,
+            guess_mm,
+        } => {
+            let s1 = body1.build("geometry.body1")?;
+            let s2 = body2.build("geometry.body2")?;
+            let gap = SurfacePairGap::from_poses(s1, s2, guess_mm.map(Point3::from))?;
+            let sep = gap.separation();
+            (
+                format!("surfaces {} / {}", body1.shape, body2.shape),
+                Box::new(gap),
+                Some(sep),
+                None,
+            )
+        }
+    };
+    let map_load = |e: Error| {
+        e.map_field(|f| match f {
+            "force" => "load.force_n".into(),
+            "approach" => "load.approach_mm".into(),
+            "cells" => "pimp.cells".into(),
+            "extent" => "pimp.extent_mm".into(),
+            other => other.into(),
+        })
+    };
+    let solution = match (case.load.force_n, case.load.approach_mm, separation) {
+        (Some(f), None, _) => pimp.solve_force(source.as_ref(), f).map_err(map_load)?,
+        (None, Some(d), _) => pimp.solve_approach(source.as_ref(), d).map_err(map_load)?,
+        (None, None, Some(sep)) => {
+            if sep >= 0.0 {
+                return Err(Error::Geometry {
+                    field: "geometry".into(),
+                    reason: format!(
+                        "the bodies do not touch: separation = {sep:.6e} mm (give load.force_n or \
+                         load.approach_mm to press them together)"
+                    ),
+                });
+            }
+            pimp.solve_approach(source.as_ref(), -sep)
+                .map_err(map_load)?
+        }
+        _ => {
+            return Err(Error::invalid(
+                "load",
+                "none or both of force_n and approach_mm",
+                "exactly one of force_n or approach_mm (or neither for surfaces placed in contact)",
+            ));
+        }
+    };
+    let k = source.curvature();
+    let hertz = HertzPointContact::new(PointGeometry::from_curvature(k), m1, m2)
+        .and_then(|h| h.solve_force(solution.force))
+        .ok()
+        .map(|h| HertzEcho {
+            max_pressure_mpa: h.max_pressure,
+            contact_area_mm2: h.contact_area,
+            approach_mm: h.approach,
+            semi_axes_mm: h.semi_axes,
+        });
+    let g = solution.grid;
+    let report = PimpReport {
+        kontakt_version: crate::VERSION,
+        schema_version: super::report::SCHEMA_VERSION,
+        name: case.name.clone(),
+        method: "pimp",
+        mode: solution.mode,
+        geometry: label,
+        e_star_mpa: crate::material::effective_modulus(&m1, &m2),
+        relative_curvature_per_mm: [k.a_coef, k.b_coef],
+        semi_axes_mm: solution.semi_axes,
+        axis_ratio: solution.semi_axes[1] / solution.semi_axes[0],
+        orientation_deg: solution.orientation.to_degrees(),
+        force_n: solution.force,
+        approach_mm: solution.approach,
+        max_pressure_mpa: solution.max_pressure,
+        mean_pressure_mpa: solution.mean_pressure,
+        contact_area_mm2: solution.contact_area,
+        patches: solution.zone.patches,
+        centroid_mm: solution.zone.centroid,
+        extents_mm: solution.zone.extents,
+        centre_line_curvature_per_mm: solution.zone.centre_line_curvature,
+        grid: GridEcho {
+            cells: [g.nx(), g.ny()],
+            cell_mm: [g.dx(), g.dy()],
+            x_range_mm: [g.x(0) - 0.5 * g.dx(), g.x(g.nx() - 1) + 0.5 * g.dx()],
+            y_range_mm: [g.y(0) - 0.5 * g.dy(), g.y(g.ny() - 1) + 0.5 * g.dy()],
+        },
+        iterations: solution.iterations,
+        grid_rounds: solution.grid_rounds,
+        separation_mm: separation,
+        rib_angle_deg: rib_angle,
+        hertz,
+    };
+    Ok(PimpOutcome { report, solution })
+}

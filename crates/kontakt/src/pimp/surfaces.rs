@@ -1,0 +1,191 @@
+//! The substitute geometry of two placed analytic surfaces, by ray casting (seed 000
+//! Step 2, eq. 2).
+
+use crate::error::{Error, Result};
+use crate::geometry::contact_point::{ContactPoint, find_contact};
+use crate::geometry::surface::{Curvature, PlacedSurface, Ray};
+use crate::geometry::{Grid2, RelativeCurvature};
+use crate::pimp::gap::{GapSource, check_len};
+use crate::units::Millimetre;
+use nalgebra::{Point3, Unit, Vector3};
+
+/// The gap between two placed surfaces, measured along the common normal from the
+/// contact plane at their contact point.
+///
+/// Frame: origin at the contact point (the mid-point of the two surface points), `z`
+/// along the common normal into body 1, `x` along body 1's first principal direction,
+/// `y = z × x`. `g1` is cast from below (`+z`) onto body 1, `g2` from above (`−z`) onto
+/// body 2; the sample is `g = g1 − g2` minus the pose's separation, so it is zero at the
+/// contact point whether the pose leaves the bodies apart or interpenetrating.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SurfacePairGap {
+    body1: PlacedSurface,
+    body2: PlacedSurface,
+    contact: ContactPoint,
+    ex: Unit<Vector3<f64>>,
+    ey: Unit<Vector3<f64>>,
+    curvature: RelativeCurvature,
+}
+
+impl SurfacePairGap {
+    /// The gap of `body1` and `body2` at their contact point `contact` (from
+    /// [`find_contact`] or an idealised construction such as the roller/rib pair).
+    ///
+    /// # Errors
+    /// [`Error::Geometry`] when the relative curvature at the contact point is not
+    /// positive in every direction (conformal surfaces or a line contact: PimP needs a
+    /// point of first contact).
+    pub fn new(body1: PlacedSurface, body2: PlacedSurface, contact: ContactPoint) -> Result<Self> {
+        let n = contact.normal;
+        let k1 = body1.curvature(&contact.point1);
+        let k2 = body2.curvature(&contact.point2);
+        // x along body 1's first principal direction, projected into the plane.
+        let ex = Unit::try_new(k1.d1.into_inner() - n.into_inner() * k1.d1.dot(&n), 1e-9)
+            .or_else(|| any_perpendicular(&n))
+            .ok_or_else(|| Error::Geometry {
+                field: "normal".into(),
+                reason: "the contact normal is not a unit vector".into(),
+            })?;
+        let ey = Unit::new_normalize(n.cross(&ex));
+        let (mut kxx, mut kyy, mut kxy) = (0.0, 0.0, 0.0);
+        for k in [&k1, &k2] {
+            let (xx, yy, xy) = tensor(k, &ex, &ey);
+            kxx += xx;
+            kyy += yy;
+            kxy += xy;
+        }
+        let curvature = RelativeCurvature::from_tensor(kxx, kyy, kxy).map_err(|e| match e {
+            Error::Geometry { reason, .. } => Error::Geometry {
+                field: "surfaces".into(),
+                reason: format!("at the contact point: {reason}"),
+            },
+            other => other,
+        })?;
+        Ok(SurfacePairGap {
+            body1,
+            body2,
+            contact,
+            ex,
+            ey,
+            curvature,
+        })
+    }
+
+    /// Find the contact point of the two placed surfaces (Step 1) and build the gap.
+    ///
+    /// # Errors
+    /// Those of [`find_contact`] and [`SurfacePairGap::new`].
+    pub fn from_poses(
+        body1: PlacedSurface,
+        body2: PlacedSurface,
+        guess: Option<Point3<f64>>,
+    ) -> Result<Self> {
+        let contact = find_contact(&body1, &body2, guess)?;
+        Self::new(body1, body2, contact)
+    }
+
+    /// The contact point this gap is built on.
+    pub fn contact(&self) -> &ContactPoint {
+        &self.contact
+    }
+
+    /// Separation of the pose \[mm\]: > 0 the bodies are apart by this distance, < 0 they
+    /// interpenetrate by its magnitude (the approach of the multi-body path).
+    pub fn separation(&self) -> Millimetre {
+        self.contact.separation
+    }
+
+    /// The frame axes `[x, y, z]` of the contact plane in world coordinates.
+    pub fn axes(&self) -> [Unit<Vector3<f64>>; 3] {
+        [self.ex, self.ey, self.contact.normal]
+    }
+
+    /// World point of the contact-plane point `(x, y)` \[mm\].
+    pub fn world_point(&self, x: Millimetre, y: Millimetre) -> Point3<f64> {
+        self.contact.point + self.ex.into_inner() * x + self.ey.into_inner() * y
+    }
+}
+
+/// The normal-curvature tensor of one body in the plane frame (ex, ey).
+fn tensor(k: &Curvature, ex: &Unit<Vector3<f64>>, ey: &Unit<Vector3<f64>>) -> (f64, f64, f64) {
+    let (x1, y1) = (k.d1.dot(ex), k.d1.dot(ey));
+    let (x2, y2) = (k.d2.dot(ex), k.d2.dot(ey));
+    (
+        k.k1 * x1 * x1 + k.k2 * x2 * x2,
+        k.k1 * y1 * y1 + k.k2 * y2 * y2,
+        k.k1 * x1 * y1 + k.k2 * x2 * y2,
+    )
+}
+
+fn any_perpendicular(n: &Unit<Vector3<f64>>) -> Option<Unit<Vector3<f64>>> {
+    let trial = if n.x.abs() < 0.9 {
+        Vector3::x()
+    } else {
+        Vector3::y()
+    };
+    Unit::try_new(trial - n.into_inner() * trial.dot(n), 1e-9)
+}
+
+impl GapSource for SurfacePairGap {
+    fn curvature(&self) -> RelativeCurvature {
+        self.curvature
+    }
+
+    fn sample(&self, grid: &Grid2, rotation: f64, out: &mut [f64]) -> Result<()> {
+        check_len(grid, out)?;
+        let (s, c) = rotation.sin_cos();
+        let n = self.contact.normal;
+        let (ex, ey) = (self.ex.into_inner(), self.ey.into_inner());
+        let half = [
+            0.5 * grid.nx() as f64 * grid.dx(),
+            0.5 * grid.ny() as f64 * grid.dy(),
+        ];
+        // Rays start this far on either side of the plane: beyond the sag of any surface
+        // over the grid (the sag of a convex arc never exceeds its chord).
+        let reach = 2.0 * (half[0].hypot(half[1]) + grid.x(0).abs().max(grid.y(0).abs()))
+            + self.contact.separation.abs()
+            + 1e-3;
+        let up = Unit::new_unchecked(n.into_inner());
+        let down = Unit::new_unchecked(-n.into_inner());
+        let (mut t1_row, mut t2_row) = (reach, reach);
+        for j in 0..grid.ny() {
+            let yp = grid.y(j);
+            let (mut t1, mut t2) = (t1_row, t2_row);
+            for i in 0..grid.nx() {
+                let xp = grid.x(i);
+                let (x, y) = (c * xp - s * yp, s * xp + c * yp);
+                let q = self.contact.point + ex * x + ey * y;
+                let r1 = Ray {
+                    origin: q - up.into_inner() * reach,
+                    dir: up,
+                };
+                let r2 = Ray {
+                    origin: q + up.into_inner() * reach,
+                    dir: down,
+                };
+                let h1 = self.body1.intersect_near(&r1, t1, 0.0, 2.0 * reach);
+                let h2 = self.body2.intersect_near(&r2, t2, 0.0, 2.0 * reach);
+                let g = match (h1, h2) {
+                    (Some(a), Some(b)) => {
+                        t1 = a;
+                        t2 = b;
+                        // g1 = a - reach, g2 = reach - b.
+                        (a - reach) - (reach - b) - self.contact.separation
+                    }
+                    _ => f64::INFINITY,
+                };
+                if g.is_nan() {
+                    return Err(Error::Geometry {
+                        field: "surfaces".into(),
+                        reason: format!("ray casting gave NaN at ({x}, {y}) mm"),
+                    });
+                }
+                out[j * grid.nx() + i] = g;
+                if i == 0 {
+                    (t1_row, t2_row) = (t1, t2);
+                }
+            }
+        }
+        Ok(())
+    }
+}
