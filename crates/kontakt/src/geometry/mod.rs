@@ -1,11 +1,22 @@
-//! Geometry: principal curvatures of contacting bodies, their relative curvature, and
-//! sampling grids.
+//! Geometry: principal curvatures of contacting bodies and their relative curvature,
+//! sampling grids, the analytic surfaces of the PimP method with ray casting, and the
+//! contact point between two placed surfaces.
 //!
-//! The analytic surfaces of the PimP method (plane, sphere, cone, torus, surfaces of
-//! revolution) with ray casting will live here too, one file per surface.
+//! - [`curvature`]: relative curvature of two bodies from their principal radii.
+//! - [`grid`]: uniform sampling grids in the contact plane.
+//! - [`surface`]: plane, sphere, cone, torus (seed 000 eq. 1) and surfaces of revolution
+//!   in canonical local frames; signed distance, normals, principal curvatures, closest
+//!   points and robust ray casting along $\mathbf s(t) = \mathbf q + t\,\mathbf n$
+//!   (seed 000 eq. 2); [`PlacedSurface`] puts a surface in the world with a pose.
+//! - [`contact_point`]: the points of two placed surfaces with anti-parallel normals
+//!   (closest points, or the deepest point of an interpenetration), step 1 of PimP.
 
+pub mod contact_point;
 pub mod curvature;
 pub mod grid;
+pub mod surface;
 
+pub use contact_point::{ContactPoint, find_contact};
 pub use curvature::RelativeCurvature;
 pub use grid::Grid2;
+pub use surface::{Curvature, Hit, Material, PlacedSurface, Profile, Ray, Surface};

@@ -1,0 +1,130 @@
+//! A surface placed in the world by a rigid transform.
+
+use super::{Curvature, Hit, Material, Ray, Surface};
+use crate::error::{Error, Result};
+use nalgebra::{Isometry3, Matrix3, Point3, Unit, Vector3};
+
+/// A surface placed in the world: `pose` maps local coordinates to world coordinates
+/// (the body's frame in the global frame of a multi-body simulation, seed 000 step 1).
+///
+/// All queries take and return world coordinates and have the semantics of the
+/// [`Surface`] method of the same name; distances, ray parameters and curvatures are
+/// invariant under the rigid motion.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlacedSurface {
+    /// The surface in its canonical local frame.
+    pub surface: Surface,
+    /// Local → world rigid transform.
+    pub pose: Isometry3<f64>,
+}
+
+impl PlacedSurface {
+    /// Place `surface` with `pose` (local → world).
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] (field `pose`) when the translation or the rotation
+    /// quaternion has a non-finite entry, or the quaternion is not of unit length (to 1e-9).
+    pub fn new(surface: Surface, pose: Isometry3<f64>) -> Result<Self> {
+        let t = &pose.translation.vector;
+        let q = pose.rotation.quaternion().coords;
+        let finite = t.iter().chain(q.iter()).all(|c| c.is_finite());
+        if !finite || (q.norm() - 1.0).abs() > 1e-9 {
+            return Err(Error::invalid(
+                "pose",
+                format!(
+                    "translation [{}, {}, {}], rotation quaternion [w {}, i {}, j {}, k {}]",
+                    t.x, t.y, t.z, q.w, q.x, q.y, q.z
+                ),
+                "a rigid transform with a finite translation in mm and a finite unit quaternion",
+            ));
+        }
+        Ok(PlacedSurface { surface, pose })
+    }
+
+    /// The side of the surface the material is on.
+    pub fn material(&self) -> Material {
+        self.surface.material()
+    }
+
+    /// `p` (world) in the local frame.
+    pub fn to_local(&self, p: &Point3<f64>) -> Point3<f64> {
+        self.pose.inverse_transform_point(p)
+    }
+
+    /// `v` (local) in the world frame.
+    fn vec_to_world(&self, v: &Vector3<f64>) -> Vector3<f64> {
+        self.pose.rotation.transform_vector(v)
+    }
+
+    fn unit_to_world(&self, v: &Unit<Vector3<f64>>) -> Unit<Vector3<f64>> {
+        Unit::new_unchecked(self.vec_to_world(v))
+    }
+
+    fn ray_to_local(&self, ray: &Ray) -> Ray {
+        Ray {
+            origin: self.pose.inverse_transform_point(&ray.origin),
+            dir: Unit::new_unchecked(self.pose.inverse_transform_vector(&ray.dir)),
+        }
+    }
+
+    /// Signed distance \[mm\] from the world point `p`, negative inside the material.
+    pub fn signed_distance(&self, p: &Point3<f64>) -> f64 {
+        self.surface.signed_distance(&self.to_local(p))
+    }
+
+    /// The sign-normalised implicit function at the world point `p` (see
+    /// [`Surface::implicit`]).
+    pub fn implicit(&self, p: &Point3<f64>) -> f64 {
+        self.surface.implicit(&self.to_local(p))
+    }
+
+    /// Outward unit normal (world) at or near the world point `p`.
+    pub fn normal(&self, p: &Point3<f64>) -> Unit<Vector3<f64>> {
+        self.unit_to_world(&self.surface.normal(&self.to_local(p)))
+    }
+
+    /// Principal curvatures at the surface point nearest to the world point `p`, with the
+    /// principal directions in world coordinates.
+    pub fn curvature(&self, p: &Point3<f64>) -> Curvature {
+        let c = self.surface.curvature(&self.to_local(p));
+        Curvature {
+            d1: self.unit_to_world(&c.d1),
+            d2: self.unit_to_world(&c.d2),
+            ..c
+        }
+    }
+
+    /// The nearest crossing of the world ray with the surface for `t` in `[t_min, t_max]`
+    /// (see [`Surface::intersect`]); point and normal in world coordinates.
+    pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
+        let hit = self
+            .surface
+            .intersect(&self.ray_to_local(ray), t_min, t_max)?;
+        Some(Hit {
+            t: hit.t,
+            point: self.pose.transform_point(&hit.point),
+            normal: self.unit_to_world(&hit.normal),
+        })
+    }
+
+    /// The root of [`PlacedSurface::intersect`] from a guess (see
+    /// [`Surface::intersect_near`] for the contract).
+    pub fn intersect_near(&self, ray: &Ray, t_guess: f64, t_min: f64, t_max: f64) -> Option<f64> {
+        self.surface
+            .intersect_near(&self.ray_to_local(ray), t_guess, t_min, t_max)
+    }
+
+    /// The surface point nearest to the world point `p` and the outward normal there
+    /// (world).
+    pub fn closest_point(&self, p: &Point3<f64>) -> (Point3<f64>, Unit<Vector3<f64>>) {
+        let (q, n) = self.surface.closest_point(&self.to_local(p));
+        (self.pose.transform_point(&q), self.unit_to_world(&n))
+    }
+
+    /// Hessian of the signed distance at the world point `p`, in world coordinates.
+    pub(crate) fn sdf_hessian(&self, p: &Point3<f64>) -> Matrix3<f64> {
+        let r = self.pose.rotation.to_rotation_matrix();
+        let h = self.surface.sdf_hessian(&self.to_local(p));
+        r.matrix() * h * r.matrix().transpose()
+    }
+}
