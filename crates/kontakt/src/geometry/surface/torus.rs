@@ -109,18 +109,14 @@ impl Torus {
     }
 
     fn ray(&self, o: Point3<f64>, d: Vector3<f64>) -> TorusRay {
-        let scale = self.major + self.minor;
-        let tol = 8.0 * f64::EPSILON * scale;
-        let v2 = d.x * d.x + d.y * d.y;
         let h = o.x * d.y - o.y * d.x;
         TorusRay {
             o,
             d,
             big_r: self.major,
             r: self.minor,
-            tol,
-            skip: 4.0 * (tol * self.minor).sqrt(),
-            v2,
+            tol: 8.0 * f64::EPSILON * (self.major + self.minor),
+            v2: d.x * d.x + d.y * d.y,
             h2: h * h,
         }
     }
@@ -165,7 +161,6 @@ struct TorusRay {
     big_r: f64,
     r: f64,
     tol: f64,
-    skip: f64,
     /// dx² + dy².
     v2: f64,
     /// h² = (ox dy - oy dx)², constant along the ray.
@@ -221,12 +216,34 @@ impl RayFunction for TorusRay {
         at_a.f.abs() // the tube distance is 1-Lipschitz
     }
 
+    #[inline]
+    fn sample_g(&self, s: f64) -> (f64, f64) {
+        // The quartic's first factor needs rho only, not the tube distance.
+        let (o, d) = (&self.o, &self.d);
+        let (px, py, pz) = (o.x + s * d.x, o.y + s * d.y, o.z + s * d.z);
+        let rho = (px * px + py * py).sqrt();
+        let rho1 = if rho > 0.0 {
+            (px * d.x + py * d.y) / rho
+        } else {
+            self.v2.sqrt()
+        };
+        let a = rho - self.big_r;
+        (
+            a * a + pz * pz - self.r * self.r,
+            2.0 * (a * rho1 + pz * d.z),
+        )
+    }
+
+    fn g_per_f(&self) -> f64 {
+        2.0 * self.r
+    }
+
     fn tol(&self) -> f64 {
         self.tol
     }
 
     fn skip(&self) -> f64 {
-        self.skip
+        4.0 * (self.tol * self.r).sqrt()
     }
 }
 
@@ -326,14 +343,21 @@ impl Shape for Torus {
         t_max: f64,
     ) -> Option<f64> {
         if t_guess >= t_min && t_guess <= t_max {
+            // Rebased at the guess; the clip to the bounding region only if the certificate
+            // needs a closer start than t_min.
             let og = o + d * t_guess;
-            if let Some(clip) = self.clip(&og, d, t_min - t_guess, t_max - t_guess) {
-                let ray = self.ray(og, *d);
-                if let Some(s) = trace::root_near(&ray, clip.lo, clip.hi) {
+            let ray = self.ray(og, *d);
+            let (lo, hi) = (t_min - t_guess, t_max - t_guess);
+            if let Some((s, g1)) = trace::newton_near(&ray, lo, hi) {
+                if trace::certify(&ray, lo, s, g1) {
                     return Some(t_guess + s);
                 }
-            } else {
-                return None; // the ray misses the bounding region: no root at all
+                if let Some(clip) = self.clip(&og, d, lo, hi)
+                    && clip.lo > lo
+                    && trace::certify(&ray, clip.lo, s, g1)
+                {
+                    return Some(t_guess + s);
+                }
             }
         }
         self.intersect(o, d, t_min, t_max).map(|(t, _)| t)

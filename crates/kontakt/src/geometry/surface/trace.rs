@@ -41,6 +41,15 @@ pub(crate) trait RayFunction {
     /// A step from `a` proved root free by a Lipschitz bound valid on `[a, b]` (at most
     /// `b - a`), given the sample at `a`.
     fn free_step(&self, at_a: &Sample, a: f64, b: f64) -> f64;
+    /// `g` and `g'` only (the hot path of [`root_near`]; cheaper for the torus).
+    fn sample_g(&self, s: f64) -> (f64, f64) {
+        let x = self.sample(s);
+        (x.g, x.g1)
+    }
+    /// Typical |dg/df| at the surface, scaling the tolerances on `g` (2r for the torus).
+    fn g_per_f(&self) -> f64 {
+        1.0
+    }
     /// |f| at or below this is "on the surface" (rounding level, absolute).
     fn tol(&self) -> f64;
     /// Step taken past a tangent touch (a zero of `f` without a proved crossing).
@@ -218,57 +227,66 @@ fn polish<F: RayFunction>(
     x
 }
 
-/// The root near `s = 0` (the guess) by Newton on `f`, *certified* to be the first root in
+/// The root near `s = 0` (the guess) by Newton on `g`, *certified* to be the first root in
 /// `[lo, hi]`; `None` when Newton does not converge quickly, leaves `[lo, hi]`, the ray is
 /// grazing, or the certificate cannot be established cheaply (the caller then runs the full
 /// search, so the answer is always the same root as [`first_root`] would give).
-///
-/// The certificate: with `g(s*) = 0` and `g'(s*)` of the entering sign, the Taylor bound
-/// $g(s^*-\sigma) \ge |g'(s^*)|\sigma + \tfrac12 g''_{lo}\sigma^2$ keeps `g` away from zero
-/// on `[s* - w, s*)`, `w = 2|g'|/|g''_lo|`; if that does not reach `lo`, the Lipschitz bound
-/// from `lo` (`|f(lo)|`) must cover the rest.
 pub(crate) fn root_near<F: RayFunction>(func: &F, lo: f64, hi: f64) -> Option<f64> {
-    let tol = func.tol();
+    let (s, g1) = newton_near(func, lo, hi)?;
+    certify(func, lo, s, g1).then_some(s)
+}
+
+/// Newton on `g` from `s = 0` (which must lie in `[lo, hi]`): the converged root and `g'`
+/// there, or `None` (not converged in a few steps, left `[lo, hi]`, grazing).
+pub(crate) fn newton_near<F: RayFunction>(func: &F, lo: f64, hi: f64) -> Option<(f64, f64)> {
+    if !(lo <= 0.0 && hi >= 0.0) {
+        return None;
+    }
+    let tol_g = func.tol() * func.g_per_f();
+    let min_slope = MIN_SLOPE * func.g_per_f();
     let mut s = 0.0;
-    let mut smp = func.sample(s);
+    let (mut g, mut g1) = func.sample_g(s);
     let mut k = 0;
-    while !(smp.f.abs() <= tol) {
-        if k == MAX_NEWTON || !(smp.f1.abs() >= MIN_SLOPE) {
+    while !(g.abs() <= tol_g) {
+        if k == MAX_NEWTON || !(g1.abs() >= min_slope) {
             return None;
         }
-        s -= smp.f / smp.f1;
+        s -= g / g1;
         if !(s >= lo && s <= hi) {
             return None;
         }
-        smp = func.sample(s);
+        (g, g1) = func.sample_g(s);
         k += 1;
     }
-    if !(smp.f1.abs() >= MIN_SLOPE) {
+    if !(g1.abs() >= min_slope) {
         return None;
     }
     // One more Newton step for full precision (free: the sample is at hand).
-    let s_fin = s - smp.f / smp.f1;
-    let s = if s_fin >= lo && s_fin <= hi { s_fin } else { s };
-    certify(func, lo, s, &smp).then_some(s)
+    let s_fin = s - g / g1;
+    Some((if s_fin >= lo && s_fin <= hi { s_fin } else { s }, g1))
 }
 
-/// True when no root of the ray function lies in `[lo, s_root)`, given the sample at the
+/// True when no root of the ray function lies in `[lo, s_root)`, given `g'` at the
 /// (converged) root `s_root`.
-fn certify<F: RayFunction>(func: &F, lo: f64, s_root: f64, at_root: &Sample) -> bool {
+///
+/// With `g(s*) = 0`, the Taylor bound $g(s^*-\sigma) \ge |g'(s^*)|\sigma +
+/// \tfrac12 g''_{lo}\sigma^2$ (for `g` normalised positive before the root) keeps `g` away
+/// from zero on `[s* - w, s*)`, `w = 2|g'|/|g''_lo|` (all of it if `g''_lo >= 0`); if that
+/// does not reach `lo`, the Lipschitz step from `lo` must cover the rest.
+pub(crate) fn certify<F: RayFunction>(func: &F, lo: f64, s_root: f64, g1_root: f64) -> bool {
     let span = s_root - lo;
     if span <= 0.0 {
         return true;
     }
     // Before the root, g has the sign opposite to g'(s*); normalise it to positive.
-    let before_pos = at_root.f1 < 0.0;
-    let slope = at_root.g1.abs();
+    let before_pos = g1_root < 0.0;
     let (lo2, hi2) = func.g2_bounds(lo, s_root);
     let l = if before_pos { lo2 } else { -hi2 };
     let w = if l >= 0.0 {
         f64::INFINITY
     } else {
         // Shrunk slightly: g(s*) is zero only to rounding.
-        2.0 * slope / (-l) * (1.0 - 1e-9)
+        2.0 * g1_root.abs() / (-l) * (1.0 - 1e-9)
     };
     if w >= span {
         return true;
