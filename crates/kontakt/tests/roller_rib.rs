@@ -22,8 +22,16 @@ fn table1_pairings_share_the_contact_height_and_round_to_the_printed_angles() {
         let c = p.contact.point - p.apex;
         let along = c.dot(&p.roller_axis);
         let height = (c - p.roller_axis.into_inner() * along).norm();
-        assert!((height - CONTACT_HEIGHT).abs() < 1e-10, "{name}: h = {height}");
-        assert_eq!(p.rib_angle_deg.round(), printed, "{name}: alpha = {}", p.rib_angle_deg);
+        assert!(
+            (height - CONTACT_HEIGHT).abs() < 1e-10,
+            "{name}: h = {height}"
+        );
+        assert_eq!(
+            p.rib_angle_deg.round(),
+            printed,
+            "{name}: alpha = {}",
+            p.rib_angle_deg
+        );
         // Both surfaces pass through the contact point with antiparallel normals.
         for (s, sign) in [(&p.face, -1.0), (&p.rib, 1.0)] {
             assert!(s.signed_distance(&p.contact.point).abs() < 1e-9, "{name}");
@@ -40,7 +48,11 @@ fn contact_search_finds_the_idealised_point() {
     for (name, ..) in TABLE1 {
         let p = pair(name);
         let found = find_contact(&p.face, &p.rib, Some(p.contact.point)).unwrap();
-        assert!(found.separation.abs() < 1e-9, "{name}: {}", found.separation);
+        assert!(
+            found.separation.abs() < 1e-9,
+            "{name}: {}",
+            found.separation
+        );
         assert!((found.point - p.contact.point).norm() < 1e-6, "{name}");
         assert!(found.normal.dot(&p.contact.normal) > 1.0 - 1e-9, "{name}");
     }
@@ -55,16 +67,23 @@ fn sphere_faces_are_hertzian_and_torus_faces_give_curved_zones() {
         let p = pair(name);
         let gap = SurfacePairGap::new(p.face, p.rib, p.contact).unwrap();
         let s = pimp.solve_force(&gap, 400.0).unwrap();
-        let h = HertzPointContact::new(PointGeometry::from_curvature(gap.curvature()), STEEL, STEEL)
-            .unwrap()
-            .solve_force(400.0)
-            .unwrap();
+        let h =
+            HertzPointContact::new(PointGeometry::from_curvature(gap.curvature()), STEEL, STEEL)
+                .unwrap()
+                .solve_force(400.0)
+                .unwrap();
         let kappa = s.zone.centre_line_curvature.unwrap();
         assert_eq!(s.zone.patches, 1, "{name}");
         match face {
             FaceShape::Sphere { .. } => {
-                assert!((s.max_pressure / h.max_pressure - 1.0).abs() < 0.01, "{name}");
-                assert!((s.contact_area / h.contact_area - 1.0).abs() < 0.01, "{name}");
+                assert!(
+                    (s.max_pressure / h.max_pressure - 1.0).abs() < 0.01,
+                    "{name}"
+                );
+                assert!(
+                    (s.contact_area / h.contact_area - 1.0).abs() < 0.01,
+                    "{name}"
+                );
                 // Centre-line bend of a near-ellipse: a few hundredths of 1/mm.
                 assert!(kappa.abs() < 0.03, "{name}: kappa = {kappa}");
             }
@@ -80,20 +99,58 @@ fn sphere_faces_are_hertzian_and_torus_faces_give_curved_zones() {
 fn bad_dimensions_are_clear_errors() {
     let base = RollerRibSpec::builtin("torus-torus-14").unwrap();
     let cases = [
-        (RollerRibSpec { face: FaceShape::Sphere { radius: 0.0 }, ..base }, "face.radius"),
-        (RollerRibSpec { face: FaceShape::Sphere { radius: 2.0 }, ..base }, "face.radius"),
         (
-            RollerRibSpec { face: FaceShape::Torus { radius: 14.0, eccentricity: -1.0 }, ..base },
+            RollerRibSpec {
+                face: FaceShape::Sphere { radius: 0.0 },
+                ..base
+            },
+            "face.radius",
+        ),
+        (
+            RollerRibSpec {
+                face: FaceShape::Sphere { radius: 2.0 },
+                ..base
+            },
+            "face.radius",
+        ),
+        (
+            RollerRibSpec {
+                face: FaceShape::Torus {
+                    radius: 14.0,
+                    eccentricity: -1.0,
+                },
+                ..base
+            },
             "face.eccentricity",
         ),
-        (RollerRibSpec { rib: RibShape::Torus { radius: f64::NAN }, ..base }, "rib.radius"),
-        (RollerRibSpec { contact_height: 9.0, ..base }, "contact_height"),
-        (RollerRibSpec { contact_height: f64::NAN, ..base }, "contact_height"),
+        (
+            RollerRibSpec {
+                rib: RibShape::Torus { radius: f64::NAN },
+                ..base
+            },
+            "rib.radius",
+        ),
+        (
+            RollerRibSpec {
+                contact_height: 9.0,
+                ..base
+            },
+            "contact_height",
+        ),
+        (
+            RollerRibSpec {
+                contact_height: f64::NAN,
+                ..base
+            },
+            "contact_height",
+        ),
     ];
     for (spec, field) in cases {
         let e = RollerRib::new(spec).unwrap_err();
         assert_eq!(e.field(), Some(field), "{e}");
     }
-    let e = RollerRibSpec::builtin("torus-torus-99").unwrap_err().to_string();
+    let e = RollerRibSpec::builtin("torus-torus-99")
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("torus-torus-14"), "{e}");
 }

@@ -203,7 +203,7 @@ pub enum Case {
     /// `method = "hertz"` (or absent).
     Hertz(CaseFile),
     /// `method = "pimp"`.
-    Pimp(super::pimp_case::PimpCase),
+    Pimp(Box<super::pimp_case::PimpCase>),
 }
 
 impl Case {
@@ -219,7 +219,7 @@ impl Case {
             .unwrap_or("hertz")
         {
             "hertz" => Ok(Case::Hertz(parse_toml(text)?)),
-            "pimp" => Ok(Case::Pimp(parse_toml(text)?)),
+            "pimp" => Ok(Case::Pimp(Box::new(parse_toml(text)?))),
             other => Err(Error::invalid("method", other, "\"hertz\" or \"pimp\"")),
         }
     }

@@ -120,6 +120,7 @@ impl Default for PimpSpec {
 }
 
 /// `[geometry]`.
+#[allow(clippy::large_enum_variant)] // parsed once per case file
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
 pub enum GeometrySpec {

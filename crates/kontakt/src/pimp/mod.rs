@@ -344,9 +344,9 @@ impl Pimp {
                         ),
                     });
                 }
-                for axis in 0..2 {
-                    if zone.touches_border[axis] {
-                        half[axis] *= 1.6;
+                for (h, touches) in half.iter_mut().zip(zone.touches_border) {
+                    if touches {
+                        *h *= 1.6;
                     }
                 }
                 continue;
