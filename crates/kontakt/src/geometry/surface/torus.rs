@@ -167,6 +167,80 @@ struct TorusRay {
     h2: f64,
 }
 
+impl TorusRay {
+    /// The hot path of `intersect_near`: Newton on G from `s = 0` (in `[lo, hi]`), accepted
+    /// as soon as the Taylor bound $|G(s+\delta)| \le \tfrac12 \max|G''|\,\delta^2$ of the
+    /// next iterate is below the tolerance, so that a good guess needs two evaluations of G
+    /// (one square root and two divisions each). Returns the root and a lower bound on
+    /// |G'| there (with its sign).
+    #[inline]
+    fn newton(&self, lo: f64, hi: f64) -> Option<(f64, f64)> {
+        if !(lo <= 0.0 && hi >= 0.0) {
+            return None;
+        }
+        let (o, d) = (&self.o, &self.d);
+        let tol_g = 2.0 * self.r * self.tol;
+        let min_slope = 2.0 * self.r * 1e-4;
+        let rh2 = 2.0 * self.big_r * self.h2;
+        let mut s = 0.0;
+        for _ in 0..6 {
+            let (px, py, pz) = (o.x + s * d.x, o.y + s * d.y, o.z + s * d.z);
+            let rho = (px * px + py * py).sqrt();
+            let rho1 = if rho > 0.0 {
+                (px * d.x + py * d.y) / rho
+            } else {
+                self.v2.sqrt()
+            };
+            let a = rho - self.big_r;
+            let g = a * a + pz * pz - self.r * self.r;
+            let g1 = 2.0 * (a * rho1 + pz * d.z);
+            if !(g1.abs() >= min_slope) {
+                return None;
+            }
+            let delta = -g / g1;
+            // |G''| <= max(2, 2R h²/rho_min³ - 2) on [s, s + delta], rho_min >= rho - |delta|
+            // (the cheap test with the factor 2 first).
+            if delta * delta <= tol_g {
+                let rm = rho - delta.abs();
+                if rm > 0.0 {
+                    let u = (rh2 / (rm * rm * rm) - 2.0).max(2.0);
+                    let slope = g1.abs() - u * delta.abs();
+                    let s_root = s + delta;
+                    if 0.5 * u * delta * delta <= tol_g && slope > 0.0 {
+                        return (s_root >= lo && s_root <= hi).then(|| (s_root, slope.copysign(g1)));
+                    }
+                }
+            }
+            s += delta;
+            if !(s >= lo && s <= hi) {
+                return None;
+            }
+        }
+        None
+    }
+
+    /// Whether G'' >= 0 on `[a, b]`: then G, zero with G' < 0 at `b`, is positive on
+    /// `[a, b)` (no earlier root). $\rho_{min}^3 \ge R h^2$, tested in squares (no root
+    /// extraction).
+    #[inline]
+    fn convex_on(&self, a: f64, b: f64) -> bool {
+        if self.h2 == 0.0 || self.v2 == 0.0 {
+            return self.h2 == 0.0 && self.v2 == 0.0 || {
+                // rho'' = 0 except where the ray meets the axis.
+                let (o, d) = (&self.o, &self.d);
+                let sc = -(o.x * d.x + o.y * d.y) / self.v2;
+                !(sc >= a && sc <= b)
+            };
+        }
+        let (o, d) = (&self.o, &self.d);
+        let sc = (-(o.x * d.x + o.y * d.y) / self.v2).clamp(a, b);
+        let (wx, wy) = (o.x + sc * d.x, o.y + sc * d.y);
+        let rmin2 = wx * wx + wy * wy;
+        let rh = self.big_r * self.h2 * (1.0 + 1e-9);
+        rmin2 * rmin2 * rmin2 >= rh * rh
+    }
+}
+
 impl RayFunction for TorusRay {
     #[inline]
     fn sample(&self, s: f64) -> Sample {
@@ -348,8 +422,8 @@ impl Shape for Torus {
             let og = o + d * t_guess;
             let ray = self.ray(og, *d);
             let (lo, hi) = (t_min - t_guess, t_max - t_guess);
-            if let Some((s, g1)) = trace::newton_near(&ray, lo, hi) {
-                if trace::certify(&ray, lo, s, g1) {
+            if let Some((s, g1)) = ray.newton(lo, hi) {
+                if (g1 < 0.0 && ray.convex_on(lo, s)) || trace::certify(&ray, lo, s, g1) {
                     return Some(t_guess + s);
                 }
                 if let Some(clip) = self.clip(&og, d, lo, hi)
