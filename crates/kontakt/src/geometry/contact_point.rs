@@ -403,101 +403,86 @@ fn starts(a: &PlacedSurface, b: &PlacedSurface) -> Vec<Point3<f64>> {
     out
 }
 
-/// A `nu × nv` grid of world points on `a` (`v` periodic), and whether `u` is periodic.
+/// A `nu × nv` grid of world points on `a` (`v` periodic, row-major), and whether `u` is
+/// periodic.
 fn grid(a: &PlacedSurface, b: &PlacedSurface) -> (Vec<Point3<f64>>, usize, usize, bool) {
-    let nv = 32;
-    let (nu, wrap_u, local): (usize, bool, Box<dyn Fn(usize, usize) -> Point3<f64>>) =
-        match &a.surface {
-            Surface::Sphere(s) => {
-                let (r, nu) = (s.radius(), 17);
-                (
-                    nu,
-                    false,
-                    Box::new(move |i, j| {
-                        let th = PI * i as f64 / (nu - 1) as f64;
-                        let ph = TAU * j as f64 / nv as f64;
-                        Point3::new(
-                            r * th.sin() * ph.cos(),
-                            r * th.sin() * ph.sin(),
-                            r * th.cos(),
-                        )
-                    }),
-                )
+    const NV: usize = 32;
+    let phi = |j: usize| TAU * j as f64 / NV as f64;
+    let mut local = Vec::with_capacity(24 * NV);
+    let mut push = |nu: usize, point: &dyn Fn(usize, usize) -> Point3<f64>| {
+        for i in 0..nu {
+            for j in 0..NV {
+                local.push(point(i, j));
             }
-            Surface::Torus(t) => {
-                let (big_r, r) = (t.major(), t.minor());
-                // The outer sheet only: R + r cos(theta) >= 0.
-                let th_max = if big_r >= r { PI } else { (-big_r / r).acos() };
-                let wrap = big_r >= r;
-                let nu = 24;
-                (
-                    nu,
-                    wrap,
-                    Box::new(move |i, j| {
-                        let th = if wrap {
-                            TAU * i as f64 / nu as f64
-                        } else {
-                            -th_max + 2.0 * th_max * i as f64 / (nu - 1) as f64
-                        };
-                        let ph = TAU * j as f64 / nv as f64;
-                        let rho = big_r + r * th.cos();
-                        Point3::new(rho * ph.cos(), rho * ph.sin(), r * th.sin())
-                    }),
-                )
-            }
-            Surface::Revolution(rev) => {
-                let [z0, z1] = rev.z_range();
-                let nu = 17;
-                let rev = rev.clone();
-                (
-                    nu,
-                    false,
-                    Box::new(move |i, j| {
-                        let z = z0 + (z1 - z0) * i as f64 / (nu - 1) as f64;
-                        let rho = rev.meridian(z).0;
-                        let ph = TAU * j as f64 / nv as f64;
-                        Point3::new(rho * ph.cos(), rho * ph.sin(), z)
-                    }),
-                )
-            }
-            Surface::Cone(c) => {
-                // Slant range from the apex: far enough to pass the other body.
-                let other = a.to_local(&Point3::from(b.pose.translation.vector));
-                let reach = 2.0 * (other.coords.norm() + b.surface.extent()) + 1e-3;
-                let (sin, cos) = c.half_angle().sin_cos();
-                let nu = 17;
-                (
-                    nu,
-                    false,
-                    Box::new(move |i, j| {
-                        let s = reach * (i as f64 + 0.5) / nu as f64;
-                        let ph = TAU * j as f64 / nv as f64;
-                        Point3::new(s * sin * ph.cos(), s * sin * ph.sin(), s * cos)
-                    }),
-                )
-            }
-            Surface::Plane(_) => {
-                // Only reached for plane/plane-free pairs where the plane ranks first,
-                // which `rank` prevents; kept total: a grid around the other body.
-                let other = a.to_local(&Point3::from(b.pose.translation.vector));
-                let half = b.surface.extent().max(1.0) * 2.0;
-                let nu = 17;
-                (
-                    nu,
-                    false,
-                    Box::new(move |i, j| {
-                        let x = other.x - half + 2.0 * half * i as f64 / (nu - 1) as f64;
-                        let y = other.y - half + 2.0 * half * j as f64 / nv as f64;
-                        Point3::new(x, y, 0.0)
-                    }),
-                )
-            }
-        };
-    let mut pts = Vec::with_capacity(nu * nv);
-    for i in 0..nu {
-        for j in 0..nv {
-            pts.push(a.pose.transform_point(&local(i, j)));
         }
-    }
-    (pts, nu, nv, wrap_u)
+        nu
+    };
+    let (nu, wrap_u) = match &a.surface {
+        Surface::Sphere(s) => {
+            let (r, nu) = (s.radius(), 17);
+            let nu = push(nu, &|i, j| {
+                let (st, ct) = (PI * i as f64 / (nu - 1) as f64).sin_cos();
+                let (sp, cp) = phi(j).sin_cos();
+                Point3::new(r * st * cp, r * st * sp, r * ct)
+            });
+            (nu, false)
+        }
+        Surface::Torus(t) => {
+            let (big_r, r) = (t.major(), t.minor());
+            // The outer sheet only: R + r cos(theta) >= 0.
+            let wrap = big_r >= r;
+            let th_max = if wrap { PI } else { (-big_r / r).acos() };
+            let nu = 24;
+            let nu = push(nu, &|i, j| {
+                let th = if wrap {
+                    TAU * i as f64 / nu as f64
+                } else {
+                    -th_max + 2.0 * th_max * i as f64 / (nu - 1) as f64
+                };
+                let rho = big_r + r * th.cos();
+                let (sp, cp) = phi(j).sin_cos();
+                Point3::new(rho * cp, rho * sp, r * th.sin())
+            });
+            (nu, wrap)
+        }
+        Surface::Revolution(rev) => {
+            let [z0, z1] = rev.z_range();
+            let nu = 17;
+            let nu = push(nu, &|i, j| {
+                let z = z0 + (z1 - z0) * i as f64 / (nu - 1) as f64;
+                let rho = rev.meridian(z).0;
+                let (sp, cp) = phi(j).sin_cos();
+                Point3::new(rho * cp, rho * sp, z)
+            });
+            (nu, false)
+        }
+        Surface::Cone(c) => {
+            // Slant range from the apex: far enough to pass the other body.
+            let other = a.to_local(&Point3::from(b.pose.translation.vector));
+            let reach = 2.0 * (other.coords.norm() + b.surface.extent()) + 1e-3;
+            let (sin, cos) = c.half_angle().sin_cos();
+            let nu = 17;
+            let nu = push(nu, &|i, j| {
+                let s = reach * (i as f64 + 0.5) / nu as f64;
+                let (sp, cp) = phi(j).sin_cos();
+                Point3::new(s * sin * cp, s * sin * sp, s * cos)
+            });
+            (nu, false)
+        }
+        Surface::Plane(_) => {
+            // A square around the other body's origin (reached only when the other surface
+            // is searched first and failed).
+            let other = a.to_local(&Point3::from(b.pose.translation.vector));
+            let half = b.surface.extent().max(1.0) * 2.0;
+            let nu = 17;
+            let nu = push(nu, &|i, j| {
+                let x = other.x - half + 2.0 * half * i as f64 / (nu - 1) as f64;
+                let y = other.y - half + 2.0 * half * j as f64 / NV as f64;
+                Point3::new(x, y, 0.0)
+            });
+            (nu, false)
+        }
+    };
+    let pts = local.iter().map(|p| a.pose.transform_point(p)).collect();
+    (pts, nu, NV, wrap_u)
 }

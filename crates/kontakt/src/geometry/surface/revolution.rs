@@ -70,8 +70,6 @@ pub struct Revolution {
     /// Natural-spline second derivatives at the knots (`Table` only).
     spline_m: Vec<f64>,
     rho_max: f64,
-    slope_max: f64,
-    curv_max: f64,
     /// Per spline interval: largest |rho'| and |rho''| (`Table` only).
     interval_bounds: Vec<(f64, f64)>,
 }
@@ -99,8 +97,6 @@ impl Revolution {
             z_max: 0.0,
             spline_m: Vec::new(),
             rho_max: 0.0,
-            slope_max: 0.0,
-            curv_max: 0.0,
             interval_bounds: Vec::new(),
         };
         match &rev.profile {
@@ -333,8 +329,6 @@ impl Revolution {
             ));
         }
         self.rho_max = all.rho_max;
-        self.slope_max = all.slope;
-        self.curv_max = all.curv;
         Ok(())
     }
 
@@ -650,9 +644,7 @@ impl Shape for Revolution {
         t_max: f64,
     ) -> Option<f64> {
         if t_guess >= t_min && t_guess <= t_max {
-            let Some(clip) = self.clip(o, d, t_min, t_max) else {
-                return None;
-            };
+            let clip = self.clip(o, d, t_min, t_max)?;
             // Rebase at the guess.
             let shift = t_guess - clip.tc;
             let og = clip.oc + d * shift;

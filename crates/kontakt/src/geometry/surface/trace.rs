@@ -4,14 +4,15 @@
 //! Along the ray $\mathbf s(t) = \mathbf q + t\,\mathbf n$ (seed 000 eq. 2) a surface is
 //! described by two functions of the ray parameter with the same sign and the same zeros:
 //!
-//! - `f`, *Lipschitz-normalised*: $|f(t)|$ is a lower bound on the distance along the ray to
-//!   the nearest zero ($|f'| \le 1$). For the torus it is the exact signed distance.
+//! - `f`, with a Lipschitz bound $L$ on an interval, so that no zero lies within $|f|/L$ of
+//!   a sample. For the torus it is the exact signed distance ($L = 1$), for a surface of
+//!   revolution $F = \rho - \rho(z)$ with $L = \sqrt{1+\max\rho'^2}$ over the interval.
 //! - `g`, smooth, with computable bounds $g''_{lo} \le g'' \le g''_{hi}$ on any interval.
-//!   For the torus it is the product form $g = ((\rho-R)^2+z^2-r^2)$ of the quartic's first
-//!   factor, whose second derivative is bounded in closed form.
+//!   For the torus it is the quartic's first factor $G = (\rho-R)^2+z^2-r^2$, whose second
+//!   derivative is bounded in closed form; for a surface of revolution `g = f = F`.
 //!
 //! The search steps from the start of the interval by the largest step that is *proved*
-//! root free: the Lipschitz step $|f|$ (sphere tracing) or the step to the first zero of the
+//! root free: the Lipschitz step $|f|/L$ (sphere tracing) or the step to the first zero of the
 //! quadratic lower bound $g + g' \tau + \tfrac12 g''_{lo} \tau^2$, whichever is longer. A
 //! crossing is *proved* as soon as the quadratic upper bound reaches zero; that bracket then
 //! contains exactly the first root and is polished by safeguarded Newton/bisection.
@@ -41,15 +42,6 @@ pub(crate) trait RayFunction {
     /// A step from `a` proved root free by a Lipschitz bound valid on `[a, b]` (at most
     /// `b - a`), given the sample at `a`.
     fn free_step(&self, at_a: &Sample, a: f64, b: f64) -> f64;
-    /// `g` and `g'` only (the hot path of [`root_near`]; cheaper for the torus).
-    fn sample_g(&self, s: f64) -> (f64, f64) {
-        let x = self.sample(s);
-        (x.g, x.g1)
-    }
-    /// Typical |dg/df| at the surface, scaling the tolerances on `g` (2r for the torus).
-    fn g_per_f(&self) -> f64 {
-        1.0
-    }
     /// |f| at or below this is "on the surface" (rounding level, absolute).
     fn tol(&self) -> f64;
     /// Step taken past a tangent touch (a zero of `f` without a proved crossing).
@@ -151,11 +143,12 @@ pub(crate) fn first_root<F: RayFunction>(func: &F, lo: f64, hi: f64) -> Option<f
                 break;
             }
         }
-        // (3) At a tangent touch (on the surface within rounding, no proved crossing) step
-        // over it, doubling the step while the samples stay on the surface; a sign change
-        // on the other side is still caught below. A crossing that stays within the
-        // rounding tolerance over the skipped length counts as grazing.
-        if smp.f.abs() <= func.tol() {
+        // (3) At a tangent touch (on the surface within rounding, or steps below the
+        // resolution of s, no proved crossing) step over it, doubling the step while the
+        // samples stay on the surface; a sign change on the other side is still caught
+        // below. A crossing that stays within the rounding tolerance over the skipped length
+        // counts as grazing.
+        if smp.f.abs() <= func.tol() || s + step <= s {
             step = step.max(func.skip() * f64::from(1u32 << stuck.min(30)));
             stuck += 1;
         } else {
@@ -227,7 +220,7 @@ fn polish<F: RayFunction>(
     x
 }
 
-/// The root near `s = 0` (the guess) by Newton on `g`, *certified* to be the first root in
+/// The root near `s = 0` (the guess) by Newton on `f`, *certified* to be the first root in
 /// `[lo, hi]`; `None` when Newton does not converge quickly, leaves `[lo, hi]`, the ray is
 /// grazing, or the certificate cannot be established cheaply (the caller then runs the full
 /// search, so the answer is always the same root as [`first_root`] would give).
@@ -236,34 +229,33 @@ pub(crate) fn root_near<F: RayFunction>(func: &F, lo: f64, hi: f64) -> Option<f6
     certify(func, lo, s, g1).then_some(s)
 }
 
-/// Newton on `g` from `s = 0` (which must lie in `[lo, hi]`): the converged root and `g'`
+/// Newton on `f` from `s = 0` (which must lie in `[lo, hi]`): the converged root and `g'`
 /// there, or `None` (not converged in a few steps, left `[lo, hi]`, grazing).
 pub(crate) fn newton_near<F: RayFunction>(func: &F, lo: f64, hi: f64) -> Option<(f64, f64)> {
     if !(lo <= 0.0 && hi >= 0.0) {
         return None;
     }
-    let tol_g = func.tol() * func.g_per_f();
-    let min_slope = MIN_SLOPE * func.g_per_f();
+    let tol = func.tol();
     let mut s = 0.0;
-    let (mut g, mut g1) = func.sample_g(s);
+    let mut smp = func.sample(s);
     let mut k = 0;
-    while !(g.abs() <= tol_g) {
-        if k == MAX_NEWTON || !(g1.abs() >= min_slope) {
+    while !(smp.f.abs() <= tol) {
+        if k == MAX_NEWTON || !(smp.f1.abs() >= MIN_SLOPE) {
             return None;
         }
-        s -= g / g1;
+        s -= smp.f / smp.f1;
         if !(s >= lo && s <= hi) {
             return None;
         }
-        (g, g1) = func.sample_g(s);
+        smp = func.sample(s);
         k += 1;
     }
-    if !(g1.abs() >= min_slope) {
+    if !(smp.f1.abs() >= MIN_SLOPE) {
         return None;
     }
     // One more Newton step for full precision (free: the sample is at hand).
-    let s_fin = s - g / g1;
-    Some((if s_fin >= lo && s_fin <= hi { s_fin } else { s }, g1))
+    let s_fin = s - smp.f / smp.f1;
+    Some((if s_fin >= lo && s_fin <= hi { s_fin } else { s }, smp.g1))
 }
 
 /// True when no root of the ray function lies in `[lo, s_root)`, given `g'` at the
