@@ -124,14 +124,21 @@ proptest! {
         let c1 = c2 + u * (off * extra);
         let ball = at(sphere(r1), c1.x, c1.y, c1.z);
         let cup = at(Surface::sphere(r2, Material::Outside).unwrap(), c2.x, c2.y, c2.z);
-        // (The contact direction is ill-conditioned as the offset off * extra -> 0: a
-        // concentric ball touches everywhere. Here it is >= 5e-4 mm.)
         let c = find_contact(&ball, &cup, None).unwrap();
         let size = r2;
-        prop_assert!((c.separation - (r2 - off * extra - r1)).abs() < 1e-12 * size);
-        prop_assert!((c.normal.into_inner() + u).norm() < 1e-11, "{:?}", c.normal);
-        prop_assert!(close(&c.point1, &(c1 + u * r1), 1e-12 * size));
-        prop_assert!(close(&c.point2, &(c2 + u * r2), 1e-12 * size));
+        // The exact answer for the centres as represented.
+        let offset = c1 - c2;
+        let u = offset.normalize();
+        prop_assert!((c.separation - (r2 - offset.norm() - r1)).abs() < 1e-12 * size);
+        // The contact direction is set by the offset off * extra (>= 5e-4 mm here) against
+        // coordinates of size r2: an intrinsic condition number r2 / offset (a concentric
+        // ball touches everywhere).
+        let cond = size / offset.norm();
+        prop_assert!((c.normal.into_inner() + u).norm() < 1e-12 + 8.0 * f64::EPSILON * cond,
+            "{:?}", c.normal);
+        let tol = 1e-12 * size + 8.0 * f64::EPSILON * cond * size;
+        prop_assert!(close(&c.point1, &(c1 + u * r1), tol));
+        prop_assert!(close(&c.point2, &(c2 + u * r2), tol));
         check_invariants(&c, &ball, &cup, size);
     }
 
@@ -211,6 +218,35 @@ fn tilted_torus_on_a_plane_is_exact() {
     ));
     assert!((c.normal.into_inner() - Vector3::z()).norm() < 1e-12);
     check_invariants(&c, &torus, &flat, big_r);
+}
+
+#[test]
+fn crowned_roller_on_a_flat_is_exact() {
+    // Roller axis along world x, 0.02 mm above the flat at its crown (the centre).
+    let roller = Surface::revolution(
+        Profile::Crowned {
+            radius: 5.0,
+            crown_radius: 300.0,
+            half_length: 6.0,
+        },
+        Material::Inside,
+    )
+    .unwrap();
+    let pose = Isometry3::from_parts(
+        Translation3::new(1.0, 2.0, 5.02),
+        UnitQuaternion::from_euler_angles(0.0, FRAC_PI_2, 0.0),
+    );
+    let roller = placed(roller, pose);
+    let flat = placed(Surface::plane(Material::Inside), Isometry3::identity());
+    let c = find_contact(&flat, &roller, None).unwrap();
+    assert!(
+        (c.separation - 0.02).abs() < 1e-12 * 5.0,
+        "{}",
+        c.separation
+    );
+    assert!(close(&c.point2, &Point3::new(1.0, 2.0, 0.02), 1e-12 * 5.0));
+    assert!((c.normal.into_inner() + Vector3::z()).norm() < 1e-12);
+    check_invariants(&c, &flat, &roller, 5.0);
 }
 
 #[test]

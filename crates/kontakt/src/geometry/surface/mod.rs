@@ -156,6 +156,24 @@ impl Curvature {
 /// Built by the validating constructors ([`Surface::sphere`], ...). Serialised as a tagged
 /// table, e.g. `{ type = "torus", major = 2.0, minor = 14.0, material = "inside" }`;
 /// deserialisation validates like the constructors.
+///
+/// # Example
+/// The roller end face of seed 000 Table 1 with eccentricity e = 2 mm and face radius
+/// r_R = 14 mm is a spindle torus; a ray down at x = 10 mm meets it where
+/// (10 - 2)² + z² = 14²:
+/// ```
+/// use kontakt::geometry::{Material, Ray, Surface};
+/// use nalgebra::{Point3, Vector3};
+/// let face = Surface::torus(2.0, 14.0, Material::Inside)?;
+/// let ray = Ray::new(Point3::new(10.0, 0.0, 30.0), -Vector3::z())?;
+/// let hit = face.intersect(&ray, 0.0, 100.0).expect("a hit");
+/// assert!((hit.point.z - 132f64.sqrt()).abs() < 1e-13);
+/// assert!((hit.normal.z - 132f64.sqrt() / 14.0).abs() < 1e-15);
+/// // The fast path from a neighbouring root returns the same t.
+/// let t = face.intersect_near(&ray, hit.t + 0.01, 0.0, 100.0).expect("a hit");
+/// assert!((t - hit.t).abs() < 1e-13);
+/// # Ok::<(), kontakt::Error>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub enum Surface {
     /// The plane `z = 0`.
@@ -349,14 +367,15 @@ impl Surface {
     /// The nearest crossing of `ray` (local frame) with the surface for `t` in
     /// `[t_min, t_max]`, or `None` (miss, tangent touch, empty interval, NaN input).
     ///
-    /// Plane: linear. Sphere and cone: the quadratic in the numerically stable form (the
-    /// ray origin is first moved to its closest approach to the centre or apex, the
-    /// quadratic solved with $q = -(b + \mathrm{sign}(b)\sqrt{\Delta})/2$, roots $q/a$ and
-    /// $c/q$), then one Newton step on the exact signed distance. Only the cone's `z >= 0`
-    /// nappe counts. Torus and surface of revolution: a certified first-root search along
-    /// the ray (sphere tracing with quadratic bounds, then safeguarded Newton; no quartic
-    /// in monomial form, see `docs/surfaces.md`). The hit point is on the surface to a few
-    /// ulps of the surface's size, also for origins far away.
+    /// Plane: linear. Sphere and cone: the quadratic in a numerically stable form, with the
+    /// ray origin first moved to its closest approach to the centre or apex. For the sphere
+    /// the quadratic is then $s^2 = r^2 - |\mathbf o_c|^2$ (no cancellation); for the cone
+    /// it is solved with $q = -(b + \mathrm{sign}(b)\sqrt{\Delta})/2$, roots $q/a$ and $c/q$,
+    /// and polished by one Newton step on the exact signed distance; only the cone's
+    /// `z >= 0` nappe counts. Torus and surface of revolution: a certified first-root
+    /// search along the ray (sphere tracing with quadratic bounds, then safeguarded Newton;
+    /// no quartic in monomial form, see `docs/surfaces.md`). The hit point is on the surface
+    /// to a few ulps of the surface's size, also for origins far away.
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
         if !(t_min <= t_max) {
             return None;

@@ -551,16 +551,22 @@ impl RayFunction for RevolutionRay<'_> {
         if self.v2 == 0.0 {
             return (lo, bend);
         }
+        // rho'' = h²/rho³ >= 0, between its values at the extremes of rho (rho is convex
+        // along the ray: the minimum at the closest approach to the axis, the maximum at an
+        // end).
         let (o, d) = (&self.o, &self.d);
-        let sc = (-(o.x * d.x + o.y * d.y) / self.v2).clamp(a, b);
-        let (wx, wy) = (o.x + sc * d.x, o.y + sc * d.y);
-        let rmin2 = wx * wx + wy * wy;
-        let rho2 = if self.h2 == 0.0 {
-            if rmin2 > 0.0 { 0.0 } else { f64::INFINITY }
-        } else {
-            self.h2 / (rmin2 * rmin2.sqrt()) * (1.0 + 1e-9)
+        let rho2_at = |s: f64| {
+            let (wx, wy) = (o.x + s * d.x, o.y + s * d.y);
+            wx * wx + wy * wy
         };
-        (lo, rho2 + bend)
+        let rmin2 = rho2_at((-(o.x * d.x + o.y * d.y) / self.v2).clamp(a, b));
+        let rmax2 = rho2_at(a).max(rho2_at(b));
+        if self.h2 == 0.0 {
+            return (lo, if rmin2 > 0.0 { bend } else { f64::INFINITY });
+        }
+        let rho_lo = self.h2 / (rmax2 * rmax2.sqrt()) * (1.0 - 1e-9);
+        let rho_hi = self.h2 / (rmin2 * rmin2.sqrt()) * (1.0 + 1e-9);
+        (rho_lo + lo, rho_hi + bend)
     }
 
     fn tol(&self) -> f64 {

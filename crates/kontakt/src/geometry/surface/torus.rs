@@ -153,6 +153,20 @@ struct Clip {
     hi: f64,
 }
 
+/// A root found by [`TorusRay::newton`]: `s` and a lower bound on |G'| there with the sign
+/// of G', as the fraction `slope_num / slope_den` (divided only if the certificate needs it).
+struct NewtonRoot {
+    s: f64,
+    slope_num: f64,
+    slope_den: f64,
+}
+
+impl NewtonRoot {
+    fn slope(&self) -> f64 {
+        self.slope_num / self.slope_den
+    }
+}
+
 /// The torus along a ray `o + s d` (|d| = 1): `f` = tube distance, `g` = first factor of
 /// the quartic.
 struct TorusRay {
@@ -171,8 +185,7 @@ impl TorusRay {
     /// The hot path of `intersect_near`: a third-order Newton (Chebyshev) iteration on G
     /// from `s = 0` (in `[lo, hi]`), accepted as soon as a rigorous Taylor bound on |G| at
     /// the next iterate is below the tolerance, so that a guess within about 1e-4 of the
-    /// size needs one evaluation of G (one square root, one division). Returns the root
-    /// and a lower bound on |G'| there (with its sign).
+    /// size needs one evaluation of G (one square root, one division).
     ///
     /// With $\delta = -G/G'$ the step is $\Delta = \delta - \frac{G''}{2G'}\delta^2$ and
     /// $|G(s+\Delta)| \le u_2(|\delta\epsilon| + \epsilon^2/2) + u_3|\Delta|^3/6$,
@@ -180,7 +193,7 @@ impl TorusRay {
     /// $|G''| \le u_2 = \max(2, 2Rh^2/\rho_m^3 - 2)$ and
     /// $|G'''| = |6Rh^2\rho'/\rho^4| \le u_3 = 6Rh^2/\rho_m^4$, $\rho_m = \rho - |\Delta|$.
     #[inline]
-    fn newton(&self, lo: f64, hi: f64) -> Option<(f64, f64)> {
+    fn newton(&self, lo: f64, hi: f64) -> Option<NewtonRoot> {
         if !(lo <= 0.0 && hi >= 0.0) {
             return None;
         }
@@ -188,6 +201,16 @@ impl TorusRay {
         let tol_g = 2.0 * self.r * self.tol;
         let min_half_slope = self.r * 1e-4;
         let rh = self.big_r * self.h2; // R h²
+        // The accepted root, with |G'| there >= |G'(s)| - u2 |step|
+        // = (2|q| rm³ - u2m rho |step|)/(rho rm³).
+        let root = |s_root: f64, step: f64, rm3: f64, u2m: f64, (q, rho): (f64, f64)| {
+            let slope_num = 2.0 * q.abs() * rm3 - u2m * rho * step.abs();
+            (slope_num > 0.0 && s_root >= lo && s_root <= hi).then(|| NewtonRoot {
+                s: s_root,
+                slope_num: slope_num.copysign(q),
+                slope_den: rho * rm3,
+            })
+        };
         let mut s = 0.0;
         for _ in 0..6 {
             let (px, py, pz) = (o.x + s * d.x, o.y + s * d.y, o.z + s * d.z);
@@ -202,26 +225,31 @@ impl TorusRay {
             }
             let inv = 1.0 / (q * rho2);
             let delta = -0.5 * g * rho * rho2 * inv;
-            // G''/(2G') delta² = (rho³ - R h²)/(2 q rho²) delta².
-            let corr = 0.5 * (rho * rho2 - rh) * delta * delta * inv;
-            let (step, eps) = if corr.abs() <= 0.5 * delta.abs() {
-                (delta - corr, -corr)
-            } else {
-                (delta, 0.0) // far from the root: plain Newton
-            };
-            let rm = rho - step.abs();
-            if step.abs() <= 1e-2 * self.r && rm > 0.0 {
-                // The bound times rm⁴ (no division): u2 rm³ = max(2 rm³, 2 R h² - 2 rm³),
-                // u3 rm⁴ / 6 = R h².
-                let rm3 = rm * rm * rm;
-                let u2m = (2.0 * rm3).max(2.0 * rh - 2.0 * rm3);
-                let cubed = step.abs() * step * step;
-                let bound = u2m * rm * ((delta * eps).abs() + 0.5 * eps * eps) + rh * cubed;
-                if bound <= tol_g * rm3 * rm {
-                    let slope = 2.0 * q.abs() / rho - u2m / rm3 * step.abs();
-                    let s_root = s + step;
-                    return (slope > 0.0 && s_root >= lo && s_root <= hi)
-                        .then(|| (s_root, slope.copysign(q)));
+            // Accept the Newton step if |G(s + delta)| <= u2 delta²/2 <= tol (times rm³, no
+            // division): u2 rm³ = max(2 rm³, 2 R h² - 2 rm³), rm = rho - |delta|.
+            let rm = rho - delta.abs();
+            let rm3 = rm * rm * rm;
+            let u2m = (2.0 * rm3).max(2.0 * rh - 2.0 * rm3);
+            if rm > 0.0 && 0.5 * u2m * delta * delta <= tol_g * rm3 {
+                return root(s + delta, delta, rm3, u2m, (q, rho));
+            }
+            // Close to the root: the Chebyshev step, error O(delta³).
+            let mut step = delta;
+            if delta.abs() <= 1e-2 * self.r {
+                // G''/(2G') delta² = (rho³ - R h²)/(2 q rho²) delta².
+                let eps = -0.5 * (rho * rho2 - rh) * delta * delta * inv;
+                let cheb = delta + eps;
+                let rm = rho - cheb.abs();
+                if eps.abs() <= 0.5 * delta.abs() && rm > 0.0 {
+                    // The bound times rm⁴; u3 rm⁴ / 6 = R h².
+                    let rm3 = rm * rm * rm;
+                    let u2m = (2.0 * rm3).max(2.0 * rh - 2.0 * rm3);
+                    let cubed = cheb.abs() * cheb * cheb;
+                    let bound = u2m * rm * ((delta * eps).abs() + 0.5 * eps * eps) + rh * cubed;
+                    if bound <= tol_g * rm3 * rm {
+                        return root(s + cheb, cheb, rm3, u2m, (q, rho));
+                    }
+                    step = cheb;
                 }
             }
             s += step;
@@ -281,25 +309,34 @@ impl RayFunction for TorusRay {
     }
 
     fn g2_bounds(&self, a: f64, b: f64) -> (f64, f64) {
-        let hi = 2.0 * (1.0 + 1e-12);
-        if self.v2 == 0.0 {
-            return (2.0 * (1.0 - 1e-12), hi); // rho constant along the ray
-        }
-        // Smallest rho over [a, b]: the projected line's closest approach, clamped.
-        let (o, d) = (&self.o, &self.d);
-        let sc = (-(o.x * d.x + o.y * d.y) / self.v2).clamp(a, b);
-        let (wx, wy) = (o.x + sc * d.x, o.y + sc * d.y);
-        let rmin2 = wx * wx + wy * wy;
-        if self.h2 == 0.0 {
+        // G'' = 2 - 2R h²/rho³ (exact along a unit ray): its bounds over [a, b] follow from
+        // the extreme values of rho, which is convex along the ray: the minimum at the
+        // projected line's closest approach to the axis (clamped), the maximum at an end.
+        if self.v2 == 0.0 || self.h2 == 0.0 {
+            let two = (2.0 * (1.0 - 1e-12), 2.0 * (1.0 + 1e-12));
+            if self.v2 == 0.0 {
+                return two; // rho constant along the ray
+            }
             // The ray meets the axis: rho'' = 0 except at the crossing (a kink).
-            return if rmin2 > 0.0 {
-                (2.0 * (1.0 - 1e-12), hi)
+            let (o, d) = (&self.o, &self.d);
+            let sc = -(o.x * d.x + o.y * d.y) / self.v2;
+            return if sc >= a && sc <= b {
+                (f64::NEG_INFINITY, two.1)
             } else {
-                (f64::NEG_INFINITY, hi)
+                two
             };
         }
-        let lo = 2.0 - 2.0 * self.big_r * self.h2 / (rmin2 * rmin2.sqrt());
-        (lo - 1e-9 * lo.abs() - 1e-12, hi)
+        let (o, d) = (&self.o, &self.d);
+        let rho2_at = |s: f64| {
+            let (wx, wy) = (o.x + s * d.x, o.y + s * d.y);
+            wx * wx + wy * wy
+        };
+        let sc = (-(o.x * d.x + o.y * d.y) / self.v2).clamp(a, b);
+        let rmin2 = rho2_at(sc);
+        let rmax2 = rho2_at(a).max(rho2_at(b));
+        let term = |r2: f64| 2.0 * self.big_r * self.h2 / (r2 * r2.sqrt());
+        let (lo, hi) = (2.0 - term(rmin2), 2.0 - term(rmax2));
+        (lo - 1e-9 * lo.abs() - 1e-12, hi + 1e-9 * hi.abs() + 1e-12)
     }
 
     fn free_step(&self, at_a: &Sample, _a: f64, _b: f64) -> f64 {
@@ -416,8 +453,13 @@ impl Shape for Torus {
             let og = o + d * t_guess;
             let ray = self.ray(og, *d);
             let (lo, hi) = (t_min - t_guess, t_max - t_guess);
-            if let Some((s, g1)) = ray.newton(lo, hi) {
-                if (g1 < 0.0 && ray.convex_on(lo, s)) || trace::certify(&ray, lo, s, g1) {
+            if let Some(root) = ray.newton(lo, hi) {
+                let s = root.s;
+                if root.slope_num < 0.0 && ray.convex_on(lo, s) {
+                    return Some(t_guess + s);
+                }
+                let g1 = root.slope();
+                if trace::certify(&ray, lo, s, g1) {
                     return Some(t_guess + s);
                 }
                 if let Some(clip) = self.clip(&og, d, lo, hi)

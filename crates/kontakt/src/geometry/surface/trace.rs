@@ -123,10 +123,11 @@ pub(crate) fn first_root<F: RayFunction>(func: &F, lo: f64, hi: f64) -> Option<f
                 return Some(polish(func, s, smp, b, smp_b, pos));
             }
         }
-        // (2) The longest step proved root free, over shrinking windows (tighter bounds).
+        // (2) The longest step proved root free, over shrinking windows (tighter bounds),
+        // down to the step already proved.
         let mut step = 0.0f64;
         let mut w = rem;
-        for _ in 0..6 {
+        for _ in 0..48 {
             let (lo2, hi2) = func.g2_bounds(s, s + w);
             let l = if pos { lo2 } else { -hi2 };
             let tq = if g > 0.0 {
@@ -138,7 +139,7 @@ pub(crate) fn first_root<F: RayFunction>(func: &F, lo: f64, hi: f64) -> Option<f
             if step >= 0.5 * w {
                 break;
             }
-            w *= 0.125;
+            w *= 0.25;
             if w <= step {
                 break;
             }
