@@ -62,14 +62,15 @@
 //! | module | what | status |
 //! |---|---|---|
 //! | [`material`] | elastic materials, E*, G, Dundurs' parameters | done |
-//! | [`geometry`] | principal curvatures, relative curvature, sampling grids | curvature & grids done; analytic surfaces and ray tracing come with the PimP issue |
+//! | [`geometry`] | principal curvatures, relative curvature, sampling grids, analytic surfaces with ray casting and the contact point from poses | done |
 //! | [`hertz`] | exact point (elliptical/circular) and line contact, approximations, subsurface stress and yield, impact, JKR adhesion | done |
-//! | [`io`] | serde case files (TOML) and stable, unit-suffixed result records (JSON) | Hertz cases |
+//! | [`pimp`] | PimP: substitute geometry, Winkler bedding (published / corrected), force equilibrium, zone shape | done |
+//! | [`bearing`] | roller end face / rib pair of a tapered roller bearing (seed 000 Table 1) | roller/rib done; kinematics to come |
+//! | [`io`] | serde case files (TOML) and stable, unit-suffixed result records (JSON) | Hertz and PimP cases |
 //!
-//! Planned, each in its own module with the same conventions: `pimp` (roller end / rib,
-//! Winkler bedding), `halfspace` (FFT boundary elements), `tangential` (Cattaneo-Mindlin,
-//! Carter, Kalker, FASTSIM), `bearing` (roller-end/rib geometry and kinematics) and
-//! `plot`. See `ARCHITECTURE.md`.
+//! Planned, each in its own module with the same conventions: `halfspace` (FFT boundary
+//! elements), `tangential` (Cattaneo-Mindlin, Carter, Kalker, FASTSIM) and bearing
+//! kinematics; plots live in the `kontakt-plot` crate. See `ARCHITECTURE.md`.
 //!
 //! ## References
 //! The bibliography is in `docs/references.md`; each item's docs cite equation numbers.

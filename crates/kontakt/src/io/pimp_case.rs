@@ -48,7 +48,7 @@ use crate::geometry::surface::{Material, PlacedSurface, Profile, Surface};
 use crate::hertz::{HertzPointContact, PointGeometry};
 use crate::material::ElasticMaterial;
 use crate::pimp::{GapSource, Mode, Pimp, PimpOptions, PimpSolution, QuadraticGap, SurfacePairGap};
-use nalgebra::{Isometry3, Point3, Translation3, Unit, UnitQuaternion, Vector3};
+use nalgebra::{Point3, Unit, Vector3};
 use serde::{Deserialize, Serialize};
 
 /// A PimP case, as read from TOML.
@@ -267,12 +267,7 @@ impl SurfaceSpec {
                 "finite coordinates in mm",
             ));
         }
-        let rotation =
-            UnitQuaternion::rotation_between(&Vector3::z(), &axis).unwrap_or_else(|| {
-                UnitQuaternion::from_axis_angle(&Vector3::x_axis(), std::f64::consts::PI)
-            });
-        let pose =
-            Isometry3::from_parts(Translation3::from(Vector3::from(self.origin_mm)), rotation);
+        let pose = crate::bearing::roller_rib::frame_along(Point3::from(self.origin_mm), &axis);
         PlacedSurface::new(surface, pose).map_err(|e| e.map_field(|k| format!("{prefix}.{k}")))
     }
 }
@@ -371,16 +366,7 @@ pub struct PimpOutcome {
 }
 
 fn material(m: &MaterialSpec, prefix: &str) -> Result<ElasticMaterial> {
-    ElasticMaterial::new(m.e_mpa, m.nu).map_err(|e| {
-        e.map_field(|f| {
-            let key = match f {
-                "youngs_modulus" => "e_mpa",
-                "poisson_ratio" => "nu",
-                other => other,
-            };
-            format!("{prefix}.{key}")
-        })
-    })
+    super::report::material_keys(m.e_mpa, m.nu, prefix)
 }
 
 /// Build a roller/rib pair from a `[geometry]` table of kind `roller_rib`.

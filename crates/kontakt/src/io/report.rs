@@ -143,7 +143,13 @@ fn ser_radii_array<S: Serializer>(radii: &[f64; 2], s: S) -> std::result::Result
 }
 
 fn material(body: &BodySpec, prefix: &'static str) -> Result<ElasticMaterial> {
-    ElasticMaterial::new(body.e_mpa, body.nu).map_err(|e| {
+    material_keys(body.e_mpa, body.nu, prefix)
+}
+
+/// An elastic material from case-file values, errors named by their keys
+/// (`body1.e_mpa`, `body2.nu`); shared by the Hertz and PimP schemas.
+pub(crate) fn material_keys(e_mpa: f64, nu: f64, prefix: &str) -> Result<ElasticMaterial> {
+    ElasticMaterial::new(e_mpa, nu).map_err(|e| {
         e.map_field(|f| {
             let key = match f {
                 "youngs_modulus" => "e_mpa",
