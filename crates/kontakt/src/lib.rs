@@ -81,6 +81,7 @@
 pub mod bearing;
 pub mod error;
 pub mod geometry;
+pub mod halfspace;
 pub mod hertz;
 pub mod io;
 pub mod material;

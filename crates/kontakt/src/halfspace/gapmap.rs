@@ -1,0 +1,222 @@
+//! User-supplied gap or height maps (CSV or NumPy `.npy`) on a uniform grid.
+
+use crate::error::{Error, Result, positive_as};
+use crate::geometry::Grid2;
+use serde::{Deserialize, Serialize};
+use std::path::Path;
+
+/// What the map's values are.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum MapKind {
+    /// The undeformed gap between the bodies \[mm\], used as it is (the approach is
+    /// measured from its zero level).
+    #[default]
+    Gap,
+    /// The height \[mm\] of the combined (sum) topography of the two surfaces, pressed
+    /// against each other: the gap is `max(z) - z`, so the highest summit touches first.
+    Height,
+}
+
+/// A gap on a uniform cell-centred grid centred on the origin \[mm\].
+#[derive(Debug, Clone, PartialEq)]
+pub struct GapMap {
+    grid: Grid2,
+    values: Vec<f64>,
+}
+
+impl GapMap {
+    /// A map from `values` (row-major, x fastest: `ny` rows of `nx` values) with cell
+    /// spacing `spacing = [dx, dy]` \[mm\].
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] for a count that is not `nx·ny`, a non-finite value (the
+    /// error names its row and column), a non-positive spacing, or fewer than 2 cells a
+    /// side.
+    pub fn new(
+        nx: usize,
+        ny: usize,
+        spacing: [f64; 2],
+        values: Vec<f64>,
+        kind: MapKind,
+    ) -> Result<Self> {
+        positive_as("spacing[0]", spacing[0], "a finite cell size > 0 mm")?;
+        positive_as("spacing[1]", spacing[1], "a finite cell size > 0 mm")?;
+        if nx < 2 || ny < 2 {
+            return Err(Error::invalid(
+                "gap_map",
+                format!("{nx} x {ny} cells"),
+                "at least 2 x 2 cells",
+            ));
+        }
+        if values.len() != nx * ny {
+            return Err(Error::invalid(
+                "gap_map",
+                format!("{} values", values.len()),
+                format!("{} values for {nx} x {ny} cells", nx * ny),
+            ));
+        }
+        if let Some(k) = values.iter().position(|v| !v.is_finite()) {
+            return Err(Error::invalid(
+                "gap_map",
+                format!("{} at row {}, column {}", values[k], k / nx + 1, k % nx + 1),
+                "finite values in mm",
+            ));
+        }
+        let grid = Grid2::centered(
+            0.5 * nx as f64 * spacing[0],
+            0.5 * ny as f64 * spacing[1],
+            nx,
+            ny,
+        )?;
+        let values = match kind {
+            MapKind::Gap => values,
+            MapKind::Height => {
+                let top = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+                values.into_iter().map(|z| top - z).collect()
+            }
+        };
+        Ok(GapMap { grid, values })
+    }
+
+    /// Read a map from a CSV file (one grid row per line, `y` down the file, `x` across,
+    /// comma-separated numbers, no header) or a `.npy` file (a 2-D float64 or float32
+    /// array of shape `(ny, nx)`, C order).
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] naming the file for an unreadable or malformed file, a
+    /// ragged CSV row (named), or the errors of [`GapMap::new`].
+    pub fn read(path: &Path, spacing: [f64; 2], kind: MapKind) -> Result<Self> {
+        let file_err = |why: String| {
+            Error::invalid(
+                "gap_map.file",
+                path.display(),
+                format!("a readable CSV or .npy gap map ({why})"),
+            )
+        };
+        let bytes = std::fs::read(path).map_err(|e| file_err(e.to_string()))?;
+        let is_npy = path
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("npy"));
+        let (nx, ny, values) = if is_npy {
+            read_npy(&bytes).map_err(file_err)?
+        } else {
+            read_csv(&bytes).map_err(file_err)?
+        };
+        GapMap::new(nx, ny, spacing, values, kind)
+    }
+
+    /// The grid \[mm\].
+    pub fn grid(&self) -> &Grid2 {
+        &self.grid
+    }
+
+    /// The gap per cell \[mm\], row-major with x fastest.
+    pub fn values(&self) -> &[f64] {
+        &self.values
+    }
+}
+
+fn read_csv(bytes: &[u8]) -> std::result::Result<(usize, usize, Vec<f64>), String> {
+    let mut reader = csv::ReaderBuilder::new()
+        .has_headers(false)
+        .trim(csv::Trim::All)
+        .comment(Some(b'#'))
+        .flexible(true)
+        .from_reader(bytes);
+    let mut values = Vec::new();
+    let mut nx = 0;
+    let mut ny = 0;
+    for (row, record) in reader.records().enumerate() {
+        let record = record.map_err(|e| e.to_string())?;
+        if record.iter().all(str::is_empty) {
+            continue;
+        }
+        if ny == 0 {
+            nx = record.len();
+        } else if record.len() != nx {
+            return Err(format!(
+                "row {} has {} values, the first row {nx}",
+                row + 1,
+                record.len()
+            ));
+        }
+        for (col, field) in record.iter().enumerate() {
+            let v: f64 = field.parse().map_err(|_| {
+                format!(
+                    "row {}, column {}: `{field}` is not a number",
+                    row + 1,
+                    col + 1
+                )
+            })?;
+            values.push(v);
+        }
+        ny += 1;
+    }
+    Ok((nx, ny, values))
+}
+
+fn read_npy(bytes: &[u8]) -> std::result::Result<(usize, usize, Vec<f64>), String> {
+    let npy = npyz::NpyFile::new(bytes).map_err(|e| e.to_string())?;
+    let shape = npy.shape().to_vec();
+    if shape.len() != 2 {
+        return Err(format!(
+            "a 2-D array is needed, the file holds shape {shape:?}"
+        ));
+    }
+    if npy.order() != npyz::Order::C {
+        return Err("the array must be in C order (numpy's default)".into());
+    }
+    let (ny, nx) = (shape[0] as usize, shape[1] as usize);
+    let dtype = npy.dtype();
+    let values = match npy.into_vec::<f64>() {
+        Ok(v) => v,
+        Err(_) => npyz::NpyFile::new(bytes)
+            .and_then(|f| f.into_vec::<f32>())
+            .map_err(|_| format!("float64 or float32 values are needed, the file holds {dtype:?}"))?
+            .into_iter()
+            .map(f64::from)
+            .collect(),
+    };
+    Ok((nx, ny, values))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn csv_rows_and_errors() {
+        let (nx, ny, v) = read_csv(b"1, 2, 3\n4,5,6\n").unwrap();
+        assert_eq!((nx, ny), (3, 2));
+        assert_eq!(v, vec![1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
+        let e = read_csv(b"1,2,3\n4,5\n").unwrap_err();
+        assert!(e.contains("row 2 has 2 values"), "{e}");
+        let e = read_csv(b"1,x\n").unwrap_err();
+        assert!(e.contains("`x` is not a number"), "{e}");
+    }
+
+    #[test]
+    fn nan_and_shape_errors_name_the_place() {
+        let e = GapMap::new(
+            2,
+            2,
+            [0.1, 0.1],
+            vec![0.0, 1.0, f64::NAN, 2.0],
+            MapKind::Gap,
+        )
+        .unwrap_err();
+        assert_eq!(e.field(), Some("gap_map"));
+        assert!(e.to_string().contains("row 2, column 1"), "{e}");
+        let e = GapMap::new(2, 2, [0.1, 0.1], vec![0.0; 3], MapKind::Gap).unwrap_err();
+        assert!(e.to_string().contains("4 values"), "{e}");
+        let e = GapMap::new(2, 2, [0.0, 0.1], vec![0.0; 4], MapKind::Gap).unwrap_err();
+        assert_eq!(e.field(), Some("spacing[0]"));
+    }
+
+    #[test]
+    fn height_map_turns_into_a_gap() {
+        let m = GapMap::new(2, 2, [0.1, 0.1], vec![0.0, 3.0, 1.0, 2.0], MapKind::Height).unwrap();
+        assert_eq!(m.values(), &[3.0, 0.0, 2.0, 1.0]);
+    }
+}

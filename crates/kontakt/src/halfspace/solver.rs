@@ -1,0 +1,530 @@
+//! The constrained conjugate-gradient solver of Polonsky and Keer (1999) on a planned
+//! [`ElasticOperator`]: plan once, solve many, no allocation per iteration.
+
+use super::operator::{Boundary, ElasticOperator};
+use crate::error::{Error, Result, positive_as};
+use crate::geometry::Grid2;
+use serde::{Deserialize, Serialize};
+
+/// What a solve holds fixed.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Control {
+    /// The normal force \[N\], > 0 (load control).
+    Force(f64),
+    /// The rigid approach \[mm\] measured from the gap's zero level, > 0 (displacement
+    /// control).
+    Approach(f64),
+}
+
+/// Where the iteration starts.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Start {
+    /// From a Hertz-like estimate built from the gap (docs/halfspace.md §3).
+    Cold,
+    /// From the pressure of the previous solve on this solver (the multi-body time step).
+    /// Falls back to [`Start::Cold`] when there is none.
+    Warm,
+}
+
+/// Solver settings.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct SolverOptions {
+    /// Relative residual to reach, in \[1e-14, 1e-2\] (default 1e-8). The residual is
+    /// the RMS gap error (gap on loaded cells and overlap on unloaded ones) divided by the
+    /// mean elastic displacement of the loaded cells: a dimensionless measure of how far
+    /// the complementarity conditions are from holding (docs/halfspace.md §2).
+    pub tolerance: f64,
+    /// Most iterations, >= 1 (default 1000).
+    pub max_iterations: usize,
+    /// Threads of the FFT passes: unset uses all cores, 1 runs serially.
+    pub threads: Option<usize>,
+    /// Free (isolated contact) or periodic edges.
+    pub boundary: Boundary,
+}
+
+impl Default for SolverOptions {
+    fn default() -> Self {
+        SolverOptions {
+            tolerance: 1e-8,
+            max_iterations: 1000,
+            threads: None,
+            boundary: Boundary::Free,
+        }
+    }
+}
+
+impl SolverOptions {
+    /// Check every option.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] naming the option.
+    pub fn validate(&self) -> Result<()> {
+        if !(1e-14..=1e-2).contains(&self.tolerance) {
+            return Err(Error::invalid(
+                "tolerance",
+                self.tolerance,
+                "1e-14 <= tolerance <= 1e-2",
+            ));
+        }
+        if self.max_iterations == 0 {
+            return Err(Error::invalid("max_iterations", 0, ">= 1"));
+        }
+        if self.threads == Some(0) {
+            return Err(Error::invalid("threads", 0, ">= 1, or unset for all cores"));
+        }
+        Ok(())
+    }
+}
+
+/// Outcome of one solve (a small copyable summary; the fields stay in the solver).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SolveReport {
+    /// Whether the residual reached the tolerance.
+    pub converged: bool,
+    /// Iterations performed.
+    pub iterations: usize,
+    /// Applications of the elastic operator (FFT convolutions): one or two per iteration.
+    pub applications: usize,
+    /// Final relative residual (see [`SolverOptions::tolerance`]).
+    pub residual: f64,
+    /// Normal force \[N\]: the sum of pressure times cell area.
+    pub force: f64,
+    /// Rigid approach \[mm\] from the gap's zero level.
+    pub approach: f64,
+    /// Largest pressure \[MPa\].
+    pub max_pressure: f64,
+    /// Loaded cells.
+    pub contact_cells: usize,
+    /// Contact area \[mm²\]: loaded cells times the cell area.
+    pub contact_area: f64,
+    /// Largest overlap left on an unloaded cell \[mm\] (0 when none).
+    pub max_overlap: f64,
+    /// Largest |gap| on a loaded cell \[mm\].
+    pub max_contact_gap: f64,
+}
+
+/// A half-space contact solver for one grid: the FFT plan and every work array.
+#[derive(Debug)]
+pub struct HalfSpaceSolver {
+    grid: Grid2,
+    e_star: f64,
+    options: SolverOptions,
+    op: ElasticOperator,
+    p: Vec<f64>,
+    u: Vec<f64>,
+    g: Vec<f64>,
+    t: Vec<f64>,
+    r: Vec<f64>,
+    /// The Hertz-like estimate of the last solve (for the warm start's correction).
+    guess: Vec<f64>,
+    has_solution: bool,
+    approach: f64,
+}
+
+/// Recompute the displacement from the pressure at least this often, so that the
+/// incremental update `u -= τ K t` cannot drift.
+const REFRESH_EVERY: usize = 32;
+
+impl HalfSpaceSolver {
+    /// Plan a solver for `grid` \[mm\] and the contact modulus `e_star` \[MPa\]
+    /// (see [`crate::material::effective_modulus`]).
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] for a non-positive modulus or an invalid option.
+    pub fn new(grid: Grid2, e_star: f64, options: SolverOptions) -> Result<Self> {
+        options.validate()?;
+        let op = ElasticOperator::new(&grid, e_star, options.boundary, options.threads)?;
+        let n = grid.len();
+        Ok(HalfSpaceSolver {
+            grid,
+            e_star,
+            options,
+            op,
+            p: vec![0.0; n],
+            u: vec![0.0; n],
+            g: vec![0.0; n],
+            t: vec![0.0; n],
+            r: vec![0.0; n],
+            guess: vec![0.0; n],
+            has_solution: false,
+            approach: 0.0,
+        })
+    }
+
+    /// The grid.
+    pub fn grid(&self) -> &Grid2 {
+        &self.grid
+    }
+
+    /// The contact modulus \[MPa\].
+    pub fn e_star(&self) -> f64 {
+        self.e_star
+    }
+
+    /// The options.
+    pub fn options(&self) -> &SolverOptions {
+        &self.options
+    }
+
+    /// Pressure \[MPa\] of the last solve, row-major with x fastest.
+    pub fn pressure(&self) -> &[f64] {
+        &self.p
+    }
+
+    /// Elastic displacement \[mm\] of the two-body system (sum of both surfaces' normal
+    /// displacements) of the last solve.
+    pub fn displacement(&self) -> &[f64] {
+        &self.u
+    }
+
+    /// Deformed gap \[mm\] of the last solve: `h + u - approach`, zero where loaded.
+    pub fn deformed_gap(&self) -> &[f64] {
+        &self.g
+    }
+
+    /// Bytes held by the solver: the FFT plan plus six fields of `nx·ny` values.
+    pub fn memory_bytes(&self) -> usize {
+        self.op.memory_bytes() + 6 * 8 * self.grid.len()
+    }
+
+    /// Solve the contact for the undeformed gap `gap` \[mm\] (row-major, x fastest; `>= 0`
+    /// where the bodies can meet, `+inf` where they cannot) under `control`.
+    ///
+    /// Non-convergence is not an error: the report says `converged: false` and the
+    /// fields hold the last iterate. Use [`SolveReport`]'s fields or
+    /// [`HalfSpaceSolver::require_converged`].
+    ///
+    /// # Errors
+    /// - [`Error::InvalidInput`] for a gap of the wrong length, a NaN or `-inf` gap value,
+    ///   a non-positive force or approach.
+    /// - [`Error::Geometry`] when the approach does not bring the bodies into contact.
+    pub fn solve(&mut self, gap: &[f64], control: Control, start: Start) -> Result<SolveReport> {
+        let n = self.grid.len();
+        if gap.len() != n {
+            return Err(Error::invalid(
+                "gap",
+                format!("{} values", gap.len()),
+                format!("{n} values ({} x {} grid)", self.grid.nx(), self.grid.ny()),
+            ));
+        }
+        if let Some((k, v)) = gap
+            .iter()
+            .enumerate()
+            .find(|(_, v)| v.is_nan() || **v == f64::NEG_INFINITY)
+        {
+            return Err(Error::invalid(
+                "gap",
+                format!(
+                    "{v} at cell ({}, {})",
+                    k % self.grid.nx(),
+                    k / self.grid.nx()
+                ),
+                "finite values in mm, or +inf where the bodies cannot meet",
+            ));
+        }
+        let h_min = gap.iter().copied().fold(f64::INFINITY, f64::min);
+        if !h_min.is_finite() {
+            return Err(Error::Geometry {
+                field: "gap".into(),
+                reason: "the gap is +inf everywhere: the bodies cannot meet on this grid".into(),
+            });
+        }
+        match control {
+            Control::Force(f) => {
+                positive_as("force", f, "a finite force > 0 N")?;
+            }
+            Control::Approach(d) => {
+                positive_as("approach", d, "a finite approach > 0 mm")?;
+                if d <= h_min {
+                    return Err(Error::Geometry {
+                        field: "approach".into(),
+                        reason: format!(
+                            "approach {d:e} mm does not reach the smallest gap {h_min:e} mm: \
+                             the bodies do not touch"
+                        ),
+                    });
+                }
+            }
+        }
+        let warm = start == Start::Warm && self.has_solution;
+        let da = self.grid.cell_area();
+        if warm {
+            // Previous solution plus the change of the Hertz-like estimate: the estimate
+            // carries the growth of the zone, the previous solution the discrete and
+            // non-Hertzian detail (docs/halfspace.md §4).
+            hertz_guess(gap, control, h_min, self.e_star, da, &mut self.t);
+            for ((p, new), old) in self.p.iter_mut().zip(&self.t).zip(&self.guess) {
+                *p = (*p + new - old).max(0.0);
+            }
+            std::mem::swap(&mut self.t, &mut self.guess);
+        } else {
+            hertz_guess(gap, control, h_min, self.e_star, da, &mut self.guess);
+            self.p.copy_from_slice(&self.guess);
+        }
+        if let Control::Force(f) = control {
+            let total = self.p.iter().sum::<f64>() * da;
+            if total > 0.0 {
+                let s = f / total;
+                self.p.iter_mut().for_each(|v| *v *= s);
+            } else {
+                self.p.copy_from_slice(&self.guess);
+            }
+        }
+        let report = self.iterate(gap, control)?;
+        self.has_solution = true;
+        Ok(report)
+    }
+
+    /// Turn a non-converged report into [`Error::NotConverged`].
+    ///
+    /// # Errors
+    /// [`Error::NotConverged`] when `report.converged` is false.
+    pub fn require_converged(report: SolveReport) -> Result<SolveReport> {
+        if report.converged {
+            Ok(report)
+        } else {
+            Err(Error::NotConverged {
+                what: "half-space contact solve".into(),
+                iterations: report.iterations,
+                residual: report.residual,
+            })
+        }
+    }
+
+    /// Polonsky and Keer's iteration (1999, §3) with an incremental displacement update.
+    fn iterate(&mut self, gap: &[f64], control: Control) -> Result<SolveReport> {
+        let tol = self.options.tolerance;
+        let da = self.grid.cell_area();
+        let HalfSpaceSolver {
+            op, p, u, g, t, r, ..
+        } = self;
+        let mut u_valid = false;
+        let mut since_refresh = 0usize;
+        let mut g_old = 0.0f64;
+        let mut conjugate = false;
+        let mut residual;
+        let mut approach;
+        let mut iterations = 0usize;
+        let mut converged = false;
+        let mut applications = 0usize;
+        loop {
+            if !u_valid || since_refresh >= REFRESH_EVERY {
+                op.apply(p, u)?;
+                applications += 1;
+                u_valid = true;
+                since_refresh = 0;
+            }
+            // Gap of the current pressure and the approach that fits it.
+            let mut n_c = 0usize;
+            let mut sum_g = 0.0;
+            let mut sum_u = 0.0;
+            for i in 0..p.len() {
+                g[i] = u[i] + gap[i];
+                if p[i] > 0.0 {
+                    n_c += 1;
+                    sum_g += g[i];
+                    sum_u += u[i];
+                }
+            }
+            approach = match control {
+                Control::Force(_) if n_c > 0 => sum_g / n_c as f64,
+                Control::Force(_) => 0.0,
+                Control::Approach(d) => d,
+            };
+            let mut big_g = 0.0;
+            let mut overlap2 = 0.0;
+            for i in 0..p.len() {
+                g[i] -= approach;
+                if p[i] > 0.0 {
+                    big_g += g[i] * g[i];
+                } else if g[i] < 0.0 {
+                    overlap2 += g[i] * g[i];
+                }
+            }
+            let scale = if n_c > 0 {
+                (sum_u / n_c as f64).abs()
+            } else {
+                0.0
+            };
+            residual = if n_c == 0 {
+                f64::INFINITY
+            } else if scale > 0.0 {
+                ((big_g + overlap2) / n_c as f64).sqrt() / scale
+            } else if big_g + overlap2 == 0.0 {
+                0.0
+            } else {
+                f64::INFINITY
+            };
+            if residual <= tol {
+                if since_refresh > 0 {
+                    // Confirm on a freshly computed displacement.
+                    u_valid = false;
+                    continue;
+                }
+                converged = true;
+                break;
+            }
+            if iterations >= self.options.max_iterations {
+                break;
+            }
+            iterations += 1;
+            // Conjugate direction on the loaded cells.
+            let beta = if conjugate && g_old > 0.0 {
+                big_g / g_old
+            } else {
+                0.0
+            };
+            g_old = big_g;
+            for i in 0..p.len() {
+                t[i] = if p[i] > 0.0 { g[i] + beta * t[i] } else { 0.0 };
+            }
+            op.apply(t, r)?;
+            applications += 1;
+            since_refresh += 1;
+            let mut r_mean = 0.0;
+            if matches!(control, Control::Force(_)) && n_c > 0 {
+                for i in 0..p.len() {
+                    if p[i] > 0.0 {
+                        r_mean += r[i];
+                    }
+                }
+                r_mean /= n_c as f64;
+            }
+            let (mut num, mut den) = (0.0, 0.0);
+            for i in 0..p.len() {
+                if p[i] > 0.0 {
+                    num += g[i] * t[i];
+                    den += (r[i] - r_mean) * t[i];
+                }
+            }
+            let tau = if den > 0.0 { num / den } else { 0.0 };
+            // Step, clip, and re-admit overlapping cells.
+            let mut changed_set = false;
+            let mut reset = false;
+            for i in 0..p.len() {
+                if p[i] > 0.0 {
+                    p[i] -= tau * t[i];
+                    if p[i] <= 0.0 {
+                        p[i] = 0.0;
+                        changed_set = true;
+                    }
+                } else if g[i] < 0.0 {
+                    p[i] = -tau * g[i];
+                    if p[i] > 0.0 {
+                        reset = true;
+                        changed_set = true;
+                    } else {
+                        p[i] = 0.0;
+                    }
+                }
+            }
+            conjugate = !reset;
+            if u_valid && !changed_set {
+                for i in 0..p.len() {
+                    u[i] -= tau * r[i];
+                }
+            } else {
+                u_valid = false;
+            }
+            if let Control::Force(f) = control {
+                let total = p.iter().sum::<f64>() * da;
+                if total > 0.0 {
+                    let s = f / total;
+                    p.iter_mut().for_each(|v| *v *= s);
+                    if u_valid {
+                        u.iter_mut().for_each(|v| *v *= s);
+                    }
+                }
+            }
+        }
+        // Summaries on the final state (g holds the gap of this pressure).
+        let (mut cells, mut pmax, mut force) = (0usize, 0.0f64, 0.0);
+        let (mut max_overlap, mut max_contact_gap) = (0.0f64, 0.0f64);
+        for i in 0..p.len() {
+            if p[i] > 0.0 {
+                cells += 1;
+                pmax = pmax.max(p[i]);
+                force += p[i];
+                max_contact_gap = max_contact_gap.max(g[i].abs());
+            } else if g[i] < 0.0 {
+                max_overlap = max_overlap.max(-g[i]);
+            }
+        }
+        self.approach = approach;
+        Ok(SolveReport {
+            converged,
+            iterations,
+            applications,
+            residual,
+            force: force * da,
+            approach,
+            max_pressure: pmax,
+            contact_cells: cells,
+            contact_area: cells as f64 * da,
+            max_overlap,
+            max_contact_gap,
+        })
+    }
+}
+
+/// The Hertz-like start `p ∝ sqrt(d - h)` on `{h < d}` into `out` \[MPa\]. Under load
+/// control `d` follows from the equivalent-circle relation `F = (8/3) E* a (d - h_min)`,
+/// `a² = S(d)/π` (`S(d)` the area of `{h < d}`), which is exact for a Hertz gap; under
+/// approach control `d = h_min + (δ - h_min)/2` and the magnitude follows from the same
+/// relation (docs/halfspace.md §3).
+fn hertz_guess(gap: &[f64], control: Control, h_min: f64, e_star: f64, da: f64, out: &mut [f64]) {
+    let area_below = |d: f64| gap.iter().filter(|&&h| h < d).count() as f64 * da;
+    let force_at =
+        |d: f64| (8.0 / 3.0) * e_star * (area_below(d) / std::f64::consts::PI).sqrt() * (d - h_min);
+    let (d, target) = match control {
+        Control::Approach(delta) => {
+            let d = h_min + 0.5 * (delta - h_min);
+            (d, force_at(d))
+        }
+        Control::Force(f) => {
+            // Bracket, then bisect on the level d.
+            let h_max = gap
+                .iter()
+                .copied()
+                .filter(|h| h.is_finite())
+                .fold(h_min, f64::max);
+            let mut lo = h_min;
+            let mut hi = h_min + (h_max - h_min).max(f64::MIN_POSITIVE);
+            let mut grow = 0;
+            while force_at(hi) < f && grow < 60 {
+                hi = h_min + 2.0 * (hi - h_min);
+                grow += 1;
+            }
+            for _ in 0..40 {
+                let mid = 0.5 * (lo + hi);
+                if force_at(mid) < f {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            (hi, f)
+        }
+    };
+    let mut loaded = 0usize;
+    for (p, &h) in out.iter_mut().zip(gap) {
+        *p = if h < d {
+            loaded += 1;
+            (d - h).sqrt()
+        } else {
+            0.0
+        };
+    }
+    if loaded == 0 {
+        // The level fell between cell values: load the lowest cell(s).
+        for (p, &h) in out.iter_mut().zip(gap) {
+            *p = if h <= h_min { 1.0 } else { 0.0 };
+        }
+    }
+    let sum: f64 = out.iter().sum::<f64>() * da;
+    let s = if sum > 0.0 { target / sum } else { 0.0 };
+    out.iter_mut().for_each(|v| *v *= s);
+}
