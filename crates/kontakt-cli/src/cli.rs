@@ -120,10 +120,11 @@ pub struct SolveArgs {
     /// Print one JSON document instead of the table.
     #[arg(long)]
     pub json: bool,
-    /// PimP cases: write the pressure field to this CSV file (x_mm, y_mm, pressure_mpa).
+    /// PimP and BEM cases: write the fields to this CSV file (x_mm, y_mm, pressure_mpa;
+    /// BEM adds displacement_mm and gap_mm).
     #[arg(long, value_name = "FILE.csv")]
     pub csv: Option<PathBuf>,
-    /// PimP cases: draw the pressure map with the contact outline (.png or .svg).
+    /// PimP and BEM cases: draw the pressure map with the contact outline (.png or .svg).
     #[arg(long, value_name = "FILE.png|svg")]
     pub map: Option<PathBuf>,
 }

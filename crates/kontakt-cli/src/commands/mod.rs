@@ -7,7 +7,7 @@ use kontakt::hertz::subsurface::YieldCriterion;
 use kontakt::io::case::{
     BodySpec, CaseFile, ContactKind, ContactSpec, LoadSpec, Method, YieldSpec,
 };
-use kontakt::io::{Case, run_case, run_pimp_case};
+use kontakt::io::{Case, run_bem_case, run_case, run_pimp_case};
 
 pub mod pimp;
 use std::io::{Read, Write};
@@ -41,7 +41,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                 Case::Hertz(case) => {
                     if args.csv.is_some() || args.map.is_some() {
                         return Err(InputError(format!(
-                            "{label}: --csv and --map need a pressure field: use method = \"pimp\""
+                            "{label}: --csv and --map need a pressure field: use method = \"pimp\" or \"bem\""
                         ))
                         .into());
                     }
@@ -50,17 +50,47 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                 }
                 Case::Pimp(case) => {
                     let outcome = run_pimp_case(&case).with_context(|| label.clone())?;
+                    let s = &outcome.solution;
                     if let Some(path) = &args.csv {
-                        pimp::write_csv(path, &outcome.solution)?;
+                        pimp::write_csv(path, &s.grid, &[("pressure_mpa", &s.pressure)])?;
+                    }
+                    if let Some(path) = &args.map {
+                        let mode = outcome.report.mode.map_or("", |m| m.as_str());
+                        let title = format!(
+                            "{}, {:.0} N, PimP {mode}",
+                            case.name.as_deref().unwrap_or(&outcome.report.geometry),
+                            outcome.report.force_n,
+                        );
+                        pimp::write_map(path, &s.grid, &s.pressure, &title, &[])?;
+                    }
+                    pimp::print_report(out, &outcome.report, args.json)
+                }
+                Case::Bem(case) => {
+                    let base = args
+                        .case
+                        .parent()
+                        .filter(|_| args.case.as_os_str() != "-")
+                        .unwrap_or(std::path::Path::new("."));
+                    let outcome = run_bem_case(&case, base).with_context(|| label.clone())?;
+                    let s = &outcome.solution;
+                    if let Some(path) = &args.csv {
+                        pimp::write_csv(
+                            path,
+                            &s.grid,
+                            &[
+                                ("pressure_mpa", &s.pressure),
+                                ("displacement_mm", &s.displacement),
+                                ("gap_mm", &s.gap),
+                            ],
+                        )?;
                     }
                     if let Some(path) = &args.map {
                         let title = format!(
-                            "{}, {:.0} N, PimP {}",
+                            "{}, {:.0} N, coupled half-space",
                             case.name.as_deref().unwrap_or(&outcome.report.geometry),
                             outcome.report.force_n,
-                            outcome.report.mode.as_str()
                         );
-                        pimp::write_map(path, &outcome.solution, &title)?;
+                        pimp::write_map(path, &s.grid, &s.pressure, &title, &[])?;
                     }
                     pimp::print_report(out, &outcome.report, args.json)
                 }

@@ -6,7 +6,8 @@ use anyhow::{Context, Result};
 use kontakt::bearing::{RollerRib, RollerRibSpec, STUDY_FORCES, TABLE1};
 use kontakt::io::PimpReport;
 use kontakt::material::ElasticMaterial;
-use kontakt::pimp::{Mode, Pimp, PimpOptions, PimpSolution, SurfacePairGap};
+use kontakt::geometry::Grid2;
+use kontakt::pimp::{Mode, Pimp, PimpOptions, SurfacePairGap};
 use kontakt_plot::{FieldMap, LinePlot, LineStyle, PALETTE, Series};
 use std::io::Write;
 use std::path::Path;
@@ -19,18 +20,18 @@ pub fn print_report(out: &mut impl Write, r: &PimpReport, json: bool) -> Result<
         return Ok(());
     }
     let name = r.name.as_deref().unwrap_or("(unnamed)");
-    writeln!(
-        out,
-        "{name}: PimP, {} mode, {}",
-        r.mode.as_str(),
-        r.geometry
-    )?;
+    let method = match r.mode {
+        Some(mode) => format!("PimP, {} mode", mode.as_str()),
+        None => "coupled half-space (BEM)".to_string(),
+    };
+    let column = if r.mode.is_some() { "PimP" } else { "BEM" };
+    writeln!(out, "{name}: {method}, {}", r.geometry)?;
     let hz = |f: &dyn Fn(&kontakt::io::pimp_case::HertzEcho) -> f64, prec: usize| {
         r.hertz
             .as_ref()
             .map_or(String::from("-"), |h| format!("{:.*}", prec, f(h)))
     };
-    writeln!(out, "  {:<26} {:>14} {:>14}", "", "PimP", "Hertz (local)")?;
+    writeln!(out, "  {:<26} {:>14} {:>14}", "", column, "Hertz (local)")?;
     let rows: [(&str, String, String); 6] = [
         (
             "force [N]",
@@ -81,35 +82,47 @@ pub fn print_report(out: &mut impl Write, r: &PimpReport, json: bool) -> Result<
     if let Some(s) = r.separation_mm {
         writeln!(out, "  {:<26} {:>14.6}", "pose separation [mm]", s)?;
     }
+    let work = match &r.solver {
+        Some(s) => format!(
+            "{} iterations ({} FFT convolutions), residual {:.1e} (tolerance {:.0e}), {:?} boundary",
+            r.iterations, s.operator_applications, s.residual, s.tolerance, s.boundary
+        ),
+        None => format!("{} force evaluations", r.iterations),
+    };
     writeln!(
         out,
-        "  grid {} x {} cells of {:.4} x {:.4} mm, {} force evaluations, {} grid resizes",
-        r.grid.cells[0],
-        r.grid.cells[1],
-        r.grid.cell_mm[0],
-        r.grid.cell_mm[1],
-        r.iterations,
-        r.grid_rounds
+        "  grid {} x {} cells of {:.4} x {:.4} mm, {work}, {} domain(s)",
+        r.grid.cells[0], r.grid.cells[1], r.grid.cell_mm[0], r.grid.cell_mm[1], r.grid_rounds
     )?;
     Ok(())
 }
 
-/// Write the pressure field as CSV: one row per cell, `x_mm, y_mm, pressure_mpa`.
-pub fn write_csv(path: &Path, s: &PimpSolution) -> Result<()> {
+/// Write fields as CSV: one row per cell, `x_mm, y_mm` and one column per named field.
+pub fn write_csv(path: &Path, grid: &Grid2, fields: &[(&str, &[f64])]) -> Result<()> {
     let mut w = csv::Writer::from_path(path)
         .map_err(|e| InputError(format!("cannot write {}: {e}", path.display())))?;
-    w.write_record(["x_mm", "y_mm", "pressure_mpa"])?;
-    for ((x, y), p) in s.grid.points().zip(&s.pressure) {
-        w.write_record([format!("{x:.6e}"), format!("{y:.6e}"), format!("{p:.6e}")])?;
+    let mut header = vec!["x_mm", "y_mm"];
+    header.extend(fields.iter().map(|(name, _)| *name));
+    w.write_record(&header)?;
+    for (k, (x, y)) in grid.points().enumerate() {
+        let mut row = vec![format!("{x:.6e}"), format!("{y:.6e}")];
+        row.extend(fields.iter().map(|(_, v)| format!("{:.6e}", v[k])));
+        w.write_record(&row)?;
     }
     w.flush()?;
     Ok(())
 }
 
-/// Draw the pressure map of a solution.
-pub fn write_map(path: &Path, s: &PimpSolution, title: &str) -> Result<()> {
+/// Draw a pressure map with the contact outline and optional overlays.
+pub fn write_map(
+    path: &Path,
+    grid: &Grid2,
+    pressure: &[f64],
+    title: &str,
+    overlays: &[kontakt_plot::Overlay<'_>],
+) -> Result<()> {
     kontakt_plot::Format::from_path(path).map_err(|e| InputError(e.to_string()))?;
-    let g = s.grid;
+    let g = grid;
     let map = FieldMap {
         nx: g.nx(),
         ny: g.ny(),
@@ -117,13 +130,13 @@ pub fn write_map(path: &Path, s: &PimpSolution, title: &str) -> Result<()> {
         y_min: g.y(0) - 0.5 * g.dy(),
         dx: g.dx(),
         dy: g.dy(),
-        values: &s.pressure,
+        values: pressure,
         title,
         x_label: "x [mm]",
         y_label: "y [mm]",
         colorbar_label: "pressure [MPa]",
         outline: true,
-        overlays: &[],
+        overlays,
     };
     kontakt_plot::field_map(path, &map, (900, 640))
         .with_context(|| format!("drawing {}", path.display()))
@@ -196,8 +209,10 @@ pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
                     let file = format!("{name}_400N.png");
                     write_map(
                         &out_dir.join(&file),
-                        &s,
+                        &s.grid,
+                        &s.pressure,
                         &format!("{name}, 400 N, PimP corrected"),
+                        &[],
                     )?;
                     maps.push((name, file));
                 }

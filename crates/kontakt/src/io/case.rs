@@ -3,7 +3,7 @@
 //!
 //! ```toml
 //! name = "ball on flat"
-//! method = "hertz"            # only "hertz" so far
+//! method = "hertz"            # "hertz"; "pimp" and "bem" cases: see io::pimp_case, io::bem_case
 //!
 //! [contact]
 //! kind = "point"              # "point" or "line"
@@ -204,6 +204,8 @@ pub enum Case {
     Hertz(CaseFile),
     /// `method = "pimp"`.
     Pimp(Box<super::pimp_case::PimpCase>),
+    /// `method = "bem"`: the PimP schema solved by the half-space solver.
+    Bem(Box<super::pimp_case::PimpCase>),
 }
 
 impl Case {
@@ -220,7 +222,12 @@ impl Case {
         {
             "hertz" => Ok(Case::Hertz(parse_toml(text)?)),
             "pimp" => Ok(Case::Pimp(Box::new(parse_toml(text)?))),
-            other => Err(Error::invalid("method", other, "\"hertz\" or \"pimp\"")),
+            "bem" => Ok(Case::Bem(Box::new(parse_toml(text)?))),
+            other => Err(Error::invalid(
+                "method",
+                other,
+                "\"hertz\", \"pimp\" or \"bem\"",
+            )),
         }
     }
 }

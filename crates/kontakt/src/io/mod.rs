@@ -4,10 +4,12 @@
 //! [`run_case`] → [`report::ContactReport`]. The schema is documented in
 //! `docs/case-schema.md` and shown by the files in `examples/`.
 
+pub mod bem_case;
 pub mod case;
 pub mod pimp_case;
 pub mod report;
 
+pub use bem_case::{BemOutcome, run_bem_case};
 pub use case::{Case, CaseFile};
 pub use pimp_case::{PimpCase, PimpOutcome, PimpReport, run_pimp_case};
 pub use report::{ContactReport, run_case};

@@ -45,6 +45,7 @@ use crate::bearing::{FaceShape, RibShape, RollerRib, RollerRibSpec, TaperedRolle
 use crate::error::{Error, Result};
 use crate::geometry::RelativeCurvature;
 use crate::geometry::surface::{Material, PlacedSurface, Profile, Surface};
+use crate::halfspace::{Boundary, MapKind};
 use crate::hertz::{HertzPointContact, PointGeometry};
 use crate::material::ElasticMaterial;
 use crate::pimp::{GapSource, Mode, Pimp, PimpOptions, PimpSolution, QuadraticGap, SurfacePairGap};
@@ -58,13 +59,17 @@ pub struct PimpCase {
     /// Optional label echoed in the report.
     #[serde(default)]
     pub name: Option<String>,
-    /// Must be `"pimp"`.
+    /// `"pimp"`, or `"bem"` for the coupled half-space solver (see
+    /// [`super::bem_case`]).
     pub method: String,
     /// The two surfaces.
     pub geometry: GeometrySpec,
-    /// Solver options.
+    /// PimP options (`method = "pimp"`).
     #[serde(default)]
     pub pimp: PimpSpec,
+    /// Half-space solver options (`method = "bem"`).
+    #[serde(default)]
+    pub bem: Option<super::bem_case::BemSpec>,
     /// Body 1 material (the roller for `roller_rib`).
     pub body1: MaterialSpec,
     /// Body 2 material (the ring for `roller_rib`).
@@ -151,6 +156,19 @@ pub enum GeometrySpec {
         /// Angle between the principal planes \[deg\].
         #[serde(default)]
         angle_deg: f64,
+    },
+    /// A gap or height map read from a file (`method = "bem"` only).
+    Map {
+        /// CSV or `.npy` file, relative to the case file's folder.
+        file: String,
+        /// Cell size `[dx, dy]` \[mm\].
+        spacing_mm: [f64; 2],
+        /// What the values are: `gap` (default) or `height` (combined topography).
+        #[serde(default)]
+        values: MapKind,
+        /// `free` (default: an isolated contact) or `periodic` (a rough surface).
+        #[serde(default)]
+        boundary: Boundary,
     },
     /// Two placed analytic surfaces.
     Surfaces {
@@ -282,16 +300,16 @@ pub struct PimpReport {
     pub schema_version: u32,
     /// The case's name.
     pub name: Option<String>,
-    /// `"pimp"`.
+    /// `"pimp"` or `"bem"`.
     pub method: &'static str,
-    /// `"published"` or `"corrected"`.
-    pub mode: Mode,
+    /// PimP's bedding law, `"published"` or `"corrected"` (null for `bem`).
+    pub mode: Option<Mode>,
     /// What was solved, e.g. `roller_rib torus-torus-14`.
     pub geometry: String,
     /// Contact modulus E* \[MPa\].
     pub e_star_mpa: f64,
-    /// Relative curvature [A, B] at the contact point [1/mm].
-    pub relative_curvature_per_mm: [f64; 2],
+    /// Relative curvature [A, B] at the contact point [1/mm] (null for a gap map).
+    pub relative_curvature_per_mm: Option<[f64; 2]>,
     /// Half-extents of the zone along the grid axes \[mm\].
     pub semi_axes_mm: [f64; 2],
     /// Ratio of the half-extents (y / x).
@@ -318,8 +336,10 @@ pub struct PimpReport {
     pub centre_line_curvature_per_mm: Option<f64>,
     /// The grid.
     pub grid: GridEcho,
-    /// Force evaluations of the equilibrium iteration.
+    /// PimP: force evaluations of the equilibrium iteration; bem: solver iterations.
     pub iterations: usize,
+    /// The half-space solver's convergence record (null for PimP).
+    pub solver: Option<super::bem_case::SolverEcho>,
     /// Resizes of the adaptive grid.
     pub grid_rounds: usize,
     /// Separation of the given poses \[mm\] (surfaces only; < 0: interpenetration).
@@ -365,7 +385,7 @@ pub struct PimpOutcome {
     pub solution: PimpSolution,
 }
 
-fn material(m: &MaterialSpec, prefix: &str) -> Result<ElasticMaterial> {
+pub(crate) fn material(m: &MaterialSpec, prefix: &str) -> Result<ElasticMaterial> {
     super::report::material_keys(m.e_mpa, m.nu, prefix)
 }
 
@@ -444,12 +464,95 @@ pub fn run_pimp_case(case: &PimpCase) -> Result<PimpOutcome> {
             other => format!("pimp.{other}"),
         })
     })?;
+    let GapSetup {
+        label,
+        source,
+        separation,
+        rib_angle,
+    } = gap_setup(&case.geometry)?;
+    let map_load = |e: Error| {
+        e.map_field(|f| match f {
+            "force" => "load.force_n".into(),
+            "approach" => "load.approach_mm".into(),
+            "cells" => "pimp.cells".into(),
+            "extent" => "pimp.extent_mm".into(),
+            other => other.into(),
+        })
+    };
+    let solution = match (case.load.force_n, case.load.approach_mm, separation) {
+        (Some(f), None, _) => pimp.solve_force(source.as_ref(), f).map_err(map_load)?,
+        (None, Some(d), _) => pimp.solve_approach(source.as_ref(), d).map_err(map_load)?,
+        (None, None, Some(sep)) => {
+            if sep >= 0.0 {
+                return Err(Error::Geometry {
+                    field: "geometry".into(),
+                    reason: format!(
+                        "the bodies do not touch: separation = {sep:.6e} mm (give load.force_n or \
+                         load.approach_mm to press them together)"
+                    ),
+                });
+            }
+            pimp.solve_approach(source.as_ref(), -sep)
+                .map_err(map_load)?
+        }
+        _ => {
+            return Err(Error::invalid(
+                "load",
+                "none or both of force_n and approach_mm",
+                "exactly one of force_n or approach_mm (or neither for surfaces placed in contact)",
+            ));
+        }
+    };
+    let k = source.curvature();
+    let hertz = hertz_echo(k, m1, m2, solution.force);
+    let report = PimpReport {
+        kontakt_version: crate::VERSION,
+        schema_version: super::report::SCHEMA_VERSION,
+        name: case.name.clone(),
+        method: "pimp",
+        mode: Some(solution.mode),
+        geometry: label,
+        e_star_mpa: crate::material::effective_modulus(&m1, &m2),
+        relative_curvature_per_mm: Some([k.a_coef, k.b_coef]),
+        semi_axes_mm: solution.semi_axes,
+        axis_ratio: solution.semi_axes[1] / solution.semi_axes[0],
+        orientation_deg: solution.orientation.to_degrees(),
+        force_n: solution.force,
+        approach_mm: solution.approach,
+        max_pressure_mpa: solution.max_pressure,
+        mean_pressure_mpa: solution.mean_pressure,
+        contact_area_mm2: solution.contact_area,
+        patches: solution.zone.patches,
+        centroid_mm: solution.zone.centroid,
+        extents_mm: solution.zone.extents,
+        centre_line_curvature_per_mm: solution.zone.centre_line_curvature,
+        grid: GridEcho::of(&solution.grid),
+        iterations: solution.iterations,
+        solver: None,
+        grid_rounds: solution.grid_rounds,
+        separation_mm: separation,
+        rib_angle_deg: rib_angle,
+        hertz,
+    };
+    Ok(PimpOutcome { report, solution })
+}
+
+/// The substitute geometry of a case and what the report echoes about it.
+pub(crate) struct GapSetup {
+    pub label: String,
+    pub source: Box<dyn GapSource>,
+    pub separation: Option<f64>,
+    pub rib_angle: Option<f64>,
+}
+
+/// Build the gap source of a `[geometry]` table (every kind but `map`).
+pub(crate) fn gap_setup(geometry: &GeometrySpec) -> Result<GapSetup> {
     let (label, source, separation, rib_angle): (
         String,
         Box<dyn GapSource>,
         Option<f64>,
         Option<f64>,
-    ) = match &case.geometry {
+    ) = match geometry {
         g @ GeometrySpec::RollerRib { .. } => {
             let (label, pair) = roller_rib_from_spec(g)?.ok_or_else(|| {
                 Error::invalid("geometry.kind", "roller_rib", "a roller/rib geometry")
@@ -498,83 +601,49 @@ pub fn run_pimp_case(case: &PimpCase) -> Result<PimpOutcome> {
                 None,
             )
         }
-    };
-    let map_load = |e: Error| {
-        e.map_field(|f| match f {
-            "force" => "load.force_n".into(),
-            "approach" => "load.approach_mm".into(),
-            "cells" => "pimp.cells".into(),
-            "extent" => "pimp.extent_mm".into(),
-            other => other.into(),
-        })
-    };
-    let solution = match (case.load.force_n, case.load.approach_mm, separation) {
-        (Some(f), None, _) => pimp.solve_force(source.as_ref(), f).map_err(map_load)?,
-        (None, Some(d), _) => pimp.solve_approach(source.as_ref(), d).map_err(map_load)?,
-        (None, None, Some(sep)) => {
-            if sep >= 0.0 {
-                return Err(Error::Geometry {
-                    field: "geometry".into(),
-                    reason: format!(
-                        "the bodies do not touch: separation = {sep:.6e} mm (give load.force_n or \
-                         load.approach_mm to press them together)"
-                    ),
-                });
-            }
-            pimp.solve_approach(source.as_ref(), -sep)
-                .map_err(map_load)?
-        }
-        _ => {
+        GeometrySpec::Map { .. } => {
             return Err(Error::invalid(
-                "load",
-                "none or both of force_n and approach_mm",
-                "exactly one of force_n or approach_mm (or neither for surfaces placed in contact)",
+                "geometry.kind",
+                "map",
+                "roller_rib, hertz or surfaces (a gap map needs method = \"bem\")",
             ));
         }
     };
-    let k = source.curvature();
-    let hertz = HertzPointContact::new(PointGeometry::from_curvature(k), m1, m2)
-        .and_then(|h| h.solve_force(solution.force))
+    Ok(GapSetup {
+        label,
+        source,
+        separation,
+        rib_angle,
+    })
+}
+
+impl GridEcho {
+    /// The echo of `g`.
+    pub fn of(g: &crate::geometry::Grid2) -> Self {
+        GridEcho {
+            cells: [g.nx(), g.ny()],
+            cell_mm: [g.dx(), g.dy()],
+            x_range_mm: [g.x(0) - 0.5 * g.dx(), g.x(g.nx() - 1) + 0.5 * g.dx()],
+            y_range_mm: [g.y(0) - 0.5 * g.dy(), g.y(g.ny() - 1) + 0.5 * g.dy()],
+        }
+    }
+}
+
+/// The Hertz solution for the curvature `k` at the contact point under `force` \[N\]
+/// (none when the curvature admits no Hertz contact).
+pub(crate) fn hertz_echo(
+    k: RelativeCurvature,
+    m1: ElasticMaterial,
+    m2: ElasticMaterial,
+    force: f64,
+) -> Option<HertzEcho> {
+    HertzPointContact::new(PointGeometry::from_curvature(k), m1, m2)
+        .and_then(|h| h.solve_force(force))
         .ok()
         .map(|h| HertzEcho {
             max_pressure_mpa: h.max_pressure,
             contact_area_mm2: h.contact_area,
             approach_mm: h.approach,
             semi_axes_mm: h.semi_axes,
-        });
-    let g = solution.grid;
-    let report = PimpReport {
-        kontakt_version: crate::VERSION,
-        schema_version: super::report::SCHEMA_VERSION,
-        name: case.name.clone(),
-        method: "pimp",
-        mode: solution.mode,
-        geometry: label,
-        e_star_mpa: crate::material::effective_modulus(&m1, &m2),
-        relative_curvature_per_mm: [k.a_coef, k.b_coef],
-        semi_axes_mm: solution.semi_axes,
-        axis_ratio: solution.semi_axes[1] / solution.semi_axes[0],
-        orientation_deg: solution.orientation.to_degrees(),
-        force_n: solution.force,
-        approach_mm: solution.approach,
-        max_pressure_mpa: solution.max_pressure,
-        mean_pressure_mpa: solution.mean_pressure,
-        contact_area_mm2: solution.contact_area,
-        patches: solution.zone.patches,
-        centroid_mm: solution.zone.centroid,
-        extents_mm: solution.zone.extents,
-        centre_line_curvature_per_mm: solution.zone.centre_line_curvature,
-        grid: GridEcho {
-            cells: [g.nx(), g.ny()],
-            cell_mm: [g.dx(), g.dy()],
-            x_range_mm: [g.x(0) - 0.5 * g.dx(), g.x(g.nx() - 1) + 0.5 * g.dx()],
-            y_range_mm: [g.y(0) - 0.5 * g.dy(), g.y(g.ny() - 1) + 0.5 * g.dy()],
-        },
-        iterations: solution.iterations,
-        grid_rounds: solution.grid_rounds,
-        separation_mm: separation,
-        rib_angle_deg: rib_angle,
-        hertz,
-    };
-    Ok(PimpOutcome { report, solution })
+        })
 }

@@ -1,0 +1,246 @@
+//! Half-space cases (`method = "bem"`): the PimP case schema solved by the coupled elastic
+//! half-space solver, plus user gap maps.
+//!
+//! ```toml
+//! name = "torus/torus, coupled"
+//! method = "bem"
+//!
+//! [geometry]                 # roller_rib | hertz | surfaces, as for PimP, or a map:
+//! kind = "roller_rib"
+//! pairing = "torus-torus-14"
+//! # kind = "map"
+//! # file = "topography.npy"  # or .csv; relative to the case file
+//! # spacing_mm = [0.002, 0.002]
+//! # values = "height"        # "gap" (default) or "height" (combined topography)
+//! # boundary = "periodic"    # "free" (default) or "periodic"
+//!
+//! [bem]                      # optional
+//! cells = [64, 64]
+//! tolerance = 1e-8           # relative residual
+//! # extent_mm = [1.0, 0.5]   # fixed half-extents; adaptive when left out
+//! # margin = 1.2             # adaptive domain over the contact's extent
+//! # threads = 2              # FFT threads; all cores when left out
+//! # max_iterations = 1000
+//!
+//! [body1]
+//! e_mpa = 210000.0
+//! nu = 0.3
+//! [body2]
+//! e_mpa = 210000.0
+//! nu = 0.3
+//!
+//! [load]
+//! force_n = 250.0            # or approach_mm
+//! ```
+
+use super::pimp_case::{
+    GapSetup, GeometrySpec, GridEcho, PimpCase, PimpReport, gap_setup, hertz_echo, material,
+};
+use crate::error::{Error, Result};
+use crate::halfspace::{Bem, BemOptions, BemSolution, Control, GapMap};
+use serde::{Deserialize, Serialize};
+use std::path::Path;
+
+/// `[bem]`: options of the half-space solver.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct BemSpec {
+    /// Grid cells `[nx, ny]`, each in 8..=4096.
+    pub cells: [usize; 2],
+    /// Relative residual, in \[1e-14, 1e-2\].
+    pub tolerance: f64,
+    /// Fixed half-extents \[mm\]; adaptive when absent.
+    pub extent_mm: Option<[f64; 2]>,
+    /// Adaptive domain over the contact's extent, in \[1.05, 4\].
+    pub margin: f64,
+    /// FFT threads; all cores when absent.
+    pub threads: Option<usize>,
+    /// Most iterations.
+    pub max_iterations: usize,
+}
+
+impl Default for BemSpec {
+    fn default() -> Self {
+        let o = BemOptions::default();
+        BemSpec {
+            cells: o.cells,
+            tolerance: o.tolerance,
+            extent_mm: o.extent,
+            margin: o.margin,
+            threads: o.threads,
+            max_iterations: o.max_iterations,
+        }
+    }
+}
+
+/// The solver's record in a `bem` report.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SolverEcho {
+    /// Whether the residual reached the tolerance (always true in a report: a failed
+    /// solve is an error).
+    pub converged: bool,
+    /// Final relative residual.
+    pub residual: f64,
+    /// The tolerance asked for.
+    pub tolerance: f64,
+    /// FFT convolutions performed.
+    pub operator_applications: usize,
+    /// Largest remaining interpenetration on an unloaded cell \[mm\].
+    pub max_overlap_mm: f64,
+    /// `"free"` or `"periodic"`.
+    pub boundary: crate::halfspace::Boundary,
+}
+
+/// A solved `bem` case: the JSON record and the full solution (fields for CSV and maps).
+#[derive(Debug, Clone, PartialEq)]
+pub struct BemOutcome {
+    /// The JSON record (the PimP report's keys, `method = "bem"`).
+    pub report: PimpReport,
+    /// The solution with pressure, displacement and gap fields.
+    pub solution: BemSolution,
+}
+
+/// Solve a `method = "bem"` case. Relative map paths are resolved against `base_dir`
+/// (the case file's folder).
+///
+/// # Errors
+/// Invalid input (named by its case-file key), bodies that do not touch, a contact that
+/// reaches the border of a map or a fixed extent, and non-convergence.
+pub fn run_bem_case(case: &PimpCase, base_dir: &Path) -> Result<BemOutcome> {
+    if case.method != "bem" {
+        return Err(Error::invalid(
+            "method",
+            &case.method,
+            "\"bem\" for this schema",
+        ));
+    }
+    let m1 = material(&case.body1, "body1")?;
+    let m2 = material(&case.body2, "body2")?;
+    let spec = case.bem.unwrap_or_default();
+    let options = BemOptions {
+        cells: spec.cells,
+        extent: spec.extent_mm,
+        margin: spec.margin,
+        tolerance: spec.tolerance,
+        max_iterations: spec.max_iterations,
+        threads: spec.threads,
+    };
+    let bem = Bem::new(m1, m2, options).map_err(|e| {
+        e.map_field(|f| match f {
+            "extent[0]" => "bem.extent_mm[0]".into(),
+            "extent[1]" => "bem.extent_mm[1]".into(),
+            other => format!("bem.{other}"),
+        })
+    })?;
+    let map_load = |e: Error| {
+        e.map_field(|f| match f {
+            "force" => "load.force_n".into(),
+            "approach" => "load.approach_mm".into(),
+            "cells" => "bem.cells".into(),
+            "extent" => "bem.extent_mm".into(),
+            other => other.into(),
+        })
+    };
+    let load_error = || {
+        Error::invalid(
+            "load",
+            "none or both of force_n and approach_mm",
+            "exactly one of force_n or approach_mm (or neither for surfaces placed in contact)",
+        )
+    };
+    let (label, solution, separation, rib_angle, curvature, boundary) = match &case.geometry {
+        GeometrySpec::Map {
+            file,
+            spacing_mm,
+            values,
+            boundary,
+        } => {
+            let path = base_dir.join(file);
+            let map = GapMap::read(&path, *spacing_mm, *values).map_err(|e| {
+                e.map_field(|f| match f {
+                    "spacing[0]" => "geometry.spacing_mm[0]".into(),
+                    "spacing[1]" => "geometry.spacing_mm[1]".into(),
+                    "gap_map.file" | "gap_map" => "geometry.file".into(),
+                    other => other.into(),
+                })
+            })?;
+            let control = match (case.load.force_n, case.load.approach_mm) {
+                (Some(f), None) => Control::Force(f),
+                (None, Some(d)) => Control::Approach(d),
+                _ => return Err(load_error()),
+            };
+            let s = bem.solve_map(&map, control, *boundary).map_err(map_load)?;
+            (format!("gap map {file}"), s, None, None, None, *boundary)
+        }
+        g => {
+            let GapSetup {
+                label,
+                source,
+                separation,
+                rib_angle,
+            } = gap_setup(g)?;
+            let s = match (case.load.force_n, case.load.approach_mm, separation) {
+                (Some(f), None, _) => bem.solve_force(source.as_ref(), f),
+                (None, Some(d), _) => bem.solve_approach(source.as_ref(), d),
+                (None, None, Some(sep)) if sep < 0.0 => bem.solve_approach(source.as_ref(), -sep),
+                (None, None, Some(sep)) => {
+                    return Err(Error::Geometry {
+                        field: "geometry".into(),
+                        reason: format!(
+                            "the bodies do not touch: separation = {sep:.6e} mm (give \
+                             load.force_n or load.approach_mm to press them together)"
+                        ),
+                    });
+                }
+                _ => return Err(load_error()),
+            }
+            .map_err(map_load)?;
+            let k = source.curvature();
+            (
+                label,
+                s,
+                separation,
+                rib_angle,
+                Some(k),
+                crate::halfspace::Boundary::Free,
+            )
+        }
+    };
+    let report = PimpReport {
+        kontakt_version: crate::VERSION,
+        schema_version: super::report::SCHEMA_VERSION,
+        name: case.name.clone(),
+        method: "bem",
+        mode: None,
+        geometry: label,
+        e_star_mpa: bem.e_star(),
+        relative_curvature_per_mm: curvature.map(|k| [k.a_coef, k.b_coef]),
+        semi_axes_mm: solution.semi_axes,
+        axis_ratio: solution.semi_axes[1] / solution.semi_axes[0],
+        orientation_deg: solution.orientation.to_degrees(),
+        force_n: solution.force,
+        approach_mm: solution.approach,
+        max_pressure_mpa: solution.max_pressure,
+        mean_pressure_mpa: solution.mean_pressure,
+        contact_area_mm2: solution.contact_area,
+        patches: solution.zone.patches,
+        centroid_mm: solution.zone.centroid,
+        extents_mm: solution.zone.extents,
+        centre_line_curvature_per_mm: solution.zone.centre_line_curvature,
+        grid: GridEcho::of(&solution.grid),
+        iterations: solution.report.iterations,
+        solver: Some(SolverEcho {
+            converged: solution.report.converged,
+            residual: solution.report.residual,
+            tolerance: spec.tolerance,
+            operator_applications: solution.report.applications,
+            max_overlap_mm: solution.report.max_overlap,
+            boundary,
+        }),
+        grid_rounds: solution.grid_rounds,
+        separation_mm: separation,
+        rib_angle_deg: rib_angle,
+        hertz: curvature.and_then(|k| hertz_echo(k, m1, m2, solution.force)),
+    };
+    Ok(BemOutcome { report, solution })
+}
