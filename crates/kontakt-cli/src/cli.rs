@@ -26,6 +26,9 @@ pub enum Command {
     /// Run the roller-end/rib study (seed 000 Table 1, 100-400 N) and write a report
     /// (Markdown, pressure maps, CSV) into a folder.
     Demo(DemoArgs),
+    /// Compare PimP and Hertz with the coupled half-space solver for the roller-end/rib
+    /// pairings (seed 000 Figures 7-10) and write a report (Markdown, plots, CSV).
+    Validate(ValidateArgs),
 }
 
 #[derive(Debug, Args)]
@@ -134,6 +137,19 @@ pub struct DemoArgs {
     /// Folder for the report (created if missing; files in it are overwritten).
     #[arg(long, value_name = "DIR", default_value = "kontakt-demo")]
     pub out: PathBuf,
+    /// Print the results as JSON instead of the summary table.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Debug, Args)]
+pub struct ValidateArgs {
+    /// Folder for the report (created if missing; files in it are overwritten).
+    #[arg(long, value_name = "DIR", default_value = "kontakt-validate")]
+    pub out: PathBuf,
+    /// Cells a side of the half-space grid, 8..=4096.
+    #[arg(long, value_name = "N", default_value_t = 64)]
+    pub cells: usize,
     /// Print the results as JSON instead of the summary table.
     #[arg(long)]
     pub json: bool,

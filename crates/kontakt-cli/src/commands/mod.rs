@@ -10,6 +10,7 @@ use kontakt::io::case::{
 use kontakt::io::{Case, run_bem_case, run_case, run_pimp_case};
 
 pub mod pimp;
+pub mod validate;
 use std::io::{Read, Write};
 
 /// Bad input detected by the CLI itself (unreadable file).
@@ -97,6 +98,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
             }
         }
         Command::Demo(args) => pimp::demo(&args.out, out, args.json),
+        Command::Validate(args) => validate::validate(&args.out, args.cells, out, args.json),
     }
 }
 

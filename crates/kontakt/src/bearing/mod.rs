@@ -5,6 +5,7 @@
 //! The construction and the reading of Table 1 are in `docs/bearing.md`.
 
 pub mod roller_rib;
+pub mod validation;
 
 pub use roller_rib::{
     CONTACT_HEIGHT, FaceShape, RibShape, RollerRib, RollerRibSpec, STUDY_FORCES, TABLE1,

@@ -1,0 +1,212 @@
+//! The PimP-versus-reference study of seed 000 (Figures 7-10), with the coupled elastic
+//! half-space solver in the place of FEM.
+//!
+//! For a roller-end/rib pairing and a list of forces \[N\], [`validate_pairing`] solves
+//! the same substitute geometry with the half-space solver (the reference), with PimP in
+//! both bedding laws, and with Hertz at the contact point's curvature, and returns the
+//! maximum pressure \[MPa\], the area \[mm²\] and the approach \[mm\] of each, plus the
+//! contact shapes at the largest force on one grid for overlays.
+
+use crate::error::{Error, Result};
+use crate::geometry::Grid2;
+use crate::halfspace::{Bem, BemOptions, BemSolution};
+use crate::hertz::{HertzPointContact, PointGeometry};
+use crate::material::ElasticMaterial;
+use crate::pimp::{GapSource, Mode, Pimp, PimpOptions, PimpSolution, SurfacePairGap};
+use serde::Serialize;
+
+use super::{RollerRib, RollerRibSpec};
+
+/// One method's headline numbers at one load.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct Headline {
+    /// Largest pressure \[MPa\].
+    pub max_pressure_mpa: f64,
+    /// Contact area \[mm²\].
+    pub contact_area_mm2: f64,
+    /// Rigid approach \[mm\].
+    pub approach_mm: f64,
+    /// Half-extents of the zone (Hertz: semi-axes) \[mm\].
+    pub semi_axes_mm: [f64; 2],
+}
+
+impl Headline {
+    fn of_bem(s: &BemSolution) -> Self {
+        Headline {
+            max_pressure_mpa: s.max_pressure,
+            contact_area_mm2: s.contact_area,
+            approach_mm: s.approach,
+            semi_axes_mm: s.semi_axes,
+        }
+    }
+
+    fn of_pimp(s: &PimpSolution) -> Self {
+        Headline {
+            max_pressure_mpa: s.max_pressure,
+            contact_area_mm2: s.contact_area,
+            approach_mm: s.approach,
+            semi_axes_mm: s.semi_axes,
+        }
+    }
+}
+
+/// All methods at one load.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct ValidationRow {
+    /// Normal force \[N\].
+    pub force_n: f64,
+    /// The coupled half-space solution (the reference).
+    pub bem: Headline,
+    /// PimP with the paper's bedding (seed 000 eq. 7).
+    pub pimp_published: Headline,
+    /// PimP with the corrected bedding (docs/pimp.md).
+    pub pimp_corrected: Headline,
+    /// Hertz at the curvature of the contact point.
+    pub hertz: Headline,
+    /// Half-space solver iterations.
+    pub bem_iterations: usize,
+}
+
+impl ValidationRow {
+    /// `method / reference - 1` of the maximum pressure and the area, for PimP published,
+    /// PimP corrected and Hertz (seed 000 Figures 7-10 b and d).
+    pub fn deviations(&self) -> [[f64; 2]; 3] {
+        let rel = |h: &Headline| {
+            [
+                h.max_pressure_mpa / self.bem.max_pressure_mpa - 1.0,
+                h.contact_area_mm2 / self.bem.contact_area_mm2 - 1.0,
+            ]
+        };
+        [
+            rel(&self.pimp_published),
+            rel(&self.pimp_corrected),
+            rel(&self.hertz),
+        ]
+    }
+}
+
+/// The contact shapes at one load on the half-space solver's grid (PimP's pressures
+/// sampled at its cell centres), for overlays (seed 000 Figures 7-10 c).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ShapeOverlay {
+    /// Normal force \[N\].
+    pub force_n: f64,
+    /// The grid \[mm\] in the principal frame of the gap.
+    pub grid: Grid2,
+    /// Half-space pressure \[MPa\].
+    pub bem: Vec<f64>,
+    /// PimP (published) pressure on the same grid \[MPa\].
+    pub pimp_published: Vec<f64>,
+    /// PimP (corrected) pressure on the same grid \[MPa\].
+    pub pimp_corrected: Vec<f64>,
+}
+
+/// The study of one pairing.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct PairingStudy {
+    /// The built-in pairing's name (seed 000 Table 1).
+    pub pairing: String,
+    /// Rib angle \[deg\].
+    pub rib_angle_deg: f64,
+    /// One row per force.
+    pub rows: Vec<ValidationRow>,
+    /// Shapes at the largest force.
+    pub overlay: ShapeOverlay,
+}
+
+/// Run the study for the built-in `pairing` (see [`super::TABLE1`]) at `forces` \[N\]
+/// with the half-space solver's `options`, both bodies steel.
+///
+/// # Errors
+/// An unknown pairing, an empty or invalid force list, and the solvers' errors.
+pub fn validate_pairing(
+    pairing: &str,
+    forces: &[f64],
+    options: BemOptions,
+) -> Result<PairingStudy> {
+    if forces.is_empty() {
+        return Err(Error::invalid(
+            "forces",
+            "an empty list",
+            "at least one force > 0 N",
+        ));
+    }
+    let steel = ElasticMaterial::STEEL;
+    let pair = RollerRib::new(RollerRibSpec::builtin(pairing)?)?;
+    let gap = SurfacePairGap::new(pair.face, pair.rib, pair.contact)?;
+    let bem = Bem::new(steel, steel, options)?;
+    let pimp = |mode| {
+        Pimp::new(
+            steel,
+            steel,
+            PimpOptions {
+                mode,
+                ..PimpOptions::default()
+            },
+        )
+    };
+    let (published, corrected) = (pimp(Mode::Published)?, pimp(Mode::Corrected)?);
+    let hertz =
+        HertzPointContact::new(PointGeometry::from_curvature(gap.curvature()), steel, steel)?;
+    let mut rows = Vec::with_capacity(forces.len());
+    let mut last = None;
+    for &f in forces {
+        let b = bem.solve_force(&gap, f)?;
+        let p = published.solve_force(&gap, f)?;
+        let c = corrected.solve_force(&gap, f)?;
+        let h = hertz.solve_force(f)?;
+        rows.push(ValidationRow {
+            force_n: f,
+            bem: Headline::of_bem(&b),
+            pimp_published: Headline::of_pimp(&p),
+            pimp_corrected: Headline::of_pimp(&c),
+            hertz: Headline {
+                max_pressure_mpa: h.max_pressure,
+                contact_area_mm2: h.contact_area,
+                approach_mm: h.approach,
+                semi_axes_mm: h.semi_axes,
+            },
+            bem_iterations: b.report.iterations,
+        });
+        if last
+            .as_ref()
+            .is_none_or(|(lf, ..): &(f64, _, _, _)| f >= *lf)
+        {
+            last = Some((f, b, p, c));
+        }
+    }
+    let (force_n, b, p, c) = last.ok_or_else(|| Error::invalid("forces", "none", "> 0 N"))?;
+    let overlay = ShapeOverlay {
+        force_n,
+        grid: b.grid,
+        pimp_published: resample(&p.grid, &p.pressure, &b.grid),
+        pimp_corrected: resample(&c.grid, &c.pressure, &b.grid),
+        bem: b.pressure,
+    };
+    Ok(PairingStudy {
+        pairing: pairing.to_string(),
+        rib_angle_deg: pair.rib_angle_deg,
+        rows,
+        overlay,
+    })
+}
+
+/// Sample `values` on `from` at the cell centres of `to` (nearest cell; zero outside).
+/// Both grids must share the frame.
+pub fn resample(from: &Grid2, values: &[f64], to: &Grid2) -> Vec<f64> {
+    let (x0, y0) = (from.x(0) - 0.5 * from.dx(), from.y(0) - 0.5 * from.dy());
+    to.points()
+        .map(|(x, y)| {
+            let (fi, fj) = ((x - x0) / from.dx(), (y - y0) / from.dy());
+            if fi < 0.0 || fj < 0.0 {
+                return 0.0;
+            }
+            let (i, j) = (fi as usize, fj as usize);
+            if i < from.nx() && j < from.ny() {
+                values[j * from.nx() + i]
+            } else {
+                0.0
+            }
+        })
+        .collect()
+}
