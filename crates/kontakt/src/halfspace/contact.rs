@@ -315,16 +315,14 @@ impl Bem {
             if !shrunk && (fill[0] < 0.6 || fill[1] < 0.6) {
                 shrunk = true;
                 let m = self.options.margin;
-                for axis in 0..2 {
-                    let (c, h) = (
-                        0.5 * (z.extents[axis][0] + z.extents[axis][1]),
-                        0.5 * (z.extents[axis][1] - z.extents[axis][0]),
-                    );
-                    // Keep at least a cell's worth of margin beyond the loaded cells.
-                    let cell =
-                        (bounds[axis][1] - bounds[axis][0]) / self.options.cells[axis] as f64;
+                for ((bound, ext), cells) in
+                    bounds.iter_mut().zip(z.extents).zip(self.options.cells)
+                {
+                    let (c, h) = (0.5 * (ext[0] + ext[1]), 0.5 * (ext[1] - ext[0]));
+                    // Keep at least two cells of margin beyond the loaded cells.
+                    let cell = (bound[1] - bound[0]) / cells as f64;
                     let half = (m * h).max(h + 2.0 * cell);
-                    bounds[axis] = [c - half, c + half];
+                    *bound = [c - half, c + half];
                 }
                 continue;
             }

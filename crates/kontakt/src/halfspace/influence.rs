@@ -45,6 +45,33 @@ pub fn influence(x: f64, y: f64, dx: f64, dy: f64, e_star: f64) -> f64 {
     cell_integral(x, y, dx, dy) / (std::f64::consts::PI * e_star)
 }
 
+/// The influence coefficients \[mm/MPa\] for the offsets `i = 0..=nx`, `j = 0..=ny`
+/// cells, stored `[j * (nx + 1) + i]`: one quadrant, the others follow by symmetry. The
+/// antiderivative is evaluated once per cell corner and shared by the four cells that meet
+/// there, so the table costs `(nx + 2)(ny + 2)` evaluations.
+#[must_use]
+pub fn quadrant_table(nx: usize, ny: usize, dx: f64, dy: f64, e_star: f64) -> Vec<f64> {
+    let (cx, cy) = (nx + 2, ny + 2);
+    // Corner k sits at (k - 1/2) dx.
+    let mut corners = vec![0.0; cx * cy];
+    for l in 0..cy {
+        let y = (l as f64 - 0.5) * dy;
+        for k in 0..cx {
+            corners[l * cx + k] = antiderivative((k as f64 - 0.5) * dx, y);
+        }
+    }
+    let scale = 1.0 / (std::f64::consts::PI * e_star);
+    let mut table = vec![0.0; (nx + 1) * (ny + 1)];
+    for j in 0..=ny {
+        for i in 0..=nx {
+            let c = |k: usize, l: usize| corners[l * cx + k];
+            table[j * (nx + 1) + i] =
+                (c(i + 1, j + 1) - c(i + 1, j) - c(i, j + 1) + c(i, j)) * scale;
+        }
+    }
+    table
+}
+
 /// The dense `n × n` influence matrix of an `nx × ny` grid (row-major fields, x fastest):
 /// entry `[i * n + j]` is the displacement at cell `i` per unit pressure on cell `j`.
 /// Quadratic in memory and cubic to use: for tests and for checking the FFT operator on
@@ -106,6 +133,22 @@ mod tests {
         let s = 0.37;
         let expected = 4.0 * (1.0 + 2f64.sqrt()).ln() * s;
         assert!((cell_integral(0.0, 0.0, s, s) - expected).abs() < 1e-14);
+    }
+
+    #[test]
+    fn quadrant_table_equals_the_direct_coefficients() {
+        let (nx, ny, dx, dy, e) = (9, 6, 0.13, 0.07, 1.1e5);
+        let t = quadrant_table(nx, ny, dx, dy, e);
+        for j in 0..=ny {
+            for i in 0..=nx {
+                let direct = influence(i as f64 * dx, j as f64 * dy, dx, dy, e);
+                let v = t[j * (nx + 1) + i];
+                assert!(
+                    (v - direct).abs() <= 1e-13 * direct.abs(),
+                    "({i}, {j}): {v} vs {direct}"
+                );
+            }
+        }
     }
 
     #[test]

@@ -26,7 +26,7 @@ use rustfft::{Fft, FftPlanner};
 use serde::{Deserialize, Serialize};
 use std::sync::Arc;
 
-use super::influence::influence;
+use super::influence::quadrant_table;
 
 /// How the grid's edges behave.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -206,13 +206,16 @@ impl ElasticOperator {
         match self.boundary {
             Boundary::Free => {
                 // Real-space kernel on the padded circle, transformed once.
+                let (nx, ny) = (self.nx, self.ny);
+                let quadrant = quadrant_table(nx, ny, dx, dy, e_star);
                 let mut spec = vec![Complex::default(); my * kx];
                 let mut row = vec![0.0; mx];
                 let mut scratch = vec![Complex::default(); self.r2c.get_scratch_len()];
                 for j in 0..my {
-                    let y = signed(j, my) * dy;
+                    let jj = signed(j, my).abs() as usize;
+                    let q = &quadrant[jj * (nx + 1)..(jj + 1) * (nx + 1)];
                     for (i, r) in row.iter_mut().enumerate() {
-                        *r = influence(signed(i, mx) * dx, y, dx, dy, e_star);
+                        *r = q[signed(i, mx).abs() as usize];
                     }
                     // Lengths match the plan, so the transform cannot fail.
                     let _ = self.r2c.process_with_scratch(
@@ -223,14 +226,14 @@ impl ElasticOperator {
                 }
                 let mut col = vec![Complex::default(); my];
                 let mut cs = vec![Complex::default(); self.col_fwd.get_inplace_scratch_len()];
-                for k in 0..kx {
-                    for j in 0..my {
-                        col[j] = spec[j * kx + k];
+                for (k, kernel) in self.kernel.chunks_mut(my).enumerate() {
+                    for (j, c) in col.iter_mut().enumerate() {
+                        *c = spec[j * kx + k];
                     }
                     self.col_fwd.process_with_scratch(&mut col, &mut cs);
-                    for j in 0..my {
+                    for (kv, c) in kernel.iter_mut().zip(&col) {
                         // The kernel is even in x and y: its spectrum is real.
-                        self.kernel[k * my + j] = col[j].re * norm;
+                        *kv = c.re * norm;
                     }
                 }
             }

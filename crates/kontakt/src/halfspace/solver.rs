@@ -34,7 +34,7 @@ pub enum Start {
 pub struct SolverOptions {
     /// Relative residual to reach, in \[1e-14, 1e-2\] (default 1e-8). The residual is
     /// the RMS gap error (gap on loaded cells and overlap on unloaded ones) divided by the
-    /// mean elastic displacement of the loaded cells: a dimensionless measure of how far
+    /// RMS elastic displacement of the loaded cells: a dimensionless measure of how far
     /// the complementarity conditions are from holding (docs/halfspace.md §2).
     pub tolerance: f64,
     /// Most iterations, >= 1 (default 1000).
@@ -320,13 +320,13 @@ impl HalfSpaceSolver {
             // Gap of the current pressure and the approach that fits it.
             let mut n_c = 0usize;
             let mut sum_g = 0.0;
-            let mut sum_u = 0.0;
+            let mut sum_u2 = 0.0;
             for i in 0..p.len() {
                 g[i] = u[i] + gap[i];
                 if p[i] > 0.0 {
                     n_c += 1;
                     sum_g += g[i];
-                    sum_u += u[i];
+                    sum_u2 += u[i] * u[i];
                 }
             }
             approach = match control {
@@ -344,8 +344,11 @@ impl HalfSpaceSolver {
                     overlap2 += g[i] * g[i];
                 }
             }
+            // The RMS displacement of the loaded cells: it cannot vanish on a loaded
+            // contact, also not on a periodic one whose mean displacement is zero.
             let scale = if n_c > 0 {
-                (sum_u / n_c as f64).abs()
+                let rms = (sum_u2 / n_c as f64).sqrt();
+                if rms > 0.0 { rms } else { approach.abs() }
             } else {
                 0.0
             };
