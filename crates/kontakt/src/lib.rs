@@ -65,12 +65,14 @@
 //! | [`geometry`] | principal curvatures, relative curvature, sampling grids, analytic surfaces with ray casting and the contact point from poses | done |
 //! | [`hertz`] | exact point (elliptical/circular) and line contact, approximations, subsurface stress and yield, impact, JKR adhesion | done |
 //! | [`pimp`] | PimP: substitute geometry, Winkler bedding (published / corrected), force equilibrium, zone shape | done |
+//! | [`halfspace`] | coupled elastic half-space: Love coefficients, FFT operator (free / periodic), Polonsky-Keer solver with warm start, any gap or gap map, adaptive domain | done |
+//! | [`traction`] | asperity-based traction curves: periodic spherical asperities on a rough line or circular Hertz contact, Mindlin partial slip per asperity (thesis seed 002 §3.1.2.2) | done |
 //! | [`bearing`] | roller end face / rib pair of a tapered roller bearing (seed 000 Table 1) | roller/rib done; kinematics to come |
-//! | [`io`] | serde case files (TOML) and stable, unit-suffixed result records (JSON) | Hertz and PimP cases |
+//! | [`io`] | serde case files (TOML) and stable, unit-suffixed result records (JSON) | Hertz, PimP and half-space cases |
 //!
-//! Planned, each in its own module with the same conventions: `halfspace` (FFT boundary
-//! elements), `tangential` (Cattaneo-Mindlin, Carter, Kalker, FASTSIM) and bearing
-//! kinematics; plots live in the `kontakt-plot` crate. See `ARCHITECTURE.md`.
+//! Planned, in its own module with the same conventions: bearing kinematics (sliding
+//! velocities, friction power). Plots live in the `kontakt-plot` crate. See
+//! `ARCHITECTURE.md`.
 //!
 //! ## References
 //! The bibliography is in `docs/references.md`; each item's docs cite equation numbers.
@@ -86,6 +88,7 @@ pub mod hertz;
 pub mod io;
 pub mod material;
 pub mod pimp;
+pub mod traction;
 pub mod units;
 
 pub use error::{Error, Result};
