@@ -214,6 +214,44 @@ mod tests {
         assert_eq!(e.field(), Some("spacing[0]"));
     }
 
+    /// A `.npy` file as numpy writes it (format 1.0).
+    fn npy_bytes(descr: &str, shape: &str, data: &[u8]) -> Vec<u8> {
+        let dict = format!("{{'descr': '{descr}', 'fortran_order': False, 'shape': {shape}, }}");
+        let mut header = dict.into_bytes();
+        while (10 + header.len() + 1) % 64 != 0 {
+            header.push(b' ');
+        }
+        header.push(b'\n');
+        let mut out = b"\x93NUMPY\x01\x00".to_vec();
+        out.extend_from_slice(&(header.len() as u16).to_le_bytes());
+        out.extend_from_slice(&header);
+        out.extend_from_slice(data);
+        out
+    }
+
+    #[test]
+    fn npy_float64_and_float32_and_errors() {
+        let v64: Vec<u8> = [1.0f64, 2.0, 3.0, 4.0, 5.0, 6.0]
+            .iter()
+            .flat_map(|v| v.to_le_bytes())
+            .collect();
+        let (nx, ny, v) = read_npy(&npy_bytes("<f8", "(2, 3)", &v64)).unwrap();
+        assert_eq!((nx, ny), (3, 2));
+        assert_eq!(v, vec![1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
+        let v32: Vec<u8> = [0.5f32, 1.5, 2.5, 3.5]
+            .iter()
+            .flat_map(|v| v.to_le_bytes())
+            .collect();
+        let (nx, ny, v) = read_npy(&npy_bytes("<f4", "(2, 2)", &v32)).unwrap();
+        assert_eq!((nx, ny), (2, 2));
+        assert_eq!(v, vec![0.5, 1.5, 2.5, 3.5]);
+        let e = read_npy(&npy_bytes("<f8", "(6,)", &v64)).unwrap_err();
+        assert!(e.contains("2-D"), "{e}");
+        let ints: Vec<u8> = [1i64, 2].iter().flat_map(|v| v.to_le_bytes()).collect();
+        let e = read_npy(&npy_bytes("<i8", "(1, 2)", &ints)).unwrap_err();
+        assert!(e.contains("float64 or float32"), "{e}");
+    }
+
     #[test]
     fn height_map_turns_into_a_gap() {
         let m = GapMap::new(2, 2, [0.1, 0.1], vec![0.0, 3.0, 1.0, 2.0], MapKind::Height).unwrap();
