@@ -29,6 +29,9 @@ pub enum Command {
     /// Compare PimP and Hertz with the coupled half-space solver for the roller-end/rib
     /// pairings (seed 000 Figures 7-10) and write a report (Markdown, plots, CSV).
     Validate(ValidateArgs),
+    /// Traction curves F_T/(mu F_N) against the creepage (slide-to-roll ratio): Carter,
+    /// Kalker linear, FASTSIM, from a TOML case (method = "traction"; docs/case-schema.md).
+    Traction(TractionArgs),
 }
 
 #[derive(Debug, Args)]
@@ -151,6 +154,22 @@ pub struct ValidateArgs {
     #[arg(long, value_name = "N", default_value_t = 64)]
     pub cells: usize,
     /// Print the results as JSON instead of the summary table.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Debug, Args)]
+pub struct TractionArgs {
+    /// Case file (TOML, method = "traction"), or `-` for standard input.
+    #[arg(value_name = "CASE.toml")]
+    pub case: PathBuf,
+    /// Write every point to this CSV file (creepage, F_T/(mu F_N) per model).
+    #[arg(long, value_name = "FILE.csv")]
+    pub csv: Option<PathBuf>,
+    /// Draw the traction curves (.png or .svg); Kalker linear up to saturation.
+    #[arg(long, value_name = "FILE.png|svg")]
+    pub plot: Option<PathBuf>,
+    /// Print one JSON document instead of the table.
     #[arg(long)]
     pub json: bool,
 }

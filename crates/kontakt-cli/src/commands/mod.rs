@@ -10,6 +10,7 @@ use kontakt::io::case::{
 use kontakt::io::{Case, run_bem_case, run_case, run_pimp_case};
 
 pub mod pimp;
+pub mod traction;
 pub mod validate;
 use std::io::{Read, Write};
 
@@ -95,10 +96,22 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                     }
                     pimp::print_report(out, &outcome.report, args.json)
                 }
+                Case::Traction(case) => {
+                    if args.csv.is_some() || args.map.is_some() {
+                        return Err(InputError(format!(
+                            "{label}: traction cases write curves with `kontakt traction {label} --csv FILE --plot FILE`"
+                        ))
+                        .into());
+                    }
+                    let report =
+                        kontakt::io::run_traction_case(&case).with_context(|| label.clone())?;
+                    traction::print_report(out, &report, args.json)
+                }
             }
         }
         Command::Demo(args) => pimp::demo(&args.out, out, args.json),
         Command::Validate(args) => validate::validate(&args.out, args.cells, out, args.json),
+        Command::Traction(args) => traction::run(args, out),
     }
 }
 

@@ -4,9 +4,9 @@
 use crate::commands::InputError;
 use anyhow::{Context, Result};
 use kontakt::bearing::{RollerRib, RollerRibSpec, STUDY_FORCES, TABLE1};
+use kontakt::geometry::Grid2;
 use kontakt::io::PimpReport;
 use kontakt::material::ElasticMaterial;
-use kontakt::geometry::Grid2;
 use kontakt::pimp::{Mode, Pimp, PimpOptions, SurfacePairGap};
 use kontakt_plot::{FieldMap, LinePlot, LineStyle, PALETTE, Series};
 use std::io::Write;

@@ -142,7 +142,9 @@ fn write_csv(path: &Path, studies: &[PairingStudy]) -> Result<()> {
 fn deviation_plot(path: &Path, title: &str, studies: &[&PairingStudy], k: usize) -> Result<()> {
     let methods = ["PimP published", "PimP corrected", "Hertz"];
     let styles = [LineStyle::Solid, LineStyle::Dashed, LineStyle::Markers];
-    let mut data: Vec<(String, Vec<(f64, f64)>, usize, LineStyle)> = Vec::new();
+    // (label, points, colour index, style) per curve.
+    type Curve = (String, Vec<(f64, f64)>, usize, LineStyle);
+    let mut data: Vec<Curve> = Vec::new();
     for (si, s) in studies.iter().enumerate() {
         for (m, method) in methods.iter().enumerate() {
             let pts = s

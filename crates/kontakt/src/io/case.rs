@@ -206,6 +206,8 @@ pub enum Case {
     Pimp(Box<super::pimp_case::PimpCase>),
     /// `method = "bem"`: the PimP schema solved by the half-space solver.
     Bem(Box<super::pimp_case::PimpCase>),
+    /// `method = "traction"`: traction curves ([`super::traction_case`]).
+    Traction(Box<super::traction_case::TractionCase>),
 }
 
 impl Case {
@@ -223,10 +225,11 @@ impl Case {
             "hertz" => Ok(Case::Hertz(parse_toml(text)?)),
             "pimp" => Ok(Case::Pimp(Box::new(parse_toml(text)?))),
             "bem" => Ok(Case::Bem(Box::new(parse_toml(text)?))),
+            "traction" => Ok(Case::Traction(Box::new(parse_toml(text)?))),
             other => Err(Error::invalid(
                 "method",
                 other,
-                "\"hertz\", \"pimp\" or \"bem\"",
+                "\"hertz\", \"pimp\", \"bem\" or \"traction\"",
             )),
         }
     }

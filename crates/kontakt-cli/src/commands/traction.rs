@@ -1,0 +1,246 @@
+//! `kontakt traction CASE.toml`: traction curves `F_T/(mu F_N)` against the creepage
+//! (slide-to-roll ratio) for the models of a `method = "traction"` case, as a table,
+//! JSON, CSV and a plot. The physics is `kontakt::io::run_traction_case`.
+
+use crate::cli::TractionArgs;
+use crate::commands::InputError;
+use anyhow::{Context, Result};
+use kontakt::io::{TractionCase, TractionReport, run_traction_case};
+use kontakt_plot::{LinePlot, LineStyle, PALETTE, Series};
+use std::io::{Read, Write};
+use std::path::Path;
+
+/// Most rows of the human table; `--csv` has every point.
+const MAX_ROWS: usize = 21;
+
+/// Run the subcommand.
+pub fn run(args: &TractionArgs, out: &mut impl Write) -> Result<()> {
+    let (label, text) = if args.case.as_os_str() == "-" {
+        let mut s = String::new();
+        std::io::stdin()
+            .read_to_string(&mut s)
+            .map_err(|e| InputError(format!("cannot read the case from stdin: {e}")))?;
+        ("<stdin>".to_string(), s)
+    } else {
+        let label = args.case.display().to_string();
+        let text = std::fs::read_to_string(&args.case)
+            .map_err(|e| InputError(format!("cannot read case file {label}: {e}")))?;
+        (label, text)
+    };
+    let case = TractionCase::from_toml_str(&text).with_context(|| label.clone())?;
+    let report = run_traction_case(&case).with_context(|| label.clone())?;
+    if let Some(path) = &args.csv {
+        write_csv(path, &report)?;
+    }
+    if let Some(path) = &args.plot {
+        write_plot(path, &report)?;
+    }
+    print_report(out, &report, args.json)
+}
+
+/// The report as a table (a subsample of the points) or as pretty JSON.
+pub fn print_report(out: &mut impl Write, r: &TractionReport, json: bool) -> Result<()> {
+    if json {
+        serde_json::to_writer_pretty(&mut *out, r)?;
+        writeln!(out)?;
+        return Ok(());
+    }
+    let name = r
+        .name
+        .as_deref()
+        .map(|n| format!(": {n}"))
+        .unwrap_or_default();
+    writeln!(
+        out,
+        "kontakt {} — traction curves F_T/(mu F_N){name}",
+        r.kontakt_version
+    )?;
+    let [a, b] = r.semi_axes_mm;
+    let axes = if r.geometry == "line" {
+        format!("half-width a = {a:.5} mm, half-length {b:.4} mm")
+    } else {
+        format!("a = {a:.5} mm (rolling), b = {b:.5} mm")
+    };
+    writeln!(out, "  contact ({}): {axes}", r.geometry)?;
+    let load = match r.line_load_n_per_mm {
+        Some(q) => format!("F_N = {} N ({q:.4} N/mm)", r.force_n),
+        None => format!("F_N = {} N", r.force_n),
+    };
+    writeln!(
+        out,
+        "  {load}, p0 = {:.1} MPa, mu = {}",
+        r.max_pressure_mpa, r.mu
+    )?;
+    writeln!(
+        out,
+        "  E* = {:.1} MPa, Kalker G = {:.1} MPa, nu = {:.4}",
+        r.e_star_mpa, r.shear_modulus_mpa, r.poisson_ratio
+    )?;
+    if let Some(c) = &r.creep_coefficients {
+        writeln!(
+            out,
+            "  Kalker C11 = {:.4}, C22 = {:.4}, C23 = {:.4}",
+            c.c11, c.c22, c.c23
+        )?;
+    }
+    let mut sat = format!(
+        "  saturation creepage: Carter {:.4e}",
+        r.carter_saturation_creepage
+    );
+    if let Some(k) = r.kalker_saturation_creepage {
+        sat.push_str(&format!(", Kalker linear reaches 1 at {k:.4e}"));
+    }
+    writeln!(out, "{sat}")?;
+    if let Some([nx, ny]) = r.fastsim_elements {
+        writeln!(out, "  FASTSIM grid {nx} x {ny} elements")?;
+    }
+    write!(out, "  {:>12}", "creepage")?;
+    for c in &r.curves {
+        write!(out, " {:>14}", c.model)?;
+    }
+    writeln!(out)?;
+    let n = r.creepage.len();
+    let step = n.div_ceil(MAX_ROWS).max(1);
+    let rows = (0..n)
+        .step_by(step)
+        .chain((!(n - 1).is_multiple_of(step)).then_some(n - 1));
+    for i in rows {
+        write!(out, "  {:>12.6}", r.creepage[i])?;
+        for c in &r.curves {
+            write!(out, " {:>14.5}", c.normalized_force[i])?;
+        }
+        writeln!(out)?;
+    }
+    if step > 1 {
+        writeln!(
+            out,
+            "  (every {step}th of {n} points; --csv writes all; Kalker linear is unclipped)"
+        )?;
+    }
+    Ok(())
+}
+
+/// Every point: `creepage` and one column `<model>_ft_over_mu_fn` per model.
+pub fn write_csv(path: &Path, r: &TractionReport) -> Result<()> {
+    let mut w = csv::Writer::from_path(path)
+        .map_err(|e| InputError(format!("cannot write {}: {e}", path.display())))?;
+    let mut header = vec!["creepage".to_string()];
+    header.extend(
+        r.curves
+            .iter()
+            .map(|c| format!("{}_ft_over_mu_fn", c.model)),
+    );
+    w.write_record(&header)?;
+    for (i, xi) in r.creepage.iter().enumerate() {
+        let mut row = vec![format!("{xi:.8e}")];
+        row.extend(
+            r.curves
+                .iter()
+                .map(|c| format!("{:.8e}", c.normalized_force[i])),
+        );
+        w.write_record(&row)?;
+    }
+    w.flush()?;
+    Ok(())
+}
+
+/// The points of a curve with `|y| <= 1`, plus the crossings of `|y| = 1` between
+/// neighbours: how the unbounded linear theory is drawn next to the saturating models.
+fn clip_to_saturation(xs: &[f64], ys: &[f64]) -> Vec<(f64, f64)> {
+    let mut pts = Vec::with_capacity(xs.len());
+    for i in 0..xs.len() {
+        let (x, y) = (xs[i], ys[i]);
+        if i > 0 {
+            let (x0, y0) = (xs[i - 1], ys[i - 1]);
+            for bound in [-1.0, 1.0] {
+                if (y0 - bound) * (y - bound) < 0.0 {
+                    let t = (bound - y0) / (y - y0);
+                    pts.push((x0 + t * (x - x0), bound));
+                }
+            }
+        }
+        if y.abs() <= 1.0 {
+            pts.push((x, y));
+        }
+    }
+    pts
+}
+
+/// Draw the curves; Kalker's linear theory up to where it reaches saturation.
+pub fn write_plot(path: &Path, r: &TractionReport) -> Result<()> {
+    kontakt_plot::Format::from_path(path).map_err(|e| InputError(e.to_string()))?;
+    let labels: Vec<String> = r
+        .curves
+        .iter()
+        .map(|c| match c.model {
+            "carter" => "Carter".to_string(),
+            "kalker_linear" => "Kalker linear (to saturation)".to_string(),
+            "fastsim" => "FASTSIM".to_string(),
+            other => other.to_string(),
+        })
+        .collect();
+    let points: Vec<Vec<(f64, f64)>> = r
+        .curves
+        .iter()
+        .map(|c| {
+            if c.model == "kalker_linear" {
+                clip_to_saturation(&r.creepage, &c.normalized_force)
+            } else {
+                r.creepage
+                    .iter()
+                    .copied()
+                    .zip(c.normalized_force.iter().copied())
+                    .collect()
+            }
+        })
+        .collect();
+    let series: Vec<Series> = r
+        .curves
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| !points[*i].is_empty())
+        .map(|(i, c)| Series {
+            label: &labels[i],
+            points: &points[i],
+            color: PALETTE[i % PALETTE.len()],
+            style: if c.model == "kalker_linear" {
+                LineStyle::Dashed
+            } else {
+                LineStyle::Solid
+            },
+        })
+        .collect();
+    let title = format!(
+        "{}: F_N = {} N, mu = {}",
+        r.name.as_deref().unwrap_or("traction curves"),
+        r.force_n,
+        r.mu
+    );
+    kontakt_plot::line_plot(
+        path,
+        &LinePlot {
+            title: &title,
+            x_label: "creepage = slide-to-roll ratio [-]",
+            y_label: "F_T / (mu F_N) [-]",
+            series: &series,
+        },
+        (900, 600),
+    )
+    .with_context(|| format!("drawing {}", path.display()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::clip_to_saturation;
+
+    #[test]
+    fn linear_curve_is_cut_at_saturation() {
+        let xs = [0.0, 1.0, 2.0, 3.0];
+        let ys = [0.0, 0.6, 1.2, 1.8];
+        let p = clip_to_saturation(&xs, &ys);
+        assert_eq!(p.len(), 3);
+        assert!((p[2].0 - 5.0 / 3.0).abs() < 1e-12 && p[2].1 == 1.0);
+        let p = clip_to_saturation(&[-2.0, 0.0, 2.0], &[-2.0, 0.0, 2.0]);
+        assert_eq!(p, vec![(-1.0, -1.0), (0.0, 0.0), (1.0, 1.0)]);
+    }
+}

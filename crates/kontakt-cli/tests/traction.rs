@@ -1,0 +1,313 @@
+//! `kontakt traction`: JSON keys and values against the closed forms, CSV and plot files,
+//! the human table, `kontakt solve` of a traction case, and one-line errors naming the key.
+
+#![allow(clippy::unwrap_used)] // test helpers: a panic is a test failure with its message
+
+use assert_cmd::Command;
+use serde_json::Value;
+use std::path::PathBuf;
+
+fn kontakt() -> Command {
+    Command::cargo_bin("kontakt").expect("binary built")
+}
+
+fn example() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/traction_twin_disc.toml")
+}
+
+fn tempdir() -> PathBuf {
+    let d = std::env::temp_dir().join(format!("kontakt-traction-test-{}", std::process::id()));
+    std::fs::create_dir_all(&d).expect("temp dir");
+    d
+}
+
+fn run_json(args: &[&str]) -> Value {
+    let out = kontakt().args(args).arg("--json").output().expect("runs");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).expect("valid JSON")
+}
+
+/// Run, expect exit status 2 and exactly one stderr line; return it.
+fn bad(args: &[&str]) -> String {
+    let out = kontakt().args(args).output().expect("runs");
+    assert_eq!(out.status.code(), Some(2), "args {args:?}");
+    let err = String::from_utf8(out.stderr).expect("utf8");
+    let lines: Vec<_> = err.lines().filter(|l| !l.trim().is_empty()).collect();
+    assert_eq!(lines.len(), 1, "not one line: {err}");
+    lines[0].to_string()
+}
+
+/// The example's curves: Carter against its closed form, Kalker linear a straight line
+/// through its saturation creepage, FASTSIM between 0 and 1 and saturated at the end.
+/// Tolerances 1e-9 (closed forms re-evaluated from the reported inputs).
+#[test]
+fn example_json_matches_closed_forms() {
+    let v = run_json(&["traction", example().to_str().unwrap()]);
+    assert_eq!(v["method"], "traction");
+    assert_eq!(v["geometry"], "hertz");
+    assert_eq!(v["schema_version"], 1);
+    let xs: Vec<f64> = v["creepage"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect();
+    assert_eq!(xs.len(), 121);
+    assert!((xs[120] - 0.006).abs() < 1e-15);
+    let curve = |name: &str| -> Vec<f64> {
+        let c = v["curves"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|c| c["model"] == name)
+            .unwrap_or_else(|| panic!("no curve {name}"));
+        c["normalized_force"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_f64().unwrap())
+            .collect()
+    };
+    // Carter: 1 - (1 - xi/xi_s)^2, xi_s = 2 mu p0/E*.
+    let (mu, p0, es) = (
+        v["mu"].as_f64().unwrap(),
+        v["max_pressure_mpa"].as_f64().unwrap(),
+        v["e_star_mpa"].as_f64().unwrap(),
+    );
+    let xs_c = v["carter_saturation_creepage"].as_f64().unwrap();
+    assert!((xs_c - 2.0 * mu * p0 / es).abs() < 1e-15);
+    for (x, f) in xs.iter().zip(curve("carter")) {
+        let s = (x / xs_c).min(1.0);
+        assert!((f - (1.0 - (1.0 - s) * (1.0 - s))).abs() < 1e-9, "xi={x}");
+    }
+    // Kalker linear: xi/xi_k, unclipped.
+    let xk = v["kalker_saturation_creepage"].as_f64().unwrap();
+    let k = curve("kalker_linear");
+    for (x, f) in xs.iter().zip(&k) {
+        assert!((f - x / xk).abs() < 1e-9);
+    }
+    assert!(k[120] > 4.0, "unclipped beyond saturation");
+    // FASTSIM: monotone, bounded, saturated at the end, below the linear theory.
+    let f = curve("fastsim");
+    assert_eq!(f[0], 0.0);
+    assert!(f.windows(2).all(|w| w[1] >= w[0] - 1e-12));
+    assert!((f[120] - 1.0).abs() < 1e-9);
+    assert!(f.iter().zip(&k).skip(1).all(|(a, b)| a < b));
+    assert_eq!(v["fastsim_elements"], serde_json::json!([50, 50]));
+    let c11 = v["creep_coefficients"]["c11"].as_f64().unwrap();
+    assert!(c11 > 3.4 && c11 < 4.3, "a/b < 1 at nu = 0.3: {c11}");
+}
+
+/// CSV with every point and one column per model; PNG and SVG plots; the human table.
+#[test]
+fn csv_plot_and_table() {
+    let dir = tempdir();
+    let csv = dir.join("curves.csv");
+    let png = dir.join("curves.png");
+    let svg = dir.join("curves.svg");
+    let out = kontakt()
+        .args([
+            "traction",
+            example().to_str().unwrap(),
+            "--csv",
+            csv.to_str().unwrap(),
+            "--plot",
+            png.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let table = String::from_utf8(out.stdout).unwrap();
+    for s in [
+        "traction curves F_T/(mu F_N)",
+        "a = 0.29903 mm (rolling)",
+        "Kalker C11",
+        "creepage         carter  kalker_linear        fastsim",
+        "--csv writes all",
+    ] {
+        assert!(table.contains(s), "table lacks {s:?}:\n{table}");
+    }
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        "creepage,carter_ft_over_mu_fn,kalker_linear_ft_over_mu_fn,fastsim_ft_over_mu_fn"
+    );
+    assert_eq!(lines.count(), 121);
+    assert!(std::fs::metadata(&png).unwrap().len() > 10_000);
+    let out = kontakt()
+        .args([
+            "traction",
+            example().to_str().unwrap(),
+            "--plot",
+            svg.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let svg = std::fs::read_to_string(&svg).unwrap();
+    assert!(svg.contains("FASTSIM") && svg.contains("Kalker linear (to saturation)"));
+}
+
+/// `kontakt solve` runs a traction case too (table or JSON), and points to `traction` for
+/// the files.
+#[test]
+fn solve_dispatches_traction_cases() {
+    let v = run_json(&["solve", example().to_str().unwrap()]);
+    assert_eq!(v["method"], "traction");
+    assert!(v["max_pressure_mpa"].as_f64().unwrap() > 0.0);
+    let l = bad(&["solve", example().to_str().unwrap(), "--csv", "x.csv"]);
+    assert!(l.contains("kontakt traction"), "{l}");
+}
+
+/// Line contact (Carter only) and an explicit ellipse.
+#[test]
+fn line_and_ellipse_geometries() {
+    let dir = tempdir();
+    let base = std::fs::read_to_string(example()).unwrap();
+    let line = base
+        .replace(
+            "kind = \"hertz\"\nradii1_mm = [20.0, 50.0]    # [circumferential (rolling), crown]\nradii2_mm = [20.0, inf]     # cylindrical disc\nangle_deg = 0.0",
+            "kind = \"line\"\nradii_mm = [20.0, 20.0]\nlength_mm = 10.0",
+        )
+        .replace(
+            "models = [\"carter\", \"kalker_linear\", \"fastsim\"]",
+            "models = [\"carter\"]",
+        );
+    assert_ne!(line, base);
+    let p = dir.join("line.toml");
+    std::fs::write(&p, &line).unwrap();
+    let v = run_json(&["traction", p.to_str().unwrap()]);
+    assert_eq!(v["geometry"], "line");
+    assert!((v["line_load_n_per_mm"].as_f64().unwrap() - 100.0).abs() < 1e-12);
+    // Carter for cylinders: xi_s = mu a/R, R = 10 mm.
+    let a = v["semi_axes_mm"][0].as_f64().unwrap();
+    let xs = v["carter_saturation_creepage"].as_f64().unwrap();
+    assert!((xs - 0.1 * a / 10.0).abs() < 1e-12 * xs.max(1.0));
+    assert!(v["creep_coefficients"].is_null());
+    // Kalker's models need an ellipse.
+    let p = dir.join("line_fastsim.toml");
+    std::fs::write(
+        &p,
+        line.replace("models = [\"carter\"]", "models = [\"fastsim\"]"),
+    )
+    .unwrap();
+    let l = bad(&["traction", p.to_str().unwrap()]);
+    assert!(l.contains("invalid models = fastsim"), "{l}");
+    // Explicit ellipse.
+    let p = dir.join("ellipse.toml");
+    std::fs::write(
+        &p,
+        base.replace(
+            "kind = \"hertz\"\nradii1_mm = [20.0, 50.0]    # [circumferential (rolling), crown]\nradii2_mm = [20.0, inf]     # cylindrical disc\nangle_deg = 0.0",
+            "kind = \"ellipse\"\nsemi_axes_mm = [0.3, 0.3]",
+        ),
+    )
+    .unwrap();
+    let v = run_json(&["traction", p.to_str().unwrap()]);
+    assert_eq!(v["geometry"], "ellipse");
+    assert!((v["creep_coefficients"]["c11"].as_f64().unwrap() - 4.300).abs() < 5e-4);
+}
+
+/// Bad input: one line, exit status 2, naming the case key.
+#[test]
+fn bad_cases_name_the_key() {
+    let dir = tempdir();
+    let base = std::fs::read_to_string(example()).unwrap();
+    let write = |name: &str, text: String| {
+        assert_ne!(text, base, "{name}: replacement did not apply");
+        let p = dir.join(name);
+        std::fs::write(&p, text).unwrap();
+        p.to_str().unwrap().to_string()
+    };
+    let p = write("mu.toml", base.replace("mu = 0.1", "mu = 0.0"));
+    let l = bad(&["traction", &p]);
+    assert!(l.contains("invalid friction.mu = 0"), "{l}");
+    let p = write(
+        "force.toml",
+        base.replace("force_n = 1000.0", "force_n = 0.0"),
+    );
+    let l = bad(&["traction", &p]);
+    assert!(l.contains("invalid load.force_n = 0"), "{l}");
+    let p = write("max.toml", base.replace("max = 0.006", "max = nan"));
+    let l = bad(&["traction", &p]);
+    assert!(l.contains("invalid creepage.max = NaN"), "{l}");
+    let p = write("nu.toml", base.replacen("nu = 0.3", "nu = 0.7", 1));
+    let l = bad(&["traction", &p]);
+    assert!(l.contains("invalid body1.nu = 0.7"), "{l}");
+    let p = write(
+        "grid.toml",
+        base.replace("elements = [50, 50]", "elements = [50, 0]"),
+    );
+    let l = bad(&["traction", &p]);
+    assert!(l.contains("invalid fastsim.elements[1] = 0"), "{l}");
+    let p = write("model.toml", base.replace("\"fastsim\"]", "\"fastsimm\"]"));
+    let l = bad(&["traction", &p]);
+    assert!(l.contains("fastsimm") && l.contains("line"), "{l}");
+    let p = write(
+        "oblique.toml",
+        base.replace("angle_deg = 0.0", "angle_deg = 30.0"),
+    );
+    let l = bad(&["traction", &p]);
+    assert!(
+        l.contains("geometry.angle_deg") && l.contains("along an axis"),
+        "{l}"
+    );
+    let l = bad(&["traction", dir.join("missing.toml").to_str().unwrap()]);
+    assert!(l.contains("cannot read case file"), "{l}");
+}
+
+/// The asperity model of `kontakt::traction` on a circular contact (sphere on flat):
+/// zero at zero creepage, monotone, 1 once every asperity slides; refused on an ellipse.
+#[test]
+fn asperity_model_on_a_circular_contact() {
+    let dir = tempdir();
+    let base = std::fs::read_to_string(example()).unwrap();
+    let sphere = base
+        .replace(
+            "radii1_mm = [20.0, 50.0]    # [circumferential (rolling), crown]\nradii2_mm = [20.0, inf]     # cylindrical disc",
+            "radii1_mm = [10.0, 10.0]\nradii2_mm = [inf, inf]",
+        )
+        .replace(
+            "models = [\"carter\", \"kalker_linear\", \"fastsim\"]",
+            "models = [\"fastsim\", \"asperity\"]",
+        )
+        .replace("max = 0.006", "max = 0.05")
+        + "\n[asperity]\nasperity_radii_mm = [0.02, 0.02]\nperiod_mm = 0.05\n";
+    let p = dir.join("sphere_asperity.toml");
+    std::fs::write(&p, &sphere).unwrap();
+    let v = run_json(&["traction", p.to_str().unwrap()]);
+    let curves = v["curves"].as_array().unwrap();
+    assert_eq!(curves[1]["model"], "asperity");
+    let f: Vec<f64> = curves[1]["normalized_force"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect();
+    assert_eq!(f[0], 0.0);
+    assert!(f.windows(2).all(|w| w[1] >= w[0] - 1e-12));
+    assert!((f[f.len() - 1] - 1.0).abs() < 1e-9, "{}", f[f.len() - 1]);
+    assert!(v["asperities"].as_u64().unwrap() > 50);
+    // Without [asperity], and on the elliptical twin-disc contact: one-line errors.
+    let p = dir.join("no_table.toml");
+    std::fs::write(&p, sphere.split("[asperity]").next().unwrap()).unwrap();
+    assert!(bad(&["traction", p.to_str().unwrap()]).contains("invalid asperity = missing"));
+    let p = dir.join("ellipse_asperity.toml");
+    std::fs::write(
+        &p,
+        base.replace("\"fastsim\"]", "\"fastsim\", \"asperity\"]")
+            + "\n[asperity]\nasperity_radii_mm = [0.02, 0.02]\nperiod_mm = 0.05\n",
+    )
+    .unwrap();
+    let l = bad(&["traction", p.to_str().unwrap()]);
+    assert!(l.contains("invalid models = asperity on an ellipse"), "{l}");
+}

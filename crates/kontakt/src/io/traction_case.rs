@@ -1,0 +1,686 @@
+//! Traction-curve cases (`method = "traction"`, `schema_version = 1`) and their report:
+//! the normalized tangential force `F_T/(mu F_N)` against the longitudinal creepage (the
+//! slide-to-roll ratio) for several models of [`crate::tangential`].
+//!
+//! ```toml
+//! name = "twin-disc, crowned disc on cylindrical disc"
+//! method = "traction"
+//! models = ["carter", "kalker_linear", "fastsim"]   # default: all three
+//!
+//! [geometry]
+//! kind = "hertz"             # principal radii -> Hertz ellipse; rolling along body 1's
+//! radii1_mm = [20.0, 50.0]   # first principal direction (the first radius)
+//! radii2_mm = [20.0, inf]
+//! angle_deg = 0.0
+//! # kind = "ellipse": semi_axes_mm = [a, b], a along the rolling direction
+//! # kind = "line": radii_mm = [R1, R2], length_mm = L (parallel cylinders; carter only)
+//!
+//! [body1]
+//! e_mpa = 210000.0
+//! nu = 0.3
+//! [body2]
+//! e_mpa = 210000.0
+//! nu = 0.3
+//!
+//! [load]
+//! force_n = 1000.0
+//!
+//! [friction]
+//! mu = 0.1
+//!
+//! [creepage]                 # slide-to-roll ratios, evenly spaced
+//! max = 0.006
+//! points = 121               # optional, default 101
+//! # min = 0.0                # optional, default 0
+//!
+//! [fastsim]                  # optional
+//! elements = [50, 50]
+//! pressure = "parabolic"     # or "elliptic"
+//!
+//! # [asperity]               # for models = [..., "asperity"]: circular or line contacts
+//! # asperity_radii_mm = [0.02, 0.02]     # of identical bodies (kontakt::traction)
+//! # period_mm = 0.05
+//! ```
+//!
+//! The schema is documented in `docs/case-schema.md`; [`run_traction_case`] turns a case
+//! into a [`TractionReport`]. Kalker's linear curve is reported *unclipped* (it is the
+//! linear theory; it exceeds 1 beyond its saturation creepage); `kontakt traction --plot`
+//! draws it up to where it reaches 1.
+
+use super::case::parse_toml;
+use super::pimp_case::{MaterialSpec, material};
+use crate::error::{Error, Result};
+use crate::hertz::line::LineContact;
+use crate::hertz::{HertzPointContact, PointGeometry};
+use crate::material::effective_modulus;
+use crate::tangential::{
+    Carter, ContactEllipse, CreepCoefficients, EllipseAxis, Fastsim, FastsimOptions, KalkerLinear,
+    KalkerMaterial, PressureShape, TractionCurve,
+};
+use crate::traction::{
+    AsperityContactLaw, AsperityTraction, AsperityTractionParams, LoadSharing, NominalContact,
+    SlipReference,
+};
+use serde::{Deserialize, Serialize};
+
+/// A traction-curve case, as read from TOML.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TractionCase {
+    /// Optional label echoed in the report.
+    #[serde(default)]
+    pub name: Option<String>,
+    /// Must be `"traction"`.
+    pub method: String,
+    /// Models to evaluate, in this order (default: carter, kalker_linear, fastsim).
+    #[serde(default = "default_models")]
+    pub models: Vec<TractionModel>,
+    /// The contact geometry.
+    pub geometry: TractionGeometry,
+    /// Body 1 material.
+    pub body1: MaterialSpec,
+    /// Body 2 material.
+    pub body2: MaterialSpec,
+    /// The normal load.
+    pub load: TractionLoad,
+    /// Friction.
+    pub friction: FrictionSpec,
+    /// The creepage range.
+    pub creepage: CreepageRange,
+    /// FASTSIM options.
+    #[serde(default)]
+    pub fastsim: FastsimSpec,
+    /// The asperity lattice, needed by the `asperity` model.
+    #[serde(default)]
+    pub asperity: Option<AsperitySpec>,
+}
+
+/// `[asperity]`: the rough-surface model of [`crate::traction`] on the case's nominal
+/// contact (circular or line), with the case's load, friction and (identical) materials.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AsperitySpec {
+    /// Tip radii of the asperities of body 1 and body 2 \[mm\].
+    pub asperity_radii_mm: [f64; 2],
+    /// Lattice period along the rolling direction \[mm\].
+    pub period_mm: f64,
+    /// Lattice period across it \[mm\]; default `period_mm`.
+    #[serde(default)]
+    pub transverse_period_mm: Option<f64>,
+    /// Shear modulus \[MPa\]; default E / (2 (1 + nu)).
+    #[serde(default)]
+    pub shear_modulus_mpa: Option<f64>,
+    /// Contact radius law of an asperity pair (default Hertz).
+    #[serde(default)]
+    pub asperity_contact: AsperityContactLaw,
+    /// Speed that turns the slide-to-roll ratio into slip (default rolling speed).
+    #[serde(default)]
+    pub slip_reference: SlipReference,
+    /// Load sharing among the asperities (default exact cell integral).
+    #[serde(default)]
+    pub load_sharing: LoadSharing,
+}
+
+fn default_models() -> Vec<TractionModel> {
+    vec![
+        TractionModel::Carter,
+        TractionModel::KalkerLinear,
+        TractionModel::Fastsim,
+    ]
+}
+
+/// A model of a traction curve.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum TractionModel {
+    /// Carter's 2D curve ([`Carter`]); for a point contact, of the central strip.
+    Carter,
+    /// Kalker's linear theory ([`KalkerLinear`]), unclipped.
+    KalkerLinear,
+    /// Kalker's FASTSIM ([`Fastsim`]).
+    Fastsim,
+    /// The asperity micro-slip model ([`AsperityTraction`]) of a rough circular or line
+    /// contact; needs `[asperity]`.
+    Asperity,
+}
+
+impl TractionModel {
+    /// The model's name as in the case file and the report.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            TractionModel::Carter => "carter",
+            TractionModel::KalkerLinear => "kalker_linear",
+            TractionModel::Fastsim => "fastsim",
+            TractionModel::Asperity => "asperity",
+        }
+    }
+}
+
+/// `[geometry]`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+pub enum TractionGeometry {
+    /// Two bodies by their principal radii: the Hertz ellipse of [`crate::hertz`]. The
+    /// rolling direction is body 1's first principal direction; it must lie along an axis
+    /// of the contact ellipse.
+    Hertz {
+        /// Body 1 principal radii \[mm\] (convex > 0, concave < 0, inf flat).
+        radii1_mm: [f64; 2],
+        /// Body 2 principal radii \[mm\].
+        radii2_mm: [f64; 2],
+        /// Angle between the principal planes \[deg\].
+        #[serde(default)]
+        angle_deg: f64,
+    },
+    /// A given contact ellipse with the Hertz pressure of the normal force.
+    Ellipse {
+        /// Semi-axes `[a, b]` \[mm\]: `a` along the rolling direction, `b` across.
+        semi_axes_mm: [f64; 2],
+    },
+    /// Two parallel cylinders rolling about their axes (Carter's case).
+    Line {
+        /// Radii `[R1, R2]` \[mm\] (convex > 0, concave < 0, inf flat).
+        radii_mm: [f64; 2],
+        /// Contact length \[mm\]: the line load is `force_n / length_mm`.
+        length_mm: f64,
+    },
+}
+
+/// `[load]`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TractionLoad {
+    /// Normal force \[N\], > 0.
+    pub force_n: f64,
+}
+
+/// `[friction]`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FrictionSpec {
+    /// Coefficient of friction \[-\], > 0.
+    pub mu: f64,
+}
+
+/// `[creepage]`: evenly spaced longitudinal creepages (slide-to-roll ratios) \[-\].
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CreepageRange {
+    /// First creepage \[-\], default 0.
+    #[serde(default)]
+    pub min: f64,
+    /// Last creepage \[-\], > min.
+    pub max: f64,
+    /// Number of points, 2..=100000, default 101.
+    #[serde(default = "default_points")]
+    pub points: usize,
+}
+
+fn default_points() -> usize {
+    101
+}
+
+impl CreepageRange {
+    /// The creepages `min + (max - min) i/(points - 1)`.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] naming `creepage.min`, `creepage.max` or
+    /// `creepage.points`.
+    pub fn values(&self) -> Result<Vec<f64>> {
+        if !self.min.is_finite() {
+            return Err(Error::invalid(
+                "creepage.min",
+                self.min,
+                "a finite creepage [-]",
+            ));
+        }
+        if !(self.max.is_finite() && self.max > self.min) {
+            return Err(Error::invalid(
+                "creepage.max",
+                self.max,
+                format!("a finite creepage > creepage.min = {}", self.min),
+            ));
+        }
+        if !(2..=100_000).contains(&self.points) {
+            return Err(Error::invalid(
+                "creepage.points",
+                self.points,
+                "2..=100000 points",
+            ));
+        }
+        let n = self.points - 1;
+        Ok((0..=n)
+            .map(|i| self.min + (self.max - self.min) * i as f64 / n as f64)
+            .collect())
+    }
+}
+
+/// `[fastsim]`: FASTSIM options.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct FastsimSpec {
+    /// Elements `[nx, ny]` (along rolling, strips), each 1..=4096.
+    pub elements: [usize; 2],
+    /// Pressure for the traction bound: `parabolic` (Kalker) or `elliptic` (Hertz).
+    pub pressure: PressureSpec,
+}
+
+/// Pressure shape of FASTSIM's traction bound, as written in a case.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum PressureSpec {
+    /// Kalker's parabolic pressure.
+    #[default]
+    Parabolic,
+    /// The Hertz pressure.
+    Elliptic,
+}
+
+impl Default for FastsimSpec {
+    fn default() -> Self {
+        FastsimSpec {
+            elements: FastsimOptions::default().elements,
+            pressure: PressureSpec::Parabolic,
+        }
+    }
+}
+
+impl TractionCase {
+    /// Parse a traction case from TOML text.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] with field `case` and the parser's message for malformed
+    /// TOML, unknown keys or wrong types.
+    pub fn from_toml_str(text: &str) -> Result<Self> {
+        parse_toml(text)
+    }
+}
+
+/// One model's curve in a [`TractionReport`].
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CurveReport {
+    /// Model name (`carter`, `kalker_linear`, `fastsim`).
+    pub model: &'static str,
+    /// `F_T/(mu F_N)` \[-\] at each creepage of the report (Kalker linear: unclipped).
+    pub normalized_force: Vec<f64>,
+}
+
+/// The result of a traction case. Keys carry their units; dimensionless quantities have
+/// none.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct TractionReport {
+    /// Version of kontakt that produced the record.
+    pub kontakt_version: &'static str,
+    /// Version of this schema.
+    pub schema_version: u32,
+    /// The case's name, if any.
+    pub name: Option<String>,
+    /// `"traction"`.
+    pub method: &'static str,
+    /// `"hertz"`, `"ellipse"` or `"line"`.
+    pub geometry: &'static str,
+    /// Normal force \[N\].
+    pub force_n: f64,
+    /// Line load [N/mm] (line contacts).
+    pub line_load_n_per_mm: Option<f64>,
+    /// Friction coefficient \[-\].
+    pub mu: f64,
+    /// Contact modulus E* \[MPa\].
+    pub e_star_mpa: f64,
+    /// Kalker's combined shear modulus G \[MPa\].
+    pub shear_modulus_mpa: f64,
+    /// Kalker's combined Poisson's ratio \[-\].
+    pub poisson_ratio: f64,
+    /// `[a, b]` \[mm\]: semi-axis along the rolling direction and across it (line: half-width
+    /// and half-length).
+    pub semi_axes_mm: [f64; 2],
+    /// Maximum Hertz pressure p0 \[MPa\].
+    pub max_pressure_mpa: f64,
+    /// Kalker's creepage coefficients (point contacts).
+    pub creep_coefficients: Option<CreepCoefficients>,
+    /// Creepage at which Kalker's linear force reaches mu F_N \[-\] (point contacts).
+    pub kalker_saturation_creepage: Option<f64>,
+    /// Carter's full-slip creepage `2 mu p0/E*` \[-\].
+    pub carter_saturation_creepage: f64,
+    /// FASTSIM elements `[nx, ny]`, if FASTSIM ran.
+    pub fastsim_elements: Option<[usize; 2]>,
+    /// Number of asperities of the asperity model, if it ran.
+    pub asperities: Option<usize>,
+    /// The longitudinal creepages (slide-to-roll ratios) \[-\].
+    pub creepage: Vec<f64>,
+    /// One curve per model, in the order of the case.
+    pub curves: Vec<CurveReport>,
+}
+
+/// Run a traction case: build the contact, plan each model once and evaluate its curve.
+///
+/// # Errors
+/// [`Error::InvalidInput`] or [`Error::Geometry`] naming the case key at fault
+/// (`friction.mu`, `load.force_n`, `geometry.radii1_mm[0]`, `creepage.max`, `models`,
+/// `fastsim.elements[0]`, ...).
+///
+/// # Example
+/// ```
+/// use kontakt::io::traction_case::{TractionCase, run_traction_case};
+/// let case = TractionCase::from_toml_str(r#"
+///     method = "traction"
+///     [geometry]
+///     kind = "ellipse"
+///     semi_axes_mm = [0.3, 0.9]
+///     [body1]
+///     e_mpa = 210000.0
+///     nu = 0.3
+///     [body2]
+///     e_mpa = 210000.0
+///     nu = 0.3
+///     [load]
+///     force_n = 1000.0
+///     [friction]
+///     mu = 0.1
+///     [creepage]
+///     max = 0.01
+/// "#)?;
+/// let r = run_traction_case(&case)?;
+/// assert_eq!(r.curves.len(), 3);
+/// assert!((r.curves[2].normalized_force[100] - 1.0).abs() < 1e-9); // FASTSIM saturated
+/// # Ok::<(), kontakt::Error>(())
+/// ```
+pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
+    if case.method != "traction" {
+        return Err(Error::invalid(
+            "method",
+            &case.method,
+            "\"traction\" for this schema",
+        ));
+    }
+    if case.models.is_empty() {
+        return Err(Error::invalid(
+            "models",
+            "[]",
+            "at least one of carter, kalker_linear, fastsim",
+        ));
+    }
+    let m1 = material(&case.body1, "body1")?;
+    let m2 = material(&case.body2, "body2")?;
+    let mu = case.friction.mu;
+    let map_common = |e: Error| {
+        e.map_field(|f| match f {
+            "friction_coefficient" => "friction.mu".into(),
+            "normal_force" | "force" | "line_load" => "load.force_n".into(),
+            "poisson_ratio" => "body1.nu/body2.nu (Kalker's combined nu)".into(),
+            "elements[0]" => "fastsim.elements[0]".into(),
+            "elements[1]" => "fastsim.elements[1]".into(),
+            "semi_axes[0]" => "geometry.semi_axes_mm[0]".into(),
+            "semi_axes[1]" => "geometry.semi_axes_mm[1]".into(),
+            other => other.into(),
+        })
+    };
+    crate::tangential::check_friction(mu).map_err(map_common)?;
+    let creepage = case.creepage.values()?;
+    let kalker_material = KalkerMaterial::new(&m1, &m2).map_err(map_common)?;
+    let e_star = effective_modulus(&m1, &m2);
+
+    // (label, ellipse, Carter, line load, [a, b] or [half-width, half-length], p0)
+    let (label, ellipse, carter, line_load, semi_axes_mm, max_pressure_mpa) = match &case.geometry {
+        TractionGeometry::Hertz {
+            radii1_mm,
+            radii2_mm,
+            angle_deg,
+        } => {
+            if !angle_deg.is_finite() {
+                return Err(Error::invalid(
+                    "geometry.angle_deg",
+                    angle_deg,
+                    "a finite angle [deg]",
+                ));
+            }
+            let g = PointGeometry::new(*radii1_mm, *radii2_mm, angle_deg.to_radians()).map_err(
+                |e| {
+                    e.map_field(|f| {
+                        f.replace("body1.radii", "geometry.radii1_mm")
+                            .replace("body2.radii", "geometry.radii2_mm")
+                    })
+                },
+            )?;
+            let sol = HertzPointContact::new(g, m1, m2)?
+                .solve_force(case.load.force_n)
+                .map_err(map_common)?;
+            let (s, c) = sol.orientation.sin_cos();
+            let axis = if sol.semi_axes[0] == sol.semi_axes[1] || s.abs() < 1e-9 {
+                EllipseAxis::Major
+            } else if c.abs() < 1e-9 {
+                EllipseAxis::Minor
+            } else {
+                return Err(Error::Geometry {
+                    field: "geometry.angle_deg".into(),
+                    reason: format!(
+                        "the rolling direction (body 1's first principal direction) is at {:.3} \
+                         deg to the major axis of the contact ellipse; the creep models need it \
+                         along an axis (use angle_deg = 0 or 90, or kind = \"ellipse\")",
+                        sol.orientation.to_degrees()
+                    ),
+                });
+            };
+            let e = ContactEllipse::from_hertz(&sol, axis)?;
+            let carter = Carter::from_ellipse(&e, &m1, &m2, mu).map_err(map_common)?;
+            let axes = [e.a(), e.b()];
+            ("hertz", Some(e), carter, None, axes, e.max_pressure())
+        }
+        TractionGeometry::Ellipse { semi_axes_mm } => {
+            let e = ContactEllipse::new(semi_axes_mm[0], semi_axes_mm[1], case.load.force_n)
+                .map_err(map_common)?;
+            let carter = Carter::from_ellipse(&e, &m1, &m2, mu).map_err(map_common)?;
+            let axes = [e.a(), e.b()];
+            ("ellipse", Some(e), carter, None, axes, e.max_pressure())
+        }
+        TractionGeometry::Line {
+            radii_mm,
+            length_mm,
+        } => {
+            if !(length_mm.is_finite() && *length_mm > 0.0) {
+                return Err(Error::invalid(
+                    "geometry.length_mm",
+                    length_mm,
+                    "a finite length > 0 mm",
+                ));
+            }
+            let contact = LineContact::new(radii_mm[0], radii_mm[1], m1, m2).map_err(|e| {
+                e.map_field(|f| match f {
+                    "body1.radius" => "geometry.radii_mm[0]".into(),
+                    "body2.radius" => "geometry.radii_mm[1]".into(),
+                    _ => "geometry.radii_mm".into(),
+                })
+            })?;
+            let positive_force = crate::error::positive_as(
+                "normal_force",
+                case.load.force_n,
+                "a finite force > 0 N",
+            )
+            .map_err(map_common)?;
+            let line_load = positive_force / length_mm;
+            let carter = Carter::from_line_contact(&contact, line_load, mu).map_err(map_common)?;
+            let axes = [carter.semi_width(), 0.5 * length_mm];
+            (
+                "line",
+                None,
+                carter,
+                Some(line_load),
+                axes,
+                carter.max_pressure(),
+            )
+        }
+    };
+
+    let mut kalker = None;
+    let mut fastsim = None;
+    let mut asperity = None;
+    let mut curves = Vec::with_capacity(case.models.len());
+    for &model in &case.models {
+        let curve: &dyn TractionCurve = match model {
+            TractionModel::Carter => &carter,
+            TractionModel::Asperity => {
+                asperity = Some(asperity_model(case, &carter, ellipse, m1, m2)?);
+                asperity.as_ref().expect("invariant: just set")
+            }
+            TractionModel::KalkerLinear | TractionModel::Fastsim => {
+                let Some(e) = ellipse else {
+                    return Err(Error::invalid(
+                        "models",
+                        model.as_str(),
+                        "carter or asperity for kind = \"line\" (Kalker's theories need a \
+                         contact ellipse: use kind = \"hertz\" or \"ellipse\")",
+                    ));
+                };
+                if model == TractionModel::KalkerLinear {
+                    kalker = Some(KalkerLinear::new(e, &m1, &m2, mu).map_err(map_common)?);
+                    kalker.as_ref().expect("invariant: just set")
+                } else {
+                    let options = FastsimOptions {
+                        elements: case.fastsim.elements,
+                        pressure: match case.fastsim.pressure {
+                            PressureSpec::Parabolic => PressureShape::Parabolic,
+                            PressureSpec::Elliptic => PressureShape::Elliptic,
+                        },
+                    };
+                    fastsim = Some(Fastsim::new(e, &m1, &m2, mu, options).map_err(map_common)?);
+                    fastsim.as_ref().expect("invariant: just set")
+                }
+            }
+        };
+        curves.push(CurveReport {
+            model: model.as_str(),
+            normalized_force: curve.traction_curve(&creepage).map_err(map_common)?,
+        });
+    }
+    // Linear-theory data for every point contact, also when the model was not asked for.
+    let linear = match (&kalker, ellipse) {
+        (Some(k), _) => Some(*k),
+        (None, Some(e)) => Some(KalkerLinear::new(e, &m1, &m2, mu).map_err(map_common)?),
+        (None, None) => None,
+    };
+    Ok(TractionReport {
+        kontakt_version: crate::VERSION,
+        schema_version: super::report::SCHEMA_VERSION,
+        name: case.name.clone(),
+        method: "traction",
+        geometry: label,
+        force_n: case.load.force_n,
+        line_load_n_per_mm: line_load,
+        mu,
+        e_star_mpa: e_star,
+        shear_modulus_mpa: kalker_material.shear_modulus,
+        poisson_ratio: kalker_material.poisson_ratio,
+        semi_axes_mm,
+        max_pressure_mpa,
+        creep_coefficients: linear.map(|k| k.coefficients()),
+        kalker_saturation_creepage: linear.map(|k| k.saturation_creepage()),
+        carter_saturation_creepage: carter.saturation_creepage(),
+        fastsim_elements: fastsim.map(|f| f.options().elements),
+        asperities: asperity.map(|a| a.0.asperities().len()),
+        creepage,
+        curves,
+    })
+}
+
+/// The asperity model of [`crate::traction`] as a [`TractionCurve`]: its traction ratio,
+/// extended as an odd function to negative creepage.
+struct AsperityCurve(AsperityTraction);
+
+impl TractionCurve for AsperityCurve {
+    fn name(&self) -> &'static str {
+        "asperity"
+    }
+
+    fn normalized_force(&self, creepage: f64) -> Result<f64> {
+        crate::tangential::check_creepage(creepage)?;
+        Ok(creepage.signum() * self.0.traction_ratio(creepage.abs())?)
+    }
+}
+
+/// Plan the asperity model on the case's nominal contact.
+fn asperity_model(
+    case: &TractionCase,
+    carter: &Carter,
+    ellipse: Option<ContactEllipse>,
+    m1: crate::material::ElasticMaterial,
+    m2: crate::material::ElasticMaterial,
+) -> Result<AsperityCurve> {
+    let spec = case.asperity.ok_or_else(|| {
+        Error::invalid(
+            "asperity",
+            "missing",
+            "an [asperity] table (asperity_radii_mm, period_mm) for the asperity model",
+        )
+    })?;
+    if m1 != m2 {
+        return Err(Error::invalid(
+            "body2",
+            format!(
+                "E = {} MPa, nu = {}",
+                m2.youngs_modulus(),
+                m2.poisson_ratio()
+            ),
+            "the material of body1 (the asperity model assumes identical bodies)",
+        ));
+    }
+    let circular = |e: &ContactEllipse| {
+        ((e.a() - e.b()) / e.a()).abs() <= crate::traction::asperity::CIRCULARITY_TOLERANCE
+    };
+    let nominal = match (&case.geometry, ellipse) {
+        (
+            TractionGeometry::Line {
+                radii_mm,
+                length_mm,
+            },
+            _,
+        ) => NominalContact::HertzLine {
+            length: *length_mm,
+            radii: *radii_mm,
+        },
+        (_, Some(e)) if circular(&e) => NominalContact::Circular {
+            half_width: e.a(),
+            max_pressure: None,
+        },
+        _ => {
+            return Err(Error::invalid(
+                "models",
+                format!(
+                    "asperity on an ellipse a = {:.6} mm, b = {:.6} mm",
+                    ellipse.map_or(carter.semi_width(), |e| e.a()),
+                    ellipse.map_or(0.0, |e| e.b())
+                ),
+                "a circular (a = b) or line contact for the asperity model",
+            ));
+        }
+    };
+    let params = AsperityTractionParams {
+        nominal,
+        load: case.load.force_n,
+        friction_coefficient: case.friction.mu,
+        youngs_modulus: m1.youngs_modulus(),
+        poisson_ratio: m1.poisson_ratio(),
+        shear_modulus: spec.shear_modulus_mpa,
+        asperity_radii: spec.asperity_radii_mm,
+        period: spec.period_mm,
+        transverse_period: spec.transverse_period_mm,
+        asperity_contact: spec.asperity_contact,
+        slip_reference: spec.slip_reference,
+        load_sharing: spec.load_sharing,
+    };
+    let model = AsperityTraction::new(params).map_err(|e| {
+        e.map_field(|f| match f {
+            "load" => "load.force_n".into(),
+            "friction_coefficient" => "friction.mu".into(),
+            "youngs_modulus" => "body1.e_mpa".into(),
+            "poisson_ratio" => "body1.nu".into(),
+            "shear_modulus" => "asperity.shear_modulus_mpa".into(),
+            "asperity_radii" => "asperity.asperity_radii_mm".into(),
+            "period" => "asperity.period_mm".into(),
+            "transverse_period" => "asperity.transverse_period_mm".into(),
+            "asperity_contact" => "asperity.asperity_contact".into(),
+            other if other.starts_with("nominal") => format!("geometry ({other})"),
+            other => format!("asperity.{other}"),
+        })
+    })?;
+    Ok(AsperityCurve(model))
+}
