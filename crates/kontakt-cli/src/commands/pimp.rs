@@ -330,6 +330,19 @@ pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
         md.push_str(&format!("### {name}\n\n![{name}]({file})\n\n"));
     }
     md.push_str("All rows (both modes, every load): [results.csv](results.csv).\n");
+    // Traction curves of every model on one contact (examples/traction_ball_all_models.toml).
+    let traction = kontakt::io::run_traction_case(&kontakt::io::TractionCase::from_toml_str(
+        include_str!("../../../../examples/traction_ball_all_models.toml"),
+    )?)
+    .context("the demo's traction case")?;
+    crate::commands::traction::write_plot(&out_dir.join("traction.png"), &traction)?;
+    crate::commands::traction::write_csv(&out_dir.join("traction.csv"), &traction)?;
+    md.push_str(
+        "\n## Traction curves\n\nA 20 mm steel ball rolling on a flat steel disc, 200 N, mu = 0.1: \
+         Carter, Kalker's linear theory, FASTSIM and the asperity model of the thesis \
+         (`kontakt traction examples/traction_ball_all_models.toml`). Data: \
+         [traction.csv](traction.csv).\n\n![traction curves](traction.png)\n",
+    );
     std::fs::write(&md_path, md)
         .map_err(|e| InputError(format!("cannot write {}: {e}", md_path.display())))?;
 
@@ -371,7 +384,8 @@ pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
         }
         writeln!(
             out,
-            "Report written to {} ({} results, {} pressure maps, 2 plots, results.csv)",
+            "Report written to {} ({} results, {} pressure maps, 2 plots, results.csv; \
+             traction curves of four models in traction.png)",
             md_path.display(),
             rows.len(),
             maps.len()
