@@ -317,6 +317,12 @@ impl ElasticOperator {
         let (rpt, cpt) = (*rows_per_task, *cols_per_task);
         let forward = |((spec, input), w): ((&mut [Complex<f64>], &[f64]), &mut Workspace)| {
             for (s, x) in spec.chunks_mut(kx).zip(input.chunks(nx)) {
+                if x.iter().all(|v| *v == 0.0) {
+                    // Rows outside the loaded set are common (the search direction is
+                    // zero off the contact): their spectrum is zero.
+                    s.fill(Complex::default());
+                    continue;
+                }
                 w.row[..nx].copy_from_slice(x);
                 w.row[nx..].fill(0.0);
                 let _ = r2c.process_with_scratch(&mut w.row, s, &mut w.scratch);
