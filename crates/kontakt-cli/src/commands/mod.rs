@@ -27,18 +27,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
             output::print_report(out, &report, args.json)
         }
         Command::Solve(args) => {
-            let (label, text) = if args.case.as_os_str() == "-" {
-                let mut s = String::new();
-                std::io::stdin()
-                    .read_to_string(&mut s)
-                    .map_err(|e| InputError(format!("cannot read the case from stdin: {e}")))?;
-                ("<stdin>".to_string(), s)
-            } else {
-                let label = args.case.display().to_string();
-                let text = std::fs::read_to_string(&args.case)
-                    .map_err(|e| InputError(format!("cannot read case file {label}: {e}")))?;
-                (label, text)
-            };
+            let (label, text) = read_case(&args.case)?;
             match Case::from_toml_str(&text).with_context(|| label.clone())? {
                 Case::Hertz(case) => {
                     if args.csv.is_some() || args.map.is_some() {
@@ -112,6 +101,22 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
         Command::Demo(args) => pimp::demo(&args.out, out, args.json),
         Command::Validate(args) => validate::validate(&args.out, args.cells, out, args.json),
         Command::Traction(args) => traction::run(args, out),
+    }
+}
+
+/// Read a case file (or standard input for `-`): its label for messages and its text.
+pub fn read_case(path: &std::path::Path) -> Result<(String, String)> {
+    if path.as_os_str() == "-" {
+        let mut s = String::new();
+        std::io::stdin()
+            .read_to_string(&mut s)
+            .map_err(|e| InputError(format!("cannot read the case from stdin: {e}")))?;
+        Ok(("<stdin>".to_string(), s))
+    } else {
+        let label = path.display().to_string();
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| InputError(format!("cannot read case file {label}: {e}")))?;
+        Ok((label, text))
     }
 }
 

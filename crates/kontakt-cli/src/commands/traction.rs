@@ -7,7 +7,7 @@ use crate::commands::InputError;
 use anyhow::{Context, Result};
 use kontakt::io::{TractionCase, TractionReport, run_traction_case};
 use kontakt_plot::{LinePlot, LineStyle, PALETTE, Series};
-use std::io::{Read, Write};
+use std::io::Write;
 use std::path::Path;
 
 /// Most rows of the human table; `--csv` has every point.
@@ -15,18 +15,7 @@ const MAX_ROWS: usize = 21;
 
 /// Run the subcommand.
 pub fn run(args: &TractionArgs, out: &mut impl Write) -> Result<()> {
-    let (label, text) = if args.case.as_os_str() == "-" {
-        let mut s = String::new();
-        std::io::stdin()
-            .read_to_string(&mut s)
-            .map_err(|e| InputError(format!("cannot read the case from stdin: {e}")))?;
-        ("<stdin>".to_string(), s)
-    } else {
-        let label = args.case.display().to_string();
-        let text = std::fs::read_to_string(&args.case)
-            .map_err(|e| InputError(format!("cannot read case file {label}: {e}")))?;
-        (label, text)
-    };
+    let (label, text) = crate::commands::read_case(&args.case)?;
     let case = TractionCase::from_toml_str(&text).with_context(|| label.clone())?;
     let report = run_traction_case(&case).with_context(|| label.clone())?;
     if let Some(path) = &args.csv {

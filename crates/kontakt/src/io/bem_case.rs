@@ -34,7 +34,8 @@
 //! ```
 
 use super::pimp_case::{
-    GapSetup, GeometrySpec, GridEcho, PimpCase, PimpReport, gap_setup, hertz_echo, material,
+    FieldSummary, GapSetup, GeometrySpec, PimpCase, PimpReport, ReportMeta, gap_setup, hertz_echo,
+    material,
 };
 use crate::error::{Error, Result};
 use crate::halfspace::{Bem, BemOptions, BemSolution, Control, GapMap};
@@ -206,41 +207,39 @@ pub fn run_bem_case(case: &PimpCase, base_dir: &Path) -> Result<BemOutcome> {
             )
         }
     };
-    let report = PimpReport {
-        kontakt_version: crate::VERSION,
-        schema_version: super::report::SCHEMA_VERSION,
-        name: case.name.clone(),
-        method: "bem",
-        mode: None,
-        geometry: label,
-        e_star_mpa: bem.e_star(),
-        relative_curvature_per_mm: curvature.map(|k| [k.a_coef, k.b_coef]),
-        semi_axes_mm: solution.semi_axes,
-        axis_ratio: solution.semi_axes[1] / solution.semi_axes[0],
-        orientation_deg: solution.orientation.to_degrees(),
-        force_n: solution.force,
-        approach_mm: solution.approach,
-        max_pressure_mpa: solution.max_pressure,
-        mean_pressure_mpa: solution.mean_pressure,
-        contact_area_mm2: solution.contact_area,
-        patches: solution.zone.patches,
-        centroid_mm: solution.zone.centroid,
-        extents_mm: solution.zone.extents,
-        centre_line_curvature_per_mm: solution.zone.centre_line_curvature,
-        grid: GridEcho::of(&solution.grid),
-        iterations: solution.report.iterations,
-        solver: Some(SolverEcho {
-            converged: solution.report.converged,
-            residual: solution.report.residual,
-            tolerance: spec.tolerance,
-            operator_applications: solution.report.applications,
-            max_overlap_mm: solution.report.max_overlap,
-            boundary,
-        }),
-        grid_rounds: solution.grid_rounds,
-        separation_mm: separation,
-        rib_angle_deg: rib_angle,
-        hertz: curvature.and_then(|k| hertz_echo(k, m1, m2, solution.force)),
-    };
+    let report = PimpReport::assemble(
+        ReportMeta {
+            name: case.name.clone(),
+            method: "bem",
+            mode: None,
+            geometry: label,
+            e_star_mpa: bem.e_star(),
+            relative_curvature_per_mm: curvature.map(|k| [k.a_coef, k.b_coef]),
+            solver: Some(SolverEcho {
+                converged: solution.report.converged,
+                residual: solution.report.residual,
+                tolerance: spec.tolerance,
+                operator_applications: solution.report.applications,
+                max_overlap_mm: solution.report.max_overlap,
+                boundary,
+            }),
+            separation_mm: separation,
+            rib_angle_deg: rib_angle,
+            hertz: curvature.and_then(|k| hertz_echo(k, m1, m2, solution.force)),
+        },
+        FieldSummary {
+            force: solution.force,
+            approach: solution.approach,
+            max_pressure: solution.max_pressure,
+            mean_pressure: solution.mean_pressure,
+            contact_area: solution.contact_area,
+            semi_axes: solution.semi_axes,
+            orientation: solution.orientation,
+            zone: &solution.zone,
+            grid: &solution.grid,
+            iterations: solution.report.iterations,
+            grid_rounds: solution.grid_rounds,
+        },
+    );
     Ok(BemOutcome { report, solution })
 }

@@ -505,35 +505,33 @@ pub fn run_pimp_case(case: &PimpCase) -> Result<PimpOutcome> {
     };
     let k = source.curvature();
     let hertz = hertz_echo(k, m1, m2, solution.force);
-    let report = PimpReport {
-        kontakt_version: crate::VERSION,
-        schema_version: super::report::SCHEMA_VERSION,
-        name: case.name.clone(),
-        method: "pimp",
-        mode: Some(solution.mode),
-        geometry: label,
-        e_star_mpa: crate::material::effective_modulus(&m1, &m2),
-        relative_curvature_per_mm: Some([k.a_coef, k.b_coef]),
-        semi_axes_mm: solution.semi_axes,
-        axis_ratio: solution.semi_axes[1] / solution.semi_axes[0],
-        orientation_deg: solution.orientation.to_degrees(),
-        force_n: solution.force,
-        approach_mm: solution.approach,
-        max_pressure_mpa: solution.max_pressure,
-        mean_pressure_mpa: solution.mean_pressure,
-        contact_area_mm2: solution.contact_area,
-        patches: solution.zone.patches,
-        centroid_mm: solution.zone.centroid,
-        extents_mm: solution.zone.extents,
-        centre_line_curvature_per_mm: solution.zone.centre_line_curvature,
-        grid: GridEcho::of(&solution.grid),
-        iterations: solution.iterations,
-        solver: None,
-        grid_rounds: solution.grid_rounds,
-        separation_mm: separation,
-        rib_angle_deg: rib_angle,
-        hertz,
-    };
+    let report = PimpReport::assemble(
+        ReportMeta {
+            name: case.name.clone(),
+            method: "pimp",
+            mode: Some(solution.mode),
+            geometry: label,
+            e_star_mpa: crate::material::effective_modulus(&m1, &m2),
+            relative_curvature_per_mm: Some([k.a_coef, k.b_coef]),
+            solver: None,
+            separation_mm: separation,
+            rib_angle_deg: rib_angle,
+            hertz,
+        },
+        FieldSummary {
+            force: solution.force,
+            approach: solution.approach,
+            max_pressure: solution.max_pressure,
+            mean_pressure: solution.mean_pressure,
+            contact_area: solution.contact_area,
+            semi_axes: solution.semi_axes,
+            orientation: solution.orientation,
+            zone: &solution.zone,
+            grid: &solution.grid,
+            iterations: solution.iterations,
+            grid_rounds: solution.grid_rounds,
+        },
+    );
     Ok(PimpOutcome { report, solution })
 }
 
@@ -646,4 +644,68 @@ pub(crate) fn hertz_echo(
             approach_mm: h.approach,
             semi_axes_mm: h.semi_axes,
         })
+}
+
+/// What a report says about the case and the method (the rest comes from the solution).
+pub(crate) struct ReportMeta {
+    pub name: Option<String>,
+    pub method: &'static str,
+    pub mode: Option<Mode>,
+    pub geometry: String,
+    pub e_star_mpa: f64,
+    pub relative_curvature_per_mm: Option<[f64; 2]>,
+    pub solver: Option<super::bem_case::SolverEcho>,
+    pub separation_mm: Option<f64>,
+    pub rib_angle_deg: Option<f64>,
+    pub hertz: Option<HertzEcho>,
+}
+
+/// The fields that PimP and half-space solutions share.
+pub(crate) struct FieldSummary<'a> {
+    pub force: f64,
+    pub approach: f64,
+    pub max_pressure: f64,
+    pub mean_pressure: f64,
+    pub contact_area: f64,
+    pub semi_axes: [f64; 2],
+    pub orientation: f64,
+    pub zone: &'a crate::pimp::ContactZone,
+    pub grid: &'a crate::geometry::Grid2,
+    pub iterations: usize,
+    pub grid_rounds: usize,
+}
+
+impl PimpReport {
+    /// One report layout for both methods.
+    pub(crate) fn assemble(meta: ReportMeta, s: FieldSummary<'_>) -> Self {
+        PimpReport {
+            kontakt_version: crate::VERSION,
+            schema_version: super::report::SCHEMA_VERSION,
+            name: meta.name,
+            method: meta.method,
+            mode: meta.mode,
+            geometry: meta.geometry,
+            e_star_mpa: meta.e_star_mpa,
+            relative_curvature_per_mm: meta.relative_curvature_per_mm,
+            semi_axes_mm: s.semi_axes,
+            axis_ratio: s.semi_axes[1] / s.semi_axes[0],
+            orientation_deg: s.orientation.to_degrees(),
+            force_n: s.force,
+            approach_mm: s.approach,
+            max_pressure_mpa: s.max_pressure,
+            mean_pressure_mpa: s.mean_pressure,
+            contact_area_mm2: s.contact_area,
+            patches: s.zone.patches,
+            centroid_mm: s.zone.centroid,
+            extents_mm: s.zone.extents,
+            centre_line_curvature_per_mm: s.zone.centre_line_curvature,
+            grid: GridEcho::of(s.grid),
+            iterations: s.iterations,
+            solver: meta.solver,
+            grid_rounds: s.grid_rounds,
+            separation_mm: meta.separation_mm,
+            rib_angle_deg: meta.rib_angle_deg,
+            hertz: meta.hertz,
+        }
+    }
 }
