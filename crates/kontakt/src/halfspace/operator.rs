@@ -53,11 +53,12 @@ struct Workspace {
     scratch: Vec<Complex<f64>>,
 }
 
-/// Threading of the operator.
+/// Threading of the operator: serial, or a pool of its own. The solver runs its whole
+/// iteration inside the pool (see [`ElasticOperator::pool`]), so the serial passes between
+/// two FFTs do not compete with the pool's workers for the cores.
 enum Threads {
     Serial,
-    Global,
-    Pool(rayon::ThreadPool),
+    Pool(Arc<rayon::ThreadPool>),
 }
 
 /// The planned elastic operator of one grid: `u = K p` \[mm\] for `p` \[MPa\].
@@ -111,8 +112,9 @@ const PARALLEL_MIN_CELLS: usize = 96 * 96;
 
 impl ElasticOperator {
     /// Plan the operator for `grid`, contact modulus `e_star` \[MPa\] and `boundary`.
-    /// `threads`: `None` uses rayon's global pool (all cores), `Some(1)` runs serially,
-    /// `Some(n)` builds a pool of `n` threads.
+    /// `threads`: `Some(1)` runs serially, `Some(n)` builds a pool of `n` threads, `None`
+    /// a pool of as many threads as rayon's global pool (all cores). Grids below 96 × 96
+    /// cells always run serially.
     ///
     /// # Errors
     /// [`Error::InvalidInput`] for a non-positive modulus or `threads == Some(0)`.
@@ -129,26 +131,27 @@ impl ElasticOperator {
             Boundary::Periodic => (nx, ny),
         };
         let kx = mx / 2 + 1;
-        let threads = match threads {
+        let wanted = match threads {
             Some(0) => return Err(Error::invalid("threads", 0, ">= 1 thread, or unset")),
-            _ if nx * ny < PARALLEL_MIN_CELLS => Threads::Serial,
-            Some(1) => Threads::Serial,
-            None if rayon::current_num_threads() <= 1 => Threads::Serial,
-            None => Threads::Global,
-            Some(n) => match rayon::ThreadPoolBuilder::new().num_threads(n).build() {
-                Ok(pool) => Threads::Pool(pool),
+            Some(n) => n,
+            None => rayon::current_num_threads(),
+        };
+        let threads = if wanted <= 1 || nx * ny < PARALLEL_MIN_CELLS {
+            Threads::Serial
+        } else {
+            match rayon::ThreadPoolBuilder::new().num_threads(wanted).build() {
+                Ok(pool) => Threads::Pool(Arc::new(pool)),
                 Err(e) => {
                     return Err(Error::invalid(
                         "threads",
-                        n,
+                        wanted,
                         format!("a usable count ({e})"),
                     ));
                 }
-            },
+            }
         };
         let n_threads = match &threads {
             Threads::Serial => 1,
-            Threads::Global => rayon::current_num_threads(),
             Threads::Pool(p) => p.current_num_threads(),
         };
         let mut real = RealFftPlanner::<f64>::new();
@@ -256,6 +259,15 @@ impl ElasticOperator {
         }
     }
 
+    /// The operator's thread pool, if it has one: run a whole solve inside it
+    /// (`pool.install`) so that the serial work between FFTs runs on a pool thread.
+    pub fn pool(&self) -> Option<Arc<rayon::ThreadPool>> {
+        match &self.threads {
+            Threads::Serial => None,
+            Threads::Pool(p) => Some(Arc::clone(p)),
+        }
+    }
+
     /// Cells `[nx, ny]` of the grid.
     pub fn cells(&self) -> [usize; 2] {
         [self.nx, self.ny]
@@ -334,11 +346,6 @@ impl ElasticOperator {
                 .zip(p.chunks(rpt * nx))
                 .zip(work.iter_mut())
                 .for_each(forward),
-            Threads::Global => rows
-                .par_chunks_mut(rpt * kx)
-                .zip(p.par_chunks(rpt * nx))
-                .zip(work.par_iter_mut())
-                .for_each(forward),
             Threads::Pool(pool) => pool.install(|| {
                 rows.par_chunks_mut(rpt * kx)
                     .zip(p.par_chunks(rpt * nx))
@@ -380,11 +387,6 @@ impl ElasticOperator {
                 .enumerate()
                 .zip(work.iter_mut())
                 .for_each(column),
-            Threads::Global => cols
-                .par_chunks_mut(cpt * ny)
-                .enumerate()
-                .zip(work.par_iter_mut())
-                .for_each(column),
             Threads::Pool(pool) => pool.install(|| {
                 cols.par_chunks_mut(cpt * ny)
                     .enumerate()
@@ -424,11 +426,6 @@ impl ElasticOperator {
                 .chunks_mut(rpt * nx)
                 .enumerate()
                 .zip(work.iter_mut())
-                .for_each(inverse),
-            Threads::Global => u
-                .par_chunks_mut(rpt * nx)
-                .enumerate()
-                .zip(work.par_iter_mut())
                 .for_each(inverse),
             Threads::Pool(pool) => pool.install(|| {
                 u.par_chunks_mut(rpt * nx)

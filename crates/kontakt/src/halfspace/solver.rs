@@ -37,7 +37,8 @@ pub struct SolverOptions {
     /// RMS elastic displacement of the loaded cells: a dimensionless measure of how far
     /// the complementarity conditions are from holding (docs/halfspace.md §2).
     pub tolerance: f64,
-    /// Most iterations, >= 1 (default 1000).
+    /// Most iterations, >= 1 (default 1000). A solve also stops, unconverged, when the
+    /// residual has not reached a new low for 200 iterations (round-off floor).
     pub max_iterations: usize,
     /// Threads of the FFT passes: unset uses all cores, 1 runs serially.
     pub threads: Option<usize>,
@@ -127,6 +128,10 @@ pub struct HalfSpaceSolver {
 /// Recompute the displacement from the pressure at least this often, so that the
 /// incremental update `u -= τ K t` cannot drift.
 const REFRESH_EVERY: usize = 32;
+
+/// Iterations without a new smallest residual after which a solve stops as stagnated
+/// (reported `converged: false`).
+const STAGNATION: usize = 200;
 
 impl HalfSpaceSolver {
     /// Plan a solver for `grid` \[mm\] and the contact modulus `e_star` \[MPa\]
@@ -273,7 +278,12 @@ impl HalfSpaceSolver {
                 self.p.copy_from_slice(&self.guess);
             }
         }
-        let report = self.iterate(gap, control)?;
+        // The whole iteration runs on the operator's pool (when it has one), so the serial
+        // passes between FFTs do not compete with idle-spinning workers for the cores.
+        let report = match self.op.pool() {
+            Some(pool) => pool.install(|| self.iterate(gap, control))?,
+            None => self.iterate(gap, control)?,
+        };
         self.has_solution = true;
         Ok(report)
     }
@@ -310,6 +320,7 @@ impl HalfSpaceSolver {
         let mut iterations = 0usize;
         let mut converged = false;
         let mut applications = 0usize;
+        let (mut best_residual, mut best_at) = (f64::INFINITY, 0usize);
         loop {
             if !u_valid || since_refresh >= REFRESH_EVERY {
                 op.apply(p, u)?;
@@ -373,6 +384,14 @@ impl HalfSpaceSolver {
             if iterations >= self.options.max_iterations {
                 break;
             }
+            // Stagnation: round-off floors the residual (a tolerance near 1e-13 on a
+            // large grid); stop and report it instead of spinning to max_iterations.
+            if residual < best_residual {
+                best_residual = residual;
+                best_at = iterations;
+            } else if iterations - best_at >= STAGNATION {
+                break;
+            }
             iterations += 1;
             // Conjugate direction on the loaded cells.
             let beta = if conjugate && g_old > 0.0 {
@@ -387,26 +406,28 @@ impl HalfSpaceSolver {
             op.apply(t, r)?;
             applications += 1;
             since_refresh += 1;
-            let mut r_mean = 0.0;
-            if matches!(control, Control::Force(_)) && n_c > 0 {
-                for i in 0..p.len() {
-                    if p[i] > 0.0 {
-                        r_mean += r[i];
-                    }
-                }
-                r_mean /= n_c as f64;
-            }
-            let (mut num, mut den) = (0.0, 0.0);
+            // One pass for the step length: τ = Σ g t / Σ (r - r̄) t over the loaded set,
+            // with r̄ the mean of r there under load control.
+            let (mut sum_r, mut sum_t, mut num, mut rt) = (0.0, 0.0, 0.0, 0.0);
             for i in 0..p.len() {
                 if p[i] > 0.0 {
+                    sum_r += r[i];
+                    sum_t += t[i];
                     num += g[i] * t[i];
-                    den += (r[i] - r_mean) * t[i];
+                    rt += r[i] * t[i];
                 }
             }
+            let r_mean = match control {
+                Control::Force(_) if n_c > 0 => sum_r / n_c as f64,
+                _ => 0.0,
+            };
+            let den = rt - r_mean * sum_t;
             let tau = if den > 0.0 { num / den } else { 0.0 };
-            // Step, clip, and re-admit overlapping cells.
+            // Step, clip, re-admit overlapping cells and update the displacement in one
+            // pass; the update is discarded (recomputed) when the loaded set changed.
             let mut changed_set = false;
             let mut reset = false;
+            let mut total = 0.0;
             for i in 0..p.len() {
                 if p[i] > 0.0 {
                     p[i] -= tau * t[i];
@@ -423,22 +444,24 @@ impl HalfSpaceSolver {
                         p[i] = 0.0;
                     }
                 }
+                u[i] -= tau * r[i];
+                total += p[i];
             }
             conjugate = !reset;
-            if u_valid && !changed_set {
-                for i in 0..p.len() {
-                    u[i] -= tau * r[i];
-                }
-            } else {
+            if changed_set {
                 u_valid = false;
             }
             if let Control::Force(f) = control {
-                let total = p.iter().sum::<f64>() * da;
+                let total = total * da;
                 if total > 0.0 {
                     let s = f / total;
-                    p.iter_mut().for_each(|v| *v *= s);
                     if u_valid {
-                        u.iter_mut().for_each(|v| *v *= s);
+                        for (pi, ui) in p.iter_mut().zip(u.iter_mut()) {
+                            *pi *= s;
+                            *ui *= s;
+                        }
+                    } else {
+                        p.iter_mut().for_each(|v| *v *= s);
                     }
                 }
             }
