@@ -122,7 +122,6 @@ pub struct HalfSpaceSolver {
     /// The Hertz-like estimate of the last solve (for the warm start's correction).
     guess: Vec<f64>,
     has_solution: bool,
-    approach: f64,
 }
 
 /// Recompute the displacement from the pressure at least this often, so that the
@@ -155,7 +154,6 @@ impl HalfSpaceSolver {
             r: vec![0.0; n],
             guess: vec![0.0; n],
             has_solution: false,
-            approach: 0.0,
         })
     }
 
@@ -479,7 +477,6 @@ impl HalfSpaceSolver {
                 max_overlap = max_overlap.max(-g[i]);
             }
         }
-        self.approach = approach;
         Ok(SolveReport {
             converged,
             iterations,
