@@ -96,7 +96,10 @@ fn bench_operator(c: &mut Criterion) {
 fn print_report(what: &str, r: &SolveReport) {
     eprintln!(
         "{what}: {} iterations, {} FFT applications, residual {:.1e}, converged {}",
-        r.iterations, r.applications, r.residual, r.converged
+        r.status.iterations,
+        r.applications,
+        r.status.residual,
+        r.status.converged()
     );
 }
 

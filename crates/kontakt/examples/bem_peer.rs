@@ -68,13 +68,13 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
          \"applications\":{},\"seconds\":{best:.6e},\"plan_seconds\":{plan_seconds:.6e},\
          \"p_max\":{:.10e},\"approach\":{:.10e},\"area\":{:.10e},\"residual\":{:.3e},\
          \"converged\":{},\"memory_bytes\":{}}}",
-        r.iterations,
+        r.status.iterations,
         r.applications,
         r.max_pressure,
         r.approach,
         r.contact_area,
-        r.residual,
-        r.converged,
+        r.status.residual,
+        r.status.converged(),
         solver.memory_bytes()
     );
     Ok(())

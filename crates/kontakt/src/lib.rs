@@ -63,6 +63,10 @@
 //! |---|---|---|
 //! | [`material`] | elastic materials, E*, G, Dundurs' parameters | done |
 //! | [`geometry`] | principal curvatures, relative curvature, sampling grids, analytic surfaces with ray casting and the contact point from poses | done |
+//! | [`load`] | one load-control type (force, approach, line load) for every solver | done |
+//! | [`solve`] | one termination status (converged, max iterations, stagnated, diverged) for every iterative solver | done |
+//! | [`gap`] | the substitute geometry: `GapSource` (quadratic, any function, two placed surfaces), gap and height maps | done |
+//! | [`field`] | one result type of the field solvers (`NormalSolution`), the zone's shape, the one adaptive-domain loop | done |
 //! | [`hertz`] | exact point (elliptical/circular) and line contact, approximations, subsurface stress and yield, impact, JKR adhesion | done |
 //! | [`pimp`] | PimP: substitute geometry, Winkler bedding (published / corrected), force equilibrium, zone shape | done |
 //! | [`halfspace`] | coupled elastic half-space: Love coefficients, FFT operator (free / periodic), Polonsky-Keer solver with warm start, any gap or gap map, adaptive domain | done |
@@ -83,12 +87,16 @@
 
 pub mod bearing;
 pub mod error;
+pub mod field;
+pub mod gap;
 pub mod geometry;
 pub mod halfspace;
 pub mod hertz;
 pub mod io;
+pub mod load;
 pub mod material;
 pub mod pimp;
+pub mod solve;
 pub mod tangential;
 pub mod traction;
 pub mod units;

@@ -92,7 +92,7 @@ fn rel(ours: f64, exact: f64) -> f64 {
 const TOL: f64 = 1e-6;
 
 fn check_complementarity(solver: &HalfSpaceSolver, report: &SolveReport, control: Control) {
-    assert!(report.converged, "not converged: {report:?}");
+    assert!(report.status.converged(), "not converged: {report:?}");
     check_fields(solver, report, control);
 }
 
@@ -176,7 +176,7 @@ fn hertz_sphere_within_one_percent_at_64_cells_across() {
         report.approach,
         h.approach,
         ed,
-        report.iterations
+        report.status.iterations
     );
     for (what, err) in [("p_max", ep), ("radius", ea), ("approach", ed)] {
         assert!(err.abs() < 0.01, "{what} off by {err:+.4}");
@@ -385,12 +385,12 @@ fn hertz_ellipses_b_over_a_4_and_20_within_two_percent() {
         )
         .unwrap();
         let s = bem.solve_force(&QuadraticGap::new(k), LOAD).unwrap();
-        assert!(s.report.converged);
+        assert!(s.detail.report.status.converged());
         assert!((s.force - LOAD).abs() < 1e-12 * LOAD);
         assert!((s.orientation - k.orientation).abs() < 1e-12);
         println!(
             "B/A {ratio}: adaptive domain {} rounds, {} iterations",
-            s.grid_rounds, s.report.iterations
+            s.domains, s.detail.report.status.iterations
         );
         ellipse_checks(
             &format!("B/A {ratio} adaptive"),
@@ -488,7 +488,7 @@ fn sneddon_cone_under_approach_and_load_control() {
     println!(
         "cone, approach control: F {:.3} N (Sneddon {force:.3}) {ef:+.3e}; area {:.5} \
          ({area:.5}) {ea:+.3e}; {} iterations",
-        r.force, r.contact_area, r.iterations
+        r.force, r.contact_area, r.status.iterations
     );
     assert!(ef.abs() < 0.02 && ea.abs() < 0.02, "{ef} {ea}");
 
@@ -499,7 +499,7 @@ fn sneddon_cone_under_approach_and_load_control() {
     println!(
         "cone, load control: delta {:.5e} mm (Sneddon {delta:.5e}) {ed:+.3e}; area {:.5} \
          ({area:.5}) {ea:+.3e}; {} iterations",
-        r.approach, r.contact_area, r.iterations
+        r.approach, r.contact_area, r.status.iterations
     );
     assert!(ed.abs() < 0.02 && ea.abs() < 0.02, "{ed} {ea}");
 }
@@ -538,7 +538,7 @@ fn flat_punch_stiffness() {
             "punch (outside {far}), approach control: a = {a:.5} mm ({n_cells} cells), \
              F/delta {:.5e} N/mm (2aE* {stiffness:.5e}) {err:+.3e}; {} iterations",
             r.force / delta,
-            r.iterations
+            r.status.iterations
         );
         assert!(err.abs() < 0.02, "{err}");
 
@@ -549,7 +549,7 @@ fn flat_punch_stiffness() {
         println!(
             "punch (outside {far}), load control: F/delta {:.5e} {err2:+.3e}; {} iterations",
             r2.force / r2.approach,
-            r2.iterations
+            r2.status.iterations
         );
         assert!(err2.abs() < 0.02, "{err2}");
         results.push((r.force, r2.approach));
@@ -682,7 +682,7 @@ fn warm_start_gives_the_cold_answer() {
         let (dp, dd) = compare((warm.pressure(), w.approach), (cold.pressure(), c.approach));
         println!(
             "| {what} | {} ({} FFTs) | {} ({} FFTs) | {dp:.1e} | {dd:+.1e} |",
-            w.iterations, w.applications, c.iterations, c.applications,
+            w.status.iterations, w.applications, c.status.iterations, c.applications,
         );
         assert!(dp < 1e-6, "{what}: pressure differs by {dp:e} of p_max");
         assert!(dd.abs() < 1e-8, "{what}: approach differs by {dd:e}");
@@ -693,9 +693,9 @@ fn warm_start_gives_the_cold_answer() {
     let again = warm.solve(&gap0, base_f, Start::Warm).unwrap();
     println!(
         "| sphere, unchanged | {} | {} | | |",
-        again.iterations, b.iterations
+        again.status.iterations, b.status.iterations
     );
-    assert_eq!(again.iterations, 0);
+    assert_eq!(again.status.iterations, 0);
 }
 
 /// A warm start on a fresh solver falls back to the cold start.
@@ -950,19 +950,19 @@ fn non_convergence_is_reported_then_an_error() {
     let r = solver
         .solve(&gap, Control::Force(LOAD), Start::Cold)
         .unwrap();
-    assert!(!r.converged);
-    assert_eq!(r.iterations, 2);
-    assert!(r.residual > 1e-8);
+    assert!(!r.status.converged());
+    assert_eq!(r.status.iterations, 2);
+    assert!(r.status.residual > 1e-8);
     // Even unconverged, the load-control iterate balances the force.
     assert!((r.force - LOAD).abs() < 1e-12 * LOAD);
-    match HalfSpaceSolver::require_converged(r).unwrap_err() {
+    match r.require_converged().unwrap_err() {
         Error::NotConverged {
             iterations,
             residual,
             what,
         } => {
             assert_eq!(iterations, 2);
-            assert_eq!(residual, r.residual);
+            assert_eq!(residual, r.status.residual);
             assert!(what.contains("half-space"), "{what}");
         }
         other => panic!("expected NotConverged, got {other:?}"),
@@ -1056,7 +1056,7 @@ fn westergaard_wavy_surface_partial_contact() {
         println!(
             "wavy, p_mean/p* = {frac}: width {width:.5} mm (2a {exact_width:.5}) {ew:+.2e}; \
              p_max {:.4} MPa (2 sqrt(p_mean p*) {exact_pmax:.4}) {ep:+.2e}; {} iterations",
-            r.max_pressure, r.iterations
+            r.max_pressure, r.status.iterations
         );
         assert!(ew.abs() < 0.02, "width off by {ew}");
         assert!(ep.abs() < 0.01, "p_max off by {ep}");
@@ -1095,7 +1095,12 @@ fn westergaard_wavy_surface_full_contact() {
             "wavy, p_mean/p* = {frac}: amplitude {coef:.6} MPa (pi E* Delta/lambda {:.6}) \
              {err:+.2e}; mean {mean:.5} ({p_mean:.5}); approach {:.6e} (Delta {:e}); \
              converged {} after {} iterations, residual {:.1e}",
-            w.p_star, r.approach, w.amp, r.converged, r.iterations, r.residual
+            w.p_star,
+            r.approach,
+            w.amp,
+            r.status.converged(),
+            r.status.iterations,
+            r.status.residual
         );
         assert!(err.abs() < 0.01, "{err}");
         assert!(rel(mean, p_mean).abs() < 1e-12);
@@ -1135,6 +1140,6 @@ fn periodic_full_contact_reports_convergence() {
     let mut solver = periodic_solver(&w);
     let control = Control::Force(1.5 * w.p_star * w.area);
     let r = solver.solve(&w.gap, control, Start::Cold).unwrap();
-    assert!(r.converged, "{r:?}");
-    assert!(r.iterations < 100, "{r:?}");
+    assert!(r.status.converged(), "{r:?}");
+    assert!(r.status.iterations < 100, "{r:?}");
 }

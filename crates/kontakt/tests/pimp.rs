@@ -153,7 +153,7 @@ fn approach_control_inverts_force_control() {
         // Corrected: the two controls pick different adaptive grids: 1e-4.
         let tol = if mode == Mode::Corrected { 1e-4 } else { 0.03 };
         assert!((t.force / 400.0 - 1.0).abs() < tol, "{mode:?}: {}", t.force);
-        assert_eq!(t.iterations, 0);
+        assert_eq!(t.status.iterations, 0);
     }
 }
 

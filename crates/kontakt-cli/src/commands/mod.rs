@@ -70,8 +70,8 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                             &s.grid,
                             &[
                                 ("pressure_mpa", &s.pressure),
-                                ("displacement_mm", &s.displacement),
-                                ("gap_mm", &s.gap),
+                                ("displacement_mm", &s.detail.displacement),
+                                ("gap_mm", &s.detail.gap),
                             ],
                         )?;
                     }

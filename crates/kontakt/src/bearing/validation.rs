@@ -134,7 +134,8 @@ pub fn validate_pairing(
     let steel = ElasticMaterial::STEEL;
     let pair = RollerRib::new(RollerRibSpec::builtin(pairing)?)?;
     let gap = SurfacePairGap::new(pair.face, pair.rib, pair.contact)?;
-    let bem = Bem::new(steel, steel, options)?;
+    let bem =
+        Bem::new(steel, steel, options)?.with_estimate(crate::pimp::zone_estimate(steel, steel)?);
     let pimp = |mode| {
         Pimp::new(
             steel,
@@ -166,7 +167,7 @@ pub fn validate_pairing(
                 approach_mm: h.approach,
                 semi_axes_mm: h.semi_axes,
             },
-            bem_iterations: b.report.iterations,
+            bem_iterations: b.status.iterations,
         });
         if last
             .as_ref()

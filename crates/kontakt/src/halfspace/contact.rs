@@ -1,21 +1,22 @@
 //! The half-space solver on any substitute geometry ([`GapSource`]) or gap map, with a
 //! domain that adapts to the contact.
 
-use super::gapmap::GapMap;
 use super::operator::Boundary;
 use super::solver::{Control, HalfSpaceSolver, SolveReport, SolverOptions, Start};
 use crate::error::{Error, Result, positive_as};
-use crate::geometry::Grid2;
+use crate::field::domain::{self, Policy, Shrink, Trial};
+use crate::field::{ContactZone, NormalSolution};
+use crate::gap::{GapMap, GapSource};
 use crate::material::{ElasticMaterial, effective_modulus};
-use crate::pimp::{ContactZone, GapSource, Mode, Pimp, PimpOptions};
-use crate::units::{Megapascal, Millimetre, Newton};
+use crate::units::{Millimetre, Newton};
 use serde::{Deserialize, Serialize};
 
-/// Fewest loaded cells across the contact (each direction) that a solve accepts.
-pub const MIN_CELLS_ACROSS: usize = 8;
-
-/// How many domains the adaptive extent may try.
-const MAX_ROUNDS: usize = 8;
+/// An estimate of the contact zone's bounding box `[[x0, x1], [y0, y1]]` \[mm\] in the
+/// principal frame of a gap, for a load: where the adaptive domain starts. [`Bem`] takes
+/// it as a parameter (PimP's corrected bedding is the usual one, see
+/// `crate::bearing`), so the reference solver does not depend on the method it checks.
+pub type ZoneEstimate =
+    std::sync::Arc<dyn Fn(&dyn GapSource, Control) -> Result<[[f64; 2]; 2]> + Send + Sync>;
 
 /// Options of [`Bem`].
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -83,79 +84,73 @@ impl BemOptions {
     }
 }
 
-/// The solution of one half-space contact.
+/// What only the half-space solver gives in a [`NormalSolution`].
 #[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct BemSolution {
-    /// Normal force \[N\] (the sum of pressure times cell area).
-    pub force: Newton,
-    /// Rigid approach \[mm\] from the gap's zero level (first touch for a touching gap).
-    pub approach: Millimetre,
-    /// Largest pressure \[MPa\].
-    pub max_pressure: Megapascal,
-    /// Mean pressure over the contact area \[MPa\].
-    pub mean_pressure: Megapascal,
-    /// Contact area \[mm²\]: loaded cells times the cell area.
-    pub contact_area: f64,
-    /// Half-extents of the zone along the grid's x and y \[mm\].
-    pub semi_axes: [Millimetre; 2],
-    /// Angle \[rad\] from the gap source's `x` axis to the grid's `x` axis.
-    pub orientation: f64,
-    /// Shape of the zone in the grid frame.
-    pub zone: ContactZone,
-    /// The solver's outcome: convergence, iterations, residual, complementarity.
+pub struct HalfSpaceDetail {
+    /// The solver's record: operator applications, complementarity, force, approach.
     pub report: SolveReport,
-    /// Domains tried by the adaptive extent.
-    pub grid_rounds: usize,
-    /// The grid \[mm\].
-    pub grid: Grid2,
-    /// Pressure per cell \[MPa\], row-major with x fastest.
-    pub pressure: Vec<Megapascal>,
     /// Elastic displacement of the two-body system per cell \[mm\].
     pub displacement: Vec<Millimetre>,
     /// Undeformed gap per cell \[mm\] (`+inf` where the bodies cannot meet).
     pub gap: Vec<Millimetre>,
 }
 
-impl BemSolution {
-    fn new(
-        solver: &HalfSpaceSolver,
-        report: SolveReport,
-        gap: Vec<f64>,
-        orientation: f64,
-        grid_rounds: usize,
-    ) -> Result<Self> {
-        let grid = *solver.grid();
-        let pressure = solver.pressure().to_vec();
-        let zone = ContactZone::analyse(&grid, &pressure)?;
-        Ok(BemSolution {
-            force: report.force,
-            approach: report.approach,
-            max_pressure: report.max_pressure,
-            mean_pressure: if report.contact_area > 0.0 {
-                report.force / report.contact_area
-            } else {
-                0.0
-            },
-            contact_area: report.contact_area,
-            semi_axes: zone.half_extents(),
-            orientation,
-            zone,
+/// The solution of one half-space contact: `status` is the conjugate-gradient
+/// iteration's, `domains` the number of domains tried by the adaptive extent.
+pub type BemSolution = NormalSolution<HalfSpaceDetail>;
+
+/// The fields of a finished solve on `solver`'s grid.
+fn solution(
+    solver: &HalfSpaceSolver,
+    report: SolveReport,
+    gap: Vec<f64>,
+    orientation: f64,
+    zone: ContactZone,
+    domains: usize,
+) -> BemSolution {
+    NormalSolution {
+        force: report.force,
+        approach: report.approach,
+        max_pressure: report.max_pressure,
+        mean_pressure: if report.contact_area > 0.0 {
+            report.force / report.contact_area
+        } else {
+            0.0
+        },
+        contact_area: report.contact_area,
+        semi_axes: zone.half_extents(),
+        orientation,
+        zone,
+        status: report.status,
+        domains,
+        grid: *solver.grid(),
+        pressure: solver.pressure().to_vec(),
+        detail: HalfSpaceDetail {
             report,
-            grid_rounds,
-            grid,
-            pressure,
             displacement: solver.displacement().to_vec(),
             gap,
-        })
+        },
     }
 }
 
 /// The coupled elastic half-space solver for one pair of materials.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Clone)]
 pub struct Bem {
     body1: ElasticMaterial,
     body2: ElasticMaterial,
     options: BemOptions,
+    estimate: Option<ZoneEstimate>,
+}
+
+impl std::fmt::Debug for Bem {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Bem")
+            .field("body1", &self.body1)
+            .field("body2", &self.body2)
+            .field("options", &self.options)
+            .field("estimate", &self.estimate.as_ref().map(|_| "zone estimate"))
+            .finish()
+    }
 }
 
 impl Bem {
@@ -173,7 +168,18 @@ impl Bem {
             body1,
             body2,
             options,
+            estimate: None,
         })
+    }
+
+    /// Start the adaptive domain from `estimate` (the zone's bounding box for a gap and
+    /// a load, in the gap's principal frame \[mm\]) times `margin`. Without one, an
+    /// adaptive solve starts from the gap's quadratic form (a Hertz ellipse); a fixed
+    /// `extent` needs none.
+    #[must_use]
+    pub fn with_estimate(mut self, estimate: ZoneEstimate) -> Self {
+        self.estimate = Some(estimate);
+        self
     }
 
     /// The options.
@@ -191,7 +197,8 @@ impl Bem {
     /// # Errors
     /// - [`Error::InvalidInput`] for a non-positive force.
     /// - [`Error::Geometry`] when the contact reaches the border of a fixed domain,
-    ///   spans fewer than [`MIN_CELLS_ACROSS`] cells, or the adaptive domain cannot hold it.
+    ///   spans fewer than [`domain::MIN_CELLS_ACROSS`] cells, or the adaptive domain
+    ///   cannot hold it.
     /// - [`Error::NotConverged`] when the solver does not reach its tolerance.
     pub fn solve_force(&self, source: &dyn GapSource, force: Newton) -> Result<BemSolution> {
         positive_as("force", force, "a finite force > 0 N")?;
@@ -227,46 +234,49 @@ impl Bem {
         let mut solver =
             HalfSpaceSolver::new(*map.grid(), self.e_star(), self.options.solver(boundary))?;
         let report = solver.solve(map.values(), control, Start::Cold)?;
-        HalfSpaceSolver::require_converged(report)?;
-        let solution = BemSolution::new(&solver, report, map.values().to_vec(), 0.0, 1)?;
+        let report = report.require_converged()?;
+        let zone = ContactZone::analyse(map.grid(), solver.pressure())?;
         if boundary == Boundary::Free {
-            check_border(
-                &solution,
-                "the gap map",
-                "use a larger map or a smaller load",
-            )?;
+            domain::check_border(&zone, "the gap map", "use a larger map or a smaller load")?;
         }
-        check_resolution(&solution)?;
-        Ok(solution)
+        domain::check_resolution(map.grid(), &zone)?;
+        Ok(solution(
+            &solver,
+            report,
+            map.values().to_vec(),
+            0.0,
+            zone,
+            1,
+        ))
     }
 
-    /// The zone's bounding box `[[x0, x1], [y0, y1]]` \[mm\] in the principal frame, from
-    /// the (corrected) PimP estimate.
+    /// The zone's bounding box `[[x0, x1], [y0, y1]]` \[mm\] in the principal frame:
+    /// the given estimate, else the Hertz ellipse of the gap's quadratic form.
     fn estimate(&self, source: &dyn GapSource, control: Control) -> Result<[[f64; 2]; 2]> {
-        let pimp = Pimp::new(
+        if let Some(estimate) = &self.estimate {
+            return estimate(source, control);
+        }
+        let hertz = crate::hertz::HertzPointContact::new(
+            crate::hertz::PointGeometry::from_curvature(source.curvature()),
             self.body1,
             self.body2,
-            PimpOptions {
-                mode: Mode::Corrected,
-                cells: [48, 48],
-                ..PimpOptions::default()
-            },
         )?;
         let s = match control {
-            Control::Force(f) => pimp.solve_force(source, f)?,
-            Control::Approach(d) => pimp.solve_approach(source, d)?,
+            Control::Force(f) => hertz.solve_force(f)?,
+            // (a line load was refused by `solve_force`/`solve_approach`)
+            Control::Approach(d) | Control::LineLoad(d) => hertz.solve_approach(d)?,
         };
-        Ok(s.zone.extents)
+        let [a, b] = s.semi_axes;
+        Ok([[-a, a], [-b, b]])
     }
 
     fn run(&self, source: &dyn GapSource, control: Control) -> Result<BemSolution> {
         let orientation = source.curvature().orientation;
-        let [nx, ny] = self.options.cells;
-        let mut bounds = match self.options.extent {
+        let m = self.options.margin;
+        let bounds = match self.options.extent {
             Some([hx, hy]) => [[-hx, hx], [-hy, hy]],
             None => {
                 let e = self.estimate(source, control)?;
-                let m = self.options.margin;
                 let grow = |r: [f64; 2]| {
                     let (c, h) = (0.5 * (r[0] + r[1]), 0.5 * (r[1] - r[0]));
                     [c - m * h, c + m * h]
@@ -274,106 +284,43 @@ impl Bem {
                 [grow(e[0]), grow(e[1])]
             }
         };
-        let mut shrunk = false;
-        for round in 1..=MAX_ROUNDS {
-            let grid = Grid2::new(bounds[0], bounds[1], nx, ny)?;
-            let mut gap = vec![0.0; grid.len()];
-            source.sample(&grid, orientation, &mut gap)?;
-            let mut solver =
-                HalfSpaceSolver::new(grid, self.e_star(), self.options.solver(Boundary::Free))?;
-            let report = solver.solve(&gap, control, Start::Cold)?;
-            HalfSpaceSolver::require_converged(report)?;
-            let solution = BemSolution::new(&solver, report, gap, orientation, round)?;
-            if self.options.extent.is_some() {
-                check_border(
-                    &solution,
-                    "the fixed extent",
-                    "enlarge `extent` or leave it unset",
+        let policy = Policy {
+            max_domains: 8,
+            shrink: Shrink::AboutZone {
+                trigger: 0.6,
+                margin: m,
+            },
+        };
+        let adapted = domain::adapt(
+            bounds,
+            self.options.extent.is_some(),
+            self.options.cells,
+            policy,
+            |grid, _| {
+                let mut gap = vec![0.0; grid.len()];
+                source.sample(grid, orientation, &mut gap)?;
+                let mut solver = HalfSpaceSolver::new(
+                    *grid,
+                    self.e_star(),
+                    self.options.solver(Boundary::Free),
                 )?;
-                check_resolution(&solution)?;
-                return Ok(solution);
-            }
-            let z = &solution.zone;
-            let [bx, by] = z.touches_border;
-            if bx || by {
-                // Grow about the domain centre in the direction(s) that touch.
-                for (axis, touch) in [(0, bx), (1, by)] {
-                    if touch {
-                        let (c, h) = (
-                            0.5 * (bounds[axis][0] + bounds[axis][1]),
-                            0.5 * (bounds[axis][1] - bounds[axis][0]),
-                        );
-                        bounds[axis] = [c - 1.6 * h, c + 1.6 * h];
-                    }
-                }
-                continue;
-            }
-            let fill = [
-                (z.extents[0][1] - z.extents[0][0]) / (bounds[0][1] - bounds[0][0]),
-                (z.extents[1][1] - z.extents[1][0]) / (bounds[1][1] - bounds[1][0]),
-            ];
-            if !shrunk && (fill[0] < 0.6 || fill[1] < 0.6) {
-                shrunk = true;
-                let m = self.options.margin;
-                for ((bound, ext), cells) in
-                    bounds.iter_mut().zip(z.extents).zip(self.options.cells)
-                {
-                    let (c, h) = (0.5 * (ext[0] + ext[1]), 0.5 * (ext[1] - ext[0]));
-                    // Keep at least two cells of margin beyond the loaded cells.
-                    let cell = (bound[1] - bound[0]) / cells as f64;
-                    let half = (m * h).max(h + 2.0 * cell);
-                    *bound = [c - half, c + half];
-                }
-                continue;
-            }
-            check_resolution(&solution)?;
-            return Ok(solution);
-        }
-        Err(Error::Geometry {
-            field: "extent".into(),
-            reason: format!(
-                "the adaptive domain did not settle on the contact after {MAX_ROUNDS} domains; \
-                 give a fixed `extent` (mm) that holds the contact"
-            ),
-        })
+                let report = solver.solve(&gap, control, Start::Cold)?;
+                let report = report.require_converged()?;
+                let zone = ContactZone::analyse(grid, solver.pressure())?;
+                Ok(Trial {
+                    result: (solver, report, gap),
+                    zone,
+                })
+            },
+        )?;
+        let (solver, report, gap) = adapted.result;
+        Ok(solution(
+            &solver,
+            report,
+            gap,
+            orientation,
+            adapted.zone,
+            adapted.domains,
+        ))
     }
-}
-
-fn check_border(solution: &BemSolution, what: &str, fix: &str) -> Result<()> {
-    let [bx, by] = solution.zone.touches_border;
-    if bx || by {
-        return Err(Error::Geometry {
-            field: "extent".into(),
-            reason: format!(
-                "the contact reaches the border of {what} ({}): the load is too large for \
-                 the domain; {fix}",
-                match (bx, by) {
-                    (true, true) => "x and y",
-                    (true, false) => "x",
-                    _ => "y",
-                }
-            ),
-        });
-    }
-    Ok(())
-}
-
-fn check_resolution(solution: &BemSolution) -> Result<()> {
-    let g = &solution.grid;
-    let z = &solution.zone;
-    let across = [
-        ((z.extents[0][1] - z.extents[0][0]) / g.dx()).round() as usize,
-        ((z.extents[1][1] - z.extents[1][0]) / g.dy()).round() as usize,
-    ];
-    if across[0] < MIN_CELLS_ACROSS || across[1] < MIN_CELLS_ACROSS {
-        return Err(Error::Geometry {
-            field: "cells".into(),
-            reason: format!(
-                "the grid is too coarse for the contact: it spans {} x {} cells, at least \
-                 {MIN_CELLS_ACROSS} are needed each way; use more cells or a smaller extent",
-                across[0], across[1]
-            ),
-        });
-    }
-    Ok(())
 }

@@ -18,19 +18,19 @@
 //! - [`HalfSpaceSolver`]: Polonsky and Keer's constrained conjugate gradients under load
 //!   or displacement control, a Hertz-like cold start, warm starts for the multi-body time
 //!   step, and a stated residual; non-convergence is a status in [`SolveReport`].
-//! - [`Bem`]: the solver on any [`crate::pimp::GapSource`] (PimP's substitute geometry,
+//! - [`Bem`]: the solver on any [`crate::gap::GapSource`] (PimP's substitute geometry,
 //!   the Hertz gap, two placed surfaces) with a domain that adapts to the contact, or on
 //!   a user [`GapMap`] (CSV or `.npy`).
 //!
 //! Derivations, conventions and the memory budget: docs/halfspace.md.
 
 mod contact;
-mod gapmap;
 pub mod influence;
 mod operator;
 mod solver;
 
-pub use contact::{Bem, BemOptions, BemSolution, MIN_CELLS_ACROSS};
-pub use gapmap::{GapMap, MapKind};
+pub use crate::field::domain::MIN_CELLS_ACROSS;
+pub use crate::gap::{GapMap, MapKind};
+pub use contact::{Bem, BemOptions, BemSolution, HalfSpaceDetail, ZoneEstimate};
 pub use operator::{Boundary, ElasticOperator};
 pub use solver::{Control, HalfSpaceSolver, SolveReport, SolverOptions, Start};

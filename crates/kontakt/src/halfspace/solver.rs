@@ -2,20 +2,14 @@
 //! [`ElasticOperator`]: plan once, solve many, no allocation per iteration.
 
 use super::operator::{Boundary, ElasticOperator};
-use crate::error::{Error, Result, positive_as};
+use crate::error::{Error, Result};
 use crate::geometry::Grid2;
+use crate::solve::{SolveStatus, Termination};
 use serde::{Deserialize, Serialize};
 
-/// What a solve holds fixed.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Control {
-    /// The normal force \[N\], > 0 (load control).
-    Force(f64),
-    /// The rigid approach \[mm\] measured from the gap's zero level, > 0 (displacement
-    /// control).
-    Approach(f64),
-}
+/// What a solve holds fixed: the crate's one load-control type (force or approach; a
+/// line load is refused).
+pub type Control = crate::load::LoadControl;
 
 /// Where the iteration starts.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
@@ -83,14 +77,12 @@ impl SolverOptions {
 /// Outcome of one solve (a small copyable summary; the fields stay in the solver).
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
 pub struct SolveReport {
-    /// Whether the residual reached the tolerance.
-    pub converged: bool,
-    /// Iterations performed.
-    pub iterations: usize,
+    /// Why the iteration stopped (converged, maximum iterations or stagnated), the
+    /// iterations performed and the final relative residual (see
+    /// [`SolverOptions::tolerance`]).
+    pub status: SolveStatus,
     /// Applications of the elastic operator (FFT convolutions): one or two per iteration.
     pub applications: usize,
-    /// Final relative residual (see [`SolverOptions::tolerance`]).
-    pub residual: f64,
     /// Normal force \[N\]: the sum of pressure times cell area.
     pub force: f64,
     /// Rigid approach \[mm\] from the gap's zero level.
@@ -105,6 +97,17 @@ pub struct SolveReport {
     pub max_overlap: f64,
     /// Largest |gap| on a loaded cell \[mm\].
     pub max_contact_gap: f64,
+}
+
+impl SolveReport {
+    /// The report itself when the solve converged.
+    ///
+    /// # Errors
+    /// [`Error::NotConverged`] naming the half-space contact solve and why it stopped.
+    pub fn require_converged(self) -> Result<Self> {
+        self.status.require_converged("half-space contact solve")?;
+        Ok(self)
+    }
 }
 
 /// A half-space contact solver for one grid: the FFT plan and every work array.
@@ -128,8 +131,8 @@ pub struct HalfSpaceSolver {
 /// incremental update `u -= τ K t` cannot drift.
 const REFRESH_EVERY: usize = 32;
 
-/// Iterations without a new smallest residual after which a solve stops as stagnated
-/// (reported `converged: false`).
+/// Iterations without a new smallest residual after which a solve stops as
+/// [`Termination::Stagnated`].
 const STAGNATION: usize = 200;
 
 impl HalfSpaceSolver {
@@ -196,9 +199,9 @@ impl HalfSpaceSolver {
     /// Solve the contact for the undeformed gap `gap` \[mm\] (row-major, x fastest; `>= 0`
     /// where the bodies can meet, `+inf` where they cannot) under `control`.
     ///
-    /// Non-convergence is not an error: the report says `converged: false` and the
-    /// fields hold the last iterate. Use [`SolveReport`]'s fields or
-    /// [`HalfSpaceSolver::require_converged`].
+    /// Non-convergence is not an error: the report's status says why the iteration
+    /// stopped and the fields hold the last iterate. Use [`SolveReport::require_converged`]
+    /// to turn it into one.
     ///
     /// # Errors
     /// - [`Error::InvalidInput`] for a gap of the wrong length, a NaN or `-inf` gap value,
@@ -235,22 +238,16 @@ impl HalfSpaceSolver {
                 reason: "the gap is +inf everywhere: the bodies cannot meet on this grid".into(),
             });
         }
-        match control {
-            Control::Force(f) => {
-                positive_as("force", f, "a finite force > 0 N")?;
-            }
-            Control::Approach(d) => {
-                positive_as("approach", d, "a finite approach > 0 mm")?;
-                if d <= h_min {
-                    return Err(Error::Geometry {
-                        field: "approach".into(),
-                        reason: format!(
-                            "approach {d:e} mm does not reach the smallest gap {h_min:e} mm: \
-                             the bodies do not touch"
-                        ),
-                    });
-                }
-            }
+        if let Control::Approach(d) = control.point()?
+            && d <= h_min
+        {
+            return Err(Error::Geometry {
+                field: "approach".into(),
+                reason: format!(
+                    "approach {d:e} mm does not reach the smallest gap {h_min:e} mm: the \
+                     bodies do not touch"
+                ),
+            });
         }
         let warm = start == Start::Warm && self.has_solution;
         let da = self.grid.cell_area();
@@ -289,20 +286,12 @@ impl HalfSpaceSolver {
     /// Turn a non-converged report into [`Error::NotConverged`].
     ///
     /// # Errors
-    /// [`Error::NotConverged`] when `report.converged` is false.
+    /// [`Error::NotConverged`] when the report's status is not converged.
+    #[deprecated(note = "use `SolveReport::require_converged`")]
     pub fn require_converged(report: SolveReport) -> Result<SolveReport> {
-        if report.converged {
-            Ok(report)
-        } else {
-            Err(Error::NotConverged {
-                what: "half-space contact solve".into(),
-                iterations: report.iterations,
-                residual: report.residual,
-            })
-        }
+        report.require_converged()
     }
 
-    /// Polonsky and Keer's iteration (1999, §3) with an incremental displacement update.
     fn iterate(&mut self, gap: &[f64], control: Control) -> Result<SolveReport> {
         let tol = self.options.tolerance;
         let da = self.grid.cell_area();
@@ -316,7 +305,7 @@ impl HalfSpaceSolver {
         let mut residual;
         let mut approach;
         let mut iterations = 0usize;
-        let mut converged = false;
+        let mut termination = Termination::MaxIterations;
         let mut applications = 0usize;
         let (mut best_residual, mut best_at) = (f64::INFINITY, 0usize);
         loop {
@@ -341,7 +330,8 @@ impl HalfSpaceSolver {
             approach = match control {
                 Control::Force(_) if n_c > 0 => sum_g / n_c as f64,
                 Control::Force(_) => 0.0,
-                Control::Approach(d) => d,
+                // (a line load was refused by `solve`)
+                Control::Approach(d) | Control::LineLoad(d) => d,
             };
             let mut big_g = 0.0;
             let mut overlap2 = 0.0;
@@ -376,7 +366,7 @@ impl HalfSpaceSolver {
                     u_valid = false;
                     continue;
                 }
-                converged = true;
+                termination = Termination::Converged;
                 break;
             }
             if iterations >= self.options.max_iterations {
@@ -388,6 +378,7 @@ impl HalfSpaceSolver {
                 best_residual = residual;
                 best_at = iterations;
             } else if iterations - best_at >= STAGNATION {
+                termination = Termination::Stagnated;
                 break;
             }
             iterations += 1;
@@ -478,10 +469,8 @@ impl HalfSpaceSolver {
             }
         }
         Ok(SolveReport {
-            converged,
-            iterations,
+            status: SolveStatus::new(termination, iterations, residual),
             applications,
-            residual,
             force: force * da,
             approach,
             max_pressure: pmax,
@@ -503,7 +492,8 @@ fn hertz_guess(gap: &[f64], control: Control, h_min: f64, e_star: f64, da: f64, 
     let force_at =
         |d: f64| (8.0 / 3.0) * e_star * (area_below(d) / std::f64::consts::PI).sqrt() * (d - h_min);
     let (d, target) = match control {
-        Control::Approach(delta) => {
+        // (a line load was refused by `solve`)
+        Control::Approach(delta) | Control::LineLoad(delta) => {
             let d = h_min + 0.5 * (delta - h_min);
             (d, force_at(d))
         }

@@ -34,8 +34,7 @@
 //! ```
 
 use super::pimp_case::{
-    FieldSummary, GapSetup, GeometrySpec, PimpCase, PimpReport, ReportMeta, gap_setup, hertz_echo,
-    material,
+    GapSetup, GeometrySpec, PimpCase, PimpReport, ReportMeta, gap_setup, hertz_echo, material,
 };
 use crate::error::{Error, Result};
 use crate::halfspace::{Bem, BemOptions, BemSolution, Control, GapMap};
@@ -126,13 +125,15 @@ pub fn run_bem_case(case: &PimpCase, base_dir: &Path) -> Result<BemOutcome> {
         max_iterations: spec.max_iterations,
         threads: spec.threads,
     };
-    let bem = Bem::new(m1, m2, options).map_err(|e| {
-        e.map_field(|f| match f {
-            "extent[0]" => "bem.extent_mm[0]".into(),
-            "extent[1]" => "bem.extent_mm[1]".into(),
-            other => format!("bem.{other}"),
-        })
-    })?;
+    let bem = Bem::new(m1, m2, options)
+        .map_err(|e| {
+            e.map_field(|f| match f {
+                "extent[0]" => "bem.extent_mm[0]".into(),
+                "extent[1]" => "bem.extent_mm[1]".into(),
+                other => format!("bem.{other}"),
+            })
+        })?
+        .with_estimate(crate::pimp::zone_estimate(m1, m2)?);
     let map_load = |e: Error| {
         e.map_field(|f| match f {
             "force" => "load.force_n".into(),
@@ -216,30 +217,19 @@ pub fn run_bem_case(case: &PimpCase, base_dir: &Path) -> Result<BemOutcome> {
             e_star_mpa: bem.e_star(),
             relative_curvature_per_mm: curvature.map(|k| [k.a_coef, k.b_coef]),
             solver: Some(SolverEcho {
-                converged: solution.report.converged,
-                residual: solution.report.residual,
+                converged: solution.status.converged(),
+                residual: solution.status.residual,
                 tolerance: spec.tolerance,
-                operator_applications: solution.report.applications,
-                max_overlap_mm: solution.report.max_overlap,
+                operator_applications: solution.detail.report.applications,
+                max_overlap_mm: solution.detail.report.max_overlap,
                 boundary,
             }),
             separation_mm: separation,
             rib_angle_deg: rib_angle,
             hertz: curvature.and_then(|k| hertz_echo(k, m1, m2, solution.force)),
+            grid_rounds: solution.domains,
         },
-        FieldSummary {
-            force: solution.force,
-            approach: solution.approach,
-            max_pressure: solution.max_pressure,
-            mean_pressure: solution.mean_pressure,
-            contact_area: solution.contact_area,
-            semi_axes: solution.semi_axes,
-            orientation: solution.orientation,
-            zone: &solution.zone,
-            grid: &solution.grid,
-            iterations: solution.report.iterations,
-            grid_rounds: solution.grid_rounds,
-        },
+        &solution,
     );
     Ok(BemOutcome { report, solution })
 }

@@ -131,16 +131,7 @@ fn default_criterion() -> YieldCriterion {
     YieldCriterion::VonMises
 }
 
-/// The validated load control of a case.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum LoadControl {
-    /// Given normal force \[N\].
-    Force(f64),
-    /// Given approach \[mm\].
-    Approach(f64),
-    /// Given line load [N/mm].
-    LineLoad(f64),
-}
+pub use crate::load::LoadControl;
 
 impl LoadSpec {
     /// The single load entry, validated to be present and unique.

@@ -43,12 +43,14 @@
 
 use crate::bearing::{FaceShape, RibShape, RollerRib, RollerRibSpec, TaperedRollerBearing};
 use crate::error::{Error, Result};
+use crate::field::NormalSolution;
 use crate::geometry::RelativeCurvature;
 use crate::geometry::surface::{Material, PlacedSurface, Profile, Surface};
 use crate::halfspace::{Boundary, MapKind};
 use crate::hertz::{HertzPointContact, PointGeometry};
 use crate::material::ElasticMaterial;
 use crate::pimp::{GapSource, Mode, Pimp, PimpOptions, PimpSolution, QuadraticGap, SurfacePairGap};
+use crate::solve::SolveStatus;
 use nalgebra::{Point3, Unit, Vector3};
 use serde::{Deserialize, Serialize};
 
@@ -338,9 +340,12 @@ pub struct PimpReport {
     pub grid: GridEcho,
     /// PimP: force evaluations of the equilibrium iteration; bem: solver iterations.
     pub iterations: usize,
+    /// Why the solver's iteration stopped (`termination`: converged, max_iterations,
+    /// stagnated, diverged), its iterations and final relative residual.
+    pub status: SolveStatus,
     /// The half-space solver's convergence record (null for PimP).
     pub solver: Option<super::bem_case::SolverEcho>,
-    /// Resizes of the adaptive grid.
+    /// PimP: resizes of the adaptive grid; bem: domains tried.
     pub grid_rounds: usize,
     /// Separation of the given poses \[mm\] (surfaces only; < 0: interpenetration).
     pub separation_mm: Option<f64>,
@@ -509,7 +514,7 @@ pub fn run_pimp_case(case: &PimpCase) -> Result<PimpOutcome> {
         ReportMeta {
             name: case.name.clone(),
             method: "pimp",
-            mode: Some(solution.mode),
+            mode: Some(solution.detail.mode),
             geometry: label,
             e_star_mpa: crate::material::effective_modulus(&m1, &m2),
             relative_curvature_per_mm: Some([k.a_coef, k.b_coef]),
@@ -517,20 +522,9 @@ pub fn run_pimp_case(case: &PimpCase) -> Result<PimpOutcome> {
             separation_mm: separation,
             rib_angle_deg: rib_angle,
             hertz,
+            grid_rounds: solution.domains - 1,
         },
-        FieldSummary {
-            force: solution.force,
-            approach: solution.approach,
-            max_pressure: solution.max_pressure,
-            mean_pressure: solution.mean_pressure,
-            contact_area: solution.contact_area,
-            semi_axes: solution.semi_axes,
-            orientation: solution.orientation,
-            zone: &solution.zone,
-            grid: &solution.grid,
-            iterations: solution.iterations,
-            grid_rounds: solution.grid_rounds,
-        },
+        &solution,
     );
     Ok(PimpOutcome { report, solution })
 }
@@ -658,26 +652,13 @@ pub(crate) struct ReportMeta {
     pub separation_mm: Option<f64>,
     pub rib_angle_deg: Option<f64>,
     pub hertz: Option<HertzEcho>,
-}
-
-/// The fields that PimP and half-space solutions share.
-pub(crate) struct FieldSummary<'a> {
-    pub force: f64,
-    pub approach: f64,
-    pub max_pressure: f64,
-    pub mean_pressure: f64,
-    pub contact_area: f64,
-    pub semi_axes: [f64; 2],
-    pub orientation: f64,
-    pub zone: &'a crate::pimp::ContactZone,
-    pub grid: &'a crate::geometry::Grid2,
-    pub iterations: usize,
+    /// The report's `grid_rounds`: PimP counts grid resizes, bem the domains tried.
     pub grid_rounds: usize,
 }
 
 impl PimpReport {
     /// One report layout for both methods.
-    pub(crate) fn assemble(meta: ReportMeta, s: FieldSummary<'_>) -> Self {
+    pub(crate) fn assemble<D>(meta: ReportMeta, s: &NormalSolution<D>) -> Self {
         PimpReport {
             kontakt_version: crate::VERSION,
             schema_version: super::report::SCHEMA_VERSION,
@@ -699,10 +680,11 @@ impl PimpReport {
             centroid_mm: s.zone.centroid,
             extents_mm: s.zone.extents,
             centre_line_curvature_per_mm: s.zone.centre_line_curvature,
-            grid: GridEcho::of(s.grid),
-            iterations: s.iterations,
+            grid: GridEcho::of(&s.grid),
+            iterations: s.status.iterations,
+            status: s.status,
             solver: meta.solver,
-            grid_rounds: s.grid_rounds,
+            grid_rounds: meta.grid_rounds,
             separation_mm: meta.separation_mm,
             rib_angle_deg: meta.rib_angle_deg,
             hertz: meta.hertz,

@@ -38,29 +38,33 @@
 //! ```
 
 mod bedding;
-mod gap;
-mod surfaces;
-mod zone;
 
+pub use crate::field::ContactZone;
+pub use crate::field::domain::MIN_CELLS_ACROSS;
+pub use crate::gap::{FnGap, GapSource, QuadraticGap, SurfacePairGap};
 pub use bedding::{Mode, SampledGap};
-pub use gap::{FnGap, GapSource, QuadraticGap};
-pub use surfaces::SurfacePairGap;
-pub use zone::ContactZone;
 
 use crate::error::{Error, Result, positive_as};
+use crate::field::NormalSolution;
+use crate::field::domain::{self, Policy, Shrink, Trial};
 use crate::geometry::Grid2;
 use crate::hertz::{HertzPointContact, PointGeometry};
+use crate::load::LoadControl;
 use crate::material::ElasticMaterial;
-use crate::units::{Megapascal, Millimetre, Newton};
+use crate::solve::{SolveStatus, Termination};
+use crate::units::{Millimetre, Newton};
 use bedding::Bedding;
 use serde::{Deserialize, Serialize};
 
-/// Fewest loaded cells across the contact zone, in each direction, for a result to be
-/// trusted; a coarser zone is an error (fixed grid) or triggers a finer grid (adaptive).
-pub const MIN_CELLS_ACROSS: usize = 8;
-
-/// How many times the adaptive grid may be resized before giving up.
-const MAX_GRID_ROUNDS: usize = 12;
+/// The adaptive grid: it grows until it holds the zone and zooms in once, about the
+/// contact point, when the zone reaches less than 60 % of it (to 1.15 times the zone).
+const POLICY: Policy = Policy {
+    max_domains: 12,
+    shrink: Shrink::AboutOrigin {
+        trigger: 0.6,
+        factor: 1.15,
+    },
+};
 
 /// Options of the PimP solver.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
@@ -136,45 +140,17 @@ pub struct Pimp {
     options: PimpOptions,
 }
 
-/// The PimP result at one load.
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct PimpSolution {
+/// What only PimP gives in a [`NormalSolution`].
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct PimpDetail {
     /// The bedding law used.
     pub mode: Mode,
-    /// Normal force \[N\].
-    pub force: Newton,
-    /// Rigid approach `delta` from first touch \[mm\] (the paper's penetration `d`).
-    pub approach: Millimetre,
-    /// Largest pressure \[MPa\].
-    pub max_pressure: Megapascal,
-    /// Mean pressure over the contact area \[MPa\].
-    pub mean_pressure: Megapascal,
-    /// Contact area \[mm²\].
-    pub contact_area: f64,
-    /// Half-extents of the zone along the grid's x and y \[mm\] (the semi-axes for an
-    /// elliptical zone).
-    pub semi_axes: [Millimetre; 2],
-    /// Angle \[rad\] from the gap source's `x` axis to the grid's `x` axis (the direction
-    /// of least relative curvature).
-    pub orientation: f64,
-    /// Shape of the zone in the grid frame.
-    pub zone: ContactZone,
-    /// Force evaluations of the equilibrium iteration (0 under approach control).
-    pub iterations: usize,
-    /// Grid resizes of the adaptive extent.
-    pub grid_rounds: usize,
-    /// The grid \[mm\] (principal frame).
-    pub grid: Grid2,
-    /// Pressure per cell \[MPa\], row-major with x fastest.
-    pub pressure: Vec<Megapascal>,
 }
 
-/// What the solver holds fixed.
-#[derive(Debug, Clone, Copy)]
-enum Target {
-    Force(Newton),
-    Approach(Millimetre),
-}
+/// The PimP result at one load. `status` is the force equilibrium's: iterations are
+/// force evaluations (0 under approach control), the residual the relative force error
+/// before the field is scaled to the target. `domains - 1` is the number of grid resizes.
+pub type PimpSolution = NormalSolution<PimpDetail>;
 
 impl Pimp {
     /// A solver for body 1 against body 2 with `options`.
@@ -246,7 +222,7 @@ impl Pimp {
     /// - [`Error::NotConverged`] when the equilibrium iteration fails.
     pub fn solve_force(&self, source: &dyn GapSource, force: Newton) -> Result<PimpSolution> {
         positive_as("force", force, "a finite force > 0 N")?;
-        self.run(source, Target::Force(force))
+        self.solve(source, LoadControl::Force(force))
     }
 
     /// Solve for a rigid approach `approach` \[mm\] (> 0) from first touch.
@@ -259,28 +235,34 @@ impl Pimp {
         approach: Millimetre,
     ) -> Result<PimpSolution> {
         positive_as("approach", approach, "a finite approach > 0 mm")?;
-        self.run(source, Target::Approach(approach))
+        self.solve(source, LoadControl::Approach(approach))
     }
 
-    fn run(&self, source: &dyn GapSource, target: Target) -> Result<PimpSolution> {
+    /// Solve under `control` (a force or an approach; see [`LoadControl::point`]).
+    ///
+    /// # Errors
+    /// As [`Pimp::solve_force`].
+    pub fn solve(&self, source: &dyn GapSource, control: LoadControl) -> Result<PimpSolution> {
+        let control = control.point()?;
+
         let curvature = source.curvature();
         let hertz = HertzPointContact::new(
             PointGeometry::from_curvature(curvature),
             self.body1,
             self.body2,
         )?;
-        let estimate = match target {
-            Target::Force(f) => hertz.solve_force(f)?,
-            Target::Approach(d) => hertz.solve_approach(d)?,
+        let estimate = match control {
+            LoadControl::Force(f) => hertz.solve_force(f)?,
+            _ => hertz.solve_approach(approach_of(control))?,
         };
-        let mut half = match (self.options.extent, self.options.mode) {
+        let half = match (self.options.extent, self.options.mode) {
             (Some(e), _) => e,
             (None, Mode::Corrected) => [1.25 * estimate.semi_axes[0], 1.25 * estimate.semi_axes[1]],
             (None, Mode::Published) => {
                 // The published footprint is the contour g = d of the gap, d ≈ 0.6-1 delta.
-                let d = match target {
-                    Target::Force(_) => 0.7 * estimate.approach,
-                    Target::Approach(d) => d,
+                let d = match control {
+                    LoadControl::Force(_) => 0.7 * estimate.approach,
+                    _ => approach_of(control),
                 };
                 [
                     1.25 * (d / curvature.a_coef).sqrt(),
@@ -288,128 +270,111 @@ impl Pimp {
                 ]
             }
         };
-        let fixed = self.options.extent.is_some();
-        let [nx, ny] = self.options.cells;
-        let mut shrunk = false;
         let mut guess = estimate.approach
             * match self.options.mode {
                 Mode::Corrected => 1.0,
                 Mode::Published => 0.6,
             };
-        for round in 0..MAX_GRID_ROUNDS {
-            let grid = Grid2::centered(half[0], half[1], nx, ny)?;
-            let sampled = self.sample(source, grid)?;
-            let (approach, iterations, scale) = match target {
-                Target::Force(f) => {
-                    let (d, it) = equilibrium(&sampled, f, guess, &self.options)?;
-                    let achieved = sampled.force(d);
-                    (d, it, f / achieved)
-                }
-                Target::Approach(d) => (d, 0, 1.0),
-            };
-            let mut pressure = vec![0.0; grid.len()];
-            sampled.pressure_into(approach, &mut pressure);
-            if scale != 1.0 {
-                // The field is scaled so its force is the target exactly: by at most the
-                // tolerance, or, in published mode at a jump of the strip weights (the
-                // footprint gaining a column), by interpolating the weights (docs/pimp.md).
-                pressure.iter_mut().for_each(|p| *p *= scale);
-            }
-            let mut zone = ContactZone::analyse(&grid, &pressure)?;
-            if zone.patches == 0 {
-                return Err(Error::Geometry {
-                    field: "extent".into(),
-                    reason: format!(
-                        "no grid cell is in contact (grid ±{:.4e} × ±{:.4e} mm, {nx} × {ny} \
-                         cells): the contact is smaller than one cell; use a smaller extent \
-                         or the adaptive grid",
-                        half[0], half[1]
-                    ),
-                });
-            }
-            let across = [
-                ((zone.extents[0][1] - zone.extents[0][0]) / grid.dx()).round() as usize,
-                ((zone.extents[1][1] - zone.extents[1][0]) / grid.dy()).round() as usize,
-            ];
-            guess = approach;
-            if zone.touches_border[0] || zone.touches_border[1] {
-                if fixed {
-                    return Err(Error::Geometry {
-                        field: "extent".into(),
-                        reason: format!(
-                            "the contact zone reaches the border of the fixed grid \
-                             ±{:.4e} × ±{:.4e} mm; enlarge `extent` or leave it out for the \
-                             adaptive grid",
-                            half[0], half[1]
-                        ),
-                    });
-                }
-                for (h, touches) in half.iter_mut().zip(zone.touches_border) {
-                    if touches {
-                        *h *= 1.6;
+        let adapted = domain::adapt(
+            [[-half[0], half[0]], [-half[1], half[1]]],
+            self.options.extent.is_some(),
+            self.options.cells,
+            POLICY,
+            |grid, _| {
+                let sampled = self.sample(source, *grid)?;
+                let (approach, status, scale) = match control {
+                    LoadControl::Force(f) => {
+                        let (d, status) = equilibrium(&sampled, f, guess, &self.options);
+                        let status = status.require_converged("PimP force equilibrium")?;
+                        let achieved = sampled.force(d);
+                        (d, status, f / achieved)
                     }
-                }
-                continue;
-            }
-            if !fixed && !shrunk {
-                // Zoom in once when the zone fills less than half of the grid.
-                let reach = [
-                    zone.extents[0][0].abs().max(zone.extents[0][1].abs()),
-                    zone.extents[1][0].abs().max(zone.extents[1][1].abs()),
-                ];
-                if reach[0] < 0.6 * half[0] || reach[1] < 0.6 * half[1] {
-                    half = [
-                        (1.15 * reach[0]).min(half[0]),
-                        (1.15 * reach[1]).min(half[1]),
-                    ];
-                    shrunk = true;
-                    continue;
-                }
-            }
-            if across[0] < MIN_CELLS_ACROSS || across[1] < MIN_CELLS_ACROSS {
-                return Err(Error::Geometry {
-                    field: "cells".into(),
-                    reason: format!(
-                        "the grid is too coarse for the contact: the zone spans {} × {} cells, \
-                         at least {MIN_CELLS_ACROSS} are needed each way; use more cells or a \
-                         smaller extent",
-                        across[0], across[1]
+                    _ => (
+                        approach_of(control),
+                        SolveStatus::new(Termination::Converged, 0, 0.0),
+                        1.0,
                     ),
-                });
-            }
-            if let Some(e) = sampled.extents(approach) {
-                zone.extents = e;
-            }
-            let force = match target {
-                Target::Force(f) => f,
-                Target::Approach(_) => zone.force,
-            };
-            return Ok(PimpSolution {
-                mode: self.options.mode,
-                force,
-                approach,
-                max_pressure: zone.max_pressure,
-                mean_pressure: force / zone.area,
-                contact_area: zone.area,
-                semi_axes: zone.half_extents(),
-                orientation: sampled.rotation,
-                zone,
-                iterations,
-                grid_rounds: round,
-                grid,
-                pressure,
-            });
+                };
+                let mut pressure = vec![0.0; grid.len()];
+                sampled.pressure_into(approach, &mut pressure);
+                if scale != 1.0 {
+                    // The field is scaled so its force is the target exactly: by at most
+                    // the tolerance, or, in published mode at a jump of the strip weights
+                    // (the footprint gaining a column), by interpolating the weights
+                    // (docs/pimp.md).
+                    pressure.iter_mut().for_each(|p| *p *= scale);
+                }
+                let zone = ContactZone::analyse(grid, &pressure)?;
+                guess = approach;
+                Ok(Trial {
+                    result: (sampled, approach, status, pressure),
+                    zone,
+                })
+            },
+        )?;
+        let (sampled, approach, status, pressure) = adapted.result;
+        let mut zone = adapted.zone;
+        if let Some(e) = sampled.extents(approach) {
+            zone.extents = e;
         }
-        Err(Error::Geometry {
-            field: "extent".into(),
-            reason: format!(
-                "the adaptive grid did not settle in {MAX_GRID_ROUNDS} rounds (last extent \
-                 ±{:.4e} × ±{:.4e} mm): the contact zone is unbounded or far from the contact \
-                 point",
-                half[0], half[1]
-            ),
+        let force = match control {
+            LoadControl::Force(f) => f,
+            _ => zone.force,
+        };
+        Ok(NormalSolution {
+            force,
+            approach,
+            max_pressure: zone.max_pressure,
+            mean_pressure: force / zone.area,
+            contact_area: zone.area,
+            semi_axes: zone.half_extents(),
+            orientation: sampled.rotation,
+            zone,
+            status,
+            domains: adapted.domains,
+            grid: adapted.grid,
+            pressure,
+            detail: PimpDetail {
+                mode: self.options.mode,
+            },
         })
     }
+}
+
+/// The approach of a validated point control that is not a force.
+fn approach_of(control: LoadControl) -> Millimetre {
+    match control {
+        LoadControl::Approach(d) => d,
+        LoadControl::Force(_) | LoadControl::LineLoad(_) => f64::NAN,
+    }
+}
+
+/// PimP's estimate of the contact zone, as the half-space solver's adaptive domain takes
+/// it ([`crate::halfspace::Bem::with_estimate`]): the bounding box
+/// `[[x0, x1], [y0, y1]]` \[mm\] of the corrected-mode zone on a 48 × 48 grid, in the
+/// principal frame of the gap. A PimP solve costs a small fraction of a half-space solve
+/// and places the domain on curved, off-centre zones that a Hertz ellipse misses.
+///
+/// # Errors
+/// None when built; the estimate itself fails as [`Pimp::solve`] does.
+pub fn zone_estimate(
+    body1: ElasticMaterial,
+    body2: ElasticMaterial,
+) -> Result<crate::halfspace::ZoneEstimate> {
+    let pimp = Pimp::new(
+        body1,
+        body2,
+        PimpOptions {
+            mode: Mode::Corrected,
+            cells: [48, 48],
+            ..PimpOptions::default()
+        },
+    )?;
+    Ok(std::sync::Arc::new(
+        move |source: &dyn GapSource, control: LoadControl| {
+            Ok(pimp.solve(source, control)?.zone.extents)
+        },
+    ))
 }
 
 impl SampledGap {
@@ -427,19 +392,23 @@ impl SampledGap {
     ) -> Result<(Millimetre, usize)> {
         positive_as("force", force, "a finite force > 0 N")?;
         let start = self.start_unit * force.cbrt().powi(2);
-        equilibrium(self, force, start, options)
+        let (d, status) = equilibrium(self, force, start, options);
+        let status = status.require_converged("PimP force equilibrium")?;
+        Ok((d, status.iterations))
     }
 }
 
 /// Find the approach at which `sampled` carries `force`: expand a bracket from `guess`,
 /// then the Illinois variant of regula falsi (superlinear, never leaves the bracket).
-/// Returns the approach and the number of force evaluations.
+/// Returns the approach and the status: iterations are force evaluations, the residual
+/// is the relative force error `|F(d) - F| / F` (converged), or the bracket's relative
+/// width (not converged).
 fn equilibrium(
     sampled: &SampledGap,
     force: Newton,
     guess: Millimetre,
     options: &PimpOptions,
-) -> Result<(Millimetre, usize)> {
+) -> (Millimetre, SolveStatus) {
     let f = |d: f64| sampled.force(d) - force;
     let tol = options.tolerance * force;
     let mut evals = 0;
@@ -449,11 +418,11 @@ fn equilibrium(
     evals += 1;
     while fhi < 0.0 {
         if evals >= options.max_iterations {
-            return Err(Error::NotConverged {
-                what: "PimP force bracket".into(),
-                iterations: evals,
-                residual: -fhi / force,
-            });
+            // No approach carries the force within the budget.
+            return (
+                hi,
+                SolveStatus::new(Termination::Diverged, evals, -fhi / force),
+            );
         }
         (lo, flo) = (hi, fhi);
         // Extrapolate with F ∝ delta^(3/2) and a margin; double when nothing is loaded.
@@ -467,7 +436,10 @@ fn equilibrium(
         evals += 1;
     }
     if fhi.abs() <= tol {
-        return Ok((hi, evals));
+        return (
+            hi,
+            SolveStatus::new(Termination::Converged, evals, fhi.abs() / force),
+        );
     }
     // `flo`/`fhi` are scaled by the Illinois rule; only `fd` is a true residual.
     let mut side = 0i8;
@@ -476,8 +448,13 @@ fn equilibrium(
     let mut prev: Option<(f64, f64)> = None;
     while evals < options.max_iterations {
         if hi - lo <= 4.0 * f64::EPSILON * hi {
-            // A jump of the published weights: the root is at the jump.
-            return Ok((hi, evals));
+            // A jump of the published weights: the root is at the jump (the residual is
+            // the jump's, measured once more, not counted as an evaluation).
+            let residual = (sampled.force(hi) - force).abs() / force;
+            return (
+                hi,
+                SolveStatus::new(Termination::Converged, evals, residual),
+            );
         }
         // Power-law step from the last evaluation (exact for F ∝ delta^(3/2), the law of
         // every quadratic gap under both beddings), else Illinois, else bisection.
@@ -504,7 +481,10 @@ fn equilibrium(
         let fd = f(d);
         evals += 1;
         if fd.abs() <= tol {
-            return Ok((d, evals));
+            return (
+                d,
+                SolveStatus::new(Termination::Converged, evals, fd.abs() / force),
+            );
         }
         prev = Some(last);
         last = (d, fd + force);
@@ -527,9 +507,8 @@ fn equilibrium(
         }
         side = new_side;
     }
-    Err(Error::NotConverged {
-        what: "PimP force equilibrium".into(),
-        iterations: evals,
-        residual: (hi - lo) / hi,
-    })
+    (
+        hi,
+        SolveStatus::new(Termination::MaxIterations, evals, (hi - lo) / hi),
+    )
 }

@@ -10,15 +10,28 @@
 //!
 //! A [`GapSource`] provides `g` in a frame whose `x, y` axes lie in the contact plane.
 //! Sources: [`QuadraticGap`] (the Hertz gap, for validation), [`FnGap`] (any function,
-//! for example a two-zone geometry) and [`crate::pimp::SurfacePairGap`] (two placed
-//! analytic surfaces, ray-cast).
+//! for example a two-zone geometry) and [`SurfacePairGap`] (two placed analytic surfaces,
+//! ray-cast). A [`GapMap`] is a gap (or height) map on its own grid, solved as it is by
+//! the half-space solver.
+//!
+//! This module is shared vocabulary: every field solver (PimP, the half-space solver,
+//! the ones to come) takes its geometry from here, and none of them owns it.
+
+mod map;
+mod surface_pair;
+
+pub use map::{GapMap, MapKind};
+pub use surface_pair::SurfacePairGap;
 
 use crate::error::{Error, Result, positive_as};
 use crate::geometry::{Grid2, RelativeCurvature};
 use crate::units::Millimetre;
 
 /// A substitute geometry that can be sampled on a grid.
-pub trait GapSource {
+///
+/// `Send + Sync`: a source is plain geometry, shared read-only between the threads of a
+/// multi-body simulation or a sweep.
+pub trait GapSource: Send + Sync {
     /// The gap's quadratic form at the contact point: `g ≈ A x'² + B y'²` with `A <= B`
     /// \[1/mm\] and `x'` at angle `orientation` \[rad\] from the source's `x` axis.
     fn curvature(&self) -> RelativeCurvature;
@@ -99,7 +112,7 @@ impl<F: Fn(Millimetre, Millimetre) -> Millimetre> FnGap<F> {
     }
 }
 
-impl<F: Fn(Millimetre, Millimetre) -> Millimetre> GapSource for FnGap<F> {
+impl<F: Fn(Millimetre, Millimetre) -> Millimetre + Send + Sync> GapSource for FnGap<F> {
     fn curvature(&self) -> RelativeCurvature {
         self.curvature
     }

@@ -1,11 +1,11 @@
 //! The substitute geometry of two placed analytic surfaces, by ray casting (seed 000
 //! Step 2, eq. 2).
 
+use super::{GapSource, check_len};
 use crate::error::{Error, Result};
 use crate::geometry::contact_point::{ContactPoint, find_contact};
 use crate::geometry::surface::{Curvature, PlacedSurface, Ray};
 use crate::geometry::{Grid2, RelativeCurvature};
-use crate::pimp::gap::{GapSource, check_len};
 use crate::units::Millimetre;
 use nalgebra::{Point3, Unit, Vector3};
 

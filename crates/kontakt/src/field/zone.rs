@@ -2,8 +2,8 @@
 //! pressure, separate patches and the curvature of the zone's centre line.
 
 use crate::error::Result;
+use crate::gap::check_len;
 use crate::geometry::Grid2;
-use crate::pimp::gap::check_len;
 use serde::Serialize;
 
 /// Shape statistics of a pressure field on a grid (all in the grid's frame).
