@@ -1,7 +1,7 @@
 //! `kontakt`: the command-line interface of the kontakt contact-mechanics library.
 //!
-//! A thin shell: arguments are turned into the library's [`kontakt::io::CaseFile`], solved
-//! by [`kontakt::io::run_case`] and printed as a table or as JSON. Nothing physical lives
+//! A thin shell: arguments are turned into the library's [`kontakt_case::CaseFile`], solved
+//! by [`kontakt_case::run_case`] and printed as a table or as JSON. Nothing physical lives
 //! here.
 //!
 //! Exit status: 0 success; 1 the computation failed (e.g. did not converge); 2 bad input

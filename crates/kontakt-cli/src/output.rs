@@ -1,8 +1,8 @@
 //! Human tables and JSON output.
 
 use anyhow::Result;
-use kontakt::io::ContactReport;
-use kontakt::io::case::ContactKind;
+use kontakt_case::ContactReport;
+use kontakt_case::case::ContactKind;
 use std::io::Write;
 
 fn opt(v: Option<f64>, prec: usize) -> String {

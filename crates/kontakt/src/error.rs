@@ -91,13 +91,13 @@ impl Error {
 }
 
 /// Check that `value` is finite and strictly positive.
-pub(crate) fn positive(field: &'static str, value: f64) -> Result<f64> {
+pub fn positive(field: &'static str, value: f64) -> Result<f64> {
     positive_as(field, value, "a finite number > 0")
 }
 
 /// Check that `value` is finite and strictly positive, stating the valid range as
 /// `expected` (with its unit, e.g. "a finite length > 0 mm").
-pub(crate) fn positive_as(field: &'static str, value: f64, expected: &'static str) -> Result<f64> {
+pub fn positive_as(field: &'static str, value: f64, expected: &'static str) -> Result<f64> {
     if value.is_finite() && value > 0.0 {
         Ok(value)
     } else {

@@ -73,7 +73,9 @@
 //! | [`tangential`] | Cattaneo-Mindlin partial slip and Mindlin-Deresiewicz loading history, Carter's creep curve, Kalker's creep coefficients and linear theory, FASTSIM; traction curves | done |
 //! | [`traction`] | asperity-based traction curves: periodic spherical asperities on a rough line or circular Hertz contact, Mindlin partial slip per asperity (thesis seed 002 §3.1.2.2) | done |
 //! | [`bearing`] | roller end face / rib pair of a tapered roller bearing (seed 000 Table 1) | roller/rib done; kinematics to come |
-//! | [`io`] | serde case files (TOML) and stable, unit-suffixed result records (JSON) | Hertz, PimP and half-space cases |
+//!
+//! Case files (TOML), the runner `Case::run` and the JSON reports live in the
+//! `kontakt-case` crate, so this crate holds physics only.
 //!
 //! Planned, in its own module with the same conventions: bearing kinematics (sliding
 //! velocities, friction power). Plots live in the `kontakt-plot` crate. See
@@ -92,7 +94,6 @@ pub mod gap;
 pub mod geometry;
 pub mod halfspace;
 pub mod hertz;
-pub mod io;
 pub mod load;
 pub mod material;
 pub mod pimp;

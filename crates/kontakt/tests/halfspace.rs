@@ -889,20 +889,7 @@ fn bad_gap_maps_are_named_errors() {
     let e = GapMap::new(3, 2, [0.01, -0.01], vec![0.0; 6], MapKind::Gap).unwrap_err();
     assert_eq!(invalid_field(&e), "spacing[1]");
 
-    // A ragged CSV file.
-    let path = std::env::temp_dir().join(format!(
-        "kontakt-halfspace-ragged-{}-{:?}.csv",
-        std::process::id(),
-        std::thread::current().id()
-    ));
-    std::fs::write(&path, "0.1, 0.0, 0.1\n0.0, 0.0\n0.1, 0.0, 0.1\n").unwrap();
-    let e = GapMap::read(&path, [0.01, 0.01], MapKind::Gap).unwrap_err();
-    std::fs::remove_file(&path).unwrap();
-    assert_eq!(invalid_field(&e), "gap_map.file");
-    assert!(e.to_string().contains("row 2 has 2 values"), "{e}");
-    // A file that does not exist.
-    let e = GapMap::read(&path, [0.01, 0.01], MapKind::Gap).unwrap_err();
-    assert_eq!(invalid_field(&e), "gap_map.file");
+    // Reading maps from files is tested in kontakt-case (maps.rs).
 }
 
 /// `Bem::solve_map` on a 24 x 24 Hertz gap map (0.48 mm square, R = 10 mm): 30 N

@@ -4,10 +4,10 @@ use crate::cli::{Cli, Command, Criterion, HertzArgs};
 use crate::output;
 use anyhow::{Context, Result};
 use kontakt::hertz::subsurface::YieldCriterion;
-use kontakt::io::case::{
+use kontakt_case::case::{
     BodySpec, CaseFile, ContactKind, ContactSpec, LoadSpec, Method, YieldSpec,
 };
-use kontakt::io::{Case, run_bem_case, run_case, run_pimp_case};
+use kontakt_case::{Case, Outcome, run_case};
 
 pub mod pimp;
 pub mod traction;
@@ -28,19 +28,36 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
         }
         Command::Solve(args) => {
             let (label, text) = read_case(&args.case)?;
-            match Case::from_toml_str(&text).with_context(|| label.clone())? {
-                Case::Hertz(case) => {
-                    if args.csv.is_some() || args.map.is_some() {
-                        return Err(InputError(format!(
-                            "{label}: --csv and --map need a pressure field: use method = \"pimp\" or \"bem\""
-                        ))
-                        .into());
-                    }
-                    let report = run_case(&case).with_context(|| label.clone())?;
-                    output::print_report(out, &report, args.json)
+            let case = Case::from_toml_str(&text).with_context(|| label.clone())?;
+            let wants_field = args.csv.is_some() || args.map.is_some();
+            match case.method() {
+                "hertz" if wants_field => {
+                    return Err(InputError(format!(
+                        "{label}: --csv and --map need a pressure field: use method = \"pimp\" or \"bem\""
+                    ))
+                    .into());
                 }
-                Case::Pimp(case) => {
-                    let outcome = run_pimp_case(&case).with_context(|| label.clone())?;
+                "traction" if wants_field => {
+                    return Err(InputError(format!(
+                        "{label}: traction cases write curves with `kontakt traction {label} --csv FILE --plot FILE`"
+                    ))
+                    .into());
+                }
+                _ => {}
+            }
+            // Relative paths in the case (gap maps) are relative to the case file.
+            let base = args
+                .case
+                .parent()
+                .filter(|_| args.case.as_os_str() != "-")
+                .unwrap_or(std::path::Path::new("."));
+            let name = match &case {
+                Case::Pimp(c) | Case::Bem(c) => c.name.clone(),
+                _ => None,
+            };
+            match case.run(base).with_context(|| label.clone())? {
+                Outcome::Hertz(report) => output::print_report(out, &report, args.json),
+                Outcome::Pimp(outcome) => {
                     let s = &outcome.solution;
                     if let Some(path) = &args.csv {
                         pimp::write_csv(path, &s.grid, &[("pressure_mpa", &s.pressure)])?;
@@ -49,20 +66,14 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                         let mode = outcome.report.mode.map_or("", |m| m.as_str());
                         let title = format!(
                             "{}, {:.0} N, PimP {mode}",
-                            case.name.as_deref().unwrap_or(&outcome.report.geometry),
+                            name.as_deref().unwrap_or(&outcome.report.geometry),
                             outcome.report.force_n,
                         );
                         pimp::write_map(path, &s.grid, &s.pressure, &title, &[])?;
                     }
                     pimp::print_report(out, &outcome.report, args.json)
                 }
-                Case::Bem(case) => {
-                    let base = args
-                        .case
-                        .parent()
-                        .filter(|_| args.case.as_os_str() != "-")
-                        .unwrap_or(std::path::Path::new("."));
-                    let outcome = run_bem_case(&case, base).with_context(|| label.clone())?;
+                Outcome::Bem(outcome) => {
                     let s = &outcome.solution;
                     if let Some(path) = &args.csv {
                         pimp::write_csv(
@@ -78,24 +89,14 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                     if let Some(path) = &args.map {
                         let title = format!(
                             "{}, {:.0} N, coupled half-space",
-                            case.name.as_deref().unwrap_or(&outcome.report.geometry),
+                            name.as_deref().unwrap_or(&outcome.report.geometry),
                             outcome.report.force_n,
                         );
                         pimp::write_map(path, &s.grid, &s.pressure, &title, &[])?;
                     }
                     pimp::print_report(out, &outcome.report, args.json)
                 }
-                Case::Traction(case) => {
-                    if args.csv.is_some() || args.map.is_some() {
-                        return Err(InputError(format!(
-                            "{label}: traction cases write curves with `kontakt traction {label} --csv FILE --plot FILE`"
-                        ))
-                        .into());
-                    }
-                    let report =
-                        kontakt::io::run_traction_case(&case).with_context(|| label.clone())?;
-                    traction::print_report(out, &report, args.json)
-                }
+                Outcome::Traction(report) => traction::print_report(out, &report, args.json),
             }
         }
         Command::Demo(args) => pimp::demo(&args.out, out, args.json),

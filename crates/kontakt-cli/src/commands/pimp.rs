@@ -5,9 +5,9 @@ use crate::commands::InputError;
 use anyhow::{Context, Result};
 use kontakt::bearing::{RollerRib, RollerRibSpec, STUDY_FORCES, TABLE1};
 use kontakt::geometry::Grid2;
-use kontakt::io::PimpReport;
 use kontakt::material::ElasticMaterial;
 use kontakt::pimp::{Mode, Pimp, PimpOptions, SurfacePairGap};
+use kontakt_case::PimpReport;
 use kontakt_plot::{FieldMap, LinePlot, LineStyle, PALETTE, Series};
 use std::io::Write;
 use std::path::Path;
@@ -26,7 +26,7 @@ pub fn print_report(out: &mut impl Write, r: &PimpReport, json: bool) -> Result<
     };
     let column = if r.mode.is_some() { "PimP" } else { "BEM" };
     writeln!(out, "{name}: {method}, {}", r.geometry)?;
-    let hz = |f: &dyn Fn(&kontakt::io::pimp_case::HertzEcho) -> f64, prec: usize| {
+    let hz = |f: &dyn Fn(&kontakt_case::pimp_case::HertzEcho) -> f64, prec: usize| {
         r.hertz
             .as_ref()
             .map_or(String::from("-"), |h| format!("{:.*}", prec, f(h)))
@@ -331,7 +331,7 @@ pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
     }
     md.push_str("All rows (both modes, every load): [results.csv](results.csv).\n");
     // Traction curves of every model on one contact (examples/traction_ball_all_models.toml).
-    let traction = kontakt::io::run_traction_case(&kontakt::io::TractionCase::from_toml_str(
+    let traction = kontakt_case::run_traction_case(&kontakt_case::TractionCase::from_toml_str(
         include_str!("../../../../examples/traction_ball_all_models.toml"),
     )?)
     .context("the demo's traction case")?;

@@ -1,11 +1,11 @@
 //! `kontakt traction CASE.toml`: traction curves `F_T/(mu F_N)` against the creepage
 //! (slide-to-roll ratio) for the models of a `method = "traction"` case, as a table,
-//! JSON, CSV and a plot. The physics is `kontakt::io::run_traction_case`.
+//! JSON, CSV and a plot. The physics is `kontakt_case::run_traction_case`.
 
 use crate::cli::TractionArgs;
 use crate::commands::InputError;
 use anyhow::{Context, Result};
-use kontakt::io::{TractionCase, TractionReport, run_traction_case};
+use kontakt_case::{TractionCase, TractionReport, run_traction_case};
 use kontakt_plot::{LinePlot, LineStyle, PALETTE, Series};
 use std::io::Write;
 use std::path::Path;

@@ -463,7 +463,7 @@ fn angle(field: &'static str, deg: f64, lo: f64, hi: f64) -> Result<f64> {
 
 /// A rigid frame with origin `origin` whose local z axis is `axis` (the pose of a surface
 /// of revolution; the turn about the axis is irrelevant).
-pub(crate) fn frame_along(origin: Point3<f64>, axis: &Unit<Vector3<f64>>) -> Isometry3<f64> {
+pub fn frame_along(origin: Point3<f64>, axis: &Unit<Vector3<f64>>) -> Isometry3<f64> {
     let rotation = UnitQuaternion::rotation_between(&Vector3::z(), axis).unwrap_or_else(|| {
         UnitQuaternion::from_axis_angle(&Vector3::x_axis(), std::f64::consts::PI)
     });

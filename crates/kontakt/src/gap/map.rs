@@ -1,9 +1,9 @@
-//! User-supplied gap or height maps (CSV or NumPy `.npy`) on a uniform grid.
+//! User-supplied gap or height maps on a uniform grid (in memory; the case layer,
+//! `kontakt-case`, reads them from CSV or NumPy `.npy` files).
 
 use crate::error::{Error, Result, positive_as};
 use crate::geometry::Grid2;
 use serde::{Deserialize, Serialize};
-use std::path::Path;
 
 /// What the map's values are.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -79,33 +79,6 @@ impl GapMap {
         Ok(GapMap { grid, values })
     }
 
-    /// Read a map from a CSV file (one grid row per line, `y` down the file, `x` across,
-    /// comma-separated numbers, no header) or a `.npy` file (a 2-D float64 or float32
-    /// array of shape `(ny, nx)`, C order).
-    ///
-    /// # Errors
-    /// [`Error::InvalidInput`] naming the file for an unreadable or malformed file, a
-    /// ragged CSV row (named), or the errors of [`GapMap::new`].
-    pub fn read(path: &Path, spacing: [f64; 2], kind: MapKind) -> Result<Self> {
-        let file_err = |why: String| {
-            Error::invalid(
-                "gap_map.file",
-                path.display(),
-                format!("a readable CSV or .npy gap map ({why})"),
-            )
-        };
-        let bytes = std::fs::read(path).map_err(|e| file_err(e.to_string()))?;
-        let is_npy = path
-            .extension()
-            .is_some_and(|e| e.eq_ignore_ascii_case("npy"));
-        let (nx, ny, values) = if is_npy {
-            read_npy(&bytes).map_err(file_err)?
-        } else {
-            read_csv(&bytes).map_err(file_err)?
-        };
-        GapMap::new(nx, ny, spacing, values, kind)
-    }
-
     /// The grid \[mm\].
     pub fn grid(&self) -> &Grid2 {
         &self.grid
@@ -117,84 +90,9 @@ impl GapMap {
     }
 }
 
-fn read_csv(bytes: &[u8]) -> std::result::Result<(usize, usize, Vec<f64>), String> {
-    let mut reader = csv::ReaderBuilder::new()
-        .has_headers(false)
-        .trim(csv::Trim::All)
-        .comment(Some(b'#'))
-        .flexible(true)
-        .from_reader(bytes);
-    let mut values = Vec::new();
-    let mut nx = 0;
-    let mut ny = 0;
-    for (row, record) in reader.records().enumerate() {
-        let record = record.map_err(|e| e.to_string())?;
-        if record.iter().all(str::is_empty) {
-            continue;
-        }
-        if ny == 0 {
-            nx = record.len();
-        } else if record.len() != nx {
-            return Err(format!(
-                "row {} has {} values, the first row {nx}",
-                row + 1,
-                record.len()
-            ));
-        }
-        for (col, field) in record.iter().enumerate() {
-            let v: f64 = field.parse().map_err(|_| {
-                format!(
-                    "row {}, column {}: `{field}` is not a number",
-                    row + 1,
-                    col + 1
-                )
-            })?;
-            values.push(v);
-        }
-        ny += 1;
-    }
-    Ok((nx, ny, values))
-}
-
-fn read_npy(bytes: &[u8]) -> std::result::Result<(usize, usize, Vec<f64>), String> {
-    let npy = npyz::NpyFile::new(bytes).map_err(|e| e.to_string())?;
-    let shape = npy.shape().to_vec();
-    if shape.len() != 2 {
-        return Err(format!(
-            "a 2-D array is needed, the file holds shape {shape:?}"
-        ));
-    }
-    if npy.order() != npyz::Order::C {
-        return Err("the array must be in C order (numpy's default)".into());
-    }
-    let (ny, nx) = (shape[0] as usize, shape[1] as usize);
-    let dtype = npy.dtype();
-    let values = match npy.into_vec::<f64>() {
-        Ok(v) => v,
-        Err(_) => npyz::NpyFile::new(bytes)
-            .and_then(|f| f.into_vec::<f32>())
-            .map_err(|_| format!("float64 or float32 values are needed, the file holds {dtype:?}"))?
-            .into_iter()
-            .map(f64::from)
-            .collect(),
-    };
-    Ok((nx, ny, values))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn csv_rows_and_errors() {
-        let (nx, ny, v) = read_csv(b"1, 2, 3\n4,5,6\n").unwrap();
-        assert_eq!((nx, ny), (3, 2));
-        assert_eq!(v, vec![1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
-        let e = read_csv(b"1,2,3\n4,5\n").unwrap_err();
-        assert!(e.contains("row 2 has 2 values"), "{e}");
-        let e = read_csv(b"1,x\n").unwrap_err();
-        assert!(e.contains("`x` is not a number"), "{e}");
-    }
 
     #[test]
     fn nan_and_shape_errors_name_the_place() {
@@ -212,44 +110,6 @@ mod tests {
         assert!(e.to_string().contains("4 values"), "{e}");
         let e = GapMap::new(2, 2, [0.0, 0.1], vec![0.0; 4], MapKind::Gap).unwrap_err();
         assert_eq!(e.field(), Some("spacing[0]"));
-    }
-
-    /// A `.npy` file as numpy writes it (format 1.0).
-    fn npy_bytes(descr: &str, shape: &str, data: &[u8]) -> Vec<u8> {
-        let dict = format!("{{'descr': '{descr}', 'fortran_order': False, 'shape': {shape}, }}");
-        let mut header = dict.into_bytes();
-        while (10 + header.len() + 1) % 64 != 0 {
-            header.push(b' ');
-        }
-        header.push(b'\n');
-        let mut out = b"\x93NUMPY\x01\x00".to_vec();
-        out.extend_from_slice(&(header.len() as u16).to_le_bytes());
-        out.extend_from_slice(&header);
-        out.extend_from_slice(data);
-        out
-    }
-
-    #[test]
-    fn npy_float64_and_float32_and_errors() {
-        let v64: Vec<u8> = [1.0f64, 2.0, 3.0, 4.0, 5.0, 6.0]
-            .iter()
-            .flat_map(|v| v.to_le_bytes())
-            .collect();
-        let (nx, ny, v) = read_npy(&npy_bytes("<f8", "(2, 3)", &v64)).unwrap();
-        assert_eq!((nx, ny), (3, 2));
-        assert_eq!(v, vec![1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
-        let v32: Vec<u8> = [0.5f32, 1.5, 2.5, 3.5]
-            .iter()
-            .flat_map(|v| v.to_le_bytes())
-            .collect();
-        let (nx, ny, v) = read_npy(&npy_bytes("<f4", "(2, 2)", &v32)).unwrap();
-        assert_eq!((nx, ny), (2, 2));
-        assert_eq!(v, vec![0.5, 1.5, 2.5, 3.5]);
-        let e = read_npy(&npy_bytes("<f8", "(6,)", &v64)).unwrap_err();
-        assert!(e.contains("2-D"), "{e}");
-        let ints: Vec<u8> = [1i64, 2].iter().flat_map(|v| v.to_le_bytes()).collect();
-        let e = read_npy(&npy_bytes("<i8", "(1, 2)", &ints)).unwrap_err();
-        assert!(e.contains("float64 or float32"), "{e}");
     }
 
     #[test]

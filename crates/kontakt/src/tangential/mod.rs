@@ -255,7 +255,7 @@ pub trait TractionCurve {
 }
 
 /// Check a friction coefficient: finite and > 0.
-pub(crate) fn check_friction(mu: f64) -> Result<f64> {
+pub fn check_friction(mu: f64) -> Result<f64> {
     positive_as(
         "friction_coefficient",
         mu,
@@ -264,7 +264,7 @@ pub(crate) fn check_friction(mu: f64) -> Result<f64> {
 }
 
 /// Check a scalar creepage: finite.
-pub(crate) fn check_creepage(creepage: f64) -> Result<f64> {
+pub fn check_creepage(creepage: f64) -> Result<f64> {
     if creepage.is_finite() {
         Ok(creepage)
     } else {

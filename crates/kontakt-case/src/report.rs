@@ -1,13 +1,13 @@
 //! The result record of a case, with stable, unit-suffixed keys (`schema_version = 1`).
 //! Keys are never renamed without bumping the schema version; new keys may be added.
 
-use super::case::{BodySpec, CaseFile, ContactKind, LoadControl, Method};
-use crate::error::{Error, Result};
-use crate::hertz::line::LineContact;
-use crate::hertz::point_stress::FirstYield;
-use crate::hertz::subsurface::{self, StressPeaks, YieldCriterion};
-use crate::hertz::{HertzPointContact, PointGeometry};
-use crate::material::{ElasticMaterial, dundurs_beta};
+use crate::case::{BodySpec, CaseFile, ContactKind, LoadControl, Method};
+use kontakt::hertz::line::LineContact;
+use kontakt::hertz::point_stress::FirstYield;
+use kontakt::hertz::subsurface::{self, StressPeaks, YieldCriterion};
+use kontakt::hertz::{HertzPointContact, PointGeometry};
+use kontakt::material::{ElasticMaterial, dundurs_beta};
+use kontakt::{Error, Result};
 use serde::{Serialize, Serializer};
 use std::f64::consts::PI;
 
@@ -254,7 +254,7 @@ fn run_case_inner(case: &CaseFile) -> Result<ContactReport> {
                 .transpose()?;
             let k = geometry.curvature();
             Ok(ContactReport {
-                kontakt_version: crate::VERSION,
+                kontakt_version: kontakt::VERSION,
                 schema_version: SCHEMA_VERSION,
                 name: case.name.clone(),
                 method: case.method,
@@ -296,13 +296,13 @@ fn run_case_inner(case: &CaseFile) -> Result<ContactReport> {
             let length = case
                 .contact
                 .length_mm
-                .map(|l| crate::error::positive("length", l))
+                .map(|l| kontakt::error::positive("length", l))
                 .transpose()?;
             let contact = LineContact::new(r1, r2, m1, m2)?;
             let line_load = match (control, length) {
                 (LoadControl::LineLoad(q), _) => q,
                 (LoadControl::Force(f), Some(l)) => {
-                    crate::error::positive("force", f)?;
+                    kontakt::error::positive("force", f)?;
                     f / l
                 }
                 (LoadControl::Force(_), None) => {
@@ -331,7 +331,7 @@ fn run_case_inner(case: &CaseFile) -> Result<ContactReport> {
             let stiffness = length.map(|l| {
                 let half = 0.5 * l;
                 PI * half * contact.e_star()
-                    / ((half / b).ln() + crate::hertz::line::LUNDBERG_CONSTANT - 0.5)
+                    / ((half / b).ln() + kontakt::hertz::line::LUNDBERG_CONSTANT - 0.5)
             });
             // The bodies differ only through Poisson's ratio: report the more stressed one.
             let peaks: StressPeaks = {
@@ -346,7 +346,7 @@ fn run_case_inner(case: &CaseFile) -> Result<ContactReport> {
             let yield_line_load = case
                 .yield_check
                 .map(|y| -> Result<(f64, f64)> {
-                    crate::error::positive("yield_stress", y.stress_mpa)?;
+                    kontakt::error::positive("yield_stress", y.stress_mpa)?;
                     let ratio = [m1, m2]
                         .iter()
                         .map(|m| {
@@ -360,7 +360,7 @@ fn run_case_inner(case: &CaseFile) -> Result<ContactReport> {
                 })
                 .transpose()?;
             Ok(ContactReport {
-                kontakt_version: crate::VERSION,
+                kontakt_version: kontakt::VERSION,
                 schema_version: SCHEMA_VERSION,
                 name: case.name.clone(),
                 method: case.method,

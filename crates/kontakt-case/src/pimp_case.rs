@@ -41,16 +41,18 @@
 //! axis = [0.0, 0.0, 1.0]     # the surface's axis (local z) in the world
 //! ```
 
-use crate::bearing::{FaceShape, RibShape, RollerRib, RollerRibSpec, TaperedRollerBearing};
-use crate::error::{Error, Result};
-use crate::field::NormalSolution;
-use crate::geometry::RelativeCurvature;
-use crate::geometry::surface::{Material, PlacedSurface, Profile, Surface};
-use crate::halfspace::{Boundary, MapKind};
-use crate::hertz::{HertzPointContact, PointGeometry};
-use crate::material::ElasticMaterial;
-use crate::pimp::{GapSource, Mode, Pimp, PimpOptions, PimpSolution, QuadraticGap, SurfacePairGap};
-use crate::solve::SolveStatus;
+use kontakt::bearing::{FaceShape, RibShape, RollerRib, RollerRibSpec, TaperedRollerBearing};
+use kontakt::field::NormalSolution;
+use kontakt::geometry::RelativeCurvature;
+use kontakt::geometry::surface::{Material, PlacedSurface, Profile, Surface};
+use kontakt::halfspace::{Boundary, MapKind};
+use kontakt::hertz::{HertzPointContact, PointGeometry};
+use kontakt::material::ElasticMaterial;
+use kontakt::pimp::{
+    GapSource, Mode, Pimp, PimpOptions, PimpSolution, QuadraticGap, SurfacePairGap,
+};
+use kontakt::solve::SolveStatus;
+use kontakt::{Error, Result};
 use nalgebra::{Point3, Unit, Vector3};
 use serde::{Deserialize, Serialize};
 
@@ -62,7 +64,7 @@ pub struct PimpCase {
     #[serde(default)]
     pub name: Option<String>,
     /// `"pimp"`, or `"bem"` for the coupled half-space solver (see
-    /// [`super::bem_case`]).
+    /// [`crate::bem_case`]).
     pub method: String,
     /// The two surfaces.
     pub geometry: GeometrySpec,
@@ -71,7 +73,7 @@ pub struct PimpCase {
     pub pimp: PimpSpec,
     /// Half-space solver options (`method = "bem"`).
     #[serde(default)]
-    pub bem: Option<super::bem_case::BemSpec>,
+    pub bem: Option<crate::bem_case::BemSpec>,
     /// Body 1 material (the roller for `roller_rib`).
     pub body1: MaterialSpec,
     /// Body 2 material (the ring for `roller_rib`).
@@ -287,7 +289,7 @@ impl SurfaceSpec {
                 "finite coordinates in mm",
             ));
         }
-        let pose = crate::bearing::roller_rib::frame_along(Point3::from(self.origin_mm), &axis);
+        let pose = kontakt::bearing::roller_rib::frame_along(Point3::from(self.origin_mm), &axis);
         PlacedSurface::new(surface, pose).map_err(|e| e.map_field(|k| format!("{prefix}.{k}")))
     }
 }
@@ -344,7 +346,7 @@ pub struct PimpReport {
     /// stagnated, diverged), its iterations and final relative residual.
     pub status: SolveStatus,
     /// The half-space solver's convergence record (null for PimP).
-    pub solver: Option<super::bem_case::SolverEcho>,
+    pub solver: Option<crate::bem_case::SolverEcho>,
     /// PimP: resizes of the adaptive grid; bem: domains tried.
     pub grid_rounds: usize,
     /// Separation of the given poses \[mm\] (surfaces only; < 0: interpenetration).
@@ -391,7 +393,7 @@ pub struct PimpOutcome {
 }
 
 pub(crate) fn material(m: &MaterialSpec, prefix: &str) -> Result<ElasticMaterial> {
-    super::report::material_keys(m.e_mpa, m.nu, prefix)
+    crate::report::material_keys(m.e_mpa, m.nu, prefix)
 }
 
 /// Build a roller/rib pair from a `[geometry]` table of kind `roller_rib`.
@@ -420,7 +422,7 @@ pub fn roller_rib_from_spec(geometry: &GeometrySpec) -> Result<Option<(String, R
                 bearing: TaperedRollerBearing::default(),
                 face: *face,
                 rib: *rib,
-                contact_height: crate::bearing::CONTACT_HEIGHT,
+                contact_height: kontakt::bearing::CONTACT_HEIGHT,
             },
         ),
         _ => {
@@ -516,7 +518,7 @@ pub fn run_pimp_case(case: &PimpCase) -> Result<PimpOutcome> {
             method: "pimp",
             mode: Some(solution.detail.mode),
             geometry: label,
-            e_star_mpa: crate::material::effective_modulus(&m1, &m2),
+            e_star_mpa: kontakt::material::effective_modulus(&m1, &m2),
             relative_curvature_per_mm: Some([k.a_coef, k.b_coef]),
             solver: None,
             separation_mm: separation,
@@ -611,7 +613,7 @@ pub(crate) fn gap_setup(geometry: &GeometrySpec) -> Result<GapSetup> {
 
 impl GridEcho {
     /// The echo of `g`.
-    pub fn of(g: &crate::geometry::Grid2) -> Self {
+    pub fn of(g: &kontakt::geometry::Grid2) -> Self {
         GridEcho {
             cells: [g.nx(), g.ny()],
             cell_mm: [g.dx(), g.dy()],
@@ -648,7 +650,7 @@ pub(crate) struct ReportMeta {
     pub geometry: String,
     pub e_star_mpa: f64,
     pub relative_curvature_per_mm: Option<[f64; 2]>,
-    pub solver: Option<super::bem_case::SolverEcho>,
+    pub solver: Option<crate::bem_case::SolverEcho>,
     pub separation_mm: Option<f64>,
     pub rib_angle_deg: Option<f64>,
     pub hertz: Option<HertzEcho>,
@@ -660,8 +662,8 @@ impl PimpReport {
     /// One report layout for both methods.
     pub(crate) fn assemble<D>(meta: ReportMeta, s: &NormalSolution<D>) -> Self {
         PimpReport {
-            kontakt_version: crate::VERSION,
-            schema_version: super::report::SCHEMA_VERSION,
+            kontakt_version: kontakt::VERSION,
+            schema_version: crate::report::SCHEMA_VERSION,
             name: meta.name,
             method: meta.method,
             mode: meta.mode,

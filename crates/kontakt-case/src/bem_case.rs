@@ -33,11 +33,11 @@
 //! force_n = 250.0            # or approach_mm
 //! ```
 
-use super::pimp_case::{
+use crate::pimp_case::{
     GapSetup, GeometrySpec, PimpCase, PimpReport, ReportMeta, gap_setup, hertz_echo, material,
 };
-use crate::error::{Error, Result};
-use crate::halfspace::{Bem, BemOptions, BemSolution, Control, GapMap};
+use kontakt::halfspace::{Bem, BemOptions, BemSolution, Control};
+use kontakt::{Error, Result};
 use serde::{Deserialize, Serialize};
 use std::path::Path;
 
@@ -88,7 +88,7 @@ pub struct SolverEcho {
     /// Largest remaining interpenetration on an unloaded cell \[mm\].
     pub max_overlap_mm: f64,
     /// `"free"` or `"periodic"`.
-    pub boundary: crate::halfspace::Boundary,
+    pub boundary: kontakt::halfspace::Boundary,
 }
 
 /// A solved `bem` case: the JSON record and the full solution (fields for CSV and maps).
@@ -133,7 +133,7 @@ pub fn run_bem_case(case: &PimpCase, base_dir: &Path) -> Result<BemOutcome> {
                 other => format!("bem.{other}"),
             })
         })?
-        .with_estimate(crate::pimp::zone_estimate(m1, m2)?);
+        .with_estimate(kontakt::pimp::zone_estimate(m1, m2)?);
     let map_load = |e: Error| {
         e.map_field(|f| match f {
             "force" => "load.force_n".into(),
@@ -158,7 +158,7 @@ pub fn run_bem_case(case: &PimpCase, base_dir: &Path) -> Result<BemOutcome> {
             boundary,
         } => {
             let path = base_dir.join(file);
-            let map = GapMap::read(&path, *spacing_mm, *values).map_err(|e| {
+            let map = crate::maps::read_gap_map(&path, *spacing_mm, *values).map_err(|e| {
                 e.map_field(|f| match f {
                     "spacing[0]" => "geometry.spacing_mm[0]".into(),
                     "spacing[1]" => "geometry.spacing_mm[1]".into(),
@@ -204,7 +204,7 @@ pub fn run_bem_case(case: &PimpCase, base_dir: &Path) -> Result<BemOutcome> {
                 separation,
                 rib_angle,
                 Some(k),
-                crate::halfspace::Boundary::Free,
+                kontakt::halfspace::Boundary::Free,
             )
         }
     };

@@ -28,9 +28,10 @@
 //! criterion = "von_mises"     # or "tresca"
 //! ```
 
-use crate::error::{Error, Result};
-use crate::hertz::subsurface::YieldCriterion;
+use kontakt::hertz::subsurface::YieldCriterion;
+use kontakt::{Error, Result};
 use serde::{Deserialize, Serialize};
+use std::path::Path;
 
 /// A complete case, as read from a TOML file.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -131,7 +132,7 @@ fn default_criterion() -> YieldCriterion {
     YieldCriterion::VonMises
 }
 
-pub use crate::load::LoadControl;
+pub use kontakt::load::LoadControl;
 
 impl LoadSpec {
     /// The single load entry, validated to be present and unique.
@@ -194,11 +195,11 @@ pub enum Case {
     /// `method = "hertz"` (or absent).
     Hertz(CaseFile),
     /// `method = "pimp"`.
-    Pimp(Box<super::pimp_case::PimpCase>),
+    Pimp(Box<crate::pimp_case::PimpCase>),
     /// `method = "bem"`: the PimP schema solved by the half-space solver.
-    Bem(Box<super::pimp_case::PimpCase>),
-    /// `method = "traction"`: traction curves ([`super::traction_case`]).
-    Traction(Box<super::traction_case::TractionCase>),
+    Bem(Box<crate::pimp_case::PimpCase>),
+    /// `method = "traction"`: traction curves ([`crate::traction_case`]).
+    Traction(Box<crate::traction_case::TractionCase>),
 }
 
 impl Case {
@@ -222,6 +223,62 @@ impl Case {
                 other,
                 "\"hertz\", \"pimp\", \"bem\" or \"traction\"",
             )),
+        }
+    }
+
+    /// The method's name, as the `method` key spells it.
+    pub fn method(&self) -> &'static str {
+        match self {
+            Case::Hertz(_) => "hertz",
+            Case::Pimp(_) => "pimp",
+            Case::Bem(_) => "bem",
+            Case::Traction(_) => "traction",
+        }
+    }
+
+    /// Run the case: the one dispatch that the CLI, the Python package and the sweeps
+    /// call. Relative file paths in the case (gap maps) are resolved against `base_dir`,
+    /// the case file's folder.
+    ///
+    /// # Errors
+    /// Invalid input named by its case-file key, geometry the method cannot solve, and
+    /// non-convergence; see each method's runner.
+    pub fn run(&self, base_dir: &Path) -> Result<Outcome> {
+        Ok(match self {
+            Case::Hertz(case) => Outcome::Hertz(Box::new(crate::report::run_case(case)?)),
+            Case::Pimp(case) => Outcome::Pimp(Box::new(crate::pimp_case::run_pimp_case(case)?)),
+            Case::Bem(case) => {
+                Outcome::Bem(Box::new(crate::bem_case::run_bem_case(case, base_dir)?))
+            }
+            Case::Traction(case) => {
+                Outcome::Traction(Box::new(crate::traction_case::run_traction_case(case)?))
+            }
+        })
+    }
+}
+
+/// What running a [`Case`] gives: the JSON report and, for the field methods, the full
+/// solution (pressure per cell, and for the half-space solver displacement and gap).
+/// Serializes as the method's report.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Outcome {
+    /// A Hertz report.
+    Hertz(Box<crate::report::ContactReport>),
+    /// A PimP report and solution.
+    Pimp(Box<crate::pimp_case::PimpOutcome>),
+    /// A half-space report and solution.
+    Bem(Box<crate::bem_case::BemOutcome>),
+    /// Traction curves.
+    Traction(Box<crate::traction_case::TractionReport>),
+}
+
+impl Serialize for Outcome {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        match self {
+            Outcome::Hertz(r) => r.serialize(s),
+            Outcome::Pimp(o) => o.report.serialize(s),
+            Outcome::Bem(o) => o.report.serialize(s),
+            Outcome::Traction(r) => r.serialize(s),
         }
     }
 }

@@ -1,6 +1,6 @@
 //! Traction-curve cases (`method = "traction"`, `schema_version = 1`) and their report:
 //! the normalized tangential force `F_T/(mu F_N)` against the longitudinal creepage (the
-//! slide-to-roll ratio) for several models of [`crate::tangential`].
+//! slide-to-roll ratio) for several models of [`kontakt::tangential`].
 //!
 //! ```toml
 //! name = "twin-disc, crowned disc on cylindrical disc"
@@ -47,20 +47,20 @@
 //! linear theory; it exceeds 1 beyond its saturation creepage); `kontakt traction --plot`
 //! draws it up to where it reaches 1.
 
-use super::case::parse_toml;
-use super::pimp_case::{MaterialSpec, material};
-use crate::error::{Error, Result};
-use crate::hertz::line::LineContact;
-use crate::hertz::{HertzPointContact, PointGeometry};
-use crate::material::effective_modulus;
-use crate::tangential::{
+use crate::case::parse_toml;
+use crate::pimp_case::{MaterialSpec, material};
+use kontakt::hertz::line::LineContact;
+use kontakt::hertz::{HertzPointContact, PointGeometry};
+use kontakt::material::effective_modulus;
+use kontakt::tangential::{
     Carter, ContactEllipse, CreepCoefficients, EllipseAxis, Fastsim, FastsimOptions, KalkerLinear,
     KalkerMaterial, PressureShape, TractionCurve,
 };
-use crate::traction::{
+use kontakt::traction::{
     AsperityContactLaw, AsperityTraction, AsperityTractionParams, LoadSharing, NominalContact,
     SlipReference,
 };
+use kontakt::{Error, Result};
 use serde::{Deserialize, Serialize};
 
 /// A traction-curve case, as read from TOML.
@@ -95,7 +95,7 @@ pub struct TractionCase {
     pub asperity: Option<AsperitySpec>,
 }
 
-/// `[asperity]`: the rough-surface model of [`crate::traction`] on the case's nominal
+/// `[asperity]`: the rough-surface model of [`kontakt::traction`] on the case's nominal
 /// contact (circular or line), with the case's load, friction and (identical) materials.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -160,7 +160,7 @@ impl TractionModel {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
 pub enum TractionGeometry {
-    /// Two bodies by their principal radii: the Hertz ellipse of [`crate::hertz`]. The
+    /// Two bodies by their principal radii: the Hertz ellipse of [`kontakt::hertz`]. The
     /// rolling direction is body 1's first principal direction; it must lie along an axis
     /// of the contact ellipse.
     Hertz {
@@ -361,7 +361,7 @@ pub struct TractionReport {
 ///
 /// # Example
 /// ```
-/// use kontakt::io::traction_case::{TractionCase, run_traction_case};
+/// use kontakt_case::traction_case::{TractionCase, run_traction_case};
 /// let case = TractionCase::from_toml_str(r#"
 ///     method = "traction"
 ///     [geometry]
@@ -415,7 +415,7 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
             other => other.into(),
         })
     };
-    crate::tangential::check_friction(mu).map_err(map_common)?;
+    kontakt::tangential::check_friction(mu).map_err(map_common)?;
     let creepage = case.creepage.values()?;
     let kalker_material = KalkerMaterial::new(&m1, &m2).map_err(map_common)?;
     let e_star = effective_modulus(&m1, &m2);
@@ -491,7 +491,7 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
                     _ => "geometry.radii_mm".into(),
                 })
             })?;
-            let positive_force = crate::error::positive_as(
+            let positive_force = kontakt::error::positive_as(
                 "normal_force",
                 case.load.force_n,
                 "a finite force > 0 N",
@@ -559,8 +559,8 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
         (None, None) => None,
     };
     Ok(TractionReport {
-        kontakt_version: crate::VERSION,
-        schema_version: super::report::SCHEMA_VERSION,
+        kontakt_version: kontakt::VERSION,
+        schema_version: crate::report::SCHEMA_VERSION,
         name: case.name.clone(),
         method: "traction",
         geometry: label,
@@ -582,7 +582,7 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
     })
 }
 
-/// The asperity model of [`crate::traction`] as a [`TractionCurve`]: its traction ratio,
+/// The asperity model of [`kontakt::traction`] as a [`TractionCurve`]: its traction ratio,
 /// extended as an odd function to negative creepage.
 struct AsperityCurve(AsperityTraction);
 
@@ -592,7 +592,7 @@ impl TractionCurve for AsperityCurve {
     }
 
     fn normalized_force(&self, creepage: f64) -> Result<f64> {
-        crate::tangential::check_creepage(creepage)?;
+        kontakt::tangential::check_creepage(creepage)?;
         Ok(creepage.signum() * self.0.traction_ratio(creepage.abs())?)
     }
 }
@@ -602,8 +602,8 @@ fn asperity_model(
     case: &TractionCase,
     carter: &Carter,
     ellipse: Option<ContactEllipse>,
-    m1: crate::material::ElasticMaterial,
-    m2: crate::material::ElasticMaterial,
+    m1: kontakt::material::ElasticMaterial,
+    m2: kontakt::material::ElasticMaterial,
 ) -> Result<AsperityCurve> {
     let spec = case.asperity.ok_or_else(|| {
         Error::invalid(
@@ -624,7 +624,7 @@ fn asperity_model(
         ));
     }
     let circular = |e: &ContactEllipse| {
-        ((e.a() - e.b()) / e.a()).abs() <= crate::traction::asperity::CIRCULARITY_TOLERANCE
+        ((e.a() - e.b()) / e.a()).abs() <= kontakt::traction::asperity::CIRCULARITY_TOLERANCE
     };
     let nominal = match (&case.geometry, ellipse) {
         (

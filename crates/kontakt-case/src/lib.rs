@@ -1,0 +1,32 @@
+//! # kontakt-case — case files, the runner and the reports of kontakt
+//!
+//! The layer between the physics library [`kontakt`] and its front ends (the `kontakt`
+//! command, the Python package, parameter sweeps). Data flows one way:
+//!
+//! ```text
+//! TOML case file ──parse──▶ Case ──Case::run──▶ kontakt (physics) ──▶ Outcome ──▶ JSON report
+//! ```
+//!
+//! - [`Case`]: every schema (`method = "hertz" | "pimp" | "bem" | "traction"`), parsed
+//!   from TOML with unknown keys refused; [`Case::run`] is the one dispatch that every
+//!   front end calls.
+//! - [`Outcome`]: the report (stable, unit-suffixed JSON keys, `schema_version`) plus,
+//!   for the field methods, the full solution (pressure, displacement, gap per cell).
+//! - [`maps`]: gap and height maps from CSV or NumPy `.npy` files.
+//!
+//! Errors name the case-file key (`load.force_n`, `pimp.cells`, `body1.nu`), the value
+//! and the valid range. Units: mm, N, MPa throughout. The schema is documented in
+//! `docs/case-schema.md` and shown by the files in `examples/`.
+
+pub mod bem_case;
+pub mod case;
+pub mod maps;
+pub mod pimp_case;
+pub mod report;
+pub mod traction_case;
+
+pub use bem_case::{BemOutcome, run_bem_case};
+pub use case::{Case, CaseFile, Outcome};
+pub use pimp_case::{PimpCase, PimpOutcome, PimpReport, run_pimp_case};
+pub use report::{ContactReport, run_case};
+pub use traction_case::{TractionCase, TractionReport, run_traction_case};
