@@ -326,8 +326,8 @@ def main(argv=None) -> int:
                     msg = res["error"]
                 print(f"N={n:5d} round {rnd + 1}/{args.rounds} {label(entry):22s} {msg}",
                       file=sys.stderr, flush=True)
-                runs.append({"n": n, "round": rnd, "entry": entry, "cmd": recorded(cmd), "load": load,
-                             "result": res})
+                runs.append({"n": n, "round": rnd, "entry": entry, "cmd": recorded(cmd),
+                             "load": load, "result": res})
 
     rows = summarise(runs, entries, sizes)
     pb0 = Problem(radius=args.radius, force=args.force, domain=args.domain)
