@@ -23,7 +23,8 @@ pub struct ElasticMaterial {
 }
 
 impl ElasticMaterial {
-    /// Bearing steel: E = 210 000 MPa, nu = 0.3 (the PimP seeds' material).
+    /// Bearing steel: E = 210 000 MPa, nu = 0.3 (the material of the PimP papers, Wirsching et al.
+    /// 2019, 2020).
     pub const STEEL: ElasticMaterial = ElasticMaterial {
         youngs_modulus: crate::units::STEEL_YOUNGS_MODULUS,
         poisson_ratio: crate::units::STEEL_POISSON_RATIO,
