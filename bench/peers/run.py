@@ -123,6 +123,22 @@ def peer_command(code: str, pb: Problem, tol: float, repeat: int):
             "--force", repr(pb.force), "--domain", repr(pb.domain)]
 
 
+def recorded(cmd) -> list:
+    """The command as results.json records it: paths inside the repository relative to its
+    root, any other absolute path (a Python outside the repository) by its file name, so the
+    committed results name no machine's directories."""
+    out = []
+    for arg in cmd:
+        p = Path(arg)
+        if p.is_absolute():
+            try:
+                arg = p.relative_to(ROOT).as_posix()
+            except ValueError:
+                arg = p.name
+        out.append(arg)
+    return out
+
+
 def run_one(cmd, timeout: float, env: dict) -> dict:
     try:
         done = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout, env=env)
@@ -310,8 +326,8 @@ def main(argv=None) -> int:
                     msg = res["error"]
                 print(f"N={n:5d} round {rnd + 1}/{args.rounds} {label(entry):22s} {msg}",
                       file=sys.stderr, flush=True)
-                runs.append({"n": n, "round": rnd, "entry": entry, "cmd": cmd, "load": load,
-                             "result": res})
+                runs.append({"n": n, "round": rnd, "entry": entry, "cmd": recorded(cmd),
+                             "load": load, "result": res})
 
     rows = summarise(runs, entries, sizes)
     pb0 = Problem(radius=args.radius, force=args.force, domain=args.domain)

@@ -5,7 +5,7 @@
 #
 #   bash bench/peers/setup.sh              # create or update
 #   FORCE=1 bash bench/peers/setup.sh      # reinstall the pinned set
-#   VENV=/tmp/v bash bench/peers/setup.sh  # another location
+#   VENV=$HOME/peers-venv bash bench/peers/setup.sh  # another location
 set -euo pipefail
 
 HERE="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"

@@ -23,11 +23,11 @@ pub enum Command {
     Hertz(HertzArgs),
     /// Solve a case described in a TOML file (schema: docs/case-schema.md).
     Solve(SolveArgs),
-    /// Run the roller-end/rib study (seed 000 Table 1, 100-400 N) and write a report
+    /// Run the roller-end/rib study (Wirsching et al. (2020) Table 1, 100-400 N) and write a report
     /// (Markdown, pressure maps, CSV) into a folder.
     Demo(DemoArgs),
     /// Compare PimP and Hertz with the coupled half-space solver for the roller-end/rib
-    /// pairings (seed 000 Figures 7-10) and write a report (Markdown, plots, CSV).
+    /// pairings (Wirsching et al. (2020) Figures 7-10) and write a report (Markdown, plots, CSV).
     Validate(ValidateArgs),
     /// Traction curves F_T/(mu F_N) against the creepage (slide-to-roll ratio): Carter,
     /// Kalker linear, FASTSIM, from a TOML case (method = "traction"; docs/case-schema.md).

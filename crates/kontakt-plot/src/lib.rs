@@ -44,6 +44,8 @@
 //! # Ok::<(), kontakt_plot::PlotError>(())
 //! ```
 
+#![forbid(unsafe_code)]
+
 mod colormap;
 mod contour;
 mod field;

@@ -1,5 +1,5 @@
-//! PimP (both modes) against exact Hertz over seed 001's Table 1 ranges (spheres of
-//! 10-1000 mm on a plane, spheres of 10-100 mm on a torus of radii 20 and 30 mm, steel,
+//! PimP (both modes) against exact Hertz over the Table 1 ranges of Wirsching et al. (2019)
+//! (spheres of 10-1000 mm on a plane, spheres of 10-100 mm on a torus of radii 20 and 30 mm, steel,
 //! 100-500 N) and for elliptical contacts a/b = 1..10: the tables of docs/VALIDATION.md.
 //!
 //! Run: `cargo run --release -p kontakt --example pimp_vs_hertz`

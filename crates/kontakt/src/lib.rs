@@ -71,8 +71,8 @@
 //! | [`pimp`] | PimP: substitute geometry, Winkler bedding (published / corrected), force equilibrium, zone shape | done |
 //! | [`halfspace`] | coupled elastic half-space: Love coefficients, FFT operator (free / periodic), Polonsky-Keer solver with warm start, any gap or gap map, adaptive domain | done |
 //! | [`tangential`] | Cattaneo-Mindlin partial slip and Mindlin-Deresiewicz loading history, Carter's creep curve, Kalker's creep coefficients and linear theory, FASTSIM; traction curves | done |
-//! | [`traction`] | asperity-based traction curves: periodic spherical asperities on a rough line or circular Hertz contact, Mindlin partial slip per asperity (thesis seed 002 §3.1.2.2) | done |
-//! | [`bearing`] | roller end face / rib pair of a tapered roller bearing (seed 000 Table 1) | roller/rib done; kinematics to come |
+//! | [`traction`] | asperity-based traction curves: periodic spherical asperities on a rough line or circular Hertz contact, Mindlin partial slip per asperity (the thesis "Study of the traction curves", §3.1.2.2) | done |
+//! | [`bearing`] | roller end face / rib pair of a tapered roller bearing (Wirsching et al. (2020) Table 1) | roller/rib done; kinematics to come |
 //!
 //! Case files (TOML), the runner `Case::run` and the JSON reports live in the
 //! `kontakt-case` crate, so this crate holds physics only.

@@ -23,7 +23,8 @@ pub struct ElasticMaterial {
 }
 
 impl ElasticMaterial {
-    /// Bearing steel: E = 210 000 MPa, nu = 0.3 (the PimP seeds' material).
+    /// Bearing steel: E = 210 000 MPa, nu = 0.3 (the material of the PimP papers, Wirsching et al.
+    /// 2019, 2020).
     pub const STEEL: ElasticMaterial = ElasticMaterial {
         youngs_modulus: crate::units::STEEL_YOUNGS_MODULUS,
         poisson_ratio: crate::units::STEEL_POISSON_RATIO,
@@ -103,7 +104,9 @@ impl ElasticMaterial {
 
 /// Contact (composite) modulus $E^*$ of two bodies \[MPa\]:
 ///
-/// $$\frac{1}{E^*} = \frac{1-\nu_1^2}{E_1} + \frac{1-\nu_2^2}{E_2}$$
+/// ```text
+/// 1/E* = (1 - ν₁²)/E₁ + (1 - ν₂²)/E₂
+/// ```
 ///
 /// # Example
 /// Steel on steel: E* = 210000 / (2 · 0.91) = 115 384.6 MPa.
@@ -121,7 +124,9 @@ pub fn effective_modulus(body1: &ElasticMaterial, body2: &ElasticMaterial) -> Me
 }
 
 /// Effective shear compliance used by Mindlin and Kalker:
-/// $$\frac{1}{G^*} = \frac{2-\nu_1}{G_1} + \frac{2-\nu_2}{G_2}$$ \[MPa\]
+/// ```text
+/// 1/G* = (2 - ν₁)/G₁ + (2 - ν₂)/G₂      [MPa]
+/// ```
 ///
 /// # References
 /// Johnson, *Contact Mechanics* (1985), eq. (7.41).
@@ -132,7 +137,9 @@ pub fn effective_shear_modulus(body1: &ElasticMaterial, body2: &ElasticMaterial)
 
 /// Dundurs' mismatch parameter $\beta$ [-]:
 ///
-/// $$\beta = \frac{1}{2}\,\frac{(1-2\nu_1)/G_1 - (1-2\nu_2)/G_2}{(1-\nu_1)/G_1 + (1-\nu_2)/G_2}$$
+/// ```text
+/// β = ½ · [(1 - 2ν₁)/G₁ - (1 - 2ν₂)/G₂] / [(1 - ν₁)/G₁ + (1 - ν₂)/G₂]
+/// ```
 ///
 /// Zero for identical materials and for an incompressible body against a rigid one;
 /// antisymmetric under swapping the bodies; |beta| <= 0.5.
@@ -159,7 +166,9 @@ pub fn dundurs_beta(body1: &ElasticMaterial, body2: &ElasticMaterial) -> f64 {
 }
 
 /// Dundurs' first parameter $\alpha$ [-], the plane-strain modulus mismatch:
-/// $$\alpha = \frac{E_1/(1-\nu_1^2) - E_2/(1-\nu_2^2)}{E_1/(1-\nu_1^2) + E_2/(1-\nu_2^2)}$$
+/// ```text
+/// α = [E₁/(1 - ν₁²) - E₂/(1 - ν₂²)] / [E₁/(1 - ν₁²) + E₂/(1 - ν₂²)]
+/// ```
 ///
 /// # References
 /// Dundurs (1969); Johnson, *Contact Mechanics* (1985), eq. (5.3).

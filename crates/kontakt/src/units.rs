@@ -39,7 +39,8 @@ pub type NewtonPerMillimetre = f64;
 /// Stiffness in newtons per millimetre.
 pub type NewtonPerMillimetreStiffness = f64;
 
-/// Young's modulus of bearing steel (100Cr6 / AISI 52100), MPa, as used in the PimP seeds.
+/// Young's modulus of bearing steel (100Cr6 / AISI 52100), MPa, as used in the PimP papers
+/// (Wirsching et al. 2019, 2020).
 pub const STEEL_YOUNGS_MODULUS: Megapascal = 210_000.0;
 /// Poisson's ratio of bearing steel.
 pub const STEEL_POISSON_RATIO: f64 = 0.3;

@@ -1,7 +1,7 @@
-//! The thesis' asperity-based traction model (seed 002, §3.1.2.2): its printed tables
+//! The thesis' asperity-based traction model (§3.1.2.2): its printed tables
 //! recomputed from its input parameters, limits, scaling laws and input validation.
 //!
-//! Source: seed 002 (`/work/shared/seeds/002_5d45893ea2caa1f0.txt`), Annex A Figure AP 0-6
+//! Source: the master thesis "Study of the traction curves", Annex A Figure AP 0-6
 //! and Table AP 0.5 (inputs), Tables 3.1-3.7 and Annex B Tables AP 0.1-0.4 (outputs).
 //! The thesis tabulates the slide-to-roll ratio in percent; the library takes a fraction,
 //! so the tests divide by 100. The thesis measures `x` from the leading edge at `-a`;

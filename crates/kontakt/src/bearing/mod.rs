@@ -1,5 +1,5 @@
 //! Bearing level: the roller end face against the rib of a tapered roller bearing, built
-//! from the bearing's parameters (seed 000 §2.1, Figure 2b and Table 1).
+//! from the bearing's parameters (Wirsching et al. (2020) §2.1, Figure 2b and Table 1).
 //!
 //! Units: mm, N, MPa; angles in degrees at this interface (the case-file convention).
 //! The construction and the reading of Table 1 are in `docs/bearing.md`.

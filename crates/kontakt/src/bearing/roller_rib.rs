@@ -1,5 +1,5 @@
-//! The roller end face against the ring rib of a tapered roller bearing (seed 000 §2.1,
-//! Figure 2b, Table 1).
+//! The roller end face against the ring rib of a tapered roller bearing (Wirsching et al. (2020)
+//! §2.1, Figure 2b, Table 1).
 //!
 //! Everything is built in the axial section plane (world `X`–`Z`, ring axis `Z`, `X`
 //! radial) and then revolved: the rib is a cone or torus around the ring axis, the roller
@@ -121,15 +121,15 @@ fn default_contact_height() -> Millimetre {
     CONTACT_HEIGHT
 }
 
-/// Contact height h \[mm\] that reproduces the rib angles of seed 000 Table 1 with the
-/// roller half-angle of 3° (docs/bearing.md §2).
+/// Contact height h \[mm\] that reproduces the rib angles of Wirsching et al. (2020) Table 1 with
+/// the roller half-angle of 3° (docs/bearing.md §2).
 pub const CONTACT_HEIGHT: Millimetre = 2.75;
 
 /// Forces of the paper's study \[N\]: 100 to 400 in steps of 50.
 pub const STUDY_FORCES: [f64; 7] = [100.0, 150.0, 200.0, 250.0, 300.0, 350.0, 400.0];
 
-/// The eight built-in pairings of seed 000 Table 1: (name, face, rib, rib angle printed in
-/// the table \[deg\]).
+/// The eight built-in pairings of Wirsching et al. (2020) Table 1: (name, face, rib, rib angle
+/// printed in the table \[deg\]).
 pub const TABLE1: [(&str, FaceShape, RibShape, f64); 8] = [
     (
         "sphere-cone-29",

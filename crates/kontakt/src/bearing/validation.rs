@@ -1,5 +1,5 @@
-//! The PimP-versus-reference study of seed 000 (Figures 7-10), with the coupled elastic
-//! half-space solver in the place of FEM.
+//! The PimP-versus-reference study of Wirsching et al. (2020) (Figures 7-10), with the coupled
+//! elastic half-space solver in the place of FEM.
 //!
 //! For a roller-end/rib pairing and a list of forces \[N\], [`validate_pairing`] solves
 //! the same substitute geometry with the half-space solver (the reference), with PimP in
@@ -57,7 +57,7 @@ pub struct ValidationRow {
     pub force_n: f64,
     /// The coupled half-space solution (the reference).
     pub bem: Headline,
-    /// PimP with the paper's bedding (seed 000 eq. 7).
+    /// PimP with the paper's bedding (Wirsching et al. (2020) eq. 7).
     pub pimp_published: Headline,
     /// PimP with the corrected bedding (docs/pimp.md).
     pub pimp_corrected: Headline,
@@ -69,7 +69,7 @@ pub struct ValidationRow {
 
 impl ValidationRow {
     /// `method / reference - 1` of the maximum pressure and the area, for PimP published,
-    /// PimP corrected and Hertz (seed 000 Figures 7-10 b and d).
+    /// PimP corrected and Hertz (Wirsching et al. (2020) Figures 7-10 b and d).
     pub fn deviations(&self) -> [[f64; 2]; 3] {
         let rel = |h: &Headline| {
             [
@@ -86,7 +86,7 @@ impl ValidationRow {
 }
 
 /// The contact shapes at one load on the half-space solver's grid (PimP's pressures
-/// sampled at its cell centres), for overlays (seed 000 Figures 7-10 c).
+/// sampled at its cell centres), for overlays (Wirsching et al. (2020) Figures 7-10 c).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ShapeOverlay {
     /// Normal force \[N\].
@@ -104,7 +104,7 @@ pub struct ShapeOverlay {
 /// The study of one pairing.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct PairingStudy {
-    /// The built-in pairing's name (seed 000 Table 1).
+    /// The built-in pairing's name (Wirsching et al. (2020) Table 1).
     pub pairing: String,
     /// Rib angle \[deg\].
     pub rib_angle_deg: f64,

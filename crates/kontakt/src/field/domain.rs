@@ -13,7 +13,17 @@
 
 use super::ContactZone;
 use crate::error::{Error, Result};
+use crate::gap::GapSource;
 use crate::geometry::Grid2;
+use crate::load::LoadControl;
+
+/// An estimate of the contact zone's bounding box `[[x0, x1], [y0, y1]]` \[mm\] in the
+/// principal frame of a gap, for a load: where an adaptive domain starts. The
+/// half-space solver takes one as a parameter (`halfspace::Bem::with_estimate`; PimP's
+/// is `pimp::zone_estimate`), so the reference solver does not depend on the method
+/// it checks.
+pub type ZoneEstimate =
+    std::sync::Arc<dyn Fn(&dyn GapSource, LoadControl) -> Result<[[f64; 2]; 2]> + Send + Sync>;
 
 /// Fewest loaded cells across the contact zone, in each direction, for a result to be
 /// trusted; a coarser zone is an error.

@@ -1,5 +1,5 @@
-//! The contact point of two placed surfaces (PimP step 1, seed 000 §2.2): the pair of
-//! surface points with anti-parallel outward normals whose connecting vector lies along the
+//! The contact point of two placed surfaces (PimP step 1, Wirsching et al. (2020) §2.2): the pair
+//! of surface points with anti-parallel outward normals whose connecting vector lies along the
 //! common normal — the closest points of two separate bodies, or the deepest point of an
 //! interpenetration.
 //!
@@ -11,10 +11,10 @@
 //! conditions. The minimisation is a Riemannian Newton iteration on $S_a$: in the tangent
 //! plane $(\mathbf e_1, \mathbf e_2)$ of $S_a$ the gradient is $g_i = \mathbf n_b\cdot\mathbf
 //! e_i$ and the Hessian
-//! $$ \mathbf A = \mathbf E^\mathsf T\big(\nabla^2 d_b - (\mathbf n_b\cdot\mathbf n_a)\,\mathbf K_a\big)\mathbf E, $$
-//! with $\mathbf K_a$ the shape operator of $S_a$; at the solution ($\mathbf n_b = -\mathbf
-//! n_a$) it is the sum of the two curvature tensors, i.e. the relative curvature, positive
-//! definite for a Hertzian contact. Steps are Levenberg–Marquardt damped inside a trust
+//! $$ \mathbf A = \mathbf E^\mathsf T\big(\nabla^2 d_b - (\mathbf n_b\cdot\mathbf n_a)\,\mathbf
+//! K_a\big)\mathbf E, $$ with $\mathbf K_a$ the shape operator of $S_a$; at the solution ($\mathbf
+//! n_b = -\mathbf n_a$) it is the sum of the two curvature tensors, i.e. the relative curvature,
+//! positive definite for a Hertzian contact. Steps are Levenberg–Marquardt damped inside a trust
 //! region and pulled back onto $S_a$ by its closest-point map; they must not increase
 //! $\phi$. Starts: the guess (if given and it converges, it wins), otherwise the local
 //! minima of $\phi$ on a coarse grid of $S_a$'s parameters; the lowest converged minimum

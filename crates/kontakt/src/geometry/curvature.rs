@@ -6,7 +6,7 @@
 //! eigenvalues are $2A \le 2B$ and it can be written $h = A x'^2 + B y'^2$
 //! (Johnson 1982, eqs 1 and 50). We compute $A$, $B$ and the principal direction from the
 //! tensor sum directly; this is algebraically identical to Johnson's eqs (51a/b) (note
-//! that the extracted eq. 51b in seed 003 shows sums of curvatures in the first two squared
+//! that the extracted eq. 51b in Johnson (1982) shows sums of curvatures in the first two squared
 //! terms; they must be *differences*, as in Johnson's *Contact Mechanics* eq. 3.3 and in the
 //! thesis' eq. 2.12, which in turn prints `cos(phi)` for `cos(2 phi)`; see
 //! `docs/hertz.md`).

@@ -4,10 +4,11 @@
 //!
 //! - [`curvature`]: relative curvature of two bodies from their principal radii.
 //! - [`grid`]: uniform sampling grids in the contact plane.
-//! - [`surface`]: plane, sphere, cone, torus (seed 000 eq. 1) and surfaces of revolution
+//! - [`surface`]: plane, sphere, cone, torus (Wirsching et al. (2020) eq. 1) and surfaces of
+//!   revolution
 //!   in canonical local frames; signed distance, normals, principal curvatures, closest
 //!   points and robust ray casting along $\mathbf s(t) = \mathbf q + t\,\mathbf n$
-//!   (seed 000 eq. 2); [`PlacedSurface`] puts a surface in the world with a pose.
+//!   (Wirsching et al. (2020) eq. 2); [`PlacedSurface`] puts a surface in the world with a pose.
 //! - [`contact_point`]: the points of two placed surfaces with anti-parallel normals
 //!   (closest points, or the deepest point of an interpenetration), step 1 of PimP.
 

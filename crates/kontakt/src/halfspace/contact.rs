@@ -11,12 +11,7 @@ use crate::material::{ElasticMaterial, effective_modulus};
 use crate::units::{Millimetre, Newton};
 use serde::{Deserialize, Serialize};
 
-/// An estimate of the contact zone's bounding box `[[x0, x1], [y0, y1]]` \[mm\] in the
-/// principal frame of a gap, for a load: where the adaptive domain starts. [`Bem`] takes
-/// it as a parameter (PimP's corrected bedding is the usual one, see
-/// `crate::bearing`), so the reference solver does not depend on the method it checks.
-pub type ZoneEstimate =
-    std::sync::Arc<dyn Fn(&dyn GapSource, Control) -> Result<[[f64; 2]; 2]> + Send + Sync>;
+pub use crate::field::domain::ZoneEstimate;
 
 /// Options of [`Bem`].
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]

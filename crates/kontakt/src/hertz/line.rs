@@ -4,14 +4,17 @@
 //! # Formulas
 //! With $1/R = 1/R_1 + 1/R_2$ (convex > 0, concave < 0) and the line load $P'$ [N/mm]:
 //!
-//! $$b = \sqrt{\frac{4P'R}{\pi E^*}},\qquad p_0 = \frac{2P'}{\pi b} = \sqrt{\frac{P'E^*}{\pi R}},
-//! \qquad p(x) = p_0\sqrt{1 - x^2/b^2}.$$
+//! ```text
+//! b = √(4 P' R / (π E*)),   p₀ = 2 P' / (π b) = √(P' E* / (π R)),   p(x) = p₀ √(1 - x²/b²).
+//! ```
 //!
-//! (Johnson 1982 eqs 9-11; thesis eqs 2.3-2.6, which call the half-width $a$.) The approach
+//! (Johnson 1982 eqs 9-11; thesis eqs 2.3-2.6, which call the half-width `a`.) The approach
 //! of a two-dimensional contact is not defined without a datum (eq. 22); for a contact of
 //! finite length $L = 2l$ Lundberg's formula (eq. 25) gives the approach at the centre:
 //!
-//! $$\delta = \frac{P}{\pi l E^*}\left[\ln\frac{l}{b} + 1.8864\right].$$
+//! ```text
+//! δ = P / (π l E*) · [ln(l/b) + 1.8864].
+//! ```
 //!
 //! # Assumptions
 //! Plane strain, elastic half-spaces, frictionless; Lundberg: uniform load along a contact

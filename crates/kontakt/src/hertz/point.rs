@@ -5,9 +5,10 @@
 //! With $k' = b/a \le 1$, $y = k'^2$ and Carlson's $R_F = R_F(0,y,1) = K(e)$,
 //! $R_D = R_D(0,y,1)$, Johnson's (1982) eqs (56a-c), (57) become
 //!
-//! $$\frac{B}{A} = \frac{3R_F - R_D}{y\,R_D},\qquad
-//! a^3 = \frac{F\,R_D}{2\pi E^* A},\qquad b = k'a,\qquad
-//! p_0 = \frac{3F}{2\pi ab},\qquad \delta = \frac{3F R_F}{2\pi a E^*}.$$
+//! ```text
+//! B/A = (3 R_F - R_D) / (y R_D),   a³ = F R_D / (2π E* A),   b = k' a,
+//! p₀ = 3F / (2π a b),   δ = 3 F R_F / (2π a E*).
+//! ```
 //!
 //! The shape $k'$ depends only on the geometry, so [`HertzPointContact::new`] solves it once
 //! and every later call is a cube root: plan once, solve many. The derivation is written

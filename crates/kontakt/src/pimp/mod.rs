@@ -350,7 +350,7 @@ fn approach_of(control: LoadControl) -> Millimetre {
 }
 
 /// PimP's estimate of the contact zone, as the half-space solver's adaptive domain takes
-/// it ([`crate::halfspace::Bem::with_estimate`]): the bounding box
+/// it (`halfspace::Bem::with_estimate`): the bounding box
 /// `[[x0, x1], [y0, y1]]` \[mm\] of the corrected-mode zone on a 48 × 48 grid, in the
 /// principal frame of the gap. A PimP solve costs a small fraction of a half-space solve
 /// and places the domain on curved, off-centre zones that a Hertz ellipse misses.
@@ -360,7 +360,7 @@ fn approach_of(control: LoadControl) -> Millimetre {
 pub fn zone_estimate(
     body1: ElasticMaterial,
     body2: ElasticMaterial,
-) -> Result<crate::halfspace::ZoneEstimate> {
+) -> Result<domain::ZoneEstimate> {
     let pimp = Pimp::new(
         body1,
         body2,

@@ -4,24 +4,27 @@
 //! # Formulas
 //! Hertz strip of half-width `a`, maximum pressure `p0`, line load `P' = pi a p0/2`. The
 //! adhesion zone is a strip of width `2c` at the *leading* edge, the slip zone is at the
-//! rear (seed 003 Fig. 8d). With `d = a - c` the traction on body 1 is
+//! rear (Johnson (1982) Fig. 8d). With `d = a - c` the traction on body 1 is
 //!
-//! $$q(x) = -\operatorname{sgn}(\xi)\,\mu p_0\Big[\sqrt{1 - x^2/a^2} -
-//!   \tfrac{c}{a}\sqrt{1 - (x-d)^2/c^2}\,\Big]$$
+//! ```text
+//! q(x) = -sgn(ξ) μ p₀ [√(1 - x²/a²) - (c/a) √(1 - (x - d)²/c²)]
+//! ```
 //!
 //! (the second term only in the adhesion zone `a - 2c <= x <= a`). The adhesion condition
 //! (equal tangential strains of the two surfaces) gives `|xi| = 2 mu p0 d/(a E*)`, so with
 //! the saturation creepage
 //!
-//! $$\xi_s = \frac{2\mu p_0}{E^*}\quad\Big(= \frac{\mu a}{R}\text{ for cylinders,
-//! since } p_0 = \frac{aE^*}{2R}\Big)$$
+//! ```text
+//! ξ_s = 2 μ p₀ / E*     (= μ a / R for cylinders, since p₀ = a E* / (2R))
+//! ```
 //!
 //! the stick width is `c/a = 1 - |xi|/xi_s` and the force is
 //!
-//! $$\frac{F_T}{\mu P'} = 1 - \Big(1 - \frac{|\xi|}{\xi_s}\Big)^2\quad(|\xi| < \xi_s),
-//! \qquad 1 \text{ beyond}$$
+//! ```text
+//! F_T / (μ P') = 1 - (1 - |ξ|/ξ_s)²   (|ξ| < ξ_s),   1 beyond
+//! ```
 //!
-//! (seed 002 eq. 3.8 with its normalized creepage `xi/xi_s`; Johnson 1985 §8.3
+//! (the thesis' eq. 3.8 with its normalized creepage `xi/xi_s`; Johnson 1985 §8.3
 //! in the form `xi = (mu a/R)(1 - sqrt(1 - Q/(mu P)))`). The initial slope is
 //! `dF_T/dxi = 2 mu P'/xi_s = pi a E*/2` per unit length. The derivation is in
 //! `docs/tangential.md`.
@@ -35,8 +38,8 @@
 //! # References
 //! - Carter (1926), "On the action of a locomotive driving wheel", Proc. R. Soc. A 112,
 //!   151-157. doi:10.1098/rspa.1926.0100
-//! - Johnson (1982), seed 003, §6(c) and Fig. 10.
-//! - Thesis "Study of the traction curves", seed 002, eq. (3.8).
+//! - Johnson (1982), §6(c) and Fig. 10.
+//! - Thesis "Study of the traction curves", eq. (3.8).
 //! - Johnson, *Contact Mechanics* (1985), §8.3.
 
 use super::{ContactEllipse, TractionCurve, check_creepage, check_friction};

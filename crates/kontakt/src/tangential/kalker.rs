@@ -1,20 +1,20 @@
 //! Kalker's linear theory of rolling contact: the creepage coefficients `C11`, `C22`,
 //! `C23` of an elliptical contact (Kalker 1990, Table E.3) and the creep forces
 //!
-//! $$F_x = -G c^2 C_{11}\,\xi_x,\qquad F_y = -G c^2\,(C_{22}\,\xi_y + c\,C_{23}\,\varphi),
-//! \qquad c = \sqrt{ab}.$$
+//! ```text
+//! F_x = -G c² C₁₁ ξ_x,   F_y = -G c² (C₂₂ ξ_y + c C₂₃ φ),   c = √(a b).
+//! ```
 //!
 //! # The table and its interpolation
-//! [`creep_coefficients`] reads the table of `/work/shared/reference/kalker_creep_coefficients.md`
-//! (Kalker 1990, Table E.3; the same values as Kalker 1967 and Johnson 1985, Table 8.1):
+//! [`creep_coefficients`] reads the table of Kalker (1990)
+//! (Table E.3; the same values as Kalker 1967 and Johnson 1985, Table 8.1):
 //! two halves, one for `g = a/b <= 1` and one for `g = b/a <= 1`, rows `g = 0.1 ... 1.0`,
-//! columns `nu = 0, 1/4, 1/2`. The rule, as in that file:
+//! columns `nu = 0, 1/4, 1/2`. The rule:
 //!
 //! - linear in `g` between rows;
 //! - in `nu`, a parabola through the three columns taken in `1/C`:
-//!   $1/C(\nu) = 8(\nu-\tfrac14)(\nu-\tfrac12)/C(0) - 16\nu(\nu-\tfrac12)/C(\tfrac14) +
-//!   8\nu(\nu-\tfrac14)/C(\tfrac12)$;
-//! - for `g < 0.1` the asymptotic expressions of the file (`a << b` and `a >> b`). They
+//!   `1/C(ν) = 8(ν - ¼)(ν - ½)/C(0) - 16ν(ν - ½)/C(¼) + 8ν(ν - ¼)/C(½)`;
+//! - for `g < 0.1` the asymptotic expressions of the reference (`a << b` and `a >> b`). They
 //!   join the table at `g = 0.1` with a jump of up to 6 % (largest for `C23`, `a << b`,
 //!   `nu = 0.5`), which is the accuracy of the asymptotes there.
 //!
@@ -22,15 +22,15 @@
 //! gives the forces but not the spin moment `Mz` (use [`super::Fastsim`] for `Mz`).
 //!
 //! # Dissimilar materials
-//! Kalker's combined moduli ([`KalkerMaterial`]): $2/G = 1/G_1 + 1/G_2$,
-//! $\nu = \tfrac{G}{2}(\nu_1/G_1 + \nu_2/G_2)$. The coupling through Dundurs' beta is
+//! Kalker's combined moduli ([`KalkerMaterial`]): `2/G = 1/G₁ + 1/G₂`,
+//! `ν = (G/2)(ν₁/G₁ + ν₂/G₂)`. The coupling through Dundurs' beta is
 //! neglected (exact for quasi-identical bodies, beta = 0).
 //!
 //! # References
 //! - Kalker, *Three-dimensional elastic bodies in rolling contact* (1990), Table E.3.
 //! - Kalker (1967), *On the rolling contact of two elastic bodies in the presence of dry
 //!   friction*, thesis, TH Delft.
-//! - Johnson (1982), seed 003, eqs (34a, b) (there normalized by `mu P`).
+//! - Johnson (1982), eqs (34a, b) (there normalized by `mu P`).
 //! - Johnson, *Contact Mechanics* (1985), §8.4 and Table 8.1.
 
 use super::{ContactEllipse, Creepage, TractionCurve, check_creepage, check_friction};
@@ -117,7 +117,7 @@ pub struct CreepCoefficients {
 /// [`Error::InvalidInput`] naming `axis_ratio` or `poisson_ratio`.
 ///
 /// # Example
-/// The worked values of the reference file, `nu = 0.28`, `a/b = 0.5`:
+/// The worked values of the reference table, `nu = 0.28`, `a/b = 0.5`:
 /// ```
 /// use kontakt::tangential::creep_coefficients;
 /// let c = creep_coefficients(0.5, 0.28)?;
@@ -241,7 +241,9 @@ impl KalkerMaterial {
 /// The linear creep forces of Kalker's theory, valid for creepages small enough that the
 /// whole contact adheres (`|F| << mu P`).
 ///
-/// $$F_x = -G c^2 C_{11}\,\xi_x,\qquad F_y = -G c^2\,(C_{22}\,\xi_y + c\,C_{23}\,\varphi)$$
+/// ```text
+/// F_x = -G c² C₁₁ ξ_x,   F_y = -G c² (C₂₂ ξ_y + c C₂₃ φ)
+/// ```
 ///
 /// with `c = sqrt(a b)` \[mm\], `G` \[MPa\] the combined shear modulus ([`KalkerMaterial`]),
 /// forces \[N\] on body 1.

@@ -4,7 +4,7 @@
 //! # Formulas
 //! With `x = |Q|/(mu P)` and the Hertz pressure `p0` on the ellipse `a, b`
 //! ([`ContactEllipse`]), the adhesion (stick) zone is the concentric similar ellipse
-//! (seed 003 eq. 32)
+//! (Johnson (1982) eq. 32)
 //!
 //! $$\frac{a'}{a} = \frac{b'}{b} = (1 - x)^{1/3},$$
 //!
@@ -39,7 +39,7 @@
 //!
 //! for a circle `W = 9 mu² P²/(10 a G*) [...]` (Johnson 1985 §7.3, eq. 7.67 as cited in
 //! issue 5), and
-//! `W -> Q*³ C/(3 mu P)` `= Q*³/(36 a G* mu P)` for small amplitudes (`W ∝ P*³`, seed 003
+//! `W -> Q*³ C/(3 mu P)` `= Q*³/(36 a G* mu P)` for small amplitudes (`W ∝ P*³`, Johnson (1982)
 //! eq. 33). The second form is free of cancellation. Derivations: `docs/tangential.md`.
 //!
 //! # Loading history (Mindlin-Deresiewicz)
@@ -62,8 +62,8 @@
 //! - Mindlin (1949), "Compliance of elastic bodies in contact", J. Appl. Mech. 16, 259-268.
 //! - Mindlin & Deresiewicz (1953), "Elastic spheres in contact under varying oblique
 //!   forces", J. Appl. Mech. 20, 327-344.
-//! - Johnson (1982), seed 003, eqs (30)-(33).
-//! - Thesis "Study of the traction curves", seed 002, eqs (2.15)-(2.18).
+//! - Johnson (1982), eqs (30)-(33).
+//! - Thesis "Study of the traction curves", eqs (2.15)-(2.18).
 //! - Johnson, *Contact Mechanics* (1985), §7.2 (partial slip, compliance) and §7.3
 //!   (oscillating forces, energy per cycle).
 
@@ -269,7 +269,7 @@ impl Mindlin {
     }
 
     /// The tangential force \[N\] that produces the displacement `delta` \[mm\] under
-    /// monotone loading, `Q = mu P [1 - (1 - delta/delta_s)^(3/2)]` (seed 002 eq. 2.18).
+    /// monotone loading, `Q = mu P [1 - (1 - delta/delta_s)^(3/2)]` (the thesis' eq. 2.18).
     ///
     /// # Errors
     /// [`Error::InvalidInput`] naming `displacement` unless `|delta| <= delta_s`
@@ -287,7 +287,7 @@ impl Mindlin {
     }
 
     /// Tangential traction \[MPa\] along the load direction at `(x, y)` \[mm\] after
-    /// monotone loading to `q` \[N\] (seed 003 eq. 31); zero outside the contact.
+    /// monotone loading to `q` \[N\] (Johnson (1982) eq. 31); zero outside the contact.
     ///
     /// # Errors
     /// As [`stick_ratio`](Self::stick_ratio).

@@ -30,20 +30,20 @@
 //! circular limit is `1/(8 a G*)` with [`crate::material::effective_shear_modulus`]).
 //! Kalker's theory uses the combined `G` and `nu` of [`KalkerMaterial`]. Carter's curve
 //! uses `E*` ([`crate::material::effective_modulus`]). The normal-tangential coupling of
-//! dissimilar materials (Dundurs' beta, seed 003 eq. 35) is neglected throughout, as in
+//! dissimilar materials (Dundurs' beta, Johnson (1982) eq. 35) is neglected throughout, as in
 //! all four theories.
 //!
 //! # Models
 //! | item | what | source |
 //! |---|---|---|
-//! | [`mindlin::Mindlin`] | stick zone, traction, compliance, energy per cycle of a Hertz ellipse under `Q < mu P` | seed 003 eqs 30-33; Mindlin (1949); Johnson (1985) §7.2 |
+//! | [`mindlin::Mindlin`] | stick zone, traction, compliance, energy per cycle of a Hertz ellipse under `Q < mu P` | Johnson (1982) eqs 30-33; Mindlin (1949); Johnson (1985) §7.2 |
 //! | [`mindlin::MindlinHistory`] | arbitrary `Q(t)` or `delta(t)` history with Masing reversal memory and gross slip | Mindlin & Deresiewicz (1953) |
-//! | [`carter::Carter`] | 2D rolling creep curve of a line contact, closed form | Carter (1926); seed 002 eq. 3.8; Johnson (1985) §8.3 |
-//! | [`kalker`] | Kalker's creepage coefficients `C11, C22, C23` (Table E.3) and linear creep forces | Kalker (1967, 1990); `/work/shared/reference/kalker_creep_coefficients.md` |
+//! | [`carter::Carter`] | 2D rolling creep curve of a line contact, closed form | Carter (1926); the thesis' eq. 3.8; Johnson (1985) §8.3 |
+//! | [`kalker`] | Kalker's creepage coefficients `C11, C22, C23` (Table E.3) and linear creep forces | Kalker (1967; 1990, Table E.3) |
 //! | [`fastsim::Fastsim`] | Kalker's simplified theory by strip marching: forces, adhesion area, traction field | Kalker (1982) |
 //!
-//! The derivations, the readings of garbled seed formulas and the validation table are in
-//! `docs/tangential.md`.
+//! The derivations, the readings of formulas garbled in the sources' text and the validation table
+//! are in `docs/tangential.md`.
 //!
 //! # Example
 //! A steel ball (R = 10 mm) on a flat, 500 N, mu = 0.3, tangential force 90 N:
@@ -60,8 +60,8 @@
 //! ```
 //!
 //! # References
-//! - Johnson (1982), "One hundred years of Hertz contact", Proc. IMechE 196, §6 (seed 003).
-//! - Master thesis "Study of the traction curves", eqs 2.15-2.18 and 3.8 (seed 002).
+//! - Johnson (1982), "One hundred years of Hertz contact", Proc. IMechE 196, §6.
+//! - Master thesis "Study of the traction curves", eqs 2.15-2.18 and 3.8.
 //! - Johnson, *Contact Mechanics* (1985), §§7.2-7.3, 8.3-8.4.
 //! - Kalker, *Three-dimensional elastic bodies in rolling contact* (1990), Table E.3.
 //! - Kalker (1982), "A fast algorithm for the simplified theory of rolling contact",

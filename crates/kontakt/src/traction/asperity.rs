@@ -1,4 +1,4 @@
-//! The asperity-based traction model of the thesis (seed 002, §3.1.2.2): periodic
+//! The asperity-based traction model of the thesis (§3.1.2.2): periodic
 //! spherical asperities on a nominal Hertz contact, Mindlin's partial slip per asperity.
 //!
 //! # Model
@@ -40,7 +40,7 @@
 //! changed by roughness or friction.
 //!
 //! # References
-//! - Thesis (seed 002) §3.1.2.2.1-2, eqs 2.15-2.18, 3.9-3.14, Tables 3.1-3.7, Annexes A-B.
+//! - Thesis §3.1.2.2.1-2, eqs 2.15-2.18, 3.9-3.14, Tables 3.1-3.7, Annexes A-B.
 //! - Mindlin (1949), "Compliance of elastic bodies in contact", J. Appl. Mech. 16, 259-268.
 //! - Johnson (1955), "Surface interaction between elastically loaded bodies under
 //!   tangential forces", Proc. R. Soc. A 230, 531-548 (the 1.11 of eq. 2.17).

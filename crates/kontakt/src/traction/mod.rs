@@ -1,5 +1,6 @@
 //! Traction curves from asperity micro-slip: the thesis' model of a rough rolling contact
-//! (seed 002, §3.1.2.2), for a rough line contact (rectangular) and a circular contact.
+//! (§3.1.2.2 of the master thesis "Study of the traction curves"), for a rough line contact
+//! (rectangular) and a circular contact.
 //!
 //! Periodic spherical asperities cover the nominal Hertz contact; each carries its share
 //! of the nominal pressure; rolling with a slide-to-roll ratio $\xi$ displaces each
@@ -9,8 +10,8 @@
 //! $F_T / (\mu F_N)$ against $\xi$:
 //!
 //! $$\frac{F_T}{\mu F_N}(\xi) = \frac{1}{F_N}\sum_i n_i F_i
-//!   \left[1 - \left(1 - \min\!\left(\frac{\xi_{\mathrm{eff}}\,d_i}{\delta^*_i}, 1\right)\right)^{3/2}\right],
-//!   \qquad \delta^*_i = \frac{3(2-\nu)\,\mu F_i}{8\,G\,a_i}.$$
+//!   \left[1 - \left(1 - \min\!\left(\frac{\xi_{\mathrm{eff}}\,d_i}{\delta^*_i},
+//! 1\right)\right)^{3/2}\right],   \qquad \delta^*_i = \frac{3(2-\nu)\,\mu F_i}{8\,G\,a_i}.$$
 //!
 //! [`AsperityTraction::new`] plans the model once (lattice, loads, contact radii,
 //! gross-slip ratios); [`AsperityTraction::traction_ratio`] and

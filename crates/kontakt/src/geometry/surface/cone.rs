@@ -1,10 +1,11 @@
-//! The cone $x^2+y^2 - m z^2 = 0$, $m = \tan^2\alpha$ (seed 000 eq. 1): the rib of a
+//! The cone $x^2+y^2 - m z^2 = 0$, $m = \tan^2\alpha$ (Wirsching et al. (2020) eq. 1): the rib of a
 //! tapered roller bearing.
 //!
 //! Only the nappe `z > 0` is the surface. In a meridian half-plane (ρ = √(x²+y²) >= 0, z)
 //! the surface is the half-line from the apex along $\mathbf u = (\sin\alpha, \cos\alpha)$,
 //! and the exact signed distance of the enclosed solid is
-//! $$ d = \begin{cases} \rho\cos\alpha - z\sin\alpha & \text{if } \rho\sin\alpha + z\cos\alpha \ge 0,\\ \sqrt{\rho^2+z^2} & \text{otherwise (the apex is nearest).} \end{cases} $$
+//! $$ d = \begin{cases} \rho\cos\alpha - z\sin\alpha & \text{if } \rho\sin\alpha + z\cos\alpha \ge
+//! 0,\\ \sqrt{\rho^2+z^2} & \text{otherwise (the apex is nearest).} \end{cases} $$
 
 use super::{Material, Shape, outer, quadratic_roots, radial};
 use crate::error::{Error, Result};
@@ -50,7 +51,7 @@ impl Cone {
         self.half_angle
     }
 
-    /// $m = \tan^2\alpha$ of seed 000 eq. (1).
+    /// $m = \tan^2\alpha$ of Wirsching et al. (2020) eq. (1).
     pub fn m(&self) -> f64 {
         self.m
     }

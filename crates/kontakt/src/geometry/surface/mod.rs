@@ -1,7 +1,7 @@
 //! Analytic surfaces of the PimP method, ray casting and closest points.
 //!
-//! The roller end face and the rib are described by the implicit equations of seed 000
-//! eq. (1) (also seed 001 eq. 1), each in its own canonical local frame:
+//! The roller end face and the rib are described by the implicit equations of Wirsching et al.
+//! (2020) eq. (1) (also Wirsching et al. (2019) eq. 1), each in its own canonical local frame:
 //!
 //! | surface | local frame | implicit equation |
 //! |---|---|---|
@@ -13,7 +13,8 @@
 //!
 //! A [`Surface`] is one of these shapes plus the side its body's [`Material`] is on; a
 //! [`PlacedSurface`] adds a pose (local → world). The local geometry around a contact point
-//! is sampled by casting rays $\mathbf s(t) = \mathbf q + t\,\mathbf n$ (seed 000 eq. 2).
+//! is sampled by casting rays $\mathbf s(t) = \mathbf q + t\,\mathbf n$ (Wirsching et al. (2020)
+//! eq. 2).
 //!
 //! ## Conventions
 //! - **Outward normal**: the unit normal pointing *away from the material*. It is the
@@ -71,7 +72,8 @@ impl Material {
     }
 }
 
-/// A ray $\mathbf s(t) = \mathbf q + t\,\mathbf n$ (seed 000 eq. 2) with a unit direction.
+/// A ray $\mathbf s(t) = \mathbf q + t\,\mathbf n$ (Wirsching et al. (2020) eq. 2) with a unit
+/// direction.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Ray {
     /// Origin `q` \[mm\].
@@ -158,8 +160,8 @@ impl Curvature {
 /// deserialisation validates like the constructors.
 ///
 /// # Example
-/// The roller end face of seed 000 Table 1 with eccentricity e = 2 mm and face radius
-/// r_R = 14 mm is a spindle torus; a ray down at x = 10 mm meets it where
+/// The roller end face of Wirsching et al. (2020) Table 1 with eccentricity e = 2 mm and face
+/// radius r_R = 14 mm is a spindle torus; a ray down at x = 10 mm meets it where
 /// (10 - 2)² + z² = 14²:
 /// ```
 /// use kontakt::geometry::{Material, Ray, Surface};
@@ -191,7 +193,7 @@ pub enum Surface {
 /// The per-shape geometry in the local frame, for the *enclosed solid* (Material::Inside);
 /// [`Surface`] multiplies by the material sign.
 pub(crate) trait Shape {
-    /// The (sign-normalised) implicit function of seed 000 eq. (1), negative inside.
+    /// The (sign-normalised) implicit function of Wirsching et al. (2020) eq. (1), negative inside.
     fn implicit(&self, p: &Point3<f64>) -> f64;
     /// Signed distance, negative inside.
     fn signed_distance(&self, p: &Point3<f64>) -> f64;
@@ -255,7 +257,8 @@ impl Surface {
     }
 
     /// A cone with apex at the local origin, axis `+z`, nappe `z > 0`:
-    /// $x^2+y^2 = m z^2$, $m = \tan^2\alpha$ (seed 000 eq. 1), `half_angle` = α \[rad\].
+    /// $x^2+y^2 = m z^2$, $m = \tan^2\alpha$ (Wirsching et al. (2020) eq. 1), `half_angle` = α
+    /// \[rad\].
     ///
     /// # Errors
     /// [`Error::InvalidInput`] (field `half_angle`) unless 0 < α < π/2.
@@ -264,8 +267,8 @@ impl Surface {
     }
 
     /// A torus centred at the local origin with axis `z`:
-    /// $(x^2+y^2+z^2+R^2-r^2)^2 = 4R^2(x^2+y^2)$ (seed 000 eq. 1), `major` = R \[mm\] (radius
-    /// of the centre circle), `minor` = r \[mm\] (tube radius).
+    /// $(x^2+y^2+z^2+R^2-r^2)^2 = 4R^2(x^2+y^2)$ (Wirsching et al. (2020) eq. 1), `major` = R
+    /// \[mm\] (radius of the centre circle), `minor` = r \[mm\] (tube radius).
     ///
     /// A spindle torus (R < r) is valid with [`Material::Inside`]: the solid is the union
     /// of the balls of radius r centred on the circle (a roller end face with eccentricity
@@ -312,8 +315,8 @@ impl Surface {
         self.sign() * dispatch!(self, s => s.signed_distance(p))
     }
 
-    /// The implicit function of seed 000 eq. (1) \[mm²\] (\[mm\] for the plane and a surface
-    /// of revolution), sign-normalised so that it is negative inside the material.
+    /// The implicit function of Wirsching et al. (2020) eq. (1) \[mm²\] (\[mm\] for the plane and a
+    /// surface of revolution), sign-normalised so that it is negative inside the material.
     ///
     /// - plane: $z$; sphere: $x^2+y^2+z^2-r^2$;
     /// - cone: $x^2+y^2-m\,z|z|$: the paper's $x^2+y^2-mz^2$ on the nappe's side `z >= 0`,

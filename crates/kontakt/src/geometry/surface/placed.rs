@@ -5,7 +5,8 @@ use crate::error::{Error, Result};
 use nalgebra::{Isometry3, Matrix3, Point3, Unit, Vector3};
 
 /// A surface placed in the world: `pose` maps local coordinates to world coordinates
-/// (the body's frame in the global frame of a multi-body simulation, seed 000 step 1).
+/// (the body's frame in the global frame of a multi-body simulation, Wirsching et al. (2020) step
+/// 1).
 ///
 /// All queries take and return world coordinates and have the semantics of the
 /// [`Surface`] method of the same name; distances, ray parameters and curvatures are

@@ -1,5 +1,5 @@
-//! The plane `z = 0` (seed 000: the rib of a cylindrical roller bearing seen from far, the
-//! flat of seed 001's sphere-on-plane comparison).
+//! The plane `z = 0` (Wirsching et al. (2020): the rib of a cylindrical roller bearing seen from
+//! far, the flat of the sphere-on-plane comparison of Wirsching et al. (2019)).
 
 use super::{Material, Shape};
 use nalgebra::{Matrix3, Point3, Vector3};

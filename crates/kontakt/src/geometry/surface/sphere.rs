@@ -1,4 +1,4 @@
-//! The sphere $x^2+y^2+z^2 = r^2$ (seed 000 eq. 1): roller end faces with zero
+//! The sphere $x^2+y^2+z^2 = r^2$ (Wirsching et al. (2020) eq. 1): roller end faces with zero
 //! eccentricity, balls.
 
 use super::{Material, Shape, outer, tangent_basis};

@@ -1,15 +1,15 @@
-//! The torus $(x^2+y^2+z^2+R^2-r^2)^2 = 4R^2(x^2+y^2)$ (seed 000 eq. 1): toroidal roller
-//! end faces (R = eccentricity e, r = face radius r_R) and toroidal ribs.
+//! The torus $(x^2+y^2+z^2+R^2-r^2)^2 = 4R^2(x^2+y^2)$ (Wirsching et al. (2020) eq. 1): toroidal
+//! roller end faces (R = eccentricity e, r = face radius r_R) and toroidal ribs.
 //!
 //! The quartic factors as
-//! $$ (|\mathbf p|^2+R^2-r^2)^2-4R^2\rho^2 = \big((\rho-R)^2+z^2-r^2\big)\big((\rho+R)^2+z^2-r^2\big), \quad \rho = \sqrt{x^2+y^2}, $$
-//! and the surface is the zero set of the tube distance $d = \sqrt{(\rho-R)^2+z^2} - r$, the
-//! exact signed distance of the solid tube (1-Lipschitz). Ray casting never forms the
-//! quartic in monomial form (catastrophic cancellation for R ≫ r or far origins); it runs
-//! the certified first-root search of [`super::trace`] on `d` and on the first factor
-//! $G = (\rho-R)^2+z^2-r^2$, whose second derivative along a unit ray is bounded in closed
-//! form: $G'' = 2 - 2R\,h^2/\rho^3 \in [2 - 2R h^2/\rho_{min}^3,\ 2]$ with $h$ the constant
-//! $|(\mathbf p \times \mathbf n)_z|$ of the ray.
+//! $$ (|\mathbf p|^2+R^2-r^2)^2-4R^2\rho^2 =
+//! \big((\rho-R)^2+z^2-r^2\big)\big((\rho+R)^2+z^2-r^2\big), \quad \rho = \sqrt{x^2+y^2}, $$ and
+//! the surface is the zero set of the tube distance $d = \sqrt{(\rho-R)^2+z^2} - r$, the exact
+//! signed distance of the solid tube (1-Lipschitz). Ray casting never forms the quartic in monomial
+//! form (catastrophic cancellation for R ≫ r or far origins); it runs the certified first-root
+//! search of [`super::trace`] on `d` and on the first factor $G = (\rho-R)^2+z^2-r^2$, whose second
+//! derivative along a unit ray is bounded in closed form: $G'' = 2 - 2R\,h^2/\rho^3 \in [2 - 2R
+//! h^2/\rho_{min}^3,\ 2]$ with $h$ the constant $|(\mathbf p \times \mathbf n)_z|$ of the ray.
 //!
 //! For a spindle torus (R < r) the zero set of `d` is exactly the outer (apple) sheet,
 //! the boundary of the union of the balls of radius r centred on the circle.

@@ -1,8 +1,9 @@
 //! Certified first-root search along a ray for surfaces without a closed-form
 //! intersection (the torus and surfaces of revolution).
 //!
-//! Along the ray $\mathbf s(t) = \mathbf q + t\,\mathbf n$ (seed 000 eq. 2) a surface is
-//! described by two functions of the ray parameter with the same sign and the same zeros:
+//! Along the ray $\mathbf s(t) = \mathbf q + t\,\mathbf n$ (Wirsching et al. (2020) eq. 2) a
+//! surface is described by two functions of the ray parameter with the same sign and the same
+//! zeros:
 //!
 //! - `f`, with a Lipschitz bound $L$ on an interval, so that no zero lies within $|f|/L$ of
 //!   a sample. For the torus it is the exact signed distance ($L = 1$), for a surface of
