@@ -43,11 +43,19 @@ fn demo_study_rows_and_agreement_with_hertz() {
         let s = (r.force_n / 100.0).cbrt();
         let rel = |a: f64, b: f64| (a / b - 1.0).abs();
         assert!(rel(r.hertz_max_pressure_mpa, s * base.hertz_max_pressure_mpa) < 1e-12);
-        assert!(rel(r.hertz_contact_area_mm2, s * s * base.hertz_contact_area_mm2) < 1e-12);
+        assert!(
+            rel(
+                r.hertz_contact_area_mm2,
+                s * s * base.hertz_contact_area_mm2
+            ) < 1e-12
+        );
 
         let dp = r.max_pressure_mpa / r.hertz_max_pressure_mpa - 1.0;
         let da = r.contact_area_mm2 / r.hertz_contact_area_mm2 - 1.0;
-        let what = format!("{} {} {} N: p {dp:+.4}, area {da:+.4}", r.pairing, r.mode, r.force_n);
+        let what = format!(
+            "{} {} {} N: p {dp:+.4}, area {da:+.4}",
+            r.pairing, r.mode, r.force_n
+        );
         let sphere = r.pairing.starts_with("sphere");
         let torus_14 = r.pairing.ends_with("-14");
         match r.mode {

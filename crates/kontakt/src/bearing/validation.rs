@@ -269,7 +269,10 @@ mod tests {
         let study = PairingStudy {
             pairing: "test".into(),
             rib_angle_deg: 90.0,
-            rows: vec![row(100.0, 1500.0, 0.75, 1000.0), row(200.0, 1250.0, 1.5, 500.0)],
+            rows: vec![
+                row(100.0, 1500.0, 0.75, 1000.0),
+                row(200.0, 1250.0, 1.5, 500.0),
+            ],
             overlay: ShapeOverlay {
                 force_n: 200.0,
                 grid,

@@ -355,9 +355,18 @@ mod tests {
             assert_relative_eq!(k * delta / f, log / (log - 0.5), max_relative = 1e-14);
         }
         // Too short for Lundberg's formula, and bad input.
-        assert_eq!(c.stiffness(1000.0, 0.5).unwrap_err().field(), Some("length"));
-        assert_eq!(c.stiffness(1000.0, 0.0).unwrap_err().field(), Some("length"));
-        assert_eq!(c.stiffness(-1.0, 10.0).unwrap_err().field(), Some("line_load"));
+        assert_eq!(
+            c.stiffness(1000.0, 0.5).unwrap_err().field(),
+            Some("length")
+        );
+        assert_eq!(
+            c.stiffness(1000.0, 0.0).unwrap_err().field(),
+            Some("length")
+        );
+        assert_eq!(
+            c.stiffness(-1.0, 10.0).unwrap_err().field(),
+            Some("line_load")
+        );
     }
 
     /// Equal steels: τmax = 0.300 p0 at z = 0.786 b (Johnson 1985 §4.2, tolerance 1e-3);
@@ -371,11 +380,23 @@ mod tests {
         let (p, body) = c.subsurface_peaks(&sol).unwrap();
         assert_eq!(body, 1);
         assert_relative_eq!(p.max_shear / sol.max_pressure, 0.300, max_relative = 1e-3);
-        assert_relative_eq!(p.max_shear_depth / sol.half_width, 0.786, max_relative = 1e-3);
+        assert_relative_eq!(
+            p.max_shear_depth / sol.half_width,
+            0.786,
+            max_relative = 1e-3
+        );
         let (p4, _) = c.subsurface_peaks(&c.solve(1600.0).unwrap()).unwrap();
         assert_relative_eq!(p4.max_shear, 2.0 * p.max_shear, max_relative = 1e-12);
-        assert_relative_eq!(p4.max_von_mises, 2.0 * p.max_von_mises, max_relative = 1e-12);
-        assert_relative_eq!(p4.max_shear_depth, 2.0 * p.max_shear_depth, max_relative = 1e-12);
+        assert_relative_eq!(
+            p4.max_von_mises,
+            2.0 * p.max_von_mises,
+            max_relative = 1e-12
+        );
+        assert_relative_eq!(
+            p4.max_shear_depth,
+            2.0 * p.max_shear_depth,
+            max_relative = 1e-12
+        );
         assert_relative_eq!(
             p4.max_von_mises_depth,
             2.0 * p.max_von_mises_depth,
@@ -393,9 +414,8 @@ mod tests {
             let c = LineContact::new(10.0, 10.0, m1, m2).unwrap();
             let sol = c.solve(500.0).unwrap();
             let (p, body) = c.subsurface_peaks(&sol).unwrap();
-            let at = |nu| {
-                subsurface::line_stress_peaks(sol.max_pressure, sol.half_width, nu).unwrap()
-            };
+            let at =
+                |nu| subsurface::line_stress_peaks(sol.max_pressure, sol.half_width, nu).unwrap();
             let (s1, s2) = (at(m1.poisson_ratio()), at(m2.poisson_ratio()));
             assert_ne!(s1.max_von_mises, s2.max_von_mises);
             let expected = if s2.max_von_mises > s1.max_von_mises {
@@ -438,7 +458,9 @@ mod tests {
             );
         }
         assert_eq!(
-            c.first_yield(0.0, YieldCriterion::Tresca).unwrap_err().field(),
+            c.first_yield(0.0, YieldCriterion::Tresca)
+                .unwrap_err()
+                .field(),
             Some("yield_stress")
         );
         assert!(c.first_yield(f64::NAN, YieldCriterion::VonMises).is_err());

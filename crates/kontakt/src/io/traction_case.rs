@@ -603,7 +603,10 @@ fn asperity_model(
             "the material of body1 (the asperity model assumes identical bodies)",
         ));
     }
-    let nominal = match (&case.geometry, ellipse.as_ref().and_then(nominal_of_ellipse)) {
+    let nominal = match (
+        &case.geometry,
+        ellipse.as_ref().and_then(nominal_of_ellipse),
+    ) {
         (
             TractionGeometry::Line {
                 radii_mm,
