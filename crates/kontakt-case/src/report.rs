@@ -4,12 +4,11 @@
 use crate::case::{BodySpec, CaseFile, ContactKind, LoadControl, Method};
 use kontakt::hertz::line::LineContact;
 use kontakt::hertz::point_stress::FirstYield;
-use kontakt::hertz::subsurface::{self, StressPeaks, YieldCriterion};
+use kontakt::hertz::subsurface::YieldCriterion;
 use kontakt::hertz::{HertzPointContact, PointGeometry};
 use kontakt::material::{ElasticMaterial, dundurs_beta};
 use kontakt::{Error, Result};
 use serde::{Serialize, Serializer};
-use std::f64::consts::PI;
 
 /// Version of the JSON result schema.
 pub const SCHEMA_VERSION: u32 = 1;
@@ -327,36 +326,15 @@ fn run_case_inner(case: &CaseFile) -> Result<ContactReport> {
                 (Some(f), Some(l)) => Some(contact.lundberg_approach(f, l)?),
                 _ => None,
             };
-            // d(delta)/dF from Lundberg's formula with b ∝ F^(1/2).
-            let stiffness = length.map(|l| {
-                let half = 0.5 * l;
-                PI * half * contact.e_star()
-                    / ((half / b).ln() + kontakt::hertz::line::LUNDBERG_CONSTANT - 0.5)
-            });
-            // The bodies differ only through Poisson's ratio: report the more stressed one.
-            let peaks: StressPeaks = {
-                let p1 = subsurface::line_stress_peaks(sol.max_pressure, b, m1.poisson_ratio())?;
-                let p2 = subsurface::line_stress_peaks(sol.max_pressure, b, m2.poisson_ratio())?;
-                if p2.max_von_mises > p1.max_von_mises {
-                    p2
-                } else {
-                    p1
-                }
-            };
+            let stiffness = length
+                .map(|l| contact.stiffness(line_load, l))
+                .transpose()?;
+            let (peaks, _) = contact.subsurface_peaks(&sol)?;
             let yield_line_load = case
                 .yield_check
                 .map(|y| -> Result<(f64, f64)> {
-                    kontakt::error::positive("yield_stress", y.stress_mpa)?;
-                    let ratio = [m1, m2]
-                        .iter()
-                        .map(|m| {
-                            subsurface::line_yield_pressure_ratio(m.poisson_ratio(), y.criterion)
-                        })
-                        .collect::<Result<Vec<_>>>()?
-                        .into_iter()
-                        .fold(f64::INFINITY, f64::min);
-                    let p0y = ratio * y.stress_mpa;
-                    Ok((contact.line_load_from_max_pressure(p0y)?, p0y))
+                    let fy = contact.first_yield(y.stress_mpa, y.criterion)?;
+                    Ok((fy.line_load, fy.max_pressure))
                 })
                 .transpose()?;
             Ok(ContactReport {

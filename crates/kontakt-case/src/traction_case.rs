@@ -53,12 +53,12 @@ use kontakt::hertz::line::LineContact;
 use kontakt::hertz::{HertzPointContact, PointGeometry};
 use kontakt::material::effective_modulus;
 use kontakt::tangential::{
-    Carter, ContactEllipse, CreepCoefficients, EllipseAxis, Fastsim, FastsimOptions, KalkerLinear,
+    Carter, ContactEllipse, CreepCoefficients, Fastsim, FastsimOptions, KalkerLinear,
     KalkerMaterial, PressureShape, TractionCurve,
 };
 use kontakt::traction::{
-    AsperityContactLaw, AsperityTraction, AsperityTractionParams, LoadSharing, NominalContact,
-    SlipReference,
+    AsperityContactLaw, AsperityCurve, AsperityTraction, AsperityTractionParams, LoadSharing,
+    NominalContact, SlipReference, nominal_of_ellipse, rolling_axis,
 };
 use kontakt::{Error, Result};
 use serde::{Deserialize, Serialize};
@@ -445,12 +445,7 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
             let sol = HertzPointContact::new(g, m1, m2)?
                 .solve_force(case.load.force_n)
                 .map_err(map_common)?;
-            let (s, c) = sol.orientation.sin_cos();
-            let axis = if sol.semi_axes[0] == sol.semi_axes[1] || s.abs() < 1e-9 {
-                EllipseAxis::Major
-            } else if c.abs() < 1e-9 {
-                EllipseAxis::Minor
-            } else {
+            let Some(axis) = rolling_axis(&sol) else {
                 return Err(Error::Geometry {
                     field: "geometry.angle_deg".into(),
                     reason: format!(
@@ -576,25 +571,10 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
         kalker_saturation_creepage: linear.map(|k| k.saturation_creepage()),
         carter_saturation_creepage: carter.saturation_creepage(),
         fastsim_elements: fastsim.map(|f| f.options().elements),
-        asperities: asperity.map(|a| a.0.asperities().len()),
+        asperities: asperity.map(|a| a.model().asperities().len()),
         creepage,
         curves,
     })
-}
-
-/// The asperity model of [`kontakt::traction`] as a [`TractionCurve`]: its traction ratio,
-/// extended as an odd function to negative creepage.
-struct AsperityCurve(AsperityTraction);
-
-impl TractionCurve for AsperityCurve {
-    fn name(&self) -> &'static str {
-        "asperity"
-    }
-
-    fn normalized_force(&self, creepage: f64) -> Result<f64> {
-        kontakt::tangential::check_creepage(creepage)?;
-        Ok(creepage.signum() * self.0.traction_ratio(creepage.abs())?)
-    }
 }
 
 /// Plan the asperity model on the case's nominal contact.
@@ -623,10 +603,10 @@ fn asperity_model(
             "the material of body1 (the asperity model assumes identical bodies)",
         ));
     }
-    let circular = |e: &ContactEllipse| {
-        ((e.a() - e.b()) / e.a()).abs() <= kontakt::traction::asperity::CIRCULARITY_TOLERANCE
-    };
-    let nominal = match (&case.geometry, ellipse) {
+    let nominal = match (
+        &case.geometry,
+        ellipse.as_ref().and_then(nominal_of_ellipse),
+    ) {
         (
             TractionGeometry::Line {
                 radii_mm,
@@ -637,10 +617,7 @@ fn asperity_model(
             length: *length_mm,
             radii: *radii_mm,
         },
-        (_, Some(e)) if circular(&e) => NominalContact::Circular {
-            half_width: e.a(),
-            max_pressure: None,
-        },
+        (_, Some(circle)) => circle,
         _ => {
             return Err(Error::invalid(
                 "models",
@@ -682,5 +659,5 @@ fn asperity_model(
             other => format!("asperity.{other}"),
         })
     })?;
-    Ok(AsperityCurve(model))
+    Ok(AsperityCurve::new(model))
 }

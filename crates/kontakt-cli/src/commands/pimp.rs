@@ -3,10 +3,8 @@
 
 use crate::commands::InputError;
 use anyhow::{Context, Result};
-use kontakt::bearing::{RollerRib, RollerRibSpec, STUDY_FORCES, TABLE1};
+use kontakt::bearing::{DemoRow, DemoStudy, STUDY_FORCES, TABLE1, demo_study};
 use kontakt::geometry::Grid2;
-use kontakt::material::ElasticMaterial;
-use kontakt::pimp::{Mode, Pimp, PimpOptions, SurfacePairGap};
 use kontakt_case::PimpReport;
 use kontakt_plot::{FieldMap, LinePlot, LineStyle, PALETTE, Series};
 use std::io::Write;
@@ -142,97 +140,24 @@ pub fn write_map(
         .with_context(|| format!("drawing {}", path.display()))
 }
 
-/// One row of the demo study.
-#[derive(Debug, Clone, serde::Serialize)]
-pub struct StudyRow {
-    /// Pairing name.
-    pub pairing: &'static str,
-    /// Bedding law.
-    pub mode: &'static str,
-    /// Rib angle \[deg\].
-    pub rib_angle_deg: f64,
-    /// Force \[N\].
-    pub force_n: f64,
-    /// Max pressure \[MPa\].
-    pub max_pressure_mpa: f64,
-    /// Area \[mm²\].
-    pub contact_area_mm2: f64,
-    /// Approach \[mm\].
-    pub approach_mm: f64,
-    /// Half-extents \[mm\].
-    pub semi_axis_a_mm: f64,
-    /// Half-extents \[mm\].
-    pub semi_axis_b_mm: f64,
-    /// Patches.
-    pub patches: usize,
-    /// Centre-line curvature [1/mm].
-    pub centre_line_curvature_per_mm: Option<f64>,
-    /// Hertz p0 at the contact point's curvature \[MPa\].
-    pub hertz_max_pressure_mpa: f64,
-    /// Hertz area \[mm²\].
-    pub hertz_contact_area_mm2: f64,
-}
-
-/// Run the roller-end/rib study and write the report folder.
+/// Run the roller-end/rib study (`kontakt::bearing::demo_study`) and write the report
+/// folder: the computation is the library's, this renders it.
 pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
     std::fs::create_dir_all(out_dir)
         .map_err(|e| InputError(format!("cannot create {}: {e}", out_dir.display())))?;
-    let steel = ElasticMaterial::STEEL;
-    let mut rows = Vec::new();
-    let mut maps = Vec::new();
-    for &(name, ..) in TABLE1.iter() {
-        let pair = RollerRib::new(RollerRibSpec::builtin(name)?)?;
-        let angle = pair.rib_angle_deg;
-        let gap = SurfacePairGap::new(pair.face, pair.rib, pair.contact)?;
-        let hertz = kontakt::hertz::HertzPointContact::new(
-            kontakt::hertz::PointGeometry::from_curvature(kontakt::pimp::GapSource::curvature(
-                &gap,
-            )),
-            steel,
-            steel,
+    let DemoStudy { rows, maps: fields } =
+        demo_study(&STUDY_FORCES).context("the roller-end/rib demo study")?;
+    let mut maps = Vec::with_capacity(fields.len());
+    for m in &fields {
+        let file = format!("{}_{:.0}N.png", m.pairing, m.force_n);
+        write_map(
+            &out_dir.join(&file),
+            &m.grid,
+            &m.pressure,
+            &format!("{}, {:.0} N, PimP corrected", m.pairing, m.force_n),
+            &[],
         )?;
-        for mode in [Mode::Corrected, Mode::Published] {
-            let pimp = Pimp::new(
-                steel,
-                steel,
-                PimpOptions {
-                    mode,
-                    ..Default::default()
-                },
-            )?;
-            for &f in STUDY_FORCES.iter() {
-                let s = pimp
-                    .solve_force(&gap, f)
-                    .with_context(|| format!("{name} at {f} N"))?;
-                let h = hertz.solve_force(f)?;
-                if mode == Mode::Corrected && f == 400.0 {
-                    let file = format!("{name}_400N.png");
-                    write_map(
-                        &out_dir.join(&file),
-                        &s.grid,
-                        &s.pressure,
-                        &format!("{name}, 400 N, PimP corrected"),
-                        &[],
-                    )?;
-                    maps.push((name, file));
-                }
-                rows.push(StudyRow {
-                    pairing: name,
-                    mode: mode.as_str(),
-                    rib_angle_deg: angle,
-                    force_n: f,
-                    max_pressure_mpa: s.max_pressure,
-                    contact_area_mm2: s.contact_area,
-                    approach_mm: s.approach,
-                    semi_axis_a_mm: s.semi_axes[0],
-                    semi_axis_b_mm: s.semi_axes[1],
-                    patches: s.zone.patches,
-                    centre_line_curvature_per_mm: s.zone.centre_line_curvature,
-                    hertz_max_pressure_mpa: h.max_pressure,
-                    hertz_contact_area_mm2: h.contact_area,
-                });
-            }
-        }
+        maps.push((m.pairing, file));
     }
     // CSV of every row.
     let csv_path = out_dir.join("results.csv");
@@ -243,7 +168,7 @@ pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
     }
     w.flush()?;
     // Maximum pressure and area against force, corrected mode.
-    let series_of = |f: &dyn Fn(&StudyRow) -> f64| -> Vec<(&'static str, Vec<(f64, f64)>)> {
+    let series_of = |f: &dyn Fn(&DemoRow) -> f64| -> Vec<(&'static str, Vec<(f64, f64)>)> {
         TABLE1
             .iter()
             .map(|&(name, ..)| {
@@ -261,13 +186,13 @@ pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
             "max_pressure.png",
             "Maximum pressure, PimP corrected",
             "max pressure [MPa]",
-            (&|r: &StudyRow| r.max_pressure_mpa) as &dyn Fn(&StudyRow) -> f64,
+            (&|r: &DemoRow| r.max_pressure_mpa) as &dyn Fn(&DemoRow) -> f64,
         ),
         (
             "contact_area.png",
             "Contact area, PimP corrected",
             "contact area [mm²]",
-            &|r: &StudyRow| r.contact_area_mm2,
+            &|r: &DemoRow| r.contact_area_mm2,
         ),
     ] {
         let data = series_of(f);

@@ -182,29 +182,6 @@ fn deviation_plot(path: &Path, title: &str, studies: &[&PairingStudy], k: usize)
     .with_context(|| format!("drawing {}", path.display()))
 }
 
-/// Mean, smallest and largest deviation over the loads: `[method][quantity] -> (mean, min, max)`.
-fn deviation_stats(s: &PairingStudy) -> [[(f64, f64, f64); 2]; 3] {
-    let mut out = [[(0.0, f64::INFINITY, f64::NEG_INFINITY); 2]; 3];
-    for r in &s.rows {
-        let d = r.deviations();
-        for m in 0..3 {
-            for k in 0..2 {
-                let (sum, lo, hi) = &mut out[m][k];
-                *sum += d[m][k];
-                *lo = lo.min(d[m][k]);
-                *hi = hi.max(d[m][k]);
-            }
-        }
-    }
-    let n = s.rows.len().max(1) as f64;
-    for row in &mut out {
-        for (sum, ..) in row.iter_mut() {
-            *sum /= n;
-        }
-    }
-    out
-}
-
 fn pct(x: f64) -> String {
     format!("{:+.1}", 100.0 * x)
 }
@@ -221,7 +198,7 @@ fn write_markdown(path: &Path, studies: &[PairingStudy]) -> Result<()> {
     md.push_str("## Mean deviation over the loads (range in brackets)\n\n");
     md.push_str("| pairing | rib angle [deg] | PimP published p_max | PimP published area | PimP corrected p_max | PimP corrected area | Hertz p_max | Hertz area |\n|---|---|---|---|---|---|---|---|\n");
     for s in studies {
-        let d = deviation_stats(s);
+        let d = s.deviation_stats();
         let cell =
             |(mean, lo, hi): (f64, f64, f64)| format!("{} [{}, {}]", pct(mean), pct(lo), pct(hi));
         md.push_str(&format!(
@@ -294,7 +271,7 @@ fn print_summary(out: &mut impl Write, studies: &[PairingStudy]) -> Result<()> {
         "pairing", "pub. p_max", "pub. area", "corr. p_max", "corr. area", "Hertz p", "Hertz A"
     )?;
     for s in studies {
-        let d = deviation_stats(s);
+        let d = s.deviation_stats();
         writeln!(
             out,
             "  {:<18} {:>12} {:>12} {:>12} {:>12} {:>10} {:>10}",

@@ -4,9 +4,11 @@
 //! Units: mm, N, MPa; angles in degrees at this interface (the case-file convention).
 //! The construction and the reading of Table 1 are in `docs/bearing.md`.
 
+pub mod demo;
 pub mod roller_rib;
 pub mod validation;
 
+pub use demo::{DemoMap, DemoRow, DemoStudy, demo_study};
 pub use roller_rib::{
     CONTACT_HEIGHT, FaceShape, RibShape, RollerRib, RollerRibSpec, STUDY_FORCES, TABLE1,
     TaperedRollerBearing,

@@ -114,6 +114,34 @@ pub struct PairingStudy {
     pub overlay: ShapeOverlay,
 }
 
+impl PairingStudy {
+    /// Mean, smallest and largest of [`ValidationRow::deviations`] over the rows (the
+    /// loads): `[method][quantity] -> (mean, min, max)`, methods PimP published, PimP
+    /// corrected, Hertz; quantities maximum pressure, area; each `method / reference - 1`
+    /// \[-\]. No rows: means 0, min `inf`, max `-inf`.
+    pub fn deviation_stats(&self) -> [[(f64, f64, f64); 2]; 3] {
+        let mut out = [[(0.0, f64::INFINITY, f64::NEG_INFINITY); 2]; 3];
+        for r in &self.rows {
+            let d = r.deviations();
+            for m in 0..3 {
+                for k in 0..2 {
+                    let (sum, lo, hi) = &mut out[m][k];
+                    *sum += d[m][k];
+                    *lo = lo.min(d[m][k]);
+                    *hi = hi.max(d[m][k]);
+                }
+            }
+        }
+        let n = self.rows.len().max(1) as f64;
+        for row in &mut out {
+            for (sum, ..) in row.iter_mut() {
+                *sum /= n;
+            }
+        }
+        out
+    }
+}
+
 /// Run the study for the built-in `pairing` (see [`super::TABLE1`]) at `forces` \[N\]
 /// with the half-space solver's `options`, both bodies steel.
 ///
@@ -210,4 +238,56 @@ pub fn resample(from: &Grid2, values: &[f64], to: &Grid2) -> Vec<f64> {
             }
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)]
+    use super::*;
+
+    fn headline(p: f64, a: f64) -> Headline {
+        Headline {
+            max_pressure_mpa: p,
+            contact_area_mm2: a,
+            approach_mm: 0.01,
+            semi_axes_mm: [0.1, 0.1],
+        }
+    }
+
+    /// Two loads with deviations known exactly in binary (±0.5, ±0.25, 0): mean, min and
+    /// max per method and quantity (exact).
+    #[test]
+    fn deviation_stats_are_mean_min_max_over_the_loads() {
+        let row = |f, pub_p, corr_a, hertz_p| ValidationRow {
+            force_n: f,
+            bem: headline(1000.0, 1.0),
+            pimp_published: headline(pub_p, 1.0),
+            pimp_corrected: headline(1000.0, corr_a),
+            hertz: headline(hertz_p, 1.0),
+            bem_iterations: 1,
+        };
+        let grid = Grid2::centered(1.0, 1.0, 2, 2).unwrap();
+        let study = PairingStudy {
+            pairing: "test".into(),
+            rib_angle_deg: 90.0,
+            rows: vec![
+                row(100.0, 1500.0, 0.75, 1000.0),
+                row(200.0, 1250.0, 1.5, 500.0),
+            ],
+            overlay: ShapeOverlay {
+                force_n: 200.0,
+                grid,
+                bem: vec![0.0; 4],
+                pimp_published: vec![0.0; 4],
+                pimp_corrected: vec![0.0; 4],
+            },
+        };
+        let d = study.deviation_stats();
+        assert_eq!(d[0][0], (0.375, 0.25, 0.5));
+        assert_eq!(d[0][1], (0.0, 0.0, 0.0));
+        assert_eq!(d[1][0], (0.0, 0.0, 0.0));
+        assert_eq!(d[1][1], (0.125, -0.25, 0.5));
+        assert_eq!(d[2][0], (-0.25, -0.5, 0.0));
+        assert_eq!(d[2][1], (0.0, 0.0, 0.0));
+    }
 }

@@ -16,6 +16,11 @@
 //! δ = P / (π l E*) · [ln(l/b) + 1.8864].
 //! ```
 //!
+//! Its derivative gives the stiffness [`LineContact::stiffness`]; the subsurface peaks of
+//! the more stressed body ([`LineContact::subsurface_peaks`]) and the first yield
+//! ([`LineContact::first_yield`], Johnson 1982 eq. 21b) follow from
+//! [`crate::hertz::subsurface`].
+//!
 //! # Assumptions
 //! Plane strain, elastic half-spaces, frictionless; Lundberg: uniform load along a contact
 //! much longer than wide (l ≫ b), ends ignored.
@@ -27,6 +32,7 @@
 
 use crate::error::{Error, Result};
 use crate::geometry::curvature::validate_radius;
+use crate::hertz::subsurface::{self, StressPeaks, YieldCriterion};
 use crate::material::{ElasticMaterial, effective_modulus};
 use crate::units::{Megapascal, Millimetre, Newton, NewtonPerMillimetre};
 use serde::Serialize;
@@ -44,6 +50,7 @@ pub struct LineContact {
     radii: [Millimetre; 2],
     effective_radius: Millimetre,
     e_star: Megapascal,
+    materials: [ElasticMaterial; 2],
 }
 
 /// The state of a line contact at one line load.
@@ -102,6 +109,7 @@ impl LineContact {
             radii: [body1_radius, body2_radius],
             effective_radius: 1.0 / curvature,
             e_star: effective_modulus(&body1, &body2),
+            materials: [body1, body2],
         })
     }
 
@@ -116,6 +124,10 @@ impl LineContact {
     /// The two radii \[mm\].
     pub fn radii(&self) -> [Millimetre; 2] {
         self.radii
+    }
+    /// The materials of body 1 and body 2.
+    pub fn materials(&self) -> [ElasticMaterial; 2] {
+        self.materials
     }
 
     /// Solution for a line load `line_load` [N/mm] (> 0, finite).
@@ -170,6 +182,116 @@ impl LineContact {
         }
         Ok(force / (PI * l * self.e_star) * ((l / b).ln() + LUNDBERG_CONSTANT))
     }
+
+    /// Contact stiffness dF/dδ [N/mm] of a contact of length `length` \[mm\] under the
+    /// line load `line_load` [N/mm], from Lundberg's approach (Johnson 1982 eq. 25):
+    ///
+    /// $$k = \frac{dF}{d\delta} = \frac{\pi l E^*}{\ln(l/b) + 1.8864 - 1/2},\qquad l = L/2,$$
+    ///
+    /// the derivative of $\delta = F/(\pi l E^*)\,[\ln(l/b) + 1.8864]$ with $b \propto F^{1/2}$
+    /// (Johnson 1982 eq. 9) at fixed length: $d\ln b/dF = 1/(2F)$ gives the $-1/2$.
+    ///
+    /// # Errors
+    /// Non-positive or non-finite line load or length, or a contact shorter than
+    /// [`MIN_LENGTH_TO_WIDTH`] half-widths per half-length (Lundberg's formula assumes
+    /// l ≫ b, as [`LineContact::lundberg_approach`]).
+    ///
+    /// # Assumptions
+    /// As [`LineContact::lundberg_approach`]: uniform load along the contact, ends ignored.
+    ///
+    /// # References
+    /// Johnson (1982) eqs (9), (25); Lundberg (1939).
+    pub fn stiffness(
+        &self,
+        line_load: NewtonPerMillimetre,
+        length: Millimetre,
+    ) -> Result<NewtonPerMillimetre> {
+        crate::error::positive("length", length)?;
+        let b = self.solve(line_load)?.half_width;
+        let half = 0.5 * length;
+        if half < MIN_LENGTH_TO_WIDTH * b {
+            return Err(Error::invalid(
+                "length",
+                length,
+                format!(
+                    ">= {:.4} mm: Lundberg's formula needs l >= {MIN_LENGTH_TO_WIDTH} b (half-width b = {b:.4} mm)",
+                    2.0 * MIN_LENGTH_TO_WIDTH * b
+                ),
+            ));
+        }
+        Ok(PI * half * self.e_star / ((half / b).ln() + LUNDBERG_CONSTANT - 0.5))
+    }
+
+    /// Peak subsurface stresses below the centre line for a solution of this contact
+    /// (stresses \[MPa\], depths \[mm\]), with the body (1 or 2) they belong to. The two
+    /// bodies carry the same Hertz pressure and differ only through Poisson's ratio; the
+    /// more stressed one, by the larger von Mises peak, is returned (body 1 on a tie).
+    ///
+    /// # Errors
+    /// Propagates errors of [`subsurface::line_stress_peaks`].
+    ///
+    /// # Assumptions
+    /// Plane strain, frictionless Hertz pressure (as [`subsurface::line_stress_peaks`]).
+    ///
+    /// # References
+    /// McEwen (1949); Johnson, *Contact Mechanics* (1985) §4.2, eq. (4.49).
+    pub fn subsurface_peaks(&self, solution: &LineSolution) -> Result<(StressPeaks, usize)> {
+        let (p0, b) = (solution.max_pressure, solution.half_width);
+        let p1 = subsurface::line_stress_peaks(p0, b, self.materials[0].poisson_ratio())?;
+        let p2 = subsurface::line_stress_peaks(p0, b, self.materials[1].poisson_ratio())?;
+        Ok(if p2.max_von_mises > p1.max_von_mises {
+            (p2, 2)
+        } else {
+            (p1, 1)
+        })
+    }
+
+    /// First yield below the surface for a yield stress `yield_stress` \[MPa\] (> 0)
+    /// common to both bodies (give the weaker body's value), by the chosen criterion:
+    /// the maximum pressure $p_{0Y} = \min_i (p_{0Y}/Y)(\nu_i)\,Y$ over the two bodies'
+    /// Poisson's ratios ([`subsurface::line_yield_pressure_ratio`]) and the line load
+    /// $P'_Y = \pi R p_{0Y}^2/E^*$ [N/mm] that produces it.
+    ///
+    /// # Errors
+    /// Non-positive or non-finite yield stress; errors of
+    /// [`subsurface::line_yield_pressure_ratio`].
+    ///
+    /// # Assumptions
+    /// Plane strain, elastic-perfectly plastic material, no residual stress.
+    ///
+    /// # References
+    /// Johnson (1982) eq. (21b); Johnson, *Contact Mechanics* (1985) §4.2.
+    pub fn first_yield(
+        &self,
+        yield_stress: Megapascal,
+        criterion: YieldCriterion,
+    ) -> Result<LineFirstYield> {
+        crate::error::positive("yield_stress", yield_stress)?;
+        let ratios = self
+            .materials
+            .iter()
+            .map(|m| subsurface::line_yield_pressure_ratio(m.poisson_ratio(), criterion))
+            .collect::<Result<Vec<_>>>()?;
+        let ratio = ratios.iter().copied().fold(f64::INFINITY, f64::min);
+        let body = if ratios[1] < ratios[0] { 2 } else { 1 };
+        let p0y = ratio * yield_stress;
+        Ok(LineFirstYield {
+            line_load: self.line_load_from_max_pressure(p0y)?,
+            max_pressure: p0y,
+            body,
+        })
+    }
+}
+
+/// First yield of a line contact ([`LineContact::first_yield`]).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct LineFirstYield {
+    /// Line load at first yield [N/mm].
+    pub line_load: NewtonPerMillimetre,
+    /// Maximum contact pressure at first yield \[MPa\].
+    pub max_pressure: Megapascal,
+    /// The body (1 or 2) that yields first.
+    pub body: usize,
 }
 
 impl LineSolution {
@@ -212,6 +334,157 @@ mod tests {
             300.0,
             max_relative = 1e-13
         );
+    }
+
+    /// The stiffness is the derivative of Lundberg's approach: against a central
+    /// difference of [`LineContact::lundberg_approach`] (step 1e-3 F: truncation
+    /// ~1e-7 relative, tolerance 1e-6), and exactly (1e-14) the identity
+    /// k δ / F = (ln(l/b) + C) / (ln(l/b) + C - 1/2) that follows from the two formulas.
+    #[test]
+    fn stiffness_is_the_derivative_of_lundbergs_approach() {
+        let s = ElasticMaterial::STEEL;
+        let c = LineContact::new(8.0, 30.0, s, s).unwrap();
+        for (q, length) in [(100.0, 12.0), (800.0, 20.0), (2500.0, 40.0)] {
+            let f = q * length;
+            let k = c.stiffness(q, length).unwrap();
+            let h = 1e-3 * f;
+            let fd = 2.0 * h
+                / (c.lundberg_approach(f + h, length).unwrap()
+                    - c.lundberg_approach(f - h, length).unwrap());
+            assert_relative_eq!(k, fd, max_relative = 1e-6);
+            let delta = c.lundberg_approach(f, length).unwrap();
+            let b = c.solve(q).unwrap().half_width;
+            let log = (0.5 * length / b).ln() + LUNDBERG_CONSTANT;
+            assert_relative_eq!(k * delta / f, log / (log - 0.5), max_relative = 1e-14);
+        }
+        // Too short for Lundberg's formula, and bad input.
+        assert_eq!(
+            c.stiffness(1000.0, 0.5).unwrap_err().field(),
+            Some("length")
+        );
+        assert_eq!(
+            c.stiffness(1000.0, 0.0).unwrap_err().field(),
+            Some("length")
+        );
+        assert_eq!(
+            c.stiffness(-1.0, 10.0).unwrap_err().field(),
+            Some("line_load")
+        );
+    }
+
+    /// Equal steels: τmax = 0.300 p0 at z = 0.786 b (Johnson 1985 §4.2, tolerance 1e-3);
+    /// the peaks scale exactly with p0 and the depths with b (quadrupling the load
+    /// doubles both; tolerance 1e-12); body 1 is reported on a tie.
+    #[test]
+    fn subsurface_peaks_follow_johnson_and_scale_with_the_load() {
+        let s = ElasticMaterial::STEEL;
+        let c = LineContact::new(6.0, f64::INFINITY, s, s).unwrap();
+        let sol = c.solve(400.0).unwrap();
+        let (p, body) = c.subsurface_peaks(&sol).unwrap();
+        assert_eq!(body, 1);
+        assert_relative_eq!(p.max_shear / sol.max_pressure, 0.300, max_relative = 1e-3);
+        assert_relative_eq!(
+            p.max_shear_depth / sol.half_width,
+            0.786,
+            max_relative = 1e-3
+        );
+        let (p4, _) = c.subsurface_peaks(&c.solve(1600.0).unwrap()).unwrap();
+        assert_relative_eq!(p4.max_shear, 2.0 * p.max_shear, max_relative = 1e-12);
+        assert_relative_eq!(
+            p4.max_von_mises,
+            2.0 * p.max_von_mises,
+            max_relative = 1e-12
+        );
+        assert_relative_eq!(
+            p4.max_shear_depth,
+            2.0 * p.max_shear_depth,
+            max_relative = 1e-12
+        );
+        assert_relative_eq!(
+            p4.max_von_mises_depth,
+            2.0 * p.max_von_mises_depth,
+            max_relative = 1e-12
+        );
+    }
+
+    /// Dissimilar Poisson's ratios: the body with the larger von Mises peak is named and
+    /// its peaks are those of `line_stress_peaks` at its ratio (exactly).
+    #[test]
+    fn subsurface_peaks_pick_the_more_stressed_body() {
+        let a = ElasticMaterial::new(210_000.0, 0.45).unwrap();
+        let b = ElasticMaterial::new(210_000.0, 0.2).unwrap();
+        for (m1, m2) in [(a, b), (b, a)] {
+            let c = LineContact::new(10.0, 10.0, m1, m2).unwrap();
+            let sol = c.solve(500.0).unwrap();
+            let (p, body) = c.subsurface_peaks(&sol).unwrap();
+            let at =
+                |nu| subsurface::line_stress_peaks(sol.max_pressure, sol.half_width, nu).unwrap();
+            let (s1, s2) = (at(m1.poisson_ratio()), at(m2.poisson_ratio()));
+            assert_ne!(s1.max_von_mises, s2.max_von_mises);
+            let expected = if s2.max_von_mises > s1.max_von_mises {
+                (s2, 2)
+            } else {
+                (s1, 1)
+            };
+            assert_eq!((p, body), expected);
+        }
+        // Lower Poisson's ratio, larger von Mises stress: body b (ν = 0.2) is named.
+        let c = LineContact::new(10.0, 10.0, a, b).unwrap();
+        assert_eq!(c.subsurface_peaks(&c.solve(500.0).unwrap()).unwrap().1, 2);
+    }
+
+    /// First yield, equal steels (ν = 0.3): p0Y = 1.6651 Y (Tresca, Johnson: 1.67 Y) and
+    /// 1.7937 Y (von Mises, Johnson: 1.79 Y), tolerance 1e-4; the line load is the closed
+    /// form P'Y = π R p0Y²/E* and reproduces p0Y when solved (1e-12).
+    #[test]
+    fn first_yield_matches_johnson_and_the_closed_form() {
+        let s = ElasticMaterial::STEEL;
+        let c = LineContact::new(7.5, 25.0, s, s).unwrap();
+        let y = 1200.0;
+        for (crit, ratio) in [
+            (YieldCriterion::Tresca, 1.6651),
+            (YieldCriterion::VonMises, 1.7937),
+        ] {
+            let fy = c.first_yield(y, crit).unwrap();
+            assert_eq!(fy.body, 1);
+            assert_relative_eq!(fy.max_pressure / y, ratio, max_relative = 1e-4);
+            let r = c.effective_radius();
+            assert_relative_eq!(
+                fy.line_load,
+                PI * r * fy.max_pressure * fy.max_pressure / c.e_star(),
+                max_relative = 1e-12
+            );
+            assert_relative_eq!(
+                c.solve(fy.line_load).unwrap().max_pressure,
+                fy.max_pressure,
+                max_relative = 1e-12
+            );
+        }
+        assert_eq!(
+            c.first_yield(0.0, YieldCriterion::Tresca)
+                .unwrap_err()
+                .field(),
+            Some("yield_stress")
+        );
+        assert!(c.first_yield(f64::NAN, YieldCriterion::VonMises).is_err());
+    }
+
+    /// Dissimilar Poisson's ratios: the body whose ratio gives the lower first-yield
+    /// pressure is named, and that pressure is the minimum (exact).
+    #[test]
+    fn first_yield_picks_the_weaker_body() {
+        let a = ElasticMaterial::new(210_000.0, 0.3).unwrap();
+        let b = ElasticMaterial::new(210_000.0, 0.45).unwrap();
+        let crit = YieldCriterion::VonMises;
+        let r = |nu| subsurface::line_yield_pressure_ratio(nu, crit).unwrap();
+        assert_ne!(r(0.3), r(0.45));
+        let weaker = if r(0.45) < r(0.3) { 2 } else { 1 };
+        let c = LineContact::new(10.0, 20.0, a, b).unwrap();
+        let fy = c.first_yield(1000.0, crit).unwrap();
+        assert_eq!(fy.body, weaker);
+        assert_eq!(fy.max_pressure, r(0.3).min(r(0.45)) * 1000.0);
+        let swapped = LineContact::new(10.0, 20.0, b, a).unwrap();
+        assert_eq!(swapped.first_yield(1000.0, crit).unwrap().body, 3 - weaker);
     }
 
     #[test]

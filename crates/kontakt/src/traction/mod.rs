@@ -49,8 +49,10 @@
 
 pub mod asperity;
 mod cells;
+pub mod curve;
 
 pub use asperity::{
     AsperityContactLaw, AsperityForce, AsperityState, AsperityTraction, AsperityTractionParams,
     ContactShape, LoadSharing, NominalContact, SlipReference,
 };
+pub use curve::{AsperityCurve, nominal_of_ellipse, rolling_axis};
