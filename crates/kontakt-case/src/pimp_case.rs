@@ -268,7 +268,20 @@ impl SurfaceSpec {
                 ));
             }
         }
-        .map_err(|e| e.map_field(|k| format!("{prefix}.{k}")))?;
+        .map_err(|e| {
+            e.map_field(|k| {
+                let key = match k {
+                    "radius" => "radius_mm",
+                    "major" => "major_mm",
+                    "minor" => "minor_mm",
+                    "half_angle" => "half_angle_deg",
+                    "crown_radius" => "crown_radius_mm",
+                    "half_length" => "half_length_mm",
+                    other => other,
+                };
+                format!("{prefix}.{key}")
+            })
+        })?;
         let axis = Vector3::from(self.axis);
         let axis = if axis.iter().all(|c| c.is_finite()) {
             Unit::try_new(axis, 1e-12)
@@ -552,7 +565,12 @@ pub(crate) fn gap_setup(geometry: &GeometrySpec) -> Result<GapSetup> {
                 Error::invalid("geometry.kind", "roller_rib", "a roller/rib geometry")
             })?;
             let angle = pair.rib_angle_deg;
-            let gap = SurfacePairGap::new(pair.face, pair.rib, pair.contact)?;
+            let gap = SurfacePairGap::new(pair.face, pair.rib, pair.contact).map_err(|e| {
+                e.map_field(|f| match f {
+                    "surfaces" => "geometry.pairing".into(),
+                    other => other.into(),
+                })
+            })?;
             (
                 format!("roller_rib {label}"),
                 Box::new(gap),
@@ -567,9 +585,11 @@ pub(crate) fn gap_setup(geometry: &GeometrySpec) -> Result<GapSetup> {
         } => {
             let k = RelativeCurvature::from_radii(*radii1_mm, *radii2_mm, angle_deg.to_radians())
                 .map_err(|e| {
-                e.map_field(|f| {
-                    f.replace("body1.radii", "geometry.radii1_mm")
-                        .replace("body2.radii", "geometry.radii2_mm")
+                e.map_field(|f| match f {
+                    "radii" => "geometry.radii1_mm, geometry.radii2_mm".into(),
+                    f => f
+                        .replace("body1.radii", "geometry.radii1_mm")
+                        .replace("body2.radii", "geometry.radii2_mm"),
                 })
             })?;
             (
@@ -586,7 +606,13 @@ pub(crate) fn gap_setup(geometry: &GeometrySpec) -> Result<GapSetup> {
         } => {
             let s1 = body1.build("geometry.body1")?;
             let s2 = body2.build("geometry.body2")?;
-            let gap = SurfacePairGap::from_poses(s1, s2, guess_mm.map(Point3::from))?;
+            let gap =
+                SurfacePairGap::from_poses(s1, s2, guess_mm.map(Point3::from)).map_err(|e| {
+                    e.map_field(|f| match f {
+                        "surfaces" => "geometry".into(),
+                        other => other.into(),
+                    })
+                })?;
             let sep = gap.separation();
             (
                 format!("surfaces {} / {}", body1.shape, body2.shape),

@@ -183,6 +183,8 @@ fn case_field(f: &str) -> String {
         "angle" => "contact.angle_deg".into(),
         "length" => "contact.length_mm".into(),
         "yield_stress" => "yield.stress_mpa".into(),
+        // A geometry error about the pair of radii (conformal or separate surfaces).
+        "radii" => "body1.radii_mm, body2.radii_mm".into(),
         _ => f,
     }
 }

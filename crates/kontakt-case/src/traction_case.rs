@@ -407,7 +407,7 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
         e.map_field(|f| match f {
             "friction_coefficient" => "friction.mu".into(),
             "normal_force" | "force" | "line_load" => "load.force_n".into(),
-            "poisson_ratio" => "body1.nu/body2.nu (Kalker's combined nu)".into(),
+            "poisson_ratio" => "body1.nu, body2.nu".into(),
             "elements[0]" => "fastsim.elements[0]".into(),
             "elements[1]" => "fastsim.elements[1]".into(),
             "semi_axes[0]" => "geometry.semi_axes_mm[0]".into(),
@@ -436,9 +436,11 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
             }
             let g = PointGeometry::new(*radii1_mm, *radii2_mm, angle_deg.to_radians()).map_err(
                 |e| {
-                    e.map_field(|f| {
-                        f.replace("body1.radii", "geometry.radii1_mm")
-                            .replace("body2.radii", "geometry.radii2_mm")
+                    e.map_field(|f| match f {
+                        "radii" => "geometry.radii1_mm, geometry.radii2_mm".into(),
+                        f => f
+                            .replace("body1.radii", "geometry.radii1_mm")
+                            .replace("body2.radii", "geometry.radii2_mm"),
                     })
                 },
             )?;

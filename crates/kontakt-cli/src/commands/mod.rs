@@ -157,7 +157,9 @@ fn hertz_case(a: &HertzArgs) -> CaseFile {
 
 /// Map case-file keys to the `hertz` subcommand's flags for error messages.
 fn flag_for_field(field: &str) -> String {
-    let flag = if field.starts_with("body1.radii") {
+    let flag = if field == "body1.radii_mm, body2.radii_mm" {
+        "--body1-radii/--body2-radii"
+    } else if field.starts_with("body1.radii") {
         "--body1-radii"
     } else if field.starts_with("body2.radii") {
         "--body2-radii"
