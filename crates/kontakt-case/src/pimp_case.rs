@@ -5,7 +5,7 @@
 //! method = "pimp"
 //!
 //! [geometry]                 # one of three kinds
-//! kind = "roller_rib"        # built-in pairing of seed 000 Table 1 ...
+//! kind = "roller_rib"        # built-in pairing of Wirsching et al. (2020) Table 1 ...
 //! pairing = "torus-torus-14"
 //! # ... or explicit: face = { shape = "torus", radius_mm = 14.0, eccentricity_mm = 2.0 },
 //! #                  rib = { shape = "torus", radius_mm = 30.0 }, contact_height_mm = 2.75,
@@ -133,7 +133,7 @@ impl Default for PimpSpec {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
 pub enum GeometrySpec {
-    /// Roller end face against the rib (seed 000).
+    /// Roller end face against the rib (Wirsching et al. 2020).
     RollerRib {
         /// A built-in pairing of Table 1 (then leave out face and rib).
         #[serde(default)]

@@ -67,7 +67,7 @@ proptest! {
         ax in -1.0f64..1.0, ay in -1.0f64..1.0, az in -1.0f64..1.0,
         sphere_first in any::<bool>(),
     ) {
-        // Seed 001's sphere on plane: radius 10..1000 mm. The plane tilted and moved.
+        // Wirsching et al. (2019)'s sphere on plane: radius 10..1000 mm. The plane tilted and moved.
         let pose = Isometry3::new(Vector3::new(x, y, 3.0), Vector3::new(ax, ay, az));
         let flat = placed(Surface::plane(Material::Inside), pose);
         let up = pose.rotation * Vector3::z();
@@ -147,7 +147,7 @@ proptest! {
         big_r in 20.0f64..40.0, r in 2.0f64..19.0, rs in 10.0f64..100.0, gap in -0.2f64..1.0,
         theta in -2.0f64..2.0, phi in -3.1f64..3.1,
     ) {
-        // Seed 001's sphere on torus: sphere 10..100 mm, torus radii 20 and 30 mm.
+        // Wirsching et al. (2019)'s sphere on torus: sphere 10..100 mm, torus radii 20 and 30 mm.
         let torus = at(Surface::torus(big_r, r, Material::Inside).unwrap(), 0.0, 0.0, 0.0);
         // Ball centre along the tube normal at (theta, phi), clear of the hole's far side.
         let n = Vector3::new(theta.cos() * phi.cos(), theta.cos() * phi.sin(), theta.sin());
@@ -294,7 +294,7 @@ fn alternating_projection(
     (p1, p2)
 }
 
-/// PimP-like pairs of seed 000 Table 1: sphere/cone, sphere/torus, torus/cone,
+/// PimP-like pairs of Wirsching et al. (2020) Table 1: sphere/cone, sphere/torus, torus/cone,
 /// torus/torus, each placed so that a single smooth contact exists (the bodies apart).
 fn pimp_pairs() -> Vec<(&'static str, PlacedSurface, PlacedSurface)> {
     let rot = |ax: f64, ay: f64, az: f64| UnitQuaternion::from_euler_angles(ax, ay, az);

@@ -1,5 +1,5 @@
 #![allow(clippy::unwrap_used)]
-//! The roller-end/rib pairings of seed 000 Table 1 on the 60 mm bore bearing.
+//! The roller-end/rib pairings of Wirsching et al. (2020) Table 1 on the 60 mm bore bearing.
 
 use kontakt::bearing::{CONTACT_HEIGHT, FaceShape, RibShape, RollerRib, RollerRibSpec, TABLE1};
 use kontakt::geometry::find_contact;

@@ -42,7 +42,7 @@ fn sphere_contact() -> (Mindlin, f64) {
 // Cattaneo-Mindlin
 // ---------------------------------------------------------------------------------------
 
-/// Seed 003 eq. 32: a'/a = (1 - Q/(mu P))^(1/3), for the circle and for an ellipse (the
+/// Johnson (1982) eq. 32: a'/a = (1 - Q/(mu P))^(1/3), for the circle and for an ellipse (the
 /// stick ellipse is similar: b'/b = a'/a). Tolerance 1e-12 (same formula).
 #[test]
 fn stick_radius_follows_the_cube_root_law() {
@@ -244,7 +244,7 @@ fn cerruti(
 
 /// Energy per cycle: W = 9 mu² P²/(10 a G*) [1 - (1-x)^(5/3) - (5x/6)(1 + (1-x)^(2/3))]
 /// (Johnson 1985 §7.3, eq. 7.67 of the issue), typed here in its textbook form (1e-9 where it does not
-/// cancel), and the small-amplitude limit Q*³/(36 a G* mu P) (seed 003 eq. 33: W ∝ P*³).
+/// cancel), and the small-amplitude limit Q*³/(36 a G* mu P) (Johnson (1982) eq. 33: W ∝ P*³).
 #[test]
 fn dissipated_energy_against_closed_form() {
     let (m, a) = sphere_contact();
@@ -365,7 +365,7 @@ fn displacement_control_with_gross_slip() {
 // ---------------------------------------------------------------------------------------
 
 /// Carter's curve F/(mu P') = 1 - (1 - xi/xi_s)², xi_s = mu a/R (Johnson 1985 §8.3),
-/// and the worked table of seed 002 (Fig. 3-5, normalized creepage, 4 digits).
+/// and the worked table of the thesis "Study of the traction curves" (Fig. 3-5, normalized creepage, 4 digits).
 #[test]
 fn carter_curve_against_closed_form() {
     let c = Carter::from_line_contact(
@@ -388,7 +388,7 @@ fn carter_curve_against_closed_form() {
         assert!((c.normalized_force(s * xs).unwrap() - f).abs() < 1e-12);
         assert!((c.normalized_force(-s * xs).unwrap() + f).abs() < 1e-12);
     }
-    // Seed 002, table of Fig. 3-5: (xi, F_T/(mu F_N)) with xi already normalized.
+    // The thesis "Study of the traction curves", table of Fig. 3-5: (xi, F_T/(mu F_N)) with xi already normalized.
     let unit = Carter::new(1.0, 1.0, 2.0, 1.0).unwrap(); // xi_s = 2 mu p0/E* = 1
     for (xi, f) in [
         (0.07, 0.1351),

@@ -1,5 +1,5 @@
 //! `kontakt validate`: PimP against the coupled half-space solver for the roller-end/rib
-//! pairings of seed 000 (its Figures 7-10 with the half-space solver in the place of FEM).
+//! pairings of Wirsching et al. (2020) (its Figures 7-10 with the half-space solver in the place of FEM).
 
 use crate::commands::InputError;
 use crate::commands::pimp::write_map;
@@ -11,7 +11,7 @@ use kontakt_plot::{LinePlot, LineStyle, Overlay, PALETTE, Series};
 use std::io::Write;
 use std::path::Path;
 
-/// The pairing types of seed 000 Figures 7-10, each with its two parameter sets.
+/// The pairing types of Wirsching et al. (2020) Figures 7-10, each with its two parameter sets.
 const TYPES: [(&str, &str); 4] = [
     ("sphere-cone", "sphere / cone (Figure 7)"),
     ("sphere-torus", "sphere / torus (Figure 8)"),

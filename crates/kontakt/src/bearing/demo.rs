@@ -1,4 +1,4 @@
-//! The roller-end/rib demo study (`kontakt demo`): the eight pairings of seed 000 Table 1,
+//! The roller-end/rib demo study (`kontakt demo`): the eight pairings of Wirsching et al. (2020) Table 1,
 //! both bedding laws of PimP, every force of a list \[N\] (the demo uses
 //! [`super::STUDY_FORCES`], 100-400 N: 8 x 2 x 7 = 112 solves), each beside Hertz at the
 //! curvature of the contact point.
@@ -26,7 +26,7 @@ use super::{RollerRib, RollerRibSpec, TABLE1};
 /// the columns of the demo's `results.csv`.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct DemoRow {
-    /// Pairing name (seed 000 Table 1).
+    /// Pairing name (Wirsching et al. 2020, Table 1).
     pub pairing: &'static str,
     /// Bedding law (`corrected` or `published`).
     pub mode: &'static str,

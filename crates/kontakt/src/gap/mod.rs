@@ -1,7 +1,7 @@
 //! The substitute geometry: the gap between the two undeformed bodies, measured along the
 //! common normal from the contact plane.
 //!
-//! Sign convention (seed 000 Step 2, seed 001 "Generating local geometry"): the contact
+//! Sign convention (Wirsching et al. 2020, Step 2; Wirsching et al. 2019, "Generating local geometry"): the contact
 //! plane touches both bodies at the contact point, its normal `z` points into body 1.
 //! `g1(x, y)` is the height of body 1's surface above the plane along `+z` (>= 0 for a
 //! convex body 1), `g2(x, y)` the height of body 2's surface (<= 0 for a convex body 2).

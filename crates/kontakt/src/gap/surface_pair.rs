@@ -1,4 +1,4 @@
-//! The substitute geometry of two placed analytic surfaces, by ray casting (seed 000
+//! The substitute geometry of two placed analytic surfaces, by ray casting (Wirsching et al. 2020,
 //! Step 2, eq. 2).
 
 use super::{GapSource, check_len};

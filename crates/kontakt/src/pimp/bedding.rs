@@ -4,7 +4,7 @@
 //! springs are not coupled, as in the paper). The derivation of both is in
 //! `docs/pimp.md`.
 //!
-//! - [`Mode::Published`]: seed 000 eqs (5)-(7) read as
+//! - [`Mode::Published`]: Wirsching et al. (2020) eqs (5)-(7) read as
 //!   `p = E* u (X + Y) / 2`, `u = d - g`, with the strip weights `X = 4 / (pi a)`,
 //!   `Y = 4 / (pi b)` taken from the half-extents `a`, `b` of the cut footprint
 //!   `{g < d}` along the principal axes, and `d` the rigid penetration (the approach).
@@ -24,7 +24,7 @@ use std::f64::consts::PI;
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Mode {
-    /// The method as published (seed 000 eqs 5-7, seed 001 eqs 4-6), with the reading
+    /// The method as published (Wirsching et al. 2020, eqs 5-7; Wirsching et al. 2019, eqs 4-6), with the reading
     /// documented in `docs/pimp.md`: linear springs, strip weights from the footprint,
     /// cut at the rigid penetration.
     Published,

@@ -1,5 +1,5 @@
 //! The PimP method ("Pressungsverteilung im Punktkontakt", Wirsching, Schwarz & Tremmel
-//! 2020, seed 000 §2.2; Wirsching et al. 2019, seed 001): the pressure between two
+//! 2020, §2.2; Wirsching et al. 2019): the pressure between two
 //! analytic surfaces from a substitute geometry pressed into a Winkler bedding.
 //!
 //! The four steps of the paper map onto this module as follows.

@@ -23,7 +23,7 @@ pub const AXIS_ALIGNMENT_TOLERANCE: f64 = 1e-9;
 /// planned model's traction ratio at the slide-to-roll ratio (creepage) $\xi$ \[-\].
 ///
 /// # Assumptions
-/// Those of [`AsperityTraction`] (seed 002 §3.1.2.2); the model is defined for
+/// Those of [`AsperityTraction`] (the thesis "Study of the traction curves", §3.1.2.2); the model is defined for
 /// $\xi \ge 0$ and is extended as an odd function.
 #[derive(Debug, Clone, PartialEq)]
 pub struct AsperityCurve(AsperityTraction);
