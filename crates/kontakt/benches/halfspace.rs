@@ -10,12 +10,13 @@ use criterion::{BenchmarkId, Criterion, SamplingMode, criterion_group, criterion
 use kontakt::geometry::Grid2;
 use kontakt::geometry::RelativeCurvature;
 use kontakt::halfspace::{
-    Bem, BemOptions, Boundary, Control, ElasticOperator, HalfSpaceSolver, SolveReport,
-    SolverOptions, Start,
+    Bem, BemOptions, Boundary, Control, ElasticOperator, HalfSpacePlan, HalfSpaceSolver,
+    SolveReport, SolverOptions, Start,
 };
 use kontakt::material::{ElasticMaterial, effective_modulus};
 use kontakt::pimp::QuadraticGap;
 use std::hint::black_box;
+use std::sync::Arc;
 use std::time::Duration;
 
 /// Sphere R = 10 mm on a plane, steel, 300 N: Hertz a, delta.
@@ -252,8 +253,9 @@ fn bodies(g: Grid2, tol: f64) -> Vec<HalfSpaceSolver> {
         threads: Some(1),
         ..SolverOptions::default()
     };
+    let plan = HalfSpacePlan::new(&g, e_star(), options.boundary, options.threads).expect("plan");
     (0..BODIES)
-        .map(|_| HalfSpaceSolver::new(g, e_star(), options).expect("solver"))
+        .map(|_| HalfSpaceSolver::with_plan(Arc::clone(&plan), options).expect("solver"))
         .collect()
 }
 

@@ -2,7 +2,8 @@
 //! domain that adapts to the contact.
 
 use super::gapmap::GapMap;
-use super::operator::Boundary;
+use super::operator::{Boundary, HalfSpacePlan};
+use super::planner::HalfSpacePlanner;
 use super::solver::{Control, HalfSpaceSolver, SolveReport, SolverOptions, Start};
 use crate::error::{Error, Result, positive_as};
 use crate::geometry::Grid2;
@@ -10,6 +11,7 @@ use crate::material::{ElasticMaterial, effective_modulus};
 use crate::pimp::{ContactZone, GapSource, Mode, Pimp, PimpOptions};
 use crate::units::{Megapascal, Millimetre, Newton};
 use serde::{Deserialize, Serialize};
+use std::sync::{Arc, Mutex, PoisonError};
 
 /// Fewest loaded cells across the contact (each direction) that a solve accepts.
 pub const MIN_CELLS_ACROSS: usize = 8;
@@ -151,11 +153,24 @@ impl BemSolution {
 }
 
 /// The coupled elastic half-space solver for one pair of materials.
-#[derive(Debug, Clone, Copy, PartialEq)]
+///
+/// It plans each grid once: a [`HalfSpacePlanner`] behind an `Arc<Mutex<_>>` keeps the
+/// plans of the domains it solved on, so repeated solves (and the same adaptive rounds)
+/// reuse them. Clones share the planner; `Bem` is cheap to clone and `Send + Sync`, and
+/// the lock is held only while a plan is looked up or built, not during a solve.
+#[derive(Debug, Clone)]
 pub struct Bem {
     body1: ElasticMaterial,
     body2: ElasticMaterial,
     options: BemOptions,
+    planner: Arc<Mutex<HalfSpacePlanner>>,
+}
+
+/// Equal materials and options (the planner, a cache, does not count).
+impl PartialEq for Bem {
+    fn eq(&self, other: &Self) -> bool {
+        self.body1 == other.body1 && self.body2 == other.body2 && self.options == other.options
+    }
 }
 
 impl Bem {
@@ -168,12 +183,51 @@ impl Bem {
         body2: ElasticMaterial,
         options: BemOptions,
     ) -> Result<Self> {
+        Self::with_planner(
+            body1,
+            body2,
+            options,
+            Arc::new(Mutex::new(HalfSpacePlanner::new())),
+        )
+    }
+
+    /// A solver for body 1 against body 2 that takes its plans from `planner` (shared
+    /// with other solvers, e.g. of other load cases on the same grids).
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] for an invalid option.
+    pub fn with_planner(
+        body1: ElasticMaterial,
+        body2: ElasticMaterial,
+        options: BemOptions,
+        planner: Arc<Mutex<HalfSpacePlanner>>,
+    ) -> Result<Self> {
         options.validate()?;
         Ok(Bem {
             body1,
             body2,
             options,
+            planner,
         })
+    }
+
+    /// The planner that holds this solver's plans (shared by its clones).
+    pub fn planner(&self) -> &Arc<Mutex<HalfSpacePlanner>> {
+        &self.planner
+    }
+
+    /// The half-space solver on `grid` \[mm\], on the planner's plan for its cells and
+    /// spacing.
+    fn solver(&self, grid: Grid2, boundary: Boundary) -> Result<HalfSpaceSolver> {
+        let options = self.options.solver(boundary);
+        let plan: Arc<HalfSpacePlan> = self
+            .planner
+            .lock()
+            // A panic while planning leaves the cache consistent (a plan is inserted
+            // whole or not at all): keep using it.
+            .unwrap_or_else(PoisonError::into_inner)
+            .plan(&grid, self.e_star(), boundary, options.threads)?;
+        HalfSpaceSolver::with_plan_on(grid, plan, options)
     }
 
     /// The options.
@@ -224,8 +278,7 @@ impl Bem {
         control: Control,
         boundary: Boundary,
     ) -> Result<BemSolution> {
-        let mut solver =
-            HalfSpaceSolver::new(*map.grid(), self.e_star(), self.options.solver(boundary))?;
+        let mut solver = self.solver(*map.grid(), boundary)?;
         let report = solver.solve(map.values(), control, Start::Cold)?;
         HalfSpaceSolver::require_converged(report)?;
         let solution = BemSolution::new(&solver, report, map.values().to_vec(), 0.0, 1)?;
@@ -279,8 +332,7 @@ impl Bem {
             let grid = Grid2::new(bounds[0], bounds[1], nx, ny)?;
             let mut gap = vec![0.0; grid.len()];
             source.sample(&grid, orientation, &mut gap)?;
-            let mut solver =
-                HalfSpaceSolver::new(grid, self.e_star(), self.options.solver(Boundary::Free))?;
+            let mut solver = self.solver(grid, Boundary::Free)?;
             let report = solver.solve(&gap, control, Start::Cold)?;
             HalfSpaceSolver::require_converged(report)?;
             let solution = BemSolution::new(&solver, report, gap, orientation, round)?;

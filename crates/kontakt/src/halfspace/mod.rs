@@ -28,9 +28,11 @@ mod contact;
 mod gapmap;
 pub mod influence;
 mod operator;
+mod planner;
 mod solver;
 
 pub use contact::{Bem, BemOptions, BemSolution, MIN_CELLS_ACROSS};
 pub use gapmap::{GapMap, MapKind};
-pub use operator::{Boundary, ElasticOperator};
+pub use operator::{Boundary, ElasticOperator, HalfSpacePlan, OperatorScratch};
+pub use planner::HalfSpacePlanner;
 pub use solver::{Control, HalfSpaceSolver, SolveReport, SolverOptions, Start};
