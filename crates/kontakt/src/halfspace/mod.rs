@@ -13,14 +13,22 @@
 //! with `h` the undeformed gap \[mm\], `p` the pressure \[MPa\], `δ` the rigid approach
 //! \[mm\] and `F` the normal force \[N\].
 //!
-//! - [`ElasticOperator`]: `u = C p` by FFT with zero padding (free boundary) or periodic,
-//!   planned once, no allocation per application, threads via rayon.
+//! - [`HalfSpacePlan`]: `u = C p` \[mm\] for `p` \[MPa\] by FFT with zero padding (free
+//!   boundary) or periodic. Immutable and `Send + Sync`: FFT plans, kernel spectrum,
+//!   thread pool, shared behind `Arc`. It is applied with a caller-owned
+//!   [`OperatorScratch`] (`apply_with_scratch`, no allocation per application), in the
+//!   style of RustFFT's planner → plan → execute-with-scratch.
+//! - [`HalfSpacePlanner`]: caches plans by cells, spacing, boundary, E* and threads, so
+//!   equal grids share one `Arc<HalfSpacePlan>`. [`ElasticOperator`] is a plan with a
+//!   scratch of its own.
 //! - [`HalfSpaceSolver`]: Polonsky and Keer's constrained conjugate gradients under load
 //!   or displacement control, a Hertz-like cold start, warm starts for the multi-body time
-//!   step, and a stated residual; non-convergence is a status in [`SolveReport`].
+//!   step, and a stated residual; non-convergence is a status in [`SolveReport`]. It
+//!   plans for itself ([`HalfSpaceSolver::new`]) or takes a shared plan
+//!   ([`HalfSpaceSolver::with_plan`]); its scratch and state are its own.
 //! - [`Bem`]: the solver on any [`crate::pimp::GapSource`] (PimP's substitute geometry,
 //!   the Hertz gap, two placed surfaces) with a domain that adapts to the contact, or on
-//!   a user [`GapMap`] (CSV or `.npy`).
+//!   a user [`GapMap`] (CSV or `.npy`). It plans each domain once through its planner.
 //!
 //! Derivations, conventions and the memory budget: docs/halfspace.md.
 
