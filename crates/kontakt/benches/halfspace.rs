@@ -8,11 +8,15 @@
 
 use criterion::{BenchmarkId, Criterion, SamplingMode, criterion_group, criterion_main};
 use kontakt::geometry::Grid2;
+use kontakt::geometry::RelativeCurvature;
 use kontakt::halfspace::{
-    Boundary, Control, ElasticOperator, HalfSpaceSolver, SolveReport, SolverOptions, Start,
+    Bem, BemOptions, Boundary, Control, ElasticOperator, HalfSpacePlan, HalfSpaceSolver,
+    SolveReport, SolverOptions, Start,
 };
 use kontakt::material::{ElasticMaterial, effective_modulus};
+use kontakt::pimp::QuadraticGap;
 use std::hint::black_box;
+use std::sync::Arc;
 use std::time::Duration;
 
 /// Sphere R = 10 mm on a plane, steel, 300 N: Hertz a, delta.
@@ -211,5 +215,92 @@ fn bench_multibody(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench_operator, bench_hertz_solve, bench_multibody);
+/// `Bem::solve_force` called again and again on one `Bem` (the sphere of the other benches,
+/// 64 × 64 cells, adaptive domain, one thread): since issue 10 the grids of the adaptive
+/// rounds are planned on the first call only.
+fn bench_bem_repeated(c: &mut Criterion) {
+    let sphere = RelativeCurvature::from_radii([RADIUS, RADIUS], [f64::INFINITY; 2], 0.0)
+        .expect("curvature");
+    let gap = QuadraticGap::new(sphere);
+    let bem = Bem::new(
+        ElasticMaterial::STEEL,
+        ElasticMaterial::STEEL,
+        BemOptions {
+            threads: Some(1),
+            ..BemOptions::default()
+        },
+    )
+    .expect("bem");
+    let s = bem.solve_force(&gap, LOAD).expect("solve");
+    eprintln!(
+        "bem sphere 64x64: {} rounds, {} iterations",
+        s.domains, s.status.iterations
+    );
+    let mut group = c.benchmark_group("halfspace_bem_repeated");
+    group.sample_size(20);
+    group.warm_up_time(Duration::from_millis(500));
+    group.measurement_time(Duration::from_secs(2));
+    group.bench_function("solve_force_sphere_64", |b| {
+        b.iter(|| bem.solve_force(black_box(&gap), LOAD).expect("solve"))
+    });
+    group.finish();
+}
+
+/// Bodies of a multi-body model on one grid (four rollers, 64 × 64 cells, one thread):
+/// building their solvers, and one time step of warm-started solves.
+const BODIES: usize = 4;
+
+fn bodies(g: Grid2, tol: f64) -> Vec<HalfSpaceSolver> {
+    let options = SolverOptions {
+        tolerance: tol,
+        threads: Some(1),
+        ..SolverOptions::default()
+    };
+    let plan = HalfSpacePlan::new(&g, e_star(), options.boundary, options.threads).expect("plan");
+    (0..BODIES)
+        .map(|_| HalfSpaceSolver::with_plan(Arc::clone(&plan), options).expect("solver"))
+        .collect()
+}
+
+fn bench_multibody_shared(c: &mut Criterion) {
+    let a = hertz_radius();
+    let g = grid(64, 1.25 * a);
+    let gaps: Vec<Vec<f64>> = (0..BODIES)
+        .map(|k| sphere_gap(&g, 0.01 * a * k as f64))
+        .collect();
+    let tol = 1e-6;
+    let loads = [LOAD, 1.01 * LOAD];
+    let mut group = c.benchmark_group("halfspace_multibody_shared_64");
+    group.sample_size(20);
+    group.warm_up_time(Duration::from_millis(500));
+    group.measurement_time(Duration::from_secs(2));
+    group.bench_function("setup_4_bodies", |b| b.iter(|| bodies(black_box(g), tol)));
+    let mut solvers = bodies(g, tol);
+    for (s, gap) in solvers.iter_mut().zip(&gaps) {
+        s.solve(gap, Control::Force(LOAD), Start::Cold)
+            .expect("solve");
+    }
+    let mut k = 0usize;
+    group.bench_function("warm_step_4_bodies", |b| {
+        b.iter(|| {
+            k += 1;
+            for (s, gap) in solvers.iter_mut().zip(&gaps) {
+                black_box(
+                    s.solve(black_box(gap), Control::Force(loads[k % 2]), Start::Warm)
+                        .expect("solve"),
+                );
+            }
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(
+    benches,
+    bench_operator,
+    bench_hertz_solve,
+    bench_multibody,
+    bench_bem_repeated,
+    bench_multibody_shared
+);
 criterion_main!(benches);

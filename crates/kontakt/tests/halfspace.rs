@@ -11,8 +11,8 @@ use kontakt::Error;
 use kontakt::geometry::{Grid2, RelativeCurvature};
 use kontakt::halfspace::influence::dense_matrix;
 use kontakt::halfspace::{
-    Bem, BemOptions, Boundary, Control, ElasticOperator, GapMap, HalfSpaceSolver, MapKind,
-    SolveReport, SolverOptions, Start,
+    Bem, BemOptions, Boundary, Control, ElasticOperator, GapMap, HalfSpacePlan, HalfSpacePlanner,
+    HalfSpaceSolver, MapKind, OperatorScratch, SolveReport, SolverOptions, Start,
 };
 use kontakt::hertz::{HertzPointContact, HertzPointSolution, PointGeometry};
 use kontakt::material::{ElasticMaterial, effective_modulus};
@@ -1129,4 +1129,246 @@ fn periodic_full_contact_reports_convergence() {
     let r = solver.solve(&w.gap, control, Start::Cold).unwrap();
     assert!(r.status.converged(), "{r:?}");
     assert!(r.status.iterations < 100, "{r:?}");
+}
+
+// ---------------------------------------------------------------------------------------
+// Shareable plans (issue 10): one immutable plan, the callers' scratch, a planner.
+
+/// Compile-time: the plan, the planner and `Bem` may cross threads (a plan is shared
+/// behind `Arc` by solvers on several threads; a scratch moves with its solver).
+#[test]
+fn plans_planners_and_bem_are_send_and_sync() {
+    fn send_sync<T: Send + Sync>() {}
+    fn send<T: Send>() {}
+    send_sync::<HalfSpacePlan>();
+    send_sync::<std::sync::Arc<HalfSpacePlan>>();
+    send_sync::<HalfSpacePlanner>();
+    send_sync::<Bem>();
+    send::<OperatorScratch>();
+    send::<HalfSpaceSolver>();
+}
+
+/// Two solvers on one shared plan, solving on two threads at once (cold, then a warm
+/// step), give bit for bit the results of two solvers with plans of their own: serial on
+/// a 48 x 48 grid, and on a 2-thread pool on a 128 x 112 grid (so the shared pool runs
+/// two solves at once).
+#[test]
+fn a_plan_shared_by_two_solvers_on_two_threads_equals_separate_plans() {
+    let h = hertz(sphere(), LOAD);
+    let a = h.semi_axes[0];
+    for (nx, ny, threads) in [(48usize, 48usize, Some(1)), (128, 112, Some(2))] {
+        let grid = Grid2::centered(1.3 * a, 1.2 * a, nx, ny).unwrap();
+        let opts = SolverOptions {
+            tolerance: 1e-9,
+            threads,
+            ..SolverOptions::default()
+        };
+        let gaps = [
+            sphere_gap(&grid, [0.0; 2]),
+            sphere_gap(&grid, [0.05 * a, -0.03 * a]),
+        ];
+        let run = |mut s: HalfSpaceSolver, gap: &[f64]| {
+            let cold = s.solve(gap, Control::Force(LOAD), Start::Cold).unwrap();
+            let warm = s
+                .solve(gap, Control::Force(1.02 * LOAD), Start::Warm)
+                .unwrap();
+            (cold, warm, s.pressure().to_vec(), s.displacement().to_vec())
+        };
+        let separate: Vec<_> = gaps
+            .iter()
+            .map(|g| run(HalfSpaceSolver::new(grid, e_star(), opts).unwrap(), g))
+            .collect();
+        let plan = HalfSpacePlan::new(&grid, e_star(), Boundary::Free, threads).unwrap();
+        let shared: Vec<_> = std::thread::scope(|scope| {
+            let handles: Vec<_> = gaps
+                .iter()
+                .map(|g| {
+                    let s = HalfSpaceSolver::with_plan(std::sync::Arc::clone(&plan), opts).unwrap();
+                    scope.spawn(move || run(s, g))
+                })
+                .collect();
+            handles.into_iter().map(|h| h.join().unwrap()).collect()
+        });
+        assert_eq!(std::sync::Arc::strong_count(&plan), 1);
+        for (k, (s, p)) in separate.iter().zip(&shared).enumerate() {
+            assert!(
+                s.0.status.converged() && s.1.status.converged(),
+                "{nx}x{ny} body {k}"
+            );
+            assert_eq!(s.0, p.0, "{nx}x{ny} body {k} cold report");
+            assert_eq!(s.1, p.1, "{nx}x{ny} body {k} warm report");
+            let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            assert_eq!(bits(&s.2), bits(&p.2), "{nx}x{ny} body {k} pressure");
+            assert_eq!(bits(&s.3), bits(&p.3), "{nx}x{ny} body {k} displacement");
+        }
+        // The two bodies differ, so equal results are not a trivial coincidence.
+        assert_ne!(shared[0].2, shared[1].2);
+    }
+}
+
+/// The allocating `apply`, `apply_with_scratch` and the `ElasticOperator` on a shared
+/// plan agree bit for bit; a scratch of another layout is an error, not a panic.
+#[test]
+fn plan_apply_with_and_without_scratch_agree() {
+    let grid = Grid2::centered(0.4, 0.3, 24, 20).unwrap();
+    let p = sphere_gap(&grid, [0.1, 0.0]);
+    let plan = HalfSpacePlan::new(&grid, e_star(), Boundary::Free, Some(1)).unwrap();
+    let (mut u1, mut u2, mut u3) = (
+        vec![0.0; grid.len()],
+        vec![0.0; grid.len()],
+        vec![0.0; grid.len()],
+    );
+    plan.apply(&p, &mut u1).unwrap();
+    let mut scratch = plan.scratch();
+    plan.apply_with_scratch(&p, &mut u2, &mut scratch).unwrap();
+    let mut op = ElasticOperator::from_plan(std::sync::Arc::clone(&plan));
+    op.apply(&p, &mut u3).unwrap();
+    assert_eq!(u1, u2);
+    assert_eq!(u1, u3);
+    assert!(u1.iter().all(|v| *v > 0.0));
+    let other = HalfSpacePlan::new(&grid, e_star(), Boundary::Periodic, Some(1)).unwrap();
+    let e = other
+        .apply_with_scratch(&p, &mut u1, &mut scratch)
+        .unwrap_err();
+    assert_eq!(e.field(), Some("scratch"));
+    assert!(!other.fits(&scratch));
+}
+
+/// The planner hands out the same `Arc` for equal keys (also for a grid of the same
+/// cells and spacing at another origin) and a new plan for other cells, spacing,
+/// boundary, E* or threads; it keeps at most its capacity, least recently used first out.
+#[test]
+fn the_planner_shares_plans_of_equal_keys_only() {
+    use std::sync::Arc;
+    let mut planner = HalfSpacePlanner::new();
+    assert!(planner.is_empty());
+    let e = e_star();
+    let g = Grid2::centered(0.5, 0.4, 32, 24).unwrap();
+    let a = planner.plan(&g, e, Boundary::Free, Some(1)).unwrap();
+    let b = planner.plan(&g, e, Boundary::Free, Some(1)).unwrap();
+    assert!(Arc::ptr_eq(&a, &b));
+    let moved = Grid2::new([0.1, 1.1], [-0.3, 0.5], 32, 24).unwrap();
+    assert_eq!(moved.dx().to_bits(), g.dx().to_bits());
+    assert_eq!(moved.dy().to_bits(), g.dy().to_bits());
+    let c = planner.plan(&moved, e, Boundary::Free, Some(1)).unwrap();
+    assert!(Arc::ptr_eq(&a, &c));
+    assert!(c.serves(&moved));
+    assert_eq!(planner.len(), 1);
+    assert_eq!(planner.plans_built(), 1);
+    let others = [
+        (
+            Grid2::centered(0.5, 0.4, 32, 25).unwrap(),
+            e,
+            Boundary::Free,
+            Some(1),
+        ),
+        (
+            Grid2::centered(0.5, 0.41, 32, 24).unwrap(),
+            e,
+            Boundary::Free,
+            Some(1),
+        ),
+        (g, e, Boundary::Periodic, Some(1)),
+        (g, 0.5 * e, Boundary::Free, Some(1)),
+        (g, e, Boundary::Free, Some(2)),
+    ];
+    let mut plans = vec![a];
+    for (k, (grid, e, boundary, threads)) in others.iter().enumerate() {
+        let p = planner.plan(grid, *e, *boundary, *threads).unwrap();
+        assert!(plans.iter().all(|q| !Arc::ptr_eq(q, &p)), "key {k}");
+        assert_eq!(p.boundary(), *boundary);
+        assert_eq!(p.e_star(), *e);
+        plans.push(p);
+    }
+    assert_eq!(planner.len(), 6);
+    assert_eq!(planner.plans_built(), 6);
+    assert!(planner.plan(&g, -1.0, Boundary::Free, None).is_err());
+    assert!(planner.plan(&g, e, Boundary::Free, Some(0)).is_err());
+
+    // Capacity 2: planning a third grid forgets the least recently used.
+    let mut small = HalfSpacePlanner::with_capacity(2);
+    let g2 = Grid2::centered(0.5, 0.4, 16, 16).unwrap();
+    let g3 = Grid2::centered(0.5, 0.4, 20, 16).unwrap();
+    let first = small.plan(&g, e, Boundary::Free, Some(1)).unwrap();
+    small.plan(&g2, e, Boundary::Free, Some(1)).unwrap();
+    small.plan(&g, e, Boundary::Free, Some(1)).unwrap(); // g is now the most recent
+    small.plan(&g3, e, Boundary::Free, Some(1)).unwrap(); // forgets g2
+    assert_eq!(small.len(), 2);
+    assert!(Arc::ptr_eq(
+        &first,
+        &small.plan(&g, e, Boundary::Free, Some(1)).unwrap()
+    ));
+    assert_eq!(small.plans_built(), 3);
+    small.plan(&g2, e, Boundary::Free, Some(1)).unwrap();
+    assert_eq!(small.plans_built(), 4);
+}
+
+/// A solver refuses a shared plan of another boundary or grid.
+#[test]
+fn a_solver_refuses_a_plan_of_another_grid_or_boundary() {
+    let g = Grid2::centered(0.5, 0.5, 16, 16).unwrap();
+    let plan = HalfSpacePlan::new(&g, e_star(), Boundary::Free, Some(1)).unwrap();
+    let periodic = SolverOptions {
+        boundary: Boundary::Periodic,
+        ..options(1e-8)
+    };
+    let e = HalfSpaceSolver::with_plan(std::sync::Arc::clone(&plan), periodic).unwrap_err();
+    assert_eq!(e.field(), Some("boundary"));
+    let other = Grid2::centered(0.5, 0.6, 16, 16).unwrap();
+    let e = HalfSpaceSolver::with_plan_on(other, std::sync::Arc::clone(&plan), options(1e-8))
+        .unwrap_err();
+    assert_eq!(e.field(), Some("grid"));
+    let s = HalfSpaceSolver::with_plan(plan, options(1e-8)).unwrap();
+    assert_eq!(s.e_star(), e_star());
+    assert_eq!(s.grid(), &g);
+}
+
+/// `Bem` plans each grid once: a second `solve_force` (and `solve_map`) on the same
+/// case builds no plan and gives the same solution; clones share the planner.
+#[test]
+fn bem_reuses_its_plans_across_calls() {
+    let bem = Bem::new(
+        STEEL,
+        STEEL,
+        BemOptions {
+            cells: [48, 48],
+            threads: Some(1),
+            ..BemOptions::default()
+        },
+    )
+    .unwrap();
+    let built = || bem.planner().lock().unwrap().plans_built();
+    assert_eq!(built(), 0);
+    // An ellipse that takes more than one adaptive round.
+    let (k, _) = hertz_ellipse(4.0, 0.4);
+    let gap = QuadraticGap::new(k);
+    let first = bem.solve_force(&gap, LOAD).unwrap();
+    let after_first = built();
+    assert!(after_first >= 1 && after_first <= first.domains);
+    let second = bem.solve_force(&gap, LOAD).unwrap();
+    assert_eq!(built(), after_first, "the second call planned again");
+    assert_eq!(first, second);
+    let clone = bem.clone();
+    assert_eq!(clone, bem);
+    let third = clone.solve_force(&gap, LOAD).unwrap();
+    assert_eq!(built(), after_first, "the clone planned again");
+    assert_eq!(first, third);
+
+    let grid = Grid2::centered(0.24, 0.24, 24, 24).unwrap();
+    let map = GapMap::new(
+        24,
+        24,
+        [grid.dx(), grid.dy()],
+        sphere_gap(&grid, [0.0; 2]),
+        MapKind::Gap,
+    )
+    .unwrap();
+    let m1 = bem
+        .solve_map(&map, Control::Force(30.0), Boundary::Free)
+        .unwrap();
+    let m2 = bem
+        .solve_map(&map, Control::Force(30.0), Boundary::Free)
+        .unwrap();
+    assert_eq!(built(), after_first + 1);
+    assert_eq!(m1, m2);
 }

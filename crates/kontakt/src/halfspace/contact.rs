@@ -1,15 +1,18 @@
 //! The half-space solver on any substitute geometry ([`GapSource`]) or gap map, with a
 //! domain that adapts to the contact.
 
-use super::operator::Boundary;
+use super::operator::{Boundary, HalfSpacePlan};
+use super::planner::HalfSpacePlanner;
 use super::solver::{Control, HalfSpaceSolver, SolveReport, SolverOptions, Start};
 use crate::error::{Error, Result, positive_as};
 use crate::field::domain::{self, Policy, Shrink, Trial};
 use crate::field::{ContactZone, NormalSolution};
 use crate::gap::{GapMap, GapSource};
+use crate::geometry::Grid2;
 use crate::material::{ElasticMaterial, effective_modulus};
 use crate::units::{Millimetre, Newton};
 use serde::{Deserialize, Serialize};
+use std::sync::{Arc, Mutex, PoisonError};
 
 pub use crate::field::domain::ZoneEstimate;
 
@@ -129,12 +132,18 @@ fn solution(
 }
 
 /// The coupled elastic half-space solver for one pair of materials.
+///
+/// It plans each grid once: a [`HalfSpacePlanner`] behind an `Arc<Mutex<_>>` keeps the
+/// plans of the domains it solved on, so repeated solves (and the same adaptive rounds)
+/// reuse them. Clones share the planner; `Bem` is cheap to clone and `Send + Sync`, and
+/// the lock is held only while a plan is looked up or built, not during a solve.
 #[derive(Clone)]
 pub struct Bem {
     body1: ElasticMaterial,
     body2: ElasticMaterial,
     options: BemOptions,
     estimate: Option<ZoneEstimate>,
+    planner: Arc<Mutex<HalfSpacePlanner>>,
 }
 
 impl std::fmt::Debug for Bem {
@@ -144,7 +153,15 @@ impl std::fmt::Debug for Bem {
             .field("body2", &self.body2)
             .field("options", &self.options)
             .field("estimate", &self.estimate.as_ref().map(|_| "zone estimate"))
+            .field("planner", &self.planner)
             .finish()
+    }
+}
+
+/// Equal materials and options (the zone estimate and the planner, a cache, do not count).
+impl PartialEq for Bem {
+    fn eq(&self, other: &Self) -> bool {
+        self.body1 == other.body1 && self.body2 == other.body2 && self.options == other.options
     }
 }
 
@@ -158,12 +175,32 @@ impl Bem {
         body2: ElasticMaterial,
         options: BemOptions,
     ) -> Result<Self> {
+        Self::with_planner(
+            body1,
+            body2,
+            options,
+            Arc::new(Mutex::new(HalfSpacePlanner::new())),
+        )
+    }
+
+    /// A solver for body 1 against body 2 that takes its plans from `planner` (shared
+    /// with other solvers, e.g. of other load cases on the same grids).
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] for an invalid option.
+    pub fn with_planner(
+        body1: ElasticMaterial,
+        body2: ElasticMaterial,
+        options: BemOptions,
+        planner: Arc<Mutex<HalfSpacePlanner>>,
+    ) -> Result<Self> {
         options.validate()?;
         Ok(Bem {
             body1,
             body2,
             options,
             estimate: None,
+            planner,
         })
     }
 
@@ -175,6 +212,25 @@ impl Bem {
     pub fn with_estimate(mut self, estimate: ZoneEstimate) -> Self {
         self.estimate = Some(estimate);
         self
+    }
+
+    /// The planner that holds this solver's plans (shared by its clones).
+    pub fn planner(&self) -> &Arc<Mutex<HalfSpacePlanner>> {
+        &self.planner
+    }
+
+    /// The half-space solver on `grid` \[mm\], on the planner's plan for its cells and
+    /// spacing.
+    fn solver(&self, grid: Grid2, boundary: Boundary) -> Result<HalfSpaceSolver> {
+        let options = self.options.solver(boundary);
+        let plan: Arc<HalfSpacePlan> = self
+            .planner
+            .lock()
+            // A panic while planning leaves the cache consistent (a plan is inserted
+            // whole or not at all): keep using it.
+            .unwrap_or_else(PoisonError::into_inner)
+            .plan(&grid, self.e_star(), boundary, options.threads)?;
+        HalfSpaceSolver::with_plan_on(grid, plan, options)
     }
 
     /// The options.
@@ -226,8 +282,7 @@ impl Bem {
         control: Control,
         boundary: Boundary,
     ) -> Result<BemSolution> {
-        let mut solver =
-            HalfSpaceSolver::new(*map.grid(), self.e_star(), self.options.solver(boundary))?;
+        let mut solver = self.solver(*map.grid(), boundary)?;
         let report = solver.solve(map.values(), control, Start::Cold)?;
         let report = report.require_converged()?;
         let zone = ContactZone::analyse(map.grid(), solver.pressure())?;
@@ -294,11 +349,7 @@ impl Bem {
             |grid, _| {
                 let mut gap = vec![0.0; grid.len()];
                 source.sample(grid, orientation, &mut gap)?;
-                let mut solver = HalfSpaceSolver::new(
-                    *grid,
-                    self.e_star(),
-                    self.options.solver(Boundary::Free),
-                )?;
+                let mut solver = self.solver(*grid, Boundary::Free)?;
                 let report = solver.solve(&gap, control, Start::Cold)?;
                 let report = report.require_converged()?;
                 let zone = ContactZone::analyse(grid, solver.pressure())?;

@@ -13,24 +13,34 @@
 //! with `h` the undeformed gap \[mm\], `p` the pressure \[MPa\], `δ` the rigid approach
 //! \[mm\] and `F` the normal force \[N\].
 //!
-//! - [`ElasticOperator`]: `u = C p` by FFT with zero padding (free boundary) or periodic,
-//!   planned once, no allocation per application, threads via rayon.
+//! - [`HalfSpacePlan`]: `u = C p` \[mm\] for `p` \[MPa\] by FFT with zero padding (free
+//!   boundary) or periodic. Immutable and `Send + Sync`: FFT plans, kernel spectrum,
+//!   thread pool, shared behind `Arc`. It is applied with a caller-owned
+//!   [`OperatorScratch`] (`apply_with_scratch`, no allocation per application), in the
+//!   style of RustFFT's planner → plan → execute-with-scratch.
+//! - [`HalfSpacePlanner`]: caches plans by cells, spacing, boundary, E* and threads, so
+//!   equal grids share one `Arc<HalfSpacePlan>`. [`ElasticOperator`] is a plan with a
+//!   scratch of its own.
 //! - [`HalfSpaceSolver`]: Polonsky and Keer's constrained conjugate gradients under load
 //!   or displacement control, a Hertz-like cold start, warm starts for the multi-body time
-//!   step, and a stated residual; non-convergence is a status in [`SolveReport`].
+//!   step, and a stated residual; non-convergence is a status in [`SolveReport`]. It
+//!   plans for itself ([`HalfSpaceSolver::new`]) or takes a shared plan
+//!   ([`HalfSpaceSolver::with_plan`]); its scratch and state are its own.
 //! - [`Bem`]: the solver on any [`crate::gap::GapSource`] (PimP's substitute geometry,
 //!   the Hertz gap, two placed surfaces) with a domain that adapts to the contact, or on
-//!   a user [`GapMap`] (CSV or `.npy`).
+//!   a user [`GapMap`] (CSV or `.npy`). It plans each domain once through its planner.
 //!
 //! Derivations, conventions and the memory budget: docs/halfspace.md.
 
 mod contact;
 pub mod influence;
 mod operator;
+mod planner;
 mod solver;
 
 pub use crate::field::domain::MIN_CELLS_ACROSS;
 pub use crate::gap::{GapMap, MapKind};
 pub use contact::{Bem, BemOptions, BemSolution, HalfSpaceDetail, ZoneEstimate};
-pub use operator::{Boundary, ElasticOperator};
+pub use operator::{Boundary, ElasticOperator, HalfSpacePlan, OperatorScratch};
+pub use planner::HalfSpacePlanner;
 pub use solver::{Control, HalfSpaceSolver, SolveReport, SolverOptions, Start};

@@ -1,5 +1,13 @@
 //! The elastic operator `u = K p` by FFT: plan once, apply many times without
-//! allocating.
+//! allocating, share the plan.
+//!
+//! The design follows RustFFT's planner → immutable plan → execute with the caller's
+//! scratch: a [`HalfSpacePlan`] holds everything that depends on the grid only (FFT plans,
+//! kernel spectrum, thread pool) and is immutable, `Send + Sync` and shared behind an
+//! [`Arc`]; an [`OperatorScratch`] holds the work arrays of one caller, so that any number
+//! of solvers (on any threads) apply one plan at once
+//! ([`HalfSpacePlan::apply_with_scratch`]). [`ElasticOperator`] bundles a plan with a
+//! scratch of its own. [`super::HalfSpacePlanner`] caches plans by grid.
 //!
 //! **Free boundary** (an isolated contact): the pressure on the `nx × ny` grid is
 //! zero-padded to `2nx × 2ny` and circularly convolved with Love's coefficients laid out
@@ -15,7 +23,7 @@
 //! the columns, transforms them along `y`, multiplies by the (real, symmetric) kernel
 //! spectrum, transforms back and keeps the `ny` data rows, then an inverse real FFT along
 //! `x` of the `ny` data rows. Rows and column blocks are shared among threads (rayon).
-//! All buffers are allocated in [`ElasticOperator::new`].
+//! All buffers are allocated with the [`OperatorScratch`].
 
 use crate::error::{Error, Result};
 use crate::geometry::Grid2;
@@ -29,7 +37,7 @@ use std::sync::Arc;
 use super::influence::quadrant_table;
 
 /// How the grid's edges behave.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Boundary {
     /// An isolated contact on an unbounded half-space (zero padding to `2n`).
@@ -53,16 +61,53 @@ struct Workspace {
     scratch: Vec<Complex<f64>>,
 }
 
-/// Threading of the operator: serial, or a pool of its own. The solver runs its whole
-/// iteration inside the pool (see [`ElasticOperator::pool`]), so the serial passes between
-/// two FFTs do not compete with the pool's workers for the cores.
+/// Threading of a plan: serial, or a pool of its own.
+///
+/// The pool lives in the plan, not in the solver: the plan decides how the passes are
+/// split into tasks (`rows_per_task`, `cols_per_task`, the number of workspaces), which
+/// must match the pool's size, and solvers that share a plan then share one pool instead
+/// of starting `threads` OS threads each (four solvers of a multi-body model on a 2-core
+/// machine would otherwise run 4 pools of 2 threads). A solver runs its whole iteration
+/// inside this pool ([`HalfSpacePlan::pool`]), so the serial passes between two FFTs do
+/// not compete with the pool's workers for the cores. `rayon::ThreadPool` is
+/// `Send + Sync`, and concurrent `install`s from several threads are queued by rayon.
 enum Threads {
     Serial,
     Pool(Arc<rayon::ThreadPool>),
 }
 
-/// The planned elastic operator of one grid: `u = K p` \[mm\] for `p` \[MPa\].
-pub struct ElasticOperator {
+/// The sizes of the work arrays a plan needs; a scratch fits a plan when they are equal.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct Layout {
+    /// Row spectra (and column results): `ny · kx`.
+    spectra: usize,
+    /// Workspaces: one per task.
+    tasks: usize,
+    /// Length of a workspace's real row (`mx`).
+    row: usize,
+    /// Length of a workspace's block (`BLOCK · max(my, kx)`).
+    block: usize,
+    /// Length of a workspace's FFT scratch.
+    fft_scratch: usize,
+}
+
+/// The immutable plan of the elastic operator of one grid: `u = K p` \[mm\] for `p`
+/// \[MPa\], for the cells and spacing \[mm\] of a grid, one boundary mode and one
+/// contact modulus E* \[MPa\].
+///
+/// It holds the FFT plans, the kernel spectrum and the thread pool, and no work array:
+/// it is `Send + Sync`, shared behind an [`Arc`] by any number of solvers, each applying
+/// it with its own [`OperatorScratch`] ([`HalfSpacePlan::apply_with_scratch`]). Plan it
+/// with [`HalfSpacePlan::new`], or through a [`super::HalfSpacePlanner`] that returns the
+/// same plan for equal grids.
+///
+/// The kernel is built for the plan's E*, exactly as a solver of its own would build it,
+/// so a shared plan gives bit-identical results. (The kernel is proportional to 1/E*: a
+/// plan at unit E* scaled per body would serve every material pair, but it would change
+/// the last bits of the results, so it is not done.)
+pub struct HalfSpacePlan {
+    grid: Grid2,
+    e_star: f64,
     nx: usize,
     ny: usize,
     mx: usize,
@@ -75,25 +120,60 @@ pub struct ElasticOperator {
     col_inv: Arc<dyn Fft<f64>>,
     /// Kernel spectrum, real, column-major `[k * my + j]`, including `1/(mx·my)`.
     kernel: Vec<f64>,
+    rows_per_task: usize,
+    cols_per_task: usize,
+    layout: Layout,
+    /// The thread count asked for (`None` resolved to rayon's), before the small-grid
+    /// rule: part of the planner's key.
+    threads_requested: usize,
+    threads: Threads,
+}
+
+impl std::fmt::Debug for HalfSpacePlan {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("HalfSpacePlan")
+            .field("nx", &self.nx)
+            .field("ny", &self.ny)
+            .field("padded", &[self.mx, self.my])
+            .field("spacing", &[self.grid.dx(), self.grid.dy()])
+            .field("boundary", &self.boundary)
+            .field("e_star", &self.e_star)
+            .field("threads", &self.threads())
+            .field("tasks", &self.layout.tasks)
+            .finish()
+    }
+}
+
+/// The work arrays of one caller of a [`HalfSpacePlan`]: row spectra, column results
+/// and one workspace per task. Make it with [`HalfSpacePlan::scratch`]; it fits every
+/// plan of the same cells, boundary and threads.
+pub struct OperatorScratch {
+    layout: Layout,
     /// Row spectra of the data rows, `[j * kx + k]`.
     rows: Vec<Complex<f64>>,
     /// Column results for the data rows, `[k * ny + j]`.
     cols: Vec<Complex<f64>>,
     work: Vec<Workspace>,
-    rows_per_task: usize,
-    cols_per_task: usize,
-    threads: Threads,
 }
 
-impl std::fmt::Debug for ElasticOperator {
+impl std::fmt::Debug for OperatorScratch {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("ElasticOperator")
-            .field("nx", &self.nx)
-            .field("ny", &self.ny)
-            .field("padded", &[self.mx, self.my])
-            .field("boundary", &self.boundary)
-            .field("tasks", &self.work.len())
+        f.debug_struct("OperatorScratch")
+            .field("layout", &self.layout)
             .finish()
+    }
+}
+
+impl OperatorScratch {
+    /// Bytes held by the work arrays.
+    pub fn memory_bytes(&self) -> usize {
+        let c = std::mem::size_of::<Complex<f64>>();
+        (self.rows.len() + self.cols.len()) * c
+            + self
+                .work
+                .iter()
+                .map(|w| w.row.len() * 8 + (w.block.len() + w.scratch.len()) * c)
+                .sum::<usize>()
     }
 }
 
@@ -110,11 +190,24 @@ fn signed(i: usize, m: usize) -> f64 {
 /// hand-over costs more than it saves (measured in benches/halfspace.rs).
 const PARALLEL_MIN_CELLS: usize = 96 * 96;
 
-impl ElasticOperator {
-    /// Plan the operator for `grid`, contact modulus `e_star` \[MPa\] and `boundary`.
-    /// `threads`: `Some(1)` runs serially, `Some(n)` builds a pool of `n` threads, `None`
-    /// a pool of as many threads as rayon's global pool (all cores). Grids below 96 × 96
-    /// cells always run serially.
+/// The thread count a request resolves to: `Some(n)` is `n`, `None` rayon's current
+/// count (all cores, or the size of the pool the caller runs in).
+///
+/// # Errors
+/// [`Error::InvalidInput`] for `Some(0)`.
+pub(super) fn resolve_threads(threads: Option<usize>) -> Result<usize> {
+    match threads {
+        Some(0) => Err(Error::invalid("threads", 0, ">= 1 thread, or unset")),
+        Some(n) => Ok(n),
+        None => Ok(rayon::current_num_threads()),
+    }
+}
+
+impl HalfSpacePlan {
+    /// Plan the operator for `grid` \[mm\], contact modulus `e_star` \[MPa\] and
+    /// `boundary`. `threads`: `Some(1)` runs serially, `Some(n)` builds a pool of `n`
+    /// threads, `None` a pool of as many threads as rayon's global pool (all cores).
+    /// Grids below 96 × 96 cells always run serially.
     ///
     /// # Errors
     /// [`Error::InvalidInput`] for a non-positive modulus or `threads == Some(0)`.
@@ -123,19 +216,25 @@ impl ElasticOperator {
         e_star: f64,
         boundary: Boundary,
         threads: Option<usize>,
-    ) -> Result<Self> {
+    ) -> Result<Arc<Self>> {
         crate::error::positive_as("e_star", e_star, "a finite contact modulus > 0 MPa")?;
+        let wanted = resolve_threads(threads)?;
+        Self::build(grid, e_star, boundary, wanted).map(Arc::new)
+    }
+
+    /// Plan for a resolved thread count `wanted >= 1` and a checked modulus.
+    pub(super) fn build(
+        grid: &Grid2,
+        e_star: f64,
+        boundary: Boundary,
+        wanted: usize,
+    ) -> Result<Self> {
         let (nx, ny) = (grid.nx(), grid.ny());
         let (mx, my) = match boundary {
             Boundary::Free => (2 * nx, 2 * ny),
             Boundary::Periodic => (nx, ny),
         };
         let kx = mx / 2 + 1;
-        let wanted = match threads {
-            Some(0) => return Err(Error::invalid("threads", 0, ">= 1 thread, or unset")),
-            Some(n) => n,
-            None => rayon::current_num_threads(),
-        };
         let threads = if wanted <= 1 || nx * ny < PARALLEL_MIN_CELLS {
             Threads::Serial
         } else {
@@ -172,14 +271,16 @@ impl ElasticOperator {
         let n_work = tasks
             .max(ny.div_ceil(rows_per_task))
             .max(kx.div_ceil(cols_per_task));
-        let work = (0..n_work)
-            .map(|_| Workspace {
-                row: vec![0.0; mx],
-                block: vec![Complex::default(); BLOCK * my.max(kx)],
-                scratch: vec![Complex::default(); scratch_len],
-            })
-            .collect();
-        let mut op = ElasticOperator {
+        let layout = Layout {
+            spectra: ny * kx,
+            tasks: n_work,
+            row: mx,
+            block: BLOCK * my.max(kx),
+            fft_scratch: scratch_len,
+        };
+        let mut plan = HalfSpacePlan {
+            grid: *grid,
+            e_star,
             nx,
             ny,
             mx,
@@ -191,15 +292,14 @@ impl ElasticOperator {
             col_fwd,
             col_inv,
             kernel: vec![0.0; kx * my],
-            rows: vec![Complex::default(); ny * kx],
-            cols: vec![Complex::default(); kx * ny],
-            work,
             rows_per_task,
             cols_per_task,
+            layout,
+            threads_requested: wanted,
             threads,
         };
-        op.plan_kernel(grid.dx(), grid.dy(), e_star);
-        Ok(op)
+        plan.plan_kernel(grid.dx(), grid.dy(), e_star);
+        Ok(plan)
     }
 
     /// Fill the kernel spectrum.
@@ -220,12 +320,13 @@ impl ElasticOperator {
                     for (i, r) in row.iter_mut().enumerate() {
                         *r = q[signed(i, mx).abs() as usize];
                     }
-                    // Lengths match the plan, so the transform cannot fail.
-                    let _ = self.r2c.process_with_scratch(
-                        &mut row,
-                        &mut spec[j * kx..(j + 1) * kx],
-                        &mut scratch,
-                    );
+                    self.r2c
+                        .process_with_scratch(
+                            &mut row,
+                            &mut spec[j * kx..(j + 1) * kx],
+                            &mut scratch,
+                        )
+                        .expect("invariant: lengths match the plan");
                 }
                 let mut col = vec![Complex::default(); my];
                 let mut cs = vec![Complex::default(); self.col_fwd.get_inplace_scratch_len()];
@@ -259,13 +360,71 @@ impl ElasticOperator {
         }
     }
 
-    /// The operator's thread pool, if it has one: run a whole solve inside it
+    /// New work arrays for applying this plan (and every plan of the same cells,
+    /// boundary and threads).
+    pub fn scratch(&self) -> OperatorScratch {
+        let l = self.layout;
+        OperatorScratch {
+            layout: l,
+            rows: vec![Complex::default(); l.spectra],
+            cols: vec![Complex::default(); l.spectra],
+            work: (0..l.tasks)
+                .map(|_| Workspace {
+                    row: vec![0.0; l.row],
+                    block: vec![Complex::default(); l.block],
+                    scratch: vec![Complex::default(); l.fft_scratch],
+                })
+                .collect(),
+        }
+    }
+
+    /// Whether `scratch` fits this plan.
+    pub fn fits(&self, scratch: &OperatorScratch) -> bool {
+        scratch.layout == self.layout
+    }
+
+    /// The plan's thread pool, if it has one: run a whole solve inside it
     /// (`pool.install`) so that the serial work between FFTs runs on a pool thread.
     pub fn pool(&self) -> Option<Arc<rayon::ThreadPool>> {
         match &self.threads {
             Threads::Serial => None,
             Threads::Pool(p) => Some(Arc::clone(p)),
         }
+    }
+
+    /// Threads the passes run on (1 when serial).
+    pub fn threads(&self) -> usize {
+        match &self.threads {
+            Threads::Serial => 1,
+            Threads::Pool(p) => p.current_num_threads(),
+        }
+    }
+
+    /// The thread count the plan was asked for (`None` resolved to all cores), before
+    /// small grids fall back to one thread.
+    pub fn threads_requested(&self) -> usize {
+        self.threads_requested
+    }
+
+    /// The grid \[mm\] the plan was made for. The operator depends on its cells and
+    /// spacing only, so the plan serves every grid of the same cells and spacing
+    /// ([`HalfSpacePlan::serves`]).
+    pub fn grid(&self) -> &Grid2 {
+        &self.grid
+    }
+
+    /// Whether the plan is the operator of `grid` \[mm\]: equal cells and bit-equal
+    /// spacing (the origin does not enter the operator).
+    pub fn serves(&self, grid: &Grid2) -> bool {
+        grid.nx() == self.nx
+            && grid.ny() == self.ny
+            && grid.dx().to_bits() == self.grid.dx().to_bits()
+            && grid.dy().to_bits() == self.grid.dy().to_bits()
+    }
+
+    /// The contact modulus E* \[MPa\] the kernel was built for.
+    pub fn e_star(&self) -> f64 {
+        self.e_star
     }
 
     /// Cells `[nx, ny]` of the grid.
@@ -278,24 +437,38 @@ impl ElasticOperator {
         self.boundary
     }
 
-    /// Bytes held by the plan (kernel spectrum, transposition buffers, workspaces).
+    /// Bytes held by the plan (the kernel spectrum; the FFT plans' twiddles are not
+    /// counted). The work arrays are in [`OperatorScratch::memory_bytes`].
     pub fn memory_bytes(&self) -> usize {
-        let c = std::mem::size_of::<Complex<f64>>();
         self.kernel.len() * 8
-            + (self.rows.len() + self.cols.len()) * c
-            + self
-                .work
-                .iter()
-                .map(|w| w.row.len() * 8 + (w.block.len() + w.scratch.len()) * c)
-                .sum::<usize>()
     }
 
-    /// `u = K p`: the displacement \[mm\] of the two-body system for the cell pressures
-    /// `p` \[MPa\] (both row-major, x fastest, length `nx·ny`). Allocates nothing.
+    /// `u = K p` with newly allocated work arrays: the displacement \[mm\] of the
+    /// two-body system for the cell pressures `p` \[MPa\] (both row-major, x fastest,
+    /// length `nx·ny`). For repeated applications keep an [`OperatorScratch`] and call
+    /// [`HalfSpacePlan::apply_with_scratch`], which allocates nothing.
     ///
     /// # Errors
     /// [`Error::InvalidInput`] when a length differs from `nx·ny`.
-    pub fn apply(&mut self, p: &[f64], u: &mut [f64]) -> Result<()> {
+    pub fn apply(&self, p: &[f64], u: &mut [f64]) -> Result<()> {
+        let mut scratch = self.scratch();
+        self.apply_with_scratch(p, u, &mut scratch)
+    }
+
+    /// `u = K p`: the displacement \[mm\] of the two-body system for the cell pressures
+    /// `p` \[MPa\] (both row-major, x fastest, length `nx·ny`), using the caller's work
+    /// arrays. Allocates nothing; several threads may apply one plan at once, each with
+    /// its own scratch.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] when a length differs from `nx·ny` or `scratch` was made
+    /// for a plan of other cells, boundary or threads.
+    pub fn apply_with_scratch(
+        &self,
+        p: &[f64],
+        u: &mut [f64],
+        scratch: &mut OperatorScratch,
+    ) -> Result<()> {
         let n = self.nx * self.ny;
         for (field, len) in [("pressure", p.len()), ("displacement", u.len())] {
             if len != n {
@@ -306,7 +479,21 @@ impl ElasticOperator {
                 ));
             }
         }
-        let ElasticOperator {
+        if !self.fits(scratch) {
+            return Err(Error::invalid(
+                "scratch",
+                format!("work arrays for {:?}", scratch.layout),
+                format!(
+                    "the work arrays of this plan ({} x {} cells, {:?}, {} threads): \
+                     HalfSpacePlan::scratch",
+                    self.nx,
+                    self.ny,
+                    self.boundary,
+                    self.threads()
+                ),
+            ));
+        }
+        let HalfSpacePlan {
             nx,
             ny,
             mx,
@@ -317,14 +504,14 @@ impl ElasticOperator {
             col_fwd,
             col_inv,
             kernel,
-            rows,
-            cols,
-            work,
             rows_per_task,
             cols_per_task,
             threads,
             ..
         } = self;
+        let OperatorScratch {
+            rows, cols, work, ..
+        } = scratch;
         let (nx, ny, mx, my, kx) = (*nx, *ny, *mx, *my, *kx);
         let (rpt, cpt) = (*rows_per_task, *cols_per_task);
         let forward = |((spec, input), w): ((&mut [Complex<f64>], &[f64]), &mut Workspace)| {
@@ -337,7 +524,8 @@ impl ElasticOperator {
                 }
                 w.row[..nx].copy_from_slice(x);
                 w.row[nx..].fill(0.0);
-                let _ = r2c.process_with_scratch(&mut w.row, s, &mut w.scratch);
+                r2c.process_with_scratch(&mut w.row, s, &mut w.scratch)
+                    .expect("invariant: lengths match the plan");
             }
         };
         match threads {
@@ -416,7 +604,8 @@ impl ElasticOperator {
                     if even {
                         spec[kx - 1].im = 0.0;
                     }
-                    let _ = c2r.process_with_scratch(spec, &mut w.row, &mut w.scratch);
+                    c2r.process_with_scratch(spec, &mut w.row, &mut w.scratch)
+                        .expect("invariant: lengths match the plan");
                     out[(b0 + b) * nx..(b0 + b + 1) * nx].copy_from_slice(&w.row[..nx]);
                 }
             }
@@ -435,6 +624,71 @@ impl ElasticOperator {
             }),
         }
         Ok(())
+    }
+}
+
+/// A [`HalfSpacePlan`] with work arrays of its own: `u = K p` \[mm\] for `p` \[MPa\]
+/// through `&mut self`, the shape of the operator before plans could be shared.
+#[derive(Debug)]
+pub struct ElasticOperator {
+    plan: Arc<HalfSpacePlan>,
+    scratch: OperatorScratch,
+}
+
+impl ElasticOperator {
+    /// Plan the operator for `grid` \[mm\], contact modulus `e_star` \[MPa\] and
+    /// `boundary` (see [`HalfSpacePlan::new`] for `threads`).
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] for a non-positive modulus or `threads == Some(0)`.
+    pub fn new(
+        grid: &Grid2,
+        e_star: f64,
+        boundary: Boundary,
+        threads: Option<usize>,
+    ) -> Result<Self> {
+        HalfSpacePlan::new(grid, e_star, boundary, threads).map(Self::from_plan)
+    }
+
+    /// The operator of a (shared) plan, with new work arrays.
+    pub fn from_plan(plan: Arc<HalfSpacePlan>) -> Self {
+        let scratch = plan.scratch();
+        ElasticOperator { plan, scratch }
+    }
+
+    /// The shared plan.
+    pub fn plan(&self) -> &Arc<HalfSpacePlan> {
+        &self.plan
+    }
+
+    /// The plan's thread pool, if it has one (see [`HalfSpacePlan::pool`]).
+    pub fn pool(&self) -> Option<Arc<rayon::ThreadPool>> {
+        self.plan.pool()
+    }
+
+    /// Cells `[nx, ny]` of the grid.
+    pub fn cells(&self) -> [usize; 2] {
+        self.plan.cells()
+    }
+
+    /// The boundary mode.
+    pub fn boundary(&self) -> Boundary {
+        self.plan.boundary()
+    }
+
+    /// Bytes held by the plan and the work arrays (kernel spectrum, transposition
+    /// buffers, workspaces).
+    pub fn memory_bytes(&self) -> usize {
+        self.plan.memory_bytes() + self.scratch.memory_bytes()
+    }
+
+    /// `u = K p`: the displacement \[mm\] of the two-body system for the cell pressures
+    /// `p` \[MPa\] (both row-major, x fastest, length `nx·ny`). Allocates nothing.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] when a length differs from `nx·ny`.
+    pub fn apply(&mut self, p: &[f64], u: &mut [f64]) -> Result<()> {
+        self.plan.apply_with_scratch(p, u, &mut self.scratch)
     }
 }
 

@@ -1,11 +1,12 @@
-//! The constrained conjugate-gradient solver of Polonsky and Keer (1999) on a planned
-//! [`ElasticOperator`]: plan once, solve many, no allocation per iteration.
+//! The constrained conjugate-gradient solver of Polonsky and Keer (1999) on a shared
+//! [`HalfSpacePlan`]: plan once, solve many, no allocation per iteration.
 
-use super::operator::{Boundary, ElasticOperator};
+use super::operator::{Boundary, HalfSpacePlan, OperatorScratch};
 use crate::error::{Error, Result};
 use crate::geometry::Grid2;
 use crate::solve::{SolveStatus, Termination};
 use serde::{Deserialize, Serialize};
+use std::sync::Arc;
 
 /// What a solve holds fixed: the crate's one load-control type (force or approach; a
 /// line load is refused).
@@ -34,9 +35,10 @@ pub struct SolverOptions {
     /// Most iterations, >= 1 (default 1000). A solve also stops, unconverged, when the
     /// residual has not reached a new low for 200 iterations (round-off floor).
     pub max_iterations: usize,
-    /// Threads of the FFT passes: unset uses all cores, 1 runs serially.
+    /// Threads of the FFT passes: unset uses all cores, 1 runs serially. Used when the
+    /// solver plans ([`HalfSpaceSolver::new`]); a shared plan brings its own threads.
     pub threads: Option<usize>,
-    /// Free (isolated contact) or periodic edges.
+    /// Free (isolated contact) or periodic edges; must match a shared plan's.
     pub boundary: Boundary,
 }
 
@@ -110,13 +112,16 @@ impl SolveReport {
     }
 }
 
-/// A half-space contact solver for one grid: the FFT plan and every work array.
+/// A half-space contact solver for one grid: a (possibly shared) FFT plan, the
+/// operator's work arrays and the solver's own state (pressure, displacement, the warm
+/// start's estimate).
 #[derive(Debug)]
 pub struct HalfSpaceSolver {
     grid: Grid2,
     e_star: f64,
     options: SolverOptions,
-    op: ElasticOperator,
+    plan: Arc<HalfSpacePlan>,
+    scratch: OperatorScratch,
     p: Vec<f64>,
     u: Vec<f64>,
     g: Vec<f64>,
@@ -143,13 +148,70 @@ impl HalfSpaceSolver {
     /// [`Error::InvalidInput`] for a non-positive modulus or an invalid option.
     pub fn new(grid: Grid2, e_star: f64, options: SolverOptions) -> Result<Self> {
         options.validate()?;
-        let op = ElasticOperator::new(&grid, e_star, options.boundary, options.threads)?;
+        let plan = HalfSpacePlan::new(&grid, e_star, options.boundary, options.threads)?;
+        Self::with_plan_on(grid, plan, options)
+    }
+
+    /// A solver on a shared `plan` (from [`HalfSpacePlan::new`] or a
+    /// [`super::HalfSpacePlanner`]), on the plan's grid \[mm\] and for its contact modulus
+    /// \[MPa\]. The solver keeps its own work arrays and state, so solvers sharing a plan
+    /// may solve on different threads at once.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] for an invalid option or a boundary other than the plan's.
+    pub fn with_plan(plan: Arc<HalfSpacePlan>, options: SolverOptions) -> Result<Self> {
+        let grid = *plan.grid();
+        Self::with_plan_on(grid, plan, options)
+    }
+
+    /// A solver on `grid` \[mm\] with a shared `plan` of the same cells and spacing (the
+    /// origin may differ: the operator does not depend on it), for the plan's contact
+    /// modulus \[MPa\]. `options.threads` is not used: the plan brings its threads.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] for an invalid option, a boundary other than the plan's, or
+    /// a grid of other cells or spacing.
+    pub fn with_plan_on(
+        grid: Grid2,
+        plan: Arc<HalfSpacePlan>,
+        options: SolverOptions,
+    ) -> Result<Self> {
+        options.validate()?;
+        if options.boundary != plan.boundary() {
+            return Err(Error::invalid(
+                "boundary",
+                format!("{:?}", options.boundary),
+                format!("the shared plan's boundary ({:?})", plan.boundary()),
+            ));
+        }
+        if !plan.serves(&grid) {
+            let g = plan.grid();
+            return Err(Error::invalid(
+                "grid",
+                format!(
+                    "{} x {} cells of {:e} x {:e} mm",
+                    grid.nx(),
+                    grid.ny(),
+                    grid.dx(),
+                    grid.dy()
+                ),
+                format!(
+                    "the shared plan's {} x {} cells of {:e} x {:e} mm",
+                    g.nx(),
+                    g.ny(),
+                    g.dx(),
+                    g.dy()
+                ),
+            ));
+        }
         let n = grid.len();
+        let scratch = plan.scratch();
         Ok(HalfSpaceSolver {
             grid,
-            e_star,
+            e_star: plan.e_star(),
             options,
-            op,
+            plan,
+            scratch,
             p: vec![0.0; n],
             u: vec![0.0; n],
             g: vec![0.0; n],
@@ -191,9 +253,15 @@ impl HalfSpaceSolver {
         &self.g
     }
 
-    /// Bytes held by the solver: the FFT plan plus six fields of `nx·ny` values.
+    /// The (shared) plan.
+    pub fn plan(&self) -> &Arc<HalfSpacePlan> {
+        &self.plan
+    }
+
+    /// Bytes held by the solver: the FFT plan (counted whole, also when shared), the
+    /// operator's work arrays and six fields of `nx·ny` values.
     pub fn memory_bytes(&self) -> usize {
-        self.op.memory_bytes() + 6 * 8 * self.grid.len()
+        self.plan.memory_bytes() + self.scratch.memory_bytes() + 6 * 8 * self.grid.len()
     }
 
     /// Solve the contact for the undeformed gap `gap` \[mm\] (row-major, x fastest; `>= 0`
@@ -273,9 +341,9 @@ impl HalfSpaceSolver {
                 self.p.copy_from_slice(&self.guess);
             }
         }
-        // The whole iteration runs on the operator's pool (when it has one), so the serial
+        // The whole iteration runs on the plan's pool (when it has one), so the serial
         // passes between FFTs do not compete with idle-spinning workers for the cores.
-        let report = match self.op.pool() {
+        let report = match self.plan.pool() {
             Some(pool) => pool.install(|| self.iterate(gap, control))?,
             None => self.iterate(gap, control)?,
         };
@@ -296,8 +364,16 @@ impl HalfSpaceSolver {
         let tol = self.options.tolerance;
         let da = self.grid.cell_area();
         let HalfSpaceSolver {
-            op, p, u, g, t, r, ..
+            plan,
+            scratch,
+            p,
+            u,
+            g,
+            t,
+            r,
+            ..
         } = self;
+        let plan: &HalfSpacePlan = plan;
         let mut u_valid = false;
         let mut since_refresh = 0usize;
         let mut g_old = 0.0f64;
@@ -310,7 +386,7 @@ impl HalfSpaceSolver {
         let (mut best_residual, mut best_at) = (f64::INFINITY, 0usize);
         loop {
             if !u_valid || since_refresh >= REFRESH_EVERY {
-                op.apply(p, u)?;
+                plan.apply_with_scratch(p, u, scratch)?;
                 applications += 1;
                 u_valid = true;
                 since_refresh = 0;
@@ -392,7 +468,7 @@ impl HalfSpaceSolver {
             for i in 0..p.len() {
                 t[i] = if p[i] > 0.0 { g[i] + beta * t[i] } else { 0.0 };
             }
-            op.apply(t, r)?;
+            plan.apply_with_scratch(t, r, scratch)?;
             applications += 1;
             since_refresh += 1;
             // One pass for the step length: τ = Σ g t / Σ (r - r̄) t over the loaded set,
