@@ -271,9 +271,7 @@ fn bench_multibody_shared(c: &mut Criterion) {
     group.sample_size(20);
     group.warm_up_time(Duration::from_millis(500));
     group.measurement_time(Duration::from_secs(2));
-    group.bench_function("setup_4_bodies", |b| {
-        b.iter(|| bodies(black_box(g), tol))
-    });
+    group.bench_function("setup_4_bodies", |b| b.iter(|| bodies(black_box(g), tol)));
     let mut solvers = bodies(g, tol);
     for (s, gap) in solvers.iter_mut().zip(&gaps) {
         s.solve(gap, Control::Force(LOAD), Start::Cold)

@@ -1191,8 +1191,7 @@ fn a_plan_shared_by_two_solvers_on_two_threads_equals_separate_plans() {
             let handles: Vec<_> = gaps
                 .iter()
                 .map(|g| {
-                    let s = HalfSpaceSolver::with_plan(std::sync::Arc::clone(&plan), opts)
-                        .unwrap();
+                    let s = HalfSpaceSolver::with_plan(std::sync::Arc::clone(&plan), opts).unwrap();
                     scope.spawn(move || run(s, g))
                 })
                 .collect();
@@ -1219,10 +1218,11 @@ fn plan_apply_with_and_without_scratch_agree() {
     let grid = Grid2::centered(0.4, 0.3, 24, 20).unwrap();
     let p = sphere_gap(&grid, [0.1, 0.0]);
     let plan = HalfSpacePlan::new(&grid, e_star(), Boundary::Free, Some(1)).unwrap();
-    let (mut u1, mut u2, mut u3) = (vec![0.0; grid.len()], vec![0.0; grid.len()], vec![
-        0.0;
-        grid.len()
-    ]);
+    let (mut u1, mut u2, mut u3) = (
+        vec![0.0; grid.len()],
+        vec![0.0; grid.len()],
+        vec![0.0; grid.len()],
+    );
     plan.apply(&p, &mut u1).unwrap();
     let mut scratch = plan.scratch();
     plan.apply_with_scratch(&p, &mut u2, &mut scratch).unwrap();
@@ -1261,8 +1261,18 @@ fn the_planner_shares_plans_of_equal_keys_only() {
     assert_eq!(planner.len(), 1);
     assert_eq!(planner.plans_built(), 1);
     let others = [
-        (Grid2::centered(0.5, 0.4, 32, 25).unwrap(), e, Boundary::Free, Some(1)),
-        (Grid2::centered(0.5, 0.41, 32, 24).unwrap(), e, Boundary::Free, Some(1)),
+        (
+            Grid2::centered(0.5, 0.4, 32, 25).unwrap(),
+            e,
+            Boundary::Free,
+            Some(1),
+        ),
+        (
+            Grid2::centered(0.5, 0.41, 32, 24).unwrap(),
+            e,
+            Boundary::Free,
+            Some(1),
+        ),
         (g, e, Boundary::Periodic, Some(1)),
         (g, 0.5 * e, Boundary::Free, Some(1)),
         (g, e, Boundary::Free, Some(2)),
@@ -1289,7 +1299,10 @@ fn the_planner_shares_plans_of_equal_keys_only() {
     small.plan(&g, e, Boundary::Free, Some(1)).unwrap(); // g is now the most recent
     small.plan(&g3, e, Boundary::Free, Some(1)).unwrap(); // forgets g2
     assert_eq!(small.len(), 2);
-    assert!(Arc::ptr_eq(&first, &small.plan(&g, e, Boundary::Free, Some(1)).unwrap()));
+    assert!(Arc::ptr_eq(
+        &first,
+        &small.plan(&g, e, Boundary::Free, Some(1)).unwrap()
+    ));
     assert_eq!(small.plans_built(), 3);
     small.plan(&g2, e, Boundary::Free, Some(1)).unwrap();
     assert_eq!(small.plans_built(), 4);
@@ -1347,10 +1360,20 @@ fn bem_reuses_its_plans_across_calls() {
     assert_eq!(first, third);
 
     let grid = Grid2::centered(0.24, 0.24, 24, 24).unwrap();
-    let map = GapMap::new(24, 24, [grid.dx(), grid.dy()], sphere_gap(&grid, [0.0; 2]), MapKind::Gap)
+    let map = GapMap::new(
+        24,
+        24,
+        [grid.dx(), grid.dy()],
+        sphere_gap(&grid, [0.0; 2]),
+        MapKind::Gap,
+    )
+    .unwrap();
+    let m1 = bem
+        .solve_map(&map, Control::Force(30.0), Boundary::Free)
         .unwrap();
-    let m1 = bem.solve_map(&map, Control::Force(30.0), Boundary::Free).unwrap();
-    let m2 = bem.solve_map(&map, Control::Force(30.0), Boundary::Free).unwrap();
+    let m2 = bem
+        .solve_map(&map, Control::Force(30.0), Boundary::Free)
+        .unwrap();
     assert_eq!(built(), after_first + 1);
     assert_eq!(m1, m2);
 }
