@@ -5,11 +5,11 @@
 
 use crate::error::{Error, Result, positive_as};
 use crate::units::{Millimetre, Newton};
-use serde::{Deserialize, Serialize};
 
 /// The load control of a normal-contact solve.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum LoadControl {
     /// The normal force \[N\], > 0 (load control).
     Force(Newton),

@@ -10,13 +10,13 @@
 
 use crate::error::{Error, Result};
 use crate::units::Megapascal;
-use serde::Serialize;
 
 /// A linear-elastic isotropic material.
 ///
 /// Construct with [`ElasticMaterial::new`], which validates `E > 0` (finite) and
 /// `-1 < nu <= 0.5`.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct ElasticMaterial {
     youngs_modulus: Megapascal,
     poisson_ratio: f64,

@@ -7,12 +7,12 @@
 //! [`SolveStatus::require_converged`] or by inspecting [`Termination`].
 
 use crate::error::{Error, Result};
-use serde::{Deserialize, Serialize};
 use std::borrow::Cow;
 
 /// The reason an iteration stopped.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Termination {
     /// The residual reached the tolerance.
     Converged,
@@ -45,7 +45,8 @@ impl std::fmt::Display for Termination {
 
 /// How an iterative solve ended: the reason, the iterations it took and the final
 /// residual in the solver's own documented measure (dimensionless).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SolveStatus {
     /// Why the iteration stopped.
     pub termination: Termination,

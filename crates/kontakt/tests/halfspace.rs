@@ -1349,7 +1349,10 @@ fn bem_reuses_its_plans_across_calls() {
     let after_first = built();
     // One plan per distinct grid of the adaptive rounds (rounds on grids of equal cells
     // and spacing share one).
-    assert!(after_first >= 1 && after_first <= first.domains, "{after_first} plans");
+    assert!(
+        after_first >= 1 && after_first <= first.domains,
+        "{after_first} plans"
+    );
     let second = bem.solve_force(&gap, LOAD).unwrap();
     assert_eq!(built(), after_first, "the second call planned again");
     assert_eq!(first, second);

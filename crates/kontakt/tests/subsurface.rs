@@ -458,6 +458,7 @@ fn johnson_first_yield_loads_are_reproduced() {
     assert!((pm / pj - 1.149).abs() < 0.005, "{pm} vs {pj}");
 }
 
+#[cfg(feature = "serde")]
 #[test]
 fn yield_criterion_serde_names() {
     let s = serde_json::to_string(&YieldCriterion::VonMises).expect("serializes");

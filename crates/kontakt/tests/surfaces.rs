@@ -277,6 +277,7 @@ fn ray_constructor_validates() {
     );
 }
 
+#[cfg(feature = "serde")]
 #[test]
 fn surfaces_round_trip_through_toml() {
     let cases = [

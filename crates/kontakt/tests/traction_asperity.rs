@@ -1000,6 +1000,7 @@ fn bad_slide_to_roll_names_its_field() {
 // ---------------------------------------------------------------------------------------
 
 /// The thesis' circular case as a TOML table, with unit-suffixed keys.
+#[cfg(feature = "serde")]
 #[test]
 fn params_from_toml() {
     let text = r#"

@@ -45,6 +45,7 @@ fn a_status_that_did_not_converge_becomes_an_error_that_says_why() {
         );
     }
     assert_eq!(Termination::MaxIterations.as_str(), "max_iterations");
+    #[cfg(feature = "serde")]
     assert_eq!(
         serde_json::to_value(Termination::Stagnated).unwrap(),
         serde_json::json!("stagnated")

@@ -18,13 +18,13 @@ use crate::geometry::Grid2;
 use crate::hertz::{HertzPointContact, PointGeometry};
 use crate::material::ElasticMaterial;
 use crate::pimp::{GapSource, Mode, Pimp, PimpOptions, SurfacePairGap};
-use serde::Serialize;
 
 use super::{RollerRib, RollerRibSpec, TABLE1};
 
 /// One row of the demo study: one pairing, one bedding law, one force. Field names are
 /// the columns of the demo's `results.csv`.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct DemoRow {
     /// Pairing name (Wirsching et al. 2020, Table 1).
     pub pairing: &'static str,
@@ -55,7 +55,8 @@ pub struct DemoRow {
 }
 
 /// The corrected PimP pressure field of one pairing at the study's largest force.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct DemoMap {
     /// Pairing name.
     pub pairing: &'static str,
@@ -68,7 +69,8 @@ pub struct DemoMap {
 }
 
 /// The result of [`demo_study`].
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct DemoStudy {
     /// Rows in the order pairing (Table 1), mode (corrected, published), force (as given).
     pub rows: Vec<DemoRow>,

@@ -24,7 +24,6 @@ use crate::geometry::contact_point::ContactPoint;
 use crate::geometry::surface::{Material, PlacedSurface, Surface};
 use crate::units::Millimetre;
 use nalgebra::{Isometry3, Point3, Translation3, Unit, UnitQuaternion, Vector3};
-use serde::{Deserialize, Serialize};
 
 /// A tapered roller bearing's section data needed for the roller/rib contact.
 ///
@@ -32,23 +31,24 @@ use serde::{Deserialize, Serialize};
 /// its internal data are representative values derived in docs/bearing.md, not a
 /// manufacturer's drawing. The raceway angle follows from the condition of true rolling:
 /// the roller's apex lies on the ring axis, so `sin(alpha_i) = r_i tan(beta) / rho_L`.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
 pub struct TaperedRollerBearing {
     /// Bore diameter d \[mm\].
-    #[serde(rename = "bore_mm")]
+    #[cfg_attr(feature = "serde", serde(rename = "bore_mm"))]
     pub bore: Millimetre,
     /// Outside diameter D \[mm\].
-    #[serde(rename = "outside_diameter_mm")]
+    #[cfg_attr(feature = "serde", serde(rename = "outside_diameter_mm"))]
     pub outside_diameter: Millimetre,
     /// Half-angle of the roller cone, beta \[deg\].
     pub roller_half_angle_deg: f64,
     /// Radius of the roller's large end (where face and conical side meet) \[mm\].
-    #[serde(rename = "roller_large_end_radius_mm")]
+    #[cfg_attr(feature = "serde", serde(rename = "roller_large_end_radius_mm"))]
     pub roller_large_end_radius: Millimetre,
     /// Radius of the inner raceway at the roller's large end, measured from the ring axis
     /// \[mm\] (sets how far the roller sits from the axis).
-    #[serde(rename = "inner_raceway_radius_mm")]
+    #[cfg_attr(feature = "serde", serde(rename = "inner_raceway_radius_mm"))]
     pub inner_raceway_radius: Millimetre,
 }
 
@@ -65,29 +65,37 @@ impl Default for TaperedRollerBearing {
 }
 
 /// The roller's end face.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "shape", rename_all = "snake_case", deny_unknown_fields)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    serde(tag = "shape", rename_all = "snake_case", deny_unknown_fields)
+)]
 pub enum FaceShape {
     /// Spherical face of radius `radius` centred on the roller axis (e = 0).
     Sphere {
         /// Face radius r_R \[mm\].
-        #[serde(rename = "radius_mm")]
+        #[cfg_attr(feature = "serde", serde(rename = "radius_mm"))]
         radius: Millimetre,
     },
     /// Toroidal face: an arc of radius `radius` centred `eccentricity` from the axis.
     Torus {
         /// Face radius r_R \[mm\].
-        #[serde(rename = "radius_mm")]
+        #[cfg_attr(feature = "serde", serde(rename = "radius_mm"))]
         radius: Millimetre,
         /// Eccentricity e \[mm\], distance of the arc centre from the roller axis.
-        #[serde(rename = "eccentricity_mm")]
+        #[cfg_attr(feature = "serde", serde(rename = "eccentricity_mm"))]
         eccentricity: Millimetre,
     },
 }
 
 /// The rib face of the inner ring.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "shape", rename_all = "snake_case", deny_unknown_fields)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    serde(tag = "shape", rename_all = "snake_case", deny_unknown_fields)
+)]
 pub enum RibShape {
     /// Conical rib (straight generatrix, r_B = 0 in Table 1).
     Cone,
@@ -95,17 +103,18 @@ pub enum RibShape {
     /// roller.
     Torus {
         /// Rib radius r_B \[mm\].
-        #[serde(rename = "radius_mm")]
+        #[cfg_attr(feature = "serde", serde(rename = "radius_mm"))]
         radius: Millimetre,
     },
 }
 
 /// One roller-face / rib pairing.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
 pub struct RollerRibSpec {
     /// The bearing.
-    #[serde(default)]
+    #[cfg_attr(feature = "serde", serde(default))]
     pub bearing: TaperedRollerBearing,
     /// Roller end face.
     pub face: FaceShape,
@@ -113,10 +122,14 @@ pub struct RollerRibSpec {
     pub rib: RibShape,
     /// Distance of the contact point from the roller axis, h \[mm\] (the same for every
     /// pairing, as in the paper).
-    #[serde(default = "default_contact_height", rename = "contact_height_mm")]
+    #[cfg_attr(
+        feature = "serde",
+        serde(default = "default_contact_height", rename = "contact_height_mm")
+    )]
     pub contact_height: Millimetre,
 }
 
+#[cfg(feature = "serde")]
 fn default_contact_height() -> Millimetre {
     CONTACT_HEIGHT
 }

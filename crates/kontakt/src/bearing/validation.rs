@@ -13,12 +13,12 @@ use crate::halfspace::{Bem, BemOptions, BemSolution};
 use crate::hertz::{HertzPointContact, PointGeometry};
 use crate::material::ElasticMaterial;
 use crate::pimp::{GapSource, Mode, Pimp, PimpOptions, PimpSolution, SurfacePairGap};
-use serde::Serialize;
 
 use super::{RollerRib, RollerRibSpec};
 
 /// One method's headline numbers at one load.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Headline {
     /// Largest pressure \[MPa\].
     pub max_pressure_mpa: f64,
@@ -51,7 +51,8 @@ impl Headline {
 }
 
 /// All methods at one load.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct ValidationRow {
     /// Normal force \[N\].
     pub force_n: f64,
@@ -87,7 +88,8 @@ impl ValidationRow {
 
 /// The contact shapes at one load on the half-space solver's grid (PimP's pressures
 /// sampled at its cell centres), for overlays (Wirsching et al. (2020) Figures 7-10 c).
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct ShapeOverlay {
     /// Normal force \[N\].
     pub force_n: f64,
@@ -102,7 +104,8 @@ pub struct ShapeOverlay {
 }
 
 /// The study of one pairing.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct PairingStudy {
     /// The built-in pairing's name (Wirsching et al. (2020) Table 1).
     pub pairing: String,

@@ -23,11 +23,11 @@ pub use zone::ContactZone;
 use crate::geometry::Grid2;
 use crate::solve::SolveStatus;
 use crate::units::{Megapascal, Millimetre, Newton};
-use serde::Serialize;
 
 /// The solution of a normal contact on a grid: the same fields whichever method solved
 /// it, plus the method's own `detail`.
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct NormalSolution<D> {
     /// Normal force \[N\].
     pub force: Newton,

@@ -4,10 +4,10 @@
 use crate::error::Result;
 use crate::gap::check_len;
 use crate::geometry::Grid2;
-use serde::Serialize;
 
 /// Shape statistics of a pressure field on a grid (all in the grid's frame).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct ContactZone {
     /// Contact area: the number of loaded cells times the cell area \[mm²\].
     pub area: f64,

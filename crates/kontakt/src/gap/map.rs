@@ -3,11 +3,11 @@
 
 use crate::error::{Error, Result, positive_as};
 use crate::geometry::Grid2;
-use serde::{Deserialize, Serialize};
 
 /// What the map's values are.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum MapKind {
     /// The undeformed gap between the bodies \[mm\], used as it is (the approach is
     /// measured from its zero level).

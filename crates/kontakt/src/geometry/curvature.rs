@@ -13,7 +13,6 @@
 
 use crate::error::{Error, Result};
 use crate::units::{Millimetre, Radian};
-use serde::Serialize;
 
 /// Largest ratio B/A accepted as a point contact. Beyond it (contact ellipse with
 /// b/a below about 4e-6) the contact is a line contact for every practical purpose and
@@ -40,7 +39,8 @@ pub fn validate_radius(field: &'static str, radius: Millimetre) -> Result<Millim
 /// the angle \[rad\] in (-pi/2, pi/2] from body 1's first principal direction (`x`) to `x'`,
 /// the direction of *least* relative curvature, along which the contact ellipse's major
 /// semi-axis lies.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct RelativeCurvature {
     /// A = 1/(2R') [1/mm], the smaller coefficient, > 0.
     pub a_coef: f64,

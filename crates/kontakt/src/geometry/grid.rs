@@ -2,14 +2,14 @@
 
 use crate::error::{Error, Result};
 use crate::units::Millimetre;
-use serde::Serialize;
 
 /// A uniform, cell-centred grid of `nx × ny` points in the contact plane \[mm\].
 ///
 /// Point `(i, j)` sits at `x = x_min + (i + 1/2) dx`, `y = y_min + (j + 1/2) dy`, the
 /// centre of cell `(i, j)`. Fields sampled on the grid are stored row-major with `x`
 /// fastest: index `j * nx + i`.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Grid2 {
     nx: usize,
     ny: usize,

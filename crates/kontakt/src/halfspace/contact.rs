@@ -11,14 +11,14 @@ use crate::gap::{GapMap, GapSource};
 use crate::geometry::Grid2;
 use crate::material::{ElasticMaterial, effective_modulus};
 use crate::units::{Millimetre, Newton};
-use serde::{Deserialize, Serialize};
 use std::sync::{Arc, Mutex, PoisonError};
 
 pub use crate::field::domain::ZoneEstimate;
 
 /// Options of [`Bem`].
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(deny_unknown_fields, default))]
 pub struct BemOptions {
     /// Cells `[nx, ny]` of the grid, each in 8..=4096 (default 64 × 64).
     pub cells: [usize; 2],
@@ -83,7 +83,8 @@ impl BemOptions {
 }
 
 /// What only the half-space solver gives in a [`NormalSolution`].
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct HalfSpaceDetail {
     /// The solver's record: operator applications, complementarity, force, approach.
     pub report: SolveReport,

@@ -5,7 +5,6 @@ use super::operator::{Boundary, HalfSpacePlan, OperatorScratch};
 use crate::error::{Error, Result};
 use crate::geometry::Grid2;
 use crate::solve::{SolveStatus, Termination};
-use serde::{Deserialize, Serialize};
 use std::sync::Arc;
 
 /// What a solve holds fixed: the crate's one load-control type (force or approach; a
@@ -13,8 +12,9 @@ use std::sync::Arc;
 pub type Control = crate::load::LoadControl;
 
 /// Where the iteration starts.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Start {
     /// From a Hertz-like estimate built from the gap (docs/halfspace.md §3).
     Cold,
@@ -24,8 +24,9 @@ pub enum Start {
 }
 
 /// Solver settings.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(deny_unknown_fields, default))]
 pub struct SolverOptions {
     /// Relative residual to reach, in \[1e-14, 1e-2\] (default 1e-8). The residual is
     /// the RMS gap error (gap on loaded cells and overlap on unloaded ones) divided by the
@@ -77,7 +78,8 @@ impl SolverOptions {
 }
 
 /// Outcome of one solve (a small copyable summary; the fields stay in the solver).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct SolveReport {
     /// Why the iteration stopped (converged, maximum iterations or stagnated), the
     /// iterations performed and the final relative residual (see

@@ -50,7 +50,6 @@
 
 use crate::error::{Error, Result};
 use crate::units::{Megapascal, Millimetre, Newton, NewtonPerMillimetre};
-use serde::Serialize;
 use std::f64::consts::PI;
 
 /// JKR adhesive contact of two elastic spheres (or a sphere on a flat).
@@ -70,7 +69,8 @@ use std::f64::consts::PI;
 /// assert!(a > (3.0 * 0.01 * 10.0 / 4.0_f64).cbrt());               // larger than Hertz
 /// # Ok::<(), kontakt::Error>(())
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Jkr {
     r_eff: Millimetre,
     e_star: Megapascal,
@@ -78,7 +78,8 @@ pub struct Jkr {
 }
 
 /// The state of a JKR contact at one contact radius (plain data).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct JkrState {
     /// $a$, contact radius \[mm\].
     pub contact_radius: Millimetre,

@@ -17,12 +17,12 @@ use super::point::HertzPointSolution;
 use crate::error::Result;
 use crate::geometry::RelativeCurvature;
 use crate::units::{Megapascal, Newton};
-use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
 /// Which approximation to use.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Approximation {
     /// Greenwood's equivalent radius with the correction factors set to one and
     /// b/a = (A/B)^(2/3) (Johnson 1982 eqs 16-20).
@@ -89,7 +89,8 @@ pub fn approximate_point_contact(
 }
 
 /// Largest relative errors of an approximation against the exact solution.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct ApproximationError {
     /// B/A of the case.
     pub curvature_ratio: f64,

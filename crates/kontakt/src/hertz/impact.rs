@@ -43,7 +43,6 @@ use crate::units::{
     Megapascal, Millimetre, MillimetrePerSecond, Newton, NewtonMillimetre, Second, Tonne,
     TonnePerCubicMillimetre,
 };
-use serde::Serialize;
 use std::f64::consts::PI;
 
 /// $c = 2\int_0^1 (1-x^{5/2})^{-1/2}\,dx = \tfrac45 B(\tfrac25,\tfrac12)
@@ -71,7 +70,8 @@ pub const DEFAULT_YIELD_PRESSURE_RATIO: f64 = 1.60;
 pub const JOHNSON_YIELD_VELOCITY_COEFFICIENT: f64 = 85.0;
 
 /// Geometry of a spherical impact, kept to report the contact radius and pressure.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 struct SphereData {
     r_eff: Millimetre,
     e_star: Megapascal,
@@ -106,7 +106,8 @@ struct SphereData {
 /// assert!((d1 - d2).abs() <= 1e-15 * d1);
 /// # Ok::<(), kontakt::Error>(())
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct HertzImpact {
     load_coefficient: f64,
     effective_mass: Tonne,
@@ -116,7 +117,8 @@ pub struct HertzImpact {
 }
 
 /// Peak values of a quasi-static Hertz impact (plain data).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct ImpactResult {
     /// $\delta^*$, maximum approach (compression) \[mm\].
     pub max_approach: Millimetre,

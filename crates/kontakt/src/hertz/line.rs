@@ -35,7 +35,6 @@ use crate::geometry::curvature::validate_radius;
 use crate::hertz::subsurface::{self, StressPeaks, YieldCriterion};
 use crate::material::{ElasticMaterial, effective_modulus};
 use crate::units::{Megapascal, Millimetre, Newton, NewtonPerMillimetre};
-use serde::Serialize;
 use std::f64::consts::PI;
 
 /// Lundberg's constant in the approach of a finite line contact.
@@ -45,7 +44,8 @@ pub const LUNDBERG_CONSTANT: f64 = 1.8864;
 pub const MIN_LENGTH_TO_WIDTH: f64 = 5.0;
 
 /// A planned line contact of two parallel cylinders.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct LineContact {
     radii: [Millimetre; 2],
     effective_radius: Millimetre,
@@ -54,7 +54,8 @@ pub struct LineContact {
 }
 
 /// The state of a line contact at one line load.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct LineSolution {
     /// Line load P' [N/mm].
     pub line_load: NewtonPerMillimetre,
@@ -284,7 +285,8 @@ impl LineContact {
 }
 
 /// First yield of a line contact ([`LineContact::first_yield`]).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct LineFirstYield {
     /// Line load at first yield [N/mm].
     pub line_load: NewtonPerMillimetre,

@@ -31,7 +31,6 @@ use crate::error::{Error, Result};
 use crate::geometry::{Grid2, RelativeCurvature};
 use crate::material::{ElasticMaterial, effective_modulus};
 use crate::units::{Megapascal, Millimetre, Newton, Radian};
-use serde::Serialize;
 use std::f64::consts::PI;
 
 /// The Hertz shape function: the curvature ratio $B/A = R'/R''$ that produces a contact
@@ -49,7 +48,8 @@ pub fn curvature_ratio(axis_ratio: f64) -> Result<f64> {
 
 /// The undeformed geometry of a point contact: both bodies' principal radii and the angle
 /// between their principal planes (see the crate *Conventions*).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct PointGeometry {
     body1_radii: [Millimetre; 2],
     body2_radii: [Millimetre; 2],
@@ -137,7 +137,8 @@ impl PointGeometry {
 /// assert!((f - 1000.0).abs() < 1e-9);
 /// # Ok::<(), kontakt::Error>(())
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct HertzPointContact {
     geometry: PointGeometry,
     materials: [ElasticMaterial; 2],
@@ -153,7 +154,8 @@ pub struct HertzPointContact {
 }
 
 /// The state of a Hertz point contact at one load.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct HertzPointSolution {
     /// Semi-axes [a, b] of the contact ellipse \[mm\], a >= b.
     pub semi_axes: [Millimetre; 2],

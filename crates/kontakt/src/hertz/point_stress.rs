@@ -4,7 +4,6 @@ use super::point::{HertzPointContact, HertzPointSolution};
 use crate::error::{Error, Result};
 use crate::hertz::subsurface::{self, StressPeaks, YieldCriterion};
 use crate::units::{Megapascal, Newton};
-use serde::Serialize;
 
 impl HertzPointContact {
     /// Peak subsurface stresses on the load axis for a solution of this contact. The two
@@ -64,7 +63,8 @@ impl HertzPointContact {
 }
 
 /// First yield of a Hertz contact.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct FirstYield {
     /// Normal force at first yield \[N\].
     pub load: Newton,

@@ -59,12 +59,12 @@
 
 use crate::error::{Error, Result};
 use crate::units::{Megapascal, Millimetre, Newton, NewtonPerMillimetre};
-use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
 /// Principal stresses on the load axis (`x = y = 0`) at one depth, with the Tresca and
 /// von Mises equivalents. Stresses in MPa, tension positive.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct AxisStress {
     /// Depth `z` below the surface \[mm\] (>= 0).
     pub depth: Millimetre,
@@ -85,7 +85,8 @@ pub struct AxisStress {
 
 /// Maxima over depth of the Tresca shear stress and of the von Mises stress on the load
 /// axis, with the depths where they occur.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct StressPeaks {
     /// Largest Tresca maximum shear stress on the axis \[MPa\].
     pub max_shear: Megapascal,
@@ -104,8 +105,9 @@ pub struct StressPeaks {
 /// - `VonMises`: yield when the von Mises stress reaches `Y` (`k = Y/sqrt(3)` in shear).
 ///
 /// Serialized as `"tresca"` / `"von_mises"`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum YieldCriterion {
     /// Maximum shear stress criterion (Tresca 1864): `sigma_1 - sigma_3 = Y`.
     Tresca,

@@ -54,7 +54,6 @@ use crate::material::ElasticMaterial;
 use crate::solve::{SolveStatus, Termination};
 use crate::units::{Millimetre, Newton};
 use bedding::Bedding;
-use serde::{Deserialize, Serialize};
 
 /// The adaptive grid: it grows until it holds the zone and zooms in once, about the
 /// contact point, when the zone reaches less than 60 % of it (to 1.15 times the zone).
@@ -67,8 +66,9 @@ const POLICY: Policy = Policy {
 };
 
 /// Options of the PimP solver.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(deny_unknown_fields, default))]
 pub struct PimpOptions {
     /// The bedding law.
     pub mode: Mode,
@@ -141,7 +141,8 @@ pub struct Pimp {
 }
 
 /// What only PimP gives in a [`NormalSolution`].
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct PimpDetail {
     /// The bedding law used.
     pub mode: Mode,

@@ -47,7 +47,6 @@ use crate::error::{Error, Result, positive_as};
 use crate::hertz::line::LineContact;
 use crate::material::{ElasticMaterial, effective_modulus};
 use crate::units::{Megapascal, Millimetre, NewtonPerMillimetre};
-use serde::Serialize;
 use std::f64::consts::PI;
 
 /// Carter's rolling contact of a Hertz strip: see the module docs for the formulas.
@@ -66,7 +65,8 @@ use std::f64::consts::PI;
 /// assert!((carter.normalized_force(half)? - 0.75).abs() < 1e-12);
 /// # Ok::<(), kontakt::Error>(())
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Carter {
     semi_width: Millimetre,
     max_pressure: Megapascal,

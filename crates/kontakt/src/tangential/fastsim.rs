@@ -59,12 +59,12 @@ use super::{ContactEllipse, Creepage, TractionCurve, check_creepage, check_frict
 use crate::error::{Error, Result};
 use crate::material::ElasticMaterial;
 use crate::units::{Megapascal, Millimetre, Newton, NewtonMillimetre};
-use serde::Serialize;
 use std::f64::consts::PI;
 
 /// The normal pressure FASTSIM uses for the traction bound `mu p`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize)]
-#[serde(rename_all = "snake_case")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum PressureShape {
     /// `p = 2P/(pi a b) (1 - x²/a² - y²/b²)`: Kalker's choice, the normal solution of the
     /// simplified theory.
@@ -75,7 +75,8 @@ pub enum PressureShape {
 }
 
 /// Options of [`Fastsim`]: the discretisation and the pressure shape.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct FastsimOptions {
     /// Elements `[nx, ny]`: `nx` per strip along the rolling direction, `ny` strips;
     /// each 1..=4096. Default `[50, 50]`.
@@ -116,7 +117,8 @@ impl FastsimOptions {
 }
 
 /// One strip of the FASTSIM grid.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 struct Strip {
     /// Lateral position of the strip centre \[mm\].
     y: Millimetre,
@@ -127,7 +129,8 @@ struct Strip {
 }
 
 /// The result of one FASTSIM creepage point.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct FastsimSolution {
     /// Forces `[Fx, Fy]` \[N\] on body 1.
     pub forces: [Newton; 2],
@@ -142,7 +145,8 @@ pub struct FastsimSolution {
 /// Traction field of one FASTSIM creepage point, for [`Fastsim::solve_field`]. Cells are
 /// stored strip by strip (`index = j nx + i`, `i` from the leading edge); their centres
 /// come from [`Fastsim::cell_centre`].
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct FastsimField {
     /// Traction `[q_x, q_y]` \[MPa\] on body 1 at each cell centre.
     pub traction: Vec<[Megapascal; 2]>,
@@ -171,7 +175,8 @@ pub struct FastsimField {
 /// assert!((sat.forces[0] + 300.0).abs() < 1e-9 && sat.adhesion_fraction == 0.0);
 /// # Ok::<(), kontakt::Error>(())
 /// ```
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Fastsim {
     ellipse: ContactEllipse,
     friction: f64,

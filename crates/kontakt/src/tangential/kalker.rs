@@ -37,7 +37,6 @@ use super::{ContactEllipse, Creepage, TractionCurve, check_creepage, check_frict
 use crate::error::{Error, Result};
 use crate::material::ElasticMaterial;
 use crate::units::{Megapascal, Newton};
-use serde::Serialize;
 use std::f64::consts::PI;
 
 /// Rows of the table: `g = 0.1, 0.2, ..., 1.0`.
@@ -98,7 +97,8 @@ pub const TABLE_B_OVER_A: [Row; 10] = [
 ];
 
 /// Kalker's creepage coefficients of one contact \[-\].
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct CreepCoefficients {
     /// `C11`: longitudinal force per longitudinal creepage.
     pub c11: f64,
@@ -198,7 +198,8 @@ fn asymptote_long(g: f64, nu: f64) -> CreepCoefficients {
 /// Kalker's combined elastic constants of two bodies: $2/G = 1/G_1 + 1/G_2$ \[MPa\] and
 /// $\nu = \tfrac{G}{2}(\nu_1/G_1 + \nu_2/G_2)$ \[-\]. For identical bodies they are the
 /// bodies' own `G` and `nu`; against a rigid body `G = 2 G_1` and `nu = nu_1`.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct KalkerMaterial {
     /// Combined shear modulus `G` \[MPa\].
     pub shear_modulus: Megapascal,
@@ -260,7 +261,8 @@ impl KalkerMaterial {
 /// assert_eq!(fy, 0.0);
 /// # Ok::<(), kontakt::Error>(())
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct KalkerLinear {
     ellipse: ContactEllipse,
     material: KalkerMaterial,

@@ -71,7 +71,6 @@ use super::{ContactEllipse, check_friction};
 use crate::error::{Error, Result};
 use crate::material::ElasticMaterial;
 use crate::units::{Megapascal, Millimetre, Newton, NewtonMillimetre, Radian};
-use serde::Serialize;
 use std::f64::consts::PI;
 
 /// A Hertz contact with friction under a tangential force in a fixed direction: the
@@ -92,7 +91,8 @@ use std::f64::consts::PI;
 /// assert!((w / (9.0 * 150.0f64.powi(2) / (10.0 * a * g) / 6.0) - 1.0).abs() < 1e-12);
 /// # Ok::<(), kontakt::Error>(())
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Mindlin {
     ellipse: ContactEllipse,
     friction: f64,
@@ -392,7 +392,8 @@ fn t_of(x: f64) -> f64 {
 /// assert!((area / w - 1.0).abs() < 1e-4);
 /// # Ok::<(), kontakt::Error>(())
 /// ```
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct MindlinHistory {
     contact: Mindlin,
     /// The base of the history is the virgin curve (no gross slip yet).

@@ -71,7 +71,6 @@ use crate::error::{Error, Result, positive_as};
 use crate::hertz::HertzPointSolution;
 use crate::material::ElasticMaterial;
 use crate::units::{Megapascal, Millimetre, Newton};
-use serde::Serialize;
 use std::f64::consts::PI;
 
 pub mod carter;
@@ -86,8 +85,9 @@ pub use mindlin::{Mindlin, MindlinHistory};
 
 /// Which semi-axis of a Hertz contact ellipse lies along the tangential `x` direction (the
 /// rolling direction, or the direction of the tangential force).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum EllipseAxis {
     /// `x` along the major semi-axis: `a >= b`.
     Major,
@@ -102,7 +102,8 @@ pub enum EllipseAxis {
 /// Build it from a [`HertzPointSolution`] with [`from_hertz`](Self::from_hertz) (the normal
 /// problem is solved by [`crate::hertz`], not here) or from given semi-axes with
 /// [`new`](Self::new).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct ContactEllipse {
     a: Millimetre,
     b: Millimetre,
@@ -177,7 +178,8 @@ impl ContactEllipse {
 
 /// The creepages of a rolling contact (see the module *Conventions*): longitudinal
 /// `xi_x` \[-\], lateral `xi_y` \[-\] and spin `phi` \[1/mm\].
-#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Creepage {
     /// Longitudinal creepage `xi_x` \[-\] (slide-to-roll ratio for pure rolling along `x`).
     pub longitudinal: f64,

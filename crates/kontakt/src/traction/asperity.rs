@@ -52,7 +52,6 @@ use crate::hertz::line::LineContact;
 use crate::hertz::{HertzPointContact, PointGeometry};
 use crate::material::ElasticMaterial;
 use crate::units::{Megapascal, Millimetre, Newton, Radian};
-use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
 /// Most asperities a model may hold (a guard against absurdly fine lattices).
@@ -71,20 +70,24 @@ pub const CIRCULARITY_TOLERANCE: f64 = 1e-9;
 /// ($p_0 = 2F_N/(\pi a L)$ for a line, $3F_N/(2\pi a^2)$ for a circle). A given
 /// `max_pressure` is only a cross-check: it must agree with the load within
 /// [`MAX_PRESSURE_TOLERANCE`].
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)
+)]
 pub enum NominalContact {
     /// Rough line contact (rectangular contact shape) of length `length` and given
     /// half-width.
     Line {
         /// Contact (roller) length L \[mm\], > 0.
-        #[serde(rename = "length_mm")]
+        #[cfg_attr(feature = "serde", serde(rename = "length_mm"))]
         length: Millimetre,
         /// Half-width a of the contact strip \[mm\], > 0.
-        #[serde(rename = "half_width_mm")]
+        #[cfg_attr(feature = "serde", serde(rename = "half_width_mm"))]
         half_width: Millimetre,
         /// Optional cross-check of the maximum pressure p0 \[MPa\].
-        #[serde(rename = "max_pressure_mpa", default)]
+        #[cfg_attr(feature = "serde", serde(rename = "max_pressure_mpa", default))]
         max_pressure: Option<Megapascal>,
     },
     /// Line contact of two parallel cylinders of radii `radii` \[mm\] (convex > 0, concave
@@ -92,19 +95,19 @@ pub enum NominalContact {
     /// F_N / L.
     HertzLine {
         /// Contact (roller) length L \[mm\], > 0.
-        #[serde(rename = "length_mm")]
+        #[cfg_attr(feature = "serde", serde(rename = "length_mm"))]
         length: Millimetre,
         /// The cylinders' radii \[mm\].
-        #[serde(rename = "radii_mm")]
+        #[cfg_attr(feature = "serde", serde(rename = "radii_mm"))]
         radii: [Millimetre; 2],
     },
     /// Circular contact of given radius ("half-width").
     Circular {
         /// Radius a of the contact circle \[mm\], > 0.
-        #[serde(rename = "half_width_mm")]
+        #[cfg_attr(feature = "serde", serde(rename = "half_width_mm"))]
         half_width: Millimetre,
         /// Optional cross-check of the maximum pressure p0 \[MPa\].
-        #[serde(rename = "max_pressure_mpa", default)]
+        #[cfg_attr(feature = "serde", serde(rename = "max_pressure_mpa", default))]
         max_pressure: Option<Megapascal>,
     },
     /// Circular contact solved by [`HertzPointContact`]: two spheres, or crossed
@@ -112,20 +115,21 @@ pub enum NominalContact {
     /// give a circle (b/a within [`CIRCULARITY_TOLERANCE`] of 1).
     HertzCircular {
         /// Principal radii of body 1 \[mm\].
-        #[serde(rename = "body1_radii_mm")]
+        #[cfg_attr(feature = "serde", serde(rename = "body1_radii_mm"))]
         body1_radii: [Millimetre; 2],
         /// Principal radii of body 2 \[mm\].
-        #[serde(rename = "body2_radii_mm")]
+        #[cfg_attr(feature = "serde", serde(rename = "body2_radii_mm"))]
         body2_radii: [Millimetre; 2],
         /// Angle between the principal planes \[rad\] (crate *Conventions*).
-        #[serde(rename = "angle_rad", default)]
+        #[cfg_attr(feature = "serde", serde(rename = "angle_rad", default))]
         angle: Radian,
     },
 }
 
 /// Shape of the nominal contact.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum ContactShape {
     /// Rectangular strip of length L and width 2a (thesis §3.1.2.2.1).
     Line,
@@ -135,8 +139,12 @@ pub enum ContactShape {
 
 /// The contact radius a_i of one asperity pair under its normal force F_i, tagged by
 /// `law` in TOML.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "law", rename_all = "snake_case", deny_unknown_fields)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    serde(tag = "law", rename_all = "snake_case", deny_unknown_fields)
+)]
 pub enum AsperityContactLaw {
     /// Hertz, computed by [`HertzPointContact`] for the two asperity spheres:
     /// $a_i = f\,(3 F_i R / (4E^*))^{1/3}$ with $1/R = 1/r_1 + 1/r_2$. The factor `f`
@@ -144,7 +152,7 @@ pub enum AsperityContactLaw {
     /// `f = 11.1` (see `docs/traction-asperity.md` §6).
     Hertz {
         /// Multiplier f on the Hertz radius \[-\], finite and > 0 (default 1).
-        #[serde(default = "unit_factor")]
+        #[cfg_attr(feature = "serde", serde(default = "unit_factor"))]
         factor: f64,
     },
     /// Johnson (1955) as printed in thesis eq. 2.17:
@@ -157,6 +165,7 @@ pub enum AsperityContactLaw {
     },
 }
 
+#[cfg(feature = "serde")]
 fn unit_factor() -> f64 {
     1.0
 }
@@ -168,8 +177,9 @@ impl Default for AsperityContactLaw {
 }
 
 /// Which surface speed turns the slide-to-roll ratio into slip per distance travelled.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum SlipReference {
     /// $\delta = \xi d$: the asperity junction travels at the rolling speed
     /// $V_r = (V_1+V_2)/2$ (Carter/Kalker's creepage; thesis Tables AP 0.3, 3.4 and 3.7).
@@ -181,8 +191,9 @@ pub enum SlipReference {
 }
 
 /// How the nominal load is shared among the asperities.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum LoadSharing {
     /// Each asperity carries the integral of the nominal pressure over its lattice cell
     /// (closed form); the loads are then scaled so that they add up to F_N exactly (the
@@ -224,45 +235,46 @@ pub enum LoadSharing {
 /// kind = "circular"
 /// half_width_mm = 0.4
 /// ```
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
 pub struct AsperityTractionParams {
     /// The nominal contact and its size.
     pub nominal: NominalContact,
     /// Total normal force F_N \[N\], > 0.
-    #[serde(rename = "load_n")]
+    #[cfg_attr(feature = "serde", serde(rename = "load_n"))]
     pub load: Newton,
     /// Coulomb friction coefficient mu \[-\], > 0.
     pub friction_coefficient: f64,
     /// Young's modulus E of both bodies \[MPa\].
-    #[serde(rename = "youngs_modulus_mpa")]
+    #[cfg_attr(feature = "serde", serde(rename = "youngs_modulus_mpa"))]
     pub youngs_modulus: Megapascal,
     /// Poisson's ratio nu of both bodies \[-\], -1 < nu <= 0.5.
     pub poisson_ratio: f64,
     /// Shear modulus G ("modulus of rigidity" C in the thesis) \[MPa\], > 0; `None` for
     /// E / (2 (1 + nu)). The thesis gives it separately (79 300 and 73 000 MPa).
-    #[serde(rename = "shear_modulus_mpa", default)]
+    #[cfg_attr(feature = "serde", serde(rename = "shear_modulus_mpa", default))]
     pub shear_modulus: Option<Megapascal>,
     /// Tip radii r1, r2 of the asperities of body 1 and body 2 \[mm\] (> 0; `inf` for a
     /// smooth counter-surface, not both). Their pair radius is 1/(1/r1 + 1/r2).
-    #[serde(rename = "asperity_radii_mm")]
+    #[cfg_attr(feature = "serde", serde(rename = "asperity_radii_mm"))]
     pub asperity_radii: [Millimetre; 2],
     /// Lattice period p along the rolling direction \[mm\], > 0 and small enough to put
     /// an asperity inside the contact.
-    #[serde(rename = "period_mm")]
+    #[cfg_attr(feature = "serde", serde(rename = "period_mm"))]
     pub period: Millimetre,
     /// Lattice period p_t across the rolling direction \[mm\] (> 0, at most the length
     /// of a line contact); `None` for `period`.
-    #[serde(rename = "transverse_period_mm", default)]
+    #[cfg_attr(feature = "serde", serde(rename = "transverse_period_mm", default))]
     pub transverse_period: Option<Millimetre>,
     /// Contact radius of an asperity pair (default Hertz).
-    #[serde(default)]
+    #[cfg_attr(feature = "serde", serde(default))]
     pub asperity_contact: AsperityContactLaw,
     /// Speed that converts the slide-to-roll ratio into slip (default rolling speed).
-    #[serde(default)]
+    #[cfg_attr(feature = "serde", serde(default))]
     pub slip_reference: SlipReference,
     /// Load sharing among the asperities (default exact cell integral).
-    #[serde(default)]
+    #[cfg_attr(feature = "serde", serde(default))]
     pub load_sharing: LoadSharing,
 }
 
@@ -309,7 +321,8 @@ impl AsperityTractionParams {
 /// leading edge `x = +a` (line) or `x = +sqrt(a² - y²)` (circle) and leaving at the
 /// trailing edge, as in [`crate`]'s tangential conventions; `y` across. The thesis
 /// measures its position the other way round (`x_thesis = -x`).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct AsperityState {
     /// Tip position along the rolling direction \[mm\].
     pub x: Millimetre,
@@ -337,7 +350,8 @@ pub struct AsperityState {
 }
 
 /// The tangential state of one asperity at one slide-to-roll ratio (thesis Table 3.3).
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct AsperityForce {
     /// Tangential displacement delta_i = xi_eff d_i between the asperities \[mm\].
     pub displacement: Millimetre,
@@ -377,7 +391,8 @@ pub struct AsperityForce {
 /// assert_eq!(model.asperities().len(), 10); // one row of 10, standing for 200 rows
 /// # Ok::<(), kontakt::Error>(())
 /// ```
-#[derive(Debug, Clone, PartialEq, Serialize)]
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct AsperityTraction {
     params: AsperityTractionParams,
     shape: ContactShape,
@@ -388,10 +403,10 @@ pub struct AsperityTraction {
     load_scale: f64,
     asperities: Vec<AsperityState>,
     /// d_i / delta*_i: B_i = xi_eff * slip_gain[i].
-    #[serde(skip)]
+    #[cfg_attr(feature = "serde", serde(skip))]
     slip_gain: Vec<f64>,
     /// n_i F_i / F_N: the saturated share of each entry.
-    #[serde(skip)]
+    #[cfg_attr(feature = "serde", serde(skip))]
     weight: Vec<f64>,
 }
 

@@ -46,11 +46,11 @@ pub use torus::Torus;
 
 use crate::error::{Error, Result};
 use nalgebra::{Matrix3, Point3, Unit, Vector3};
-use serde::{Deserialize, Serialize};
 
 /// Which side of the surface the body's material is on.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Material {
     /// The solid is the region enclosed by the surface: a ball for a sphere, the tube of a
     /// torus, the inside of a cone's nappe, `z < 0` for the plane, the roller inside a
@@ -430,7 +430,8 @@ impl Surface {
 // ---------------------------------------------------------------------------------------
 // Serialisation: a tagged table, validated on the way in.
 
-#[derive(Serialize, Deserialize)]
+#[cfg(feature = "serde")]
+#[derive(serde::Serialize, serde::Deserialize)]
 #[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
 enum SurfaceSpec {
     Plane {
@@ -455,7 +456,8 @@ enum SurfaceSpec {
     },
 }
 
-impl Serialize for Surface {
+#[cfg(feature = "serde")]
+impl serde::Serialize for Surface {
     fn serialize<S: serde::Serializer>(
         &self,
         serializer: S,
@@ -482,15 +484,16 @@ impl Serialize for Surface {
                 material: s.material(),
             },
         };
-        spec.serialize(serializer)
+        serde::Serialize::serialize(&spec, serializer)
     }
 }
 
-impl<'de> Deserialize<'de> for Surface {
+#[cfg(feature = "serde")]
+impl<'de> serde::Deserialize<'de> for Surface {
     fn deserialize<D: serde::Deserializer<'de>>(
         deserializer: D,
     ) -> std::result::Result<Self, D::Error> {
-        let surface = match SurfaceSpec::deserialize(deserializer)? {
+        let surface = match <SurfaceSpec as serde::Deserialize>::deserialize(deserializer)? {
             SurfaceSpec::Plane { material } => Ok(Surface::plane(material)),
             SurfaceSpec::Sphere { radius, material } => Surface::sphere(radius, material),
             SurfaceSpec::Cone {
@@ -593,6 +596,7 @@ mod tests {
         assert!(quadratic_roots(1.0, 0.0, 1.0).is_none());
     }
 
+    #[cfg(feature = "serde")]
     #[test]
     fn serde_round_trip_validates() {
         let s = Surface::torus(2.0, 14.0, Material::Inside).unwrap();

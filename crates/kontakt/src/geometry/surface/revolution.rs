@@ -12,15 +12,18 @@ use super::trace::{self, RayFunction, Sample};
 use super::{Material, Shape, outer, quadratic_roots, radial};
 use crate::error::{Error, Result};
 use nalgebra::{Matrix3, Point3, Vector3};
-use serde::{Deserialize, Serialize};
 
 /// Meridian profile of a [`Revolution`] surface: $\rho(z) > 0$ with continuous first and
 /// second derivatives, about the local `z` axis. Lengths in \[mm\].
 ///
 /// Serialised as a table tagged by `kind`, e.g.
 /// `{ kind = "crowned", radius = 10.0, crown_radius = 500.0, half_length = 8.0 }`.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+#[derive(Debug, Clone, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)
+)]
 pub enum Profile {
     /// A cylinder of radius `radius` with a circular crown of radius `crown_radius`
     /// centred at `z = 0`:
