@@ -38,58 +38,10 @@ use crate::pimp_case::{
 };
 use kontakt::halfspace::{Bem, BemOptions, BemSolution, Control};
 use kontakt::{Error, Result};
-use serde::{Deserialize, Serialize};
+
 use std::path::Path;
 
-/// `[bem]`: options of the half-space solver.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields, default)]
-pub struct BemSpec {
-    /// Grid cells `[nx, ny]`, each in 8..=4096.
-    pub cells: [usize; 2],
-    /// Relative residual, in \[1e-14, 1e-2\].
-    pub tolerance: f64,
-    /// Fixed half-extents \[mm\]; adaptive when absent.
-    pub extent_mm: Option<[f64; 2]>,
-    /// Adaptive domain over the contact's extent, in \[1.05, 4\].
-    pub margin: f64,
-    /// FFT threads; all cores when absent.
-    pub threads: Option<usize>,
-    /// Most iterations.
-    pub max_iterations: usize,
-}
-
-impl Default for BemSpec {
-    fn default() -> Self {
-        let o = BemOptions::default();
-        BemSpec {
-            cells: o.cells,
-            tolerance: o.tolerance,
-            extent_mm: o.extent,
-            margin: o.margin,
-            threads: o.threads,
-            max_iterations: o.max_iterations,
-        }
-    }
-}
-
-/// The solver's record in a `bem` report.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
-pub struct SolverEcho {
-    /// Whether the residual reached the tolerance (always true in a report: a failed
-    /// solve is an error).
-    pub converged: bool,
-    /// Final relative residual.
-    pub residual: f64,
-    /// The tolerance asked for.
-    pub tolerance: f64,
-    /// FFT convolutions performed.
-    pub operator_applications: usize,
-    /// Largest remaining interpenetration on an unloaded cell \[mm\].
-    pub max_overlap_mm: f64,
-    /// `"free"` or `"periodic"`.
-    pub boundary: kontakt::halfspace::Boundary,
-}
+pub use crate::pimp_case::{BemSpec, SolverEcho};
 
 /// A solved `bem` case: the JSON record and the full solution (fields for CSV and maps).
 #[derive(Debug, Clone, PartialEq)]

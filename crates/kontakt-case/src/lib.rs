@@ -20,13 +20,15 @@
 
 pub mod bem_case;
 pub mod case;
+mod common;
+pub mod hertz_case;
 pub mod maps;
 pub mod pimp_case;
-pub mod report;
 pub mod traction_case;
 
 pub use bem_case::{BemOutcome, run_bem_case};
 pub use case::{Case, CaseFile, Outcome};
+pub use common::SCHEMA_VERSION;
+pub use hertz_case::{ContactReport, run_case};
 pub use pimp_case::{PimpCase, PimpOutcome, PimpReport, run_pimp_case};
-pub use report::{ContactReport, run_case};
 pub use traction_case::{TractionCase, TractionReport, run_traction_case};

@@ -41,10 +41,14 @@
 //! axis = [0.0, 0.0, 1.0]     # the surface's axis (local z) in the world
 //! ```
 
+pub use crate::common::MaterialSpec;
+use crate::common::SCHEMA_VERSION;
+pub(crate) use crate::common::material;
 use kontakt::bearing::{FaceShape, RibShape, RollerRib, RollerRibSpec, TaperedRollerBearing};
 use kontakt::field::NormalSolution;
 use kontakt::geometry::RelativeCurvature;
 use kontakt::geometry::surface::{Material, PlacedSurface, Profile, Surface};
+use kontakt::halfspace::BemOptions;
 use kontakt::halfspace::{Boundary, MapKind};
 use kontakt::hertz::{HertzPointContact, PointGeometry};
 use kontakt::material::ElasticMaterial;
@@ -73,7 +77,7 @@ pub struct PimpCase {
     pub pimp: PimpSpec,
     /// Half-space solver options (`method = "bem"`).
     #[serde(default)]
-    pub bem: Option<crate::bem_case::BemSpec>,
+    pub bem: Option<BemSpec>,
     /// Body 1 material (the roller for `roller_rib`).
     pub body1: MaterialSpec,
     /// Body 2 material (the ring for `roller_rib`).
@@ -81,16 +85,6 @@ pub struct PimpCase {
     /// Load control.
     #[serde(default)]
     pub load: PimpLoad,
-}
-
-/// `[body1]` / `[body2]`: the elastic constants.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct MaterialSpec {
-    /// Young's modulus \[MPa\], > 0.
-    pub e_mpa: f64,
-    /// Poisson's ratio, -1 < nu <= 0.5.
-    pub nu: f64,
 }
 
 /// `[load]`: a force, an approach, or neither (the approach of the poses).
@@ -359,7 +353,7 @@ pub struct PimpReport {
     /// stagnated, diverged), its iterations and final relative residual.
     pub status: SolveStatus,
     /// The half-space solver's convergence record (null for PimP).
-    pub solver: Option<crate::bem_case::SolverEcho>,
+    pub solver: Option<SolverEcho>,
     /// PimP: resizes of the adaptive grid; bem: domains tried.
     pub grid_rounds: usize,
     /// Separation of the given poses \[mm\] (surfaces only; < 0: interpenetration).
@@ -403,10 +397,6 @@ pub struct PimpOutcome {
     pub report: PimpReport,
     /// The solution with its pressure field.
     pub solution: PimpSolution,
-}
-
-pub(crate) fn material(m: &MaterialSpec, prefix: &str) -> Result<ElasticMaterial> {
-    crate::report::material_keys(m.e_mpa, m.nu, prefix)
 }
 
 /// Build a roller/rib pair from a `[geometry]` table of kind `roller_rib`.
@@ -676,7 +666,7 @@ pub(crate) struct ReportMeta {
     pub geometry: String,
     pub e_star_mpa: f64,
     pub relative_curvature_per_mm: Option<[f64; 2]>,
-    pub solver: Option<crate::bem_case::SolverEcho>,
+    pub solver: Option<SolverEcho>,
     pub separation_mm: Option<f64>,
     pub rib_angle_deg: Option<f64>,
     pub hertz: Option<HertzEcho>,
@@ -689,7 +679,7 @@ impl PimpReport {
     pub(crate) fn assemble<D>(meta: ReportMeta, s: &NormalSolution<D>) -> Self {
         PimpReport {
             kontakt_version: kontakt::VERSION,
-            schema_version: crate::report::SCHEMA_VERSION,
+            schema_version: SCHEMA_VERSION,
             name: meta.name,
             method: meta.method,
             mode: meta.mode,
@@ -718,4 +708,54 @@ impl PimpReport {
             hertz: meta.hertz,
         }
     }
+}
+
+/// `[bem]`: options of the half-space solver.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct BemSpec {
+    /// Grid cells `[nx, ny]`, each in 8..=4096.
+    pub cells: [usize; 2],
+    /// Relative residual, in \[1e-14, 1e-2\].
+    pub tolerance: f64,
+    /// Fixed half-extents \[mm\]; adaptive when absent.
+    pub extent_mm: Option<[f64; 2]>,
+    /// Adaptive domain over the contact's extent, in \[1.05, 4\].
+    pub margin: f64,
+    /// FFT threads; all cores when absent.
+    pub threads: Option<usize>,
+    /// Most iterations.
+    pub max_iterations: usize,
+}
+
+impl Default for BemSpec {
+    fn default() -> Self {
+        let o = BemOptions::default();
+        BemSpec {
+            cells: o.cells,
+            tolerance: o.tolerance,
+            extent_mm: o.extent,
+            margin: o.margin,
+            threads: o.threads,
+            max_iterations: o.max_iterations,
+        }
+    }
+}
+
+/// The solver's record in a `bem` report.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct SolverEcho {
+    /// Whether the residual reached the tolerance (always true in a report: a failed
+    /// solve is an error).
+    pub converged: bool,
+    /// Final relative residual.
+    pub residual: f64,
+    /// The tolerance asked for.
+    pub tolerance: f64,
+    /// FFT convolutions performed.
+    pub operator_applications: usize,
+    /// Largest remaining interpenetration on an unloaded cell \[mm\].
+    pub max_overlap_mm: f64,
+    /// `"free"` or `"periodic"`.
+    pub boundary: kontakt::halfspace::Boundary,
 }

@@ -47,8 +47,7 @@
 //! linear theory; it exceeds 1 beyond its saturation creepage); `kontakt traction --plot`
 //! draws it up to where it reaches 1.
 
-use crate::case::parse_toml;
-use crate::pimp_case::{MaterialSpec, material};
+use crate::common::{MaterialSpec, SCHEMA_VERSION, material, parse_toml};
 use kontakt::hertz::line::LineContact;
 use kontakt::hertz::{HertzPointContact, PointGeometry};
 use kontakt::material::effective_modulus;
@@ -557,7 +556,7 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
     };
     Ok(TractionReport {
         kontakt_version: kontakt::VERSION,
-        schema_version: crate::report::SCHEMA_VERSION,
+        schema_version: SCHEMA_VERSION,
         name: case.name.clone(),
         method: "traction",
         geometry: label,

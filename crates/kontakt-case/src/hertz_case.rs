@@ -1,17 +1,182 @@
-//! The result record of a case, with stable, unit-suffixed keys (`schema_version = 1`).
+//! The TOML case schema (`schema_version = 1`). All lengths in mm, forces in N, moduli in
+//! MPa, angles in degrees (converted to radians at this edge).
+//!
+//! ```toml
+//! name = "ball on flat"
+//! method = "hertz"            # "hertz"; "pimp" and "bem" cases: see pimp_case, bem_case
+//!
+//! [contact]
+//! kind = "point"              # "point" or "line"
+//! angle_deg = 0.0             # point: angle between the principal planes
+//! # length_mm = 20.0          # line: contact length (needed for approach and area)
+//!
+//! [body1]
+//! radii_mm = [6.35, 6.35]     # point: two principal radii; line: one radius
+//! e_mpa = 210000.0            # convex > 0, concave < 0, inf = flat
+//! nu = 0.3
+//!
+//! [body2]
+//! radii_mm = [inf, inf]
+//! e_mpa = 210000.0
+//! nu = 0.3
+//!
+//! [load]
+//! force_n = 100.0             # exactly one of force_n / approach_mm (line: also line_load_n_per_mm)
+//!
+//! [yield]                     # optional
+//! stress_mpa = 1500.0
+//! criterion = "von_mises"     # or "tresca"
+//! ```
+
+//!
+//! The result record of a case has stable, unit-suffixed keys (`schema_version = 1`).
 //! Keys are never renamed without bumping the schema version; new keys may be added.
 
-use crate::case::{BodySpec, CaseFile, ContactKind, LoadControl, Method};
+use crate::common::{SCHEMA_VERSION, material_keys, parse_toml};
 use kontakt::hertz::line::LineContact;
 use kontakt::hertz::point_stress::FirstYield;
 use kontakt::hertz::subsurface::YieldCriterion;
 use kontakt::hertz::{HertzPointContact, PointGeometry};
 use kontakt::material::{ElasticMaterial, dundurs_beta};
 use kontakt::{Error, Result};
-use serde::{Serialize, Serializer};
+use serde::{Deserialize, Serialize, Serializer};
 
-/// Version of the JSON result schema.
-pub const SCHEMA_VERSION: u32 = 1;
+/// A complete case, as read from a TOML file.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CaseFile {
+    /// Optional label echoed in the report.
+    #[serde(default)]
+    pub name: Option<String>,
+    /// Solution method.
+    #[serde(default)]
+    pub method: Method,
+    /// Contact kind and geometry parameters.
+    pub contact: ContactSpec,
+    /// Body 1.
+    pub body1: BodySpec,
+    /// Body 2.
+    pub body2: BodySpec,
+    /// Load control.
+    pub load: LoadSpec,
+    /// Optional first-yield evaluation.
+    #[serde(default, rename = "yield")]
+    pub yield_check: Option<YieldSpec>,
+}
+
+/// Solution method.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Method {
+    /// Closed-form Hertz theory.
+    #[default]
+    Hertz,
+}
+
+/// Point or line contact.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ContactKind {
+    /// Point contact (elliptical or circular).
+    Point,
+    /// Line contact of parallel cylinders.
+    Line,
+}
+
+/// `[contact]` table.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ContactSpec {
+    /// Point or line.
+    pub kind: ContactKind,
+    /// Angle between the principal planes of the bodies \[deg\] (point contact).
+    #[serde(default)]
+    pub angle_deg: f64,
+    /// Contact length \[mm\] (line contact; gives the approach, area and stiffness).
+    #[serde(default)]
+    pub length_mm: Option<f64>,
+}
+
+/// `[body1]` / `[body2]` table.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BodySpec {
+    /// Principal radii of curvature \[mm\]: two for a point contact, one for a line contact.
+    /// Convex > 0, concave < 0, `inf` for flat.
+    pub radii_mm: Vec<f64>,
+    /// Young's modulus \[MPa\], > 0.
+    pub e_mpa: f64,
+    /// Poisson's ratio, -1 < nu <= 0.5.
+    pub nu: f64,
+}
+
+/// `[load]` table: exactly one entry.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LoadSpec {
+    /// Normal force \[N\].
+    #[serde(default)]
+    pub force_n: Option<f64>,
+    /// Approach of distant points \[mm\] (point contact).
+    #[serde(default)]
+    pub approach_mm: Option<f64>,
+    /// Load per unit length [N/mm] (line contact).
+    #[serde(default)]
+    pub line_load_n_per_mm: Option<f64>,
+}
+
+/// `[yield]` table.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct YieldSpec {
+    /// Yield stress of the weaker body \[MPa\], > 0.
+    pub stress_mpa: f64,
+    /// Criterion, `von_mises` (default) or `tresca`.
+    #[serde(default = "default_criterion")]
+    pub criterion: YieldCriterion,
+}
+
+fn default_criterion() -> YieldCriterion {
+    YieldCriterion::VonMises
+}
+
+pub use kontakt::load::LoadControl;
+
+impl LoadSpec {
+    /// The single load entry, validated to be present and unique.
+    ///
+    /// # Errors
+    /// None or more than one of the entries given.
+    pub fn control(&self) -> Result<LoadControl> {
+        let given: Vec<LoadControl> = [
+            self.force_n.map(LoadControl::Force),
+            self.approach_mm.map(LoadControl::Approach),
+            self.line_load_n_per_mm.map(LoadControl::LineLoad),
+        ]
+        .into_iter()
+        .flatten()
+        .collect();
+        match given.as_slice() {
+            [one] => Ok(*one),
+            _ => Err(Error::invalid(
+                "load",
+                format!("{} entries", given.len()),
+                "exactly one of force_n, approach_mm or line_load_n_per_mm",
+            )),
+        }
+    }
+}
+
+impl CaseFile {
+    /// Parse a case from TOML text.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] with field `case` and the parser's message (with line and
+    /// column) for malformed TOML, unknown keys or wrong types.
+    pub fn from_toml_str(text: &str) -> Result<Self> {
+        parse_toml(text)
+    }
+}
 
 /// Result of one case. Every key carries its unit; `null` marks a quantity that does not
 /// apply (e.g. no yield stress given).
@@ -143,21 +308,6 @@ fn ser_radii_array<S: Serializer>(radii: &[f64; 2], s: S) -> std::result::Result
 
 fn material(body: &BodySpec, prefix: &'static str) -> Result<ElasticMaterial> {
     material_keys(body.e_mpa, body.nu, prefix)
-}
-
-/// An elastic material from case-file values, errors named by their keys
-/// (`body1.e_mpa`, `body2.nu`); shared by the Hertz and PimP schemas.
-pub(crate) fn material_keys(e_mpa: f64, nu: f64, prefix: &str) -> Result<ElasticMaterial> {
-    ElasticMaterial::new(e_mpa, nu).map_err(|e| {
-        e.map_field(|f| {
-            let key = match f {
-                "youngs_modulus" => "e_mpa",
-                "poisson_ratio" => "nu",
-                other => other,
-            };
-            format!("{prefix}.{key}")
-        })
-    })
 }
 
 fn radii<const N: usize>(body: &BodySpec, prefix: &'static str, kind: &str) -> Result<[f64; N]> {
