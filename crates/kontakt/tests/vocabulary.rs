@@ -258,6 +258,7 @@ fn the_half_space_solver_does_not_need_pimp_to_place_its_domain() {
 fn shared_types_cross_threads() {
     fn send_sync<T: Send + Sync>() {}
     send_sync::<Box<dyn GapSource>>();
+    send_sync::<Box<dyn kontakt::tangential::TractionCurve>>();
     send_sync::<Bem>();
     send_sync::<Pimp>();
     send_sync::<kontakt::pimp::PimpSolution>();

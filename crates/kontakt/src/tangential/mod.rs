@@ -233,7 +233,10 @@ impl Creepage {
 ///
 /// Further models (for example a rough-surface traction model) can implement this trait
 /// and be plotted by `kontakt traction` alongside.
-pub trait TractionCurve {
+///
+/// `Send + Sync`: a curve is a planned model, evaluated read-only from many threads (a
+/// sweep, a multi-body simulation).
+pub trait TractionCurve: Send + Sync {
     /// A short, stable model name (`carter`, `kalker_linear`, `fastsim`, ...).
     fn name(&self) -> &'static str;
 
