@@ -8,11 +8,12 @@
 //! contact shapes at the largest force on one grid for overlays.
 
 use crate::error::{Error, Result};
+use crate::field::NormalSolution;
 use crate::geometry::Grid2;
-use crate::halfspace::{Bem, BemOptions, BemSolution};
+use crate::halfspace::{Bem, BemOptions};
 use crate::hertz::{HertzPointContact, PointGeometry};
 use crate::material::ElasticMaterial;
-use crate::pimp::{GapSource, Mode, Pimp, PimpOptions, PimpSolution, SurfacePairGap};
+use crate::pimp::{GapSource, Mode, Pimp, PimpOptions, SurfacePairGap};
 
 use super::{RollerRib, RollerRibSpec};
 
@@ -31,16 +32,8 @@ pub struct Headline {
 }
 
 impl Headline {
-    fn of_bem(s: &BemSolution) -> Self {
-        Headline {
-            max_pressure_mpa: s.max_pressure,
-            contact_area_mm2: s.contact_area,
-            approach_mm: s.approach,
-            semi_axes_mm: s.semi_axes,
-        }
-    }
-
-    fn of_pimp(s: &PimpSolution) -> Self {
+    /// The headline numbers of any field solver's solution (PimP, the half-space solver).
+    fn of<D>(s: &NormalSolution<D>) -> Self {
         Headline {
             max_pressure_mpa: s.max_pressure,
             contact_area_mm2: s.contact_area,
@@ -189,9 +182,9 @@ pub fn validate_pairing(
         let h = hertz.solve_force(f)?;
         rows.push(ValidationRow {
             force_n: f,
-            bem: Headline::of_bem(&b),
-            pimp_published: Headline::of_pimp(&p),
-            pimp_corrected: Headline::of_pimp(&c),
+            bem: Headline::of(&b),
+            pimp_published: Headline::of(&p),
+            pimp_corrected: Headline::of(&c),
             hertz: Headline {
                 max_pressure_mpa: h.max_pressure,
                 contact_area_mm2: h.contact_area,

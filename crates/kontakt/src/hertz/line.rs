@@ -171,16 +171,7 @@ impl LineContact {
         crate::error::positive("length", length)?;
         let l = 0.5 * length;
         let b = self.solve(force / length)?.half_width;
-        if l < MIN_LENGTH_TO_WIDTH * b {
-            return Err(Error::invalid(
-                "length",
-                length,
-                format!(
-                    ">= {:.4} mm: Lundberg's formula needs l >= {MIN_LENGTH_TO_WIDTH} b (half-width b = {b:.4} mm)",
-                    2.0 * MIN_LENGTH_TO_WIDTH * b
-                ),
-            ));
-        }
+        lundberg_length(length, b)?;
         Ok(force / (PI * l * self.e_star) * ((l / b).ln() + LUNDBERG_CONSTANT))
     }
 
@@ -210,16 +201,7 @@ impl LineContact {
         crate::error::positive("length", length)?;
         let b = self.solve(line_load)?.half_width;
         let half = 0.5 * length;
-        if half < MIN_LENGTH_TO_WIDTH * b {
-            return Err(Error::invalid(
-                "length",
-                length,
-                format!(
-                    ">= {:.4} mm: Lundberg's formula needs l >= {MIN_LENGTH_TO_WIDTH} b (half-width b = {b:.4} mm)",
-                    2.0 * MIN_LENGTH_TO_WIDTH * b
-                ),
-            ));
-        }
+        lundberg_length(length, b)?;
         Ok(PI * half * self.e_star / ((half / b).ln() + LUNDBERG_CONSTANT - 0.5))
     }
 
@@ -307,6 +289,22 @@ impl LineSolution {
             0.0
         }
     }
+}
+
+/// Lundberg's formula assumes a contact much longer than wide: refuse a half-length
+/// `length / 2` \[mm\] below [`MIN_LENGTH_TO_WIDTH`] half-widths `b` \[mm\].
+fn lundberg_length(length: Millimetre, b: Millimetre) -> Result<()> {
+    if 0.5 * length < MIN_LENGTH_TO_WIDTH * b {
+        return Err(Error::invalid(
+            "length",
+            length,
+            format!(
+                ">= {:.4} mm: Lundberg's formula needs l >= {MIN_LENGTH_TO_WIDTH} b (half-width b = {b:.4} mm)",
+                2.0 * MIN_LENGTH_TO_WIDTH * b
+            ),
+        ));
+    }
+    Ok(())
 }
 
 #[cfg(test)]
