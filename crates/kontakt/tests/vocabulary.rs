@@ -264,3 +264,44 @@ fn shared_types_cross_threads() {
     send_sync::<kontakt::pimp::PimpSolution>();
     send_sync::<kontakt::halfspace::BemSolution>();
 }
+
+/// Hertz on a grid returns the same type as the field solvers; its sampled numbers
+/// converge on the closed form as the cells shrink.
+#[test]
+fn hertz_on_a_grid_is_a_normal_solution_that_matches_the_closed_form() {
+    use kontakt::hertz::{HertzPointContact, PointGeometry};
+    // An ellipse turned against the grid (orientation != 0), 400 N.
+    let g = PointGeometry::new([8.0, 30.0], [15.0, -90.0], 0.4).unwrap();
+    let exact = HertzPointContact::new(g, STEEL, STEEL)
+        .unwrap()
+        .solve_force(400.0)
+        .unwrap();
+    let h = 1.1 * exact.semi_axes[0];
+    let mut errors = Vec::new();
+    for n in [101, 401] {
+        let s = exact.on_grid(Grid2::centered(h, h, n, n).unwrap()).unwrap();
+        assert_eq!(s.status.termination, Termination::Converged);
+        assert_eq!((s.force, s.approach), (exact.force, exact.approach));
+        assert_eq!(s.detail, exact);
+        assert_eq!(s.zone.patches, 1);
+        let area = std::f64::consts::PI * exact.semi_axes[0] * exact.semi_axes[1];
+        let e = [
+            (s.contact_area / area - 1.0).abs(),
+            (s.zone.force / exact.force - 1.0).abs(),
+            1.0 - s.max_pressure / exact.max_pressure,
+        ];
+        // Counted-cell area and midpoint-rule force: within a few cells' worth.
+        let cell = 2.0 * h / n as f64;
+        let tol = 4.0 * cell / exact.semi_axes[1];
+        assert!(
+            e.iter().all(|&x| x < tol && x >= 0.0),
+            "n = {n}: {e:?} vs {tol}"
+        );
+        errors.push(e[0].max(e[1]));
+    }
+    // Finer cells, smaller error.
+    assert!(errors[1] < 0.5 * errors[0], "{errors:?}");
+    // A grid whose cells miss the ellipse is an error, not an empty result.
+    let coarse = Grid2::new([5.0, 6.0], [5.0, 6.0], 4, 4).unwrap();
+    assert_eq!(exact.on_grid(coarse).unwrap_err().field(), Some("grid"));
+}

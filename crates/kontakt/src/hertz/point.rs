@@ -28,8 +28,10 @@
 
 use super::elliptic;
 use crate::error::{Error, Result};
+use crate::field::{ContactZone, NormalSolution};
 use crate::geometry::{Grid2, RelativeCurvature};
 use crate::material::{ElasticMaterial, effective_modulus};
+use crate::solve::{SolveStatus, Termination};
 use crate::units::{Megapascal, Millimetre, Newton, Radian};
 use std::f64::consts::PI;
 
@@ -319,6 +321,48 @@ impl HertzPointSolution {
     /// Pressure \[MPa\] sampled at every point of `grid`, row-major with x fastest.
     pub fn sample_pressure(&self, grid: &Grid2) -> Vec<Megapascal> {
         grid.points().map(|(x, y)| self.pressure_at(x, y)).collect()
+    }
+
+    /// The Hertz pressure sampled on `grid` \[mm\] (the contact frame: x along body 1's
+    /// first principal direction), as the field solvers report theirs: the one result
+    /// type [`NormalSolution`] of PimP and the half-space solver, so Hertz sits beside them
+    /// in every comparison, report and integral over the contact (friction power).
+    ///
+    /// The force and approach are the closed-form values; the maximum pressure, area,
+    /// extents and zone shape are read off the sampled cells, as for the field solvers
+    /// (the area counts whole cells: first order in the cell size). `detail` is the
+    /// closed-form solution; the status is converged with no iteration.
+    ///
+    /// # Errors
+    /// [`Error::Geometry`] (field `grid`) when no cell centre lies inside the ellipse.
+    pub fn on_grid(&self, grid: Grid2) -> Result<NormalSolution<HertzPointSolution>> {
+        let pressure = self.sample_pressure(&grid);
+        let zone = ContactZone::analyse(&grid, &pressure)?;
+        if zone.patches == 0 {
+            return Err(Error::Geometry {
+                field: "grid".into(),
+                reason: format!(
+                    "no cell centre of the grid lies inside the contact ellipse (semi-axes \
+                     {:.4e} x {:.4e} mm): use finer cells or a grid over the contact",
+                    self.semi_axes[0], self.semi_axes[1]
+                ),
+            });
+        }
+        Ok(NormalSolution {
+            force: self.force,
+            approach: self.approach,
+            max_pressure: zone.max_pressure,
+            mean_pressure: self.force / zone.area,
+            contact_area: zone.area,
+            semi_axes: zone.half_extents(),
+            orientation: 0.0,
+            zone,
+            status: SolveStatus::new(Termination::Converged, 0, 0.0),
+            domains: 1,
+            grid,
+            pressure,
+            detail: *self,
+        })
     }
 
     /// Pressure sampled into a caller-provided buffer (no allocation).
