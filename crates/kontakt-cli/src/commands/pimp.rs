@@ -80,17 +80,26 @@ pub fn print_report(out: &mut impl Write, r: &PimpReport, json: bool) -> Result<
     if let Some(s) = r.separation_mm {
         writeln!(out, "  {:<26} {:>14.6}", "pose separation [mm]", s)?;
     }
+    // `grid_rounds` counts PimP's grid resizes and the half-space solver's domains.
     let work = match &r.solver {
         Some(s) => format!(
-            "{} iterations ({} FFT convolutions), residual {:.1e} (tolerance {:.0e}), {:?} boundary",
-            r.iterations, s.operator_applications, s.residual, s.tolerance, s.boundary
+            "{} iterations ({} FFT convolutions), residual {:.1e} (tolerance {:.0e}), {:?} boundary, {} domain(s)",
+            r.iterations,
+            s.operator_applications,
+            s.residual,
+            s.tolerance,
+            s.boundary,
+            r.grid_rounds
         ),
-        None => format!("{} force evaluations", r.iterations),
+        None => format!(
+            "{} force evaluations, {} grid resizes",
+            r.iterations, r.grid_rounds
+        ),
     };
     writeln!(
         out,
-        "  grid {} x {} cells of {:.4} x {:.4} mm, {work}, {} domain(s)",
-        r.grid.cells[0], r.grid.cells[1], r.grid.cell_mm[0], r.grid.cell_mm[1], r.grid_rounds
+        "  grid {} x {} cells of {:.4} x {:.4} mm, {work}",
+        r.grid.cells[0], r.grid.cells[1], r.grid.cell_mm[0], r.grid.cell_mm[1]
     )?;
     Ok(())
 }
