@@ -254,7 +254,8 @@ impl Pimp {
         )?;
         let estimate = match control {
             LoadControl::Force(f) => hertz.solve_force(f)?,
-            _ => hertz.solve_approach(approach_of(control))?,
+            // (a line load was refused by `point()`)
+            LoadControl::Approach(d) | LoadControl::LineLoad(d) => hertz.solve_approach(d)?,
         };
         let half = match (self.options.extent, self.options.mode) {
             (Some(e), _) => e,
@@ -263,7 +264,7 @@ impl Pimp {
                 // The published footprint is the contour g = d of the gap, d ≈ 0.6-1 delta.
                 let d = match control {
                     LoadControl::Force(_) => 0.7 * estimate.approach,
-                    _ => approach_of(control),
+                    LoadControl::Approach(d) | LoadControl::LineLoad(d) => d,
                 };
                 [
                     1.25 * (d / curvature.a_coef).sqrt(),
@@ -290,11 +291,9 @@ impl Pimp {
                         let achieved = sampled.force(d);
                         (d, status, f / achieved)
                     }
-                    _ => (
-                        approach_of(control),
-                        SolveStatus::new(Termination::Converged, 0, 0.0),
-                        1.0,
-                    ),
+                    LoadControl::Approach(d) | LoadControl::LineLoad(d) => {
+                        (d, SolveStatus::new(Termination::Converged, 0, 0.0), 1.0)
+                    }
                 };
                 let mut pressure = vec![0.0; grid.len()];
                 sampled.pressure_into(approach, &mut pressure);
@@ -320,7 +319,7 @@ impl Pimp {
         }
         let force = match control {
             LoadControl::Force(f) => f,
-            _ => zone.force,
+            LoadControl::Approach(_) | LoadControl::LineLoad(_) => zone.force,
         };
         Ok(NormalSolution {
             force,
@@ -339,14 +338,6 @@ impl Pimp {
                 mode: self.options.mode,
             },
         })
-    }
-}
-
-/// The approach of a validated point control that is not a force.
-fn approach_of(control: LoadControl) -> Millimetre {
-    match control {
-        LoadControl::Approach(d) => d,
-        LoadControl::Force(_) | LoadControl::LineLoad(_) => f64::NAN,
     }
 }
 
