@@ -1,4 +1,4 @@
-//! The TOML case schema (`schema_version = 1`). All lengths in mm, forces in N, moduli in
+//! The Hertz case: its TOML schema (`schema_version = 1`), runner and report. All lengths in mm, forces in N, moduli in
 //! MPa, angles in degrees (converted to radians at this edge).
 //!
 //! ```toml
@@ -27,7 +27,6 @@
 //! stress_mpa = 1500.0
 //! criterion = "von_mises"     # or "tresca"
 //! ```
-
 //!
 //! The result record of a case has stable, unit-suffixed keys (`schema_version = 1`).
 //! Keys are never renamed without bumping the schema version; new keys may be added.
