@@ -1,5 +1,5 @@
-//! The Hertz case: its TOML schema (`schema_version = 1`), runner and report. All lengths in mm, forces in N, moduli in
-//! MPa, angles in degrees (converted to radians at this edge).
+//! The Hertz case: its TOML schema (`schema_version = 1`), runner and report. All lengths
+//! in mm, forces in N, moduli in MPa, angles in degrees (converted to radians at this edge).
 //!
 //! ```toml
 //! name = "ball on flat"
