@@ -286,10 +286,10 @@ fn slide_to_roll_undefined_without_entrainment() {
         .velocities(&Point3::new(1.0, 2.0, 3.0), &Vector3::z_axis())
         .unwrap();
     assert_eq!(v.slide_to_roll(), None);
-    // Pure sliding: one body spins about the normal through the point, the other is still,
-    // so the mean is half the sliding velocity: ratio 2.
+    // Pure sliding: one body translates, the other is still, so the mean is half the
+    // sliding velocity: ratio 2; the normal component (7 mm/s) is projected out.
     let spinning = BodyState {
-        twist: Twist::new(Vector3::new(10.0, 0.0, 0.0), Vector3::zeros()),
+        twist: Twist::new(Vector3::new(10.0, 0.0, 7.0), Vector3::zeros()),
         ..still
     };
     let v = ContactPair {
@@ -298,6 +298,8 @@ fn slide_to_roll_undefined_without_entrainment() {
     }
     .velocities(&Point3::origin(), &Vector3::z_axis())
     .unwrap();
+    assert_eq!(v.sliding, Vector3::new(10.0, 0.0, 0.0));
+    assert_eq!(v.entrainment, Vector3::new(5.0, 0.0, 0.0));
     assert!((v.slide_to_roll().unwrap() - 2.0).abs() < 1e-15);
 }
 
