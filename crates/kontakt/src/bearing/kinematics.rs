@@ -51,9 +51,11 @@
 //! outer raceway at the roller's mid-section (`R = l cos β sin α` for both, `l` the apex
 //! distance of the roller's mid-point), `ω_c = (ω_i R_i + ω_o R_o) / (R_i + R_o)`: for
 //! zero cone angles this is the textbook epicyclic relation of a cylindrical roller bearing,
-//! `ω_c = ω_i D_i / (D_i + D_o)` with the outer ring fixed (Harris & Kotzalas, *Essential
-//! Concepts of Bearing Technology*, ch. 8). The same relations are in
-//! Liu X. et al. (2023) eqs. 1–2; the derivation is also in docs/bearing.md §4 "Kinematics".
+//! `ω_c = ω_i D_i / (D_i + D_o)` with the outer ring fixed. The same relations are in
+//! Liu X. et al. (2023) eqs. 1–2 (after Jiang et al. 1994), as quoted in
+//! /work/shared/reference/bearing-friction.md §1.1; the derivation is also in docs/bearing.md
+//! §4 "Kinematics". Wirsching et al. (2020) §1 name the sliding speed over the contact area,
+//! with the pressure, as what the rib's friction depends on: hence the per-cell field.
 //!
 //! # The general (twist) form
 //!
@@ -566,5 +568,39 @@ impl TaperedKinematics {
     pub fn relative_velocity_at(&self, cage_angle: f64, point: &Point3<f64>) -> Vector3<f64> {
         self.relative_angular_velocity(cage_angle)
             .cross(&(point - self.apex))
+    }
+}
+
+#[cfg(test)]
+#[allow(clippy::unwrap_used)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn slide_to_roll_is_none_when_it_would_overflow() {
+        let v = ContactVelocities {
+            sliding: Vector3::new(1.0, 0.0, 0.0),
+            entrainment: Vector3::new(1e-320, 0.0, 0.0),
+        };
+        assert_eq!(v.slide_to_roll(), None);
+        let v = ContactVelocities {
+            sliding: Vector3::new(3.0, 0.0, 0.0),
+            entrainment: Vector3::new(0.0, 4.0, 0.0),
+        };
+        assert_eq!(v.slide_to_roll(), Some(0.75));
+    }
+
+    #[test]
+    fn cage_speed_closed_form_and_relative_rotation_axis() {
+        // α_i = 20°, β = 3°: outer fixed ω_c = ω_i sin α_i / (sin α_i + sin α_o).
+        let (ai, b) = (20f64.to_radians(), 3f64.to_radians());
+        let k = TaperedKinematics::new(ai, b, Point3::origin(), 80.0, 100.0, 0.0).unwrap();
+        let expected = 100.0 * ai.sin() / (ai.sin() + (ai + 2.0 * b).sin());
+        assert!((k.cage_speed - expected).abs() < 1e-12 * 100.0);
+        // ω_roller − ω_i e_z is parallel to the inner contact line.
+        let rel = k.roller_angular_velocity(0.4) - Vector3::z() * k.inner_speed;
+        let along = k.directions(0.4).inner_line;
+        assert!(rel.cross(&along).norm() < 1e-12 * rel.norm());
+        assert!((rel - k.relative_angular_velocity(0.4)).norm() < 1e-12 * rel.norm());
     }
 }
