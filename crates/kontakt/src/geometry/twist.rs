@@ -12,7 +12,6 @@ use nalgebra::{Isometry3, Point3, Vector3};
 /// `linear` is the velocity \[mm/s\] of the body's reference point, the origin of its pose;
 /// `angular` its angular velocity \[rad/s\] (right-hand rule about the vector).
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Twist {
     /// Velocity of the body's reference point (its pose's origin) \[mm/s\], world frame.
     pub linear: Vector3<f64>,
