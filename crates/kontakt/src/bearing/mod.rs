@@ -2,13 +2,18 @@
 //! from the bearing's parameters (Wirsching et al. (2020) §2.1, Figure 2b and Table 1).
 //!
 //! Units: mm, N, MPa; angles in degrees at this interface (the case-file convention).
-//! The construction and the reading of Table 1 are in `docs/bearing.md`.
+//! The construction and the reading of Table 1 are in `docs/bearing.md`; [`kinematics`]: cage
+//! and roller speeds, body twists, sliding and entrainment velocities (docs/bearing.md §4).
 
 pub mod demo;
+pub mod kinematics;
 pub mod roller_rib;
 pub mod validation;
 
 pub use demo::{DemoMap, DemoRow, DemoStudy, demo_study};
+pub use kinematics::{
+    Bodies, BodyState, ContactFrame, ContactPair, ContactVelocities, Directions, TaperedKinematics,
+};
 pub use roller_rib::{
     CONTACT_HEIGHT, FaceShape, RibShape, RollerRib, RollerRibSpec, STUDY_FORCES, TABLE1,
     TaperedRollerBearing,

@@ -11,13 +11,17 @@
 //!   (Wirsching et al. (2020) eq. 2); [`PlacedSurface`] puts a surface in the world with a pose.
 //! - [`contact_point`]: the points of two placed surfaces with anti-parallel normals
 //!   (closest points, or the deepest point of an interpenetration), step 1 of PimP.
+//! - [`twist`]: rigid-body velocity ([`Twist`]: velocity of the reference point and angular
+//!   velocity, world frame) and the velocity of a body point.
 
 pub mod contact_point;
 pub mod curvature;
 pub mod grid;
 pub mod surface;
+pub mod twist;
 
 pub use contact_point::{ContactPoint, find_contact};
 pub use curvature::RelativeCurvature;
 pub use grid::Grid2;
 pub use surface::{Curvature, Hit, Material, PlacedSurface, Profile, Ray, Surface};
+pub use twist::Twist;
