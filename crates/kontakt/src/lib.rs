@@ -72,13 +72,13 @@
 //! | [`halfspace`] | coupled elastic half-space: Love coefficients, FFT operator (free / periodic), Polonsky-Keer solver with warm start, any gap or gap map, adaptive domain | done |
 //! | [`tangential`] | Cattaneo-Mindlin partial slip and Mindlin-Deresiewicz loading history, Carter's creep curve, Kalker's creep coefficients and linear theory, FASTSIM; traction curves | done |
 //! | [`traction`] | asperity-based traction curves: periodic spherical asperities on a rough line or circular Hertz contact, Mindlin partial slip per asperity (the thesis "Study of the traction curves", §3.1.2.2) | done |
-//! | [`bearing`] | roller end face / rib pair of a tapered roller bearing (Wirsching et al. (2020) Table 1) | roller/rib done; kinematics to come |
+//! | [`bearing`] | roller end face / rib pair of a tapered roller bearing (Wirsching et al. (2020) Table 1) ; kinematics (cage, roller spin, sliding and entrainment velocities) | roller/rib and kinematics done; film and friction power to come |
 //!
 //! Case files (TOML), the runner `Case::run` and the JSON reports live in the
 //! `kontakt-case` crate, so this crate holds physics only.
 //!
-//! Planned, in its own module with the same conventions: bearing kinematics (sliding
-//! velocities, friction power). Plots live in the `kontakt-plot` crate. See
+//! Planned, in its own module with the same conventions: the lubricant film, mixed
+//! friction and the friction power of the roller-end/rib contact. Plots live in the `kontakt-plot` crate. See
 //! `ARCHITECTURE.md`.
 //!
 //! ## References
