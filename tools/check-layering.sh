@@ -45,7 +45,7 @@ LAYERS=(
   "field"
   "hertz"
   "pimp halfspace"
-  "tangential traction"
+  "tangential traction lubrication"
   "bearing"
 )
 CASE_LAYER=kontakt_case
