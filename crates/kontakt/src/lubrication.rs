@@ -1,4 +1,4 @@
-//! Lubricant properties and the film parameter (issue 11, item 2: first step).
+//! Lubricant properties and the film parameter: the first part of the lubricant film model.
 //!
 //! * [`Lubricant`]: kinematic viscosity at 40 °C and 100 °C, density and pressure-viscosity
 //!   coefficient, validated field by field; viscosity at any temperature in
