@@ -1,4 +1,4 @@
-//! Kinematics of a tapered roller bearing with a common apex (issue 11, item 1): cage speed,
+//! Kinematics of a tapered roller bearing with a common apex: cage speed,
 //! roller spin, the roller's angular velocity relative to the inner ring (which carries the
 //! rib), the bodies' poses and twists, and the sliding and entrainment velocities at a
 //! contact point or on every cell of a contact field.

@@ -2,7 +2,7 @@
 //! half-space under uniform pressure on one rectangular cell.
 //!
 //! Boussinesq's point-force solution integrated over a rectangle (Love 1929; Johnson
-//! 1985 §3.3; seed 003 eq. 27). A pressure `p` \[MPa\] on the cell `|ξ| <= a`, `|η| <= b`
+//! 1985 §3.3; Johnson 1982 eq. 27). A pressure `p` \[MPa\] on the cell `|ξ| <= a`, `|η| <= b`
 //! displaces the surface point `(x, y)` of the two-body system by
 //!
 //! ```text

@@ -1,10 +1,10 @@
-//! The coupled elastic half-space solver: FFT boundary elements (seed 003 §5).
+//! The coupled elastic half-space solver: FFT boundary elements (Johnson 1982, §5).
 //!
 //! PimP's springs are independent: a cell's pressure depends on its own overlap only, so
-//! the bodies' flattening around the contact is missed (seed 000 §4 asks for "coupling the
-//! spring elements"). Here every cell's pressure displaces every other cell, through
+//! the bodies' flattening around the contact is missed (Wirsching et al. 2020, §4, ask for
+//! "coupling the spring elements"). Here every cell's pressure displaces every other cell, through
 //! Love's influence coefficients for uniform pressure on a rectangle ([`influence`]), and
-//! the contact is solved as the complementarity problem of seed 003 eqs 28a/b:
+//! the contact is solved as the complementarity problem of Johnson (1982) eqs 28a/b:
 //!
 //! ```text
 //! g_i = h_i + Σ_j C_ij p_j - δ  >= 0,   p_i >= 0,   p_i g_i = 0,   Σ p_i ΔA = F,
