@@ -234,7 +234,8 @@ fn twist_form_matches_common_apex_and_finite_differences() {
 /// point function at its world point, projected on the grid axes (1e-12 relative); the
 /// sliding field is the common-apex rotation ω_rel × (P − A) and the entrainment the mean of
 /// the roller's and ring's velocities in the cage frame, ω_R e_r × (P − C) and
-/// (ω_i − ω_c) e_z × (P − A), built here independently.
+/// (ω_i − ω_c) e_z × (P − A), built here independently; the affine form
+/// `ContactPair::velocity_field` equals the per-cell fill (1e-12 relative).
 #[test]
 fn velocity_field_on_a_rotated_grid() {
     let rr = pair("sphere-torus-57");
@@ -248,6 +249,7 @@ fn velocity_field_on_a_rotated_grid() {
     let mut entrain = vec![[0.0; 2]; grid.len()];
     pair.fill_field(&frame, &grid, orientation, &mut slide, &mut entrain)
         .unwrap();
+    let affine = pair.velocity_field(&frame, orientation).unwrap();
     let (s, c) = f64::sin_cos(orientation);
     let gx = frame.ex.into_inner() * c + frame.ey.into_inner() * s;
     let gy = frame.normal.cross(&gx);
@@ -263,6 +265,13 @@ fn velocity_field_on_a_rotated_grid() {
             let u = 0.5
                 * ((d.roller_axis * k.roller_spin).cross(&(p - centre))
                     + (d.axis * (k.inner_speed - k.cage_speed)).cross(&(p - k.apex)));
+            let (x, y) = (grid.x(i), grid.y(j));
+            // The affine form (what the friction integral evaluates) equals the per-cell fill.
+            let (sa, ua) = (affine.sliding_at(x, y), affine.entrainment_at(x, y));
+            for a in 0..2 {
+                assert!((slide[cell][a] - sa[a]).abs() <= 1e-12 * scale, "{sa:?}");
+                assert!((entrain[cell][a] - ua[a]).abs() <= 1e-12 * scale, "{ua:?}");
+            }
             for (field, point, direct) in [(&slide, v.sliding, vs), (&entrain, v.entrainment, u)] {
                 for (a, axis) in [gx, gy].iter().enumerate() {
                     assert!((field[cell][a] - point.dot(axis)).abs() <= 1e-12 * scale);

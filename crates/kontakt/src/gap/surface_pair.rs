@@ -5,7 +5,7 @@ use super::{GapSource, check_len};
 use crate::error::{Error, Result};
 use crate::geometry::contact_point::{ContactPoint, find_contact};
 use crate::geometry::surface::{Curvature, PlacedSurface, Ray};
-use crate::geometry::{Grid2, RelativeCurvature};
+use crate::geometry::{ContactFrame, Grid2, RelativeCurvature};
 use crate::units::Millimetre;
 use nalgebra::{Point3, Unit, Vector3};
 
@@ -187,5 +187,18 @@ impl GapSource for SurfacePairGap {
             }
         }
         Ok(())
+    }
+}
+
+impl ContactFrame {
+    /// The frame of a surface-pair gap: its contact point and axes `[x, y, z]`.
+    pub fn of_gap(gap: &SurfacePairGap) -> Self {
+        let [ex, ey, normal] = gap.axes();
+        ContactFrame {
+            origin: gap.contact().point,
+            ex,
+            ey,
+            normal,
+        }
     }
 }

@@ -13,15 +13,19 @@
 //!   (closest points, or the deepest point of an interpenetration), step 1 of PimP.
 //! - [`twist`]: rigid-body velocity ([`Twist`]: velocity of the reference point and angular
 //!   velocity, world frame) and the velocity of a body point.
+//! - [`motion`]: two bodies in contact: contact frame, sliding and entrainment velocities at
+//!   a point, on a grid, or as the exact affine field of rigid motion.
 
 pub mod contact_point;
 pub mod curvature;
 pub mod grid;
+pub mod motion;
 pub mod surface;
 pub mod twist;
 
 pub use contact_point::{ContactPoint, find_contact};
 pub use curvature::RelativeCurvature;
 pub use grid::Grid2;
+pub use motion::{BodyState, ContactFrame, ContactPair, ContactVelocities, VelocityField};
 pub use surface::{Curvature, Hit, Material, PlacedSurface, Profile, Ray, Surface};
 pub use twist::Twist;
