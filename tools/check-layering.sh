@@ -46,6 +46,7 @@ LAYERS=(
   "hertz"
   "pimp halfspace"
   "tangential traction lubrication"
+  "friction"
   "bearing"
 )
 CASE_LAYER=kontakt_case

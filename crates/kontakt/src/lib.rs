@@ -73,6 +73,7 @@
 //! | [`tangential`] | Cattaneo-Mindlin partial slip and Mindlin-Deresiewicz loading history, Carter's creep curve, Kalker's creep coefficients and linear theory, FASTSIM; traction curves | done |
 //! | [`traction`] | asperity-based traction curves: periodic spherical asperities on a rough line or circular Hertz contact, Mindlin partial slip per asperity (the thesis "Study of the traction curves", §3.1.2.2) | done |
 //! | [`lubrication`] | lubricant (ASTM D341 viscosity-temperature, ISO VG grades), film parameter Λ | lubricant and Λ done; film thickness (Hamrock-Dowson) to come |
+//! | [`friction`] | mixed-friction law per cell (Coulomb, load sharing exp(−BΛ^C), Newtonian / Eyring / limiting-shear fluid, regularised direction) and its integral over any pressure field: force, moments, power | done |
 //! | [`bearing`] | roller end face / rib pair of a tapered roller bearing (Wirsching et al. (2020) Table 1) ; kinematics (cage, roller spin, sliding and entrainment velocities) | roller/rib and kinematics done; film and friction power to come |
 //!
 //! Case files (TOML), the runner `Case::run` and the JSON reports live in the
@@ -91,6 +92,7 @@
 pub mod bearing;
 pub mod error;
 pub mod field;
+pub mod friction;
 pub mod gap;
 pub mod geometry;
 pub mod halfspace;
