@@ -66,4 +66,24 @@ impl<D> NormalSolution<D> {
     pub fn resultant(&self) -> (Newton, [Millimetre; 2]) {
         (self.zone.force, self.zone.centroid)
     }
+
+    /// The same solution with its method's `detail` replaced by `f(detail)` (for example
+    /// `|_| ()` to keep fields of different solvers in one collection).
+    pub fn map_detail<E>(self, f: impl FnOnce(D) -> E) -> NormalSolution<E> {
+        NormalSolution {
+            force: self.force,
+            approach: self.approach,
+            max_pressure: self.max_pressure,
+            mean_pressure: self.mean_pressure,
+            contact_area: self.contact_area,
+            semi_axes: self.semi_axes,
+            orientation: self.orientation,
+            zone: self.zone,
+            status: self.status,
+            domains: self.domains,
+            grid: self.grid,
+            pressure: self.pressure,
+            detail: f(self.detail),
+        }
+    }
 }
