@@ -62,7 +62,7 @@ const ETA: f64 = 0.04e-6;
 const ALPHA: f64 = 0.02;
 
 fn film(c: &FilmContact) -> FilmThickness {
-    film_thickness(c, ETA, ALPHA, HD).unwrap()
+    film_thickness(c, ETA, ALPHA, HD).expect("valid film input")
 }
 
 fn rel(a: f64, b: f64) -> f64 {
