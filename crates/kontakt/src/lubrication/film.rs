@@ -25,19 +25,19 @@ use crate::error::{Error, Result};
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct FilmContact {
-    /// Reduced radius of curvature along the contact's x axis [mm], finite and > 0.
+    /// Reduced radius of curvature along the contact's x axis \[mm\], finite and > 0.
     pub rx: f64,
-    /// Reduced radius of curvature along the contact's y axis [mm], finite and > 0.
+    /// Reduced radius of curvature along the contact's y axis \[mm\], finite and > 0.
     pub ry: f64,
-    /// Angle of the entrainment (mean surface) velocity from the x axis [rad], any finite
+    /// Angle of the entrainment (mean surface) velocity from the x axis \[rad\], any finite
     /// value; θ and θ + π give the same film.
     pub entrainment_angle: f64,
-    /// |u|, the mean surface speed (u₁ + u₂)/2 relative to the contact [mm/s], finite and
+    /// |u|, the mean surface speed (u₁ + u₂)/2 relative to the contact \[mm/s\], finite and
     /// ≥ 0. Zero gives the boundary-lubrication result h = 0 with a warning.
     pub entrainment_speed: f64,
-    /// Normal force [N], finite and > 0.
+    /// Normal force \[N\], finite and > 0.
     pub load: f64,
-    /// Contact modulus E* [MPa] (Johnson 1985, 1/E* = (1−ν₁²)/E₁ + (1−ν₂²)/E₂), finite and
+    /// Contact modulus E* \[MPa\] (Johnson 1985, 1/E* = (1−ν₁²)/E₁ + (1−ν₂²)/E₂), finite and
     /// > 0. Hamrock and Dowson's E′ is 2E*.
     pub reduced_modulus: f64,
 }
@@ -66,10 +66,10 @@ pub enum FilmFormula {
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct FilmRegime {
-    /// R_e, reduced radius in the entrainment direction [mm]:
+    /// R_e, reduced radius in the entrainment direction \[mm\]:
     /// 1/R_e = cos²θ/R_x + sin²θ/R_y.
     pub radius_entrainment: f64,
-    /// R_s, reduced radius across the entrainment (side-leakage direction) [mm]:
+    /// R_s, reduced radius across the entrainment (side-leakage direction) \[mm\]:
     /// 1/R_s = sin²θ/R_x + cos²θ/R_y.
     pub radius_side: f64,
     /// Speed parameter U = η₀u/(E′R_e).
@@ -168,9 +168,9 @@ impl FilmWarnings {
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct FilmThickness {
-    /// Central film thickness h_c [mm].
+    /// Central film thickness h_c \[mm\].
     pub central: f64,
-    /// Minimum film thickness h_min [mm].
+    /// Minimum film thickness h_min \[mm\].
     pub minimum: f64,
     /// The formula that produced the numbers.
     pub formula: FilmFormula,
@@ -204,8 +204,8 @@ fn positive_field(field: &'static str, value: f64, expected: &'static str) -> Re
 }
 
 /// The EHL film thickness of `contact` lubricated by an oil of inlet viscosity `viscosity`
-/// η₀ [MPa·s] (at the inlet temperature; 1 Pa·s = 1e-6 MPa·s) and pressure-viscosity
-/// coefficient `alpha` α [1/MPa] (1e-8 m²/N = 0.01 1/MPa), by `formula`.
+/// η₀ \[MPa·s\] (at the inlet temperature; 1 Pa·s = 1e-6 MPa·s) and pressure-viscosity
+/// coefficient `alpha` α \[1/MPa\] (1e-8 m²/N = 0.01 1/MPa), by `formula`.
 ///
 /// Entrainment at an angle θ to x is handled by referring the groups to the radius in the
 /// entrainment direction R_e and the ellipticity to R_s/R_e (1/R_e = cos²θ/R_x +
