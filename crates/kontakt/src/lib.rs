@@ -72,9 +72,9 @@
 //! | [`halfspace`] | coupled elastic half-space: Love coefficients, FFT operator (free / periodic), Polonsky-Keer solver with warm start, any gap or gap map, adaptive domain | done |
 //! | [`tangential`] | Cattaneo-Mindlin partial slip and Mindlin-Deresiewicz loading history, Carter's creep curve, Kalker's creep coefficients and linear theory, FASTSIM; traction curves | done |
 //! | [`traction`] | asperity-based traction curves: periodic spherical asperities on a rough line or circular Hertz contact, Mindlin partial slip per asperity (the thesis "Study of the traction curves", §3.1.2.2) | done |
-//! | [`lubrication`] | lubricant (ASTM D341 viscosity-temperature, ISO VG grades), film parameter Λ | lubricant and Λ done; film thickness (Hamrock-Dowson) to come |
+//! | [`lubrication`] | lubricant (ASTM D341 viscosity-temperature, ISO VG grades), film parameter Λ, EHL film thickness (Hamrock-Dowson central and minimum film, entrainment at any angle via R_e/R_s, regime groups U, G, W, k, Moes M, L, g_V, g_E, validity warnings) | lubricant, Λ and Hamrock-Dowson film done; Chittenden (1985) and Nijenbanning-Venner-Moes (1994) not implemented (constants unverified, see docs/film.md) |
 //! | [`friction`] | mixed-friction law per cell (Coulomb, load sharing exp(−BΛ^C), Newtonian / Eyring / limiting-shear fluid, regularised direction) and its integral over any pressure field: force, moments, power | done |
-//! | [`bearing`] | roller end face / rib pair of a tapered roller bearing (Wirsching et al. (2020) Table 1) ; kinematics (cage, roller spin, sliding and entrainment velocities) | roller/rib and kinematics done; film and friction power to come |
+//! | [`bearing`] | roller end face / rib pair of a tapered roller bearing (Wirsching et al. (2020) Table 1) ; kinematics (cage, roller spin, sliding and entrainment velocities); rib load, rib friction torque and power of the whole bearing | done |
 //!
 //! Case files (TOML), the runner `Case::run` and the JSON reports live in the
 //! `kontakt-case` crate, so this crate holds physics only.

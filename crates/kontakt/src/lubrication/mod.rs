@@ -1,19 +1,32 @@
-//! Lubricant properties and the film parameter: the first part of the lubricant film model.
+//! Lubricant properties, the film parameter and the EHL film thickness: the lubricant film
+//! model.
 //!
 //! * [`Lubricant`]: kinematic viscosity at 40 °C and 100 °C, density and pressure-viscosity
 //!   coefficient, validated field by field; viscosity at any temperature in
 //!   [`TEMPERATURE_RANGE_C`] by the Ubbelohde-Walther relation of ASTM D341;
 //!   [`Lubricant::iso_vg`] builds typical ISO VG grades.
 //! * [`film_parameter`]: Λ = h / √(σ₁² + σ₂²).
+//! * [`film_thickness`] (submodule `film`, re-exported here): the Hamrock-Dowson (1977)
+//!   central and minimum film of an elliptical contact, entrainment at any angle through
+//!   the radius in the entrainment direction, the dimensionless groups (U, G, W, k, Moes M
+//!   and L, g_V and g_E) and validity warnings ([`FilmWarnings`]).
 //!
-//! Not yet here (no published worked example was found to check them against): the
-//! Hamrock-Dowson film thickness, entrainment at an angle (Chittenden et al. 1985) and the
-//! regime-spanning Nijenbanning-Venner-Moes formula. See `docs/friction.md`.
+//! Not here: the oblique-entrainment fit of Chittenden et al. (1985) and the
+//! regime-spanning Nijenbanning-Venner-Moes (1994) formula, whose constants could not be
+//! verified against the original papers; thermal, starvation and roughness corrections.
+//! See `docs/film.md`.
 //!
 //! Units: kinematic viscosity mm²/s (= cSt), density kg/m³, dynamic viscosity MPa·s
 //! (1 MPa·s = 10⁶ Pa·s; 1 mPa·s = 1e-9 MPa·s), pressure-viscosity coefficient 1/MPa,
 //! temperatures in °C at the interface (converted to K internally, T = t + 273.15),
 //! lengths (film thickness, roughness) in mm.
+
+mod film;
+
+pub use film::{
+    FilmContact, FilmFormula, FilmRegime, FilmThickness, FilmWarnings, HAMROCK_DOWSON_K_RANGE,
+    film_thickness,
+};
 
 use crate::error::{Error, Result, positive_as};
 
