@@ -79,9 +79,7 @@
 //! Case files (TOML), the runner `Case::run` and the JSON reports live in the
 //! `kontakt-case` crate, so this crate holds physics only.
 //!
-//! Planned, in its own module with the same conventions: the lubricant film, mixed
-//! friction and the friction power of the roller-end/rib contact. Plots live in the `kontakt-plot` crate. See
-//! `ARCHITECTURE.md`.
+//! Plots live in the `kontakt-plot` crate. See `ARCHITECTURE.md`.
 //!
 //! ## References
 //! The bibliography is in `docs/references.md`; each item's docs cite equation numbers.

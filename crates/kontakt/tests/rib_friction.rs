@@ -8,7 +8,7 @@ use kontakt::bearing::{
     Operating, PressureModel, RibFrictionModel, RollerRibSpec, RollerSet, TaperedKinematics,
     roller_loads,
 };
-use kontakt::friction::{FilmState, FrictionLaw};
+use kontakt::friction::FrictionLaw;
 use nalgebra::{Point3, Vector3};
 
 fn exact_coulomb(mu: f64) -> FrictionLaw {
@@ -81,8 +81,7 @@ fn centrifugal_force_adds_to_the_rib_load_as_omega_squared() {
 
     let spec = RollerRibSpec::builtin("sphere-torus-57").unwrap();
     let rollers = RollerSet::default();
-    let model =
-        RibFrictionModel::new(spec, rollers, exact_coulomb(0.1), FilmState::dry(), true).unwrap();
+    let model = RibFrictionModel::new(spec, rollers, exact_coulomb(0.1), None, true).unwrap();
     let op = |w| Operating {
         axial_load: 6000.0,
         inner_speed: w,
@@ -130,14 +129,9 @@ fn centrifugal_force_adds_to_the_rib_load_as_omega_squared() {
 fn integrated_rib_torque_against_the_point_formula() {
     for name in ["sphere-torus-57", "torus-cone-14"] {
         let spec = RollerRibSpec::builtin(name).unwrap();
-        let model = RibFrictionModel::new(
-            spec,
-            RollerSet::default(),
-            exact_coulomb(0.1),
-            FilmState::dry(),
-            false,
-        )
-        .unwrap();
+        let model =
+            RibFrictionModel::new(spec, RollerSet::default(), exact_coulomb(0.1), None, false)
+                .unwrap();
         let sweep = model
             .sweep(PressureModel::Hertz, 6000.0, &[10.0, 100.0, 600.0])
             .unwrap();
@@ -245,22 +239,69 @@ fn bad_input_names_the_field() {
             "density",
         ),
     ] {
-        let err = RibFrictionModel::new(spec, rollers, exact_coulomb(0.1), FilmState::dry(), true)
-            .unwrap_err();
+        let err = RibFrictionModel::new(spec, rollers, exact_coulomb(0.1), None, true).unwrap_err();
         assert_eq!(err.field(), Some(name));
     }
-    let model = RibFrictionModel::new(
-        spec,
-        RollerSet::default(),
-        exact_coulomb(0.1),
-        FilmState::dry(),
-        true,
-    )
-    .unwrap();
+    let model =
+        RibFrictionModel::new(spec, RollerSet::default(), exact_coulomb(0.1), None, true).unwrap();
     let err = model.sweep(PressureModel::Pimp, 5000.0, &[]).unwrap_err();
     assert_eq!(err.field(), Some("speeds"));
     let err = model
         .sweep(PressureModel::Pimp, 5000.0, &[f64::NAN])
         .unwrap_err();
     assert_eq!(err.field(), Some("inner_speed"));
+}
+
+/// The lubricated rib (Aihara's law μ = 0.2 exp(−1.8 Λ^1.2), no fluid shear, an ISO VG 68
+/// oil at 70 °C, σ = 0.2 µm on both surfaces, Hamrock-Dowson central film): at constant
+/// rib load (no centrifugal force) the film grows as the entrainment speed to the power
+/// 0.67 (the formula's exponent: Λ(ω₂)/Λ(ω₁) = (ω₂/ω₁)^0.67, 1e-12), and the effective
+/// coefficient is the dry one times exp(−1.8 Λ^1.2) (1e-12): the Stribeck curve falls from
+/// the boundary value with speed. The rib contact lies outside the Hamrock-Dowson fit
+/// (k < 1) and the report says so.
+#[test]
+fn lubricated_rib_follows_aihara_with_the_film_of_the_speed() {
+    use kontakt::lubrication::{FilmFormula, Lubricant};
+    let spec = RollerRibSpec::builtin("sphere-torus-57").unwrap();
+    let lub = kontakt::bearing::RibLubrication {
+        lubricant: Lubricant::iso_vg(68, 860.0, 0.02).unwrap(),
+        temperature: 70.0,
+        roughness: [0.2e-3, 0.2e-3],
+        formula: FilmFormula::HamrockDowson,
+    };
+    let law = FrictionLaw {
+        regularisation_speed: 0.0,
+        ..FrictionLaw::aihara()
+    };
+    let wet = RibFrictionModel::new(spec, RollerSet::default(), law, Some(lub), false).unwrap();
+    let dry = RibFrictionModel::new(spec, RollerSet::default(), exact_coulomb(0.2), None, false)
+        .unwrap();
+    let speeds = [5.0, 20.0, 80.0, 320.0];
+    let w = wet.sweep(PressureModel::Pimp, 6000.0, &speeds).unwrap();
+    let d = dry.sweep(PressureModel::Pimp, 6000.0, &speeds).unwrap();
+    let mut last = f64::INFINITY;
+    for (i, (a, b)) in w.iter().zip(&d).enumerate() {
+        let lambda = a.film.lambda;
+        let h = a.film_thickness.unwrap();
+        println!(
+            "omega_i = {:5} rad/s: h_c = {:.4} µm, Lambda = {lambda:.4}, mu = {:.5} \
+             (dry {:.5}), M = {:.2} N·mm, k = {:.3}, warnings: {:?}",
+            speeds[i],
+            h.central * 1e3,
+            a.coefficient,
+            b.coefficient,
+            a.bearing_torque,
+            h.regime.k,
+            h.warning_lines()
+        );
+        let expected = b.coefficient * (-1.8 * lambda.powf(1.2)).exp();
+        assert!((a.coefficient - expected).abs() < 1e-12 * b.coefficient);
+        assert!(a.coefficient < last);
+        last = a.coefficient;
+        assert!(h.warnings.ellipticity_below_fit);
+        if i > 0 {
+            let ratio = lambda / w[i - 1].film.lambda;
+            assert!((ratio - (speeds[i] / speeds[i - 1]).powf(0.67)).abs() < 1e-12);
+        }
+    }
 }

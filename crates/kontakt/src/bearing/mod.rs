@@ -18,8 +18,8 @@ pub use kinematics::{
     Bodies, BodyState, ContactFrame, ContactPair, ContactVelocities, Directions, TaperedKinematics,
 };
 pub use rib_friction::{
-    Operating, PressureModel, RibFriction, RibFrictionModel, RollerLoads, RollerMass, RollerSet,
-    roller_loads,
+    Operating, PressureModel, RibFriction, RibFrictionModel, RibLubrication, RollerLoads,
+    RollerMass, RollerSet, roller_loads,
 };
 pub use roller_rib::{
     CONTACT_HEIGHT, FaceShape, RibShape, RollerRib, RollerRibSpec, STUDY_FORCES, TABLE1,

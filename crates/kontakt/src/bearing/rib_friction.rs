@@ -48,6 +48,9 @@ use crate::gap::{GapSource, SurfacePairGap};
 use crate::geometry::{ContactFrame, Grid2};
 use crate::halfspace::{Bem, BemOptions};
 use crate::hertz::{HertzPointContact, PointGeometry};
+use crate::lubrication::{
+    FilmContact, FilmFormula, FilmThickness, Lubricant, film_parameter, film_thickness,
+};
 use crate::material::ElasticMaterial;
 use crate::pimp::{Pimp, PimpOptions};
 use nalgebra::{Unit, Vector3};
@@ -278,6 +281,40 @@ pub fn roller_loads(
     })
 }
 
+/// The lubricant at the rib contact: oil, inlet temperature, the two surfaces' roughness and
+/// the film formula. The film is evaluated at the contact point for every operating point
+/// (entrainment speed, rib load); its central thickness sets the shear rate and
+/// `Λ = h_c / √(σ₁² + σ₂²)`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct RibLubrication {
+    /// The oil.
+    pub lubricant: Lubricant,
+    /// Inlet (bulk oil) temperature \[°C\].
+    pub temperature: f64,
+    /// RMS roughness of the roller end face and of the rib \[mm\].
+    pub roughness: [f64; 2],
+    /// Film thickness formula.
+    pub formula: FilmFormula,
+}
+
+impl RibLubrication {
+    fn check(&self) -> Result<()> {
+        self.lubricant.dynamic_viscosity(self.temperature)?;
+        film_parameter(1.0, self.roughness[0], self.roughness[1]).map_err(|e| match e {
+            Error::InvalidInput {
+                value, expected, ..
+            } => Error::InvalidInput {
+                field: "roughness".into(),
+                value,
+                expected,
+            },
+            other => other,
+        })?;
+        Ok(())
+    }
+}
+
 /// Operating point of the bearing.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
@@ -314,6 +351,8 @@ pub struct RibFriction {
     pub entrainment_speed: f64,
     /// The film used by the friction law (dry when no lubricant is given).
     pub film: FilmState,
+    /// The film thickness, its regime groups and warnings (none when dry).
+    pub film_thickness: Option<FilmThickness>,
     /// Friction of one roller's rib contact (force and moments on the roller).
     pub contact: ContactFriction,
     /// Effective friction coefficient |F_t| / Q_f.
@@ -341,7 +380,7 @@ pub struct RibFrictionModel {
     rollers: RollerSet,
     mass: RollerMass,
     law: FrictionLaw,
-    film: FilmState,
+    lubrication: Option<RibLubrication>,
     centrifugal: bool,
     material: ElasticMaterial,
     hertz: HertzPointContact,
@@ -351,20 +390,24 @@ pub struct RibFrictionModel {
 
 impl RibFrictionModel {
     /// The model of the pairing `spec` (steel on steel) with `rollers`, the friction law
-    /// `law` and the film `film` (use [`FilmState::dry`] for dry or boundary friction);
+    /// `law` and the lubricant `lubrication` (`None`: dry, every cell in boundary friction);
     /// `centrifugal` adds the rollers' centrifugal force to the rib load.
     ///
     /// # Errors
-    /// Those of [`RollerRib::new`], [`RollerSet::mass`], [`FrictionLaw::check`] and of the
-    /// solvers' set-up.
+    /// Those of [`RollerRib::new`], [`RollerSet::mass`], [`FrictionLaw::check`], of the
+    /// lubricant at its temperature, field `roughness` (negative, non-finite or both zero),
+    /// and of the solvers' set-up.
     pub fn new(
         spec: RollerRibSpec,
         rollers: RollerSet,
         law: FrictionLaw,
-        film: FilmState,
+        lubrication: Option<RibLubrication>,
         centrifugal: bool,
     ) -> Result<Self> {
-        law.with_film(&film)?;
+        law.check()?;
+        if let Some(l) = &lubrication {
+            l.check()?;
+        }
         let pair = RollerRib::new(spec)?;
         let mass = rollers.mass(&pair)?;
         let gap = SurfacePairGap::new(pair.face.clone(), pair.rib.clone(), pair.contact)?;
@@ -385,7 +428,7 @@ impl RibFrictionModel {
             rollers,
             mass,
             law,
-            film,
+            lubrication,
             centrifugal,
             material,
             hertz,
@@ -481,10 +524,11 @@ impl RibFrictionModel {
         kinematics: &TaperedKinematics,
         loads: &RollerLoads,
     ) -> Result<RibFriction> {
-        let law = self.law.with_film(&self.film)?;
         let pair = kinematics.rib_pair(0.0)?;
-        let contact = contact_friction(field, &self.frame, &pair, &law)?;
         let centre = pair.velocities(&self.frame.origin, &self.frame.normal)?;
+        let (film, film_thickness) = self.film(&centre.entrainment, loads.rib)?;
+        let law = self.law.with_film(&film)?;
+        let contact = contact_friction(field, &self.frame, &pair, &law)?;
         let apex = kinematics.apex;
         let inner_line = kinematics.directions(0.0).inner_line;
         let r = self.frame.origin - apex;
@@ -505,7 +549,8 @@ impl RibFrictionModel {
             contact_height,
             sliding_speed: centre.sliding.norm(),
             entrainment_speed: centre.entrainment.norm(),
-            film: self.film,
+            film,
+            film_thickness,
             coefficient: contact.force.norm() / loads.rib,
             roller_axis_moment: contact.moment_about(&roller.into(), &roller_axis),
             ring_axis_moment: -z * contact.moment_about(&apex, &Vector3::z_axis()),
@@ -518,6 +563,46 @@ impl RibFrictionModel {
             },
             contact,
         })
+    }
+
+    /// The film at the contact point for the entrainment velocity `entrainment` \[mm/s\]
+    /// (world frame, in the contact plane) and the rib load `load` \[N\]: the Hertzian
+    /// radii of the gap's principal curvatures, the entrainment angle from its first
+    /// principal direction. Dry without a lubricant.
+    ///
+    /// # Errors
+    /// Those of [`film_thickness`], [`film_parameter`] and [`FilmState::new`].
+    pub fn film(
+        &self,
+        entrainment: &Vector3<f64>,
+        load: f64,
+    ) -> Result<(FilmState, Option<FilmThickness>)> {
+        let Some(lub) = &self.lubrication else {
+            return Ok((FilmState::dry(), None));
+        };
+        let k = self.gap.curvature();
+        let (s, c) = k.orientation.sin_cos();
+        let (ex, ey) = (self.frame.ex.into_inner(), self.frame.ey.into_inner());
+        let px = ex * c + ey * s;
+        let py = -ex * s + ey * c;
+        let contact = FilmContact {
+            rx: 0.5 / k.a_coef,
+            ry: 0.5 / k.b_coef,
+            entrainment_angle: entrainment.dot(&py).atan2(entrainment.dot(&px)),
+            entrainment_speed: entrainment.norm(),
+            load,
+            reduced_modulus: crate::material::effective_modulus(&self.material, &self.material),
+        };
+        let eta = lub.lubricant.dynamic_viscosity(lub.temperature)?;
+        let alpha = lub.lubricant.alpha();
+        let h = film_thickness(&contact, eta, alpha, lub.formula)?;
+        let lambda = film_parameter(h.central, lub.roughness[0], lub.roughness[1])?;
+        Ok((FilmState::new(h.central, lambda, eta, alpha)?, Some(h)))
+    }
+
+    /// The lubricant, if any.
+    pub fn lubrication(&self) -> Option<&RibLubrication> {
+        self.lubrication.as_ref()
     }
 
     /// Solve the field at the rib load of `op` and the friction on it.
