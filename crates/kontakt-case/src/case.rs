@@ -21,6 +21,9 @@ pub enum Case {
     Bem(Box<crate::pimp_case::PimpCase>),
     /// `method = "traction"`: traction curves ([`crate::traction_case`]).
     Traction(Box<crate::traction_case::TractionCase>),
+    /// `method = "friction"`: rib friction of a tapered roller bearing
+    /// ([`crate::friction_case`]).
+    Friction(Box<crate::friction_case::FrictionCase>),
 }
 
 impl Case {
@@ -39,10 +42,11 @@ impl Case {
             "pimp" => Ok(Case::Pimp(Box::new(parse_toml(text)?))),
             "bem" => Ok(Case::Bem(Box::new(parse_toml(text)?))),
             "traction" => Ok(Case::Traction(Box::new(parse_toml(text)?))),
+            "friction" => Ok(Case::Friction(Box::new(parse_toml(text)?))),
             other => Err(Error::invalid(
                 "method",
                 other,
-                "\"hertz\", \"pimp\", \"bem\" or \"traction\"",
+                "\"hertz\", \"pimp\", \"bem\", \"traction\" or \"friction\"",
             )),
         }
     }
@@ -54,6 +58,7 @@ impl Case {
             Case::Pimp(_) => "pimp",
             Case::Bem(_) => "bem",
             Case::Traction(_) => "traction",
+            Case::Friction(_) => "friction",
         }
     }
 
@@ -74,6 +79,9 @@ impl Case {
             Case::Traction(case) => {
                 Outcome::Traction(Box::new(crate::traction_case::run_traction_case(case)?))
             }
+            Case::Friction(case) => {
+                Outcome::Friction(Box::new(crate::friction_case::run_friction_case(case)?))
+            }
         })
     }
 }
@@ -91,6 +99,8 @@ pub enum Outcome {
     Bem(Box<crate::bem_case::BemOutcome>),
     /// Traction curves.
     Traction(Box<crate::traction_case::TractionReport>),
+    /// Rib friction report and the field of its maps.
+    Friction(Box<crate::friction_case::FrictionOutcome>),
 }
 
 impl Serialize for Outcome {
@@ -100,6 +110,7 @@ impl Serialize for Outcome {
             Outcome::Pimp(o) => o.report.serialize(s),
             Outcome::Bem(o) => o.report.serialize(s),
             Outcome::Traction(r) => r.serialize(s),
+            Outcome::Friction(o) => o.report.serialize(s),
         }
     }
 }

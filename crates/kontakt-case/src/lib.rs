@@ -7,7 +7,7 @@
 //! TOML case file ──parse──▶ Case ──Case::run──▶ kontakt (physics) ──▶ Outcome ──▶ JSON report
 //! ```
 //!
-//! - [`Case`]: every schema (`method = "hertz" | "pimp" | "bem" | "traction"`), parsed
+//! - [`Case`]: every schema (`method = "hertz" | "pimp" | "bem" | "traction" | "friction"`), parsed
 //!   from TOML with unknown keys refused; [`Case::run`] is the one dispatch that every
 //!   front end calls.
 //! - [`Outcome`]: the report (stable, unit-suffixed JSON keys, `schema_version`) plus,
@@ -21,6 +21,7 @@
 pub mod bem_case;
 pub mod case;
 mod common;
+pub mod friction_case;
 pub mod hertz_case;
 pub mod maps;
 pub mod pimp_case;
@@ -29,6 +30,7 @@ pub mod traction_case;
 pub use bem_case::{BemOutcome, run_bem_case};
 pub use case::{Case, CaseFile, Outcome};
 pub use common::SCHEMA_VERSION;
+pub use friction_case::{FrictionCase, FrictionOutcome, FrictionReport, run_friction_case};
 pub use hertz_case::{ContactReport, run_case};
 pub use pimp_case::{PimpCase, PimpOutcome, PimpReport, run_pimp_case};
 pub use traction_case::{TractionCase, TractionReport, run_traction_case};

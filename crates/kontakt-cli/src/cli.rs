@@ -32,6 +32,10 @@ pub enum Command {
     /// Traction curves F_T/(mu F_N) against the creepage (slide-to-roll ratio): Carter,
     /// Kalker linear, FASTSIM, from a TOML case (method = "traction"; docs/case-schema.md).
     Traction(TractionArgs),
+    /// Friction torque and power of the roller-end/rib contact of a tapered roller bearing
+    /// over a speed sweep: Hertz, PimP and/or half-space pressure, lubricant film, mixed
+    /// friction (TOML case, method = "friction"; docs/case-schema.md).
+    Friction(FrictionArgs),
 }
 
 #[derive(Debug, Args)]
@@ -169,6 +173,31 @@ pub struct TractionArgs {
     /// Draw the traction curves (.png or .svg); Kalker linear up to saturation.
     #[arg(long, value_name = "FILE.png|svg")]
     pub plot: Option<PathBuf>,
+    /// Print one JSON document instead of the table.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Debug, Args)]
+pub struct FrictionArgs {
+    /// Case file (TOML, method = "friction"), or `-` for standard input.
+    #[arg(value_name = "CASE.toml")]
+    pub case: PathBuf,
+    /// Write every row (model × speed) to this CSV file.
+    #[arg(long, value_name = "FILE.csv")]
+    pub csv: Option<PathBuf>,
+    /// Draw the rib friction torque of the bearing against speed, per model (.png or .svg).
+    #[arg(long, value_name = "FILE.png|svg")]
+    pub plot: Option<PathBuf>,
+    /// Draw the friction coefficient against speed (Stribeck curve), per model.
+    #[arg(long, value_name = "FILE.png|svg")]
+    pub stribeck: Option<PathBuf>,
+    /// Draw the sliding velocity over the pressure map (first model, middle speed).
+    #[arg(long, value_name = "FILE.png|svg")]
+    pub map: Option<PathBuf>,
+    /// Draw the friction-power density map (first model, middle speed).
+    #[arg(long, value_name = "FILE.png|svg")]
+    pub density: Option<PathBuf>,
     /// Print one JSON document instead of the table.
     #[arg(long)]
     pub json: bool,

@@ -9,6 +9,7 @@ use kontakt_case::case::{
 };
 use kontakt_case::{Case, Outcome, run_case};
 
+pub mod friction;
 pub mod pimp;
 pub mod traction;
 pub mod validate;
@@ -34,6 +35,12 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                 "hertz" if wants_field => {
                     return Err(InputError(format!(
                         "{label}: --csv and --map need a pressure field: use method = \"pimp\" or \"bem\""
+                    ))
+                    .into());
+                }
+                "friction" if wants_field => {
+                    return Err(InputError(format!(
+                        "{label}: friction cases write their tables and maps with `kontakt friction {label} --csv FILE --map FILE`"
                     ))
                     .into());
                 }
@@ -97,11 +104,15 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                     pimp::print_report(out, &outcome.report, args.json)
                 }
                 Outcome::Traction(report) => traction::print_report(out, &report, args.json),
+                Outcome::Friction(outcome) => {
+                    friction::print_report(out, &outcome.report, args.json)
+                }
             }
         }
         Command::Demo(args) => pimp::demo(&args.out, out, args.json),
         Command::Validate(args) => validate::validate(&args.out, args.cells, out, args.json),
         Command::Traction(args) => traction::run(args, out),
+        Command::Friction(args) => friction::run(args, out),
     }
 }
 

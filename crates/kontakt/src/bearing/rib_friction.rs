@@ -65,6 +65,7 @@ pub enum PressureModel {
     /// PimP (corrected bedding).
     Pimp,
     /// The coupled elastic half-space solver.
+    #[cfg_attr(feature = "serde", serde(rename = "halfspace"))]
     HalfSpace,
 }
 
@@ -89,7 +90,7 @@ impl PressureModel {
 /// The rollers of the bearing: number, length and density (for the centrifugal force).
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-#[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
+#[cfg_attr(feature = "serde", serde(default, deny_unknown_fields))]
 pub struct RollerSet {
     /// Number of rollers Z (≥ 3).
     pub count: usize,
@@ -329,7 +330,6 @@ pub struct Operating {
 
 /// The friction of the rib contact at one operating point.
 #[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct RibFriction {
     /// The operating point.
     pub operating: Operating,
@@ -598,6 +598,11 @@ impl RibFrictionModel {
         let h = film_thickness(&contact, eta, alpha, lub.formula)?;
         let lambda = film_parameter(h.central, lub.roughness[0], lub.roughness[1])?;
         Ok((FilmState::new(h.central, lambda, eta, alpha)?, Some(h)))
+    }
+
+    /// The friction law.
+    pub fn law(&self) -> &FrictionLaw {
+        &self.law
     }
 
     /// The lubricant, if any.

@@ -215,7 +215,6 @@ pub fn power_density(
 
 /// Friction of a contact in the world: the grid-frame sums placed by the contact frame.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct ContactFriction {
     /// The grid-frame sums.
     pub grid: GridFriction,

@@ -1,0 +1,747 @@
+//! Friction cases (`method = "friction"`, `schema_version = 1`): the roller-end/rib contact of
+//! a tapered roller bearing under axial load over a sweep of inner-ring speeds, with the
+//! pressure from Hertz, PimP and/or the half-space solver, and its report: rib load, film,
+//! friction coefficient, friction moments, power and the rib's share of the bearing torque.
+//!
+//! ```toml
+//! name = "rib friction, sphere/torus r_R = 57 mm"
+//! method = "friction"
+//! models = ["hertz", "pimp", "halfspace"]   # pressure models; default ["pimp"]
+//!
+//! [geometry]                 # as for method = "pimp": a built-in pairing or face + rib
+//! kind = "roller_rib"
+//! pairing = "sphere-torus-57"
+//!
+//! [rollers]                  # optional; default 17 rollers, 16 mm, 7850 kg/m³
+//! count = 17
+//! length_mm = 16.0
+//! density_kg_m3 = 7850.0
+//!
+//! [load]
+//! axial_n = 15000.0
+//! centrifugal = true         # default true: the rollers' centrifugal force adds to the rib load
+//!
+//! [speed]                    # inner ring, outer ring fixed: a list ...
+//! rpm = [100.0, 1000.0, 3000.0]
+//! # ... or a range: min_rpm = 50.0, max_rpm = 6000.0, points = 12, spacing = "log" (or "linear")
+//!
+//! [lubricant]                # optional; absent = dry (boundary friction everywhere)
+//! iso_vg = 68                # or nu40_mm2_s and nu100_mm2_s
+//! density_kg_m3 = 860.0
+//! alpha_per_mpa = 0.02
+//! temperature_c = 70.0
+//! roughness_mm = [0.0002, 0.0002]   # rms of the roller end face and the rib
+//! formula = "hamrock_dowson"
+//!
+//! [friction]                 # optional
+//! preset = "mixed"           # "coulomb" (default when dry), "aihara", "mixed" (default when lubricated)
+//! mu = 0.12                  # boundary friction coefficient (overrides the preset's)
+//! # sharing = "exponential"; b = 1.9; c = 0.99      load sharing phi = exp(-b Lambda^c), or "boundary"
+//! # fluid = "limiting_shear"; tau_l0_mpa = 2.0; tau_l_slope = 0.07   or "none", "newtonian", "eyring" (tau0_mpa)
+//! # regularisation_speed_mm_s = 1.0
+//! ```
+//!
+//! The schema is documented in `docs/case-schema.md`; [`run_friction_case`] turns a case
+//! into a [`FrictionOutcome`] (the [`FrictionReport`] and the fields for the maps).
+
+use crate::pimp_case::{GeometrySpec, roller_rib_from_spec};
+use crate::common::SCHEMA_VERSION;
+use kontakt::bearing::{
+    Operating, PressureModel, RibFriction, RibFrictionModel, RibLubrication, RollerSet,
+};
+use kontakt::field::NormalSolution;
+use kontakt::friction::{FluidShear, FrictionLaw, LoadSharing, power_density as power_density_into};
+use kontakt::geometry::VelocityField;
+use kontakt::lubrication::{FilmFormula, Lubricant};
+use kontakt::{Error, Result};
+use serde::{Deserialize, Serialize};
+use std::collections::BTreeSet;
+
+/// rad/s per r/min.
+const RAD_S_PER_RPM: f64 = std::f64::consts::PI / 30.0;
+
+/// A friction case, as read from TOML.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FrictionCase {
+    /// Optional label echoed in the report.
+    #[serde(default)]
+    pub name: Option<String>,
+    /// Must be `"friction"`.
+    pub method: String,
+    /// Pressure models, in this order (default: pimp).
+    #[serde(default = "default_models")]
+    pub models: Vec<PressureModel>,
+    /// The roller/rib geometry (`kind = "roller_rib"`).
+    pub geometry: GeometrySpec,
+    /// The rollers (default [`RollerSet::default`]).
+    #[serde(default)]
+    pub rollers: RollerSet,
+    /// The bearing load.
+    pub load: FrictionLoad,
+    /// Inner-ring speeds.
+    pub speed: SpeedSpec,
+    /// The lubricant; absent: dry.
+    #[serde(default)]
+    pub lubricant: Option<LubricantSpec>,
+    /// The friction law.
+    #[serde(default)]
+    pub friction: FrictionSpec,
+}
+
+fn default_models() -> Vec<PressureModel> {
+    vec![PressureModel::Pimp]
+}
+
+/// `[load]`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FrictionLoad {
+    /// Axial load of the bearing F_a \[N\], > 0.
+    pub axial_n: f64,
+    /// Add the rollers' centrifugal force to the rib load (default true).
+    #[serde(default = "yes")]
+    pub centrifugal: bool,
+}
+
+fn yes() -> bool {
+    true
+}
+
+/// `[speed]`: inner-ring speeds \[r/min\] (outer ring fixed), a list or a range.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct SpeedSpec {
+    /// The speeds \[r/min\].
+    #[serde(default)]
+    pub rpm: Option<Vec<f64>>,
+    /// Lowest speed of a range \[r/min\].
+    #[serde(default)]
+    pub min_rpm: Option<f64>,
+    /// Highest speed of a range \[r/min\].
+    #[serde(default)]
+    pub max_rpm: Option<f64>,
+    /// Points of a range (2..=1000, default 12).
+    #[serde(default)]
+    pub points: Option<usize>,
+    /// Spacing of a range (default log).
+    #[serde(default)]
+    pub spacing: Spacing,
+}
+
+/// Spacing of a speed range.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum Spacing {
+    /// Evenly in log(speed).
+    #[default]
+    Log,
+    /// Evenly in speed.
+    Linear,
+}
+
+impl SpeedSpec {
+    /// The speeds \[r/min\].
+    ///
+    /// # Errors
+    /// Keys `speed.rpm`, `speed.min_rpm`, `speed.max_rpm`, `speed.points`: either a list or a
+    /// range; speeds finite and > 0 r/min (≤ 100 000); min < max; 2..=1000 points.
+    pub fn speeds(&self) -> Result<Vec<f64>> {
+        const MAX: f64 = 1e5;
+        let check = |key: &'static str, v: f64| {
+            if v.is_finite() && v > 0.0 && v <= MAX {
+                Ok(v)
+            } else {
+                Err(Error::invalid(key, v, "a speed > 0 and <= 100000 r/min"))
+            }
+        };
+        match (&self.rpm, self.min_rpm, self.max_rpm) {
+            (Some(list), None, None) if self.points.is_none() => {
+                if list.is_empty() {
+                    return Err(Error::invalid(
+                        "speed.rpm",
+                        "an empty list",
+                        "at least one speed",
+                    ));
+                }
+                list.iter().map(|&v| check("speed.rpm", v)).collect()
+            }
+            (None, Some(lo), Some(hi)) => {
+                let (lo, hi) = (check("speed.min_rpm", lo)?, check("speed.max_rpm", hi)?);
+                if lo >= hi {
+                    return Err(Error::invalid(
+                        "speed.max_rpm",
+                        hi,
+                        format!("a speed above min_rpm = {lo}"),
+                    ));
+                }
+                let n = self.points.unwrap_or(12);
+                if !(2..=1000).contains(&n) {
+                    return Err(Error::invalid("speed.points", n, "2 to 1000 points"));
+                }
+                Ok((0..n)
+                    .map(|i| {
+                        let t = i as f64 / (n - 1) as f64;
+                        match self.spacing {
+                            Spacing::Log => lo * (hi / lo).powf(t),
+                            Spacing::Linear => lo + (hi - lo) * t,
+                        }
+                    })
+                    .collect())
+            }
+            _ => Err(Error::invalid(
+                "speed",
+                "neither a list nor a complete range",
+                "either rpm = [...] or min_rpm, max_rpm (and optionally points, spacing)",
+            )),
+        }
+    }
+}
+
+/// `[lubricant]`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LubricantSpec {
+    /// ISO VG grade (32, 46, 68, 100, 150, 220); or give both viscosities.
+    #[serde(default)]
+    pub iso_vg: Option<u32>,
+    /// Kinematic viscosity at 40 °C \[mm²/s\].
+    #[serde(default)]
+    pub nu40_mm2_s: Option<f64>,
+    /// Kinematic viscosity at 100 °C \[mm²/s\].
+    #[serde(default)]
+    pub nu100_mm2_s: Option<f64>,
+    /// Density \[kg/m³\].
+    pub density_kg_m3: f64,
+    /// Pressure-viscosity coefficient \[1/MPa\].
+    pub alpha_per_mpa: f64,
+    /// Oil (inlet) temperature \[°C\].
+    pub temperature_c: f64,
+    /// RMS roughness of the roller end face and of the rib \[mm\].
+    pub roughness_mm: [f64; 2],
+    /// Film formula (default Hamrock-Dowson).
+    #[serde(default)]
+    pub formula: FormulaSpec,
+}
+
+/// Film formula names of the case file.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "snake_case")]
+pub enum FormulaSpec {
+    /// Hamrock & Dowson (1977).
+    #[default]
+    HamrockDowson,
+}
+
+/// `[friction]`: a preset and overrides.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub struct FrictionSpec {
+    /// The starting law (default: coulomb when dry, mixed when lubricated).
+    #[serde(default)]
+    pub preset: Option<Preset>,
+    /// Boundary friction coefficient μ_b.
+    #[serde(default)]
+    pub mu: Option<f64>,
+    /// Load sharing.
+    #[serde(default)]
+    pub sharing: Option<SharingSpec>,
+    /// `b` of exp(−b Λ^c).
+    #[serde(default)]
+    pub b: Option<f64>,
+    /// `c` of exp(−b Λ^c).
+    #[serde(default)]
+    pub c: Option<f64>,
+    /// Fluid shear law.
+    #[serde(default)]
+    pub fluid: Option<FluidSpec>,
+    /// Eyring stress \[MPa\].
+    #[serde(default)]
+    pub tau0_mpa: Option<f64>,
+    /// Limiting shear stress at zero pressure \[MPa\].
+    #[serde(default)]
+    pub tau_l0_mpa: Option<f64>,
+    /// Pressure slope of the limiting shear stress.
+    #[serde(default)]
+    pub tau_l_slope: Option<f64>,
+    /// Regularisation speed \[mm/s\].
+    #[serde(default)]
+    pub regularisation_speed_mm_s: Option<f64>,
+}
+
+/// Friction presets.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Preset {
+    /// Plain Coulomb, μ = 0.1.
+    Coulomb,
+    /// Aihara (1987): 0.2 exp(−1.8 Λ^1.2), no fluid shear.
+    Aihara,
+    /// exp(−1.90 Λ^0.99) sharing (Wingertszahn et al. 2023), μ_b = 0.1, limiting shear.
+    Mixed,
+}
+
+/// Load-sharing names.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum SharingSpec {
+    /// φ = 1.
+    Boundary,
+    /// φ = exp(−b Λ^c).
+    Exponential,
+}
+
+/// Fluid-law names.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum FluidSpec {
+    /// No fluid shear.
+    None,
+    /// Newtonian.
+    Newtonian,
+    /// Eyring.
+    Eyring,
+    /// Limiting shear.
+    LimitingShear,
+}
+
+impl FrictionSpec {
+    /// The law: the preset, then each given key.
+    ///
+    /// # Errors
+    /// Keys `friction.*` out of range (see [`FrictionLaw::check`]).
+    pub fn law(&self, lubricated: bool) -> Result<FrictionLaw> {
+        let preset = self.preset.unwrap_or(if lubricated {
+            Preset::Mixed
+        } else {
+            Preset::Coulomb
+        });
+        let mut law = match preset {
+            Preset::Coulomb => FrictionLaw::coulomb(0.1)?,
+            Preset::Aihara => FrictionLaw::aihara(),
+            Preset::Mixed => FrictionLaw::mixed(0.1)?,
+        };
+        if let Some(mu) = self.mu {
+            law.boundary_coefficient = mu;
+        }
+        let (b0, c0) = match law.sharing {
+            LoadSharing::Exponential { b, c } => (b, c),
+            LoadSharing::Boundary => (1.9, 0.99),
+        };
+        match self.sharing {
+            Some(SharingSpec::Boundary) => law.sharing = LoadSharing::Boundary,
+            Some(SharingSpec::Exponential) => {
+                law.sharing = LoadSharing::Exponential { b: b0, c: c0 }
+            }
+            None => {}
+        }
+        if self.b.is_some() || self.c.is_some() {
+            match &mut law.sharing {
+                LoadSharing::Exponential { b, c } => {
+                    *b = self.b.unwrap_or(*b);
+                    *c = self.c.unwrap_or(*c);
+                }
+                LoadSharing::Boundary => {
+                    return Err(Error::invalid(
+                        "friction.b",
+                        "given with sharing = \"boundary\"",
+                        "b and c only with sharing = \"exponential\"",
+                    ));
+                }
+            }
+        }
+        if let Some(fluid) = self.fluid {
+            law.fluid = match fluid {
+                FluidSpec::None => FluidShear::None,
+                FluidSpec::Newtonian => FluidShear::Newtonian,
+                FluidSpec::Eyring => FluidShear::Eyring {
+                    tau0: self.tau0_mpa.unwrap_or(5.0),
+                },
+                FluidSpec::LimitingShear => FluidShear::LimitingShear {
+                    tau_l0: self.tau_l0_mpa.unwrap_or(2.0),
+                    slope: self.tau_l_slope.unwrap_or(0.07),
+                },
+            };
+        } else if let FluidShear::LimitingShear { tau_l0, slope } = law.fluid {
+            law.fluid = FluidShear::LimitingShear {
+                tau_l0: self.tau_l0_mpa.unwrap_or(tau_l0),
+                slope: self.tau_l_slope.unwrap_or(slope),
+            };
+        }
+        if let Some(v) = self.regularisation_speed_mm_s {
+            law.regularisation_speed = v;
+        }
+        law.check().map_err(|e| {
+            e.map_field(|f| {
+                let key = match f {
+                    "boundary_coefficient" => "mu",
+                    "sharing.b" => "b",
+                    "sharing.c" => "c",
+                    "fluid.tau0" => "tau0_mpa",
+                    "fluid.tau_l0" => "tau_l0_mpa",
+                    "fluid.slope" => "tau_l_slope",
+                    "regularisation_speed" => "regularisation_speed_mm_s",
+                    other => other,
+                };
+                format!("friction.{key}")
+            })
+        })?;
+        Ok(law)
+    }
+}
+
+impl LubricantSpec {
+    /// The lubrication of the rib.
+    ///
+    /// # Errors
+    /// Keys `lubricant.*` out of range.
+    pub fn lubrication(&self) -> Result<RibLubrication> {
+        let key = |f: &str| {
+            let k = match f {
+                "nu40" => "nu40_mm2_s",
+                "nu100" => "nu100_mm2_s",
+                "density" => "density_kg_m3",
+                "alpha" => "alpha_per_mpa",
+                "grade" => "iso_vg",
+                "temperature_c" | "temperature" => "temperature_c",
+                "roughness" | "sigma1" | "sigma2" => "roughness_mm",
+                other => other,
+            };
+            format!("lubricant.{k}")
+        };
+        let lubricant = match (self.iso_vg, self.nu40_mm2_s, self.nu100_mm2_s) {
+            (Some(g), None, None) => {
+                Lubricant::iso_vg(g, self.density_kg_m3, self.alpha_per_mpa)
+            }
+            (None, Some(a), Some(b)) => {
+                Lubricant::new(a, b, self.density_kg_m3, self.alpha_per_mpa)
+            }
+            _ => {
+                return Err(Error::invalid(
+                    "lubricant.iso_vg",
+                    "neither a grade nor both viscosities",
+                    "either iso_vg or both nu40_mm2_s and nu100_mm2_s",
+                ));
+            }
+        }
+        .map_err(|e| e.map_field(key))?;
+        let lub = RibLubrication {
+            lubricant,
+            temperature: self.temperature_c,
+            roughness: self.roughness_mm,
+            formula: match self.formula {
+                FormulaSpec::HamrockDowson => FilmFormula::HamrockDowson,
+            },
+        };
+        Ok(lub)
+    }
+}
+
+/// One row of the report: one pressure model at one speed.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FrictionRow {
+    /// Pressure model.
+    pub model: &'static str,
+    /// Inner-ring speed \[r/min\].
+    pub speed_rpm: f64,
+    /// Cage speed \[r/min\].
+    pub cage_speed_rpm: f64,
+    /// Roller speed relative to the rib |ω_rel| \[rad/s\].
+    pub relative_speed_rad_s: f64,
+    /// Rib load per roller \[N\].
+    pub rib_load_n: f64,
+    /// Centrifugal force per roller \[N\].
+    pub centrifugal_n: f64,
+    /// Largest rib pressure \[MPa\].
+    pub max_pressure_mpa: f64,
+    /// Height of the contact above the inner raceway contact line \[mm\].
+    pub contact_height_mm: f64,
+    /// Sliding speed at the contact point \[mm/s\].
+    pub sliding_speed_mm_s: f64,
+    /// Entrainment speed at the contact point \[mm/s\].
+    pub entrainment_speed_mm_s: f64,
+    /// Central film thickness \[mm\] (absent when dry).
+    pub film_central_mm: Option<f64>,
+    /// Minimum film thickness \[mm\] (absent when dry).
+    pub film_minimum_mm: Option<f64>,
+    /// Film parameter Λ (0 when dry).
+    pub lambda: f64,
+    /// Ellipticity k of the film formula (absent when dry).
+    pub film_k: Option<f64>,
+    /// Moes' M (absent when dry or at zero entrainment).
+    pub moes_m: Option<f64>,
+    /// Moes' L (absent when dry).
+    pub moes_l: Option<f64>,
+    /// Asperity share φ(Λ).
+    pub asperity_share: f64,
+    /// Effective friction coefficient |F_t| / Q_f.
+    pub coefficient: f64,
+    /// Friction power of one rib contact \[W\].
+    pub power_w: f64,
+    /// Friction power of all rib contacts \[W\].
+    pub bearing_power_w: f64,
+    /// The rib's share of the bearing friction torque \[N·mm\].
+    pub bearing_torque_nmm: f64,
+    /// Friction moment on a roller about its axis \[N·mm\].
+    pub roller_axis_moment_nmm: f64,
+    /// Friction moment on the inner ring about its axis, all rollers \[N·mm\].
+    pub ring_axis_moment_nmm: f64,
+}
+
+impl FrictionRow {
+    fn of(r: &RibFriction) -> Self {
+        let film = r.film_thickness;
+        FrictionRow {
+            model: r.model.as_str(),
+            speed_rpm: r.operating.inner_speed / RAD_S_PER_RPM,
+            cage_speed_rpm: r.cage_speed / RAD_S_PER_RPM,
+            relative_speed_rad_s: r.relative_speed,
+            rib_load_n: r.loads.rib,
+            centrifugal_n: r.loads.centrifugal,
+            max_pressure_mpa: r.max_pressure,
+            contact_height_mm: r.contact_height,
+            sliding_speed_mm_s: r.sliding_speed,
+            entrainment_speed_mm_s: r.entrainment_speed,
+            film_central_mm: film.map(|f| f.central),
+            film_minimum_mm: film.map(|f| f.minimum),
+            lambda: r.film.lambda,
+            film_k: film.map(|f| f.regime.k),
+            moes_m: film.and_then(|f| f.regime.moes_m),
+            moes_l: film.map(|f| f.regime.moes_l),
+            asperity_share: r.contact.asperity_share,
+            coefficient: r.coefficient,
+            power_w: r.power,
+            bearing_power_w: r.bearing_power,
+            bearing_torque_nmm: r.bearing_torque,
+            roller_axis_moment_nmm: r.roller_axis_moment,
+            ring_axis_moment_nmm: r.ring_axis_moment,
+        }
+    }
+}
+
+/// How much the pressure model changes the rib torque at one speed: each model's torque
+/// divided by Hertz's.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ModelDifference {
+    /// Inner-ring speed \[r/min\].
+    pub speed_rpm: f64,
+    /// Model name.
+    pub model: &'static str,
+    /// Rib torque of the model over the Hertz torque at the same speed.
+    pub torque_vs_hertz: f64,
+}
+
+/// The report of a friction case.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FrictionReport {
+    /// Schema version of the report.
+    pub schema_version: u32,
+    /// `"friction"`.
+    pub method: &'static str,
+    /// Version of kontakt that wrote the report.
+    pub kontakt_version: &'static str,
+    /// The case's name.
+    pub name: Option<String>,
+    /// The pairing (`custom` for explicit shapes).
+    pub pairing: String,
+    /// Number of rollers.
+    pub rollers: usize,
+    /// Mass of one roller \[kg\].
+    pub roller_mass_kg: f64,
+    /// Axial load \[N\].
+    pub axial_load_n: f64,
+    /// Whether the centrifugal force was added to the rib load.
+    pub centrifugal: bool,
+    /// Viscosity of the oil at the inlet temperature \[MPa·s\] (absent when dry).
+    pub viscosity_mpa_s: Option<f64>,
+    /// The friction law.
+    pub law: FrictionLaw,
+    /// One row per model and speed, models in the case's order.
+    pub rows: Vec<FrictionRow>,
+    /// Torque of each model relative to Hertz (when Hertz is among the models).
+    pub model_difference: Vec<ModelDifference>,
+    /// Every distinct warning of the film formula and the models.
+    pub warnings: Vec<String>,
+}
+
+/// A friction case's report and the fields of its maps.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FrictionOutcome {
+    /// The report.
+    pub report: FrictionReport,
+    /// The fields at the middle speed of the first model.
+    pub map: FrictionMap,
+}
+
+/// The fields of one rib contact at one speed: pressure, sliding velocity and the
+/// dissipated power density, on the field's grid.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FrictionMap {
+    /// The pressure model.
+    pub model: PressureModel,
+    /// Inner-ring speed \[r/min\].
+    pub speed_rpm: f64,
+    /// The friction at this speed.
+    pub result: RibFriction,
+    /// The pressure field (grid in the gap's principal frame).
+    pub field: NormalSolution<()>,
+    /// Sliding velocity of the roller on the rib over the grid \[mm/s\].
+    pub sliding: VelocityField,
+    /// Power density τ · v_s per cell \[W/mm²\].
+    pub power_density: Vec<f64>,
+}
+
+impl FrictionMap {
+    fn new(model: &RibFrictionModel, m: PressureModel, axial_n: f64, rpm: f64) -> Result<Self> {
+        let op = operating(axial_n, rpm);
+        let (k, loads) = model.loads(&op)?;
+        let field = model.solve(m, loads.rib)?;
+        let result = model.friction_on(m, &field, &op, &k, &loads)?;
+        let sliding = k
+            .rib_pair(0.0)?
+            .velocity_field(model.frame(), field.orientation)?;
+        let law = model.law().with_film(&result.film)?;
+        let mut power_density = vec![0.0; field.grid.len()];
+        power_density_into(&field.grid, &field.pressure, &sliding, &law, &mut power_density)?;
+        Ok(FrictionMap {
+            model: m,
+            speed_rpm: rpm,
+            result,
+            field,
+            sliding,
+            power_density,
+        })
+    }
+}
+
+/// Run a friction case.
+///
+/// # Errors
+/// Invalid input named by its case-file key, and the solvers' failures.
+pub fn run_friction_case(case: &FrictionCase) -> Result<FrictionOutcome> {
+    if case.method != "friction" {
+        return Err(Error::invalid(
+            "method",
+            &case.method,
+            "\"friction\" for this schema",
+        ));
+    }
+    if case.models.is_empty() {
+        return Err(Error::invalid(
+            "models",
+            "an empty list",
+            "one or more of \"hertz\", \"pimp\", \"halfspace\"",
+        ));
+    }
+    let (pairing, pair) = roller_rib_from_spec(&case.geometry)?.ok_or_else(|| {
+        Error::invalid(
+            "geometry.kind",
+            "not roller_rib",
+            "\"roller_rib\" (friction cases are roller-end/rib contacts)",
+        )
+    })?;
+    let speeds = case.speed.speeds()?;
+    if !(case.load.axial_n.is_finite() && case.load.axial_n > 0.0) {
+        return Err(Error::invalid(
+            "load.axial_n",
+            case.load.axial_n,
+            "a finite force > 0 N",
+        ));
+    }
+    let lubrication = case.lubricant.as_ref().map(|l| l.lubrication()).transpose()?;
+    let law = case.friction.law(lubrication.is_some())?;
+    let model = RibFrictionModel::new(
+        pair.spec,
+        case.rollers,
+        law,
+        lubrication,
+        case.load.centrifugal,
+    )
+    .map_err(|e| {
+        e.map_field(|f| match f {
+            "count" | "length" | "density" => format!(
+                "rollers.{}",
+                match f {
+                    "length" => "length_mm",
+                    "density" => "density_kg_m3",
+                    other => other,
+                }
+            ),
+            "roughness" => "lubricant.roughness_mm".to_string(),
+            "temperature_c" | "temperature" => "lubricant.temperature_c".to_string(),
+            other => other.to_string(),
+        })
+    })?;
+    let mut rows = Vec::new();
+    let mut warnings = BTreeSet::new();
+    let middle = speeds[speeds.len() / 2];
+    for &m in &case.models {
+        let sweep = model
+            .sweep(
+                m,
+                case.load.axial_n,
+                &speeds.iter().map(|s| s * RAD_S_PER_RPM).collect::<Vec<_>>(),
+            )
+            .map_err(|e| {
+                e.map_field(|f| match f {
+                    "axial_load" => "load.axial_n".to_string(),
+                    "inner_speed" | "speeds" => "speed".to_string(),
+                    other => other.to_string(),
+                })
+            })?;
+        for r in &sweep {
+            if let Some(h) = &r.film_thickness {
+                warnings.extend(h.warning_lines());
+            }
+            rows.push(FrictionRow::of(r));
+        }
+    }
+    let mut model_difference = Vec::new();
+    for (i, &s) in speeds.iter().enumerate() {
+        let n = speeds.len();
+        let at = |k: usize| &rows[k * n + i];
+        if let Some(h) = case.models.iter().position(|m| *m == PressureModel::Hertz) {
+            let base = at(h).bearing_torque_nmm;
+            for (k, m) in case.models.iter().enumerate() {
+                if *m != PressureModel::Hertz && base > 0.0 {
+                    model_difference.push(ModelDifference {
+                        speed_rpm: s,
+                        model: m.as_str(),
+                        torque_vs_hertz: at(k).bearing_torque_nmm / base,
+                    });
+                }
+            }
+        }
+    }
+    let viscosity = match model.lubrication() {
+        Some(l) => Some(l.lubricant.dynamic_viscosity(l.temperature)?),
+        None => None,
+    };
+    let report = FrictionReport {
+        schema_version: SCHEMA_VERSION,
+        method: "friction",
+        kontakt_version: kontakt::VERSION,
+        name: case.name.clone(),
+        pairing,
+        rollers: case.rollers.count,
+        roller_mass_kg: model.roller_mass().mass,
+        axial_load_n: case.load.axial_n,
+        centrifugal: case.load.centrifugal,
+        viscosity_mpa_s: viscosity,
+        law,
+        rows,
+        model_difference,
+        warnings: warnings.into_iter().collect(),
+    };
+    let map = FrictionMap::new(&model, case.models[0], case.load.axial_n, middle)?;
+    Ok(FrictionOutcome { report, map })
+}
+
+/// Operating point helper for front ends: `rpm` inner-ring speed, outer ring fixed.
+pub fn operating(axial_n: f64, rpm: f64) -> Operating {
+    Operating {
+        axial_load: axial_n,
+        inner_speed: rpm * RAD_S_PER_RPM,
+        outer_speed: 0.0,
+    }
+}

@@ -1,0 +1,342 @@
+//! `kontakt friction CASE.toml`: friction of the roller-end/rib contact of a tapered roller
+//! bearing over a speed sweep (a `method = "friction"` case), as a table, JSON, CSV, plots
+//! of the rib torque and the friction coefficient against speed, and maps of the sliding
+//! velocity and the friction-power density. The physics is `kontakt_case::run_friction_case`.
+
+use crate::cli::FrictionArgs;
+use crate::commands::InputError;
+use anyhow::{Context, Result};
+use kontakt_case::friction_case::{FrictionMap, FrictionReport};
+use kontakt_case::{Case, Outcome};
+use kontakt_plot::{FieldMap, LinePlot, LineStyle, PALETTE, Series};
+use std::io::Write;
+use std::path::Path;
+
+/// Run the subcommand.
+pub fn run(args: &FrictionArgs, out: &mut impl Write) -> Result<()> {
+    let (label, text) = crate::commands::read_case(&args.case)?;
+    let case = Case::from_toml_str(&text).with_context(|| label.clone())?;
+    if case.method() != "friction" {
+        return Err(InputError(format!(
+            "{label}: method = \"{}\": `kontakt friction` runs method = \"friction\" cases \
+             (use `kontakt solve` for the others)",
+            case.method()
+        ))
+        .into());
+    }
+    let Outcome::Friction(outcome) = case
+        .run(Path::new("."))
+        .with_context(|| label.clone())?
+    else {
+        return Err(InputError(format!("{label}: not a friction case")).into());
+    };
+    let r = &outcome.report;
+    if let Some(path) = &args.csv {
+        write_csv(path, r)?;
+    }
+    if let Some(path) = &args.plot {
+        write_curves(path, r, Curve::Torque)?;
+    }
+    if let Some(path) = &args.stribeck {
+        write_curves(path, r, Curve::Coefficient)?;
+    }
+    if let Some(path) = &args.map {
+        write_sliding_map(path, &outcome.map, r)?;
+    }
+    if let Some(path) = &args.density {
+        write_density_map(path, &outcome.map, r)?;
+    }
+    print_report(out, r, args.json)
+}
+
+/// The report as a table per model, or as pretty JSON.
+pub fn print_report(out: &mut impl Write, r: &FrictionReport, json: bool) -> Result<()> {
+    if json {
+        serde_json::to_writer_pretty(&mut *out, r)?;
+        writeln!(out)?;
+        return Ok(());
+    }
+    let name = r
+        .name
+        .as_deref()
+        .map(|n| format!(": {n}"))
+        .unwrap_or_default();
+    writeln!(
+        out,
+        "kontakt {} — roller-end/rib friction{name}",
+        r.kontakt_version
+    )?;
+    writeln!(
+        out,
+        "  pairing {}, {} rollers of {:.1} g, F_a = {} N{}",
+        r.pairing,
+        r.rollers,
+        r.roller_mass_kg * 1e3,
+        r.axial_load_n,
+        if r.centrifugal {
+            ", centrifugal force included"
+        } else {
+            ""
+        }
+    )?;
+    match r.viscosity_mpa_s {
+        Some(eta) => writeln!(
+            out,
+            "  lubricated: eta = {:.2} mPa·s at the inlet; mu_b = {}",
+            eta * 1e9,
+            r.law.boundary_coefficient
+        )?,
+        None => writeln!(
+            out,
+            "  dry: Coulomb friction, mu = {}",
+            r.law.boundary_coefficient
+        )?,
+    }
+    let mut model = "";
+    for row in &r.rows {
+        if row.model != model {
+            model = row.model;
+            writeln!(out, "\n  pressure model: {model}")?;
+            writeln!(
+                out,
+                "  {:>8} {:>9} {:>8} {:>9} {:>9} {:>7} {:>8} {:>9} {:>10} {:>10}",
+                "n [rpm]",
+                "Q_f [N]",
+                "p [MPa]",
+                "v_s[mm/s]",
+                "h_c [µm]",
+                "Lambda",
+                "mu",
+                "P_1 [W]",
+                "P_all [W]",
+                "M [N·mm]"
+            )?;
+        }
+        let h = row
+            .film_central_mm
+            .map_or_else(|| "-".to_string(), |h| format!("{:.4}", h * 1e3));
+        writeln!(
+            out,
+            "  {:>8.0} {:>9.3} {:>8.1} {:>9.1} {:>9} {:>7.3} {:>8.5} {:>9.4} {:>10.3} {:>10.2}",
+            row.speed_rpm,
+            row.rib_load_n,
+            row.max_pressure_mpa,
+            row.sliding_speed_mm_s,
+            h,
+            row.lambda,
+            row.coefficient,
+            row.power_w,
+            row.bearing_power_w,
+            row.bearing_torque_nmm
+        )?;
+    }
+    if !r.model_difference.is_empty() {
+        writeln!(out, "\n  rib torque relative to Hertz:")?;
+        let models: Vec<&str> = {
+            let mut m: Vec<&str> = r.model_difference.iter().map(|d| d.model).collect();
+            m.dedup();
+            m.sort_unstable();
+            m.dedup();
+            m
+        };
+        write!(out, "  {:>8}", "n [rpm]")?;
+        for m in &models {
+            write!(out, " {:>11}", format!("{m}/hertz"))?;
+        }
+        writeln!(out)?;
+        let mut speeds: Vec<f64> = r.model_difference.iter().map(|d| d.speed_rpm).collect();
+        speeds.dedup();
+        for s in speeds {
+            write!(out, "  {s:>8.0}")?;
+            for m in &models {
+                let d = r
+                    .model_difference
+                    .iter()
+                    .find(|d| d.speed_rpm == s && d.model == *m);
+                match d {
+                    Some(d) => write!(out, " {:>11.4}", d.torque_vs_hertz)?,
+                    None => write!(out, " {:>11}", "-")?,
+                }
+            }
+            writeln!(out)?;
+        }
+    }
+    for w in &r.warnings {
+        writeln!(out, "  warning: {w}")?;
+    }
+    Ok(())
+}
+
+/// Every row, one line per model and speed, with unit-suffixed columns.
+pub fn write_csv(path: &Path, r: &FrictionReport) -> Result<()> {
+    let mut w = csv::Writer::from_path(path)
+        .map_err(|e| InputError(format!("cannot write {}: {e}", path.display())))?;
+    for row in &r.rows {
+        w.serialize(row)?;
+    }
+    w.flush()?;
+    Ok(())
+}
+
+#[derive(Clone, Copy)]
+enum Curve {
+    Torque,
+    Coefficient,
+}
+
+fn write_curves(path: &Path, r: &FrictionReport, curve: Curve) -> Result<()> {
+    kontakt_plot::Format::from_path(path).map_err(|e| InputError(e.to_string()))?;
+    let mut models: Vec<&str> = r.rows.iter().map(|row| row.model).collect();
+    models.dedup();
+    let points: Vec<Vec<(f64, f64)>> = models
+        .iter()
+        .map(|m| {
+            r.rows
+                .iter()
+                .filter(|row| row.model == *m)
+                .map(|row| {
+                    let y = match curve {
+                        Curve::Torque => row.bearing_torque_nmm,
+                        Curve::Coefficient => row.coefficient,
+                    };
+                    (row.speed_rpm.log10(), y)
+                })
+                .collect()
+        })
+        .collect();
+    let series: Vec<Series> = models
+        .iter()
+        .enumerate()
+        .map(|(i, m)| Series {
+            label: m,
+            points: &points[i],
+            color: PALETTE[i % PALETTE.len()],
+            style: LineStyle::Solid,
+        })
+        .collect();
+    let (what, y_label) = match curve {
+        Curve::Torque => ("rib friction torque", "rib torque of the bearing [N·mm]"),
+        Curve::Coefficient => ("friction coefficient", "mu = |F_t| / Q_f [-]"),
+    };
+    let title = format!(
+        "{}: {what}, F_a = {} N",
+        r.name.as_deref().unwrap_or(&r.pairing),
+        r.axial_load_n
+    );
+    kontakt_plot::line_plot(
+        path,
+        &LinePlot {
+            title: &title,
+            x_label: "log10 (inner ring speed [r/min])",
+            y_label,
+            series: &series,
+        },
+        (900, 600),
+    )
+    .with_context(|| format!("drawing {}", path.display()))
+}
+
+fn field_map<'a>(
+    m: &'a FrictionMap,
+    values: &'a [f64],
+    title: &'a str,
+    colorbar_label: &'a str,
+) -> FieldMap<'a> {
+    let g = &m.field.grid;
+    FieldMap {
+        nx: g.nx(),
+        ny: g.ny(),
+        x_min: g.x(0) - 0.5 * g.dx(),
+        y_min: g.y(0) - 0.5 * g.dy(),
+        dx: g.dx(),
+        dy: g.dy(),
+        values,
+        title,
+        x_label: "x [mm]",
+        y_label: "y [mm]",
+        colorbar_label,
+        outline: true,
+        overlays: &[],
+    }
+}
+
+/// The friction-power density τ · v_s per cell over the contact.
+fn write_density_map(path: &Path, m: &FrictionMap, r: &FrictionReport) -> Result<()> {
+    kontakt_plot::Format::from_path(path).map_err(|e| InputError(e.to_string()))?;
+    let title = format!(
+        "{}: friction power density, {} at {:.0} r/min (P = {:.3} W per roller)",
+        r.pairing,
+        m.model.as_str(),
+        m.speed_rpm,
+        m.result.power
+    );
+    let values: Vec<f64> = m.power_density.iter().map(|d| d * 1e3).collect();
+    kontakt_plot::field_map(
+        path,
+        &field_map(m, &values, &title, "tau · v_s [mW/mm²]"),
+        (900, 640),
+    )
+    .with_context(|| format!("drawing {}", path.display()))
+}
+
+/// The sliding velocity as arrows over the pressure map.
+fn write_sliding_map(path: &Path, m: &FrictionMap, r: &FrictionReport) -> Result<()> {
+    kontakt_plot::Format::from_path(path).map_err(|e| InputError(e.to_string()))?;
+    let title = format!(
+        "{}: pressure and sliding velocity, {} at {:.0} r/min",
+        r.pairing,
+        m.model.as_str(),
+        m.speed_rpm
+    );
+    let (arrows, label) = sliding_arrows(m);
+    kontakt_plot::field_map_with_arrows(
+        path,
+        &field_map(m, &m.field.pressure, &title, "pressure [MPa]"),
+        &arrows,
+        &label,
+        (900, 640),
+    )
+    .with_context(|| format!("drawing {}", path.display()))
+}
+
+/// Arrows of the sliding velocity on a coarse lattice over the loaded cells, scaled so the
+/// longest is 1.5 lattice spacings; the label states the scale.
+fn sliding_arrows(m: &FrictionMap) -> (Vec<kontakt_plot::Arrow>, String) {
+    let g = &m.field.grid;
+    let every = (g.nx().max(g.ny()) / 12).max(1);
+    let mut raw = Vec::new();
+    for j in (every / 2..g.ny()).step_by(every) {
+        for i in (every / 2..g.nx()).step_by(every) {
+            if m.field.pressure[j * g.nx() + i] > 0.0 {
+                let (x, y) = (g.x(i), g.y(j));
+                let [vx, vy] = m.sliding.sliding_at(x, y);
+                raw.push((x, y, vx, vy));
+            }
+        }
+    }
+    let vmax = raw
+        .iter()
+        .map(|(_, _, vx, vy)| vx.hypot(*vy))
+        .fold(0.0f64, f64::max);
+    let spacing = every as f64 * g.dx().min(g.dy());
+    let scale = if vmax > 0.0 { 1.5 * spacing / vmax } else { 0.0 };
+    let arrows = raw
+        .into_iter()
+        .map(|(x, y, vx, vy)| kontakt_plot::Arrow {
+            x: x - 0.5 * vx * scale,
+            y: y - 0.5 * vy * scale,
+            dx: vx * scale,
+            dy: vy * scale,
+        })
+        .collect();
+    let label = if scale > 0.0 {
+        format!(
+            "sliding velocity of the roller on the rib: 1 mm = {:.0} mm/s (max {:.0} mm/s)",
+            1.0 / scale,
+            vmax
+        )
+    } else {
+        "no sliding".to_string()
+    };
+    (arrows, label)
+}
