@@ -341,9 +341,12 @@ impl Figure for FieldFigure<'_> {
     }
 }
 
+/// A line segment (start, end) in mm.
+type Segment = ((f64, f64), (f64, f64));
+
 /// The strokes of an arrow in mm: the shaft from tail to tip and the two strokes of the head,
 /// each as (start, end). `None` for an arrow of zero length.
-fn arrow_segments(a: &Arrow) -> Option<[((f64, f64), (f64, f64)); 3]> {
+fn arrow_segments(a: &Arrow) -> Option<[Segment; 3]> {
     if a.dx == 0.0 && a.dy == 0.0 {
         return None;
     }
@@ -362,7 +365,7 @@ fn clip_segment(
     p0: (f64, f64),
     p1: (f64, f64),
     ((x0, x1), (y0, y1)): ((f64, f64), (f64, f64)),
-) -> Option<((f64, f64), (f64, f64))> {
+) -> Option<Segment> {
     let (dx, dy) = (p1.0 - p0.0, p1.1 - p0.1);
     let (mut t0, mut t1) = (0.0f64, 1.0f64);
     for (p, q) in [
@@ -385,7 +388,7 @@ fn clip_segment(
             t1 = t1.min(q / p);
         }
     }
-    (t0 < t1).then(|| {
+    (t0 < t1).then_some({
         (
             (p0.0 + t0 * dx, p0.1 + t0 * dy),
             (p0.0 + t1 * dx, p0.1 + t1 * dy),
