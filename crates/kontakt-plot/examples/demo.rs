@@ -6,7 +6,8 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use kontakt_plot::{
-    FieldMap, LinePlot, LineStyle, Overlay, PALETTE, PlotError, Series, field_map, line_plot,
+    Arrow, FieldMap, LinePlot, LineStyle, Overlay, PALETTE, PlotError, Series, field_map,
+    field_map_with_arrows, line_plot,
 };
 
 /// Hertz pressure p0 sqrt(1 - x²/a² - y²/b²) on an n×m grid over [-1.25a, 1.25a] × [-1.25b', 1.25b'].
@@ -64,6 +65,48 @@ fn main() -> Result<(), PlotError> {
         field_map(&path, &map, (1000, 700))?;
         println!(
             "128×128 map -> {}: {:.1} ms",
+            path.display(),
+            t.elapsed().as_secs_f64() * 1e3
+        );
+    }
+
+    // The sliding velocity of the same contact (spin about its centre and a uniform drift),
+    // at every 8th cell along x and 16th along y inside the contact: 1 mm of arrow = 2 m/s.
+    let (spin, drift, mm_per_m_s) = (100.0, 0.3, 0.5); // rad/s, m/s, mm per m/s
+    let mut arrows = Vec::new();
+    for j in (8..n).step_by(16) {
+        for i in (4..n).step_by(8) {
+            if p[j * n + i] > 0.0 {
+                let x = map.x_min + (i as f64 + 0.5) * map.dx;
+                let y = map.y_min + (j as f64 + 0.5) * map.dy;
+                // v = drift + spin × r, with r in m.
+                let (vx, vy) = (drift - spin * y * 1e-3, spin * x * 1e-3);
+                arrows.push(Arrow {
+                    x,
+                    y,
+                    dx: mm_per_m_s * vx,
+                    dy: mm_per_m_s * vy,
+                });
+            }
+        }
+    }
+    let sliding = FieldMap {
+        overlays: &[],
+        ..map
+    };
+    for ext in ["png", "svg"] {
+        let path = out.join(format!("sliding128.{ext}"));
+        let t = Instant::now();
+        field_map_with_arrows(
+            &path,
+            &sliding,
+            &arrows,
+            "sliding velocity, 1 mm = 2 m/s",
+            (1000, 700),
+        )?;
+        println!(
+            "128×128 map with {} arrows -> {}: {:.1} ms",
+            arrows.len(),
             path.display(),
             t.elapsed().as_secs_f64() * 1e3
         );

@@ -7,17 +7,30 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use crate::colormap::viridis;
 use crate::contour::contour_zero;
 use crate::render::{
-    DrawResultExt, Figure, Metrics, Target, draw_centered, draw_title, rgb, text, text_size,
-    title_height,
+    DrawResultExt, Figure, Metrics, Target, draw_centered, draw_line_of_text, draw_title, rgb,
+    text, text_size, title_height,
 };
 use crate::ticks::{TickAxis, Ticks, nice_ticks, ticks_fitting};
-use crate::{FieldMap, PlotError};
+use crate::{Arrow, FieldMap, PlotError};
 
 /// SVG maps are drawn with at most this many cells along each axis.
 const SVG_MAX_CELLS: usize = 128;
 
-/// A [`FieldMap`] as a drawable figure.
-pub(crate) struct FieldFigure<'a>(pub &'a FieldMap<'a>);
+/// Colour of the arrows of a vector field: black reads on white and on all of viridis.
+const ARROW_COLOR: RGBColor = BLACK;
+/// Length of an arrow head's strokes relative to the length of the arrow.
+const HEAD_FRACTION: f64 = 0.3;
+/// Angle between an arrow head's strokes and the shaft, in degrees.
+const HEAD_ANGLE_DEG: f64 = 25.0;
+
+/// A [`FieldMap`] as a drawable figure, optionally with a vector field on top.
+pub(crate) struct FieldFigure<'a> {
+    pub map: &'a FieldMap<'a>,
+    /// Arrows drawn over the map (none for a plain heat map).
+    pub arrows: &'a [Arrow],
+    /// Caption under the title giving the arrows' meaning and scale (empty: none).
+    pub arrow_label: &'a str,
+}
 
 /// One entry of the outline legend.
 struct LegendEntry<'a> {
@@ -28,7 +41,7 @@ struct LegendEntry<'a> {
 
 impl Figure for FieldFigure<'_> {
     fn draw<DB: DrawingBackend>(&self, target: &Target<DB>) -> Result<(), PlotError> {
-        let map = self.0;
+        let map = self.map;
         let root = &target.root;
         root.fill(&WHITE).de()?;
         let (w, h) = root.dim_in_pixel();
@@ -59,6 +72,13 @@ impl Figure for FieldFigure<'_> {
         let tick_h = (m.tick * 1.25).round() as i32;
         let label_dist = 2 * m.tick_len;
         let title_h = title_height(map.title, &m);
+        let caption_h = if self.arrow_label.is_empty() {
+            0
+        } else {
+            (m.tick * 1.5).round() as i32
+        };
+        // Title and caption above the figure.
+        let head_h = title_h + caption_h;
 
         let width_of = |t: &Ticks| -> Result<i32, PlotError> {
             let mut wmax = 0;
@@ -109,7 +129,7 @@ impl Figure for FieldFigure<'_> {
         };
 
         // The plot box: as large as fits, with equal scales in x and y.
-        let avail_h = (hi - 2 * m.margin - title_h - tick_h - bottom - legend_h).max(20);
+        let avail_h = (hi - 2 * m.margin - head_h - tick_h - bottom - legend_h).max(20);
         let fit = |left: i32| -> (i32, i32) {
             let avail_w = (wi - 2 * m.margin - left - gap - bar_w - bar_right).max(20);
             let scale = (f64::from(avail_w - 1) / lx).min(f64::from(avail_h - 1) / ly);
@@ -133,15 +153,16 @@ impl Figure for FieldFigure<'_> {
         let bar_h = ph.max((12 * tick_h).min(avail_h));
         let c_ticks = ticks_fitting(lo, top, f64::from(bar_h), y_spacing, 6);
 
-        // Centre the whole figure; the title sits right above it.
+        // Centre the whole figure; the title and the caption sit right above it.
         let block_w = left + pw + gap + bar_w + bar_right;
         let ox = ((wi - block_w) / 2).max(0);
-        let above = ph.max(bar_h) / 2 + tick_h / 2 + title_h;
+        let above = ph.max(bar_h) / 2 + tick_h / 2 + head_h;
         let below = (ph / 2 + bottom + legend_h).max(bar_h / 2 + tick_h / 2);
         let start = ((hi - above - below) / 2).max(m.margin);
         let centre_y = start + above;
         let oy = centre_y - ph / 2;
         draw_title(root, map.title, &m, start)?;
+        draw_line_of_text(root, self.arrow_label, m.tick, &m, start + title_h)?;
 
         let area = root.clone().shrink((ox, oy), (left + pw, ph + bottom));
         let mut chart = ChartBuilder::on(&area)
@@ -271,6 +292,24 @@ impl Figure for FieldFigure<'_> {
             }
         }
 
+        // The vector field, clipped to the map.
+        let window = ((map.x_min, x_max), (map.y_min, y_max));
+        let segments: Vec<_> = self
+            .arrows
+            .iter()
+            .filter_map(arrow_segments)
+            .flatten()
+            .filter_map(|(a, b)| clip_segment(a, b, window))
+            .collect();
+        let arrow_style = ARROW_COLOR.stroke_width(m.line.max(1));
+        chart
+            .draw_series(
+                segments
+                    .into_iter()
+                    .map(|(a, b)| PathElement::new(vec![a, b], arrow_style)),
+            )
+            .de()?;
+
         if !contact {
             draw_centered(
                 root,
@@ -300,6 +339,61 @@ impl Figure for FieldFigure<'_> {
         }
         Ok(())
     }
+}
+
+/// A line segment (start, end) in mm.
+type Segment = ((f64, f64), (f64, f64));
+
+/// The strokes of an arrow in mm: the shaft from tail to tip and the two strokes of the head,
+/// each as (start, end). `None` for an arrow of zero length.
+fn arrow_segments(a: &Arrow) -> Option<[Segment; 3]> {
+    if a.dx == 0.0 && a.dy == 0.0 {
+        return None;
+    }
+    let tip = (a.x + a.dx, a.y + a.dy);
+    // A head stroke is the reversed vector, shortened and turned by ± the head angle.
+    let (bx, by) = (-HEAD_FRACTION * a.dx, -HEAD_FRACTION * a.dy);
+    let (s, c) = HEAD_ANGLE_DEG.to_radians().sin_cos();
+    let left = (tip.0 + c * bx + s * by, tip.1 - s * bx + c * by);
+    let right = (tip.0 + c * bx - s * by, tip.1 + s * bx + c * by);
+    Some([((a.x, a.y), tip), (left, tip), (right, tip)])
+}
+
+/// The part of the segment from `p0` to `p1` inside the window `((x0, x1), (y0, y1))`
+/// (Liang-Barsky), or `None` if nothing (or only a point) of it is inside.
+fn clip_segment(
+    p0: (f64, f64),
+    p1: (f64, f64),
+    ((x0, x1), (y0, y1)): ((f64, f64), (f64, f64)),
+) -> Option<Segment> {
+    let (dx, dy) = (p1.0 - p0.0, p1.1 - p0.1);
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    for (p, q) in [
+        (-dx, p0.0 - x0),
+        (dx, x1 - p0.0),
+        (-dy, p0.1 - y0),
+        (dy, y1 - p0.1),
+    ] {
+        if !p.is_finite() || !q.is_finite() {
+            return None;
+        }
+        if p == 0.0 {
+            // Parallel to this edge: inside or outside entirely.
+            if q < 0.0 {
+                return None;
+            }
+        } else if p < 0.0 {
+            t0 = t0.max(q / p);
+        } else {
+            t1 = t1.min(q / p);
+        }
+    }
+    (t0 < t1).then_some({
+        (
+            (p0.0 + t0 * dx, p0.1 + t0 * dy),
+            (p0.0 + t1 * dx, p0.1 + t1 * dy),
+        )
+    })
 }
 
 /// Colour bar with its ticks on the right and its label (rotated) beyond them.
@@ -455,5 +549,63 @@ impl Blocks {
 
     fn iter(&self) -> impl Iterator<Item = &Block> {
         self.blocks.iter()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn close(a: (f64, f64), b: (f64, f64)) -> bool {
+        (a.0 - b.0).abs() < 1e-12 && (a.1 - b.1).abs() < 1e-12
+    }
+
+    #[test]
+    fn arrow_head_is_symmetric_and_short() {
+        let a = Arrow {
+            x: 1.0,
+            y: 2.0,
+            dx: 3.0,
+            dy: 4.0,
+        };
+        let [shaft, left, right] = arrow_segments(&a).unwrap();
+        assert_eq!(shaft, ((1.0, 2.0), (4.0, 6.0)));
+        let len = |(p, q): ((f64, f64), (f64, f64))| (q.0 - p.0).hypot(q.1 - p.1);
+        for stroke in [left, right] {
+            assert_eq!(stroke.1, (4.0, 6.0));
+            assert!((len(stroke) - HEAD_FRACTION * 5.0).abs() < 1e-12);
+            assert!(len(stroke) <= 5.0 / 3.0);
+        }
+        // The barbs lie on either side of the shaft, mirrored about it.
+        let side = |p: (f64, f64)| 3.0 * (p.1 - 2.0) - 4.0 * (p.0 - 1.0);
+        assert!(side(left.0) > 0.0 && side(right.0) < 0.0);
+        assert!((side(left.0) + side(right.0)).abs() < 1e-12);
+        let zero = Arrow {
+            dx: 0.0,
+            dy: -0.0,
+            ..a
+        };
+        assert!(arrow_segments(&zero).is_none());
+    }
+
+    #[test]
+    fn segments_are_clipped_to_the_window() {
+        let w = ((0.0, 2.0), (0.0, 1.0));
+        // Inside: unchanged.
+        let s = clip_segment((0.5, 0.5), (1.5, 0.25), w).unwrap();
+        assert!(close(s.0, (0.5, 0.5)) && close(s.1, (1.5, 0.25)));
+        // Poking out at the right and at the top.
+        let s = clip_segment((1.0, 0.5), (3.0, 0.5), w).unwrap();
+        assert!(close(s.0, (1.0, 0.5)) && close(s.1, (2.0, 0.5)));
+        let s = clip_segment((1.0, 1.5), (1.0, 0.5), w).unwrap();
+        assert!(close(s.0, (1.0, 1.0)) && close(s.1, (1.0, 0.5)));
+        // Crossing the whole window diagonally.
+        let s = clip_segment((-1.0, -0.5), (3.0, 1.5), w).unwrap();
+        assert!(close(s.0, (0.0, 0.0)) && close(s.1, (2.0, 1.0)));
+        // Outside, or touching a corner only.
+        assert!(clip_segment((3.0, 0.0), (4.0, 1.0), w).is_none());
+        assert!(clip_segment((-1.0, 0.5), (-0.5, 0.5), w).is_none());
+        assert!(clip_segment((-1.0, 0.0), (0.0, 1.0), w).is_none());
+        assert!(clip_segment((3.0, 0.0), (2.5, 2.0), w).is_none());
     }
 }

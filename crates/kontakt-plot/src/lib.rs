@@ -5,6 +5,8 @@
 //! * [`field_map`] draws a scalar field on a uniform cell-centred grid (e.g. a contact
 //!   pressure in MPa over x, y in mm) as a heat map with equal axis scales, a colour bar and
 //!   the outline of the contact region, optionally with the outlines of other fields overlaid.
+//! * [`field_map_with_arrows`] draws the same heat map with a vector field of [`Arrow`]s on
+//!   top (e.g. the sliding velocity over the pressure or the friction-power density).
 //! * [`line_plot`] draws curves and measured points with a legend.
 //! * [`contour_zero`] returns the boundary of the region `values > 0` as closed polylines.
 //!
@@ -213,10 +215,95 @@ pub struct Overlay<'a> {
 /// [`MIN_SIZE`] and [`MAX_SIZE`]), or a file that cannot be written (a missing parent
 /// directory is not created).
 pub fn field_map(path: &Path, map: &FieldMap, size: (u32, u32)) -> Result<(), PlotError> {
+    field_map_with_arrows(path, map, &[], "", size)
+}
+
+/// An arrow of a vector field drawn over a [`FieldMap`], in the map's coordinates.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Arrow {
+    /// x of the tail in mm.
+    pub x: f64,
+    /// y of the tail in mm.
+    pub y: f64,
+    /// x component of the vector, already scaled to mm by the caller (the tip is at `x + dx`).
+    pub dx: f64,
+    /// y component of the vector, already scaled to mm by the caller (the tip is at `y + dy`).
+    pub dy: f64,
+}
+
+/// Draw the heat map of `map` as [`field_map`] does, with the vector field `arrows` on top
+/// (e.g. the sliding velocity of a contact over its pressure or friction-power map).
+///
+/// Each arrow is a dark line from its tail `(x, y)` to its tip `(x + dx, y + dy)` with a
+/// two-stroke head whose length is 30 % of the arrow's; arrows are drawn after the outlines,
+/// clipped to the map (they may poke out of it), and arrows of zero length are skipped. The
+/// caller scales the vectors to mm; a non-empty `arrow_label` (e.g.
+/// `"sliding velocity, 1 mm = 2 m/s"`) is printed under the title to give that scale.
+///
+/// Errors: those of [`field_map`], and an arrow with a non-finite coordinate or tip (the
+/// error names `arrows[i]` and its values).
+///
+/// ```no_run
+/// use std::path::Path;
+/// use kontakt_plot::{Arrow, FieldMap, field_map_with_arrows};
+///
+/// let n = 32;
+/// let h = 2.0 / n as f64;
+/// let centre = |k: usize| -1.0 + (k as f64 + 0.5) * h;
+/// let values: Vec<f64> = (0..n * n)
+///     .map(|k| 1000.0 * (1.0 - centre(k % n).powi(2) - centre(k / n).powi(2)).max(0.0).sqrt())
+///     .collect();
+/// let map = FieldMap {
+///     nx: n,
+///     ny: n,
+///     x_min: -1.0,
+///     y_min: -1.0,
+///     dx: h,
+///     dy: h,
+///     values: &values,
+///     title: "Contact pressure",
+///     x_label: "x [mm]",
+///     y_label: "y [mm]",
+///     colorbar_label: "pressure [MPa]",
+///     outline: true,
+///     overlays: &[],
+/// };
+/// // A rigid rotation about the centre: v = omega × r in mm/s, drawn 0.1 mm per mm/s.
+/// let (omega, scale) = (2.0, 0.1);
+/// let mut arrows = Vec::new();
+/// for j in (2..n).step_by(4) {
+///     for i in (2..n).step_by(4) {
+///         let (x, y) = (centre(i), centre(j));
+///         let (vx, vy) = (-omega * y, omega * x);
+///         arrows.push(Arrow { x, y, dx: scale * vx, dy: scale * vy });
+///     }
+/// }
+/// field_map_with_arrows(
+///     Path::new("sliding.svg"),
+///     &map,
+///     &arrows,
+///     "sliding velocity, 1 mm = 10 mm/s",
+///     (1000, 800),
+/// )?;
+/// # Ok::<(), kontakt_plot::PlotError>(())
+/// ```
+pub fn field_map_with_arrows(
+    path: &Path,
+    map: &FieldMap,
+    arrows: &[Arrow],
+    arrow_label: &str,
+    size: (u32, u32),
+) -> Result<(), PlotError> {
     let format = Format::from_path(path)?;
     validate_size(size)?;
     validate_field(map)?;
-    render::render(path, format, size, field::FieldFigure(map))
+    validate_arrows(arrows)?;
+    let figure = field::FieldFigure {
+        map,
+        arrows,
+        arrow_label,
+    };
+    render::render(path, format, size, figure)
 }
 
 /// How the points of a [`Series`] are drawn.
@@ -325,6 +412,25 @@ fn validate_field(map: &FieldMap) -> Result<(), PlotError> {
             overlay.values,
             n,
         )?;
+    }
+    Ok(())
+}
+
+fn validate_arrows(arrows: &[Arrow]) -> Result<(), PlotError> {
+    for (i, a) in arrows.iter().enumerate() {
+        let finite = [a.x, a.y, a.dx, a.dy, a.x + a.dx, a.y + a.dy]
+            .iter()
+            .all(|v| v.is_finite());
+        if !finite {
+            return Err(PlotError::invalid(
+                format!("arrows[{i}]"),
+                format!(
+                    "Arrow {{ x: {}, y: {}, dx: {}, dy: {} }}",
+                    a.x, a.y, a.dx, a.dy
+                ),
+                "finite coordinates in mm (and a finite tip x + dx, y + dy)",
+            ));
+        }
     }
     Ok(())
 }

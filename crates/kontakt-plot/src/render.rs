@@ -170,19 +170,31 @@ pub(crate) fn draw_title<DB: DrawingBackend>(
     m: &Metrics,
     y: i32,
 ) -> Result<(), PlotError> {
-    if title.is_empty() {
+    draw_line_of_text(root, title, m.title, m, y)
+}
+
+/// Draw a line of text of `size` pixels centred horizontally with its top at `y`, shrunk to
+/// fit the width between the margins. An empty string draws nothing.
+pub(crate) fn draw_line_of_text<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    s: &str,
+    size: f64,
+    m: &Metrics,
+    y: i32,
+) -> Result<(), PlotError> {
+    if s.is_empty() {
         return Ok(());
     }
     let (w, _) = root.dim_in_pixel();
     let w = w as i32;
-    let mut size = m.title;
-    let (tw, _) = text_size(root, title, &text(size))?;
+    let mut size = size;
+    let (tw, _) = text_size(root, s, &text(size))?;
     let avail = w - 2 * m.margin;
     if tw > avail && tw > 0 {
         size = (size * f64::from(avail) / f64::from(tw)).max(7.0);
     }
     let style = text(size).pos(Pos::new(HPos::Center, VPos::Top));
-    root.draw_text(title, &style, (w / 2, y)).de()
+    root.draw_text(s, &style, (w / 2, y)).de()
 }
 
 /// Draw text centred at a point.

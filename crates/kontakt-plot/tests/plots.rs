@@ -4,8 +4,8 @@
 use std::path::{Path, PathBuf};
 
 use kontakt_plot::{
-    FieldMap, Format, LinePlot, LineStyle, Overlay, PALETTE, PlotError, Series, contour_zero,
-    field_map, line_plot,
+    Arrow, FieldMap, Format, LinePlot, LineStyle, Overlay, PALETTE, PlotError, Series,
+    contour_zero, field_map, field_map_with_arrows, line_plot,
 };
 
 /// A fresh, empty directory for one test.
@@ -117,6 +117,161 @@ fn field_map_png_and_svg() {
     assert!(text.contains("pressure [MPa]"));
     assert!(text.contains("other solver"));
     assert!(text.contains("x [mm]") && text.contains("y [mm]"));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// A rigid rotation v = (-y, x) sampled at x in {-2, ..., 2} mm, y in {-1, 0, 1} mm and
+/// scaled by 0.2: 15 arrows, all inside the test map, the one at the centre of zero length.
+fn rotation_arrows() -> Vec<Arrow> {
+    let mut arrows = Vec::new();
+    for j in -1..=1 {
+        for i in -2..=2 {
+            let (x, y) = (f64::from(i), f64::from(j));
+            arrows.push(Arrow {
+                x,
+                y,
+                dx: -0.2 * y,
+                dy: 0.2 * x,
+            });
+        }
+    }
+    arrows
+}
+
+fn count(text: &str, pattern: &str) -> usize {
+    text.matches(pattern).count()
+}
+
+fn dark_pixels(path: &Path) -> usize {
+    let img = image::open(path).unwrap().to_rgb8();
+    img.pixels().filter(|p| near(p, (0, 0, 0), 40)).count()
+}
+
+#[test]
+fn arrows_png_and_svg() {
+    let dir = temp_dir("arrows");
+    let p = hertz(A, B, 0.0, 0.0);
+    let m = map(&p, &[]);
+    let size = (800, 600);
+    let mut arrows = rotation_arrows();
+    // One arrow pokes out at the right edge (x_max = 2.5 mm): only its shaft is drawn, up to
+    // the edge; one lies entirely outside the map and is not drawn at all.
+    arrows.push(Arrow {
+        x: 2.3,
+        y: 0.0,
+        dx: 1.0,
+        dy: 0.0,
+    });
+    arrows.push(Arrow {
+        x: 5.0,
+        y: 5.0,
+        dx: 0.5,
+        dy: 0.5,
+    });
+    let label = "sliding velocity, 1 mm = 5 m/s";
+
+    let plain_svg = dir.join("plain.svg");
+    field_map(&plain_svg, &m, size).unwrap();
+    let plain = std::fs::read_to_string(&plain_svg).unwrap();
+    let svg = dir.join("arrows.svg");
+    field_map_with_arrows(&svg, &m, &arrows, label, size).unwrap();
+    let text = std::fs::read_to_string(&svg).unwrap();
+    assert!(text.starts_with("<svg"));
+    assert!(text.contains("Hertz contact 64x48") && text.contains(label));
+    // Each arrow is a shaft and two head strokes, one polyline each: 14 whole arrows (the
+    // zero-length one is skipped) and the clipped shaft of the one poking out.
+    let extra = count(&text, "<polyline") - count(&plain, "<polyline");
+    assert_eq!(extra, 14 * 3 + 1, "{extra} arrow strokes");
+
+    let plain_png = dir.join("plain.png");
+    field_map(&plain_png, &m, size).unwrap();
+    let png = dir.join("arrows.png");
+    field_map_with_arrows(&png, &m, &arrows, label, size).unwrap();
+    let img = image::open(&png).unwrap().to_rgb8();
+    assert_eq!(img.dimensions(), size);
+    // The arrows are 0.2 to 0.45 mm long, some 20 to 45 pixels, at least a pixel wide.
+    let (before, after) = (dark_pixels(&plain_png), dark_pixels(&png));
+    assert!(
+        after > before + 14 * 20,
+        "{before} dark pixels without arrows, {after} with"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn no_arrows_or_zero_length_arrows_draw_the_plain_map() {
+    let dir = temp_dir("arrows-zero");
+    let p = hertz(A, B, 0.0, 0.0);
+    let m = map(&p, &[]);
+    let zero: Vec<Arrow> = rotation_arrows()
+        .into_iter()
+        .map(|a| Arrow {
+            dx: 0.0,
+            dy: 0.0,
+            ..a
+        })
+        .collect();
+    for ext in ["svg", "png"] {
+        let plain = dir.join(format!("plain.{ext}"));
+        field_map(&plain, &m, (640, 480)).unwrap();
+        let plain = std::fs::read(&plain).unwrap();
+        for (name, arrows) in [("none", &[][..]), ("zero", &zero[..])] {
+            let out = dir.join(format!("{name}.{ext}"));
+            field_map_with_arrows(&out, &m, arrows, "", (640, 480)).unwrap();
+            assert!(std::fs::read(&out).unwrap() == plain, "{name}.{ext}");
+        }
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn arrow_validation() {
+    let dir = temp_dir("arrows-validation");
+    let out = dir.join("map.svg");
+    let p = hertz(A, B, 0.0, 0.0);
+    let m = map(&p, &[]);
+    let good = rotation_arrows();
+    let bad_values = [
+        (2, "x", f64::NAN),
+        (0, "y", f64::INFINITY),
+        (7, "dx", f64::NEG_INFINITY),
+        (14, "dy", f64::NAN),
+    ];
+    for (i, name, v) in bad_values {
+        let mut arrows = good.clone();
+        let a = &mut arrows[i];
+        *match name {
+            "x" => &mut a.x,
+            "y" => &mut a.y,
+            "dx" => &mut a.dx,
+            _ => &mut a.dy,
+        } = v;
+        let result = field_map_with_arrows(&out, &m, &arrows, "v", (800, 600));
+        let Err(PlotError::InvalidInput { value, .. }) = &result else {
+            panic!("expected an invalid arrow, got {result:?}");
+        };
+        assert!(value.contains(&format!("{name}: {v}")), "{value}");
+        expect_invalid(result, &format!("arrows[{i}]"), &out);
+    }
+    // Finite parts whose tip is not finite.
+    let mut arrows = good.clone();
+    arrows[3] = Arrow {
+        x: 1e308,
+        y: 0.0,
+        dx: 1e308,
+        dy: 0.0,
+    };
+    expect_invalid(
+        field_map_with_arrows(&out, &m, &arrows, "", (800, 600)),
+        "arrows[3]",
+        &out,
+    );
+    // The map is still validated first.
+    expect_invalid(
+        field_map_with_arrows(&out, &FieldMap { nx: 1, ..m }, &arrows, "", (800, 600)),
+        "nx",
+        &out,
+    );
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
