@@ -44,13 +44,15 @@
 //! The schema is documented in `docs/case-schema.md`; [`run_friction_case`] turns a case
 //! into a [`FrictionOutcome`] (the [`FrictionReport`] and the fields for the maps).
 
-use crate::pimp_case::{GeometrySpec, roller_rib_from_spec};
 use crate::common::SCHEMA_VERSION;
+use crate::pimp_case::{GeometrySpec, roller_rib_from_spec};
 use kontakt::bearing::{
     Operating, PressureModel, RibFriction, RibFrictionModel, RibLubrication, RollerSet,
 };
 use kontakt::field::NormalSolution;
-use kontakt::friction::{FluidShear, FrictionLaw, LoadSharing, power_density as power_density_into};
+use kontakt::friction::{
+    FluidShear, FrictionLaw, LoadSharing, power_density as power_density_into,
+};
 use kontakt::geometry::VelocityField;
 use kontakt::lubrication::{FilmFormula, Lubricant};
 use kontakt::{Error, Result};
@@ -410,9 +412,7 @@ impl LubricantSpec {
             format!("lubricant.{k}")
         };
         let lubricant = match (self.iso_vg, self.nu40_mm2_s, self.nu100_mm2_s) {
-            (Some(g), None, None) => {
-                Lubricant::iso_vg(g, self.density_kg_m3, self.alpha_per_mpa)
-            }
+            (Some(g), None, None) => Lubricant::iso_vg(g, self.density_kg_m3, self.alpha_per_mpa),
             (None, Some(a), Some(b)) => {
                 Lubricant::new(a, b, self.density_kg_m3, self.alpha_per_mpa)
             }
@@ -440,6 +440,8 @@ impl LubricantSpec {
 /// One row of the report: one pressure model at one speed.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct FrictionRow {
+    /// The pairing (`custom` for explicit shapes).
+    pub pairing: String,
     /// Pressure model.
     pub model: &'static str,
     /// Inner-ring speed \[r/min\].
@@ -489,9 +491,10 @@ pub struct FrictionRow {
 }
 
 impl FrictionRow {
-    fn of(r: &RibFriction) -> Self {
+    fn of(pairing: &str, r: &RibFriction) -> Self {
         let film = r.film_thickness;
         FrictionRow {
+            pairing: pairing.to_string(),
             model: r.model.as_str(),
             speed_rpm: r.operating.inner_speed / RAD_S_PER_RPM,
             cage_speed_rpm: r.cage_speed / RAD_S_PER_RPM,
@@ -602,7 +605,13 @@ impl FrictionMap {
             .velocity_field(model.frame(), field.orientation)?;
         let law = model.law().with_film(&result.film)?;
         let mut power_density = vec![0.0; field.grid.len()];
-        power_density_into(&field.grid, &field.pressure, &sliding, &law, &mut power_density)?;
+        power_density_into(
+            &field.grid,
+            &field.pressure,
+            &sliding,
+            &law,
+            &mut power_density,
+        )?;
         Ok(FrictionMap {
             model: m,
             speed_rpm: rpm,
@@ -648,7 +657,11 @@ pub fn run_friction_case(case: &FrictionCase) -> Result<FrictionOutcome> {
             "a finite force > 0 N",
         ));
     }
-    let lubrication = case.lubricant.as_ref().map(|l| l.lubrication()).transpose()?;
+    let lubrication = case
+        .lubricant
+        .as_ref()
+        .map(|l| l.lubrication())
+        .transpose()?;
     let law = case.friction.law(lubrication.is_some())?;
     let model = RibFrictionModel::new(
         pair.spec,
@@ -693,7 +706,7 @@ pub fn run_friction_case(case: &FrictionCase) -> Result<FrictionOutcome> {
             if let Some(h) = &r.film_thickness {
                 warnings.extend(h.warning_lines());
             }
-            rows.push(FrictionRow::of(r));
+            rows.push(FrictionRow::of(&pairing, r));
         }
     }
     let mut model_difference = Vec::new();

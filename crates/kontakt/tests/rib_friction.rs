@@ -274,8 +274,8 @@ fn lubricated_rib_follows_aihara_with_the_film_of_the_speed() {
         ..FrictionLaw::aihara()
     };
     let wet = RibFrictionModel::new(spec, RollerSet::default(), law, Some(lub), false).unwrap();
-    let dry = RibFrictionModel::new(spec, RollerSet::default(), exact_coulomb(0.2), None, false)
-        .unwrap();
+    let dry =
+        RibFrictionModel::new(spec, RollerSet::default(), exact_coulomb(0.2), None, false).unwrap();
     let speeds = [5.0, 20.0, 80.0, 320.0];
     let w = wet.sweep(PressureModel::Pimp, 6000.0, &speeds).unwrap();
     let d = dry.sweep(PressureModel::Pimp, 6000.0, &speeds).unwrap();

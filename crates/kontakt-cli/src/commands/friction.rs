@@ -24,9 +24,7 @@ pub fn run(args: &FrictionArgs, out: &mut impl Write) -> Result<()> {
         ))
         .into());
     }
-    let Outcome::Friction(outcome) = case
-        .run(Path::new("."))
-        .with_context(|| label.clone())?
+    let Outcome::Friction(outcome) = case.run(Path::new(".")).with_context(|| label.clone())?
     else {
         return Err(InputError(format!("{label}: not a friction case")).into());
     };
@@ -319,7 +317,11 @@ fn sliding_arrows(m: &FrictionMap) -> (Vec<kontakt_plot::Arrow>, String) {
         .map(|(_, _, vx, vy)| vx.hypot(*vy))
         .fold(0.0f64, f64::max);
     let spacing = every as f64 * g.dx().min(g.dy());
-    let scale = if vmax > 0.0 { 1.5 * spacing / vmax } else { 0.0 };
+    let scale = if vmax > 0.0 {
+        1.5 * spacing / vmax
+    } else {
+        0.0
+    };
     let arrows = raw
         .into_iter()
         .map(|(x, y, vx, vy)| kontakt_plot::Arrow {
@@ -339,4 +341,176 @@ fn sliding_arrows(m: &FrictionMap) -> (Vec<kontakt_plot::Arrow>, String) {
         "no sliding".to_string()
     };
     (arrows, label)
+}
+
+/// One pairing's line of the demo's friction summary.
+pub struct DemoSummary {
+    /// Pairing name.
+    pub pairing: String,
+    /// Speeds \[r/min\] of the columns.
+    pub speeds: Vec<f64>,
+    /// Rib torque \[N·mm\] per model (hertz, pimp, halfspace) at those speeds.
+    pub torque: [Vec<f64>; 3],
+}
+
+/// The demo's friction study: the case of `examples/rib_friction.toml` on each pairing of
+/// Wirsching et al. (2020) Table 1, with the three pressure models; writes
+/// `friction.csv`, the torque and Stribeck plots of PimP, the model-ratio plot and the
+/// sliding-velocity and power-density maps of one curved zone, and returns the summary.
+pub fn demo_study(out_dir: &Path, md: &mut String) -> Result<Vec<DemoSummary>> {
+    use kontakt_case::friction_case::{FrictionCase, run_friction_case};
+    let base: FrictionCase =
+        match Case::from_toml_str(include_str!("../../../../examples/rib_friction.toml"))? {
+            Case::Friction(c) => *c,
+            _ => {
+                return Err(
+                    InputError("examples/rib_friction.toml: not a friction case".into()).into(),
+                );
+            }
+        };
+    let csv_path = out_dir.join("friction.csv");
+    let mut w = csv::Writer::from_path(&csv_path)
+        .map_err(|e| InputError(format!("cannot write {}: {e}", csv_path.display())))?;
+    let mut summary = Vec::new();
+    let mut torque_curves: Vec<(String, Vec<(f64, f64)>)> = Vec::new();
+    let mut mu_curves: Vec<(String, Vec<(f64, f64)>)> = Vec::new();
+    let mut ratio_curves: Vec<(String, Vec<(f64, f64)>)> = Vec::new();
+    let map_pairing = "torus-cone-28";
+    let mut last = None;
+    for &(name, ..) in kontakt::bearing::TABLE1.iter() {
+        let mut case = base.clone();
+        case.name = Some(name.to_string());
+        case.models = vec![
+            kontakt::bearing::PressureModel::Pimp,
+            kontakt::bearing::PressureModel::Hertz,
+            kontakt::bearing::PressureModel::HalfSpace,
+        ];
+        if let kontakt_case::pimp_case::GeometrySpec::RollerRib { pairing, .. } = &mut case.geometry
+        {
+            *pairing = Some(name.to_string());
+        }
+        let outcome =
+            run_friction_case(&case).with_context(|| format!("friction study, {name}"))?;
+        let r = &outcome.report;
+        for row in &r.rows {
+            w.serialize(row)?;
+        }
+        let of = |m: &str, f: &dyn Fn(&kontakt_case::friction_case::FrictionRow) -> f64| {
+            r.rows
+                .iter()
+                .filter(|x| x.model == m)
+                .map(|x| (x.speed_rpm.log10(), f(x)))
+                .collect::<Vec<_>>()
+        };
+        torque_curves.push((name.to_string(), of("pimp", &|x| x.bearing_torque_nmm)));
+        mu_curves.push((name.to_string(), of("pimp", &|x| x.coefficient)));
+        ratio_curves.push((
+            name.to_string(),
+            r.model_difference
+                .iter()
+                .filter(|d| d.model == "pimp")
+                .map(|d| (d.speed_rpm.log10(), d.torque_vs_hertz))
+                .collect(),
+        ));
+        let speeds: Vec<f64> = r
+            .rows
+            .iter()
+            .filter(|x| x.model == "hertz")
+            .map(|x| x.speed_rpm)
+            .collect();
+        let torque = ["hertz", "pimp", "halfspace"].map(|m| {
+            r.rows
+                .iter()
+                .filter(|x| x.model == m)
+                .map(|x| x.bearing_torque_nmm)
+                .collect()
+        });
+        summary.push(DemoSummary {
+            pairing: name.to_string(),
+            speeds,
+            torque,
+        });
+        if name == map_pairing {
+            write_sliding_map(&out_dir.join("friction_sliding.png"), &outcome.map, r)?;
+            write_density_map(&out_dir.join("friction_density.png"), &outcome.map, r)?;
+        }
+        last = Some(outcome.report);
+    }
+    w.flush()?;
+    let plot = |file: &str, title: &str, y_label: &str, curves: &[(String, Vec<(f64, f64)>)]| {
+        let series: Vec<Series> = curves
+            .iter()
+            .enumerate()
+            .map(|(k, (name, pts))| Series {
+                label: name,
+                points: pts,
+                color: PALETTE[k % PALETTE.len()],
+                style: if k % 2 == 0 {
+                    LineStyle::Solid
+                } else {
+                    LineStyle::Dashed
+                },
+            })
+            .collect();
+        kontakt_plot::line_plot(
+            &out_dir.join(file),
+            &LinePlot {
+                title,
+                x_label: "log10 (inner ring speed [r/min])",
+                y_label,
+                series: &series,
+            },
+            (900, 600),
+        )
+        .with_context(|| format!("drawing {file}"))
+    };
+    let fa = base.load.axial_n;
+    plot(
+        "friction_torque.png",
+        &format!("Rib friction torque of the bearing, PimP, F_a = {fa} N"),
+        "rib torque [N·mm]",
+        &torque_curves,
+    )?;
+    plot(
+        "friction_coefficient.png",
+        &format!("Rib friction coefficient (Stribeck), PimP, F_a = {fa} N"),
+        "mu = |F_t| / Q_f [-]",
+        &mu_curves,
+    )?;
+    plot(
+        "friction_model_ratio.png",
+        "Rib torque, PimP over Hertz",
+        "torque ratio PimP / Hertz [-]",
+        &ratio_curves,
+    )?;
+    let law = last.map(|r| r.law);
+    md.push_str(&format!(
+        "\n## Rib friction against speed\n\nThe case of `examples/rib_friction.toml` (F_a = {fa} N \
+         axial, 17 rollers, ISO VG 68 at 70 °C, sigma = 0.2 µm on both surfaces, mixed friction \
+         with mu_b = {}, centrifugal force included) on every pairing, with the pressure from \
+         Hertz, PimP and the half-space solver (`kontakt friction examples/rib_friction.toml`). \
+         Every row: [friction.csv](friction.csv).\n\n\
+         ![rib torque](friction_torque.png)\n\n![Stribeck curve](friction_coefficient.png)\n\n\
+         ![PimP over Hertz](friction_model_ratio.png)\n\n",
+        law.map_or(0.0, |l| l.boundary_coefficient)
+    ));
+    md.push_str("| pairing | n [r/min] | M Hertz [N·mm] | M PimP [N·mm] | M half-space [N·mm] | PimP / Hertz | half-space / Hertz |\n|---|---|---|---|---|---|---|\n");
+    for s in &summary {
+        for i in [0, s.speeds.len() / 2, s.speeds.len() - 1] {
+            let [h, p, b] = [&s.torque[0], &s.torque[1], &s.torque[2]].map(|t| t[i]);
+            md.push_str(&format!(
+                "| {} | {:.0} | {h:.1} | {p:.1} | {b:.1} | {:.4} | {:.4} |\n",
+                s.pairing,
+                s.speeds[i],
+                p / h,
+                b / h
+            ));
+        }
+    }
+    md.push_str(&format!(
+        "\nSliding velocity of the roller on the rib over the PimP pressure of {map_pairing} \
+         (a curved zone) and the friction-power density tau · v_s:\n\n\
+         ![sliding velocity](friction_sliding.png)\n\n![power density](friction_density.png)\n"
+    ));
+    Ok(summary)
 }

@@ -277,6 +277,7 @@ pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
          (`kontakt traction examples/traction_ball_all_models.toml`). Data: \
          [traction.csv](traction.csv).\n\n![traction curves](traction.png)\n",
     );
+    let friction = crate::commands::friction::demo_study(out_dir, &mut md)?;
     std::fs::write(&md_path, md)
         .map_err(|e| InputError(format!("cannot write {}: {e}", md_path.display())))?;
 
@@ -318,8 +319,38 @@ pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
         }
         writeln!(
             out,
+            "\nRib friction torque of the bearing [N·mm] (examples/rib_friction.toml on each pairing):"
+        )?;
+        if let Some(first) = friction.first() {
+            let cols = [0, first.speeds.len() / 2, first.speeds.len() - 1];
+            write!(out, "  {:<16}", "pairing")?;
+            for &i in &cols {
+                write!(
+                    out,
+                    " {:>21}",
+                    format!("{:.0} r/min: PimP", first.speeds[i])
+                )?;
+                write!(out, " {:>7}", "/Hertz")?;
+            }
+            writeln!(out)?;
+            for s in &friction {
+                write!(out, "  {:<16}", s.pairing)?;
+                for &i in &cols {
+                    write!(
+                        out,
+                        " {:>21.1} {:>7.4}",
+                        s.torque[1][i],
+                        s.torque[1][i] / s.torque[0][i]
+                    )?;
+                }
+                writeln!(out)?;
+            }
+        }
+        writeln!(
+            out,
             "Report written to {} ({} results, {} pressure maps, 2 plots, results.csv; \
-             traction curves of four models in traction.png)",
+             traction curves of four models in traction.png; rib friction against speed in \
+             friction.csv and friction_*.png)",
             md_path.display(),
             rows.len(),
             maps.len()
