@@ -27,5 +27,7 @@
 pub mod integral;
 pub mod law;
 
-pub use integral::{ContactFriction, GridFriction, contact_friction, grid_friction, power_density};
+pub use integral::{
+    ContactFriction, GridFriction, contact_friction, grid_friction, power_density, pressure_sliding,
+};
 pub use law::{CellLaw, FilmState, FluidShear, FrictionLaw, LoadSharing, REGULARISATION_SPEED};
