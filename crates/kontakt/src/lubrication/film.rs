@@ -1,8 +1,9 @@
 //! Elastohydrodynamic (EHL) film thickness of an elliptical contact: the Hamrock-Dowson
-//! (1977) central and minimum film, entrainment at any angle through the radius in the
-//! entrainment direction, and the dimensionless groups that place the contact on the
-//! regime map (Hamrock-Dowson U, G, W and k; Moes M and L; the viscosity and elasticity
-//! parameters g_V and g_E).
+//! (1977) central and minimum film, the Chittenden-Dowson-Dunn-Taylor (1985) central film
+//! for entrainment at any angle to the ellipse axes, entrainment at any angle through the
+//! radius in the entrainment direction, and the dimensionless groups that place the contact
+//! on the regime map (Hamrock-Dowson U, G, W and k; Moes M and L; the viscosity and
+//! elasticity parameters g_V and g_E).
 //!
 //! Units: lengths mm, force N, modulus MPa, speed mm/s, viscosity MPa·s, pressure-viscosity
 //! coefficient 1/MPa. Every group is a ratio of the same quantities in consistent units
@@ -12,7 +13,8 @@
 //! [`film_thickness`] is a pure function of `Copy` data: it allocates nothing and can be
 //! called once per contact in a hot loop. Its validity limits are reported as
 //! [`FilmWarnings`], never hidden; see `docs/film.md` for the formulas, their sources, what
-//! was not implemented (Chittenden et al. 1985, Nijenbanning-Venner-Moes 1994) and why.
+//! was not implemented (the Chittenden et al. minimum film, Nijenbanning-Venner-Moes 1994)
+//! and why.
 
 use crate::error::{Error, Result};
 
@@ -44,11 +46,10 @@ pub struct FilmContact {
 
 /// The film-thickness formula.
 ///
-/// Only Hamrock-Dowson is implemented. The oblique-entrainment fit of Chittenden, Dowson,
-/// Dunn & Taylor (1985) and the regime-spanning central-film formula of Nijenbanning,
-/// Venner & Moes (1994) were not implemented because their constants could not be checked
-/// against the original papers or a reliable textbook transcription (see `docs/film.md`).
-/// The enum is non-exhaustive so that they can be added without breaking callers.
+/// The regime-spanning central-film formula of Nijenbanning, Venner & Moes (1994) is not
+/// implemented: its constants were found only in one third-party code, not in the paper nor
+/// in a second independent transcription (see `docs/film.md` §4). The enum is
+/// non-exhaustive so that it can be added without breaking callers.
 #[non_exhaustive]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -59,6 +60,17 @@ pub enum FilmFormula {
     /// referred to the radius R_e in the entrainment direction. Fitted for entrainment
     /// along x (θ = 0) and 1 ≤ k ≤ 8.
     HamrockDowson,
+    /// Chittenden, Dowson, Dunn & Taylor (1985), isothermal central film for entrainment
+    /// at any angle to the axes of the contact ellipse:
+    /// H_c = h_c/R_e = 4.30 U^0.68 G^0.49 W^−0.073 (1 − e^(−1.30 (R_s/R_e)^(2/3))), with
+    /// U and W referred to R_e (constants as printed by the tribonet.org EHL point-contact
+    /// calculator; Zhou & Hoeprich 1991 eq. 31 print 1.28 for the 1.30, a difference of at
+    /// most 1.6 % in h_c — see `docs/film.md` §3). No Chittenden minimum film could be
+    /// read in a source: `minimum` is the Hamrock-Dowson minimum at the same R_e and R_s,
+    /// flagged by [`FilmWarnings::minimum_from_hamrock_dowson`]. The formula that the
+    /// roller-end/rib contact (entrainment along the major axis, R_s < R_e) should use for
+    /// its central film; see `docs/film.md` §5.
+    Chittenden,
 }
 
 /// The dimensionless groups of the contact, all referred to the radius in the
@@ -109,6 +121,10 @@ pub struct FilmWarnings {
     pub ellipticity_below_fit: bool,
     /// k > 8: above the fitted 1 ≤ k ≤ 8 (towards a line contact).
     pub ellipticity_above_fit: bool,
+    /// The formula gives a central film only ([`FilmFormula::Chittenden`]): `minimum` is
+    /// the Hamrock-Dowson minimum film at the same R_e and R_s (an extrapolation outside
+    /// θ = 0 and 1 ≤ k ≤ 8, which the other flags report).
+    pub minimum_from_hamrock_dowson: bool,
 }
 
 impl FilmWarnings {
@@ -124,6 +140,7 @@ impl FilmWarnings {
             self.oblique_entrainment,
             self.ellipticity_below_fit,
             self.ellipticity_above_fit,
+            self.minimum_from_hamrock_dowson,
         ]
         .iter()
         .filter(|&&f| f)
@@ -160,6 +177,13 @@ impl FilmWarnings {
                 regime.k
             ));
         }
+        if self.minimum_from_hamrock_dowson {
+            out.push(
+                "the formula gives the central film only: the minimum film is the \
+                 Hamrock-Dowson minimum at the same R_e and R_s"
+                    .to_string(),
+            );
+        }
         out
     }
 }
@@ -192,6 +216,12 @@ impl FilmThickness {
 /// eight").
 pub const HAMROCK_DOWSON_K_RANGE: (f64, f64) = (1.0, 8.0);
 
+/// The constants (C, c) of the Chittenden et al. (1985) central film
+/// H_c = C U^0.68 G^0.49 W^−0.073 (1 − e^(−c (R_s/R_e)^(2/3))), as printed by the tribonet.org
+/// EHL point-contact calculator (eq. 3, θ = 0 form with R_Y/R_X). Zhou & Hoeprich (1991)
+/// eq. 31 print C = 4.30 and c = 1.28 (see `docs/film.md` §3).
+pub const CHITTENDEN_CENTRAL: (f64, f64) = (4.30, 1.30);
+
 /// |sin 2θ| above which the entrainment counts as oblique (not along x or y).
 const OBLIQUE_TOLERANCE: f64 = 1e-9;
 
@@ -211,6 +241,8 @@ fn positive_field(field: &'static str, value: f64, expected: &'static str) -> Re
 /// entrainment direction R_e and the ellipticity to R_s/R_e (1/R_e = cos²θ/R_x +
 /// sin²θ/R_y, 1/R_s = sin²θ/R_x + cos²θ/R_y); at θ = 0 this is exactly Hamrock-Dowson, at
 /// other angles it is an extrapolation and [`FilmWarnings::oblique_entrainment`] is raised.
+/// [`FilmFormula::Chittenden`] is a fit for any entrainment angle: it raises no oblique
+/// warning, and takes its minimum film from Hamrock-Dowson (flagged).
 /// Zero entrainment speed returns h = 0 (boundary lubrication) with
 /// [`FilmWarnings::zero_entrainment`], not an error. No heap allocation.
 ///
@@ -297,19 +329,32 @@ pub fn film_thickness(
         g_e,
     };
 
-    let (central, minimum) = match formula {
-        FilmFormula::HamrockDowson => {
-            if zero {
-                (0.0, 0.0)
-            } else {
+    // Hamrock-Dowson minimum film, also the minimum of the central-only formulas.
+    let hd_minimum = || {
+        3.63 * u.powf(0.68)
+            * g.powf(0.49)
+            * w.powf(-0.073)
+            * (1.0 - (-0.68 * k).exp())
+            * radius_entrainment
+    };
+    let (central, minimum) = if zero {
+        (0.0, 0.0)
+    } else {
+        match formula {
+            FilmFormula::HamrockDowson => {
                 let hc = 2.69
                     * u.powf(0.67)
                     * g.powf(0.53)
                     * w.powf(-0.067)
                     * (1.0 - 0.61 * (-0.73 * k).exp());
-                let hm =
-                    3.63 * u.powf(0.68) * g.powf(0.49) * w.powf(-0.073) * (1.0 - (-0.68 * k).exp());
-                (hc * radius_entrainment, hm * radius_entrainment)
+                (hc * radius_entrainment, hd_minimum())
+            }
+            FilmFormula::Chittenden => {
+                let (c0, c1) = CHITTENDEN_CENTRAL;
+                let ratio = (radius_side / radius_entrainment).powf(2.0 / 3.0);
+                let hc =
+                    c0 * u.powf(0.68) * g.powf(0.49) * w.powf(-0.073) * (1.0 - (-c1 * ratio).exp());
+                (hc * radius_entrainment, hd_minimum())
             }
         }
     };
@@ -342,11 +387,14 @@ pub fn film_thickness(
     let (k_lo, k_hi) = HAMROCK_DOWSON_K_RANGE;
     let warnings = FilmWarnings {
         zero_entrainment: zero,
-        // For R_x = R_y every direction is principal: no warning.
-        oblique_entrainment: (2.0 * theta).sin().abs() > OBLIQUE_TOLERANCE
+        // For R_x = R_y every direction is principal: no warning. Chittenden et al. fitted
+        // every entrainment angle.
+        oblique_entrainment: formula == FilmFormula::HamrockDowson
+            && (2.0 * theta).sin().abs() > OBLIQUE_TOLERANCE
             && (rx / ry - 1.0).abs() > OBLIQUE_TOLERANCE,
         ellipticity_below_fit: k < k_lo,
         ellipticity_above_fit: k > k_hi,
+        minimum_from_hamrock_dowson: formula == FilmFormula::Chittenden && !zero,
     };
 
     Ok(FilmThickness {

@@ -7,14 +7,14 @@
 //!   [`Lubricant::iso_vg`] builds typical ISO VG grades.
 //! * [`film_parameter`]: Λ = h / √(σ₁² + σ₂²).
 //! * [`film_thickness`] (submodule `film`, re-exported here): the Hamrock-Dowson (1977)
-//!   central and minimum film of an elliptical contact, entrainment at any angle through
-//!   the radius in the entrainment direction, the dimensionless groups (U, G, W, k, Moes M
-//!   and L, g_V and g_E) and validity warnings ([`FilmWarnings`]).
+//!   central and minimum film of an elliptical contact and the Chittenden et al. (1985)
+//!   central film for entrainment at any angle ([`FilmFormula`]), entrainment at any angle
+//!   through the radius in the entrainment direction, the dimensionless groups (U, G, W, k,
+//!   Moes M and L, g_V and g_E) and validity warnings ([`FilmWarnings`]).
 //!
-//! Not here: the oblique-entrainment fit of Chittenden et al. (1985) and the
-//! regime-spanning Nijenbanning-Venner-Moes (1994) formula, whose constants could not be
-//! verified against the original papers; thermal, starvation and roughness corrections.
-//! See `docs/film.md`.
+//! Not here: the Chittenden et al. minimum film and the regime-spanning
+//! Nijenbanning-Venner-Moes (1994) formula, whose constants could not be found in two
+//! independent sources; thermal, starvation and roughness corrections. See `docs/film.md`.
 //!
 //! Units: kinematic viscosity mm²/s (= cSt), density kg/m³, dynamic viscosity MPa·s
 //! (1 MPa·s = 10⁶ Pa·s; 1 mPa·s = 1e-9 MPa·s), pressure-viscosity coefficient 1/MPa,
@@ -24,8 +24,8 @@
 mod film;
 
 pub use film::{
-    FilmContact, FilmFormula, FilmRegime, FilmThickness, FilmWarnings, HAMROCK_DOWSON_K_RANGE,
-    film_thickness,
+    CHITTENDEN_CENTRAL, FilmContact, FilmFormula, FilmRegime, FilmThickness, FilmWarnings,
+    HAMROCK_DOWSON_K_RANGE, film_thickness,
 };
 
 use crate::error::{Error, Result, positive_as};
