@@ -31,7 +31,7 @@
 //! alpha_per_mpa = 0.02
 //! temperature_c = 70.0
 //! roughness_mm = [0.0002, 0.0002]   # rms of the roller end face and the rib
-//! formula = "hamrock_dowson"
+//! formula = "chittenden"   # default; or "hamrock_dowson"
 //!
 //! [friction]                 # optional
 //! preset = "mixed"           # "coulomb" (default when dry), "aihara", "mixed" (default when lubricated)
@@ -221,7 +221,7 @@ pub struct LubricantSpec {
     pub temperature_c: f64,
     /// RMS roughness of the roller end face and of the rib \[mm\].
     pub roughness_mm: [f64; 2],
-    /// Film formula (default Hamrock-Dowson).
+    /// Film formula (default Chittenden et al. 1985).
     #[serde(default)]
     pub formula: FormulaSpec,
 }
@@ -230,8 +230,11 @@ pub struct LubricantSpec {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
 #[serde(rename_all = "snake_case")]
 pub enum FormulaSpec {
-    /// Hamrock & Dowson (1977).
+    /// Chittenden et al. (1985) central film, entrainment at any angle (the default: the
+    /// rib's entrainment runs along the major axis of its contact ellipse).
     #[default]
+    Chittenden,
+    /// Hamrock & Dowson (1977), fitted for entrainment along the minor axis.
     HamrockDowson,
 }
 
@@ -430,6 +433,7 @@ impl LubricantSpec {
             temperature: self.temperature_c,
             roughness: self.roughness_mm,
             formula: match self.formula {
+                FormulaSpec::Chittenden => FilmFormula::Chittenden,
                 FormulaSpec::HamrockDowson => FilmFormula::HamrockDowson,
             },
         };
@@ -710,7 +714,7 @@ pub fn run_friction_case(case: &FrictionCase) -> Result<FrictionOutcome> {
         }
     }
     let mut model_difference = Vec::new();
-    for (i, &s) in speeds.iter().enumerate() {
+    for i in 0..speeds.len() {
         let n = speeds.len();
         let at = |k: usize| &rows[k * n + i];
         if let Some(h) = case.models.iter().position(|m| *m == PressureModel::Hertz) {
@@ -718,7 +722,7 @@ pub fn run_friction_case(case: &FrictionCase) -> Result<FrictionOutcome> {
             for (k, m) in case.models.iter().enumerate() {
                 if *m != PressureModel::Hertz && base > 0.0 {
                     model_difference.push(ModelDifference {
-                        speed_rpm: s,
+                        speed_rpm: at(k).speed_rpm,
                         model: m.as_str(),
                         torque_vs_hertz: at(k).bearing_torque_nmm / base,
                     });

@@ -38,6 +38,7 @@ use crate::error::{Error, Result};
 /// How the load is shared between asperity contact and the fluid film.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(tag = "kind", rename_all = "snake_case"))]
 pub enum LoadSharing {
     /// `φ = 1`: every cell carries its pressure by asperity contact (dry or boundary
     /// lubrication; the fluid law is not used).
@@ -65,6 +66,7 @@ impl LoadSharing {
 /// The shear stress of the lubricant film.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(tag = "kind", rename_all = "snake_case"))]
 pub enum FluidShear {
     /// No fluid shear (Aihara 1987 neglects it at the rib).
     None,
@@ -73,14 +75,17 @@ pub enum FluidShear {
     /// Eyring `τ = τ₀ asinh(η(p) γ̇ / τ₀)`.
     Eyring {
         /// Eyring stress τ₀ \[MPa\] (mineral oils ≈ 2-10 MPa).
+        #[cfg_attr(feature = "serde", serde(rename = "tau0_mpa"))]
         tau0: f64,
     },
     /// Limiting shear `τ = τ_L (1 − exp(−η(p) γ̇ / τ_L))`, `τ_L = tau_l0 + slope p`
     /// (the steady form of Bair & Winer 1979).
     LimitingShear {
         /// Limiting shear stress at zero pressure τ_L0 \[MPa\], > 0.
+        #[cfg_attr(feature = "serde", serde(rename = "tau_l0_mpa"))]
         tau_l0: f64,
-        /// Its growth with pressure γ_L (dimensionless, ≈ 0.05-0.1), ≥ 0.
+        /// Its growth with pressure γ_L (dimensionless), ≥ 0.
+        #[cfg_attr(feature = "serde", serde(rename = "tau_l_slope"))]
         slope: f64,
     },
 }
@@ -90,12 +95,15 @@ pub enum FluidShear {
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct FilmState {
     /// Film thickness h that sets the shear rate |v|/h \[mm\] (the central film).
+    #[cfg_attr(feature = "serde", serde(rename = "thickness_mm"))]
     pub thickness: f64,
     /// Film parameter Λ = h / σ (dimensionless).
     pub lambda: f64,
     /// Viscosity at the inlet temperature and zero pressure η₀ \[MPa·s\].
+    #[cfg_attr(feature = "serde", serde(rename = "viscosity_mpa_s"))]
     pub viscosity: f64,
     /// Pressure-viscosity coefficient α \[1/MPa\] (Barus).
+    #[cfg_attr(feature = "serde", serde(rename = "alpha_per_mpa"))]
     pub alpha: f64,
 }
 
@@ -157,12 +165,14 @@ impl FilmState {
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct FrictionLaw {
     /// Boundary (asperity) friction coefficient μ_b, 0 ≤ μ_b ≤ 1.
+    #[cfg_attr(feature = "serde", serde(rename = "mu"))]
     pub boundary_coefficient: f64,
     /// Load sharing φ(Λ).
     pub sharing: LoadSharing,
     /// Fluid shear law τ_f.
     pub fluid: FluidShear,
     /// Regularisation speed v_ε \[mm/s\] of the Coulomb direction, ≥ 0 (0: exact Coulomb).
+    #[cfg_attr(feature = "serde", serde(rename = "regularisation_speed_mm_s"))]
     pub regularisation_speed: f64,
 }
 
