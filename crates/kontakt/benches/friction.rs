@@ -56,6 +56,32 @@ fn bench_friction(c: &mut Criterion) {
             contact_friction(black_box(&field), &frame, black_box(&pair), &mixed).expect("friction")
         })
     });
+    // The case of bench/friction/friction_numpy.py: a Hertz ellipse spinning about a pivot.
+    {
+        use kontakt::friction::grid_friction;
+        use kontakt::geometry::{Grid2, VelocityField};
+        let (p0, a, b, omega, e) = (700.0f64, 1.2f64, 0.3f64, 300.0f64, 2.76f64);
+        let grid = Grid2::centered(1.05 * a, 1.05 * b, 64, 64).expect("grid");
+        let pressure: Vec<f64> = grid
+            .points()
+            .map(|(x, y)| p0 * (1.0 - (x / a).powi(2) - (y / b).powi(2)).max(0.0).sqrt())
+            .collect();
+        let spin = VelocityField {
+            sliding: [[-omega * e, 0.0], [0.0, omega], [-omega, 0.0]],
+            entrainment: [[0.0; 2]; 3],
+        };
+        let g = grid_friction(&grid, &pressure, &spin, &coulomb).expect("friction");
+        eprintln!(
+            "kontakt case: F = [{:.6}, {:.6}] N, M = {:.6} N mm, P = {:.6} W",
+            g.force[0], g.force[1], g.moment, g.power
+        );
+        group.bench_function("map_64x64_coulomb_ellipse", |bn| {
+            bn.iter(|| {
+                grid_friction(&grid, black_box(&pressure), black_box(&spin), &coulomb)
+                    .expect("friction")
+            })
+        });
+    }
     // Houpert's closed form for one contact: the estimate a designer uses without a map.
     let (q, e, a, mu) = (220.0f64, 2.76f64, 1.2f64, 0.1f64);
     group.bench_function("houpert_closed_form", |b| {
