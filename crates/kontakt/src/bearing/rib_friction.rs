@@ -38,6 +38,41 @@
 //! `cos² β` (relative `sin² β`, 0.27 % at β = 3°). docs/friction.md §5 has the derivation.
 //!
 //! Units: mm, N, MPa, rad/s (speeds), °C, kg/m³ (roller density); torque N·mm, power W.
+//!
+//! ```
+//! use kontakt::bearing::{PressureModel, RibFrictionModel, RibLubrication, RollerRibSpec, RollerSet};
+//! use kontakt::friction::FrictionLaw;
+//! use kontakt::lubrication::{FilmFormula, Lubricant};
+//!
+//! // Spherical face r_R = 57 mm on a toroidal rib (Wirsching et al. 2020, Table 1), 17 rollers,
+//! // ISO VG 68 at 70 °C, mixed friction with mu_b = 0.12, centrifugal force included.
+//! let oil = RibLubrication {
+//!     lubricant: Lubricant::iso_vg(68, 860.0, 0.02)?,
+//!     temperature: 70.0,
+//!     roughness: [0.2e-3, 0.2e-3],
+//!     formula: FilmFormula::Chittenden,
+//! };
+//! let model = RibFrictionModel::new(
+//!     RollerRibSpec::builtin("sphere-torus-57")?,
+//!     RollerSet::default(),
+//!     FrictionLaw::mixed(0.12)?,
+//!     Some(oil),
+//!     true,
+//! )?;
+//! // 15 kN axial load at 100 and 3000 r/min (inner ring; outer ring fixed).
+//! let speeds = [100.0, 3000.0].map(|n: f64| n * std::f64::consts::PI / 30.0);
+//! let sweep = model.sweep(PressureModel::Pimp, 15_000.0, &speeds)?;
+//! for r in &sweep {
+//!     println!(
+//!         "Q_f = {:.1} N, Lambda = {:.2}, mu = {:.4}, torque {:.0} N·mm, power {:.1} W",
+//!         r.loads.rib, r.film.lambda, r.coefficient, r.bearing_torque, r.bearing_power
+//!     );
+//! }
+//! // The film grows with speed and the coefficient falls (the Stribeck branch).
+//! assert!(sweep[1].film.lambda > sweep[0].film.lambda);
+//! assert!(sweep[1].coefficient < sweep[0].coefficient);
+//! # Ok::<(), kontakt::error::Error>(())
+//! ```
 
 use crate::bearing::kinematics::TaperedKinematics;
 use crate::bearing::roller_rib::{RollerRib, RollerRibSpec};
