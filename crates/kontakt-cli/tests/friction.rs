@@ -80,7 +80,7 @@ fn example_report_is_consistent() {
     let r: Value = serde_json::from_slice(&out.stdout).unwrap();
     let z = r["rollers"].as_f64().unwrap();
     let rows = r["rows"].as_array().unwrap();
-    assert_eq!(rows.len(), 30);
+    assert_eq!(rows.len(), 18); // 3 models × 6 speeds
     for row in rows {
         let f = |k: &str| row[k].as_f64().unwrap();
         let w = f("speed_rpm") * std::f64::consts::PI / 30.0;
