@@ -47,7 +47,7 @@ LAYERS=(
   "pimp halfspace"
   "tangential traction lubrication"
   "friction"
-  "bearing"
+  "bearing element"
 )
 CASE_LAYER=kontakt_case
 

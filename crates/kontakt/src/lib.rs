@@ -74,6 +74,7 @@
 //! | [`traction`] | asperity-based traction curves: periodic spherical asperities on a rough line or circular Hertz contact, Mindlin partial slip per asperity (the thesis "Study of the traction curves", §3.1.2.2) | done |
 //! | [`lubrication`] | lubricant (ASTM D341 viscosity-temperature, ISO VG grades), film parameter Λ, EHL film thickness (Hamrock-Dowson central and minimum film, entrainment at any angle via R_e/R_s, regime groups U, G, W, k, Moes M, L, g_V, g_E, validity warnings) | lubricant, Λ and Hamrock-Dowson film done; Chittenden (1985) and Nijenbanning-Venner-Moes (1994) not implemented (constants unverified, see docs/film.md) |
 //! | [`friction`] | mixed-friction law per cell (Coulomb, load sharing exp(−BΛ^C), Newtonian / Eyring / limiting-shear fluid, regularised direction) and its integral over any pressure field: force, moments, power | done |
+//! | [`element`] | a contact element for multi-body codes: two surfaces on two bodies, poses and twists in, force, moments, friction and status out (Hertz, PimP or half-space back-end) | first step: element, status, damping; speed targets and C API to come |
 //! | [`bearing`] | roller end face / rib pair of a tapered roller bearing (Wirsching et al. (2020) Table 1) ; kinematics (cage, roller spin, sliding and entrainment velocities); rib load, rib friction torque and power of the whole bearing | done |
 //!
 //! Case files (TOML), the runner `Case::run` and the JSON reports live in the
@@ -88,6 +89,7 @@
 #![warn(missing_docs)]
 
 pub mod bearing;
+pub mod element;
 pub mod error;
 pub mod field;
 pub mod friction;

@@ -1,0 +1,437 @@
+//! A contact element for multi-body codes: two analytic surfaces fixed to two bodies,
+//! planned once; [`ContactElement::evaluate`] takes the bodies' poses and twists and returns
+//! the contact force and the moments about each body's reference point, the approach, the
+//! contact point and normal, the friction force and power, and the contact status.
+//!
+//! # Coupling (docs/mbs.md)
+//!
+//! - Frames: every pose, twist, point, force and moment is in the world frame. A body's
+//!   pose maps body coordinates to world coordinates; its reference point is the pose's
+//!   origin. Each surface is placed in its body's frame by [`ElementSpec::surface1`] /
+//!   [`ElementSpec::surface2`]; at evaluation it sits at `pose ∘ placement`.
+//! - Signs: the normal `n` points from body 2 into body 1 (the direction of the normal force
+//!   on body 1). The approach `δ = −separation ≥ 0` in contact. The force on body 2 is minus
+//!   the force on body 1.
+//! - Units: mm, N, MPa, mm/s, rad/s; moments N·mm; power W.
+//!
+//! # Model
+//!
+//! 1. The contact point (closest points, or the deepest point of an overlap) by
+//!    [`find_contact`], started from the last call's point.
+//! 2. Separated (`separation > 0`): zero force, status [`ContactStatus::Separated`].
+//! 3. The normal problem at the approach `δ` by the back-end: Hertz at the contact point's
+//!    relative curvature (pressure sampled on a 32 × 32 grid for the friction integral),
+//!    PimP, or the coupled half-space solver, on the gap of the two placed surfaces.
+//! 4. Friction: [`crate::friction::contact_friction`] of the law over the pressure field with
+//!    the sliding field of the two twists.
+//! 5. Damping (optional): `F_d = c(δ) δ̇`, `δ̇ = −n · (v_1 − v_2)` at the contact point,
+//!    `c(δ) = c_max s(δ / δ_c)`, `s(t) = 3t² − 2t³` on `[0, 1]`, 1 beyond: zero with zero slope
+//!    at first touch, so the force has no jump. The total normal force `F_n + F_d` is not
+//!    allowed to pull (clamped at 0).
+//! 6. Validity: the approach is compared with `max_approach_ratio · R_min`, `R_min` the
+//!    smallest relative radius of curvature at the contact point (Hertz's small-strain
+//!    assumption; default 1 %). Beyond it the status is [`ContactStatus::OutOfValidity`] with
+//!    the force still computed (continuous for the integrator) and the reason in
+//!    [`ElementResult::message`]: never a silent huge force.
+
+use crate::error::{Error, Result};
+use crate::field::NormalSolution;
+use crate::friction::{CellLaw, FilmState, FrictionLaw, contact_friction};
+use crate::gap::{GapSource, SurfacePairGap};
+use crate::geometry::{
+    BodyState, ContactFrame, ContactPair, Grid2, PlacedSurface, Twist, find_contact,
+};
+use crate::halfspace::{Bem, BemOptions};
+use crate::hertz::{HertzPointContact, PointGeometry};
+use crate::material::ElasticMaterial;
+use crate::pimp::{Pimp, PimpOptions};
+use nalgebra::{Isometry3, Point3, Unit, Vector3};
+
+/// Which model solves the normal problem.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Backend {
+    /// Hertz at the relative curvature of the contact point (closed form; the pressure is
+    /// sampled on a 32 × 32 grid for the friction integral).
+    Hertz,
+    /// PimP with these options.
+    Pimp(PimpOptions),
+    /// The coupled elastic half-space solver with these options.
+    HalfSpace(BemOptions),
+}
+
+/// Normal damping that switches on smoothly with the approach.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Damping {
+    /// Full damping coefficient c_max \[N·s/mm\], ≥ 0.
+    pub coefficient: f64,
+    /// Approach δ_c \[mm\] over which the coefficient rises from 0 to c_max, > 0.
+    pub ramp: f64,
+}
+
+/// What an element is made of.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ElementSpec {
+    /// Surface of body 1, placed in body 1's frame.
+    pub surface1: PlacedSurface,
+    /// Surface of body 2, placed in body 2's frame.
+    pub surface2: PlacedSurface,
+    /// Material of body 1.
+    pub material1: ElasticMaterial,
+    /// Material of body 2.
+    pub material2: ElasticMaterial,
+    /// Normal-contact back-end.
+    pub backend: Backend,
+    /// Friction law.
+    pub friction: FrictionLaw,
+    /// The lubricant film the friction law sees ([`FilmState::dry`] for dry friction).
+    pub film: FilmState,
+    /// Optional normal damping.
+    pub damping: Option<Damping>,
+    /// Validity limit of the approach as a fraction of the smallest relative radius of
+    /// curvature at the contact point (default 0.01).
+    pub max_approach_ratio: f64,
+}
+
+impl ElementSpec {
+    /// An element of two placed surfaces with steel bodies, the Hertz back-end, Coulomb
+    /// friction μ = 0.1, no damping and the default validity limit.
+    ///
+    /// # Errors
+    /// None today; kept fallible for the checks of [`ContactElement::new`].
+    pub fn new(surface1: PlacedSurface, surface2: PlacedSurface) -> Result<Self> {
+        Ok(ElementSpec {
+            surface1,
+            surface2,
+            material1: ElasticMaterial::STEEL,
+            material2: ElasticMaterial::STEEL,
+            backend: Backend::Hertz,
+            friction: FrictionLaw::coulomb(0.1)?,
+            film: FilmState::dry(),
+            damping: None,
+            max_approach_ratio: 0.01,
+        })
+    }
+}
+
+/// The state of the contact after an evaluation.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ContactStatus {
+    /// The bodies do not touch: zero force.
+    Separated,
+    /// In contact within the model's validity.
+    Contact,
+    /// In contact beyond the model's validity (the force is computed and flagged; see
+    /// [`ElementResult::message`]).
+    OutOfValidity,
+}
+
+/// What an evaluation returns (world frame; mm, N, N·mm, W).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ElementResult {
+    /// Contact status.
+    pub status: ContactStatus,
+    /// Signed separation \[mm\]: > 0 apart, < 0 overlapping (`−approach`).
+    pub separation: f64,
+    /// Approach δ = max(−separation, 0) \[mm\].
+    pub approach: f64,
+    /// Contact point (midpoint of the two surface points) \[mm\].
+    pub point: Point3<f64>,
+    /// Contact normal, from body 2 into body 1.
+    pub normal: Unit<Vector3<f64>>,
+    /// Elastic normal force \[N\].
+    pub normal_force: f64,
+    /// Damping force along the normal \[N\] (after the no-pull clamp of the total).
+    pub damping_force: f64,
+    /// Friction force on body 1 \[N\].
+    pub friction_force: Vector3<f64>,
+    /// Friction power \[W\], ≥ 0.
+    pub friction_power: f64,
+    /// Total force on body 1 \[N\] (normal, damping, friction); body 2 gets minus this.
+    pub force1: Vector3<f64>,
+    /// Moment on body 1 about its reference point \[N·mm\].
+    pub moment1: Vector3<f64>,
+    /// Moment on body 2 about its reference point \[N·mm\].
+    pub moment2: Vector3<f64>,
+    /// Largest pressure \[MPa\].
+    pub max_pressure: f64,
+    /// Contact area \[mm²\].
+    pub contact_area: f64,
+    /// Iterations of the back-end's solver (0 for Hertz).
+    pub iterations: usize,
+    /// Why the status is [`ContactStatus::OutOfValidity`] (empty otherwise).
+    pub message: String,
+}
+
+/// A planned contact element (see the module docs). `Send`: one element per roller can be
+/// evaluated on its own thread.
+#[derive(Debug, Clone)]
+pub struct ContactElement {
+    spec: ElementSpec,
+    law: CellLaw,
+    pimp: Option<Pimp>,
+    bem: Option<Bem>,
+    /// The last contact point in body 1's frame: the next search starts there.
+    last_point: Option<Point3<f64>>,
+}
+
+fn check_twist(name: &'static str, t: &Twist) -> Result<()> {
+    if t.is_finite() {
+        Ok(())
+    } else {
+        Err(Error::invalid(
+            name,
+            format!("{t:?}"),
+            "finite velocities in mm/s and rad/s",
+        ))
+    }
+}
+
+/// The cubic smooth step 3t² − 2t³ on [0, 1], 0 below, 1 above.
+fn smooth_step(t: f64) -> f64 {
+    let t = t.clamp(0.0, 1.0);
+    t * t * (3.0 - 2.0 * t)
+}
+
+impl ContactElement {
+    /// Plan an element.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] naming the field: the friction law and film
+    /// ([`FrictionLaw::with_film`]), `damping.coefficient` (finite, ≥ 0), `damping.ramp`
+    /// (finite, > 0), `max_approach_ratio` (finite, > 0), and the back-end's options.
+    pub fn new(spec: ElementSpec) -> Result<Self> {
+        let law = spec.friction.with_film(&spec.film)?;
+        if let Some(d) = spec.damping {
+            if !(d.coefficient.is_finite() && d.coefficient >= 0.0) {
+                return Err(Error::invalid(
+                    "damping.coefficient",
+                    d.coefficient,
+                    "a finite coefficient >= 0 N·s/mm",
+                ));
+            }
+            if !(d.ramp.is_finite() && d.ramp > 0.0) {
+                return Err(Error::invalid(
+                    "damping.ramp",
+                    d.ramp,
+                    "a finite approach > 0 mm",
+                ));
+            }
+        }
+        let r = spec.max_approach_ratio;
+        if !(r.is_finite() && r > 0.0) {
+            return Err(Error::invalid(
+                "max_approach_ratio",
+                r,
+                "a finite fraction > 0 of the smallest radius",
+            ));
+        }
+        let (m1, m2) = (spec.material1, spec.material2);
+        let (pimp, bem) = match spec.backend {
+            Backend::Hertz => (None, None),
+            Backend::Pimp(o) => (Some(Pimp::new(m1, m2, o)?), None),
+            Backend::HalfSpace(o) => (
+                None,
+                Some(Bem::new(m1, m2, o)?.with_estimate(crate::pimp::zone_estimate(m1, m2)?)),
+            ),
+        };
+        Ok(ContactElement {
+            spec,
+            law,
+            pimp,
+            bem,
+            last_point: None,
+        })
+    }
+
+    /// The element's specification.
+    pub fn spec(&self) -> &ElementSpec {
+        &self.spec
+    }
+
+    /// Forget the last contact point (the next search starts from scratch).
+    pub fn reset(&mut self) {
+        self.last_point = None;
+    }
+
+    /// Evaluate the contact at the poses `pose1`, `pose2` and twists `twist1`, `twist2` of
+    /// the two bodies (world frame; a twist is the velocity of the body's reference point,
+    /// its pose's origin, and the angular velocity).
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`]: field `pose1` / `pose2` (non-finite or a non-unit rotation),
+    /// `twist1` / `twist2` (non-finite); the contact search's and the back-end's errors
+    /// (for example a half-space solve that does not converge, [`Error::NotConverged`]).
+    pub fn evaluate(
+        &mut self,
+        pose1: &Isometry3<f64>,
+        pose2: &Isometry3<f64>,
+        twist1: &Twist,
+        twist2: &Twist,
+    ) -> Result<ElementResult> {
+        check_twist("twist1", twist1)?;
+        check_twist("twist2", twist2)?;
+        let place = |name: &'static str, pose: &Isometry3<f64>, s: &PlacedSurface| {
+            PlacedSurface::new(s.surface.clone(), pose * s.pose)
+                .map_err(|e| e.map_field(|_| name.to_string()))
+        };
+        let p1 = place("pose1", pose1, &self.spec.surface1)?;
+        let p2 = place("pose2", pose2, &self.spec.surface2)?;
+        let guess = self.last_point.map(|p| pose1 * p);
+        let contact = find_contact(&p1, &p2, guess)?;
+        self.last_point = Some(pose1.inverse_transform_point(&contact.point));
+        let zero = Vector3::zeros();
+        let separated = ElementResult {
+            status: ContactStatus::Separated,
+            separation: contact.separation,
+            approach: 0.0,
+            point: contact.point,
+            normal: contact.normal,
+            normal_force: 0.0,
+            damping_force: 0.0,
+            friction_force: zero,
+            friction_power: 0.0,
+            force1: zero,
+            moment1: zero,
+            moment2: zero,
+            max_pressure: 0.0,
+            contact_area: 0.0,
+            iterations: 0,
+            message: String::new(),
+        };
+        if !(contact.separation < 0.0) {
+            return Ok(separated);
+        }
+        let approach = -contact.separation;
+        let gap = SurfacePairGap::new(p1, p2, contact)?;
+        let frame = ContactFrame::of_gap(&gap);
+        let curvature = gap.curvature();
+        let (field, iterations): (NormalSolution<()>, usize) = match self.spec.backend {
+            Backend::Hertz => {
+                let h = HertzPointContact::new(
+                    PointGeometry::from_curvature(curvature),
+                    self.spec.material1,
+                    self.spec.material2,
+                )?
+                .solve_approach(approach)?;
+                let [a, b] = h.semi_axes;
+                let (s, c) = h.orientation.sin_cos();
+                let hx = (a * a * c * c + b * b * s * s).sqrt() * 1.05;
+                let hy = (a * a * s * s + b * b * c * c).sqrt() * 1.05;
+                (
+                    h.on_grid(Grid2::centered(hx, hy, 32, 32)?)?
+                        .map_detail(|_| ()),
+                    0,
+                )
+            }
+            Backend::Pimp(_) => {
+                let pimp = self.pimp.as_ref().ok_or_else(|| {
+                    Error::invalid(
+                        "backend",
+                        "PimP without a planned solver",
+                        "a planned element",
+                    )
+                })?;
+                let s = pimp.solve_approach(&gap, approach)?;
+                let it = s.status.iterations;
+                (s.map_detail(|_| ()), it)
+            }
+            Backend::HalfSpace(_) => {
+                let bem = self.bem.as_ref().ok_or_else(|| {
+                    Error::invalid(
+                        "backend",
+                        "half-space without a planned solver",
+                        "a planned element",
+                    )
+                })?;
+                let s = bem.solve_approach(&gap, approach)?;
+                let it = s.status.iterations;
+                (s.map_detail(|_| ()), it)
+            }
+        };
+        // The normal force of the back-end (Hertz: the closed form).
+        let normal_force = field.force;
+        let n = contact.normal.into_inner();
+        let state1 = BodyState {
+            pose: *pose1,
+            twist: *twist1,
+        };
+        let state2 = BodyState {
+            pose: *pose2,
+            twist: *twist2,
+        };
+        let pair = ContactPair {
+            body1: state1,
+            body2: state2,
+            observer: BodyState::at_rest(),
+        };
+        // Damping along the normal.
+        let v_rel = state1.velocity_at(&contact.point) - state2.velocity_at(&contact.point);
+        let approach_rate = -n.dot(&v_rel);
+        let mut damping_force = match self.spec.damping {
+            Some(d) => d.coefficient * smooth_step(approach / d.ramp) * approach_rate,
+            None => 0.0,
+        };
+        if normal_force + damping_force < 0.0 {
+            damping_force = -normal_force;
+        }
+        let mut friction = contact_friction(&field, &frame, &pair, &self.law)?;
+        // The friction integral sees the sampled field; scale it to the back-end's normal
+        // force (Hertz on 32 × 32 cells samples its force to about 1 %; the field solvers'
+        // fields carry their own force, a factor 1 to round-off).
+        let sampled = friction.grid.normal_force;
+        if sampled > 0.0 {
+            let k = normal_force / sampled;
+            friction.force *= k;
+            friction.moment *= k;
+            friction.grid.power *= k;
+        }
+        // Normal force at the centre of pressure.
+        let (s, c) = field.orientation.sin_cos();
+        let (ex, ey) = (frame.ex.into_inner(), frame.ey.into_inner());
+        let gx = ex * c + ey * s;
+        let gy = -ex * s + ey * c;
+        let [cx, cy] = field.zone.centroid;
+        let centre = frame.origin + gx * cx + gy * cy;
+        let fn_vec = n * (normal_force + damping_force);
+        let force1 = fn_vec + friction.force;
+        let o1 = Point3::from(pose1.translation.vector);
+        let o2 = Point3::from(pose2.translation.vector);
+        let moment1 = (centre - o1).cross(&fn_vec)
+            + friction.moment
+            + (friction.origin - o1).cross(&friction.force);
+        let moment2 = -(moment1 + (o1 - o2).cross(&force1));
+        let r_min = 0.5 / curvature.b_coef;
+        let limit = self.spec.max_approach_ratio * r_min;
+        let (status, message) = if approach > limit {
+            (
+                ContactStatus::OutOfValidity,
+                format!(
+                    "approach {approach:.4e} mm exceeds {:.3} × the smallest relative radius \
+                     {r_min:.4e} mm (= {limit:.4e} mm): the contact is no longer small \
+                     against the bodies",
+                    self.spec.max_approach_ratio
+                ),
+            )
+        } else {
+            (ContactStatus::Contact, String::new())
+        };
+        Ok(ElementResult {
+            status,
+            separation: contact.separation,
+            approach,
+            point: contact.point,
+            normal: contact.normal,
+            normal_force,
+            damping_force,
+            friction_force: friction.force,
+            friction_power: friction.grid.power,
+            force1,
+            moment1,
+            moment2,
+            max_pressure: field.max_pressure,
+            contact_area: field.contact_area,
+            iterations,
+            message,
+        })
+    }
+}

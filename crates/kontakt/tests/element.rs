@@ -1,0 +1,331 @@
+#![allow(clippy::unwrap_used)]
+//! The contact element (issue 12, first step): a sphere on a flat against Hertz's closed form
+//! (force, direction, moments about both reference points), separation, Coulomb friction of
+//! a sliding sphere, smooth damping, PimP and half-space back-ends against Hertz, the
+//! validity flag, continuity of the force along a fine approach sweep, a roller/rib pair
+//! from poses, bad input, and `Send`. Units: mm, N, N·mm, mm/s, rad/s, W.
+
+use kontakt::bearing::{RollerRib, RollerRibSpec};
+use kontakt::element::{Backend, ContactElement, ContactStatus, Damping, ElementSpec};
+use kontakt::friction::FrictionLaw;
+use kontakt::geometry::{Material, PlacedSurface, Surface, Twist};
+use kontakt::halfspace::BemOptions;
+use kontakt::hertz::{HertzPointContact, PointGeometry};
+use kontakt::material::ElasticMaterial;
+use kontakt::pimp::PimpOptions;
+use nalgebra::{Isometry3, Quaternion, Translation3, UnitQuaternion, Vector3};
+
+const R: f64 = 10.0;
+
+/// A ball of radius 10 mm in body 1 (centre at body 1's origin) over a flat (z = 0) in
+/// body 2.
+fn ball_on_flat() -> ElementSpec {
+    ElementSpec::new(
+        PlacedSurface::new(
+            Surface::sphere(R, Material::Inside).unwrap(),
+            Isometry3::identity(),
+        )
+        .unwrap(),
+        PlacedSurface::new(Surface::plane(Material::Inside), Isometry3::identity()).unwrap(),
+    )
+    .unwrap()
+}
+
+fn at(x: f64, y: f64, z: f64) -> Isometry3<f64> {
+    Isometry3::translation(x, y, z)
+}
+
+fn hertz_force(delta: f64) -> f64 {
+    let steel = ElasticMaterial::STEEL;
+    HertzPointContact::new(PointGeometry::sphere_on_flat(R).unwrap(), steel, steel)
+        .unwrap()
+        .force_from_approach(delta)
+        .unwrap()
+}
+
+/// Hertz back-end, ball pressed 5 µm into the flat: the normal force equals Hertz's closed
+/// form (1e-9), along +z on the ball; the moment about the ball's centre is zero (the force
+/// passes through it, 1e-9 F R); about the flat's reference point (5, 0, 0) the moment on the
+/// flat is (0, −5F, 0) (1e-9).
+#[test]
+fn ball_on_flat_matches_hertz_with_moments() {
+    let mut e = ContactElement::new(ball_on_flat()).unwrap();
+    let delta = 0.005;
+    let r = e
+        .evaluate(
+            &at(0.0, 0.0, R - delta),
+            &at(5.0, 0.0, 0.0),
+            &Twist::zero(),
+            &Twist::zero(),
+        )
+        .unwrap();
+    let f = hertz_force(delta);
+    println!(
+        "F = {:.9} N (Hertz {f:.9}), approach {:.3e}",
+        r.normal_force, r.approach
+    );
+    assert_eq!(r.status, ContactStatus::Contact);
+    assert!((r.approach - delta).abs() < 1e-12);
+    assert!((r.normal_force - f).abs() < 1e-9 * f);
+    assert!((r.force1 - Vector3::new(0.0, 0.0, f)).norm() < 1e-9 * f);
+    assert!(r.moment1.norm() < 1e-9 * f * R, "{:?}", r.moment1);
+    assert!((r.moment2 - Vector3::new(0.0, -5.0 * f, 0.0)).norm() < 1e-9 * f * 5.0);
+    assert!((r.normal.z - 1.0).abs() < 1e-12);
+}
+
+/// Apart: zero force, status separated, the separation reported.
+#[test]
+fn separated_bodies_give_zero_force() {
+    let mut e = ContactElement::new(ball_on_flat()).unwrap();
+    let r = e
+        .evaluate(
+            &at(0.0, 0.0, R + 0.2),
+            &Isometry3::identity(),
+            &Twist::zero(),
+            &Twist::zero(),
+        )
+        .unwrap();
+    assert_eq!(r.status, ContactStatus::Separated);
+    assert!((r.separation - 0.2).abs() < 1e-12);
+    assert_eq!(r.force1, Vector3::zeros());
+    assert_eq!(r.moment1, Vector3::zeros());
+}
+
+/// The ball slides along +x at 100 mm/s without rolling: Coulomb friction −μ F x̂ with the
+/// regularisation factor v/√(v² + v_ε²) (v_ε = 1 mm/s), power μ F v × that factor / 1000 W;
+/// the friction moment about the ball's centre is (F_t R) about +y... with sign: the force
+/// −x at the bottom point (0, 0, −R) gives r × F = (0, 0, −R) × (−F_t, 0, 0) = (0, R F_t, 0).
+/// Tolerance 1e-9 relative.
+#[test]
+fn sliding_ball_gets_coulomb_friction() {
+    let mut e = ContactElement::new(ball_on_flat()).unwrap();
+    let delta = 0.004;
+    let v = 100.0;
+    let r = e
+        .evaluate(
+            &at(0.0, 0.0, R - delta),
+            &Isometry3::identity(),
+            &Twist::new(Vector3::new(v, 0.0, 0.0), Vector3::zeros()),
+            &Twist::zero(),
+        )
+        .unwrap();
+    let f = r.normal_force;
+    let reg = v / (v * v + 1.0).sqrt();
+    let ft = 0.1 * f * reg;
+    println!("F_t = {:?}, expected {ft:.9}", r.friction_force);
+    assert!((r.friction_force - Vector3::new(-ft, 0.0, 0.0)).norm() < 1e-9 * ft);
+    assert!((r.friction_power - ft * v * 1e-3).abs() < 1e-9 * ft * v * 1e-3);
+    // Moment about the centre: the friction acts at the contact (z ≈ −R + δ/2).
+    let arm = R - delta / 2.0;
+    assert!(
+        (r.moment1.y - arm * ft).abs() < 1e-6 * arm * ft,
+        "{:?}",
+        r.moment1
+    );
+}
+
+/// Damping switches on smoothly: zero at first touch, c_max δ̇ beyond the ramp; the total
+/// never pulls.
+#[test]
+fn damping_switches_on_smoothly() {
+    let mut spec = ball_on_flat();
+    spec.damping = Some(Damping {
+        coefficient: 2.0,
+        ramp: 0.002,
+    });
+    let mut e = ContactElement::new(spec).unwrap();
+    let approaching = Twist::new(Vector3::new(0.0, 0.0, -10.0), Vector3::zeros());
+    let eval = |e: &mut ContactElement, delta: f64, t: &Twist| {
+        e.evaluate(
+            &at(0.0, 0.0, R - delta),
+            &Isometry3::identity(),
+            t,
+            &Twist::zero(),
+        )
+        .unwrap()
+    };
+    let deep = eval(&mut e, 0.004, &approaching);
+    assert!((deep.damping_force - 2.0 * 10.0).abs() < 1e-12);
+    let mid = eval(&mut e, 0.001, &approaching);
+    // s(1/2) = 1/2; the approach R − (R − δ) carries a rounding of 1e-16 mm.
+    assert!((mid.damping_force - 2.0 * 0.5 * 10.0).abs() < 1e-9);
+    let touch = eval(&mut e, 1e-9, &approaching);
+    assert!(touch.damping_force.abs() < 1e-9, "{}", touch.damping_force);
+    // Leaving fast: the damping would pull; the total is clamped at zero.
+    let leaving = Twist::new(Vector3::new(0.0, 0.0, 1e6), Vector3::zeros());
+    let l = eval(&mut e, 0.004, &leaving);
+    assert!((l.normal_force + l.damping_force).abs() < 1e-9 * l.normal_force);
+}
+
+/// The field back-ends on the ball: PimP (corrected) within 0.5 % of Hertz's force, the
+/// half-space solver within 2 % (its grid).
+#[test]
+fn field_backends_agree_with_hertz_on_a_ball() {
+    let delta = 0.005;
+    let f = hertz_force(delta);
+    for (backend, tol) in [
+        (Backend::Pimp(PimpOptions::default()), 5e-3),
+        (Backend::HalfSpace(BemOptions::default()), 2e-2),
+    ] {
+        let mut spec = ball_on_flat();
+        spec.backend = backend;
+        let mut e = ContactElement::new(spec).unwrap();
+        let r = e
+            .evaluate(
+                &at(0.0, 0.0, R - delta),
+                &Isometry3::identity(),
+                &Twist::zero(),
+                &Twist::zero(),
+            )
+            .unwrap();
+        println!("{backend:?}: F = {:.4} N vs Hertz {f:.4}", r.normal_force);
+        assert!((r.normal_force / f - 1.0).abs() < tol);
+        assert!(r.moment1.norm() < 1e-6 * f * R);
+    }
+}
+
+/// Beyond the validity limit (approach > 1 % of the radius) the status says so with a
+/// message; the force is still the model's (continuous for the integrator).
+#[test]
+fn deep_overlap_is_flagged() {
+    let mut e = ContactElement::new(ball_on_flat()).unwrap();
+    let r = e
+        .evaluate(
+            &at(0.0, 0.0, R - 0.2),
+            &Isometry3::identity(),
+            &Twist::zero(),
+            &Twist::zero(),
+        )
+        .unwrap();
+    assert_eq!(r.status, ContactStatus::OutOfValidity);
+    assert!(r.message.contains("exceeds"), "{}", r.message);
+    assert!((r.normal_force - hertz_force(0.2)).abs() < 1e-9 * r.normal_force);
+}
+
+/// Continuity along a fine approach sweep from 1 µm (Hertz: 2000 steps of 2.5 nm; PimP, in
+/// the debug build of the tests: 300 steps of 2.5 nm): the second difference of the force
+/// is below 1e-4 of the force everywhere. The smooth law F ∝ δ^1.5 alone gives
+/// 0.75 (h/δ)² = 4.7e-6; a jump of 1e-4 F (e.g. at a grid resize) would show as a spike.
+#[test]
+fn force_is_continuous_along_a_fine_sweep() {
+    for (backend, steps) in [
+        (Backend::Hertz, 2000),
+        (Backend::Pimp(PimpOptions::default()), 300),
+    ] {
+        let mut spec = ball_on_flat();
+        spec.backend = backend;
+        let mut e = ContactElement::new(spec).unwrap();
+        let forces: Vec<f64> = (0..steps)
+            .map(|i| {
+                let delta = 0.001 + i as f64 * 2.5e-6;
+                e.evaluate(
+                    &at(0.0, 0.0, R - delta),
+                    &Isometry3::identity(),
+                    &Twist::zero(),
+                    &Twist::zero(),
+                )
+                .unwrap()
+                .normal_force
+            })
+            .collect();
+        let worst = forces
+            .windows(3)
+            .map(|w| (w[2] - 2.0 * w[1] + w[0]).abs() / w[1])
+            .fold(0.0, f64::max);
+        println!("{backend:?}: largest second difference / F = {worst:.3e}");
+        assert!(worst < 1e-4, "{worst}");
+    }
+}
+
+/// The roller end face against the rib from poses: the reference placement of the
+/// torus/torus pairing, the roller moved 4 µm along the contact normal into the rib gives
+/// PimP's force at that approach, directed along the normal (the friction is zero at rest).
+#[test]
+fn roller_rib_from_poses() {
+    let rr = RollerRib::new(RollerRibSpec::builtin("torus-torus-14").unwrap()).unwrap();
+    let mut spec = ElementSpec::new(rr.face.clone(), rr.rib.clone()).unwrap();
+    spec.backend = Backend::Pimp(PimpOptions::default());
+    let mut e = ContactElement::new(spec).unwrap();
+    let n = rr.contact.normal.into_inner();
+    let delta = 0.004;
+    let shift = Isometry3::from_parts(Translation3::from(-n * delta), UnitQuaternion::identity());
+    let r = e
+        .evaluate(
+            &shift,
+            &Isometry3::identity(),
+            &Twist::zero(),
+            &Twist::zero(),
+        )
+        .unwrap();
+    println!(
+        "roller/rib: F = {:.3} N, p_max = {:.1} MPa",
+        r.normal_force, r.max_pressure
+    );
+    assert_eq!(r.status, ContactStatus::Contact);
+    assert!((r.approach - delta).abs() < 1e-9);
+    assert!(r.normal_force > 100.0 && r.normal_force < 1000.0);
+    assert!((r.force1.normalize() - n).norm() < 1e-9);
+}
+
+/// Bad input: NaN pose, non-unit rotation, NaN twist, bad damping and validity; each error
+/// names its field.
+#[test]
+fn bad_input_names_the_field() {
+    let mut e = ContactElement::new(ball_on_flat()).unwrap();
+    let field = |r: kontakt::error::Result<kontakt::element::ElementResult>| {
+        r.unwrap_err().field().unwrap().to_string()
+    };
+    let id = Isometry3::identity();
+    let z = Twist::zero();
+    assert_eq!(
+        field(e.evaluate(&at(f64::NAN, 0.0, R), &id, &z, &z)),
+        "pose1"
+    );
+    let skew = Isometry3::from_parts(
+        Translation3::new(0.0, 0.0, 0.0),
+        UnitQuaternion::new_unchecked(Quaternion::new(2.0, 0.0, 0.0, 0.0)),
+    );
+    assert_eq!(field(e.evaluate(&at(0.0, 0.0, R), &skew, &z, &z)), "pose2");
+    let nan = Twist::new(Vector3::new(f64::NAN, 0.0, 0.0), Vector3::zeros());
+    assert_eq!(field(e.evaluate(&at(0.0, 0.0, R), &id, &nan, &z)), "twist1");
+    assert_eq!(field(e.evaluate(&at(0.0, 0.0, R), &id, &z, &nan)), "twist2");
+    let mut spec = ball_on_flat();
+    spec.damping = Some(Damping {
+        coefficient: -1.0,
+        ramp: 0.001,
+    });
+    assert_eq!(
+        ContactElement::new(spec.clone()).unwrap_err().field(),
+        Some("damping.coefficient")
+    );
+    spec.damping = Some(Damping {
+        coefficient: 1.0,
+        ramp: 0.0,
+    });
+    assert_eq!(
+        ContactElement::new(spec.clone()).unwrap_err().field(),
+        Some("damping.ramp")
+    );
+    spec.damping = None;
+    spec.max_approach_ratio = f64::NAN;
+    assert_eq!(
+        ContactElement::new(spec.clone()).unwrap_err().field(),
+        Some("max_approach_ratio")
+    );
+    spec.max_approach_ratio = 0.01;
+    spec.friction = FrictionLaw {
+        boundary_coefficient: 2.0,
+        ..FrictionLaw::coulomb(0.1).unwrap()
+    };
+    assert_eq!(
+        ContactElement::new(spec).unwrap_err().field(),
+        Some("boundary_coefficient")
+    );
+}
+
+/// An element can move to another thread (one element per roller, many threads).
+#[test]
+fn element_is_send() {
+    fn send<T: Send>() {}
+    send::<ContactElement>();
+}
