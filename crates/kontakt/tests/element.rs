@@ -329,3 +329,62 @@ fn element_is_send() {
     fn send<T: Send>() {}
     send::<ContactElement>();
 }
+
+/// A dynamic check: a steel ball (R = 10 mm, 32.9 g) pressed onto the flat by a constant
+/// 200 N, released from the unloaded Hertz position at rest (δ = 0), oscillates about the
+/// equilibrium without damping; velocity Verlet with 200 steps per period over 100
+/// oscillations conserves the energy ½ m v² + (2/5) F(δ) δ − F₀ δ to 1e-3 of the oscillation
+/// energy (the Hertz back-end: the force from the element, the potential from Hertz's
+/// F ∝ δ^1.5). A force with jumps or a wrong direction would pump or drain energy.
+#[test]
+fn undamped_oscillation_conserves_energy() {
+    let mut e = ContactElement::new(ball_on_flat()).unwrap();
+    let mass = 7850e-9 * 4.0 / 3.0 * std::f64::consts::PI * R.powi(3); // kg
+    let f0 = 200.0; // N, pressing the ball onto the flat
+    let id = Isometry3::identity();
+    let force = |e: &mut ContactElement, z: f64| {
+        e.evaluate(&at(0.0, 0.0, R - z), &id, &Twist::zero(), &Twist::zero())
+            .unwrap()
+            .force1
+            .z
+    };
+    // δ = z (penetration); acceleration of δ: (F₀ − F(δ)) / m, in mm/s² (N/kg = 1e3 mm/s²).
+    let acc = |f: f64| (f0 - f) / mass * 1e3;
+    let steel = ElasticMaterial::STEEL;
+    let hertz =
+        HertzPointContact::new(PointGeometry::sphere_on_flat(R).unwrap(), steel, steel).unwrap();
+    let d_eq = hertz.approach_from_force(f0).unwrap();
+    let k = 1.5 * f0 / d_eq; // N/mm
+    let period = 2.0 * std::f64::consts::PI * (mass / (k * 1e3)).sqrt(); // s
+    let dt = period / 200.0;
+    // Energy in N·mm: kinetic ½ m v² [kg mm²/s²] × 1e-3.
+    let energy = |d: f64, v: f64| {
+        let f = if d > 0.0 {
+            hertz.force_from_approach(d).unwrap()
+        } else {
+            0.0
+        };
+        0.5 * mass * v * v * 1e-3 + 0.4 * f * d - f0 * d
+    };
+    let (mut d, mut v) = (0.0, 0.0);
+    let mut a = acc(0.0);
+    let e0 = energy(d, v);
+    let mut worst: f64 = 0.0;
+    let mut kinetic_max: f64 = 0.0;
+    for _ in 0..(200 * 100) {
+        d += v * dt + 0.5 * a * dt * dt;
+        let a_new = acc(if d > 0.0 { force(&mut e, d) } else { 0.0 });
+        v += 0.5 * (a + a_new) * dt;
+        a = a_new;
+        worst = worst.max((energy(d, v) - e0).abs());
+        kinetic_max = kinetic_max.max(0.5 * mass * v * v * 1e-3);
+    }
+    println!(
+        "period {:.3e} s, max energy error {worst:.3e} N·mm of kinetic max {kinetic_max:.3e} N·mm",
+        period
+    );
+    assert!(
+        kinetic_max > 0.0 && worst < 1e-3 * kinetic_max,
+        "{worst} vs {kinetic_max}"
+    );
+}
