@@ -388,3 +388,30 @@ fn undamped_oscillation_conserves_energy() {
         "{worst} vs {kinetic_max}"
     );
 }
+
+/// Pure spin of the ball about the contact normal (ω = 50 rad/s, μ = 0.1, exact Coulomb):
+/// the friction moment about the normal is −(3π/16) μ F a in full slip (μ ∫ p r dA over the
+/// Hertz circle, a the contact radius: the lever arm 3πa/16 of docs/friction.md §4.2 at
+/// e = 0). The Hertz back-end samples the pressure on a grid (its cell count is stated in
+/// docs/mbs.md), tolerance 1 %; the friction force vanishes by symmetry.
+#[test]
+fn spinning_ball_friction_moment() {
+    let mut spec = ball_on_flat();
+    // Exact Coulomb: spin slip speeds near the centre are below any regularisation speed.
+    spec.friction.regularisation_speed = 0.0;
+    let mut e = ContactElement::new(spec).unwrap();
+    let delta = 0.005;
+    let r = e
+        .evaluate(
+            &at(0.0, 0.0, R - delta),
+            &Isometry3::identity(),
+            &Twist::new(Vector3::zeros(), Vector3::new(0.0, 0.0, 50.0)),
+            &Twist::zero(),
+        )
+        .unwrap();
+    let a = (R * delta).sqrt();
+    let exact = -3.0 * std::f64::consts::PI / 16.0 * 0.1 * r.normal_force * a;
+    println!("spin moment {:.6} N·mm, exact {exact:.6} N·mm", r.moment1.z);
+    assert!((r.moment1.z / exact - 1.0).abs() < 1e-2);
+    assert!(r.friction_force.norm() < 1e-9 * r.normal_force);
+}

@@ -20,7 +20,7 @@
 //!    [`find_contact`], started from the last call's point.
 //! 2. Separated (`separation > 0`): zero force, status [`ContactStatus::Separated`].
 //! 3. The normal problem at the approach `δ` by the back-end: Hertz at the contact point's
-//!    relative curvature (pressure sampled on a 32 × 32 grid for the friction integral),
+//!    relative curvature (pressure sampled on 16 × 16 cells for the friction integral: the spin moment of a ball to 0.3 %),
 //!    PimP, or the coupled half-space solver, on the gap of the two placed surfaces.
 //! 4. Friction: [`crate::friction::contact_friction`] of the law over the pressure field with
 //!    the sliding field of the two twists.
@@ -36,7 +36,7 @@
 
 use crate::error::{Error, Result};
 use crate::field::NormalSolution;
-use crate::friction::{CellLaw, FilmState, FrictionLaw, contact_friction};
+use crate::friction::{CellLaw, FilmState, FrictionLaw, grid_friction};
 use crate::gap::{GapSource, SurfacePairGap};
 use crate::geometry::{
     BodyState, ContactFrame, ContactPair, Grid2, PlacedSurface, Twist, find_contact,
@@ -51,7 +51,7 @@ use nalgebra::{Isometry3, Point3, Unit, Vector3};
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Backend {
     /// Hertz at the relative curvature of the contact point (closed form; the pressure is
-    /// sampled on a 32 × 32 grid for the friction integral).
+    /// sampled on 16 × 16 cells for the friction integral).
     Hertz,
     /// PimP with these options.
     Pimp(PimpOptions),
@@ -172,6 +172,25 @@ pub struct ContactElement {
     bem: Option<Bem>,
     /// The last contact point in body 1's frame: the next search starts there.
     last_point: Option<Point3<f64>>,
+    /// The Hertz back-end's pressure samples (allocated once).
+    hertz_pressure: Vec<f64>,
+}
+
+/// Cells a side of the Hertz back-end's pressure samples for the friction integral.
+const HERTZ_CELLS: usize = 16;
+
+/// The normal solution as the rest of an evaluation needs it, whichever back-end gave it.
+struct FieldView<'a> {
+    grid: Grid2,
+    pressure: &'a [f64],
+    /// Angle of the grid's x axis from the gap frame's x axis \[rad\].
+    orientation: f64,
+    /// Centre of pressure in the grid frame \[mm\].
+    centroid: [f64; 2],
+    force: f64,
+    max_pressure: f64,
+    contact_area: f64,
+    iterations: usize,
 }
 
 fn check_twist(name: &'static str, t: &Twist) -> Result<()> {
@@ -240,6 +259,7 @@ impl ContactElement {
             pimp,
             bem,
             last_point: None,
+            hertz_pressure: vec![0.0; HERTZ_CELLS * HERTZ_CELLS],
         })
     }
 
@@ -305,8 +325,12 @@ impl ContactElement {
         let gap = SurfacePairGap::new(p1, p2, contact)?;
         let frame = ContactFrame::of_gap(&gap);
         let curvature = gap.curvature();
-        let (field, iterations): (NormalSolution<()>, usize) = match self.spec.backend {
+        // The field solvers' results live here while the view borrows them.
+        let solved: NormalSolution<()>;
+        let field = match self.spec.backend {
             Backend::Hertz => {
+                // Closed form, sampled into the element's buffer for the friction integral
+                // (no allocation); the grid lies in the gap frame, the ellipse turned in it.
                 let h = HertzPointContact::new(
                     PointGeometry::from_curvature(curvature),
                     self.spec.material1,
@@ -317,39 +341,46 @@ impl ContactElement {
                 let (s, c) = h.orientation.sin_cos();
                 let hx = (a * a * c * c + b * b * s * s).sqrt() * 1.05;
                 let hy = (a * a * s * s + b * b * c * c).sqrt() * 1.05;
-                (
-                    h.on_grid(Grid2::centered(hx, hy, 32, 32)?)?
-                        .map_detail(|_| ()),
-                    0,
-                )
+                let grid = Grid2::centered(hx, hy, HERTZ_CELLS, HERTZ_CELLS)?;
+                h.sample_pressure_into(&grid, &mut self.hertz_pressure)?;
+                FieldView {
+                    grid,
+                    pressure: &self.hertz_pressure,
+                    orientation: 0.0,
+                    centroid: [0.0, 0.0],
+                    force: h.force,
+                    max_pressure: h.max_pressure,
+                    contact_area: h.contact_area,
+                    iterations: 0,
+                }
             }
-            Backend::Pimp(_) => {
-                let pimp = self.pimp.as_ref().ok_or_else(|| {
-                    Error::invalid(
-                        "backend",
-                        "PimP without a planned solver",
-                        "a planned element",
-                    )
-                })?;
-                let s = pimp.solve_approach(&gap, approach)?;
-                let it = s.status.iterations;
-                (s.map_detail(|_| ()), it)
-            }
-            Backend::HalfSpace(_) => {
-                let bem = self.bem.as_ref().ok_or_else(|| {
-                    Error::invalid(
-                        "backend",
-                        "half-space without a planned solver",
-                        "a planned element",
-                    )
-                })?;
-                let s = bem.solve_approach(&gap, approach)?;
-                let it = s.status.iterations;
-                (s.map_detail(|_| ()), it)
+            Backend::Pimp(_) | Backend::HalfSpace(_) => {
+                solved = match (&self.pimp, &self.bem) {
+                    (Some(pimp), _) => pimp.solve_approach(&gap, approach)?.map_detail(|_| ()),
+                    (None, Some(bem)) => bem.solve_approach(&gap, approach)?.map_detail(|_| ()),
+                    (None, None) => {
+                        return Err(Error::invalid(
+                            "backend",
+                            "a field back-end without a planned solver",
+                            "an element planned by ContactElement::new",
+                        ));
+                    }
+                };
+                FieldView {
+                    grid: solved.grid,
+                    pressure: &solved.pressure,
+                    orientation: solved.orientation,
+                    centroid: solved.zone.centroid,
+                    force: solved.force,
+                    max_pressure: solved.max_pressure,
+                    contact_area: solved.contact_area,
+                    iterations: solved.status.iterations,
+                }
             }
         };
         // The normal force of the back-end (Hertz: the closed form).
         let normal_force = field.force;
+        let iterations = field.iterations;
         let n = contact.normal.into_inner();
         let state1 = BodyState {
             pose: *pose1,
@@ -374,31 +405,35 @@ impl ContactElement {
         if normal_force + damping_force < 0.0 {
             damping_force = -normal_force;
         }
-        let mut friction = contact_friction(&field, &frame, &pair, &self.law)?;
-        // The friction integral sees the sampled field; scale it to the back-end's normal
-        // force (Hertz on 32 × 32 cells samples its force to about 1 %; the field solvers'
-        // fields carry their own force, a factor 1 to round-off).
-        let sampled = friction.grid.normal_force;
-        if sampled > 0.0 {
-            let k = normal_force / sampled;
-            friction.force *= k;
-            friction.moment *= k;
-            friction.grid.power *= k;
-        }
-        // Normal force at the centre of pressure.
+        // The friction integral over the sampled field, in the grid frame.
         let (s, c) = field.orientation.sin_cos();
         let (ex, ey) = (frame.ex.into_inner(), frame.ey.into_inner());
         let gx = ex * c + ey * s;
         let gy = -ex * s + ey * c;
-        let [cx, cy] = field.zone.centroid;
+        let sliding = pair.velocity_field(&frame, field.orientation)?;
+        let mut sums = grid_friction(&field.grid, field.pressure, &sliding, &self.law)?;
+        // Scale the sums to the back-end's normal force (Hertz on 16 × 16 cells samples its
+        // force to about 1 %; the field solvers' fields carry their own force, a factor 1 to
+        // round-off).
+        if sums.normal_force > 0.0 {
+            let k = normal_force / sums.normal_force;
+            sums.force = sums.force.map(|f| f * k);
+            sums.moment *= k;
+            sums.power *= k;
+        }
+        let friction_force = gx * sums.force[0] + gy * sums.force[1];
+        // Moment of the friction about the grid origin (the contact point), along n.
+        let friction_moment = n * sums.moment;
+        // Normal force at the centre of pressure.
+        let [cx, cy] = field.centroid;
         let centre = frame.origin + gx * cx + gy * cy;
         let fn_vec = n * (normal_force + damping_force);
-        let force1 = fn_vec + friction.force;
+        let force1 = fn_vec + friction_force;
         let o1 = Point3::from(pose1.translation.vector);
         let o2 = Point3::from(pose2.translation.vector);
         let moment1 = (centre - o1).cross(&fn_vec)
-            + friction.moment
-            + (friction.origin - o1).cross(&friction.force);
+            + friction_moment
+            + (frame.origin - o1).cross(&friction_force);
         let moment2 = -(moment1 + (o1 - o2).cross(&force1));
         let r_min = 0.5 / curvature.b_coef;
         let limit = self.spec.max_approach_ratio * r_min;
@@ -423,8 +458,8 @@ impl ContactElement {
             normal: contact.normal,
             normal_force,
             damping_force,
-            friction_force: friction.force,
-            friction_power: friction.grid.power,
+            friction_force,
+            friction_power: sums.power,
             force1,
             moment1,
             moment2,
