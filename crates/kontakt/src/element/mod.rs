@@ -45,7 +45,7 @@ use crate::halfspace::{Bem, BemOptions};
 use crate::hertz::{HertzPointContact, PointGeometry};
 use crate::material::ElasticMaterial;
 use crate::pimp::{Pimp, PimpOptions};
-use nalgebra::{Isometry3, Point3, Unit, Vector3};
+use nalgebra::{Isometry3, Matrix6, Point3, Unit, UnitQuaternion, Vector3};
 
 /// Which model solves the normal problem.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -266,6 +266,67 @@ impl ContactElement {
     /// The element's specification.
     pub fn spec(&self) -> &ElementSpec {
         &self.spec
+    }
+
+    /// The stiffness of the contact with respect to body 1's pose: the 6 × 6 matrix
+    /// `∂(F₁, M₁)/∂(x₁, θ₁)` (rows: force \[N\] and moment about body 1's reference point
+    /// \[N·mm\], world axes; columns: translations of body 1 \[mm\] along the world axes and
+    /// small rotations \[rad\] about world axes through its reference point), by central
+    /// differences with the steps `step_translation` \[mm\] and `step_rotation` \[rad\]:
+    /// column j = (r(q + h e_j) − r(q − h e_j)) / 2h, error O(h²). Body 2 held at `pose2`,
+    /// both twists fixed (damping enters through the approach). By the action-reaction of
+    /// the pair, body 2's block is the same with the signs and the moment point changed.
+    /// Steps of 1e-3 of the approach (translation) and of the approach over the contact width
+    /// (rotation) are a good start.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] (fields `step_translation`, `step_rotation`) for non-finite or
+    /// non-positive steps; those of [`ContactElement::evaluate`].
+    pub fn stiffness(
+        &mut self,
+        pose1: &Isometry3<f64>,
+        pose2: &Isometry3<f64>,
+        twist1: &Twist,
+        twist2: &Twist,
+        step_translation: f64,
+        step_rotation: f64,
+    ) -> Result<Matrix6<f64>> {
+        for (name, h) in [
+            ("step_translation", step_translation),
+            ("step_rotation", step_rotation),
+        ] {
+            if !(h.is_finite() && h > 0.0) {
+                return Err(Error::invalid(name, h, "a finite step > 0"));
+            }
+        }
+        let mut k = Matrix6::zeros();
+        for j in 0..6 {
+            let mut column = [[0.0; 6]; 2];
+            for (side, sign) in [(0, 1.0), (1, -1.0)] {
+                let mut p = *pose1;
+                if j < 3 {
+                    p.translation.vector[j] += sign * step_translation;
+                } else {
+                    let mut axis = Vector3::zeros();
+                    axis[j - 3] = sign * step_rotation;
+                    p.rotation = UnitQuaternion::from_scaled_axis(axis) * p.rotation;
+                }
+                let r = self.evaluate(&p, pose2, twist1, twist2)?;
+                for i in 0..3 {
+                    column[side][i] = r.force1[i];
+                    column[side][i + 3] = r.moment1[i];
+                }
+            }
+            let h = if j < 3 {
+                step_translation
+            } else {
+                step_rotation
+            };
+            for i in 0..6 {
+                k[(i, j)] = (column[0][i] - column[1][i]) / (2.0 * h);
+            }
+        }
+        Ok(k)
     }
 
     /// Forget the last contact point (the next search starts from scratch).
