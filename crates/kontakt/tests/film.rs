@@ -6,43 +6,12 @@
 //! No published worked example (printed inputs and printed film thickness) could be
 //! retrieved in this work (see `docs/film.md` §6); the checks against the literature are
 //! therefore against the printed formula itself, not against a printed number.
-// The allocation-counting global allocator below needs `unsafe impl GlobalAlloc`; it only
-// forwards to the system allocator and counts calls per thread.
-#![allow(unsafe_code)]
-
-use std::alloc::{GlobalAlloc, Layout, System};
-use std::cell::Cell;
 
 use kontakt::error::Error;
 use kontakt::lubrication::{FilmContact, FilmFormula, FilmThickness, film_thickness};
 
-struct CountingAllocator;
-
-thread_local! {
-    static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
-}
-
-// SAFETY: forwards every call unchanged to `System`; the counter is a const-initialised
-// thread-local `Cell` without destructor, which does not allocate.
-unsafe impl GlobalAlloc for CountingAllocator {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        ALLOCATIONS.with(|c| c.set(c.get() + 1));
-        // SAFETY: same contract as the caller's.
-        unsafe { System.alloc(layout) }
-    }
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        // SAFETY: same contract as the caller's.
-        unsafe { System.dealloc(ptr, layout) }
-    }
-    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
-        ALLOCATIONS.with(|c| c.set(c.get() + 1));
-        // SAFETY: same contract as the caller's.
-        unsafe { System.realloc(ptr, layout, new_size) }
-    }
-}
-
-#[global_allocator]
-static GLOBAL: CountingAllocator = CountingAllocator;
+#[path = "support/counting_alloc.rs"]
+mod counting_alloc;
 
 const HD: FilmFormula = FilmFormula::HamrockDowson;
 const CH: FilmFormula = FilmFormula::Chittenden;
@@ -571,23 +540,21 @@ fn film_thickness_does_not_allocate() {
             ..ball_race()
         },
     ];
-    let before = ALLOCATIONS.with(Cell::get);
-    for c in &contacts {
-        std::hint::black_box(film_thickness(c, ETA, ALPHA, HD).unwrap());
-        std::hint::black_box(film_thickness(c, ETA, ALPHA, CH).unwrap());
-    }
-    let ok_calls = ALLOCATIONS.with(Cell::get) - before;
+    let ((), ok_calls) = counting_alloc::allocations(|| {
+        for c in &contacts {
+            std::hint::black_box(film_thickness(c, ETA, ALPHA, HD).unwrap());
+            std::hint::black_box(film_thickness(c, ETA, ALPHA, CH).unwrap());
+        }
+    });
     println!("allocations in 6 successful calls (both formulas): {ok_calls} (expected 0)");
     assert_eq!(ok_calls, 0);
-    let before = ALLOCATIONS.with(Cell::get);
-    let lines = film_thickness(&contacts[1], ETA, ALPHA, HD)
-        .unwrap()
-        .warning_lines();
+    let (lines, n) = counting_alloc::allocations(|| {
+        film_thickness(&contacts[1], ETA, ALPHA, HD)
+            .unwrap()
+            .warning_lines()
+    });
     assert!(!lines.is_empty());
-    assert!(
-        ALLOCATIONS.with(Cell::get) > before,
-        "the counter must see allocations"
-    );
+    assert!(n > 0, "the counter must see allocations");
 }
 
 fn chittenden(c: &FilmContact) -> FilmThickness {

@@ -2,13 +2,7 @@
 //! (`contact_friction`, Coulomb and the mixed law), the power density into a caller's
 //! buffer, and the whole-bearing evaluation at one speed on a solved contact
 //! (`RibFrictionModel::friction_on`: kinematics, loads, film, integral, totals).
-// The allocation-counting global allocator below needs `unsafe impl GlobalAlloc`; it only
-// forwards to the system allocator and counts calls per thread.
-#![allow(unsafe_code)]
 #![allow(clippy::unwrap_used)]
-
-use std::alloc::{GlobalAlloc, Layout, System};
-use std::cell::Cell;
 
 use kontakt::bearing::{
     Operating, PressureModel, RibFrictionModel, RibLubrication, RollerRibSpec, RollerSet,
@@ -17,39 +11,10 @@ use kontakt::bearing::{
 use kontakt::friction::{FrictionLaw, contact_friction, power_density};
 use kontakt::lubrication::{FilmFormula, Lubricant};
 
-struct CountingAllocator;
+#[path = "support/counting_alloc.rs"]
+mod counting_alloc;
 
-thread_local! {
-    static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
-}
-
-// SAFETY: forwards every call unchanged to `System`; the counter is a const-initialised
-// thread-local `Cell` without destructor, which does not allocate.
-unsafe impl GlobalAlloc for CountingAllocator {
-    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
-        ALLOCATIONS.with(|c| c.set(c.get() + 1));
-        // SAFETY: same contract as the caller's.
-        unsafe { System.alloc(layout) }
-    }
-    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
-        // SAFETY: same contract as the caller's.
-        unsafe { System.dealloc(ptr, layout) }
-    }
-    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
-        ALLOCATIONS.with(|c| c.set(c.get() + 1));
-        // SAFETY: same contract as the caller's.
-        unsafe { System.realloc(ptr, layout, new_size) }
-    }
-}
-
-#[global_allocator]
-static GLOBAL: CountingAllocator = CountingAllocator;
-
-fn allocations<T>(f: impl FnOnce() -> T) -> (T, usize) {
-    let before = ALLOCATIONS.with(Cell::get);
-    let out = f();
-    (out, ALLOCATIONS.with(Cell::get) - before)
-}
+use counting_alloc::allocations;
 
 #[test]
 fn friction_hot_paths_do_not_allocate() {

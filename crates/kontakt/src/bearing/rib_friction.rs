@@ -80,7 +80,7 @@ use crate::error::{Error, Result};
 use crate::field::NormalSolution;
 use crate::friction::{ContactFriction, FilmState, FrictionLaw, contact_friction};
 use crate::gap::{GapSource, SurfacePairGap};
-use crate::geometry::{ContactFrame, Grid2};
+use crate::geometry::ContactFrame;
 use crate::halfspace::{Bem, BemOptions};
 use crate::hertz::{HertzPointContact, PointGeometry};
 use crate::lubrication::{
@@ -528,11 +528,7 @@ impl RibFrictionModel {
         Ok(match model {
             PressureModel::Hertz => {
                 let h = self.hertz.solve_force(rib_load)?;
-                let [a, b] = h.semi_axes;
-                let (s, c) = h.orientation.sin_cos();
-                let hx = (a * a * c * c + b * b * s * s).sqrt() * 1.05;
-                let hy = (a * a * s * s + b * b * c * c).sqrt() * 1.05;
-                h.on_grid(Grid2::centered(hx, hy, 64, 64)?)?
+                h.on_grid(h.covering_grid(64, 64, 0.05)?)?
                     .map_detail(|_| ())
             }
             PressureModel::Pimp => self

@@ -398,11 +398,7 @@ impl ContactElement {
                     self.spec.material2,
                 )?
                 .solve_approach(approach)?;
-                let [a, b] = h.semi_axes;
-                let (s, c) = h.orientation.sin_cos();
-                let hx = (a * a * c * c + b * b * s * s).sqrt() * 1.05;
-                let hy = (a * a * s * s + b * b * c * c).sqrt() * 1.05;
-                let grid = Grid2::centered(hx, hy, HERTZ_CELLS, HERTZ_CELLS)?;
+                let grid = h.covering_grid(HERTZ_CELLS, HERTZ_CELLS, 0.05)?;
                 h.sample_pressure_into(&grid, &mut self.hertz_pressure)?;
                 FieldView {
                     grid,

@@ -365,6 +365,25 @@ impl HertzPointSolution {
         })
     }
 
+    /// A grid of `nx × ny` cells in the contact frame that covers the ellipse (turned by
+    /// its orientation) with a margin of `margin` (e.g. 0.05 for 5 %) on each side: the
+    /// half-extents of its bounding box, `√(a² cos²θ + b² sin²θ)` and
+    /// `√(a² sin²θ + b² cos²θ)`, times `1 + margin`.
+    ///
+    /// # Errors
+    /// Those of [`Grid2::centered`] (cell counts, a non-finite or negative margin).
+    pub fn covering_grid(&self, nx: usize, ny: usize, margin: f64) -> Result<Grid2> {
+        let [a, b] = self.semi_axes;
+        let (s, c) = self.orientation.sin_cos();
+        let k = 1.0 + margin;
+        Grid2::centered(
+            (a * a * c * c + b * b * s * s).sqrt() * k,
+            (a * a * s * s + b * b * c * c).sqrt() * k,
+            nx,
+            ny,
+        )
+    }
+
     /// Pressure sampled into a caller-provided buffer (no allocation).
     ///
     /// # Errors
