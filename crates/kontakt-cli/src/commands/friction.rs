@@ -438,31 +438,13 @@ pub fn demo_study(out_dir: &Path, md: &mut String) -> Result<Vec<DemoSummary>> {
     }
     w.flush()?;
     let plot = |file: &str, title: &str, y_label: &str, curves: &[(String, Vec<(f64, f64)>)]| {
-        let series: Vec<Series> = curves
-            .iter()
-            .enumerate()
-            .map(|(k, (name, pts))| Series {
-                label: name,
-                points: pts,
-                color: PALETTE[k % PALETTE.len()],
-                style: if k % 2 == 0 {
-                    LineStyle::Solid
-                } else {
-                    LineStyle::Dashed
-                },
-            })
-            .collect();
-        kontakt_plot::line_plot(
+        crate::commands::pimp::pairing_plot(
             &out_dir.join(file),
-            &LinePlot {
-                title,
-                x_label: "log10 (inner ring speed [r/min])",
-                y_label,
-                series: &series,
-            },
-            (900, 600),
+            title,
+            "log10 (inner ring speed [r/min])",
+            y_label,
+            curves,
         )
-        .with_context(|| format!("drawing {file}"))
     };
     let fa = base.load.axial_n;
     plot(

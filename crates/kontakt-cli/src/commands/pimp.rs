@@ -149,6 +149,41 @@ pub fn write_map(
         .with_context(|| format!("drawing {}", path.display()))
 }
 
+/// One curve per pairing (solid and dashed in turn, the palette's colours) on one plot.
+pub fn pairing_plot<S: AsRef<str>>(
+    path: &Path,
+    title: &str,
+    x_label: &str,
+    y_label: &str,
+    curves: &[(S, Vec<(f64, f64)>)],
+) -> Result<()> {
+    let series: Vec<Series> = curves
+        .iter()
+        .enumerate()
+        .map(|(k, (name, pts))| Series {
+            label: name.as_ref(),
+            points: pts,
+            color: PALETTE[k % PALETTE.len()],
+            style: if k % 2 == 0 {
+                LineStyle::Solid
+            } else {
+                LineStyle::Dashed
+            },
+        })
+        .collect();
+    kontakt_plot::line_plot(
+        path,
+        &LinePlot {
+            title,
+            x_label,
+            y_label,
+            series: &series,
+        },
+        (900, 600),
+    )
+    .with_context(|| format!("drawing {}", path.display()))
+}
+
 /// Run the roller-end/rib study (`kontakt::bearing::demo_study`) and write the report
 /// folder: the computation is the library's, this renders it.
 pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
@@ -204,30 +239,12 @@ pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
             &|r: &DemoRow| r.contact_area_mm2,
         ),
     ] {
-        let data = series_of(f);
-        let series: Vec<Series> = data
-            .iter()
-            .enumerate()
-            .map(|(k, (name, pts))| Series {
-                label: name,
-                points: pts,
-                color: PALETTE[k % PALETTE.len()],
-                style: if k % 2 == 0 {
-                    LineStyle::Solid
-                } else {
-                    LineStyle::Dashed
-                },
-            })
-            .collect();
-        kontakt_plot::line_plot(
+        pairing_plot(
             &out_dir.join(file),
-            &LinePlot {
-                title,
-                x_label: "normal force [N]",
-                y_label: ylabel,
-                series: &series,
-            },
-            (900, 600),
+            title,
+            "normal force [N]",
+            ylabel,
+            &series_of(f),
         )?;
     }
     // Markdown report.
