@@ -206,8 +206,12 @@ unsafe fn text<'a>(p: *const c_char, name: &str) -> Result<&'a str, Failure> {
     // SAFETY: `p` is non-null and, by the caller's contract, a NUL-terminated string that
     // stays valid for the duration of the call.
     let s = unsafe { CStr::from_ptr(p) };
-    s.to_str()
-        .map_err(|e| (KONTAKT_NULL_OR_UTF8, format!("{name} is not valid UTF-8: {e}")))
+    s.to_str().map_err(|e| {
+        (
+            KONTAKT_NULL_OR_UTF8,
+            format!("{name} is not valid UTF-8: {e}"),
+        )
+    })
 }
 
 /// `N` doubles at `p` (no alignment assumed).
@@ -309,7 +313,7 @@ pub unsafe extern "C" fn kontakt_element_from_file(
             // Name the file in front of the library's message.
             let (code, message) = library_error(e);
             (code, format!("{path}: {message}"))
-            })?;
+        })?;
         // SAFETY: `out` checked non-null above.
         unsafe { give(out, element) };
         Ok(())

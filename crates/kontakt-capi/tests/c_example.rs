@@ -25,7 +25,10 @@ fn profile_dir() -> PathBuf {
 
 fn static_lib() -> PathBuf {
     let dir = profile_dir();
-    for p in [dir.join("libkontakt_capi.a"), dir.join("deps/libkontakt_capi.a")] {
+    for p in [
+        dir.join("libkontakt_capi.a"),
+        dir.join("deps/libkontakt_capi.a"),
+    ] {
         if p.exists() {
             return p;
         }
@@ -130,10 +133,7 @@ fn assert_same(label: &str, s: &Section, r: &ElementResult) {
     for (key, want) in expected {
         let got = numbers(s, key);
         assert_eq!(got.len(), want.len(), "{label} {key}");
-        let scale = got
-            .iter()
-            .chain(&want)
-            .fold(0.0_f64, |m, x| m.max(x.abs()));
+        let scale = got.iter().chain(&want).fold(0.0_f64, |m, x| m.max(x.abs()));
         for (g, w) in got.iter().zip(&want) {
             assert!(
                 (g - w).abs() <= 1e-12 * scale,
@@ -141,7 +141,10 @@ fn assert_same(label: &str, s: &Section, r: &ElementResult) {
             );
         }
     }
-    assert_eq!(s.get("message").map(String::as_str).unwrap_or(""), r.message);
+    assert_eq!(
+        s.get("message").map(String::as_str).unwrap_or(""),
+        r.message
+    );
 }
 
 fn pose_along(n: &Vector3<f64>, d: f64) -> Isometry3<f64> {
@@ -186,9 +189,7 @@ fn c_example_matches_the_rust_api() {
         let f2 = numbers(s, "force2");
         assert_eq!(f2, v3(&-pressed.force1));
 
-        let apart = e
-            .evaluate(&pose_along(&n, 0.1), &id, &rest, &rest)
-            .unwrap();
+        let apart = e.evaluate(&pose_along(&n, 0.1), &id, &rest, &rest).unwrap();
         let s = section("apart");
         assert_same(name, s, &apart);
         assert_eq!(numbers(s, "status"), vec![0.0]);

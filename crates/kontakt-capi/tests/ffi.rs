@@ -124,7 +124,11 @@ fn bad_poses_name_the_field() {
     let (_, e) = from_toml(BALL);
     let (code, r) = evaluate(e, &[f64::NAN, 0.0, 10.0, 1.0, 0.0, 0.0, 0.0]);
     assert_eq!(code, KONTAKT_INVALID_INPUT);
-    assert!(last_error().starts_with("invalid pose1"), "{}", last_error());
+    assert!(
+        last_error().starts_with("invalid pose1"),
+        "{}",
+        last_error()
+    );
     assert_eq!(r.status, 0);
     assert_eq!(r.normal_force, 0.0);
     let (code, _) = evaluate(e, &[0.0, 0.0, 10.0, 2.0, 0.0, 0.0, 0.0]);
@@ -158,10 +162,13 @@ fn bad_poses_name_the_field() {
 #[test]
 fn null_pointers_are_refused() {
     let c = CString::new(BALL).unwrap();
-    let mut e: *mut KontaktElement = 1usize as *mut KontaktElement;
+    let mut e: *mut KontaktElement = std::ptr::dangling_mut(); // overwritten with null
     // SAFETY: null inputs are what is tested; every non-null pointer is valid.
     unsafe {
-        assert_eq!(kontakt_element_from_toml(null(), &mut e), KONTAKT_NULL_OR_UTF8);
+        assert_eq!(
+            kontakt_element_from_toml(null(), &mut e),
+            KONTAKT_NULL_OR_UTF8
+        );
         assert!(e.is_null());
         assert!(last_error().contains("toml"));
         assert_eq!(
@@ -169,7 +176,10 @@ fn null_pointers_are_refused() {
             KONTAKT_NULL_OR_UTF8
         );
         assert!(last_error().contains("out"));
-        assert_eq!(kontakt_element_from_file(null(), &mut e), KONTAKT_NULL_OR_UTF8);
+        assert_eq!(
+            kontakt_element_from_file(null(), &mut e),
+            KONTAKT_NULL_OR_UTF8
+        );
         assert!(last_error().contains("path"));
         assert_eq!(kontakt_element_reset(null_mut()), KONTAKT_NULL_OR_UTF8);
         kontakt_element_free(null_mut());
@@ -179,7 +189,12 @@ fn null_pointers_are_refused() {
     let mut r: KontaktResult = unsafe { std::mem::zeroed() };
     let p = ID.as_ptr();
     let t = REST.as_ptr();
-    let calls: [(&str, *mut KontaktElement, [*const f64; 4], *mut KontaktResult); 6] = [
+    let calls: [(
+        &str,
+        *mut KontaktElement,
+        [*const f64; 4],
+        *mut KontaktResult,
+    ); 6] = [
         ("element", null_mut(), [p, p, t, t], &mut r),
         ("pose1", e, [null(), p, t, t], &mut r),
         ("pose2", e, [p, null(), t, t], &mut r),

@@ -265,7 +265,10 @@ fn surfaces(geometry: &GeometrySpec) -> Result<(PlacedSurface, PlacedSurface)> {
                     "no guess for an element (each evaluation starts from the last contact point)",
                 ));
             }
-            Ok((body1.build("geometry.body1")?, body2.build("geometry.body2")?))
+            Ok((
+                body1.build("geometry.body1")?,
+                body2.build("geometry.body2")?,
+            ))
         }
         GeometrySpec::Hertz { .. } => Err(Error::invalid(
             "geometry.kind",
