@@ -13,6 +13,9 @@
 //! - [`Outcome`]: the report (stable, unit-suffixed JSON keys, `schema_version`) plus,
 //!   for the field methods, the full solution (pressure, displacement, gap per cell).
 //! - [`maps`]: gap and height maps from CSV or NumPy `.npy` files.
+//! - [`element_case`]: contact-element cases (`method = "element"`), not a [`Case`]: they
+//!   describe a [`kontakt::element::ContactElement`] that a multi-body code evaluates at its
+//!   own poses ([`element_from_case`]).
 //!
 //! Errors name the case-file key (`load.force_n`, `pimp.cells`, `body1.nu`), the value
 //! and the valid range. Units: mm, N, MPa throughout. The schema is documented in
@@ -21,6 +24,7 @@
 pub mod bem_case;
 pub mod case;
 mod common;
+pub mod element_case;
 pub mod friction_case;
 pub mod hertz_case;
 pub mod maps;
@@ -30,6 +34,7 @@ pub mod traction_case;
 pub use bem_case::{BemOutcome, run_bem_case};
 pub use case::{Case, CaseFile, Outcome};
 pub use common::SCHEMA_VERSION;
+pub use element_case::{ElementCase, element_from_case, element_from_toml};
 pub use friction_case::{FrictionCase, FrictionOutcome, FrictionReport, run_friction_case};
 pub use hertz_case::{ContactReport, run_case};
 pub use pimp_case::{PimpCase, PimpOutcome, PimpReport, run_pimp_case};
