@@ -17,6 +17,10 @@ use nalgebra::{Isometry3, Translation3, UnitQuaternion};
 use std::path::PathBuf;
 use toml::Value;
 
+#[path = "support/toml_keys.rs"]
+mod toml_keys;
+use toml_keys::{leaves, names_a_key, set};
+
 const ROLLER_RIB: &str = r#"
 method = "element"
 [geometry]
@@ -208,70 +212,6 @@ fn capi_examples() -> Vec<PathBuf> {
     files.sort();
     assert!(!files.is_empty());
     files
-}
-
-/// Every numeric leaf of `v` as a path of keys and array indices.
-fn leaves(v: &Value, path: &mut Vec<String>, out: &mut Vec<Vec<String>>) {
-    match v {
-        Value::Table(t) => {
-            for (k, x) in t {
-                path.push(k.clone());
-                leaves(x, path, out);
-                path.pop();
-            }
-        }
-        Value::Array(a) => {
-            for (i, x) in a.iter().enumerate() {
-                path.push(format!("[{i}]"));
-                leaves(x, path, out);
-                path.pop();
-            }
-        }
-        Value::Float(_) | Value::Integer(_) => out.push(path.clone()),
-        _ => {}
-    }
-}
-
-fn set(v: &mut Value, path: &[String], new: Value) {
-    let (head, rest) = path.split_first().unwrap();
-    let next = if let Some(i) = head.strip_prefix('[') {
-        let i: usize = i.trim_end_matches(']').parse().unwrap();
-        &mut v.as_array_mut().unwrap()[i]
-    } else {
-        v.as_table_mut().unwrap().get_mut(head).unwrap()
-    };
-    if rest.is_empty() {
-        *next = new;
-    } else {
-        set(next, rest, new);
-    }
-}
-
-/// Whether `field` (dotted keys, `[i]` indices) names a key or table of `doc`.
-fn names_a_key(doc: &Value, field: &str) -> bool {
-    let mut v = doc;
-    for part in field.split('.') {
-        let (key, indices) = match part.find('[') {
-            Some(i) => (&part[..i], &part[i..]),
-            None => (part, ""),
-        };
-        match v.as_table().and_then(|t| t.get(key)) {
-            Some(x) => v = x,
-            None => return false,
-        }
-        for idx in indices.split('[').filter(|s| !s.is_empty()) {
-            match idx
-                .trim_end_matches(']')
-                .parse::<usize>()
-                .ok()
-                .and_then(|i| v.as_array().and_then(|a| a.get(i)))
-            {
-                Some(x) => v = x,
-                None => return false,
-            }
-        }
-    }
-    true
 }
 
 /// The element case files parse and plan; every number in them set to an invalid value
