@@ -453,3 +453,46 @@ fn stiffness_matches_the_ball_closed_form() {
     let bad = e.stiffness(&pose1, &Isometry3::identity(), &z, &z, 0.0, 1e-6);
     assert_eq!(bad.unwrap_err().field(), Some("step_translation"));
 }
+
+/// Load control: pressing the ball down to 250 N reaches Hertz's approach for 250 N
+/// (1e-9 relative in force, 1e-9 in approach), from apart and from too deep; a direction
+/// that does not approach is refused.
+#[test]
+fn press_to_force_reaches_the_hertz_approach() {
+    let mut e = ContactElement::new(ball_on_flat()).unwrap();
+    let steel = ElasticMaterial::STEEL;
+    let hertz =
+        HertzPointContact::new(PointGeometry::sphere_on_flat(R).unwrap(), steel, steel).unwrap();
+    let target = hertz.approach_from_force(250.0).unwrap();
+    let down = -Vector3::z_axis();
+    for start in [R + 0.05, R - 0.01] {
+        let (pose, r) = e
+            .press_to_force(
+                &at(0.0, 0.0, start),
+                &Isometry3::identity(),
+                &Twist::zero(),
+                &Twist::zero(),
+                &down,
+                250.0,
+            )
+            .unwrap();
+        assert!((r.normal_force / 250.0 - 1.0).abs() < 1e-9);
+        assert!(
+            (r.approach / target - 1.0).abs() < 1e-9,
+            "{} vs {target}",
+            r.approach
+        );
+        assert!((pose.translation.vector.z - (R - target)).abs() < 1e-9);
+    }
+    let err = e
+        .press_to_force(
+            &at(0.0, 0.0, R),
+            &Isometry3::identity(),
+            &Twist::zero(),
+            &Twist::zero(),
+            &Vector3::z_axis(),
+            250.0,
+        )
+        .unwrap_err();
+    assert_eq!(err.field(), Some("direction"));
+}

@@ -329,6 +329,70 @@ impl ContactElement {
         Ok(k)
     }
 
+    /// Load control on top of the element: move body 1 from `pose1` along `direction` (a unit
+    /// vector, world frame: the way body 1 approaches body 2) until the elastic normal force
+    /// is `force` \[N\] to 1e-9 relative; returns the pose and the result there. Newton's
+    /// method on the offset with the local stiffness `dF/dδ ≈ (3/2) F/δ` (exact for Hertz,
+    /// close for the field back-ends), starting from contact if the bodies are apart, at most
+    /// 50 steps.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] (field `force`) for a non-finite or non-positive force, (field
+    /// `direction`) for a direction along which the bodies do not approach;
+    /// [`Error::NotConverged`] after 50 steps; those of [`ContactElement::evaluate`].
+    pub fn press_to_force(
+        &mut self,
+        pose1: &Isometry3<f64>,
+        pose2: &Isometry3<f64>,
+        twist1: &Twist,
+        twist2: &Twist,
+        direction: &Unit<Vector3<f64>>,
+        force: f64,
+    ) -> Result<(Isometry3<f64>, ElementResult)> {
+        if !(force.is_finite() && force > 0.0) {
+            return Err(Error::invalid("force", force, "a finite force > 0 N"));
+        }
+        let d = direction.into_inner();
+        let moved = |offset: f64| {
+            let mut p = *pose1;
+            p.translation.vector += d * offset;
+            p
+        };
+        let mut offset = 0.0;
+        let mut residual = f64::INFINITY;
+        for _ in 0..50 {
+            let pose = moved(offset);
+            let r = self.evaluate(&pose, pose2, twist1, twist2)?;
+            // How much the approach grows per unit offset along `direction`.
+            let gain = -r.normal.dot(&d);
+            if !(gain > 1e-3) {
+                return Err(Error::invalid(
+                    "direction",
+                    format!("{d:?}"),
+                    "a direction along which body 1 approaches body 2 (against the normal)",
+                ));
+            }
+            if r.status == ContactStatus::Separated {
+                // Close the gap, then aim at a small approach.
+                offset += (r.separation + 1e-6) / gain;
+                continue;
+            }
+            residual = (r.normal_force - force) / force;
+            if residual.abs() < 1e-9 {
+                return Ok((pose, r));
+            }
+            let stiffness = 1.5 * r.normal_force.max(1e-12) / r.approach.max(1e-12);
+            // Never step back past first touch: at most halve the approach.
+            let step = ((force - r.normal_force) / stiffness).max(-0.5 * r.approach);
+            offset += step / gain;
+        }
+        Err(Error::NotConverged {
+            what: "press_to_force".into(),
+            iterations: 50,
+            residual,
+        })
+    }
+
     /// Forget the last contact point (the next search starts from scratch).
     pub fn reset(&mut self) {
         self.last_point = None;
