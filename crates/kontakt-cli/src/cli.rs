@@ -36,6 +36,10 @@ pub enum Command {
     /// over a speed sweep: Hertz, PimP and/or half-space pressure, lubricant film, mixed
     /// friction (TOML case, method = "friction"; docs/case-schema.md).
     Friction(FrictionArgs),
+    /// Drive the contact element of one roller against the rib through a prescribed motion
+    /// (load ramp, tilt and skew at constant load) with the Hertz, PimP and half-space
+    /// back-ends: force, moment, contact-point migration, friction power, time per call.
+    Mbs(MbsArgs),
 }
 
 #[derive(Debug, Args)]
@@ -199,6 +203,54 @@ pub struct FrictionArgs {
     #[arg(long, value_name = "FILE.png|svg")]
     pub density: Option<PathBuf>,
     /// Print one JSON document instead of the table.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Debug, Args)]
+pub struct MbsArgs {
+    /// Roller-end/rib pairing of Wirsching et al. (2020) Table 1.
+    #[arg(long, default_value = "torus-torus-14")]
+    pub pairing: String,
+    /// Rib load during tilt and skew [N], > 0 (the load ramp runs from 0.2 to 1.6 times it).
+    #[arg(
+        long,
+        value_name = "N",
+        default_value_t = 250.0,
+        allow_hyphen_values = true
+    )]
+    pub force: f64,
+    /// Largest tilt and skew angle [deg], 0 < angle <= 2.
+    #[arg(
+        long,
+        value_name = "DEG",
+        default_value_t = 0.5,
+        allow_hyphen_values = true
+    )]
+    pub angle_deg: f64,
+    /// Inner-ring speed for the sliding velocities [r/min], 0..=100000.
+    #[arg(
+        long,
+        value_name = "RPM",
+        default_value_t = 1000.0,
+        allow_hyphen_values = true
+    )]
+    pub rpm: f64,
+    /// Samples per phase, 3..=1000.
+    #[arg(long, value_name = "N", default_value_t = 21)]
+    pub steps: usize,
+    /// Back-ends, comma-separated: hertz, pimp, halfspace.
+    #[arg(
+        long,
+        value_name = "LIST",
+        value_delimiter = ',',
+        default_value = "hertz,pimp,halfspace"
+    )]
+    pub backends: Vec<String>,
+    /// Folder for mbs.csv and the plots (created if missing).
+    #[arg(long, value_name = "DIR", default_value = "kontakt-mbs")]
+    pub out: std::path::PathBuf,
+    /// Print every sample as JSON instead of the summary table.
     #[arg(long)]
     pub json: bool,
 }

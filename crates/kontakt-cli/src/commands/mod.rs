@@ -10,6 +10,7 @@ use kontakt_case::case::{
 use kontakt_case::{Case, Outcome, run_case};
 
 pub mod friction;
+pub mod mbs;
 pub mod pimp;
 pub mod traction;
 pub mod validate;
@@ -113,6 +114,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
         Command::Validate(args) => validate::validate(&args.out, args.cells, out, args.json),
         Command::Traction(args) => traction::run(args, out),
         Command::Friction(args) => friction::run(args, out),
+        Command::Mbs(args) => mbs::run(args, out),
     }
 }
 

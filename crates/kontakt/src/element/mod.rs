@@ -34,6 +34,8 @@
 //!    the force still computed (continuous for the integrator) and the reason in
 //!    [`ElementResult::message`]: never a silent huge force.
 
+pub mod study;
+
 use crate::error::{Error, Result};
 use crate::field::NormalSolution;
 use crate::friction::{CellLaw, FilmState, FrictionLaw, grid_friction};
@@ -331,10 +333,10 @@ impl ContactElement {
 
     /// Load control on top of the element: move body 1 from `pose1` along `direction` (a unit
     /// vector, world frame: the way body 1 approaches body 2) until the elastic normal force
-    /// is `force` \[N\] to 1e-9 relative; returns the pose and the result there. Newton's
-    /// method on the offset with the local stiffness `dF/dδ ≈ (3/2) F/δ` (exact for Hertz,
-    /// close for the field back-ends), starting from contact if the bodies are apart, at most
-    /// 50 steps.
+    /// is `force` \[N\] to 1e-9 relative; returns the pose and the result there. Each step
+    /// moves to the approach `δ (F_target/F)^(2/3)` of the point-contact power law (exact for
+    /// Hertz, fast for the field back-ends), starting from contact if the bodies are apart,
+    /// at most 50 steps.
     ///
     /// # Errors
     /// [`Error::InvalidInput`] (field `force`) for a non-finite or non-positive force, (field
@@ -381,10 +383,16 @@ impl ContactElement {
             if residual.abs() < 1e-9 {
                 return Ok((pose, r));
             }
-            let stiffness = 1.5 * r.normal_force.max(1e-12) / r.approach.max(1e-12);
-            // Never step back past first touch: at most halve the approach.
-            let step = ((force - r.normal_force) / stiffness).max(-0.5 * r.approach);
-            offset += step / gain;
+            // The power law F ∝ δ^(3/2) of a point contact gives the next approach
+            // δ (F_target / F)^(2/3): exact for Hertz, a Newton-like step for the field
+            // back-ends, and safe from a round-off touch (δ ≈ 1e-14 mm, F ≈ 1e-15 N). The
+            // growth per step is capped at 1000×.
+            let next = if r.normal_force > 0.0 && r.approach > 0.0 {
+                r.approach * (force / r.normal_force).powf(2.0 / 3.0).min(1e3)
+            } else {
+                r.approach.max(1e-9) * 2.0
+            };
+            offset += (next - r.approach) / gain;
         }
         Err(Error::NotConverged {
             what: "press_to_force".into(),
