@@ -20,10 +20,11 @@
 //!    [`find_contact`], started from the last call's point.
 //! 2. Separated (`separation > 0`): zero force, status [`ContactStatus::Separated`].
 //! 3. The normal problem at the approach `δ` by the back-end: Hertz at the contact point's
-//!    relative curvature (pressure sampled on 16 × 16 cells for the friction integral: the spin moment of a ball to 0.3 %),
-//!    PimP, or the coupled half-space solver, on the gap of the two placed surfaces.
-//! 4. Friction: [`crate::friction::contact_friction`] of the law over the pressure field with
-//!    the sliding field of the two twists.
+//!    relative curvature (pressure sampled on 16 × 16 cells for the friction integral: the
+//!    spin moment of a ball to 0.3 %), PimP, or the coupled half-space solver, on the gap of
+//!    the two placed surfaces.
+//! 4. Friction: [`crate::friction::grid_friction`] of the law over the pressure field with
+//!    the sliding field of the two twists, scaled to the back-end's normal force.
 //! 5. Damping (optional): `F_d = c(δ) δ̇`, `δ̇ = −n · (v_1 − v_2)` at the contact point,
 //!    `c(δ) = c_max s(δ / δ_c)`, `s(t) = 3t² − 2t³` on `[0, 1]`, 1 beyond: zero with zero slope
 //!    at first touch, so the force has no jump. The total normal force `F_n + F_d` is not
