@@ -33,7 +33,13 @@ fn bench_element(c: &mut Criterion) {
     for (name, backend) in [
         ("hertz", Backend::Hertz),
         ("pimp_64", Backend::Pimp(PimpOptions::default())),
-        ("halfspace_64", Backend::HalfSpace(BemOptions::default())),
+        (
+            "halfspace_64",
+            Backend::HalfSpace(BemOptions {
+                threads: Some(1),
+                ..BemOptions::default()
+            }),
+        ),
     ] {
         let mut spec = ElementSpec::new(rr.face.clone(), rr.rib.clone()).expect("spec");
         spec.backend = backend;
@@ -43,6 +49,29 @@ fn bench_element(c: &mut Criterion) {
             b.iter(|| {
                 k += 1;
                 e.evaluate(black_box(&pose(k)), &id, &spin, &Twist::zero())
+                    .expect("evaluate")
+            })
+        });
+    }
+    // The half-space back-end warm after a 1 % load change: the approach alternates
+    // between two values whose Hertz forces differ by 1 % (δ ∝ F^(2/3)).
+    {
+        let mut spec = ElementSpec::new(rr.face.clone(), rr.rib.clone()).expect("spec");
+        spec.backend = Backend::HalfSpace(BemOptions {
+            threads: Some(1),
+            ..BemOptions::default()
+        });
+        let mut e = ContactElement::new(spec).expect("element");
+        let depth = [0.0042, 0.0042 * 1.01f64.powf(2.0 / 3.0)];
+        let mut k = 0usize;
+        group.bench_function("evaluate_halfspace_64_load_step", |b| {
+            b.iter(|| {
+                k += 1;
+                let pose = Isometry3::from_parts(
+                    Translation3::from(-n * depth[k % 2]),
+                    UnitQuaternion::identity(),
+                );
+                e.evaluate(black_box(&pose), &id, &spin, &Twist::zero())
                     .expect("evaluate")
             })
         });

@@ -35,6 +35,7 @@
 //!    the force still computed (continuous for the integrator) and the reason in
 //!    [`ElementResult::message`]: never a silent huge force.
 
+mod halfspace_warm;
 pub mod study;
 
 use crate::error::{Error, Result};
@@ -44,11 +45,12 @@ use crate::gap::{GapSource, SurfacePairGap};
 use crate::geometry::{
     BodyState, ContactFrame, ContactPair, Grid2, PlacedSurface, Twist, find_contact,
 };
-use crate::halfspace::{Bem, BemOptions};
+use crate::halfspace::{Bem, BemOptions, HalfSpacePlanner};
 use crate::hertz::{HertzPointContact, PointGeometry};
 use crate::material::ElasticMaterial;
 use crate::pimp::{Pimp, PimpOptions};
 use nalgebra::{Isometry3, Matrix6, Point3, Unit, UnitQuaternion, Vector3};
+use std::sync::{Arc, Mutex};
 
 /// Which model solves the normal problem.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -177,6 +179,8 @@ pub struct ContactElement {
     last_point: Option<Point3<f64>>,
     /// The Hertz back-end's pressure samples (allocated once).
     hertz_pressure: Vec<f64>,
+    /// The half-space back-end's grid and last field, for the warm start.
+    warm: halfspace_warm::WarmHalfSpace,
 }
 
 /// Cells a side of the Hertz back-end's pressure samples for the friction integral.
@@ -222,6 +226,18 @@ impl ContactElement {
     /// ([`FrictionLaw::with_film`]), `damping.coefficient` (finite, ≥ 0), `damping.ramp`
     /// (finite, > 0), `max_approach_ratio` (finite, > 0), and the back-end's options.
     pub fn new(spec: ElementSpec) -> Result<Self> {
+        Self::with_planner(spec, Arc::new(Mutex::new(HalfSpacePlanner::new())))
+    }
+
+    /// Plan an element whose half-space back-end takes its plans (the FFT of the influence
+    /// coefficients on a grid) from `planner`, shared with other elements: elements of
+    /// similar contacts (for example the rollers of one bearing) lay their grids on the
+    /// same ladder of spacings and then hold one plan, not a copy each. Other back-ends
+    /// do not use it.
+    ///
+    /// # Errors
+    /// As [`ContactElement::new`].
+    pub fn with_planner(spec: ElementSpec, planner: Arc<Mutex<HalfSpacePlanner>>) -> Result<Self> {
         let law = spec.friction.with_film(&spec.film)?;
         if let Some(d) = spec.damping {
             if !(d.coefficient.is_finite() && d.coefficient >= 0.0) {
@@ -253,7 +269,10 @@ impl ContactElement {
             Backend::Pimp(o) => (Some(Pimp::new(m1, m2, o)?), None),
             Backend::HalfSpace(o) => (
                 None,
-                Some(Bem::new(m1, m2, o)?.with_estimate(crate::pimp::zone_estimate(m1, m2)?)),
+                Some(
+                    Bem::with_planner(m1, m2, o, planner)?
+                        .with_estimate(crate::pimp::zone_estimate(m1, m2)?),
+                ),
             ),
         };
         Ok(ContactElement {
@@ -263,7 +282,15 @@ impl ContactElement {
             bem,
             last_point: None,
             hertz_pressure: vec![0.0; HERTZ_CELLS * HERTZ_CELLS],
+            warm: Default::default(),
         })
+    }
+
+    /// Grids the half-space back-end has laid since the element was planned or reset: one
+    /// at the first contact, one more each time the zone outgrows its grid or shrinks below
+    /// 45 % of it (0 for the other back-ends).
+    pub fn grids_laid(&self) -> usize {
+        self.warm.grids_laid
     }
 
     /// The element's specification.
@@ -405,6 +432,7 @@ impl ContactElement {
     /// Forget the last contact point (the next search starts from scratch).
     pub fn reset(&mut self) {
         self.last_point = None;
+        self.warm.reset();
     }
 
     /// Evaluate the contact at the poses `pose1`, `pose2` and twists `twist1`, `twist2` of
@@ -482,6 +510,22 @@ impl ContactElement {
                     max_pressure: h.max_pressure,
                     contact_area: h.contact_area,
                     iterations: 0,
+                }
+            }
+            Backend::HalfSpace(_) if self.bem.is_some() => {
+                let bem = self.bem.as_ref().ok_or_else(|| {
+                    Error::invalid("backend", "no planned solver", "a planned element")
+                })?;
+                let w = self.warm.solve(bem, &gap, approach)?;
+                FieldView {
+                    grid: w.grid,
+                    pressure: w.pressure,
+                    orientation: w.rotation,
+                    centroid: w.zone.centroid,
+                    force: w.force,
+                    max_pressure: w.zone.max_pressure,
+                    contact_area: w.zone.area,
+                    iterations: w.iterations,
                 }
             }
             Backend::Pimp(_) | Backend::HalfSpace(_) => {

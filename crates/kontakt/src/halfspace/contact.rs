@@ -220,6 +220,17 @@ impl Bem {
         &self.planner
     }
 
+    /// A free-boundary half-space solver on `grid` \[mm\] with this solver's options, on
+    /// the planner's shared plan for the grid's cells and spacing (built on first use).
+    /// The solver keeps its own fields, so a caller can hold it between solves and warm
+    /// start ([`Start::Warm`]), as the multi-body contact element does.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] for a grid the planner cannot plan.
+    pub fn solver_on(&self, grid: Grid2) -> Result<HalfSpaceSolver> {
+        self.solver(grid, Boundary::Free)
+    }
+
     /// The half-space solver on `grid` \[mm\], on the planner's plan for its cells and
     /// spacing.
     fn solver(&self, grid: Grid2, boundary: Boundary) -> Result<HalfSpaceSolver> {

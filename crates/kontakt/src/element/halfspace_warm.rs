@@ -1,0 +1,217 @@
+//! The half-space back-end's state between evaluations: a solver on a fixed grid in the
+//! contact frame, warm-started from the last pressure field.
+//!
+//! A multi-body step moves the bodies a little, so the contact zone changes a little. The
+//! element keeps one [`HalfSpaceSolver`] on a grid that holds the zone with a margin, and
+//! each evaluation re-samples the gap on that grid and restarts the constrained conjugate
+//! gradients from the previous pressure (Polonsky & Keer 1999; [`Start::Warm`]). The grid
+//! is re-chosen only when the zone reaches its border or fills less than
+//! [`MIN_FILL`] of it; then one adaptive solve ([`Bem::solve_approach`]) finds the zone
+//! and the new grid is laid on a ladder of spacings `2^(k/8)` mm, so that elements of
+//! similar contacts land on the same spacing and share one plan through the planner
+//! ([`ContactElement::with_planner`](super::ContactElement::with_planner)).
+//!
+//! The grid is turned by a fixed rotation in the gap frame (the gap's principal
+//! direction when the grid was laid), so the warm field stays aligned while the
+//! principal directions drift; any rotation holds the zone, the solve does not depend on
+//! it beyond the discretisation.
+
+use crate::error::{Error, Result};
+use crate::field::ContactZone;
+use crate::gap::GapSource;
+use crate::geometry::Grid2;
+use crate::halfspace::{Bem, Control, HalfSpaceSolver, Start};
+
+/// The zone must fill at least this fraction of the grid's width along each axis, or
+/// the grid is re-chosen (smaller). The adaptive solver shrinks below 0.6; the lower
+/// bound here gives hysteresis, so a zone near a threshold does not toggle the grid.
+pub const MIN_FILL: f64 = 0.45;
+
+/// Steps per octave of the grid-spacing ladder.
+const LADDER_STEPS: f64 = 8.0;
+
+/// The back-end's state. `Clone` gives a cold state (the solver's fields are not copied).
+#[derive(Debug, Default)]
+pub(crate) struct WarmHalfSpace {
+    state: Option<State>,
+    /// Grids laid since the element was planned or reset.
+    pub(crate) grids_laid: usize,
+}
+
+impl Clone for WarmHalfSpace {
+    fn clone(&self) -> Self {
+        WarmHalfSpace::default()
+    }
+}
+
+#[derive(Debug)]
+struct State {
+    solver: HalfSpaceSolver,
+    /// Rotation of the grid in the gap frame \[rad\].
+    rotation: f64,
+    /// The gap sampled on the grid \[mm\].
+    gap: Vec<f64>,
+}
+
+/// What one evaluation gives: borrowed from the state.
+pub(crate) struct WarmField<'a> {
+    pub grid: Grid2,
+    pub pressure: &'a [f64],
+    pub rotation: f64,
+    pub zone: ContactZone,
+    pub force: f64,
+    pub iterations: usize,
+}
+
+impl WarmHalfSpace {
+    /// Forget the grid and the last field.
+    pub(crate) fn reset(&mut self) {
+        self.state = None;
+        self.grids_laid = 0;
+    }
+
+    /// Solve `source` at the rigid approach `approach` \[mm\], warm when the kept grid
+    /// still holds the zone, else on a newly laid grid.
+    pub(crate) fn solve(
+        &mut self,
+        bem: &Bem,
+        source: &dyn GapSource,
+        approach: f64,
+    ) -> Result<WarmField<'_>> {
+        let control = Control::Approach(approach);
+        let mut iterations = 0;
+        let warm_ok = match self.state.as_mut() {
+            Some(st) => {
+                let grid = *st.solver.grid();
+                source.sample(&grid, st.rotation, &mut st.gap)?;
+                let report = st
+                    .solver
+                    .solve(&st.gap, control, Start::Warm)?
+                    .require_converged()?;
+                iterations += report.status.iterations;
+                let zone = ContactZone::analyse(&grid, st.solver.pressure())?;
+                fits(&grid, &zone)
+            }
+            None => false,
+        };
+        if !warm_ok {
+            iterations += self.lay_grid(bem, source, approach)?;
+        }
+        let st = self.state.as_ref().ok_or_else(|| {
+            Error::invalid(
+                "backend",
+                "a half-space state without a grid",
+                "a grid laid by the first evaluation",
+            )
+        })?;
+        let grid = *st.solver.grid();
+        let zone = ContactZone::analyse(&grid, st.solver.pressure())?;
+        Ok(WarmField {
+            grid,
+            pressure: st.solver.pressure(),
+            rotation: st.rotation,
+            zone,
+            force: zone.force,
+            iterations,
+        })
+    }
+
+    /// Find the zone with the adaptive solver, lay a ladder grid over it and solve there
+    /// from cold. Returns the iterations spent.
+    fn lay_grid(&mut self, bem: &Bem, source: &dyn GapSource, approach: f64) -> Result<usize> {
+        let found = bem.solve_approach(source, approach)?;
+        let mut iterations = found.status.iterations;
+        let rotation = found.orientation;
+        let cells = [found.grid.nx(), found.grid.ny()];
+        let margin = bem.options().margin;
+        let mut half = [0.0; 2];
+        let mut centre = [0.0; 2];
+        for k in 0..2 {
+            let [lo, hi] = found.zone.extents[k];
+            centre[k] = 0.5 * (lo + hi);
+            half[k] = 0.5 * (hi - lo) * margin;
+        }
+        // Grow by one ladder step at most a few times if the laid grid cuts the zone.
+        for _ in 0..4 {
+            let grid = ladder_grid(centre, half, cells)?;
+            let mut solver = bem.solver_on(grid)?;
+            let mut gap = vec![0.0; grid.len()];
+            source.sample(&grid, rotation, &mut gap)?;
+            let report = solver
+                .solve(&gap, Control::Approach(approach), Start::Cold)?
+                .require_converged()?;
+            iterations += report.status.iterations;
+            let zone = ContactZone::analyse(&grid, solver.pressure())?;
+            self.grids_laid += 1;
+            let [bx, by] = zone.touches_border;
+            if bx || by {
+                half = half.map(|h| h * 2f64.powf(1.0 / LADDER_STEPS) * 1.2);
+                continue;
+            }
+            crate::field::domain::check_resolution(&grid, &zone)?;
+            self.state = Some(State {
+                solver,
+                rotation,
+                gap,
+            });
+            return Ok(iterations);
+        }
+        Err(Error::Geometry {
+            field: "extent".into(),
+            reason: "the half-space grid of the contact element did not settle on the \
+                     contact zone in 4 grids: the zone is unbounded or far from the contact \
+                     point"
+                .into(),
+        })
+    }
+}
+
+/// Whether the kept grid still holds the zone: not on the border, and filling at least
+/// [`MIN_FILL`] of the width each way.
+fn fits(grid: &Grid2, zone: &ContactZone) -> bool {
+    let [bx, by] = zone.touches_border;
+    if bx || by || zone.patches == 0 {
+        return false;
+    }
+    let e = zone.extents;
+    let fill = [
+        (e[0][1] - e[0][0]) / (grid.nx() as f64 * grid.dx()),
+        (e[1][1] - e[1][0]) / (grid.ny() as f64 * grid.dy()),
+    ];
+    fill[0] >= MIN_FILL && fill[1] >= MIN_FILL
+}
+
+/// The grid of `cells` centred on `centre` \[mm\] whose spacing is the next rung at or
+/// above `2·half/n` on the ladder `2^(k/8)` mm.
+fn ladder_grid(centre: [f64; 2], half: [f64; 2], cells: [usize; 2]) -> Result<Grid2> {
+    let mut bounds = [[0.0; 2]; 2];
+    for k in 0..2 {
+        let want = 2.0 * half[k] / cells[k] as f64;
+        let rung = (want.log2() * LADDER_STEPS).ceil() / LADDER_STEPS;
+        let d = 2f64.powf(rung);
+        let h = 0.5 * d * cells[k] as f64;
+        bounds[k] = [centre[k] - h, centre[k] + h];
+    }
+    Grid2::new(bounds[0], bounds[1], cells[0], cells[1])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ladder_spacing_is_a_rung_at_or_above_the_request() {
+        for want in [1e-4, 3.3e-3, 0.0217, 0.5, 1.0] {
+            let g = ladder_grid([0.1, -0.2], [want * 32.0, want * 16.0], [64, 32]).unwrap();
+            for d in [g.dx(), g.dy()] {
+                let k = d.log2() * LADDER_STEPS;
+                assert!((k - k.round()).abs() < 1e-9, "{d} is not a rung");
+                assert!(
+                    d >= want * (1.0 - 1e-12) && d < want * 2f64.powf(1.0 / 8.0),
+                    "{d}"
+                );
+            }
+            assert!((0.5 * (g.x(0) + g.x(63)) - 0.1).abs() < 1e-12);
+        }
+    }
+}
