@@ -9,8 +9,17 @@ use std::path::PathBuf;
     name = "kontakt",
     version,
     about,
-    after_help = "Exit status: 0 success, 1 computation failed (e.g. not converged), 2 bad input.\n\
-                  Conventions: radii convex > 0, concave < 0, `inf` for flat; stresses tension positive."
+    after_help = "Examples:\n  \
+      kontakt hertz --body1-radii 10,10 --body2-radii inf,inf --force 500\n  \
+      kontakt solve examples/roller_rib_torus_torus.toml --map p.png\n  \
+      kontakt demo --out kontakt-demo\n  \
+      kontakt validate --out kontakt-validate\n  \
+      kontakt traction examples/traction_ball_all_models.toml --plot traction.png\n  \
+      kontakt friction examples/rib_friction.toml --plot torque.png\n  \
+      kontakt mbs --out kontakt-mbs\n\n\
+      Case files: docs/case-schema.md. Exit status: 0 success, 1 computation failed (e.g. not\n\
+      converged, an unwritable file), 2 bad input.\n\
+      Conventions: radii convex > 0, concave < 0, `inf` for flat; stresses tension positive."
 )]
 pub struct Cli {
     #[command(subcommand)]
@@ -19,9 +28,11 @@ pub struct Cli {
 
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Hertz point-contact calculator (exact elliptical solution).
+    /// Hertz point-contact calculator (exact elliptical solution; the same as a case file
+    /// with method = "hertz", docs/case-schema.md).
     Hertz(HertzArgs),
-    /// Solve a case described in a TOML file (schema: docs/case-schema.md).
+    /// Solve a case described in a TOML file: method = "hertz", "pimp" or "bem" (schema:
+    /// docs/case-schema.md).
     Solve(SolveArgs),
     /// Run the roller-end/rib study (Wirsching et al. (2020) Table 1, 100-400 N) and write a report
     /// (Markdown, pressure maps, CSV) into a folder.
@@ -30,7 +41,8 @@ pub enum Command {
     /// pairings (Wirsching et al. (2020) Figures 7-10) and write a report (Markdown, plots, CSV).
     Validate(ValidateArgs),
     /// Traction curves F_T/(mu F_N) against the creepage (slide-to-roll ratio): Carter,
-    /// Kalker linear, FASTSIM, from a TOML case (method = "traction"; docs/case-schema.md).
+    /// Kalker linear, FASTSIM and the asperity model (Mindlin partial slip per asperity), from
+    /// a TOML case (method = "traction"; docs/case-schema.md).
     Traction(TractionArgs),
     /// Friction torque and power of the roller-end/rib contact of a tapered roller bearing
     /// over a speed sweep: Hertz, PimP and/or half-space pressure, lubricant film, mixed
@@ -38,7 +50,8 @@ pub enum Command {
     Friction(FrictionArgs),
     /// Drive the contact element of one roller against the rib through a prescribed motion
     /// (load ramp, tilt and skew at constant load) with the Hertz, PimP and half-space
-    /// back-ends: force, moment, contact-point migration, friction power, time per call.
+    /// back-ends: force, moment, contact-point migration, friction power, time per call
+    /// (docs/mbs.md).
     Mbs(MbsArgs),
 }
 

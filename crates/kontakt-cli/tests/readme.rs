@@ -104,3 +104,47 @@ fn the_parser_reads_commands_and_their_output() {
     assert!(c[1].1.is_empty());
     assert_eq!(c[2].0, ["d"]);
 }
+
+/// The examples that `kontakt --help` shows run as printed (in a scratch directory that
+/// holds the repository's `examples/`), each exiting with status 0.
+#[test]
+fn help_examples_run() {
+    let help = Command::new(env!("CARGO_BIN_EXE_kontakt"))
+        .arg("--help")
+        .output()
+        .unwrap();
+    let help = String::from_utf8(help.stdout).unwrap();
+    let examples: Vec<&str> = help
+        .lines()
+        .skip_while(|l| !l.starts_with("Examples:"))
+        .skip(1)
+        .take_while(|l| !l.trim().is_empty())
+        .map(str::trim)
+        .collect();
+    assert!(examples.len() >= 7, "{help}");
+    let dir = std::env::temp_dir().join(format!("kontakt-help-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::os::unix::fs::symlink(
+        root().join("examples").canonicalize().unwrap(),
+        dir.join("examples"),
+    )
+    .unwrap();
+    for line in &examples {
+        let args: Vec<&str> = line
+            .strip_prefix("kontakt ")
+            .unwrap()
+            .split_whitespace()
+            .collect();
+        let out = Command::new(env!("CARGO_BIN_EXE_kontakt"))
+            .args(&args)
+            .current_dir(&dir)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{line}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

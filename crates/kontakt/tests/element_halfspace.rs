@@ -99,3 +99,28 @@ fn load_ramp_through_new_grids_is_smooth() {
     assert!(e.grids_laid() >= 3, "{} grids laid", e.grids_laid());
     assert!(worst < 2e-4, "largest kink {worst:e}");
 }
+
+/// From the full contact (4.2 µm) to a touch of a few cells (0.3-3 µm, 24 approaches),
+/// each time from the full contact, then to 1e-14 mm (the round-off overlap of surfaces
+/// placed exactly tangent) and back: every call converges (a warm start's first step can
+/// unload every cell; the solver then re-admits the overlapping ones), a touch that reaches
+/// no cell centre gives zero force, and the full contact comes back to 1e-6.
+#[test]
+fn from_full_contact_to_a_touch_and_back() {
+    let (spec, pose) = roller_rib();
+    let mut e = ContactElement::new(spec).unwrap();
+    let (f_full, _) = force(&mut e, &pose(0.0042, 0.0));
+    for k in 0..24 {
+        let depth = 3e-4 * 10f64.powf(k as f64 / 23.0);
+        let (f_touch, _) = force(&mut e, &pose(depth * 1e-3, 0.0));
+        assert!(
+            f_touch >= 0.0 && f_touch < 0.5 * f_full,
+            "{depth} µm: {f_touch} N"
+        );
+        force(&mut e, &pose(0.0042, 0.0));
+    }
+    let (f_zero, _) = force(&mut e, &pose(1e-14, 0.0));
+    assert_eq!(f_zero, 0.0);
+    let (f_back, _) = force(&mut e, &pose(0.0042, 0.0));
+    assert!((f_back / f_full - 1.0).abs() < 1e-6, "{f_back} vs {f_full}");
+}

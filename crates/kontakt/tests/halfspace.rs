@@ -712,6 +712,45 @@ fn warm_start_without_a_previous_solution_is_cold() {
     assert_eq!(s1.pressure(), s2.pressure());
 }
 
+/// A warm start whose previous zone does not overlap the new one (the contact jumped by
+/// more than its width, as after a large multi-body step), and a tiny new contact of a
+/// few cells after a full one: the solve converges to the cold answer (force 1e-8, pressure 1e-6 of
+/// p_max), never stalls with an empty loaded set.
+#[test]
+fn warm_start_far_from_the_last_zone_converges() {
+    let h = hertz(sphere(), LOAD);
+    let a = h.semi_axes[0];
+    let grid = grid_across(a, 16);
+    let half = 0.5 * grid.nx() as f64 * grid.dx();
+    let left = sphere_gap(&grid, [-0.55 * half, 0.0]);
+    let right = sphere_gap(&grid, [0.55 * half, 0.0]);
+    let h_min = |g: &[f64]| g.iter().copied().fold(f64::INFINITY, f64::min);
+    let (hl, hr) = (h_min(&left), h_min(&right));
+    let near = |g: f64, f: f64| Control::Approach(g + f * h.approach);
+    for (base_gap, base, gap, control) in [
+        (&left, near(hl, 0.1), &right, near(hr, 0.1)),
+        (&left, near(hl, 0.1), &right, near(hr, 1e-3)),
+        // From the full contact to a touch of a few cells: the first step clips every
+        // cell of the warm start.
+        (&right, near(hr, 1.0), &right, near(hr, 1e-3)),
+    ] {
+        let mut warm = HalfSpaceSolver::new(grid, e_star(), options(1e-8)).unwrap();
+        let mut cold = HalfSpaceSolver::new(grid, e_star(), options(1e-8)).unwrap();
+        warm.solve(base_gap, base, Start::Cold).unwrap();
+        let w = warm.solve(gap, control, Start::Warm).unwrap();
+        check_complementarity(&warm, &w, control);
+        let c = cold.solve(gap, control, Start::Cold).unwrap();
+        let (dp, _) = compare((warm.pressure(), w.approach), (cold.pressure(), c.approach));
+        assert!(dp < 1e-6, "pressure differs by {dp:e} of p_max");
+        assert!(
+            rel(w.force, c.force).abs() < 1e-8,
+            "{} vs {}",
+            w.force,
+            c.force
+        );
+    }
+}
+
 // ---------------------------------------------------------------------------------------
 // 9. Displacement and load control agree.
 

@@ -51,7 +51,14 @@ struct State {
     rotation: f64,
     /// The gap sampled on the grid \[mm\].
     gap: Vec<f64>,
+    /// Zeros of the grid's size: the field when the approach reaches no cell centre.
+    zeros: Vec<f64>,
 }
+
+/// The one-cell unloaded field of an approach that reaches no cell centre of the
+/// adaptive solver's grids (a touch in round-off, for example surfaces placed exactly
+/// tangent).
+const UNLOADED: [f64; 1] = [0.0];
 
 /// What one evaluation gives: borrowed from the state.
 pub(crate) struct WarmField<'a> {
@@ -84,6 +91,13 @@ impl WarmHalfSpace {
             Some(st) => {
                 let grid = *st.solver.grid();
                 source.sample(&grid, st.rotation, &mut st.gap)?;
+                let h_min = st.gap.iter().copied().fold(f64::INFINITY, f64::min);
+                if approach <= h_min {
+                    // The bodies overlap by less than the gap at any cell centre: no
+                    // cell is loaded; the grid is kept for the next call.
+                    let st = self.state.as_ref().ok_or_else(no_state)?;
+                    return Ok(unloaded(grid, &st.zeros, st.rotation));
+                }
                 let report = st
                     .solver
                     .solve(&st.gap, control, Start::Warm)?
@@ -95,15 +109,16 @@ impl WarmHalfSpace {
             None => false,
         };
         if !warm_ok {
-            iterations += self.lay_grid(bem, source, approach)?;
+            match self.lay_grid(bem, source, approach) {
+                Ok(n) => iterations += n,
+                Err(Error::Geometry { field, .. }) if field == "approach" => {
+                    let grid = Grid2::new([-1e-6, 1e-6], [-1e-6, 1e-6], 1, 1)?;
+                    return Ok(unloaded(grid, &UNLOADED, 0.0));
+                }
+                Err(e) => return Err(e),
+            }
         }
-        let st = self.state.as_ref().ok_or_else(|| {
-            Error::invalid(
-                "backend",
-                "a half-space state without a grid",
-                "a grid laid by the first evaluation",
-            )
-        })?;
+        let st = self.state.as_ref().ok_or_else(no_state)?;
         let grid = *st.solver.grid();
         let zone = ContactZone::analyse(&grid, st.solver.pressure())?;
         Ok(WarmField {
@@ -152,6 +167,7 @@ impl WarmHalfSpace {
             self.state = Some(State {
                 solver,
                 rotation,
+                zeros: vec![0.0; gap.len()],
                 gap,
             });
             return Ok(iterations);
@@ -163,6 +179,36 @@ impl WarmHalfSpace {
                      point"
                 .into(),
         })
+    }
+}
+
+fn no_state() -> Error {
+    Error::invalid(
+        "backend",
+        "a half-space state without a grid",
+        "a grid laid by the first evaluation",
+    )
+}
+
+/// The field of no loaded cell on `grid`.
+fn unloaded(grid: Grid2, zeros: &[f64], rotation: f64) -> WarmField<'_> {
+    WarmField {
+        grid,
+        pressure: zeros,
+        rotation,
+        zone: ContactZone {
+            area: 0.0,
+            force: 0.0,
+            max_pressure: 0.0,
+            max_pressure_at: [0.0; 2],
+            extents: [[0.0; 2]; 2],
+            centroid: [0.0; 2],
+            patches: 0,
+            centre_line_curvature: None,
+            touches_border: [false; 2],
+        },
+        force: 0.0,
+        iterations: 0,
     }
 }
 

@@ -330,6 +330,11 @@ impl HalfSpaceSolver {
                 *p = (*p + new - old).max(0.0);
             }
             std::mem::swap(&mut self.t, &mut self.guess);
+            if !self.p.iter().any(|&v| v > 0.0) {
+                // The previous zone and the new one do not overlap (or the last solve
+                // loaded nothing): no loaded cell to iterate on, so start cold.
+                self.p.copy_from_slice(&self.guess);
+            }
         } else {
             hertz_guess(gap, control, h_min, self.e_star, da, &mut self.guess);
             self.p.copy_from_slice(&self.guess);
@@ -420,6 +425,21 @@ impl HalfSpaceSolver {
                 } else if g[i] < 0.0 {
                     overlap2 += g[i] * g[i];
                 }
+            }
+            if n_c == 0 && overlap2 > 0.0 && iterations < self.options.max_iterations {
+                // Every cell was unloaded (a step clipped the whole set, or a warm start
+                // missed the zone) while cells overlap: re-admit them with the pressure of
+                // a single loaded cell, p ≈ E* (−g)/√ΔA, and restart the directions.
+                let k = self.e_star / da.sqrt();
+                for i in 0..p.len() {
+                    if g[i] < 0.0 {
+                        p[i] = -k * g[i];
+                    }
+                }
+                u_valid = false;
+                conjugate = false;
+                iterations += 1;
+                continue;
             }
             // The RMS displacement of the loaded cells: it cannot vanish on a loaded
             // contact, also not on a periodic one whose mean displacement is zero.
