@@ -148,3 +148,45 @@ fn help_examples_run() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A case given to the wrong subcommand is named by its kind, with the subcommand that
+/// runs it, and exits with status 2 (not an unknown-field error of the other schema).
+#[test]
+fn wrong_subcommand_names_the_case_kind() {
+    let examples = root().join("examples");
+    for (sub, file, kind, runner) in [
+        ("traction", "ball_on_flat.toml", "hertz", "kontakt solve"),
+        ("traction", "bem_torus_torus.toml", "bem", "kontakt solve"),
+        (
+            "traction",
+            "rib_friction.toml",
+            "friction",
+            "kontakt friction",
+        ),
+        (
+            "friction",
+            "roller_rib_torus_torus.toml",
+            "pimp",
+            "kontakt solve",
+        ),
+        (
+            "friction",
+            "traction_twin_disc.toml",
+            "traction",
+            "kontakt traction",
+        ),
+    ] {
+        let out = Command::new(env!("CARGO_BIN_EXE_kontakt"))
+            .args([sub, examples.join(file).to_str().unwrap()])
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{sub} {file}: {err}");
+        assert!(
+            err.contains(&format!("method = \"{kind}\" case"))
+                && err.contains(runner)
+                && err.lines().count() == 1,
+            "{sub} {file}: {err}"
+        );
+    }
+}

@@ -14,16 +14,8 @@ use std::path::Path;
 
 /// Run the subcommand.
 pub fn run(args: &FrictionArgs, out: &mut impl Write) -> Result<()> {
-    let (label, text) = crate::commands::read_case(&args.case)?;
+    let (label, text) = crate::commands::read_case_for(&args.case, "friction", "friction")?;
     let case = Case::from_toml_str(&text).with_context(|| label.clone())?;
-    if case.method() != "friction" {
-        return Err(InputError(format!(
-            "{label}: method = \"{}\": `kontakt friction` runs method = \"friction\" cases \
-             (use `kontakt solve` for the others)",
-            case.method()
-        ))
-        .into());
-    }
     let Outcome::Friction(outcome) = case.run(Path::new(".")).with_context(|| label.clone())?
     else {
         return Err(InputError(format!("{label}: not a friction case")).into());

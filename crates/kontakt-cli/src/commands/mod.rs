@@ -118,6 +118,37 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
     }
 }
 
+/// Read a case file for the subcommand `subcommand`, which runs `method = "{method}"`
+/// cases: its label and text, or an input error that says which kind of case the file is
+/// and which subcommand takes it (the method is read before the schema, so a Hertz case
+/// given to `kontakt traction` is named as such, not reported as an unknown field).
+pub fn read_case_for(
+    path: &std::path::Path,
+    method: &str,
+    subcommand: &str,
+) -> Result<(String, String)> {
+    let (label, text) = read_case(path)?;
+    let found = text
+        .parse::<toml::Table>()
+        .ok()
+        .and_then(|t| t.get("method").and_then(|m| m.as_str().map(str::to_string)));
+    if let Some(found) = found
+        && found != method
+    {
+        let runner = match found.as_str() {
+            "traction" => "kontakt traction (or kontakt solve)",
+            "friction" => "kontakt friction (or kontakt solve)",
+            _ => "kontakt solve",
+        };
+        return Err(InputError(format!(
+            "{label} is a method = \"{found}\" case; `kontakt {subcommand}` runs method = \
+             \"{method}\" cases: run this one with {runner}"
+        ))
+        .into());
+    }
+    Ok((label, text))
+}
+
 /// Read a case file (or standard input for `-`): its label for messages and its text.
 pub fn read_case(path: &std::path::Path) -> Result<(String, String)> {
     if path.as_os_str() == "-" {

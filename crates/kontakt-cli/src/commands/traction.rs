@@ -15,7 +15,7 @@ const MAX_ROWS: usize = 21;
 
 /// Run the subcommand.
 pub fn run(args: &TractionArgs, out: &mut impl Write) -> Result<()> {
-    let (label, text) = crate::commands::read_case(&args.case)?;
+    let (label, text) = crate::commands::read_case_for(&args.case, "traction", "traction")?;
     let case = TractionCase::from_toml_str(&text).with_context(|| label.clone())?;
     let report = run_traction_case(&case).with_context(|| label.clone())?;
     if let Some(path) = &args.csv {
