@@ -36,6 +36,7 @@
 use crate::pimp_case::{
     GapSetup, GeometrySpec, PimpCase, PimpReport, ReportMeta, gap_setup, hertz_echo, material,
 };
+use kontakt::gap::GapMap;
 use kontakt::halfspace::{Bem, BemOptions, BemSolution, Control};
 use kontakt::{Error, Result};
 
@@ -59,6 +60,27 @@ pub struct BemOutcome {
 /// Invalid input (named by its case-file key), bodies that do not touch, a contact that
 /// reaches the border of a map or a fixed extent, and non-convergence.
 pub fn run_bem_case(case: &PimpCase, base_dir: &Path) -> Result<BemOutcome> {
+    run(case, base_dir, None)
+}
+
+/// Solve a `method = "bem"` case of `[geometry] kind = "map"` on a map held in memory
+/// (the Python package passes a NumPy array): `map` replaces the file, whose name only
+/// labels the report; `spacing_mm` and `values` were applied when `map` was built.
+///
+/// # Errors
+/// As [`run_bem_case`]; a geometry other than a map is refused (field `geometry.kind`).
+pub fn run_bem_case_on_map(case: &PimpCase, map: GapMap) -> Result<BemOutcome> {
+    if !matches!(case.geometry, GeometrySpec::Map { .. }) {
+        return Err(Error::invalid(
+            "geometry.kind",
+            "not \"map\"",
+            "\"map\" for a case solved on a map in memory",
+        ));
+    }
+    run(case, Path::new("."), Some(map))
+}
+
+fn run(case: &PimpCase, base_dir: &Path, given: Option<GapMap>) -> Result<BemOutcome> {
     if case.method != "bem" {
         return Err(Error::invalid(
             "method",
@@ -110,7 +132,11 @@ pub fn run_bem_case(case: &PimpCase, base_dir: &Path) -> Result<BemOutcome> {
             boundary,
         } => {
             let path = base_dir.join(file);
-            let map = crate::maps::read_gap_map(&path, *spacing_mm, *values).map_err(|e| {
+            let map = match given {
+                Some(map) => Ok(map),
+                None => crate::maps::read_gap_map(&path, *spacing_mm, *values),
+            }
+            .map_err(|e| {
                 e.map_field(|f| match f {
                     "spacing[0]" => "geometry.spacing_mm[0]".into(),
                     "spacing[1]" => "geometry.spacing_mm[1]".into(),

@@ -31,7 +31,7 @@ pub mod maps;
 pub mod pimp_case;
 pub mod traction_case;
 
-pub use bem_case::{BemOutcome, run_bem_case};
+pub use bem_case::{BemOutcome, run_bem_case, run_bem_case_on_map};
 pub use case::{Case, CaseFile, Outcome};
 pub use common::SCHEMA_VERSION;
 pub use element_case::{ElementCase, element_from_case, element_from_toml};

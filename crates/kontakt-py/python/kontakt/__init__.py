@@ -1,0 +1,63 @@
+"""kontakt: contact mechanics for rolling bearings (Python bindings of the Rust library).
+
+Units: mm, N, MPa, mm/s, rad/s; angles in radians in the API, degrees in case files and
+case dicts (as ``kontakt solve`` reads them). See docs/python.md.
+"""
+
+from __future__ import annotations
+
+import os
+from typing import Any, Mapping
+
+from ._kontakt import (
+    CaseResult,
+    ContactElement,
+    ConvergenceError,
+    ElementResult,
+    HalfSpace,
+    HalfSpaceResult,
+    HertzLine,
+    HertzLineResult,
+    HertzPoint,
+    HertzPointResult,
+    InputError,
+    Material,
+    __version__,
+    run_case,
+    run_file,
+    run_toml,
+)
+
+__all__ = [
+    "CaseResult",
+    "ContactElement",
+    "ConvergenceError",
+    "ElementResult",
+    "HalfSpace",
+    "HalfSpaceResult",
+    "HertzLine",
+    "HertzLineResult",
+    "HertzPoint",
+    "HertzPointResult",
+    "InputError",
+    "Material",
+    "__version__",
+    "run",
+    "run_case",
+    "run_file",
+    "run_toml",
+]
+
+
+def run(case: Mapping[str, Any] | str | os.PathLike[str]) -> CaseResult:
+    """Run a case of any method (docs/case-schema.md) through the library's one dispatch.
+
+    ``case`` is a dict with the keys of a case file, a path to a ``.toml`` case file, or
+    TOML text (a string containing a newline). The result's ``to_dict()`` has the keys of
+    ``kontakt solve CASE --json``.
+    """
+    if isinstance(case, Mapping):
+        return run_case(dict(case))
+    if isinstance(case, str) and "\n" in case:
+        return run_toml(case)
+    return run_file(os.fspath(case))

@@ -1,0 +1,233 @@
+//! Cases of any method through the case layer's one dispatch, `kontakt_case::Case::run`.
+
+use crate::errors::{invalid, to_py};
+use kontakt::field::NormalSolution;
+use kontakt_case::{Case, Outcome};
+use numpy::ndarray::Array2;
+use numpy::{IntoPyArray, PyArray1, PyArray2};
+use pyo3::prelude::*;
+use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
+use std::path::{Path, PathBuf};
+
+/// `value` serialised as the CLI writes it (serde_json), parsed by Python's `json`: the
+/// same keys and the same numbers as `kontakt ... --json`.
+pub fn json_to_py<'py>(
+    py: Python<'py>,
+    value: &impl serde::Serialize,
+) -> PyResult<Bound<'py, PyAny>> {
+    let text = serde_json::to_string(value)
+        .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(format!("report: {e}")))?;
+    py.import("json")?.call_method1("loads", (text,))
+}
+
+/// The fields of a solved case on its grid: cell centres and per-cell arrays `(ny, nx)`.
+#[derive(Clone)]
+pub struct Fields {
+    pub x: Vec<f64>,
+    pub y: Vec<f64>,
+    pub pressure: Array2<f64>,
+    pub displacement: Option<Array2<f64>>,
+    pub gap: Option<Array2<f64>>,
+}
+
+fn grid_array(nx: usize, ny: usize, v: &[f64]) -> Array2<f64> {
+    Array2::from_shape_vec((ny, nx), v.to_vec())
+        .unwrap_or_else(|_| Array2::from_elem((ny, nx), f64::NAN))
+}
+
+impl Fields {
+    pub fn of<D>(s: &NormalSolution<D>, displacement: Option<&[f64]>, gap: Option<&[f64]>) -> Self {
+        let g = &s.grid;
+        let (nx, ny) = (g.nx(), g.ny());
+        Fields {
+            x: (0..nx).map(|i| g.x(i)).collect(),
+            y: (0..ny).map(|j| g.y(j)).collect(),
+            pressure: grid_array(nx, ny, &s.pressure),
+            displacement: displacement.map(|d| grid_array(nx, ny, d)),
+            gap: gap.map(|d| grid_array(nx, ny, d)),
+        }
+    }
+}
+
+/// What a case gives: the report (the CLI's JSON record, `to_dict()`) and, for the field
+/// methods (pimp, bem), the fields per cell as arrays of shape (ny, nx) with the cell
+/// centres `x`, `y` [mm]: `pressure` [MPa]; for bem also `displacement` and `gap` [mm].
+#[pyclass(frozen, module = "kontakt._kontakt")]
+pub struct CaseResult {
+    method: &'static str,
+    report: String,
+    fields: Option<Fields>,
+}
+
+fn array2<'py>(py: Python<'py>, a: &Option<Array2<f64>>) -> Option<Bound<'py, PyArray2<f64>>> {
+    a.as_ref().map(|a| a.clone().into_pyarray(py))
+}
+
+#[pymethods]
+impl CaseResult {
+    /// The case's method: "hertz", "pimp", "bem", "traction" or "friction".
+    #[getter]
+    fn method(&self) -> &'static str {
+        self.method
+    }
+    /// Cell centres along x [mm] (field methods), else None.
+    #[getter]
+    fn x<'py>(&self, py: Python<'py>) -> Option<Bound<'py, PyArray1<f64>>> {
+        self.fields.as_ref().map(|f| PyArray1::from_slice(py, &f.x))
+    }
+    /// Cell centres along y [mm] (field methods), else None.
+    #[getter]
+    fn y<'py>(&self, py: Python<'py>) -> Option<Bound<'py, PyArray1<f64>>> {
+        self.fields.as_ref().map(|f| PyArray1::from_slice(py, &f.y))
+    }
+    /// Pressure per cell [MPa], shape (ny, nx) (field methods), else None.
+    #[getter]
+    fn pressure<'py>(&self, py: Python<'py>) -> Option<Bound<'py, PyArray2<f64>>> {
+        self.fields
+            .as_ref()
+            .map(|f| f.pressure.clone().into_pyarray(py))
+    }
+    /// Elastic displacement per cell [mm] (bem), else None.
+    #[getter]
+    fn displacement<'py>(&self, py: Python<'py>) -> Option<Bound<'py, PyArray2<f64>>> {
+        self.fields
+            .as_ref()
+            .and_then(|f| array2(py, &f.displacement))
+    }
+    /// Undeformed gap per cell [mm] (bem; +inf where the bodies cannot meet), else None.
+    #[getter]
+    fn gap<'py>(&self, py: Python<'py>) -> Option<Bound<'py, PyArray2<f64>>> {
+        self.fields.as_ref().and_then(|f| array2(py, &f.gap))
+    }
+    /// The report as a JSON string, exactly as `kontakt solve --json` writes it (compact).
+    fn to_json(&self) -> &str {
+        &self.report
+    }
+    /// The report as a dict with the CLI's JSON keys.
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        py.import("json")?
+            .call_method1("loads", (self.report.as_str(),))
+    }
+    fn __repr__(&self) -> String {
+        format!("CaseResult(method={:?})", self.method)
+    }
+}
+
+fn result(case: &Case, outcome: Outcome) -> PyResult<CaseResult> {
+    let report = serde_json::to_string(&outcome)
+        .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(format!("report: {e}")))?;
+    let fields = match &outcome {
+        Outcome::Pimp(o) => Some(Fields::of(&o.solution, None, None)),
+        Outcome::Bem(o) => Some(Fields::of(
+            &o.solution,
+            Some(&o.solution.detail.displacement),
+            Some(&o.solution.detail.gap),
+        )),
+        _ => None,
+    };
+    Ok(CaseResult {
+        method: case.method(),
+        report,
+        fields,
+    })
+}
+
+/// Parse and run `text` with the GIL released.
+fn run_text(py: Python<'_>, text: &str, base_dir: PathBuf) -> PyResult<CaseResult> {
+    let case = Case::from_toml_str(text).map_err(to_py)?;
+    let outcome = py.detach(|| case.run(&base_dir)).map_err(to_py)?;
+    result(&case, outcome)
+}
+
+/// Run a case given as TOML text (any method of docs/case-schema.md); relative file paths
+/// in it (gap maps) are resolved against `base_dir` (default: the working directory).
+#[pyfunction]
+#[pyo3(signature = (text, base_dir = None))]
+pub fn run_toml(py: Python<'_>, text: &str, base_dir: Option<PathBuf>) -> PyResult<CaseResult> {
+    run_text(py, text, base_dir.unwrap_or_else(|| PathBuf::from(".")))
+}
+
+/// Run a case file (TOML); paths in it are relative to its folder, as for `kontakt solve`.
+#[pyfunction]
+pub fn run_file(py: Python<'_>, path: PathBuf) -> PyResult<CaseResult> {
+    let text = std::fs::read_to_string(&path).map_err(|e| {
+        invalid(
+            "path",
+            path.display(),
+            &format!("a readable case file ({e})"),
+        )
+    })?;
+    let base = path
+        .parent()
+        .map_or_else(|| PathBuf::from("."), Path::to_path_buf);
+    run_text(py, &text, base)
+}
+
+/// Run a case given as a dict with the keys of a case file (nested dicts for tables;
+/// degrees, mm, N, MPa as in the files; `float("inf")` for a flat radius).
+#[pyfunction]
+#[pyo3(signature = (case, base_dir = None))]
+pub fn run_case(
+    py: Python<'_>,
+    case: &Bound<'_, PyDict>,
+    base_dir: Option<PathBuf>,
+) -> PyResult<CaseResult> {
+    let table = match to_toml(case.as_any(), "case")? {
+        toml::Value::Table(t) => t,
+        _ => return Err(invalid("case", "not a table", "a dict")),
+    };
+    let text = toml::to_string(&table)
+        .map_err(|e| invalid("case", e, "a dict that TOML can represent"))?;
+    run_text(py, &text, base_dir.unwrap_or_else(|| PathBuf::from(".")))
+}
+
+/// A Python value as a TOML value; `key` names it in errors.
+fn to_toml(v: &Bound<'_, PyAny>, key: &str) -> PyResult<toml::Value> {
+    if v.is_instance_of::<PyBool>() {
+        return Ok(toml::Value::Boolean(v.extract()?));
+    }
+    if v.is_instance_of::<PyInt>() {
+        return Ok(toml::Value::Integer(v.extract().map_err(|_| {
+            invalid(key, v, "an integer that fits in 64 bits")
+        })?));
+    }
+    if v.is_instance_of::<PyFloat>() {
+        return Ok(toml::Value::Float(v.extract()?));
+    }
+    if v.is_instance_of::<PyString>() {
+        return Ok(toml::Value::String(v.extract()?));
+    }
+    if let Ok(d) = v.cast::<PyDict>() {
+        let mut t = toml::Table::new();
+        for (k, val) in d.iter() {
+            let k: String = k.extract().map_err(|_| invalid(key, &k, "string keys"))?;
+            let sub = format!("{key}.{k}");
+            if val.is_none() {
+                continue; // an absent optional key
+            }
+            t.insert(k, to_toml(&val, &sub)?);
+        }
+        return Ok(toml::Value::Table(t));
+    }
+    if v.is_instance_of::<PyList>() || v.is_instance_of::<PyTuple>() {
+        let items: Vec<Bound<'_, PyAny>> = v.extract()?;
+        return items
+            .iter()
+            .enumerate()
+            .map(|(i, x)| to_toml(x, &format!("{key}[{i}]")))
+            .collect::<PyResult<Vec<_>>>()
+            .map(toml::Value::Array);
+    }
+    // NumPy scalars and arrays: through their Python equivalents.
+    if v.hasattr("tolist")? {
+        let plain = v.call_method0("tolist")?;
+        if !plain.is(v) {
+            return to_toml(&plain, key);
+        }
+    }
+    Err(invalid(
+        key,
+        v.get_type().name()?,
+        "a bool, int, float, str, list, tuple or dict",
+    ))
+}

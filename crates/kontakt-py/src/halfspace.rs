@@ -1,0 +1,329 @@
+//! The coupled elastic half-space solver on a gap or height map given as a NumPy array,
+//! in the vocabulary of ContactMechanics / tamaas (`nb_grid_pts`, `physical_sizes`,
+//! `external_force`, `mean_pressure`, `offset`).
+
+use crate::case::Fields;
+use crate::errors::{invalid, to_py_with};
+use crate::hertz::Material;
+use kontakt::gap::{GapMap, MapKind};
+use kontakt::halfspace::Boundary;
+use kontakt::material::ElasticMaterial;
+use kontakt_case::pimp_case::{BemSpec, GeometrySpec, MaterialSpec, PimpCase, PimpLoad, PimpSpec};
+use numpy::{AllowTypeChange, IntoPyArray, PyArray1, PyArray2, PyArrayLike2};
+use pyo3::prelude::*;
+
+/// An elastic half-space problem on a uniform grid: `nb_grid_pts = (nx, ny)` cells over
+/// `physical_sizes = (sx, sy)` [mm] (cell size sx/nx by sy/ny), `boundary` "free" (an
+/// isolated contact, zero-padded FFT) or "periodic" (one period of a rough surface).
+/// Elasticity: `e_star` [MPa] (the contact modulus) or two materials (steel by default).
+#[pyclass(frozen, module = "kontakt._kontakt")]
+pub struct HalfSpace {
+    nb_grid_pts: [usize; 2],
+    physical_sizes: [f64; 2],
+    boundary: Boundary,
+    materials: [ElasticMaterial; 2],
+}
+
+#[pymethods]
+impl HalfSpace {
+    #[new]
+    #[pyo3(signature = (nb_grid_pts, physical_sizes, e_star = None, material1 = None, material2 = None, boundary = "free"))]
+    fn new(
+        nb_grid_pts: [usize; 2],
+        physical_sizes: [f64; 2],
+        e_star: Option<f64>,
+        material1: Option<Material>,
+        material2: Option<Material>,
+        boundary: &str,
+    ) -> PyResult<Self> {
+        for (i, &n) in nb_grid_pts.iter().enumerate() {
+            if !(8..=4096).contains(&n) {
+                return Err(invalid(&format!("nb_grid_pts[{i}]"), n, "8 <= n <= 4096"));
+            }
+        }
+        for (i, &s) in physical_sizes.iter().enumerate() {
+            if !(s.is_finite() && s > 0.0) {
+                return Err(invalid(
+                    &format!("physical_sizes[{i}]"),
+                    s,
+                    "a finite size > 0 mm",
+                ));
+            }
+        }
+        let boundary = match boundary {
+            "free" => Boundary::Free,
+            "periodic" => Boundary::Periodic,
+            other => return Err(invalid("boundary", other, "\"free\" or \"periodic\"")),
+        };
+        let materials = match (e_star, material1, material2) {
+            (Some(e), None, None) => {
+                // Two identical bodies with nu = 0 and E = 2 E* have exactly the contact
+                // modulus E*: 1/E* = 1/(2E*) + 1/(2E*).
+                let m = ElasticMaterial::new(2.0 * e, 0.0)
+                    .map_err(|_| invalid("e_star", e, "a finite contact modulus > 0 MPa"))?;
+                [m, m]
+            }
+            (None, m1, m2) => [
+                m1.map_or(ElasticMaterial::STEEL, |m| m.inner),
+                m2.map_or(ElasticMaterial::STEEL, |m| m.inner),
+            ],
+            _ => {
+                return Err(invalid(
+                    "e_star",
+                    "given with materials",
+                    "either e_star or material1/material2, not both",
+                ));
+            }
+        };
+        Ok(HalfSpace {
+            nb_grid_pts,
+            physical_sizes,
+            boundary,
+            materials,
+        })
+    }
+
+    /// Grid points (nx, ny).
+    #[getter]
+    fn nb_grid_pts(&self) -> (usize, usize) {
+        (self.nb_grid_pts[0], self.nb_grid_pts[1])
+    }
+
+    /// Physical sizes (sx, sy) [mm].
+    #[getter]
+    fn physical_sizes(&self) -> (f64, f64) {
+        (self.physical_sizes[0], self.physical_sizes[1])
+    }
+
+    /// Contact modulus E* [MPa].
+    #[getter]
+    fn e_star(&self) -> f64 {
+        kontakt::material::effective_modulus(&self.materials[0], &self.materials[1])
+    }
+
+    /// Solve the contact of the map `gap` [mm], an array of shape (ny, nx) (row j is y,
+    /// column i is x; any float dtype and memory order; converted to float64), which is the
+    /// undeformed gap (`values="gap"`) or the combined surface height (`values="height"`,
+    /// gap = max(h) - h). Load: exactly one of `external_force` [N], `mean_pressure` [MPa]
+    /// (force over the whole domain sx·sy, as in tamaas) or `offset` [mm] (the rigid
+    /// approach from the gap's zero level). The solver stops at the relative residual
+    /// `tolerance` (1e-14..=1e-2) or after `max_iterations`; `threads` FFT threads (all
+    /// cores when None). The GIL is released during the solve.
+    #[pyo3(signature = (gap, *, external_force = None, mean_pressure = None, offset = None, values = "gap", tolerance = 1e-8, max_iterations = 1000, threads = None))]
+    #[allow(clippy::too_many_arguments)] // the keyword arguments of a Python method
+    fn solve(
+        &self,
+        py: Python<'_>,
+        gap: PyArrayLike2<'_, f64, AllowTypeChange>,
+        external_force: Option<f64>,
+        mean_pressure: Option<f64>,
+        offset: Option<f64>,
+        values: &str,
+        tolerance: f64,
+        max_iterations: usize,
+        threads: Option<usize>,
+    ) -> PyResult<HalfSpaceResult> {
+        let [nx, ny] = self.nb_grid_pts;
+        let a = gap.as_array();
+        if a.shape() != [ny, nx] {
+            return Err(invalid(
+                "gap.shape",
+                format!("{:?}", a.shape()),
+                &format!("({ny}, {nx}), i.e. (ny, nx) for nb_grid_pts = ({nx}, {ny})"),
+            ));
+        }
+        let kind = match values {
+            "gap" => MapKind::Gap,
+            "height" => MapKind::Height,
+            other => return Err(invalid("values", other, "\"gap\" or \"height\"")),
+        };
+        let [sx, sy] = self.physical_sizes;
+        let load = match (external_force, mean_pressure, offset) {
+            (Some(f), None, None) => PimpLoad {
+                force_n: Some(f),
+                approach_mm: None,
+            },
+            (None, Some(p), None) => {
+                if !(p.is_finite() && p > 0.0) {
+                    return Err(invalid("mean_pressure", p, "a finite pressure > 0 MPa"));
+                }
+                PimpLoad {
+                    force_n: Some(p * sx * sy),
+                    approach_mm: None,
+                }
+            }
+            (None, None, Some(d)) => PimpLoad {
+                force_n: None,
+                approach_mm: Some(d),
+            },
+            _ => {
+                return Err(invalid(
+                    "external_force, mean_pressure, offset",
+                    "none or more than one",
+                    "exactly one of external_force [N], mean_pressure [MPa] or offset [mm]",
+                ));
+            }
+        };
+        // Row-major, x fastest, whatever the array's memory order.
+        let flat: Vec<f64> = a.iter().copied().collect();
+        let spacing = [sx / nx as f64, sy / ny as f64];
+        let map = GapMap::new(nx, ny, spacing, flat, kind).map_err(|e| {
+            to_py_with(e, |f| match f {
+                "gap_map" => Some("gap".into()),
+                _ => None,
+            })
+        })?;
+        let spec = BemSpec {
+            tolerance,
+            max_iterations,
+            threads,
+            ..BemSpec::default()
+        };
+        let material = |m: &ElasticMaterial| MaterialSpec {
+            e_mpa: m.youngs_modulus(),
+            nu: m.poisson_ratio(),
+        };
+        let case = PimpCase {
+            name: None,
+            method: "bem".into(),
+            geometry: GeometrySpec::Map {
+                file: "(numpy array)".into(),
+                spacing_mm: spacing,
+                values: kind,
+                boundary: self.boundary,
+            },
+            pimp: PimpSpec::default(),
+            bem: Some(spec),
+            body1: material(&self.materials[0]),
+            body2: material(&self.materials[1]),
+            load,
+        };
+        let outcome = py
+            .detach(|| kontakt_case::run_bem_case_on_map(&case, map))
+            .map_err(|e| {
+                to_py_with(e, |f| match f {
+                    "load.force_n" if mean_pressure.is_some() => Some("mean_pressure".into()),
+                    "load.force_n" => Some("external_force".into()),
+                    "load.approach_mm" => Some("offset".into()),
+                    "bem.tolerance" => Some("tolerance".into()),
+                    "bem.max_iterations" => Some("max_iterations".into()),
+                    "bem.threads" => Some("threads".into()),
+                    _ => None,
+                })
+            })?;
+        let report = serde_json::to_string(&outcome.report)
+            .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(format!("report: {e}")))?;
+        let s = &outcome.solution;
+        let fields = Fields::of(s, Some(&s.detail.displacement), Some(&s.detail.gap));
+        Ok(HalfSpaceResult {
+            report,
+            fields,
+            force: s.force,
+            offset: s.approach,
+            max_pressure: s.max_pressure,
+            mean_pressure: s.force / (sx * sy),
+            contact_area: s.contact_area,
+            iterations: s.status.iterations,
+            residual: s.status.residual,
+            converged: s.status.converged(),
+        })
+    }
+}
+
+/// A solved half-space contact: fields of shape (ny, nx) and the totals. Lengths mm, force
+/// N, pressure MPa.
+#[pyclass(frozen, module = "kontakt._kontakt")]
+pub struct HalfSpaceResult {
+    report: String,
+    fields: Fields,
+    force: f64,
+    offset: f64,
+    max_pressure: f64,
+    mean_pressure: f64,
+    contact_area: f64,
+    iterations: usize,
+    residual: f64,
+    converged: bool,
+}
+
+#[pymethods]
+impl HalfSpaceResult {
+    /// Contact pressure per cell [MPa], shape (ny, nx) (tamaas' traction).
+    #[getter]
+    fn pressure<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
+        self.fields.pressure.clone().into_pyarray(py)
+    }
+    /// Elastic displacement of the two-body system per cell [mm], shape (ny, nx).
+    #[getter]
+    fn displacement<'py>(&self, py: Python<'py>) -> Option<Bound<'py, PyArray2<f64>>> {
+        self.fields.displacement.clone().map(|a| a.into_pyarray(py))
+    }
+    /// Undeformed gap per cell [mm] (after `values="height"`: max(h) - h), shape (ny, nx).
+    #[getter]
+    fn gap<'py>(&self, py: Python<'py>) -> Option<Bound<'py, PyArray2<f64>>> {
+        self.fields.gap.clone().map(|a| a.into_pyarray(py))
+    }
+    /// Cell centres along x [mm].
+    #[getter]
+    fn x<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        PyArray1::from_slice(py, &self.fields.x)
+    }
+    /// Cell centres along y [mm].
+    #[getter]
+    fn y<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        PyArray1::from_slice(py, &self.fields.y)
+    }
+    /// Normal force [N].
+    #[getter]
+    fn force(&self) -> f64 {
+        self.force
+    }
+    /// Rigid approach from the gap's zero level [mm].
+    #[getter]
+    fn offset(&self) -> f64 {
+        self.offset
+    }
+    /// Largest pressure [MPa].
+    #[getter]
+    fn max_pressure(&self) -> f64 {
+        self.max_pressure
+    }
+    /// Force over the whole domain sx·sy [MPa] (tamaas' mean pressure).
+    #[getter]
+    fn mean_pressure(&self) -> f64 {
+        self.mean_pressure
+    }
+    /// Area of the loaded cells [mm²].
+    #[getter]
+    fn contact_area(&self) -> f64 {
+        self.contact_area
+    }
+    /// Conjugate-gradient iterations.
+    #[getter]
+    fn iterations(&self) -> usize {
+        self.iterations
+    }
+    /// Final relative residual.
+    #[getter]
+    fn residual(&self) -> f64 {
+        self.residual
+    }
+    /// Whether the residual reached the tolerance (always True: a failed solve raises
+    /// ConvergenceError).
+    #[getter]
+    fn converged(&self) -> bool {
+        self.converged
+    }
+    /// The record `kontakt solve` writes for the same map as a `method = "bem"` case with
+    /// `[geometry] kind = "map"` (`--json`), as a dict.
+    fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        py.import("json")?
+            .call_method1("loads", (self.report.as_str(),))
+    }
+    fn __repr__(&self) -> String {
+        format!(
+            "HalfSpaceResult(force={:.6} N, offset={:.6e} mm, max_pressure={:.6} MPa, contact_area={:.6e} mm², iterations={})",
+            self.force, self.offset, self.max_pressure, self.contact_area, self.iterations
+        )
+    }
+}
