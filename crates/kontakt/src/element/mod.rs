@@ -35,6 +35,7 @@
 //!    the force still computed (continuous for the integrator) and the reason in
 //!    [`ElementResult::message`]: never a silent huge force.
 
+mod pimp_path;
 pub mod study;
 
 use crate::error::{Error, Result};
@@ -47,7 +48,7 @@ use crate::geometry::{
 use crate::halfspace::{Bem, BemOptions};
 use crate::hertz::{HertzPointContact, PointGeometry};
 use crate::material::ElasticMaterial;
-use crate::pimp::{Pimp, PimpOptions};
+use crate::pimp::{GapSampling, Pimp, PimpOptions, PimpTracker};
 use nalgebra::{Isometry3, Matrix6, Point3, Unit, UnitQuaternion, Vector3};
 
 /// Which model solves the normal problem.
@@ -177,6 +178,8 @@ pub struct ContactElement {
     last_point: Option<Point3<f64>>,
     /// The Hertz back-end's pressure samples (allocated once).
     hertz_pressure: Vec<f64>,
+    /// The PimP back-end's grid and buffers, kept between calls (`pimp::PimpTracker`).
+    tracker: Option<PimpTracker>,
 }
 
 /// Cells a side of the Hertz back-end's pressure samples for the friction integral.
@@ -256,6 +259,13 @@ impl ContactElement {
                 Some(Bem::new(m1, m2, o)?.with_estimate(crate::pimp::zone_estimate(m1, m2)?)),
             ),
         };
+        let tracker = match pimp {
+            // A fixed extent keeps the full solve on every call.
+            Some(p) if p.options().extent.is_none() => {
+                Some(PimpTracker::new(p, GapSampling::default())?)
+            }
+            _ => None,
+        };
         Ok(ContactElement {
             spec,
             law,
@@ -263,6 +273,7 @@ impl ContactElement {
             bem,
             last_point: None,
             hertz_pressure: vec![0.0; HERTZ_CELLS * HERTZ_CELLS],
+            tracker,
         })
     }
 
@@ -405,6 +416,9 @@ impl ContactElement {
     /// Forget the last contact point (the next search starts from scratch).
     pub fn reset(&mut self) {
         self.last_point = None;
+        if let Some(t) = &mut self.tracker {
+            t.reset();
+        }
     }
 
     /// Evaluate the contact at the poses `pose1`, `pose2` and twists `twist1`, `twist2` of
@@ -481,6 +495,25 @@ impl ContactElement {
                     force: h.force,
                     max_pressure: h.max_pressure,
                     contact_area: h.contact_area,
+                    iterations: 0,
+                }
+            }
+            Backend::Pimp(_) if self.tracker.is_some() => {
+                // The grid and buffers kept between calls, the gap interpolated from a
+                // stencil of exact rays (docs/mbs.md).
+                let t = self
+                    .tracker
+                    .as_mut()
+                    .ok_or_else(|| Error::invalid("backend", "pimp", "a planned element"))?
+                    .evaluate(&gap, approach)?;
+                FieldView {
+                    grid: t.grid,
+                    pressure: t.pressure,
+                    orientation: t.orientation,
+                    centroid: t.centroid,
+                    force: t.force,
+                    max_pressure: t.max_pressure,
+                    contact_area: t.contact_area,
                     iterations: 0,
                 }
             }
