@@ -4,12 +4,12 @@
 //! time step), with the Hertz, PimP (64 × 64) and half-space (64 × 64) back-ends; and the
 //! contact-point search alone. Figures are recorded in docs/PERFORMANCE.md.
 
-use criterion::{Criterion, criterion_group, criterion_main};
+use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use kontakt::bearing::{RollerRib, RollerRibSpec};
 use kontakt::element::{Backend, ContactElement, ElementSpec};
 use kontakt::geometry::{Twist, find_contact};
 use kontakt::halfspace::BemOptions;
-use kontakt::pimp::PimpOptions;
+use kontakt::pimp::{GapSampling, Pimp, PimpOptions, PimpTracker, SurfacePairGap};
 use nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
 use std::hint::black_box;
 
@@ -58,6 +58,114 @@ fn bench_element(c: &mut Criterion) {
             k += 1;
             let p1 = placed(&pose(k));
             find_contact(black_box(&p1), &rr.rib, Some(guess)).expect("contact")
+        })
+    });
+    // The PimP tracker alone on a fixed gap (gap sampling, pressure, zone statistics), by
+    // grid size and sampling.
+    let steel = kontakt::material::ElasticMaterial::STEEL;
+    let pressed = |delta: f64| {
+        let shift = Isometry3::from_parts(Translation3::from(-n * delta), UnitQuaternion::identity());
+        let face =
+            kontakt::geometry::PlacedSurface::new(rr.face.surface.clone(), shift * rr.face.pose)
+                .expect("placed");
+        let contact = find_contact(&face, &rr.rib, Some(rr.contact.point)).expect("contact");
+        SurfacePairGap::new(face, rr.rib.clone(), contact).expect("gap")
+    };
+    let gap = pressed(0.0042);
+    {
+        use kontakt::gap::GapSource;
+        let grid = PimpTracker::new(Pimp::new(steel, steel, PimpOptions::default()).expect("p"), GapSampling::Exact)
+            .map(|mut t| { t.evaluate(&gap, 0.0042).expect("e"); *t.grid() })
+            .expect("t");
+        let mut out = vec![0.0; grid.len()];
+        let rot = gap.curvature().orientation;
+        group.bench_function("dbg_gap_sample_64", |b| {
+            b.iter(|| gap.sample(black_box(&grid), rot, &mut out).expect("s"))
+        });
+        let mut one = [0.0];
+        group.bench_function("dbg_gap_sample_points_55", |b| {
+            b.iter(|| {
+                for k in 0..55 {
+                    let x = grid.x(k);
+                    let y = grid.y(k % 5 * 10);
+                    let g = kontakt::geometry::Grid2::new([x - 1e-9, x + 1e-9], [y - 1e-9, y + 1e-9], 1, 1).expect("g");
+                    gap.sample(black_box(&g), rot, &mut one).expect("s");
+                }
+            })
+        });
+    }
+    for cells in [32, 64, 128] {
+        for (label, sampling) in [
+            ("interpolated", GapSampling::Interpolated),
+            ("exact", GapSampling::Exact),
+        ] {
+            let pimp = Pimp::new(
+                steel,
+                steel,
+                PimpOptions {
+                    cells: [cells, cells],
+                    ..PimpOptions::default()
+                },
+            )
+            .expect("pimp");
+            let mut t = PimpTracker::new(pimp, sampling).expect("tracker");
+            group.bench_function(format!("tracker_{label}_{cells}"), |b| {
+                b.iter(|| t.evaluate(black_box(&gap), 0.0042).expect("evaluate").force)
+            });
+        }
+        // The whole element at this grid size (contact search, gap, pressure, friction).
+        let mut spec = ElementSpec::new(rr.face.clone(), rr.rib.clone()).expect("spec");
+        spec.backend = Backend::Pimp(PimpOptions {
+            cells: [cells, cells],
+            ..PimpOptions::default()
+        });
+        let mut e = ContactElement::new(spec).expect("element");
+        let mut k = 0u64;
+        group.bench_function(format!("evaluate_pimp_fast_{cells}"), |b| {
+            b.iter(|| {
+                k += 1;
+                e.evaluate(black_box(&pose(k)), &id, &spin, &Twist::zero())
+                    .expect("evaluate")
+            })
+        });
+    }
+    group.finish();
+
+    // A 10 000-step trajectory: the roller slides 0.14 mm across the contact and back, the
+    // approach breathes between 3.6 and 4.8 µm and the roller tilts by ±0.05°, each step
+    // about 0.1 % of the contact width; throughput in evaluations per second.
+    let mut group = c.benchmark_group("element_trajectory");
+    group.sample_size(10);
+    group.throughput(Throughput::Elements(10_000));
+    let tilt_axis = nalgebra::Unit::new_normalize(across.cross(&n));
+    let trajectory: Vec<Isometry3<f64>> = (0..10_000)
+        .map(|i| {
+            let s = i as f64 / 10_000.0 * std::f64::consts::TAU;
+            let delta = 0.0042 + 0.0006 * s.sin();
+            let slide = 0.07 * (1.0 - s.cos());
+            let tilt = 0.05f64.to_radians() * (2.0 * s).sin();
+            let rot = UnitQuaternion::from_axis_angle(&tilt_axis, tilt);
+            let c = rr.contact.point.coords;
+            // Tilt about the contact point, then shift.
+            Isometry3::from_parts(
+                Translation3::from(c - rot * c - n * delta + across * slide),
+                rot,
+            )
+        })
+        .collect();
+    let mut spec = ElementSpec::new(rr.face.clone(), rr.rib.clone()).expect("spec");
+    spec.backend = Backend::Pimp(PimpOptions::default());
+    let mut e = ContactElement::new(spec).expect("element");
+    group.bench_function("pimp_64_10000_steps", |b| {
+        b.iter(|| {
+            let mut total = 0.0;
+            for p in &trajectory {
+                total += e
+                    .evaluate(black_box(p), &id, &spin, &Twist::zero())
+                    .expect("evaluate")
+                    .normal_force;
+            }
+            total
         })
     });
     group.finish();

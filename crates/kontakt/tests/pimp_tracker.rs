@@ -95,3 +95,14 @@ fn interpolated_gap_matches_exact_ray_casting_on_all_pairings() {
     assert!(worst_f < 1e-4, "{worst_f}");
     assert!(worst_p < 1e-4, "{worst_p}");
 }
+
+#[test]
+fn debug_tracker_states() {
+    let rr = roller_rib("torus-torus-14");
+    let gap = pressed_gap(&rr, 0.0042);
+    let mut t = PimpTracker::new(pimp(), GapSampling::Interpolated).unwrap();
+    for _ in 0..6 {
+        let f = t.evaluate(&gap, 0.0042).unwrap().force;
+        println!("F {f} lambda {:?} resizes {} fading {} grid {:?}", t.grid_factor(), t.resizes(), t.fading(), t.grid());
+    }
+}

@@ -69,8 +69,9 @@ pub enum GapSampling {
 /// buffers.
 #[derive(Debug, Clone, Copy)]
 pub struct TrackedField<'a> {
-    /// The grid \[mm\] in the principal frame of the gap (of the dominant grid during a
-    /// fade).
+    /// The bounding box of the loaded cells of the grid \[mm\] (the dominant grid during a
+    /// fade), in the principal frame of the gap: the cells of the tracked grid that carry
+    /// pressure, and no others.
     pub grid: Grid2,
     /// Pressure per cell \[MPa\] on `grid`.
     pub pressure: &'a [f64],
@@ -106,6 +107,9 @@ struct Slot {
     sampled: SampledGap,
     pressure: Vec<f64>,
     stats: Stats,
+    /// The bounding box of the loaded cells and their pressure (row-major).
+    crop: Grid2,
+    cropped: Vec<f64>,
 }
 
 /// PimP on a grid kept between calls (see the module docs). Plan once per contact element;
@@ -155,6 +159,8 @@ impl PimpTracker {
             },
             pressure: vec![0.0; nx * ny],
             stats: Stats::default(),
+            crop: grid,
+            cropped: Vec::with_capacity(nx * ny),
         };
         let singular = || Error::Geometry {
             field: "stencil".into(),
@@ -343,8 +349,8 @@ impl PimpTracker {
         };
         let slot = &self.slots[view];
         Ok(TrackedField {
-            grid: slot.sampled.grid,
-            pressure: &slot.pressure,
+            grid: slot.crop,
+            pressure: &slot.cropped,
             orientation: curvature.orientation,
             centroid: [blend(|s| s.centroid[0]), blend(|s| s.centroid[1])],
             force: blend(|s| s.force),
@@ -390,27 +396,21 @@ impl PimpTracker {
                 }
             }
             GapSampling::Interpolated => {
-                // Exact rays at the Chebyshev-Lobatto nodes of the grid's extent, one
-                // point each (a 1 × 1 grid centred on it).
-                let e = 1e-9 * (half[0] + half[1]);
-                for k in 0..NODES_X {
-                    let x = half[0] * node(k, NODES_X);
-                    for l in 0..NODES_Y {
-                        let y = half[1] * node(l, NODES_Y);
-                        let point = Grid2::new([x - e, x + e], [y - e, y + e], 1, 1)?;
-                        let mut g = [0.0];
-                        source.sample(&point, rotation, &mut g)?;
-                        if !g[0].is_finite() {
-                            return Err(Error::Geometry {
-                                field: "surfaces".into(),
-                                reason: format!(
-                                    "a ray of the gap stencil misses a surface at ({x:.4e}, \
-                                     {y:.4e}) mm in the contact plane: use GapSampling::Exact"
-                                ),
-                            });
-                        }
-                        self.stencil[(k, l)] = g[0];
-                    }
+                // Exact rays at the Chebyshev-Lobatto nodes of the grid's extent.
+                let xs: [f64; NODES_X] = std::array::from_fn(|k| half[0] * node(k, NODES_X));
+                let ys: [f64; NODES_Y] = std::array::from_fn(|l| half[1] * node(l, NODES_Y));
+                // Column-major storage of F[k][l] is out[l * NODES_X + k].
+                source.sample_points(&xs, &ys, rotation, self.stencil.as_mut_slice())?;
+                if let Some(bad) = self.stencil.iter().position(|g| !g.is_finite()) {
+                    return Err(Error::Geometry {
+                        field: "surfaces".into(),
+                        reason: format!(
+                            "a ray of the gap stencil misses a surface at ({:.4e}, {:.4e}) mm \
+                             in the contact plane: use GapSampling::Exact",
+                            xs[bad % NODES_X],
+                            ys[bad / NODES_X]
+                        ),
+                    });
                 }
                 // Monomial coefficients c[i][j] of u^i v^j: C = V_x⁻¹ F V_y⁻ᵀ.
                 let mut c = self.vinv_x * self.stencil * self.vinv_y.transpose();
@@ -458,22 +458,36 @@ impl PimpTracker {
         }
         let (nx, ny) = (grid.nx(), grid.ny());
         let (mut total, mut cells, mut pmax) = (0.0, 0usize, 0.0f64);
-        let (mut mx, mut my) = (0.0, 0.0);
+        let (mut mu, mut my) = (0.0, 0.0);
         let (mut i0, mut i1, mut j0, mut j1) = (usize::MAX, 0, usize::MAX, 0);
         for (j, row) in slot.pressure.chunks_exact(nx).enumerate() {
-            let (mut rs, mut rx, mut rn, mut rmax) = (0.0, 0.0, 0.0, 0.0f64);
-            for (i, &p) in row.iter().enumerate() {
-                rs += p;
-                rx += p * grid.x(i);
-                rn += if p > 0.0 { 1.0 } else { 0.0 };
-                rmax = rmax.max(p);
+            // Four independent lanes so the sums vectorise: Σp, Σp u, loaded cells, max p.
+            let (mut s4, mut u4, mut n4, mut m4) = ([0.0f64; 4], [0.0f64; 4], [0.0f64; 4], [0.0f64; 4]);
+            let chunks = row.chunks_exact(4);
+            let rest = chunks.remainder();
+            for (c, uc) in chunks.zip(self.u.chunks_exact(4)) {
+                for l in 0..4 {
+                    let p = c[l];
+                    s4[l] += p;
+                    u4[l] += p * uc[l];
+                    n4[l] += if p > 0.0 { 1.0 } else { 0.0 };
+                    m4[l] = if p > m4[l] { p } else { m4[l] };
+                }
             }
+            for (&p, &uc) in rest.iter().zip(&self.u[nx - rest.len()..]) {
+                s4[0] += p;
+                u4[0] += p * uc;
+                n4[0] += if p > 0.0 { 1.0 } else { 0.0 };
+                m4[0] = if p > m4[0] { p } else { m4[0] };
+            }
+            let rn = (n4[0] + n4[1]) + (n4[2] + n4[3]);
             if rn > 0.0 {
+                let rs = (s4[0] + s4[1]) + (s4[2] + s4[3]);
                 total += rs;
-                mx += rx;
+                mu += (u4[0] + u4[1]) + (u4[2] + u4[3]);
                 my += rs * grid.y(j);
                 cells += rn as usize;
-                pmax = pmax.max(rmax);
+                pmax = pmax.max(m4[0].max(m4[1]).max(m4[2].max(m4[3])));
                 j0 = j0.min(j);
                 j1 = j1.max(j);
                 if let Some(first) = row.iter().position(|&p| p > 0.0) {
@@ -503,10 +517,22 @@ impl PimpTracker {
             force: total * da,
             max_pressure: pmax,
             area: cells as f64 * da,
-            centroid: [mx / total, my / total],
+            centroid: [mu * hx / total, my / total],
             reach: [reach_x, reach_y],
             touches: [i0 == 0 || i1 + 1 == nx, j0 == 0 || j1 + 1 == ny],
         };
+        // The loaded cells' bounding box, for the friction integral (same cell centres).
+        let (dx, dy) = (grid.dx(), grid.dy());
+        slot.crop = Grid2::new(
+            [grid.x(i0) - 0.5 * dx, grid.x(i1) + 0.5 * dx],
+            [grid.y(j0) - 0.5 * dy, grid.y(j1) + 0.5 * dy],
+            i1 - i0 + 1,
+            j1 - j0 + 1,
+        )?;
+        slot.cropped.clear();
+        for row in slot.pressure.chunks_exact(nx).skip(j0).take(j1 - j0 + 1) {
+            slot.cropped.extend_from_slice(&row[i0..=i1]);
+        }
         Ok(())
     }
 }
