@@ -34,6 +34,10 @@ use nalgebra::SMatrix;
 /// Stencil points along the grid's x axis (the zone's long axis) of the interpolated gap:
 /// Chebyshev-Lobatto nodes, polynomial degree `NODES_X − 1`.
 pub const NODES_X: usize = 11;
+/// Even and odd coefficients of the polynomial along x.
+const EVEN: usize = NODES_X.div_ceil(2);
+const ODD: usize = NODES_X / 2;
+
 /// Stencil points along the grid's y axis (polynomial degree `NODES_Y − 1`).
 pub const NODES_Y: usize = 5;
 
@@ -110,7 +114,41 @@ struct Slot {
     /// The bounding box of the loaded cells and their pressure (row-major).
     crop: Grid2,
     cropped: Vec<f64>,
+    /// Polynomial coefficients of the interpolated gap (corrected mode: with the bedding's
+    /// correction), `u^i v^j`.
+    coef: SMatrix<f64, NODES_X, NODES_Y>,
+    /// Per row: the loaded columns `[first, last + 1)` of the last evaluation (`(0, 0)`:
+    /// none), and this call's.
+    rows: Vec<Row>,
+    /// Calls since every row was evaluated in full.
+    since_full: usize,
+    /// The grid factor of the last evaluation.
+    lambda: [f64; 2],
+    /// Whether the cells outside the rows' windows hold the gap (`effective`) of this
+    /// call (false when only windows were evaluated).
+    complete: bool,
 }
+
+/// One row's evaluation.
+#[derive(Debug, Clone, Copy, Default)]
+struct Row {
+    /// First evaluated column (the window is `[lo, nx − lo)`); `usize::MAX`: not evaluated.
+    lo: usize,
+    /// Loaded columns `[first, last + 1)`, `(0, 0)` when none.
+    first: usize,
+    end: usize,
+    /// Σp, Σp u, loaded cells, max p.
+    sum: f64,
+    sum_u: f64,
+    cells: f64,
+    max: f64,
+}
+
+/// Rows beyond the last zone and cells beyond its row extents evaluated (margin).
+const MARGIN: usize = 2;
+/// Every this many calls, every cell is evaluated (a patch appearing away from the zone is
+/// found then).
+const FULL_EVERY: usize = 16;
 
 /// PimP on a grid kept between calls (see the module docs). Plan once per contact element;
 /// `evaluate` allocates nothing once its buffers exist.
@@ -161,6 +199,11 @@ impl PimpTracker {
             stats: Stats::default(),
             crop: grid,
             cropped: Vec::with_capacity(nx * ny),
+            coef: SMatrix::zeros(),
+            rows: vec![Row::default(); ny],
+            since_full: usize::MAX,
+            lambda: [0.0; 2],
+            complete: true,
         };
         let singular = || Error::Geometry {
             field: "stencil".into(),
@@ -241,6 +284,9 @@ impl PimpTracker {
     pub fn reset(&mut self) {
         self.lambda = None;
         self.fade = None;
+        for slot in &mut self.slots {
+            slot.since_full = usize::MAX;
+        }
     }
 
     /// The PimP field of `source` at the rigid approach `approach` \[mm\] (> 0) on the
@@ -384,6 +430,12 @@ impl PimpTracker {
         slot.sampled.rotation = rotation;
         slot.sampled.bedding = bedding;
         slot.sampled.start_unit = start_unit;
+        slot.complete = true;
+        if slot.lambda != lambda {
+            // Other cells: the last zone's rows do not apply.
+            slot.since_full = usize::MAX;
+            slot.lambda = lambda;
+        }
         let out = &mut slot.sampled.effective;
         match self.sampling {
             GapSampling::Exact => {
@@ -416,6 +468,12 @@ impl PimpTracker {
                 let mut c = self.vinv_x * self.stencil * self.vinv_y.transpose();
                 // The corrected law's d_a x² = d_a h_x² u².
                 c[(2, 0)] += d_a * half[0] * half[0];
+                slot.coef = c;
+                if matches!(bedding, Bedding::Corrected { .. }) {
+                    // Evaluated row by row where the zone can be (`press`).
+                    slot.complete = false;
+                    return Ok(());
+                }
                 for (row, &v) in out.chunks_exact_mut(nx).zip(&self.v) {
                     // Row coefficients a_i = Σ_j c[i][j] v^j.
                     let mut a = [0.0; NODES_X];
@@ -426,12 +484,29 @@ impl PimpTracker {
                         }
                         *ai = s;
                     }
-                    for (o, &u) in row.iter_mut().zip(&self.u) {
-                        let mut s = a[NODES_X - 1];
-                        for &ai in a[..NODES_X - 1].iter().rev() {
-                            s = s * u + ai;
+                    // The cells lie symmetrically about u = 0: a(±u) = E(u²) ± u O(u²)
+                    // gives two cells for one evaluation of the even and odd parts.
+                    let even: [f64; EVEN] = std::array::from_fn(|m| a[2 * m]);
+                    let odd: [f64; ODD] = std::array::from_fn(|m| a[2 * m + 1]);
+                    let pairs = nx / 2;
+                    let (left, rest) = row.split_at_mut(pairs);
+                    let (middle, right) = rest.split_at_mut(nx - 2 * pairs);
+                    if let Some(m) = middle.first_mut() {
+                        *m = a[0];
+                    }
+                    let positive = &self.u[nx - pairs..];
+                    for ((l, r), &u) in left.iter_mut().rev().zip(right.iter_mut()).zip(positive) {
+                        let w = u * u;
+                        let mut e = even[EVEN - 1];
+                        for &c in even[..EVEN - 1].iter().rev() {
+                            e = e * w + c;
                         }
-                        *o = s;
+                        let mut o = odd[ODD - 1];
+                        for &c in odd[..ODD - 1].iter().rev() {
+                            o = o * w + c;
+                        }
+                        *r = e + u * o;
+                        *l = e - u * o;
                     }
                 }
             }
@@ -441,7 +516,11 @@ impl PimpTracker {
 
     /// The pressure of slot `k` at `approach` and its statistics.
     fn press(&mut self, k: usize, approach: Millimetre) -> Result<()> {
+        if !self.slots[k].complete {
+            return self.press_rows(k, approach);
+        }
         let slot = &mut self.slots[k];
+        slot.since_full = usize::MAX;
         let sampled = &slot.sampled;
         let grid = sampled.grid;
         match sampled.bedding {
@@ -456,7 +535,7 @@ impl PimpTracker {
             }
             Bedding::Published { .. } => sampled.pressure_into(approach, &mut slot.pressure),
         }
-        let (nx, ny) = (grid.nx(), grid.ny());
+        let nx = grid.nx();
         let (mut total, mut cells, mut pmax) = (0.0, 0usize, 0.0f64);
         let (mut mu, mut my) = (0.0, 0.0);
         let (mut i0, mut i1, mut j0, mut j1) = (usize::MAX, 0, usize::MAX, 0);
@@ -498,42 +577,267 @@ impl PimpTracker {
                 }
             }
         }
-        if cells == 0 {
-            return Err(Error::Geometry {
-                field: "extent".into(),
-                reason: format!(
-                    "no grid cell is in contact at the approach {approach:.4e} mm ({nx} × {ny} \
-                     cells of {:.3e} × {:.3e} mm): the contact is smaller than one cell",
-                    grid.dx(),
-                    grid.dy()
-                ),
-            });
-        }
-        let da = grid.cell_area();
-        let (hx, hy) = (0.5 * nx as f64 * grid.dx(), 0.5 * ny as f64 * grid.dy());
-        let reach_x = (-(grid.x(i0) - 0.5 * grid.dx())).max(grid.x(i1) + 0.5 * grid.dx()) / hx;
-        let reach_y = (-(grid.y(j0) - 0.5 * grid.dy())).max(grid.y(j1) + 0.5 * grid.dy()) / hy;
-        slot.stats = Stats {
-            force: total * da,
-            max_pressure: pmax,
-            area: cells as f64 * da,
-            centroid: [mu * hx / total, my / total],
-            reach: [reach_x, reach_y],
-            touches: [i0 == 0 || i1 + 1 == nx, j0 == 0 || j1 + 1 == ny],
+        finish(slot, approach, total, cells, pmax, mu, my, [i0, i1, j0, j1])
+    }
+}
+
+impl PimpTracker {
+    /// Corrected mode on the interpolated gap: the gap and the pressure row by row, only in
+    /// windows about the last call's zone (its rows' loaded columns and [`MARGIN`] cells
+    /// and rows beyond), widened to the full row wherever the zone reaches a window's edge
+    /// or a row next to an unevaluated one; every [`FULL_EVERY`] calls (and after a resize or
+    /// a reset) all cells. Gives the full evaluation's field whenever the zone's rows each
+    /// hold one run of loaded cells that overlaps the last call's (a zone moving by less
+    /// than [`MARGIN`] cells per call); a new patch away from the zone is found within
+    /// [`FULL_EVERY`] calls.
+    fn press_rows(&mut self, k: usize, approach: Millimetre) -> Result<()> {
+        let slot = &mut self.slots[k];
+        let grid = slot.sampled.grid;
+        let (nx, ny) = (grid.nx(), grid.ny());
+        let Bedding::Corrected {
+            stiffness, kappa, ..
+        } = slot.sampled.bedding
+        else {
+            return Err(Error::invalid(
+                "mode",
+                "published",
+                "the corrected law (row windows)",
+            ));
         };
-        // The loaded cells' bounding box, for the friction integral (same cell centres).
-        let (dx, dy) = (grid.dx(), grid.dy());
-        slot.crop = Grid2::new(
-            [grid.x(i0) - 0.5 * dx, grid.x(i1) + 0.5 * dx],
-            [grid.y(j0) - 0.5 * dy, grid.y(j1) + 0.5 * dy],
-            i1 - i0 + 1,
-            j1 - j0 + 1,
-        )?;
-        slot.cropped.clear();
-        for row in slot.pressure.chunks_exact(nx).skip(j0).take(j1 - j0 + 1) {
-            slot.cropped.extend_from_slice(&row[i0..=i1]);
+        let cut = kappa * approach;
+        let full = slot.since_full >= FULL_EVERY;
+        slot.since_full = if full { 0 } else { slot.since_full + 1 };
+        slot.pressure.fill(0.0);
+        // This call's windows from the last call's loaded runs.
+        let pairs = nx / 2;
+        for j in 0..ny {
+            let lo = if full {
+                0
+            } else {
+                let mut lo = usize::MAX;
+                for r in &slot.rows[j.saturating_sub(MARGIN)..(j + MARGIN + 1).min(ny)] {
+                    if r.end > r.first {
+                        lo = lo.min(r.first.min(nx - r.end));
+                    }
+                }
+                if lo == usize::MAX {
+                    usize::MAX
+                } else {
+                    lo.saturating_sub(MARGIN)
+                }
+            };
+            slot.rows[j].lo = lo;
         }
-        Ok(())
+        for j in 0..ny {
+            let lo = slot.rows[j].lo;
+            if lo != usize::MAX {
+                slot.rows[j] = row_pass(slot, &self.u, &self.v, j, lo, cut, stiffness, pairs);
+            }
+        }
+        // Widen where the zone reaches a window's edge or an unevaluated row.
+        loop {
+            let mut changed = false;
+            for j in 0..ny {
+                let r = slot.rows[j];
+                if r.lo == usize::MAX || r.end <= r.first {
+                    continue;
+                }
+                if r.lo > 0 && (r.first <= r.lo || r.end >= nx - r.lo) {
+                    slot.rows[j] = row_pass(slot, &self.u, &self.v, j, 0, cut, stiffness, pairs);
+                    changed = true;
+                }
+                for n in [j.wrapping_sub(1), j + 1] {
+                    if n < ny && slot.rows[n].lo == usize::MAX {
+                        slot.rows[n] = row_pass(slot, &self.u, &self.v, n, 0, cut, stiffness, pairs);
+                        changed = true;
+                    }
+                }
+            }
+            if !changed {
+                break;
+            }
+        }
+        // Rows not evaluated carry no load.
+        for r in slot.rows.iter_mut().filter(|r| r.lo == usize::MAX) {
+            r.first = 0;
+            r.end = 0;
+        }
+        let (mut total, mut cells, mut pmax, mut mu, mut my) = (0.0, 0.0, 0.0f64, 0.0, 0.0);
+        let (mut i0, mut i1, mut j0, mut j1) = (usize::MAX, 0, usize::MAX, 0);
+        for (j, r) in slot.rows.iter().enumerate() {
+            if r.end > r.first {
+                total += r.sum;
+                mu += r.sum_u;
+                my += r.sum * grid.y(j);
+                cells += r.cells;
+                pmax = pmax.max(r.max);
+                i0 = i0.min(r.first);
+                i1 = i1.max(r.end - 1);
+                j0 = j0.min(j);
+                j1 = j1.max(j);
+            }
+        }
+        finish(slot, approach, total, cells as usize, pmax, mu, my, [i0, i1, j0, j1])
+    }
+}
+
+
+/// The zone statistics and the cropped field of `slot` from the sums over its loaded cells:
+/// Σp `total`, loaded `cells`, max p, Σp u `mu`, Σp y `my`, bounding box `[i0, i1, j0, j1]`.
+///
+/// # Errors
+/// [`Error::Geometry`] when no cell is loaded.
+#[allow(clippy::too_many_arguments)]
+fn finish(
+    slot: &mut Slot,
+    approach: Millimetre,
+    total: f64,
+    cells: usize,
+    pmax: f64,
+    mu: f64,
+    my: f64,
+    [i0, i1, j0, j1]: [usize; 4],
+) -> Result<()> {
+    let grid = slot.sampled.grid;
+    let (nx, ny) = (grid.nx(), grid.ny());
+    if cells == 0 {
+        return Err(Error::Geometry {
+            field: "extent".into(),
+            reason: format!(
+                "no grid cell is in contact at the approach {approach:.4e} mm ({nx} × {ny} \
+                 cells of {:.3e} × {:.3e} mm): the contact is smaller than one cell",
+                grid.dx(),
+                grid.dy()
+            ),
+        });
+    }
+    let da = grid.cell_area();
+    let (hx, hy) = (0.5 * nx as f64 * grid.dx(), 0.5 * ny as f64 * grid.dy());
+    let reach_x = (-(grid.x(i0) - 0.5 * grid.dx())).max(grid.x(i1) + 0.5 * grid.dx()) / hx;
+    let reach_y = (-(grid.y(j0) - 0.5 * grid.dy())).max(grid.y(j1) + 0.5 * grid.dy()) / hy;
+    slot.stats = Stats {
+        force: total * da,
+        max_pressure: pmax,
+        area: cells as f64 * da,
+        centroid: [mu * hx / total, my / total],
+        reach: [reach_x, reach_y],
+        touches: [i0 == 0 || i1 + 1 == nx, j0 == 0 || j1 + 1 == ny],
+    };
+    // The loaded cells' bounding box, for the friction integral (same cell centres).
+    let (dx, dy) = (grid.dx(), grid.dy());
+    slot.crop = Grid2::new(
+        [grid.x(i0) - 0.5 * dx, grid.x(i1) + 0.5 * dx],
+        [grid.y(j0) - 0.5 * dy, grid.y(j1) + 0.5 * dy],
+        i1 - i0 + 1,
+        j1 - j0 + 1,
+    )?;
+    slot.cropped.clear();
+    for row in slot.pressure.chunks_exact(nx).skip(j0).take(j1 - j0 + 1) {
+        slot.cropped.extend_from_slice(&row[i0..=i1]);
+    }
+    Ok(())
+}
+
+/// The gap and pressure of row `j` over the columns `[lo, nx − lo)` of `slot`, from the
+/// slot's polynomial; `u`, `v` the normalised cell centres. Cells outside the window keep
+/// zero pressure.
+#[allow(clippy::too_many_arguments)]
+fn row_pass(
+    slot: &mut Slot,
+    u: &[f64],
+    v: &[f64],
+    j: usize,
+    lo: usize,
+    cut: f64,
+    stiffness: f64,
+    pairs: usize,
+) -> Row {
+    let nx = u.len();
+    let lo = lo.min(pairs);
+    let c = &slot.coef;
+    let vj = v[j];
+    let mut a = [0.0; NODES_X];
+    for (i, ai) in a.iter_mut().enumerate() {
+        let mut s = c[(i, NODES_Y - 1)];
+        for jj in (0..NODES_Y - 1).rev() {
+            s = s * vj + c[(i, jj)];
+        }
+        *ai = s;
+    }
+    let even: [f64; EVEN] = std::array::from_fn(|m| a[2 * m]);
+    let odd: [f64; ODD] = std::array::from_fn(|m| a[2 * m + 1]);
+    let row = &mut slot.sampled.effective[j * nx..(j + 1) * nx];
+    let (left, rest) = row.split_at_mut(pairs);
+    let (middle, right) = rest.split_at_mut(nx - 2 * pairs);
+    if let Some(m) = middle.first_mut() {
+        *m = a[0];
+    }
+    // Pairs k = 0 .. pairs − lo, outward from the centre.
+    let n = pairs - lo;
+    let positive = &u[nx - pairs..nx - pairs + n];
+    for ((l, r), &uk) in left[lo..]
+        .iter_mut()
+        .rev()
+        .zip(right[..n].iter_mut())
+        .zip(positive)
+    {
+        let w = uk * uk;
+        let mut e = even[EVEN - 1];
+        for &cc in even[..EVEN - 1].iter().rev() {
+            e = e * w + cc;
+        }
+        let mut o = odd[ODD - 1];
+        for &cc in odd[..ODD - 1].iter().rev() {
+            o = o * w + cc;
+        }
+        *r = e + uk * o;
+        *l = e - uk * o;
+    }
+    let g = &slot.sampled.effective[j * nx + lo..(j + 1) * nx - lo];
+    let p = &mut slot.pressure[j * nx + lo..(j + 1) * nx - lo];
+    let uw = &u[lo..nx - lo];
+    let (mut s4, mut u4, mut n4, mut m4) = ([0.0f64; 4], [0.0f64; 4], [0.0f64; 4], [0.0f64; 4]);
+    let mut chunks = p.chunks_exact_mut(4);
+    let mut gi = g.chunks_exact(4);
+    let mut ui = uw.chunks_exact(4);
+    for ((pc, gc), uc) in (&mut chunks).zip(&mut gi).zip(&mut ui) {
+        for l in 0..4 {
+            let pv = stiffness * (cut - gc[l]).max(0.0).sqrt();
+            pc[l] = pv;
+            s4[l] += pv;
+            u4[l] += pv * uc[l];
+            n4[l] += if pv > 0.0 { 1.0 } else { 0.0 };
+            m4[l] = if pv > m4[l] { pv } else { m4[l] };
+        }
+    }
+    for ((pv, &gv), &uv) in chunks
+        .into_remainder()
+        .iter_mut()
+        .zip(gi.remainder())
+        .zip(ui.remainder())
+    {
+        *pv = stiffness * (cut - gv).max(0.0).sqrt();
+        s4[0] += *pv;
+        u4[0] += *pv * uv;
+        n4[0] += if *pv > 0.0 { 1.0 } else { 0.0 };
+        m4[0] = if *pv > m4[0] { *pv } else { m4[0] };
+    }
+    let cells = (n4[0] + n4[1]) + (n4[2] + n4[3]);
+    let (first, end) = if cells > 0.0 {
+        let f = p.iter().position(|&x| x > 0.0).unwrap_or(0);
+        let e = p.iter().rposition(|&x| x > 0.0).map_or(0, |e| e + 1);
+        (lo + f, lo + e)
+    } else {
+        (0, 0)
+    };
+    Row {
+        lo,
+        first,
+        end,
+        sum: (s4[0] + s4[1]) + (s4[2] + s4[3]),
+        sum_u: (u4[0] + u4[1]) + (u4[2] + u4[3]),
+        cells,
+        max: m4[0].max(m4[1]).max(m4[2].max(m4[3])),
     }
 }
 
