@@ -120,6 +120,9 @@ struct Slot {
     /// Per row: the loaded columns `[first, last + 1)` of the last evaluation (`(0, 0)`:
     /// none), and this call's.
     rows: Vec<Row>,
+    /// Scratch rows: the even part and u times the odd part of the row polynomial.
+    even: Vec<f64>,
+    odd: Vec<f64>,
     /// Calls since every row was evaluated in full.
     since_full: usize,
     /// The grid factor of the last evaluation.
@@ -201,6 +204,8 @@ impl PimpTracker {
             cropped: Vec::with_capacity(nx * ny),
             coef: SMatrix::zeros(),
             rows: vec![Row::default(); ny],
+            even: vec![0.0; nx / 2],
+            odd: vec![0.0; nx / 2],
             since_full: usize::MAX,
             lambda: [0.0; 2],
             complete: true,
@@ -766,21 +771,12 @@ fn row_pass(
     }
     let even: [f64; EVEN] = std::array::from_fn(|m| a[2 * m]);
     let odd: [f64; ODD] = std::array::from_fn(|m| a[2 * m + 1]);
-    let row = &mut slot.sampled.effective[j * nx..(j + 1) * nx];
-    let (left, rest) = row.split_at_mut(pairs);
-    let (middle, right) = rest.split_at_mut(nx - 2 * pairs);
-    if let Some(m) = middle.first_mut() {
-        *m = a[0];
-    }
-    // Pairs k = 0 .. pairs − lo, outward from the centre.
+    // Pairs k = 0 .. n outward from the centre: E(u²) and u O(u²) into the scratch rows
+    // (forward loops, so they vectorise), then the two halves.
     let n = pairs - lo;
     let positive = &u[nx - pairs..nx - pairs + n];
-    for ((l, r), &uk) in left[lo..]
-        .iter_mut()
-        .rev()
-        .zip(right[..n].iter_mut())
-        .zip(positive)
-    {
+    let (es, os) = (&mut slot.even[..n], &mut slot.odd[..n]);
+    for ((e_out, o_out), &uk) in es.iter_mut().zip(os.iter_mut()).zip(positive) {
         let w = uk * uk;
         let mut e = even[EVEN - 1];
         for &cc in even[..EVEN - 1].iter().rev() {
@@ -790,46 +786,56 @@ fn row_pass(
         for &cc in odd[..ODD - 1].iter().rev() {
             o = o * w + cc;
         }
-        *r = e + uk * o;
-        *l = e - uk * o;
+        *e_out = e;
+        *o_out = uk * o;
+    }
+    let row = &mut slot.sampled.effective[j * nx..(j + 1) * nx];
+    let (left, rest) = row.split_at_mut(pairs);
+    let (middle, right) = rest.split_at_mut(nx - 2 * pairs);
+    if let Some(m) = middle.first_mut() {
+        *m = a[0];
+    }
+    for ((r, &e), &o) in right[..n].iter_mut().zip(es.iter()).zip(os.iter()) {
+        *r = e + o;
+    }
+    for ((l, &e), &o) in left[lo..].iter_mut().zip(es.iter().rev()).zip(os.iter().rev()) {
+        *l = e - o;
     }
     let g = &slot.sampled.effective[j * nx + lo..(j + 1) * nx - lo];
     let p = &mut slot.pressure[j * nx + lo..(j + 1) * nx - lo];
-    let uw = &u[lo..nx - lo];
-    let (mut s4, mut u4, mut n4, mut m4) = ([0.0f64; 4], [0.0f64; 4], [0.0f64; 4], [0.0f64; 4]);
-    let mut chunks = p.chunks_exact_mut(4);
-    let mut gi = g.chunks_exact(4);
-    let mut ui = uw.chunks_exact(4);
-    for ((pc, gc), uc) in (&mut chunks).zip(&mut gi).zip(&mut ui) {
+    for (pv, &gv) in p.iter_mut().zip(g) {
+        *pv = stiffness * (cut - gv).max(0.0).sqrt();
+    }
+    let (Some(f), Some(e)) = (
+        p.iter().position(|&x| x > 0.0),
+        p.iter().rposition(|&x| x > 0.0),
+    ) else {
+        return Row {
+            lo,
+            ..Row::default()
+        };
+    };
+    let (first, end) = (lo + f, lo + e + 1);
+    let loaded = &p[f..=e];
+    let ul = &u[first..end];
+    // Four independent lanes so the sums vectorise.
+    let (mut s4, mut u4, mut n4) = ([0.0f64; 4], [0.0f64; 4], [0.0f64; 4]);
+    let chunks = loaded.chunks_exact(4);
+    let rest_p = chunks.remainder();
+    for (pc, uc) in chunks.zip(ul.chunks_exact(4)) {
         for l in 0..4 {
-            let pv = stiffness * (cut - gc[l]).max(0.0).sqrt();
-            pc[l] = pv;
-            s4[l] += pv;
-            u4[l] += pv * uc[l];
-            n4[l] += if pv > 0.0 { 1.0 } else { 0.0 };
-            m4[l] = if pv > m4[l] { pv } else { m4[l] };
+            s4[l] += pc[l];
+            u4[l] += pc[l] * uc[l];
+            n4[l] += f64::from(u8::from(pc[l] > 0.0));
         }
     }
-    for ((pv, &gv), &uv) in chunks
-        .into_remainder()
-        .iter_mut()
-        .zip(gi.remainder())
-        .zip(ui.remainder())
-    {
-        *pv = stiffness * (cut - gv).max(0.0).sqrt();
-        s4[0] += *pv;
-        u4[0] += *pv * uv;
-        n4[0] += if *pv > 0.0 { 1.0 } else { 0.0 };
-        m4[0] = if *pv > m4[0] { *pv } else { m4[0] };
+    for (&pv, &uv) in rest_p.iter().zip(&ul[ul.len() - rest_p.len()..]) {
+        s4[0] += pv;
+        u4[0] += pv * uv;
+        n4[0] += f64::from(u8::from(pv > 0.0));
     }
     let cells = (n4[0] + n4[1]) + (n4[2] + n4[3]);
-    let (first, end) = if cells > 0.0 {
-        let f = p.iter().position(|&x| x > 0.0).unwrap_or(0);
-        let e = p.iter().rposition(|&x| x > 0.0).map_or(0, |e| e + 1);
-        (lo + f, lo + e)
-    } else {
-        (0, 0)
-    };
+    let max = loaded.iter().fold(0.0f64, |m, &x| m.max(x));
     Row {
         lo,
         first,
@@ -837,7 +843,7 @@ fn row_pass(
         sum: (s4[0] + s4[1]) + (s4[2] + s4[3]),
         sum_u: (u4[0] + u4[1]) + (u4[2] + u4[3]),
         cells,
-        max: m4[0].max(m4[1]).max(m4[2].max(m4[3])),
+        max,
     }
 }
 
