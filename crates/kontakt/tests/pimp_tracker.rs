@@ -24,7 +24,10 @@ fn roller_rib(name: &str) -> RollerRib {
 /// The gap of a pairing with the roller pushed `approach` \[mm\] along the normal into the rib.
 fn pressed_gap(rr: &RollerRib, approach: f64) -> SurfacePairGap {
     let n = rr.contact.normal.into_inner();
-    let shift = Isometry3::from_parts(Translation3::from(-n * approach), UnitQuaternion::identity());
+    let shift = Isometry3::from_parts(
+        Translation3::from(-n * approach),
+        UnitQuaternion::identity(),
+    );
     let face = PlacedSurface::new(rr.face.surface.clone(), shift * rr.face.pose).unwrap();
     let contact = find_contact(&face, &rr.rib, Some(rr.contact.point)).unwrap();
     SurfacePairGap::new(face, rr.rib.clone(), contact).unwrap()
@@ -36,7 +39,10 @@ fn pimp() -> Pimp {
 
 /// The approach at which the full solve carries `force` on the touching pairing.
 fn approach_for(rr: &RollerRib, force: f64) -> f64 {
-    pimp().solve_force(&pressed_gap(rr, 0.0), force).unwrap().approach
+    pimp()
+        .solve_force(&pressed_gap(rr, 0.0), force)
+        .unwrap()
+        .approach
 }
 
 /// Interpolated against exact gap, per pairing and load, on the same 64 × 64 grid.
@@ -161,7 +167,9 @@ fn row_windows_match_the_full_evaluation_along_a_trajectory() {
         let rot = UnitQuaternion::from_axis_angle(&axis, 0.05f64.to_radians() * s.sin());
         let c = rr.contact.point.coords;
         let pose = Isometry3::from_parts(
-            Translation3::from(c - rot * c - n * (0.0042 + 0.0005 * s.cos()) + across * 0.05 * (1.0 - s.cos())),
+            Translation3::from(
+                c - rot * c - n * (0.0042 + 0.0005 * s.cos()) + across * 0.05 * (1.0 - s.cos()),
+            ),
             rot,
         );
         let face = PlacedSurface::new(rr.face.surface.clone(), pose * rr.face.pose).unwrap();
@@ -199,7 +207,10 @@ fn tracked_field_matches_the_full_adaptive_solve() {
             let full = pimp().solve_approach(&gap, delta).unwrap();
             let mut t = PimpTracker::new(pimp(), GapSampling::Interpolated).unwrap();
             let f = t.evaluate(&gap, delta).unwrap();
-            let (df, dp) = (f.force / full.force - 1.0, f.max_pressure / full.max_pressure - 1.0);
+            let (df, dp) = (
+                f.force / full.force - 1.0,
+                f.max_pressure / full.max_pressure - 1.0,
+            );
             println!("{name:16} {force:5.0} N: force {df:+.2e}, p_max {dp:+.2e}");
             worst_f = worst_f.max(df.abs());
             worst_p = worst_p.max(dp.abs());
@@ -238,11 +249,17 @@ fn pimp_element_evaluation_allocates_nothing() {
     let (force, count) = counting_alloc::allocations(|| {
         let mut total = 0.0;
         for i in 2..202 {
-            total += e.evaluate(&pose(i), &id, &spin, &Twist::zero()).unwrap().normal_force;
+            total += e
+                .evaluate(&pose(i), &id, &spin, &Twist::zero())
+                .unwrap()
+                .normal_force;
         }
         total
     });
-    println!("200 evaluations, mean force {:.2} N: {count} allocations", force / 200.0);
+    println!(
+        "200 evaluations, mean force {:.2} N: {count} allocations",
+        force / 200.0
+    );
     assert!(force > 0.0);
     assert_eq!(count, 0);
 }

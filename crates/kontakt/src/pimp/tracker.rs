@@ -214,16 +214,14 @@ impl PimpTracker {
             field: "stencil".into(),
             reason: "the stencil's Vandermonde matrix is singular".into(),
         };
-        let vinv_x = SMatrix::<f64, NODES_X, NODES_X>::from_fn(|k, i| {
-            node(k, NODES_X).powi(i as i32)
-        })
-        .try_inverse()
-        .ok_or_else(singular)?;
-        let vinv_y = SMatrix::<f64, NODES_Y, NODES_Y>::from_fn(|k, i| {
-            node(k, NODES_Y).powi(i as i32)
-        })
-        .try_inverse()
-        .ok_or_else(singular)?;
+        let vinv_x =
+            SMatrix::<f64, NODES_X, NODES_X>::from_fn(|k, i| node(k, NODES_X).powi(i as i32))
+                .try_inverse()
+                .ok_or_else(singular)?;
+        let vinv_y =
+            SMatrix::<f64, NODES_Y, NODES_Y>::from_fn(|k, i| node(k, NODES_Y).powi(i as i32))
+                .try_inverse()
+                .ok_or_else(singular)?;
         Ok(PimpTracker {
             pimp,
             sampling,
@@ -329,18 +327,26 @@ impl PimpTracker {
         let mut lambda = self.lambda.unwrap_or([LAMBDA_START; 2]);
         let mut immediate = 0;
         loop {
-            self.fill(0, source, bedding, start_unit, curvature.orientation, lambda, footprint)?;
+            self.fill(
+                0,
+                source,
+                bedding,
+                start_unit,
+                curvature.orientation,
+                lambda,
+                footprint,
+            )?;
             self.press(0, approach)?;
             let s = self.slots[0].stats;
             let mut again = false;
-            for k in 0..2 {
+            for ((l, &touch), &reach) in lambda.iter_mut().zip(&s.touches).zip(&s.reach) {
                 // Cut off by the border: grow now (the field is wrong on this grid).
-                if s.touches[k] {
-                    lambda[k] *= GROWTH;
+                if touch {
+                    *l *= GROWTH;
                     again = true;
-                } else if fresh && !(SHRINK_AT..=GROW_AT).contains(&s.reach[k]) {
+                } else if fresh && !(SHRINK_AT..=GROW_AT).contains(&reach) {
                     // A new grid settles at once, as PimP's adaptive domain does.
-                    lambda[k] *= s.reach[k] / TARGET_REACH;
+                    *l *= reach / TARGET_REACH;
                     again = true;
                 }
             }
@@ -363,7 +369,15 @@ impl PimpTracker {
         // The old grid during a fade.
         let mut weight = 1.0;
         if let Some((old, calls)) = self.fade {
-            self.fill(1, source, bedding, start_unit, curvature.orientation, old, footprint)?;
+            self.fill(
+                1,
+                source,
+                bedding,
+                start_unit,
+                curvature.orientation,
+                old,
+                footprint,
+            )?;
             self.press(1, approach)?;
             if self.slots[1].stats.touches.iter().any(|&t| t) || calls + 1 >= FADE_CALLS {
                 self.fade = None;
@@ -377,9 +391,9 @@ impl PimpTracker {
         if self.fade.is_none() && !fresh {
             let s = self.slots[0].stats;
             let mut target = lambda;
-            for k in 0..2 {
-                if !(SHRINK_AT..=GROW_AT).contains(&s.reach[k]) {
-                    target[k] = lambda[k] * s.reach[k] / TARGET_REACH;
+            for (t, &reach) in target.iter_mut().zip(&s.reach) {
+                if !(SHRINK_AT..=GROW_AT).contains(&reach) {
+                    *t *= reach / TARGET_REACH;
                 }
             }
             if target != lambda {
@@ -546,7 +560,8 @@ impl PimpTracker {
         let (mut i0, mut i1, mut j0, mut j1) = (usize::MAX, 0, usize::MAX, 0);
         for (j, row) in slot.pressure.chunks_exact(nx).enumerate() {
             // Four independent lanes so the sums vectorise: Σp, Σp u, loaded cells, max p.
-            let (mut s4, mut u4, mut n4, mut m4) = ([0.0f64; 4], [0.0f64; 4], [0.0f64; 4], [0.0f64; 4]);
+            let (mut s4, mut u4, mut n4, mut m4) =
+                ([0.0f64; 4], [0.0f64; 4], [0.0f64; 4], [0.0f64; 4]);
             let chunks = row.chunks_exact(4);
             let rest = chunks.remainder();
             for (c, uc) in chunks.zip(self.u.chunks_exact(4)) {
@@ -653,7 +668,8 @@ impl PimpTracker {
                 }
                 for n in [j.wrapping_sub(1), j + 1] {
                     if n < ny && slot.rows[n].lo == usize::MAX {
-                        slot.rows[n] = row_pass(slot, &self.u, &self.v, n, 0, cut, stiffness, pairs);
+                        slot.rows[n] =
+                            row_pass(slot, &self.u, &self.v, n, 0, cut, stiffness, pairs);
                         changed = true;
                     }
                 }
@@ -682,10 +698,18 @@ impl PimpTracker {
                 j1 = j1.max(j);
             }
         }
-        finish(slot, approach, total, cells as usize, pmax, mu, my, [i0, i1, j0, j1])
+        finish(
+            slot,
+            approach,
+            total,
+            cells as usize,
+            pmax,
+            mu,
+            my,
+            [i0, i1, j0, j1],
+        )
     }
 }
-
 
 /// The zone statistics and the cropped field of `slot` from the sums over its loaded cells:
 /// Σp `total`, loaded `cells`, max p, Σp u `mu`, Σp y `my`, bounding box `[i0, i1, j0, j1]`.
@@ -798,7 +822,11 @@ fn row_pass(
     for ((r, &e), &o) in right[..n].iter_mut().zip(es.iter()).zip(os.iter()) {
         *r = e + o;
     }
-    for ((l, &e), &o) in left[lo..].iter_mut().zip(es.iter().rev()).zip(os.iter().rev()) {
+    for ((l, &e), &o) in left[lo..]
+        .iter_mut()
+        .zip(es.iter().rev())
+        .zip(os.iter().rev())
+    {
         *l = e - o;
     }
     let g = &slot.sampled.effective[j * nx + lo..(j + 1) * nx - lo];
