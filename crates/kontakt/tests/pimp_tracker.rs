@@ -37,12 +37,25 @@ fn pimp() -> Pimp {
     Pimp::new(STEEL, STEEL, PimpOptions::default()).unwrap()
 }
 
-/// The approach at which the full solve carries `force` on the touching pairing.
+/// The approach \[mm\] at which the (interpolated) tracked PimP field of the pairing carries
+/// `force` to about 1e-4: from the Hertz approach of the contact point's curvature, steps
+/// δ (F/F(δ))^(2/3). (A translation along the normal leaves the gap unchanged, so the gap of
+/// the touching pose serves every approach; cheap, so the debug build stays fast.)
 fn approach_for(rr: &RollerRib, force: f64) -> f64 {
-    pimp()
-        .solve_force(&pressed_gap(rr, 0.0), force)
-        .unwrap()
-        .approach
+    use kontakt::gap::GapSource;
+    use kontakt::hertz::{HertzPointContact, PointGeometry};
+    let gap = pressed_gap(rr, 0.0);
+    let mut delta =
+        HertzPointContact::new(PointGeometry::from_curvature(gap.curvature()), STEEL, STEEL)
+            .unwrap()
+            .approach_from_force(force)
+            .unwrap();
+    for _ in 0..8 {
+        let mut t = PimpTracker::new(pimp(), GapSampling::Interpolated).unwrap();
+        let f = t.evaluate(&gap, delta).unwrap().force;
+        delta *= (force / f).powf(2.0 / 3.0);
+    }
+    delta
 }
 
 /// Interpolated against exact gap, per pairing and load, on the same 64 × 64 grid.

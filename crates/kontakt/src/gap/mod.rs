@@ -48,13 +48,24 @@ pub trait GapSource: Send + Sync {
 
     /// Sample the gap \[mm\] at the tensor points `(xs[k], ys[l])` \[mm\] of a frame turned
     /// by `rotation` \[rad\] (as in [`GapSource::sample`]) into `out[l * xs.len() + k]`
-    /// (`out.len() == xs.len() * ys.len()`): a stencil on non-uniform nodes. The default
-    /// samples each point as a grid of one cell; a source may do better (the ray casts of
-    /// [`SurfacePairGap`] start from the neighbour's hit).
+    /// (`out.len() == xs.len() * ys.len()`): a stencil on non-uniform nodes. `warm` (one
+    /// entry per point, or empty) carries a source's warm-start data from one call to the
+    /// next, `f64::INFINITY` for none; the caller only keeps it. The default samples each
+    /// point as a grid of one cell and ignores `warm`; [`SurfacePairGap`] starts each ray
+    /// from the last call's hit at the same point (kept in `warm` as heights over the plane
+    /// \[mm\]) or else from the neighbour's.
     ///
     /// # Errors
     /// [`Error::InvalidInput`] (field `out.len()`) for a wrong length; the source's errors.
-    fn sample_points(&self, xs: &[f64], ys: &[f64], rotation: f64, out: &mut [f64]) -> Result<()> {
+    fn sample_points(
+        &self,
+        xs: &[f64],
+        ys: &[f64],
+        rotation: f64,
+        out: &mut [f64],
+        warm: &mut [[f64; 2]],
+    ) -> Result<()> {
+        let _ = warm;
         if out.len() != xs.len() * ys.len() {
             return Err(Error::invalid(
                 "out.len()",

@@ -189,7 +189,14 @@ impl GapSource for SurfacePairGap {
         Ok(())
     }
 
-    fn sample_points(&self, xs: &[f64], ys: &[f64], rotation: f64, out: &mut [f64]) -> Result<()> {
+    fn sample_points(
+        &self,
+        xs: &[f64],
+        ys: &[f64],
+        rotation: f64,
+        out: &mut [f64],
+        warm: &mut [[f64; 2]],
+    ) -> Result<()> {
         if out.len() != xs.len() * ys.len() {
             return Err(Error::invalid(
                 "out.len()",
@@ -197,6 +204,7 @@ impl GapSource for SurfacePairGap {
                 "xs.len() * ys.len() points",
             ));
         }
+        let warm_ok = warm.len() == out.len();
         let (s, c) = rotation.sin_cos();
         let far = |v: &[f64]| v.iter().fold(0.0f64, |m, a| m.max(a.abs()));
         let (fx, fy) = (far(xs), far(ys));
@@ -206,8 +214,20 @@ impl GapSource for SurfacePairGap {
         for (l, &yp) in ys.iter().enumerate() {
             let mut t = row_start;
             for (k, &xp) in xs.iter().enumerate() {
+                let idx = l * xs.len() + k;
+                // The last call's hits, as heights over the plane, are the best guesses.
+                if warm_ok && warm[idx][0].is_finite() && warm[idx][1].is_finite() {
+                    t = (reach + warm[idx][0], reach - warm[idx][1]);
+                }
                 let g = self.cast(c * xp - s * yp, s * xp + c * yp, reach, &mut t)?;
-                out[l * xs.len() + k] = g;
+                out[idx] = g;
+                if warm_ok {
+                    warm[idx] = if g.is_finite() {
+                        [t.0 - reach, reach - t.1]
+                    } else {
+                        [f64::INFINITY; 2]
+                    };
+                }
                 if k == 0 {
                     row_start = t;
                 }

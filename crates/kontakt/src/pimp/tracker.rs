@@ -120,6 +120,8 @@ struct Slot {
     /// Per row: the loaded columns `[first, last + 1)` of the last evaluation (`(0, 0)`:
     /// none), and this call's.
     rows: Vec<Row>,
+    /// The stencil rays' warm-start data (`GapSource::sample_points`).
+    warm: [[f64; 2]; NODES_X * NODES_Y],
     /// Scratch rows: the even part and u times the odd part of the row polynomial.
     even: Vec<f64>,
     odd: Vec<f64>,
@@ -204,6 +206,7 @@ impl PimpTracker {
             cropped: Vec::with_capacity(nx * ny),
             coef: SMatrix::zeros(),
             rows: vec![Row::default(); ny],
+            warm: [[f64::INFINITY; 2]; NODES_X * NODES_Y],
             even: vec![0.0; nx / 2],
             odd: vec![0.0; nx / 2],
             since_full: usize::MAX,
@@ -471,7 +474,13 @@ impl PimpTracker {
                 let xs: [f64; NODES_X] = std::array::from_fn(|k| half[0] * node(k, NODES_X));
                 let ys: [f64; NODES_Y] = std::array::from_fn(|l| half[1] * node(l, NODES_Y));
                 // Column-major storage of F[k][l] is out[l * NODES_X + k].
-                source.sample_points(&xs, &ys, rotation, self.stencil.as_mut_slice())?;
+                source.sample_points(
+                    &xs,
+                    &ys,
+                    rotation,
+                    self.stencil.as_mut_slice(),
+                    &mut slot.warm,
+                )?;
                 if let Some(bad) = self.stencil.iter().position(|g| !g.is_finite()) {
                     return Err(Error::Geometry {
                         field: "surfaces".into(),
