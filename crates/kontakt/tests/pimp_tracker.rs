@@ -276,3 +276,19 @@ fn pimp_element_evaluation_allocates_nothing() {
     assert!(force > 0.0);
     assert_eq!(count, 0);
 }
+
+/// Tiny approaches (a round-off touch up to 1 nm) give a small positive force on a loaded
+/// grid, not an error: the grid scales with the footprint of the approach.
+#[test]
+fn tiny_approaches_give_a_small_force() {
+    for name in ["torus-torus-14", "sphere-cone-29", "torus-cone-28"] {
+        let rr = roller_rib(name);
+        let gap = pressed_gap(&rr, 0.0);
+        for delta in [1e-14, 1e-12, 1e-9, 1e-6] {
+            let mut t = PimpTracker::new(pimp(), GapSampling::Interpolated).unwrap();
+            let f = t.evaluate(&gap, delta).unwrap().force;
+            println!("{name} delta {delta:e}: F = {f:e}");
+            assert!(f > 0.0 && f.is_finite());
+        }
+    }
+}
