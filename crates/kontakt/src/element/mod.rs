@@ -36,6 +36,7 @@
 //!    [`ElementResult::message`]: never a silent huge force.
 
 mod halfspace_warm;
+mod pimp_path;
 pub mod study;
 
 use crate::error::{Error, Result};
@@ -48,7 +49,7 @@ use crate::geometry::{
 use crate::halfspace::{Bem, BemOptions, HalfSpacePlanner};
 use crate::hertz::{HertzPointContact, PointGeometry};
 use crate::material::ElasticMaterial;
-use crate::pimp::{Pimp, PimpOptions};
+use crate::pimp::{GapSampling, Pimp, PimpOptions, PimpTracker};
 use nalgebra::{Isometry3, Matrix6, Point3, Unit, UnitQuaternion, Vector3};
 use std::sync::{Arc, Mutex};
 
@@ -181,7 +182,12 @@ pub struct ContactElement {
     hertz_pressure: Vec<f64>,
     /// The half-space back-end's grid and last field, for the warm start.
     warm: halfspace_warm::WarmHalfSpace,
+    /// The PimP back-end's grid and buffers, kept between calls (`pimp::PimpTracker`).
+    tracker: Option<PimpTracker>,
 }
+
+/// Most steps of [`ContactElement::press_to_force`].
+pub const PRESS_STEPS: usize = 100;
 
 /// Cells a side of the Hertz back-end's pressure samples for the friction integral.
 const HERTZ_CELLS: usize = 16;
@@ -275,6 +281,13 @@ impl ContactElement {
                 ),
             ),
         };
+        let tracker = match pimp {
+            // A fixed extent keeps the full solve on every call.
+            Some(p) if p.options().extent.is_none() => {
+                Some(PimpTracker::new(p, GapSampling::default())?)
+            }
+            _ => None,
+        };
         Ok(ContactElement {
             spec,
             law,
@@ -283,6 +296,7 @@ impl ContactElement {
             last_point: None,
             hertz_pressure: vec![0.0; HERTZ_CELLS * HERTZ_CELLS],
             warm: Default::default(),
+            tracker,
         })
     }
 
@@ -364,12 +378,15 @@ impl ContactElement {
     /// is `force` \[N\] to 1e-9 relative; returns the pose and the result there. Each step
     /// moves to the approach `δ (F_target/F)^(2/3)` of the point-contact power law (exact for
     /// Hertz, fast for the field back-ends), starting from contact if the bodies are apart,
-    /// at most 50 steps.
+    /// at most [`PRESS_STEPS`] steps. (The PimP back-end fades between grids over 32 calls
+    /// after a resize, during which its force at a pose moves by up to about 1e-5; the step
+    /// budget lets a fade finish.)
     ///
     /// # Errors
     /// [`Error::InvalidInput`] (field `force`) for a non-finite or non-positive force, (field
     /// `direction`) for a direction along which the bodies do not approach;
-    /// [`Error::NotConverged`] after 50 steps; those of [`ContactElement::evaluate`].
+    /// [`Error::NotConverged`] after [`PRESS_STEPS`] steps; those of
+    /// [`ContactElement::evaluate`].
     pub fn press_to_force(
         &mut self,
         pose1: &Isometry3<f64>,
@@ -390,7 +407,7 @@ impl ContactElement {
         };
         let mut offset = 0.0;
         let mut residual = f64::INFINITY;
-        for _ in 0..50 {
+        for _ in 0..PRESS_STEPS {
             let pose = moved(offset);
             let r = self.evaluate(&pose, pose2, twist1, twist2)?;
             // How much the approach grows per unit offset along `direction`.
@@ -424,7 +441,7 @@ impl ContactElement {
         }
         Err(Error::NotConverged {
             what: "press_to_force".into(),
-            iterations: 50,
+            iterations: PRESS_STEPS,
             residual,
         })
     }
@@ -433,6 +450,9 @@ impl ContactElement {
     pub fn reset(&mut self) {
         self.last_point = None;
         self.warm.reset();
+        if let Some(t) = &mut self.tracker {
+            t.reset();
+        }
     }
 
     /// Evaluate the contact at the poses `pose1`, `pose2` and twists `twist1`, `twist2` of
@@ -526,6 +546,25 @@ impl ContactElement {
                     max_pressure: w.zone.max_pressure,
                     contact_area: w.zone.area,
                     iterations: w.iterations,
+                }
+            }
+            Backend::Pimp(_) if self.tracker.is_some() => {
+                // The grid and buffers kept between calls, the gap interpolated from a
+                // stencil of exact rays (docs/mbs.md).
+                let t = self
+                    .tracker
+                    .as_mut()
+                    .ok_or_else(|| Error::invalid("backend", "pimp", "a planned element"))?
+                    .evaluate(&gap, approach)?;
+                FieldView {
+                    grid: t.grid,
+                    pressure: t.pressure,
+                    orientation: t.orientation,
+                    centroid: t.centroid,
+                    force: t.force,
+                    max_pressure: t.max_pressure,
+                    contact_area: t.contact_area,
+                    iterations: 0,
                 }
             }
             Backend::Pimp(_) | Backend::HalfSpace(_) => {

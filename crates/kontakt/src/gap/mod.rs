@@ -45,6 +45,46 @@ pub trait GapSource: Send + Sync {
     /// # Errors
     /// A source may fail on geometry it cannot evaluate; it never returns NaN.
     fn sample(&self, grid: &Grid2, rotation: f64, out: &mut [f64]) -> Result<()>;
+
+    /// Sample the gap \[mm\] at the tensor points `(xs[k], ys[l])` \[mm\] of a frame turned
+    /// by `rotation` \[rad\] (as in [`GapSource::sample`]) into `out[l * xs.len() + k]`
+    /// (`out.len() == xs.len() * ys.len()`): a stencil on non-uniform nodes. `warm` (one
+    /// entry per point, or empty) carries a source's warm-start data from one call to the
+    /// next, `f64::INFINITY` for none; the caller only keeps it. The default samples each
+    /// point as a grid of one cell and ignores `warm`; [`SurfacePairGap`] starts each ray
+    /// from the last call's hit at the same point (kept in `warm` as heights over the plane
+    /// \[mm\]) or else from the neighbour's.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] (field `out.len()`) for a wrong length; the source's errors.
+    fn sample_points(
+        &self,
+        xs: &[f64],
+        ys: &[f64],
+        rotation: f64,
+        out: &mut [f64],
+        warm: &mut [[f64; 2]],
+    ) -> Result<()> {
+        let _ = warm;
+        if out.len() != xs.len() * ys.len() {
+            return Err(Error::invalid(
+                "out.len()",
+                out.len(),
+                "xs.len() * ys.len() points",
+            ));
+        }
+        let scale = xs.iter().chain(ys).fold(0.0f64, |m, v| m.max(v.abs()));
+        let e = 1e-9 * scale.max(1e-6);
+        for (l, &y) in ys.iter().enumerate() {
+            for (k, &x) in xs.iter().enumerate() {
+                let point = Grid2::new([x - e, x + e], [y - e, y + e], 1, 1)?;
+                let mut g = [0.0];
+                self.sample(&point, rotation, &mut g)?;
+                out[l * xs.len() + k] = g[0];
+            }
+        }
+        Ok(())
+    }
 }
 
 /// The Hertz gap `g = A x'² + B y'²` (Johnson 1982 eq. 1): the reference geometry of

@@ -188,6 +188,87 @@ impl GapSource for SurfacePairGap {
         }
         Ok(())
     }
+
+    fn sample_points(
+        &self,
+        xs: &[f64],
+        ys: &[f64],
+        rotation: f64,
+        out: &mut [f64],
+        warm: &mut [[f64; 2]],
+    ) -> Result<()> {
+        if out.len() != xs.len() * ys.len() {
+            return Err(Error::invalid(
+                "out.len()",
+                out.len(),
+                "xs.len() * ys.len() points",
+            ));
+        }
+        let warm_ok = warm.len() == out.len();
+        let (s, c) = rotation.sin_cos();
+        let far = |v: &[f64]| v.iter().fold(0.0f64, |m, a| m.max(a.abs()));
+        let (fx, fy) = (far(xs), far(ys));
+        // As in `sample`: beyond the sag of either surface over the points.
+        let reach = 2.0 * (fx.hypot(fy) + fx.max(fy)) + self.contact.separation.abs() + 1e-3;
+        let mut row_start = (reach, reach);
+        for (l, &yp) in ys.iter().enumerate() {
+            let mut t = row_start;
+            for (k, &xp) in xs.iter().enumerate() {
+                let idx = l * xs.len() + k;
+                // The last call's hits, as heights over the plane, are the best guesses.
+                if warm_ok && warm[idx][0].is_finite() && warm[idx][1].is_finite() {
+                    t = (reach + warm[idx][0], reach - warm[idx][1]);
+                }
+                let g = self.cast(c * xp - s * yp, s * xp + c * yp, reach, &mut t)?;
+                out[idx] = g;
+                if warm_ok {
+                    warm[idx] = if g.is_finite() {
+                        [t.0 - reach, reach - t.1]
+                    } else {
+                        [f64::INFINITY; 2]
+                    };
+                }
+                if k == 0 {
+                    row_start = t;
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+impl SurfacePairGap {
+    /// One gap value at the source-frame point `(x, y)` \[mm\], rays cast from `reach` on
+    /// either side of the plane with the guesses `t` (updated to the hits).
+    #[inline]
+    fn cast(&self, x: f64, y: f64, reach: f64, t: &mut (f64, f64)) -> Result<f64> {
+        let n = self.contact.normal.into_inner();
+        let q = self.contact.point + self.ex.into_inner() * x + self.ey.into_inner() * y;
+        let r1 = Ray {
+            origin: q - n * reach,
+            dir: Unit::new_unchecked(n),
+        };
+        let r2 = Ray {
+            origin: q + n * reach,
+            dir: Unit::new_unchecked(-n),
+        };
+        let h1 = self.body1.intersect_near(&r1, t.0, 0.0, 2.0 * reach);
+        let h2 = self.body2.intersect_near(&r2, t.1, 0.0, 2.0 * reach);
+        let g = match (h1, h2) {
+            (Some(a), Some(b)) => {
+                *t = (a, b);
+                (a - reach) - (reach - b) - self.contact.separation
+            }
+            _ => f64::INFINITY,
+        };
+        if g.is_nan() {
+            return Err(Error::Geometry {
+                field: "surfaces".into(),
+                reason: format!("ray casting gave NaN at ({x}, {y}) mm"),
+            });
+        }
+        Ok(g)
+    }
 }
 
 impl ContactFrame {

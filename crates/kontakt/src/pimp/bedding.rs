@@ -74,6 +74,19 @@ impl Bedding {
         body2: ElasticMaterial,
     ) -> Result<Self> {
         let hertz = HertzPointContact::new(PointGeometry::from_curvature(curvature), body1, body2)?;
+        Self::from_hertz(mode, curvature, &hertz)
+    }
+
+    /// Plan the law from a planned Hertz contact of the same curvature (saves the shape
+    /// inversion when the caller has one).
+    ///
+    /// # Errors
+    /// As [`Bedding::new`].
+    pub(crate) fn from_hertz(
+        mode: Mode,
+        curvature: RelativeCurvature,
+        hertz: &HertzPointContact,
+    ) -> Result<Self> {
         let e_star = hertz.e_star();
         Ok(match mode {
             Mode::Published => Bedding::Published { e_star },
