@@ -31,9 +31,7 @@
 mod store;
 pub mod table;
 
-pub use store::{
-    ChunkSummary, CombineSummary, LocalOptions, LocalSummary, OutputFormat, Progress,
-};
+pub use store::{ChunkSummary, CombineSummary, LocalOptions, LocalSummary, OutputFormat, Progress};
 
 use crate::case::Case;
 use serde::Deserialize;
@@ -1004,12 +1002,18 @@ force_n = 100.0
         )
         .unwrap();
         assert_eq!(s.len(), 3);
-        assert_eq!(s.values(2), [toml::Value::Float(3.0), toml::Value::Float(0.3)]);
+        assert_eq!(
+            s.values(2),
+            [toml::Value::Float(3.0), toml::Value::Float(0.3)]
+        );
         let e = err(
             "mode = \"points\"\n[[parameter]]\nkey = \"load.force_n\"\nvalues = [1.0, 2.0]\n\
              [[parameter]]\nkey = \"body1.nu\"\nvalues = [0.1]\n",
         );
-        assert!(e.contains("parameter[1]") && e.contains("one length"), "{e}");
+        assert!(
+            e.contains("parameter[1]") && e.contains("one length"),
+            "{e}"
+        );
     }
 
     #[test]

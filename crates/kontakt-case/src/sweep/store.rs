@@ -130,10 +130,7 @@ static TEMP_COUNTER: AtomicU64 = AtomicU64::new(0);
 
 /// Write `path` through a temporary file in the same folder, synced and renamed: a reader
 /// (or a rerun after a kill) sees the complete file or none.
-fn write_atomic(
-    path: &Path,
-    write: impl FnOnce(File) -> Result<File, String>,
-) -> SweepResult<()> {
+fn write_atomic(path: &Path, write: impl FnOnce(File) -> Result<File, String>) -> SweepResult<()> {
     let dir = path.parent().unwrap_or(Path::new("."));
     let name = path
         .file_name()
@@ -276,9 +273,8 @@ impl Sweep {
             Ok(c) => c,
             Err(e) => return fail(Status::Invalid, e.to_string()),
         };
-        let run = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
-            case.run(self.base_dir())
-        }));
+        let run =
+            std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| case.run(self.base_dir())));
         match run {
             Ok(Ok(outcome)) => match serde_json::to_value(&outcome) {
                 Ok(v) => Row {
@@ -288,9 +284,7 @@ impl Sweep {
                 },
                 Err(e) => fail(Status::Failed, format!("report: {e}")),
             },
-            Ok(Err(e @ kontakt::Error::NotConverged { .. })) => {
-                fail(Status::Failed, e.to_string())
-            }
+            Ok(Err(e @ kontakt::Error::NotConverged { .. })) => fail(Status::Failed, e.to_string()),
             Ok(Err(e)) => fail(Status::Invalid, e.to_string()),
             Err(payload) => {
                 let msg = payload
@@ -507,7 +501,11 @@ impl Sweep {
     /// # Errors
     /// `threads` above [`MAX_THREADS`] or a directory holding another sweep
     /// ([`SweepError::Input`]); files that cannot be written.
-    pub fn run_local(&self, out_dir: &Path, options: LocalOptions<'_>) -> SweepResult<LocalSummary> {
+    pub fn run_local(
+        &self,
+        out_dir: &Path,
+        options: LocalOptions<'_>,
+    ) -> SweepResult<LocalSummary> {
         let threads = match options.threads {
             0 => std::thread::available_parallelism()
                 .map(usize::from)

@@ -15,8 +15,7 @@
 
 use super::{Parameter, ValueKind};
 use arrow_array::{
-    Array, ArrayRef, BooleanArray, Float64Array, Int64Array, RecordBatch, StringArray,
-    UInt64Array,
+    Array, ArrayRef, BooleanArray, Float64Array, Int64Array, RecordBatch, StringArray, UInt64Array,
 };
 use arrow_schema::{DataType, Field, Schema};
 use std::collections::HashMap;
@@ -213,7 +212,10 @@ fn cells_to_array(cells: &[Cell], ty: &DataType) -> ArrayRef {
     }
 }
 
-fn parameter_array(p: &Parameter, values: impl Iterator<Item = toml::Value>) -> (DataType, ArrayRef) {
+fn parameter_array(
+    p: &Parameter,
+    values: impl Iterator<Item = toml::Value>,
+) -> (DataType, ArrayRef) {
     match p.kind {
         ValueKind::Float => (
             DataType::Float64,
@@ -264,7 +266,9 @@ pub fn chunk_batch(
     let mut fields = Vec::new();
     let mut columns: Vec<ArrayRef> = Vec::new();
     fields.push(Field::new(CASE_COLUMN, DataType::UInt64, false));
-    columns.push(Arc::new(UInt64Array::from(cases.clone().collect::<Vec<_>>())));
+    columns.push(Arc::new(UInt64Array::from(
+        cases.clone().collect::<Vec<_>>(),
+    )));
     let reserved: Vec<&str> = sweep
         .parameters()
         .iter()
@@ -415,7 +419,12 @@ mod tests {
         ] {
             assert!(names.contains(&want), "{want} not in {names:?}");
         }
-        for skipped in ["kontakt_version", "schema_version", "inputs.force_n", "curve[0]"] {
+        for skipped in [
+            "kontakt_version",
+            "schema_version",
+            "inputs.force_n",
+            "curve[0]",
+        ] {
             assert!(!names.contains(&skipped), "{skipped} in {names:?}");
         }
         assert!(cells.contains(&("patches".into(), Cell::I64(1))));
@@ -427,7 +436,10 @@ mod tests {
         use Cell as C;
         assert_eq!(column_type(&[C::Null, C::Null]), None);
         assert_eq!(column_type(&[C::I64(1), C::Null]), Some(DataType::Int64));
-        assert_eq!(column_type(&[C::I64(1), C::F64(0.5)]), Some(DataType::Float64));
+        assert_eq!(
+            column_type(&[C::I64(1), C::F64(0.5)]),
+            Some(DataType::Float64)
+        );
         assert_eq!(
             column_type(&[C::F64(1.0), C::Str("inf".into())]),
             Some(DataType::Float64)
@@ -436,7 +448,10 @@ mod tests {
             column_type(&[C::F64(1.0), C::Str("x".into())]),
             Some(DataType::Utf8)
         );
-        assert_eq!(unify(&DataType::Int64, &DataType::Float64), DataType::Float64);
+        assert_eq!(
+            unify(&DataType::Int64, &DataType::Float64),
+            DataType::Float64
+        );
         assert_eq!(unify(&DataType::Int64, &DataType::Utf8), DataType::Utf8);
         let a: ArrayRef = Arc::new(Int64Array::from(vec![Some(2), None]));
         let f = conform(&a, &DataType::Float64);

@@ -2,16 +2,19 @@
 //! bar, resumable, combined into one table. A thin shell over `kontakt_case::Sweep`.
 
 use crate::cli::{SweepArgs, SweepFormat};
+use crate::commands::InputError;
 use anyhow::Result;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
-use crate::commands::InputError;
 use kontakt_case::sweep::{LocalOptions, MAX_THREADS, OutputFormat, Progress, Sweep};
 use std::io::{IsTerminal, Write};
 
 /// Run the subcommand.
 pub fn run(args: &SweepArgs, out: &mut impl Write) -> Result<()> {
     if let Some(t) = args.threads.filter(|&t| t == 0 || t > MAX_THREADS) {
-        return Err(InputError(format!("invalid --threads = {t}: expected 1..={MAX_THREADS}")).into());
+        return Err(InputError(format!(
+            "invalid --threads = {t}: expected 1..={MAX_THREADS}"
+        ))
+        .into());
     }
     let sweep = Sweep::from_path_with_limit(&args.sweep, args.max_cases)?;
     let format = match args.format {
@@ -79,7 +82,10 @@ pub fn run(args: &SweepArgs, out: &mut impl Write) -> Result<()> {
     writeln!(
         out,
         "Sweep{}: {} cases in {} chunks of {} ({} computed, {} found complete), {} threads, {:.2} s{per_case}",
-        sweep.name().map(|n| format!(" \"{n}\"")).unwrap_or_default(),
+        sweep
+            .name()
+            .map(|n| format!(" \"{n}\""))
+            .unwrap_or_default(),
         sweep.len(),
         s.chunks,
         sweep.chunk_size(),
