@@ -51,6 +51,47 @@ impl Case {
         }
     }
 
+    /// Read a case of any method from an already parsed TOML table (what a sweep builds
+    /// by editing a base case; no text is parsed or written).
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] with field `case` and the reader's message for unknown keys
+    /// or wrong types; an unknown `method` names the valid ones.
+    pub fn from_toml_table(table: toml::Table) -> Result<Self> {
+        fn read<T: serde::de::DeserializeOwned>(table: toml::Table) -> Result<T> {
+            table.try_into().map_err(|e: toml::de::Error| {
+                Error::invalid(
+                    "case",
+                    e.message().trim().to_string(),
+                    "a case following docs/case-schema.md",
+                )
+            })
+        }
+        let method = match table.get("method") {
+            None => "hertz".to_string(),
+            Some(toml::Value::String(m)) => m.clone(),
+            Some(other) => {
+                return Err(Error::invalid(
+                    "method",
+                    other,
+                    "\"hertz\", \"pimp\", \"bem\", \"traction\" or \"friction\"",
+                ));
+            }
+        };
+        match method.as_str() {
+            "hertz" => Ok(Case::Hertz(read(table)?)),
+            "pimp" => Ok(Case::Pimp(Box::new(read(table)?))),
+            "bem" => Ok(Case::Bem(Box::new(read(table)?))),
+            "traction" => Ok(Case::Traction(Box::new(read(table)?))),
+            "friction" => Ok(Case::Friction(Box::new(read(table)?))),
+            other => Err(Error::invalid(
+                "method",
+                other,
+                "\"hertz\", \"pimp\", \"bem\", \"traction\" or \"friction\"",
+            )),
+        }
+    }
+
     /// The method's name, as the `method` key spells it.
     pub fn method(&self) -> &'static str {
         match self {

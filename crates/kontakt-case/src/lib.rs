@@ -29,6 +29,7 @@ pub mod friction_case;
 pub mod hertz_case;
 pub mod maps;
 pub mod pimp_case;
+pub mod sweep;
 pub mod traction_case;
 
 pub use bem_case::{BemOutcome, run_bem_case, run_bem_case_on_map};
@@ -38,4 +39,5 @@ pub use element_case::{ElementCase, element_from_case, element_from_toml};
 pub use friction_case::{FrictionCase, FrictionOutcome, FrictionReport, run_friction_case};
 pub use hertz_case::{ContactReport, run_case};
 pub use pimp_case::{PimpCase, PimpOutcome, PimpReport, run_pimp_case};
+pub use sweep::{Sweep, SweepError};
 pub use traction_case::{TractionCase, TractionReport, run_traction_case};

@@ -53,6 +53,11 @@ pub enum Command {
     /// back-ends: force, moment, contact-point migration, friction power, time per call
     /// (docs/mbs.md).
     Mbs(MbsArgs),
+    /// Parameter sweep of a base case (any method with scalar results): a grid or zipped
+    /// points of parameters given by their key paths, run in parallel, one row of scalars
+    /// per case, resumable chunk files, combined into results.parquet or results.csv
+    /// (schema: docs/sweep.md).
+    Sweep(SweepArgs),
 }
 
 #[derive(Debug, Args)]
@@ -264,6 +269,38 @@ pub struct MbsArgs {
     #[arg(long, value_name = "DIR", default_value = "kontakt-mbs")]
     pub out: std::path::PathBuf,
     /// Print every sample as JSON instead of the summary table.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Debug, Clone, Copy, clap::ValueEnum)]
+pub enum SweepFormat {
+    Parquet,
+    Csv,
+}
+
+#[derive(Debug, Args)]
+pub struct SweepArgs {
+    /// Sweep file (TOML; docs/sweep.md).
+    #[arg(value_name = "SWEEP.toml")]
+    pub sweep: PathBuf,
+    /// Output folder: sweep.json, chunks/, results.parquet|csv. A rerun into the same
+    /// folder computes only the missing chunks; a folder holding another sweep is refused.
+    #[arg(long, value_name = "DIR", default_value = "kontakt-sweep")]
+    pub out: PathBuf,
+    /// Format of the combined results (the chunks are always Parquet).
+    #[arg(long, value_enum, default_value_t = SweepFormat::Parquet)]
+    pub format: SweepFormat,
+    /// Worker threads, 1..=256 (default: the available cores).
+    #[arg(long, value_name = "N")]
+    pub threads: Option<usize>,
+    /// Raise (or lower) the sweep file's limit on the number of cases (default 10000000).
+    #[arg(long, value_name = "N")]
+    pub max_cases: Option<u64>,
+    /// No progress bar.
+    #[arg(long)]
+    pub quiet: bool,
+    /// Print a JSON summary instead of the text one (no progress bar).
     #[arg(long)]
     pub json: bool,
 }

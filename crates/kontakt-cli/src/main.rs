@@ -58,6 +58,9 @@ fn exit_code(err: &anyhow::Error) -> u8 {
                 _ => 2,
             };
         }
+        if let Some(e) = cause.downcast_ref::<kontakt_case::SweepError>() {
+            return if e.is_input() { 2 } else { 1 };
+        }
         if cause.downcast_ref::<commands::InputError>().is_some() {
             return 2;
         }

@@ -12,6 +12,7 @@ use kontakt_case::{Case, Outcome, run_case};
 pub mod friction;
 pub mod mbs;
 pub mod pimp;
+pub mod sweep;
 pub mod traction;
 pub mod validate;
 use std::io::{Read, Write};
@@ -115,6 +116,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
         Command::Traction(args) => traction::run(args, out),
         Command::Friction(args) => friction::run(args, out),
         Command::Mbs(args) => mbs::run(args, out),
+        Command::Sweep(args) => sweep::run(args, out),
     }
 }
 

@@ -1,0 +1,461 @@
+//! One row per case and the Arrow tables of a chunk.
+//!
+//! A row is: `case` (the case index), the swept parameters (one column each, named as in
+//! the sweep file), `status` (`ok`, `invalid`: the case reader or the method refused an
+//! input, `failed`: a solver did not converge, `panic`: a bug), `error` (the one-line
+//! message, null when ok), then the case's report flattened:
+//! - nested objects give dotted names (`status.residual`, `hertz.max_pressure_mpa`);
+//! - arrays of at most [`MAX_ARRAY_LEN`] elements give indexed names (`semi_axes_mm[0]`,
+//!   `extents_mm[1][0]`); longer arrays (curves, rows of a friction sweep) are left out;
+//! - numbers, booleans and strings are kept, `null` is a missing value;
+//! - `kontakt_version`, `schema_version` and the `inputs` echo are left out (the
+//!   parameters and the base case in `sweep.json` say what was run).
+//!
+//! Units are those of the report keys (`_mm`, `_n`, `_mpa`, ...): mm, N, MPa.
+
+use super::{Parameter, ValueKind};
+use arrow_array::{
+    Array, ArrayRef, BooleanArray, Float64Array, Int64Array, RecordBatch, StringArray, UInt64Array,
+};
+use arrow_schema::{DataType, Field, Schema};
+use std::collections::HashMap;
+use std::sync::Arc;
+
+/// Arrays longer than this are not flattened into columns.
+pub const MAX_ARRAY_LEN: usize = 8;
+
+/// Report keys left out of the rows.
+const SKIPPED: [&str; 3] = ["kontakt_version", "schema_version", "inputs"];
+
+/// Names of the fixed columns.
+pub const CASE_COLUMN: &str = "case";
+/// Status column: `ok`, `invalid`, `failed` or `panic`.
+pub const STATUS_COLUMN: &str = "status";
+/// Error message column (null when ok).
+pub const ERROR_COLUMN: &str = "error";
+
+/// How a case ended.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Status {
+    /// Solved.
+    Ok,
+    /// The case reader or the method refused an input (the message names the key).
+    Invalid,
+    /// A computation failed at run time (did not converge).
+    Failed,
+    /// A bug: the solver panicked; the sweep goes on.
+    Panic,
+}
+
+impl Status {
+    /// The status column's text.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Status::Ok => "ok",
+            Status::Invalid => "invalid",
+            Status::Failed => "failed",
+            Status::Panic => "panic",
+        }
+    }
+}
+
+/// One scalar of a report.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Cell {
+    /// Missing (`null` in the report).
+    Null,
+    /// A float.
+    F64(f64),
+    /// An integer.
+    I64(i64),
+    /// A boolean.
+    Bool(bool),
+    /// A string.
+    Str(String),
+}
+
+/// What one case gives.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Row {
+    /// How the case ended.
+    pub status: Status,
+    /// The error message (none when ok).
+    pub error: Option<String>,
+    /// The report's scalars by flattened name, in the report's order.
+    pub outputs: Vec<(String, Cell)>,
+}
+
+/// Flatten a report (as JSON) into named scalars (rules: module docs).
+pub fn flatten(report: &serde_json::Value) -> Vec<(String, Cell)> {
+    let mut out = Vec::with_capacity(48);
+    if let serde_json::Value::Object(map) = report {
+        let mut name = String::with_capacity(64);
+        for (k, v) in map {
+            if SKIPPED.contains(&k.as_str()) {
+                continue;
+            }
+            name.clear();
+            name.push_str(k);
+            walk(v, &mut name, &mut out);
+        }
+    }
+    out
+}
+
+fn walk(v: &serde_json::Value, name: &mut String, out: &mut Vec<(String, Cell)>) {
+    use serde_json::Value as J;
+    let cell = match v {
+        J::Null => Cell::Null,
+        J::Bool(b) => Cell::Bool(*b),
+        J::Number(n) => match n.as_i64() {
+            Some(i) if !n.is_f64() => Cell::I64(i),
+            _ => Cell::F64(n.as_f64().unwrap_or(f64::NAN)),
+        },
+        J::String(s) => Cell::Str(s.clone()),
+        J::Array(a) => {
+            if a.len() <= MAX_ARRAY_LEN {
+                let len = name.len();
+                for (i, x) in a.iter().enumerate() {
+                    use std::fmt::Write as _;
+                    let _ = write!(name, "[{i}]");
+                    walk(x, name, out);
+                    name.truncate(len);
+                }
+            }
+            return;
+        }
+        J::Object(m) => {
+            let len = name.len();
+            for (k, x) in m {
+                name.push('.');
+                name.push_str(k);
+                walk(x, name, out);
+                name.truncate(len);
+            }
+            return;
+        }
+    };
+    out.push((name.clone(), cell));
+}
+
+/// The Arrow type of a column of cells; `None` when every cell is null.
+fn column_type(cells: &[Cell]) -> Option<DataType> {
+    let (mut f, mut i, mut b, mut s, mut s_numeric) = (false, false, false, false, true);
+    for c in cells {
+        match c {
+            Cell::Null => {}
+            Cell::F64(_) => f = true,
+            Cell::I64(_) => i = true,
+            Cell::Bool(_) => b = true,
+            Cell::Str(t) => {
+                s = true;
+                s_numeric &= t.parse::<f64>().is_ok();
+            }
+        }
+    }
+    Some(match (f, i, b, s) {
+        (false, false, false, false) => return None,
+        (_, _, _, true) if (f || i || b) && s_numeric => DataType::Float64,
+        (_, _, _, true) => DataType::Utf8,
+        (false, true, false, false) => DataType::Int64,
+        (false, false, true, false) => DataType::Boolean,
+        _ => DataType::Float64,
+    })
+}
+
+fn cell_f64(c: &Cell) -> Option<f64> {
+    match c {
+        Cell::Null => None,
+        Cell::F64(x) => Some(*x),
+        Cell::I64(x) => Some(*x as f64),
+        Cell::Bool(x) => Some(f64::from(u8::from(*x))),
+        Cell::Str(t) => t.parse().ok(),
+    }
+}
+
+fn cell_text(c: &Cell) -> Option<String> {
+    match c {
+        Cell::Null => None,
+        Cell::F64(x) => Some(format!("{x:?}")),
+        Cell::I64(x) => Some(x.to_string()),
+        Cell::Bool(x) => Some(x.to_string()),
+        Cell::Str(t) => Some(t.clone()),
+    }
+}
+
+fn cells_to_array(cells: &[Cell], ty: &DataType) -> ArrayRef {
+    match ty {
+        DataType::Int64 => Arc::new(Int64Array::from(
+            cells
+                .iter()
+                .map(|c| match c {
+                    Cell::I64(x) => Some(*x),
+                    _ => None,
+                })
+                .collect::<Vec<_>>(),
+        )),
+        DataType::Boolean => Arc::new(BooleanArray::from(
+            cells
+                .iter()
+                .map(|c| match c {
+                    Cell::Bool(x) => Some(*x),
+                    _ => None,
+                })
+                .collect::<Vec<_>>(),
+        )),
+        DataType::Utf8 => Arc::new(StringArray::from(
+            cells.iter().map(cell_text).collect::<Vec<_>>(),
+        )),
+        _ => Arc::new(Float64Array::from(
+            cells.iter().map(cell_f64).collect::<Vec<_>>(),
+        )),
+    }
+}
+
+fn parameter_array(
+    p: &Parameter,
+    values: impl Iterator<Item = toml::Value>,
+) -> (DataType, ArrayRef) {
+    match p.kind {
+        ValueKind::Float => (
+            DataType::Float64,
+            Arc::new(Float64Array::from(
+                values
+                    .map(|v| v.as_float().or_else(|| v.as_integer().map(|i| i as f64)))
+                    .collect::<Vec<_>>(),
+            )),
+        ),
+        ValueKind::Integer => (
+            DataType::Int64,
+            Arc::new(Int64Array::from(
+                values.map(|v| v.as_integer()).collect::<Vec<_>>(),
+            )),
+        ),
+        ValueKind::Boolean => (
+            DataType::Boolean,
+            Arc::new(BooleanArray::from(
+                values.map(|v| v.as_bool()).collect::<Vec<_>>(),
+            )),
+        ),
+        ValueKind::Text => (
+            DataType::Utf8,
+            Arc::new(StringArray::from(
+                values
+                    .map(|v| match v {
+                        toml::Value::String(s) => s,
+                        other => other.to_string(),
+                    })
+                    .collect::<Vec<_>>(),
+            )),
+        ),
+    }
+}
+
+/// The table of one chunk: `case`, the parameters, `status`, `error`, then every output
+/// column that has at least one value in this chunk, in the order first met.
+///
+/// # Errors
+/// The Arrow library's message (columns of unequal length: a bug).
+pub fn chunk_batch(
+    sweep: &super::Sweep,
+    first_case: u64,
+    rows: &[Row],
+) -> Result<RecordBatch, String> {
+    let n = rows.len();
+    let cases = first_case..first_case + n as u64;
+    let mut fields = Vec::new();
+    let mut columns: Vec<ArrayRef> = Vec::new();
+    fields.push(Field::new(CASE_COLUMN, DataType::UInt64, false));
+    columns.push(Arc::new(UInt64Array::from(
+        cases.clone().collect::<Vec<_>>(),
+    )));
+    let reserved: Vec<&str> = sweep
+        .parameters()
+        .iter()
+        .map(|p| p.name.as_str())
+        .chain([CASE_COLUMN, STATUS_COLUMN, ERROR_COLUMN])
+        .collect();
+    for (p, param) in sweep.parameters().iter().enumerate() {
+        let (ty, array) = parameter_array(
+            param,
+            cases
+                .clone()
+                .map(|i| param.values.get(sweep.value_index(p, i))),
+        );
+        fields.push(Field::new(param.name.clone(), ty, true));
+        columns.push(array);
+    }
+    fields.push(Field::new(STATUS_COLUMN, DataType::Utf8, false));
+    columns.push(Arc::new(StringArray::from(
+        rows.iter().map(|r| r.status.as_str()).collect::<Vec<_>>(),
+    )));
+    fields.push(Field::new(ERROR_COLUMN, DataType::Utf8, true));
+    columns.push(Arc::new(StringArray::from(
+        rows.iter().map(|r| r.error.clone()).collect::<Vec<_>>(),
+    )));
+
+    // Output columns: union over the rows, in the order first met.
+    let mut index: HashMap<&str, usize> = HashMap::new();
+    let mut names: Vec<&str> = Vec::new();
+    let mut cells: Vec<Vec<Cell>> = Vec::new();
+    for (r, row) in rows.iter().enumerate() {
+        for (name, cell) in &row.outputs {
+            let c = *index.entry(name.as_str()).or_insert_with(|| {
+                names.push(name.as_str());
+                cells.push(vec![Cell::Null; n]);
+                names.len() - 1
+            });
+            cells[c][r] = cell.clone();
+        }
+    }
+    for (name, column) in names.iter().zip(&cells) {
+        let Some(ty) = column_type(column) else {
+            continue;
+        };
+        let name = if reserved.contains(name) {
+            format!("result.{name}")
+        } else {
+            (*name).to_string()
+        };
+        columns.push(cells_to_array(column, &ty));
+        fields.push(Field::new(name, ty, true));
+    }
+    RecordBatch::try_new(Arc::new(Schema::new(fields)), columns).map_err(|e| e.to_string())
+}
+
+/// The common type of one column over the chunks: equal types stay, integers and floats
+/// (and booleans with numbers) become floats, anything with strings becomes strings.
+pub(crate) fn unify(a: &DataType, b: &DataType) -> DataType {
+    use DataType as D;
+    match (a, b) {
+        _ if a == b => a.clone(),
+        (D::Utf8, _) | (_, D::Utf8) => D::Utf8,
+        _ => D::Float64,
+    }
+}
+
+/// `array` as `to` (see [`unify`]); the same array when it already is.
+pub(crate) fn conform(array: &ArrayRef, to: &DataType) -> ArrayRef {
+    if array.data_type() == to {
+        return array.clone();
+    }
+    let n = array.len();
+    match to {
+        DataType::Utf8 => Arc::new(StringArray::from(
+            (0..n).map(|i| text_at(array, i)).collect::<Vec<_>>(),
+        )),
+        _ => Arc::new(Float64Array::from(
+            (0..n).map(|i| f64_at(array, i)).collect::<Vec<_>>(),
+        )),
+    }
+}
+
+fn f64_at(array: &ArrayRef, i: usize) -> Option<f64> {
+    if array.is_null(i) {
+        return None;
+    }
+    let any = array.as_any();
+    if let Some(a) = any.downcast_ref::<Float64Array>() {
+        Some(a.value(i))
+    } else if let Some(a) = any.downcast_ref::<Int64Array>() {
+        Some(a.value(i) as f64)
+    } else if let Some(a) = any.downcast_ref::<UInt64Array>() {
+        Some(a.value(i) as f64)
+    } else if let Some(a) = any.downcast_ref::<BooleanArray>() {
+        Some(f64::from(u8::from(a.value(i))))
+    } else if let Some(a) = any.downcast_ref::<StringArray>() {
+        a.value(i).parse().ok()
+    } else {
+        None
+    }
+}
+
+/// The value at row `i` as text (floats exact, as Rust's `{:?}`: `1e-7`, `inf`, `NaN`);
+/// none for null.
+pub(crate) fn text_at(array: &ArrayRef, i: usize) -> Option<String> {
+    if array.is_null(i) {
+        return None;
+    }
+    let any = array.as_any();
+    if let Some(a) = any.downcast_ref::<Float64Array>() {
+        Some(format!("{:?}", a.value(i)))
+    } else if let Some(a) = any.downcast_ref::<Int64Array>() {
+        Some(a.value(i).to_string())
+    } else if let Some(a) = any.downcast_ref::<UInt64Array>() {
+        Some(a.value(i).to_string())
+    } else if let Some(a) = any.downcast_ref::<BooleanArray>() {
+        Some(a.value(i).to_string())
+    } else {
+        any.downcast_ref::<StringArray>()
+            .map(|a| a.value(i).to_string())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn flatten_names_nested_and_short_arrays_only() {
+        let v = serde_json::json!({
+            "kontakt_version": "0.1.0", "schema_version": 1, "inputs": {"force_n": 1.0},
+            "force_n": 100.0, "patches": 1, "mode": "corrected",
+            "semi_axes_mm": [0.5, 0.25], "extents_mm": [[-1.0, 1.0], [-0.5, 0.5]],
+            "status": {"termination": "converged", "residual": 1e-9},
+            "curve": [0, 1, 2, 3, 4, 5, 6, 7, 8], "hertz": null, "ok": true
+        });
+        let cells = flatten(&v);
+        let names: Vec<&str> = cells.iter().map(|(n, _)| n.as_str()).collect();
+        for want in [
+            "force_n",
+            "patches",
+            "mode",
+            "semi_axes_mm[1]",
+            "extents_mm[1][0]",
+            "status.termination",
+            "status.residual",
+            "hertz",
+            "ok",
+        ] {
+            assert!(names.contains(&want), "{want} not in {names:?}");
+        }
+        for skipped in [
+            "kontakt_version",
+            "schema_version",
+            "inputs.force_n",
+            "curve[0]",
+        ] {
+            assert!(!names.contains(&skipped), "{skipped} in {names:?}");
+        }
+        assert!(cells.contains(&("patches".into(), Cell::I64(1))));
+        assert!(cells.contains(&("force_n".into(), Cell::F64(100.0))));
+    }
+
+    #[test]
+    fn column_types_resolve() {
+        use Cell as C;
+        assert_eq!(column_type(&[C::Null, C::Null]), None);
+        assert_eq!(column_type(&[C::I64(1), C::Null]), Some(DataType::Int64));
+        assert_eq!(
+            column_type(&[C::I64(1), C::F64(0.5)]),
+            Some(DataType::Float64)
+        );
+        assert_eq!(
+            column_type(&[C::F64(1.0), C::Str("inf".into())]),
+            Some(DataType::Float64)
+        );
+        assert_eq!(
+            column_type(&[C::F64(1.0), C::Str("x".into())]),
+            Some(DataType::Utf8)
+        );
+        assert_eq!(
+            unify(&DataType::Int64, &DataType::Float64),
+            DataType::Float64
+        );
+        assert_eq!(unify(&DataType::Int64, &DataType::Utf8), DataType::Utf8);
+        let a: ArrayRef = Arc::new(Int64Array::from(vec![Some(2), None]));
+        let f = conform(&a, &DataType::Float64);
+        assert_eq!(f64_at(&f, 0), Some(2.0));
+        assert!(f.is_null(1));
+    }
+}

@@ -1,0 +1,112 @@
+//! `kontakt sweep SWEEP.toml`: a parameter sweep run on the local cores with a progress
+//! bar, resumable, combined into one table. A thin shell over `kontakt_case::Sweep`.
+
+use crate::cli::{SweepArgs, SweepFormat};
+use crate::commands::InputError;
+use anyhow::Result;
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use kontakt_case::sweep::{LocalOptions, MAX_THREADS, OutputFormat, Progress, Sweep};
+use std::io::{IsTerminal, Write};
+
+/// Run the subcommand.
+pub fn run(args: &SweepArgs, out: &mut impl Write) -> Result<()> {
+    if let Some(t) = args.threads.filter(|&t| t == 0 || t > MAX_THREADS) {
+        return Err(InputError(format!(
+            "invalid --threads = {t}: expected 1..={MAX_THREADS}"
+        ))
+        .into());
+    }
+    let sweep = Sweep::from_path_with_limit(&args.sweep, args.max_cases)?;
+    let format = match args.format {
+        SweepFormat::Parquet => OutputFormat::Parquet,
+        SweepFormat::Csv => OutputFormat::Csv,
+    };
+    let show = !args.quiet && !args.json && std::io::stderr().is_terminal();
+    let bar = if show {
+        let bar = ProgressBar::with_draw_target(Some(sweep.len()), ProgressDrawTarget::stderr());
+        bar.set_style(
+            ProgressStyle::with_template(
+                "{spinner} [{elapsed_precise}] {wide_bar} {pos}/{len} cases ({per_sec}, {eta} left)",
+            )
+            .unwrap_or_else(|_| ProgressStyle::default_bar()),
+        );
+        Some(bar)
+    } else {
+        None
+    };
+    let progress = |p: Progress| {
+        if let Some(b) = &bar {
+            b.set_position(p.cases_done);
+        }
+    };
+    let summary = sweep.run_local(
+        &args.out,
+        LocalOptions {
+            threads: args.threads.unwrap_or(0),
+            format,
+            progress: Some(&progress),
+        },
+    );
+    if let Some(b) = &bar {
+        b.finish_and_clear();
+    }
+    let s = summary?;
+    if args.json {
+        let v = serde_json::json!({
+            "out": args.out,
+            "hash": sweep.hash(),
+            "cases": sweep.len(),
+            "chunks": s.chunks,
+            "chunks_computed": s.chunks_computed,
+            "chunks_reused": s.chunks_reused,
+            "cases_computed": s.cases_computed,
+            "cases_not_ok": s.combined.not_ok,
+            "threads": s.threads,
+            "seconds_computing": s.seconds_computing,
+            "seconds_combining": s.seconds_combining,
+            "results": s.combined.path,
+            "columns": s.combined.columns,
+        });
+        serde_json::to_writer_pretty(&mut *out, &v)?;
+        writeln!(out)?;
+        return Ok(());
+    }
+    let per_case = if s.cases_computed > 0 {
+        format!(
+            ", {:.2} us per case and thread",
+            1e6 * s.seconds_computing * s.threads as f64 / s.cases_computed as f64
+        )
+    } else {
+        String::new()
+    };
+    writeln!(
+        out,
+        "Sweep{}: {} cases in {} chunks of {} ({} computed, {} found complete), {} threads, {:.2} s{per_case}",
+        sweep
+            .name()
+            .map(|n| format!(" \"{n}\""))
+            .unwrap_or_default(),
+        sweep.len(),
+        s.chunks,
+        sweep.chunk_size(),
+        s.chunks_computed,
+        s.chunks_reused,
+        s.threads,
+        s.seconds_computing,
+    )?;
+    if s.combined.not_ok > 0 {
+        writeln!(
+            out,
+            "{} cases not ok: see the status and error columns",
+            s.combined.not_ok
+        )?;
+    }
+    writeln!(
+        out,
+        "Results: {} ({} rows, {} columns)",
+        s.combined.path.display(),
+        s.combined.rows,
+        s.combined.columns.len()
+    )?;
+    Ok(())
+}

@@ -1,0 +1,402 @@
+//! `kontakt sweep`: results against the closed form, resumption after a kill, refusal of a
+//! directory holding another sweep, one-line errors for bad sweep files.
+
+#![allow(clippy::unwrap_used)] // test helpers: a panic is a test failure with its message
+
+use assert_cmd::Command;
+use serde_json::Value;
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant, SystemTime};
+
+fn kontakt() -> Command {
+    Command::cargo_bin("kontakt").expect("binary built")
+}
+
+fn examples() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples")
+}
+
+/// A fresh folder per test.
+fn tempdir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("kontakt-sweep-test-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn run_json(args: &[&str]) -> Value {
+    let out = kontakt().args(args).arg("--json").output().unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
+/// The rows of a results.csv as maps column → text.
+fn read_csv(path: &Path) -> Vec<HashMap<String, String>> {
+    let mut r = csv::Reader::from_path(path).unwrap();
+    let header: Vec<String> = r.headers().unwrap().iter().map(str::to_string).collect();
+    r.records()
+        .map(|rec| {
+            header
+                .iter()
+                .cloned()
+                .zip(rec.unwrap().iter().map(str::to_string))
+                .collect()
+        })
+        .collect()
+}
+
+fn num(row: &HashMap<String, String>, key: &str) -> f64 {
+    row[key]
+        .parse()
+        .unwrap_or_else(|_| panic!("{key} = {:?}", row[key]))
+}
+
+/// Run, expect exit status 2 and one stderr line; return it.
+fn bad(args: &[&str]) -> String {
+    let out = kontakt().args(args).output().unwrap();
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(out.status.code(), Some(2), "args {args:?}: {err}");
+    let lines: Vec<_> = err.lines().filter(|l| !l.trim().is_empty()).collect();
+    assert_eq!(lines.len(), 1, "not one line: {err}");
+    lines[0].to_string()
+}
+
+const HERTZ_BASE: &str = r#"
+[base]
+[base.contact]
+kind = "point"
+[base.body1]
+radii_mm = [6.35, 6.35]
+e_mpa = 210000.0
+nu = 0.3
+[base.body2]
+radii_mm = [inf, inf]
+e_mpa = 210000.0
+nu = 0.3
+[base.load]
+force_n = 100.0
+"#;
+
+#[test]
+fn hertz_sweep_matches_the_closed_form_in_every_row() {
+    let dir = tempdir("closed-form");
+    let out = dir.join("out");
+    let v = run_json(&[
+        "sweep",
+        examples().join("sweeps/hertz_load.toml").to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--format",
+        "csv",
+        "--quiet",
+    ]);
+    assert_eq!(v["cases"], 600);
+    assert_eq!(v["cases_not_ok"], 0);
+    let rows = read_csv(&out.join("results.csv"));
+    assert_eq!(rows.len(), 600);
+    // Sphere of radius R on a flat, both steel: E* = E / (2 (1 - nu²)),
+    // a = (3 F R / (4 E*))^(1/3), p0 = 3 F / (2 pi a²), delta = a² / R.
+    let e_star = 210_000.0 / (2.0 * (1.0 - 0.3 * 0.3));
+    let mut per_radius: HashMap<String, Vec<(f64, f64)>> = HashMap::new();
+    for (i, row) in rows.iter().enumerate() {
+        assert_eq!(row["case"], i.to_string(), "case order");
+        assert_eq!(row["status"], "ok");
+        let r = num(row, "ball_radius_mm");
+        let f = num(row, "load.force_n");
+        assert_eq!(
+            num(row, "force_n"),
+            f,
+            "row {i}: the report's force is the swept one"
+        );
+        let a = (3.0 * f * r / (4.0 * e_star)).cbrt();
+        let p0 = 3.0 * f / (2.0 * std::f64::consts::PI * a * a);
+        for (key, want) in [
+            ("semi_axes_mm[0]", a),
+            ("semi_axes_mm[1]", a),
+            ("max_pressure_mpa", p0),
+            ("approach_mm", a * a / r),
+            ("e_star_mpa", e_star),
+        ] {
+            let got = num(row, key);
+            assert!(
+                ((got - want) / want).abs() < 1e-12,
+                "row {i} (R = {r}, F = {f}): {key} = {got}, closed form {want}"
+            );
+        }
+        per_radius
+            .entry(row["ball_radius_mm"].clone())
+            .or_default()
+            .push((f, num(row, "max_pressure_mpa")));
+    }
+    // Within one radius, p0 ∝ F^(1/3), and the forces are log-spaced from 1 to 10^4 N.
+    assert_eq!(per_radius.len(), 3);
+    for points in per_radius.values() {
+        assert_eq!(points.len(), 200);
+        assert_eq!(points[0].0, 1.0);
+        assert_eq!(points[199].0, 10_000.0);
+        let (f0, p0) = points[0];
+        for &(f, p) in points {
+            let want = p0 * (f / f0).cbrt();
+            assert!(
+                ((p - want) / want).abs() < 1e-12,
+                "F = {f}: p0 = {p}, {want}"
+            );
+        }
+        for w in points.windows(2) {
+            let ratio = w[1].0 / w[0].0;
+            assert!((ratio - 10f64.powf(4.0 / 199.0)).abs() < 1e-12, "{ratio}");
+        }
+    }
+}
+
+#[test]
+fn pimp_example_sweep_runs_both_modes() {
+    let dir = tempdir("pimp");
+    let out = dir.join("out");
+    let v = run_json(&[
+        "sweep",
+        examples()
+            .join("sweeps/pimp_roller_rib.toml")
+            .to_str()
+            .unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--format",
+        "csv",
+    ]);
+    assert_eq!(v["cases"], 14);
+    assert_eq!(v["cases_not_ok"], 0);
+    let rows = read_csv(&out.join("results.csv"));
+    assert_eq!(rows.len(), 14);
+    for mode in ["corrected", "published"] {
+        let mine: Vec<_> = rows.iter().filter(|r| r["pimp.mode"] == mode).collect();
+        assert_eq!(mine.len(), 7);
+        for r in &mine {
+            assert_eq!(r["mode"], mode);
+            // The field's force is the swept load (PimP scales to equilibrium).
+            let f = num(r, "load.force_n");
+            assert!((num(r, "force_n") - f).abs() < 1e-6 * f, "{r:?}");
+            assert_eq!(r["status.termination"], "converged");
+        }
+        for w in mine.windows(2) {
+            assert!(num(w[1], "max_pressure_mpa") > num(w[0], "max_pressure_mpa"));
+            assert!(num(w[1], "contact_area_mm2") > num(w[0], "contact_area_mm2"));
+        }
+    }
+}
+
+fn chunk_times(dir: &Path) -> HashMap<String, SystemTime> {
+    std::fs::read_dir(dir.join("chunks"))
+        .unwrap()
+        .map(|e| e.unwrap())
+        .filter(|e| {
+            let n = e.file_name().to_string_lossy().into_owned();
+            n.starts_with("chunk-") && n.ends_with(".parquet")
+        })
+        .map(|e| {
+            (
+                e.file_name().to_string_lossy().into_owned(),
+                e.metadata().unwrap().modified().unwrap(),
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn a_killed_sweep_resumes_with_the_missing_chunks_only() {
+    let dir = tempdir("resume");
+    let out = dir.join("out");
+    // 60 x 1000 = 60 000 Hertz cases in 120 chunks of 500: a few seconds on one thread.
+    let sweep = dir.join("sweep.toml");
+    std::fs::write(
+        &sweep,
+        format!(
+            "chunk_size = 500\n\
+             [[parameter]]\nkey = \"body2.e_mpa\"\nstart = 70000.0\nstop = 400000.0\ncount = 60\n\
+             [[parameter]]\nkey = \"load.force_n\"\nstart = 1.0\nstop = 1000.0\ncount = 1000\nspacing = \"log\"\n\
+             {HERTZ_BASE}"
+        ),
+    )
+    .unwrap();
+    let bin = assert_cmd::cargo::cargo_bin("kontakt");
+    let mut child = std::process::Command::new(&bin)
+        .args(["sweep", sweep.to_str().unwrap(), "--out"])
+        .arg(&out)
+        .args(["--threads", "1", "--quiet"])
+        .stdout(std::process::Stdio::null())
+        .stderr(std::process::Stdio::null())
+        .spawn()
+        .unwrap();
+    let start = Instant::now();
+    loop {
+        if out.join("chunks").is_dir() && chunk_times(&out).len() >= 3 {
+            break;
+        }
+        assert!(
+            start.elapsed() < Duration::from_secs(120),
+            "no chunks after 120 s"
+        );
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    child.kill().unwrap();
+    child.wait().unwrap();
+    let before = chunk_times(&out);
+    assert!(before.len() >= 3);
+    assert!(
+        before.len() < 120,
+        "the run finished before it was killed: make the sweep larger"
+    );
+    assert!(!out.join("results.parquet").exists());
+
+    // The rerun computes only the missing chunks.
+    let v = run_json(&[
+        "sweep",
+        sweep.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--format",
+        "csv",
+    ]);
+    assert_eq!(v["chunks"], 120);
+    assert_eq!(v["chunks_reused"], before.len());
+    assert_eq!(v["chunks_computed"], 120 - before.len());
+    assert_eq!(v["cases_computed"], 500 * (120 - before.len()));
+    let after = chunk_times(&out);
+    assert_eq!(after.len(), 120);
+    for (name, t) in &before {
+        assert_eq!(after[name], *t, "{name} was rewritten");
+    }
+    // No temporary file is left behind.
+    let leftovers: Vec<_> = std::fs::read_dir(out.join("chunks"))
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.ends_with(".tmp"))
+        .collect();
+    assert!(leftovers.is_empty(), "{leftovers:?}");
+
+    // Every case exactly once, in case order.
+    let rows = read_csv(&out.join("results.csv"));
+    assert_eq!(rows.len(), 60_000);
+    for (i, row) in rows.iter().enumerate() {
+        assert_eq!(row["case"], i.to_string());
+        assert_eq!(row["status"], "ok");
+    }
+    // Grid order: the last parameter (force) varies fastest.
+    assert_eq!(num(&rows[999], "load.force_n"), 1000.0);
+    assert_eq!(num(&rows[1000], "load.force_n"), 1.0);
+    assert_eq!(num(&rows[59_999], "body2.e_mpa"), 400_000.0);
+
+    // A third run finds everything complete and recomputes nothing.
+    let v = run_json(&[
+        "sweep",
+        sweep.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(v["chunks_computed"], 0);
+    assert_eq!(v["cases_not_ok"], 0);
+    assert!(out.join("results.parquet").is_file());
+}
+
+#[test]
+fn a_directory_holding_another_sweep_is_refused() {
+    let dir = tempdir("other");
+    let out = dir.join("out");
+    let write = |name: &str, forces: &str| {
+        let p = dir.join(name);
+        std::fs::write(
+            &p,
+            format!("[[parameter]]\nkey = \"load.force_n\"\nvalues = [{forces}]\n{HERTZ_BASE}"),
+        )
+        .unwrap();
+        p
+    };
+    let a = write("a.toml", "1.0, 2.0");
+    let b = write("b.toml", "1.0, 3.0");
+    run_json(&["sweep", a.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let err = bad(&["sweep", b.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    assert!(
+        err.contains(out.to_str().unwrap()) && err.contains("different sweep"),
+        "{err}"
+    );
+    // The first sweep's results are untouched, and it can be rerun.
+    let v = run_json(&["sweep", a.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    assert_eq!(v["chunks_computed"], 0);
+}
+
+#[test]
+fn failing_cases_are_rows_not_crashes() {
+    let dir = tempdir("failing");
+    let out = dir.join("out");
+    let p = dir.join("s.toml");
+    std::fs::write(
+        &p,
+        format!(
+            "[[parameter]]\nkey = \"load.force_n\"\nvalues = [100.0, -1.0, 200.0]\n{HERTZ_BASE}"
+        ),
+    )
+    .unwrap();
+    let v = run_json(&[
+        "sweep",
+        p.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--format",
+        "csv",
+    ]);
+    assert_eq!(v["cases_not_ok"], 1);
+    let rows = read_csv(&out.join("results.csv"));
+    assert_eq!(rows[0]["status"], "ok");
+    assert_eq!(rows[1]["status"], "invalid");
+    assert!(rows[1]["error"].contains("load.force_n"), "{:?}", rows[1]);
+    assert_eq!(rows[1]["max_pressure_mpa"], "");
+    assert_eq!(rows[2]["status"], "ok");
+}
+
+#[test]
+fn bad_sweep_files_fail_with_one_line_naming_the_key() {
+    let dir = tempdir("bad");
+    let out = dir.join("out");
+    let cases = [
+        (
+            "[[parameter]]\nkey = \"load.forse_n\"\nvalues = [1.0]\n",
+            "load.forse_n",
+        ),
+        (
+            "[[parameter]]\nkey = \"load.force_n\"\nstart = 1.0\nstop = 2.0\ncount = 0\n",
+            "parameter[0].count = 0",
+        ),
+        (
+            "[[parameter]]\nkey = \"load.force_n\"\nstart = 1.0\nstop = 2.0\ncount = 100000\n\
+             [[parameter]]\nkey = \"body1.e_mpa\"\nstart = 1.0\nstop = 2.0\ncount = 1000\n",
+            "max_cases = 10000000",
+        ),
+        (
+            "[[parameter]]\nkey = \"load.force_n\"\nvalue = [1.0]\n",
+            "value",
+        ),
+    ];
+    for (i, (params, want)) in cases.iter().enumerate() {
+        let p = dir.join(format!("bad{i}.toml"));
+        std::fs::write(&p, format!("{params}{HERTZ_BASE}")).unwrap();
+        let err = bad(&["sweep", p.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+        assert!(err.contains(want), "{err}");
+        assert!(err.contains(p.to_str().unwrap()), "names the file: {err}");
+    }
+    let p = dir.join("bad0.toml");
+    let err = bad(&[
+        "sweep",
+        p.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--threads",
+        "0",
+    ]);
+    assert!(err.contains("--threads = 0"), "{err}");
+    assert!(!out.exists(), "nothing written for bad input");
+}
