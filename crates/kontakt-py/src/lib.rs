@@ -21,6 +21,7 @@ mod element;
 mod errors;
 mod halfspace;
 mod hertz;
+mod sweep;
 
 use pyo3::prelude::*;
 
@@ -47,5 +48,6 @@ fn _kontakt(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(case::run_case, m)?)?;
     m.add_class::<element::ContactElement>()?;
     m.add_class::<element::ElementResult>()?;
+    m.add_class::<sweep::Sweep>()?;
     Ok(())
 }

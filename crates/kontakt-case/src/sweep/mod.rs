@@ -584,6 +584,26 @@ impl Sweep {
     /// set together with the other parameters' first values must read as a case.
     fn check_keys(&self, method: &str) -> SweepResult<()> {
         let firsts: Vec<toml::Value> = self.parameters.iter().map(|p| p.values.get(0)).collect();
+        // Each parameter alone at its first value first, so that an unknown key is blamed
+        // on its own parameter, not on the one being probed below.
+        for (k, q) in self.parameters.iter().enumerate() {
+            let mut table = self.base.clone();
+            for key in &q.keys {
+                key.set(&mut table, firsts[k].clone()).map_err(|m| {
+                    input(format!(
+                        "invalid parameter[{k}].key = \"{}\": {m}",
+                        key.text
+                    ))
+                })?;
+            }
+            if let Err(e) = Case::from_toml_table(table) {
+                let keys = q.keys().join("\", \"");
+                return Err(input(format!(
+                    "invalid parameter[{k}].key = \"{keys}\" with value {}: not accepted by the {method} case reader: {e}",
+                    firsts[k]
+                )));
+            }
+        }
         for (i, p) in self.parameters.iter().enumerate() {
             let probes: Vec<u64> = match &p.values {
                 Values::List(v) => (0..v.len() as u64).collect(),

@@ -9,6 +9,7 @@ from __future__ import annotations
 import os
 from typing import Any, Mapping
 
+from ._sweep import sweep
 from ._kontakt import (
     CaseResult,
     ContactElement,
@@ -22,6 +23,7 @@ from ._kontakt import (
     HertzPointResult,
     InputError,
     Material,
+    Sweep,
     __version__,
     run_case,
     run_file,
@@ -41,11 +43,13 @@ __all__ = [
     "HertzPointResult",
     "InputError",
     "Material",
+    "Sweep",
     "__version__",
     "run",
     "run_case",
     "run_file",
     "run_toml",
+    "sweep",
 ]
 
 

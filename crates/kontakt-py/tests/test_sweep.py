@@ -1,0 +1,140 @@
+"""kontakt.sweep: local and on a Dask LocalCluster, resumable, each case exactly once; the
+Hertz rows against Johnson's closed form; a lost worker loses no results."""
+
+from __future__ import annotations
+
+import csv
+import math
+import os
+from pathlib import Path
+
+import pytest
+
+import kontakt as kt
+
+ROOT = Path(__file__).resolve().parents[3]
+E_STAR = 210000.0 / (2.0 * (1.0 - 0.3**2))  # steel on steel [MPa]
+
+
+def sweep_text(chunk_size: int, count: int = 200, radii: str = "3.175, 6.35, 12.7") -> str:
+    """The Hertz load sweep of examples/sweeps with a chosen chunk size."""
+    base = (ROOT / "examples" / "ball_on_flat.toml").as_posix()
+    return f"""
+name = "ball on flat"
+mode = "grid"
+chunk_size = {chunk_size}
+base = "{base}"
+
+[[parameter]]
+key = ["body1.radii_mm[0]", "body1.radii_mm[1]"]
+name = "ball_radius_mm"
+values = [{radii}]
+
+[[parameter]]
+key = "load.force_n"
+start = 1.0
+stop = 10000.0
+count = {count}
+spacing = "log"
+"""
+
+
+def read_rows(path: str) -> list[dict[str, str]]:
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def check_hertz_rows(rows: list[dict[str, str]], n: int) -> None:
+    """Every case once, in order; p0 = (6 F E*² / π³ R²)^(1/3) (Johnson 1985 eq. 4.24)."""
+    assert [int(r["case"]) for r in rows] == list(range(n))
+    for r in rows:
+        assert r["status"] == "ok", r
+        force = float(r["load.force_n"])
+        radius = float(r["ball_radius_mm"])
+        p0 = (6.0 * force * E_STAR**2 / (math.pi**3 * radius**2)) ** (1.0 / 3.0)
+        assert float(r["max_pressure_mpa"]) == pytest.approx(p0, rel=1e-12)
+
+
+def test_local_sweep_matches_the_closed_form_and_resumes(tmp_path: Path) -> None:
+    out = tmp_path / "local"
+    done: list[int] = []
+    path = kt.sweep(sweep_text(100), out, format="csv", on_chunk=lambda s: done.append(s["index"]))
+    assert Path(path).name == "results.csv"
+    assert done == list(range(6))
+    check_hertz_rows(read_rows(path), 600)
+    # Lose two chunks: the rerun computes exactly those and the table is whole again.
+    for i in (1, 4):
+        (out / "chunks" / f"chunk-{i:06d}.parquet").unlink()
+    again: list[int] = []
+    path = kt.sweep(sweep_text(100), out, format="csv", on_chunk=lambda s: again.append(s["index"]))
+    assert again == [1, 4]
+    check_hertz_rows(read_rows(path), 600)
+    # Nothing missing: nothing computed.
+    third: list[int] = []
+    kt.sweep(sweep_text(100), out, format="csv", on_chunk=lambda s: third.append(s["index"]))
+    assert third == []
+
+
+def test_the_sweep_object_and_bad_input(tmp_path: Path) -> None:
+    s = kt.Sweep.from_toml(sweep_text(64))
+    assert len(s) == 600 and s.chunk_size == 64 and s.chunk_count == 10
+    assert s.chunk_range(9) == (576, 600)
+    with pytest.raises(kt.InputError):
+        s.chunk_range(10)
+    # A directory holding another sweep is refused.
+    kt.sweep(sweep_text(100, count=2), tmp_path / "a", format="csv")
+    with pytest.raises(kt.InputError, match="sweep"):
+        kt.sweep(sweep_text(100, count=3), tmp_path / "a")
+    # An unknown key, an empty range, a sweep above max_cases.
+    with pytest.raises(kt.InputError, match="load.force_nn"):
+        kt.Sweep.from_toml(sweep_text(100).replace('"load.force_n"', '"load.force_nn"'))
+    with pytest.raises(kt.InputError, match="count"):
+        kt.Sweep.from_toml(sweep_text(100, count=0))
+    with pytest.raises(kt.InputError, match="max_cases|cases"):
+        kt.Sweep.from_toml(sweep_text(100), max_cases=10)
+    with pytest.raises(kt.InputError, match="format"):
+        kt.sweep(sweep_text(100, count=2), tmp_path / "a", format="xlsx")
+
+
+@pytest.fixture(scope="module")
+def client():
+    # dask.distributed is pinned by tools/test: a missing install fails here, never skips.
+    from dask.distributed import Client, LocalCluster
+
+    cluster = LocalCluster(
+        n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None
+    )
+    c = Client(cluster)
+    yield c
+    c.close()
+    cluster.close()
+
+
+def test_dask_sweep_equals_the_local_one(client, tmp_path: Path) -> None:
+    local = read_rows(kt.sweep(sweep_text(50), tmp_path / "local", format="csv"))
+    remote = read_rows(kt.sweep(sweep_text(50), tmp_path / "dask", client=client, format="csv"))
+    assert remote == local
+    check_hertz_rows(remote, 600)
+
+
+def test_a_lost_worker_loses_no_results(client, tmp_path: Path) -> None:
+    """One worker process is killed after the first chunk is in; Dask reschedules what it
+    held (its nanny starts a new one) and the table still has every case exactly once."""
+    killed: list[str] = []
+
+    def kill_one(summary: dict) -> None:
+        if not killed:
+            victim = sorted(client.scheduler_info()["workers"])[0]
+            killed.append(victim)
+            try:
+                client.run(os._exit, 1, workers=[victim])
+            except Exception:
+                pass  # the worker died while answering: that is the point
+
+    # 20 chunks of 400 cases: tens of milliseconds each, so most are queued or running
+    # when the worker dies.
+    text = sweep_text(400, count=2000, radii="3.175, 6.35, 12.7, 25.4")
+    path = kt.sweep(text, tmp_path / "lost", client=client, format="csv", on_chunk=kill_one)
+    assert killed
+    assert killed[0] not in client.scheduler_info()["workers"], "the worker did not die"
+    check_hertz_rows(read_rows(path), 8000)
