@@ -196,17 +196,7 @@ fn unloaded(grid: Grid2, zeros: &[f64], rotation: f64) -> WarmField<'_> {
         grid,
         pressure: zeros,
         rotation,
-        zone: ContactZone {
-            area: 0.0,
-            force: 0.0,
-            max_pressure: 0.0,
-            max_pressure_at: [0.0; 2],
-            extents: [[0.0; 2]; 2],
-            centroid: [0.0; 2],
-            patches: 0,
-            centre_line_curvature: None,
-            touches_border: [false; 2],
-        },
+        zone: ContactZone::EMPTY,
         force: 0.0,
         iterations: 0,
     }

@@ -35,6 +35,19 @@ pub struct ContactZone {
 }
 
 impl ContactZone {
+    /// The zone of a field with no loaded cell: zero area, force and pressure, no patch.
+    pub const EMPTY: ContactZone = ContactZone {
+        area: 0.0,
+        force: 0.0,
+        max_pressure: 0.0,
+        max_pressure_at: [0.0; 2],
+        extents: [[0.0; 2]; 2],
+        centroid: [0.0; 2],
+        patches: 0,
+        centre_line_curvature: None,
+        touches_border: [false; 2],
+    };
+
     /// Analyse `pressure` \[MPa\] sampled on `grid` (row-major, x fastest).
     ///
     /// # Errors
@@ -70,17 +83,7 @@ impl ContactZone {
             }
         }
         if cells == 0 {
-            return Ok(ContactZone {
-                area: 0.0,
-                force: 0.0,
-                max_pressure: 0.0,
-                max_pressure_at: [0.0; 2],
-                extents: [[0.0; 2]; 2],
-                centroid: [0.0; 2],
-                patches: 0,
-                centre_line_curvature: None,
-                touches_border: [false; 2],
-            });
+            return Ok(ContactZone::EMPTY);
         }
         let (dx, dy) = (grid.dx(), grid.dy());
         let psum = force / da;
