@@ -6,7 +6,7 @@
 //! each evaluation re-samples the gap on that grid and restarts the constrained conjugate
 //! gradients from the previous pressure (Polonsky & Keer 1999; [`Start::Warm`]). The grid
 //! is re-chosen only when the zone reaches its border or fills less than
-//! [`MIN_FILL`] of it; then one adaptive solve ([`Bem::solve_approach`]) finds the zone
+//! [`MIN_FILL`] of it (or the warm solve does not converge); then one adaptive solve ([`Bem::solve_approach`]) finds the zone
 //! and the new grid is laid on a ladder of spacings `2^(k/8)` mm, so that elements of
 //! similar contacts land on the same spacing and share one plan through the planner
 //! ([`ContactElement::with_planner`](super::ContactElement::with_planner)).
@@ -98,13 +98,14 @@ impl WarmHalfSpace {
                     let st = self.state.as_ref().ok_or_else(no_state)?;
                     return Ok(unloaded(grid, &st.zeros, st.rotation));
                 }
-                let report = st
-                    .solver
-                    .solve(&st.gap, control, Start::Warm)?
-                    .require_converged()?;
+                let report = st.solver.solve(&st.gap, control, Start::Warm)?;
                 iterations += report.status.iterations;
-                let zone = ContactZone::analyse(&grid, st.solver.pressure())?;
-                fits(&grid, &zone)
+                // A warm solve that does not converge is not the answer: lay a grid and
+                // solve from cold (whose non-convergence is then an error).
+                report.status.converged() && {
+                    let zone = ContactZone::analyse(&grid, st.solver.pressure())?;
+                    fits(&grid, &zone)
+                }
             }
             None => false,
         };
