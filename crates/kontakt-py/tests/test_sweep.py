@@ -45,7 +45,7 @@ def read_rows(path: str) -> list[dict[str, str]]:
 
 
 def check_hertz_rows(rows: list[dict[str, str]], n: int) -> None:
-    """Every case once, in order; p0 = (6 F E*² / π³ R²)^(1/3) (Johnson 1985 eq. 4.24)."""
+    """Every case once, in order; p0 = (6 F E*² / π³ R²)^(1/3), Hertz (Johnson 1985, ch. 4)."""
     assert [int(r["case"]) for r in rows] == list(range(n))
     for r in rows:
         assert r["status"] == "ok", r
