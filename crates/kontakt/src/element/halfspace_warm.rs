@@ -53,6 +53,8 @@ struct State {
     gap: Vec<f64>,
     /// Zeros of the grid's size: the field when the approach reaches no cell centre.
     zeros: Vec<f64>,
+    /// The zone of the solver's last pressure field.
+    zone: ContactZone,
 }
 
 /// The one-cell unloaded field of an approach that reaches no cell centre of the
@@ -103,8 +105,8 @@ impl WarmHalfSpace {
                 // A warm solve that does not converge is not the answer: lay a grid and
                 // solve from cold (whose non-convergence is then an error).
                 report.status.converged() && {
-                    let zone = ContactZone::analyse(&grid, st.solver.pressure())?;
-                    fits(&grid, &zone)
+                    st.zone = ContactZone::analyse(&grid, st.solver.pressure())?;
+                    fits(&grid, &st.zone)
                 }
             }
             None => false,
@@ -120,14 +122,12 @@ impl WarmHalfSpace {
             }
         }
         let st = self.state.as_ref().ok_or_else(no_state)?;
-        let grid = *st.solver.grid();
-        let zone = ContactZone::analyse(&grid, st.solver.pressure())?;
         Ok(WarmField {
-            grid,
+            grid: *st.solver.grid(),
             pressure: st.solver.pressure(),
             rotation: st.rotation,
-            zone,
-            force: zone.force,
+            zone: st.zone,
+            force: st.zone.force,
             iterations,
         })
     }
@@ -170,6 +170,7 @@ impl WarmHalfSpace {
                 rotation,
                 zeros: vec![0.0; gap.len()],
                 gap,
+                zone,
             });
             return Ok(iterations);
         }
