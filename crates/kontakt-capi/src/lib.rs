@@ -166,7 +166,7 @@ type Failure = (i32, String);
 
 fn library_error(e: Error) -> Failure {
     let code = match e {
-        Error::InvalidInput { .. } => KONTAKT_INVALID_INPUT,
+        Error::InvalidInput { .. } | Error::CaseFile { .. } => KONTAKT_INVALID_INPUT,
         _ => KONTAKT_FAILED,
     };
     (code, e.to_string())

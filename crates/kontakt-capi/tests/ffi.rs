@@ -228,7 +228,10 @@ fn invalid_utf8_is_refused() {
 #[test]
 fn invalid_cases_name_the_key() {
     for (text, key) in [
-        (BALL.replace("\"hertz\"", "\"fem\""), "invalid case"),
+        (
+            BALL.replace("\"hertz\"", "\"fem\""),
+            "line 11: `element.backend` = `fem`",
+        ),
         (
             BALL.replace("radius_mm = 10.0", "radius_mm = -2.0"),
             "invalid geometry.body1.radius_mm = -2",

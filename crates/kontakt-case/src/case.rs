@@ -5,7 +5,7 @@ pub use crate::hertz_case::{
     BodySpec, CaseFile, ContactKind, ContactSpec, LoadControl, LoadSpec, Method, YieldSpec,
 };
 
-use crate::common::parse_toml;
+use crate::common::{case_file_error, parse_toml};
 use kontakt::{Error, Result};
 use serde::Serialize;
 use std::path::Path;
@@ -55,17 +55,12 @@ impl Case {
     /// by editing a base case; no text is parsed or written).
     ///
     /// # Errors
-    /// [`Error::InvalidInput`] with field `case` and the reader's message for unknown keys
-    /// or wrong types; an unknown `method` names the valid ones.
+    /// [`Error::CaseFile`] with the reader's message for unknown keys or wrong types; an unknown `method` names the valid ones.
     pub fn from_toml_table(table: toml::Table) -> Result<Self> {
         fn read<T: serde::de::DeserializeOwned>(table: toml::Table) -> Result<T> {
-            table.try_into().map_err(|e: toml::de::Error| {
-                Error::invalid(
-                    "case",
-                    e.message().trim().to_string(),
-                    "a case following docs/case-schema.md",
-                )
-            })
+            table
+                .try_into()
+                .map_err(|e: toml::de::Error| case_file_error("", &e))
         }
         let method = match table.get("method") {
             None => "hertz".to_string(),

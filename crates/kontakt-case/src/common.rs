@@ -8,23 +8,157 @@ use serde::{Deserialize, Serialize};
 /// Version of the JSON result schema.
 pub const SCHEMA_VERSION: u32 = 1;
 
-/// Parse TOML into `T`, turning parser errors into [`Error::InvalidInput`] with field
-/// `case`, the line number and the parser's message.
+/// Parse TOML into `T`, turning the reader's errors into [`Error::CaseFile`]: the line,
+/// the key path as the file spells it and a message in the schema's words.
 pub(crate) fn parse_toml<T: serde::de::DeserializeOwned>(text: &str) -> Result<T> {
-    toml::from_str(text).map_err(|e| {
-        let location = e
-            .span()
-            .map(|s| {
-                let line = text[..s.start.min(text.len())].matches('\n').count() + 1;
-                format!(" at line {line}")
-            })
-            .unwrap_or_default();
-        Error::invalid(
-            "case",
-            format!("TOML{location}: {}", e.message().trim()),
-            "a case file following docs/case-schema.md",
+    toml::from_str(text).map_err(|e| case_file_error(text, &e))
+}
+
+/// [`Error::CaseFile`] from a TOML reader's error on `text`.
+///
+/// A file that is not TOML at all says so ("not valid TOML: ..."). Otherwise the error is
+/// about the schema, and the key path is rebuilt from the error's position: the table
+/// header above it (`[contact]`, `[[loads]]`) and the key on its line. serde's wording
+/// ("field", "f64") becomes the schema's ("key", "a number").
+pub(crate) fn case_file_error(text: &str, e: &toml::de::Error) -> Error {
+    let (line, table, key) = match e.span() {
+        Some(span) => locate(text, span.start.min(text.len())),
+        None => (None, String::new(), None),
+    };
+    let message = e.message().trim();
+    if text.parse::<toml::Table>().is_err() {
+        return Error::CaseFile {
+            line,
+            key: "case".into(),
+            message: format!("not valid TOML: {message}"),
+        };
+    }
+    if e.span().is_none() {
+        // No position (a case read from an edited table): the reader's message, in the
+        // schema's words.
+        return Error::CaseFile {
+            line: None,
+            key: "case".into(),
+            message: schema_words(message).replace("field", "key"),
+        };
+    }
+    let join = |table: &str, k: &str| {
+        if table.is_empty() {
+            k.to_string()
+        } else {
+            format!("{table}.{k}")
+        }
+    };
+    let (key_path, message) = if let Some(rest) = message.strip_prefix("unknown field ") {
+        let (name, valid) = split_expected(rest);
+        let name = name.trim_matches('`');
+        // An unknown table is reported at its own header: the key is the header's path and
+        // the keys it could have been are its parent's.
+        let parent = match (&key, table.rsplit_once('.')) {
+            (None, Some((parent, last))) if last == name => parent,
+            (None, None) if table == name => "",
+            _ => table.as_str(),
+        };
+        let path = join(parent, name);
+        let place = if parent.is_empty() {
+            "the top level".to_string()
+        } else {
+            format!("[{parent}]")
+        };
+        let takes = valid.unwrap_or("no keys");
+        (
+            path.clone(),
+            format!("unknown key `{path}`; {place} takes {takes}"),
         )
-    })
+    } else if let Some(rest) = message.strip_prefix("missing field ") {
+        let path = join(&table, rest.trim().trim_matches('`'));
+        (path.clone(), format!("missing key `{path}`"))
+    } else if let Some(rest) = message.strip_prefix("unknown variant ") {
+        let (name, valid) = rest
+            .split_once(", expected ")
+            .unwrap_or((rest, "another value"));
+        let path = key
+            .as_deref()
+            .map_or_else(|| table.clone(), |k| join(&table, k));
+        (path.clone(), format!("`{path}` = {name}: expected {valid}"))
+    } else {
+        let path = key
+            .as_deref()
+            .map_or_else(|| table.clone(), |k| join(&table, k));
+        let shown = if path.is_empty() {
+            "case".to_string()
+        } else {
+            path
+        };
+        (
+            shown.clone(),
+            format!("`{shown}`: {}", schema_words(message)),
+        )
+    };
+    Error::CaseFile {
+        line,
+        key: if key_path.is_empty() {
+            "case".into()
+        } else {
+            key_path.into()
+        },
+        message,
+    }
+}
+
+/// Split "`name`, expected one of `a`, `b`" into the name and "`a`, `b`".
+fn split_expected(rest: &str) -> (&str, Option<&str>) {
+    match rest.split_once(", expected ") {
+        Some((name, valid)) => {
+            let valid = valid.strip_prefix("one of ").unwrap_or(valid).trim();
+            (name.trim(), (!valid.is_empty()).then_some(valid))
+        }
+        None => (
+            rest.split_once(", there are no fields")
+                .map_or(rest, |(n, _)| n)
+                .trim(),
+            None,
+        ),
+    }
+}
+
+/// serde's type names in the words of a case file.
+fn schema_words(message: &str) -> String {
+    message
+        .replace("invalid type: ", "")
+        .replace("expected f64", "expected a number")
+        .replace("expected usize", "expected a whole number >= 0")
+        .replace("expected u64", "expected a whole number >= 0")
+        .replace("expected u32", "expected a whole number >= 0")
+        .replace("expected i64", "expected a whole number")
+        .replace("expected a boolean", "expected true or false")
+}
+
+/// The line (1-based), the table path of the header above `offset` (or on its line) and
+/// the key written on `offset`'s line, if any.
+fn locate(text: &str, offset: usize) -> (Option<usize>, String, Option<String>) {
+    let start = text[..offset].rfind('\n').map_or(0, |i| i + 1);
+    let line = text[..start].matches('\n').count() + 1;
+    let this_line = text[start..].lines().next().unwrap_or("");
+    let table = text[..start]
+        .lines()
+        .chain(std::iter::once(this_line))
+        .filter_map(header)
+        .next_back()
+        .unwrap_or_default()
+        .to_string();
+    let key = this_line
+        .split_once('=')
+        .map(|(k, _)| k.trim().trim_matches('"').to_string())
+        .filter(|k| !k.is_empty() && header(this_line).is_none());
+    (Some(line), table, key)
+}
+
+/// The table path of a `[table]` or `[[array]]` header line.
+fn header(line: &str) -> Option<&str> {
+    let l = line.trim();
+    let inner = l.strip_prefix("[[").or_else(|| l.strip_prefix('['))?;
+    Some(inner.split(']').next().unwrap_or("").trim())
 }
 
 /// `[body1]` / `[body2]`: the elastic constants.
@@ -55,4 +189,84 @@ pub(crate) fn material_keys(e_mpa: f64, nu: f64, prefix: &str) -> Result<Elastic
 /// The material of a `[body1]`/`[body2]` table, errors named `{prefix}.e_mpa`, `{prefix}.nu`.
 pub(crate) fn material(m: &MaterialSpec, prefix: &str) -> Result<ElasticMaterial> {
     material_keys(m.e_mpa, m.nu, prefix)
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::case::Case;
+    use kontakt::Error;
+
+    const BALL: &str = "[contact]\nkind = \"point\"\n\n[body1]\nradii_mm = [5.0, 5.0]\n\
+        e_mpa = 210000.0\nnu = 0.3\n\n[body2]\nradii_mm = [1e300, 1e300]\ne_mpa = 210000.0\n\
+        nu = 0.3\n\n[load]\nforce_n = 100.0\n";
+
+    /// The reader's error on `text` as (line, key, message).
+    fn error(text: &str) -> (Option<usize>, String, String) {
+        match Case::from_toml_str(text) {
+            Err(Error::CaseFile { line, key, message }) => (line, key.into_owned(), message),
+            other => panic!("expected a case-file error, got {other:?}"),
+        }
+    }
+
+    /// Each class of reader error reads as the schema's words, with the line and the key
+    /// path as the file spells it (issue 15: no "invalid case = TOML at line 9").
+    #[test]
+    fn reader_errors_name_line_and_key_path() {
+        assert_eq!(BALL.lines().count(), 15);
+        assert!(Case::from_toml_str(BALL).is_ok());
+        let cases: [(String, usize, &str, &str); 7] = [
+            (
+                BALL.replace("nu = 0.3\n\n[body2]", "nu = = 0.3\n\n[body2]"),
+                7,
+                "case",
+                "not valid TOML: ",
+            ),
+            (
+                BALL.replace("kind = \"point\"", "kind = \"point\"\nangel_deg = 1.0"),
+                3,
+                "contact.angel_deg",
+                "unknown key `contact.angel_deg`; [contact] takes `kind`, `angle_deg`",
+            ),
+            (
+                format!("{BALL}\n[yeld]\nstress_mpa = 1.0\n"),
+                17,
+                "yeld",
+                "unknown key `yeld`; the top level takes `name`, ",
+            ),
+            (
+                BALL.replace("force_n = 100.0", "force_n = \"100\""),
+                15,
+                "load.force_n",
+                "`load.force_n`: string \"100\", expected a number",
+            ),
+            (
+                BALL.replace(
+                    "e_mpa = 210000.0\nnu = 0.3\n\n[body2]",
+                    "nu = 0.3\n\n[body2]",
+                ),
+                4,
+                "body1.e_mpa",
+                "missing key `body1.e_mpa`",
+            ),
+            (
+                BALL.replace("\"point\"", "\"spot\""),
+                2,
+                "contact.kind",
+                "`contact.kind` = `spot`: expected `point` or `line`",
+            ),
+            (
+                BALL.replace("[load]", "[load.extra]\nx = 1\n[load]"),
+                14,
+                "load.extra",
+                "unknown key `load.extra`; [load] takes ",
+            ),
+        ];
+        for (text, line, key, start) in cases {
+            let (l, k, m) = error(&text);
+            assert_eq!((l, k.as_str()), (Some(line), key), "{m}\n{text}");
+            assert!(m.starts_with(start), "{m:?} should start with {start:?}");
+            let shown = Case::from_toml_str(&text).unwrap_err().to_string();
+            assert_eq!(shown, format!("line {line}: {m}"));
+        }
+    }
 }

@@ -142,8 +142,9 @@ impl ElementCase {
     /// Parse an element case from TOML text (unknown keys refused).
     ///
     /// # Errors
-    /// [`Error::InvalidInput`] with field `case` (the TOML line and the parser's message)
-    /// or `method` (not `"element"`).
+    /// [`Error::CaseFile`] (line, key path, what the schema takes) for malformed TOML,
+    /// unknown keys or wrong types;
+    /// [`Error::InvalidInput`] with field `method` when it is not `"element"`.
     pub fn from_toml_str(text: &str) -> Result<Self> {
         let case: ElementCase = parse_toml(text)?;
         if case.method != "element" {

@@ -170,8 +170,8 @@ impl CaseFile {
     /// Parse a case from TOML text.
     ///
     /// # Errors
-    /// [`Error::InvalidInput`] with field `case` and the parser's message (with line and
-    /// column) for malformed TOML, unknown keys or wrong types.
+    /// [`Error::CaseFile`] (line, key path, what the schema takes) for malformed TOML,
+    /// unknown keys or wrong types.
     pub fn from_toml_str(text: &str) -> Result<Self> {
         parse_toml(text)
     }

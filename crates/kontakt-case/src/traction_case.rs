@@ -288,8 +288,8 @@ impl TractionCase {
     /// Parse a traction case from TOML text.
     ///
     /// # Errors
-    /// [`Error::InvalidInput`] with field `case` and the parser's message for malformed
-    /// TOML, unknown keys or wrong types.
+    /// [`Error::CaseFile`] (line, key path, what the schema takes) for malformed TOML,
+    /// unknown keys or wrong types.
     pub fn from_toml_str(text: &str) -> Result<Self> {
         parse_toml(text)
     }

@@ -143,8 +143,8 @@ fn optional_tables_reach_the_spec() {
 fn errors_name_case_keys() {
     let cases: Vec<(String, &str)> = vec![
         (BALL.replace("\"element\"", "\"pimp\""), "method"),
-        (BALL.replace("\"hertz\"", "\"fem\""), "case"),
-        (format!("{BALL}colour = 1\n"), "case"),
+        (BALL.replace("\"hertz\"", "\"fem\""), "element.backend"),
+        (format!("{BALL}colour = 1\n"), "element.colour"),
         (format!("{BALL}cells = [64, 64]\n"), "element.cells"),
         (format!("{BALL}mode = \"published\"\n"), "element.mode"),
         (

@@ -59,6 +59,9 @@ pub fn to_py_with(e: kontakt::Error, rename: impl Fn(&str) -> Option<String>) ->
             expected,
         } => input_error(&field, &value, &expected, message),
         kontakt::Error::Geometry { field, reason } => input_error(&field, "", &reason, message),
+        kontakt::Error::CaseFile {
+            key, message: m, ..
+        } => input_error(&key, "", &m, message),
         kontakt::Error::NotConverged {
             what,
             iterations,

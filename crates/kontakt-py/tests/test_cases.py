@@ -89,6 +89,10 @@ def test_case_errors_name_the_key():
         kt.run_toml('method = "magic"\n')
     assert e.value.field == "method"
     with pytest.raises(kt.InputError) as e:
+        kt.run_toml('[contact]\nkind = "point"\ncolour = "red"\n')
+    assert e.value.field == "contact.colour"
+    assert str(e.value).startswith("line 3: unknown key `contact.colour`; [contact] takes")
+    with pytest.raises(kt.InputError) as e:
         kt.run_file("/nonexistent/case.toml")
     assert e.value.field == "path"
     with pytest.raises(kt.InputError):

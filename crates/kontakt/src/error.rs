@@ -33,6 +33,19 @@ pub enum Error {
         /// What is wrong and how to fix it.
         reason: String,
     },
+    /// A case file that is not valid TOML or does not follow its schema (an unknown or
+    /// missing key, a value of the wrong type), located by its line and named by its key
+    /// path as the file spells it (`contact.angle_deg`).
+    #[error("{}{message}", .line.map(|l| format!("line {l}: ")).unwrap_or_default())]
+    CaseFile {
+        /// The line of the file (1-based), when the reader knows it.
+        line: Option<usize>,
+        /// The key path, e.g. `body1.e_mpa`; `case` when the reader cannot name a key.
+        key: Cow<'static, str>,
+        /// What is wrong and what the schema takes, e.g. "unknown key `contact.foo`;
+        /// [contact] takes `kind`, `angle_deg`, `length_mm`".
+        message: String,
+    },
     /// An iterative computation did not reach its tolerance.
     #[error("{what} did not converge after {iterations} iterations (residual {residual:e})")]
     NotConverged {
@@ -63,6 +76,7 @@ impl Error {
     pub fn field(&self) -> Option<&str> {
         match self {
             Error::InvalidInput { field, .. } | Error::Geometry { field, .. } => Some(field),
+            Error::CaseFile { key, .. } => Some(key),
             Error::NotConverged { .. } => None,
         }
     }

@@ -34,6 +34,7 @@ pub mod table;
 pub use store::{ChunkSummary, CombineSummary, LocalOptions, LocalSummary, OutputFormat, Progress};
 
 use crate::case::Case;
+use crate::common::case_file_error;
 use serde::Deserialize;
 use std::fmt::Write as _;
 use std::ops::Range;
@@ -427,19 +428,8 @@ impl Sweep {
         base_dir: &Path,
         max_cases: Option<u64>,
     ) -> SweepResult<Self> {
-        let spec: SweepSpec = toml::from_str(text).map_err(|e| {
-            let at = e
-                .span()
-                .map(|s| {
-                    let line = text[..s.start.min(text.len())].matches('\n').count() + 1;
-                    format!(" at line {line}")
-                })
-                .unwrap_or_default();
-            input(format!(
-                "invalid sweep file: TOML{at}: {} (expected the schema of docs/sweep.md)",
-                e.message().trim()
-            ))
-        })?;
+        let spec: SweepSpec = toml::from_str(text)
+            .map_err(|e| input(format!("sweep file: {}", case_file_error(text, &e))))?;
         Self::from_spec(spec, base_dir, max_cases)
     }
 
@@ -474,7 +464,7 @@ impl Sweep {
                     input(format!(
                         "invalid base = \"{p}\": {}: {}",
                         path.display(),
-                        e.message().trim()
+                        case_file_error(&text, &e)
                     ))
                 })?;
                 let parent = path.parent().unwrap_or(Path::new(".")).to_path_buf();
