@@ -16,7 +16,8 @@ use std::path::PathBuf;
       kontakt validate --out kontakt-validate\n  \
       kontakt traction examples/traction_ball_all_models.toml --plot traction.png\n  \
       kontakt friction examples/rib_friction.toml --plot torque.png\n  \
-      kontakt mbs --out kontakt-mbs\n\n\
+      kontakt mbs --out kontakt-mbs\n  \
+      kontakt sweep examples/sweeps/hertz_load.toml --out kontakt-sweep\n\n\
       Case files: docs/case-schema.md. Exit status: 0 success, 1 computation failed (e.g. not\n\
       converged, an unwritable file), 2 bad input.\n\
       Conventions: radii convex > 0, concave < 0, `inf` for flat; stresses tension positive."
@@ -35,10 +36,11 @@ pub enum Command {
     /// docs/case-schema.md).
     Solve(SolveArgs),
     /// Run the roller-end/rib study (Wirsching et al. (2020) Table 1, 100-400 N) and write a report
-    /// (Markdown, pressure maps, CSV) into a folder.
+    /// (Markdown, pressure maps, CSV) into a folder (docs/bearing.md, docs/pimp.md).
     Demo(DemoArgs),
     /// Compare PimP and Hertz with the coupled half-space solver for the roller-end/rib
-    /// pairings (Wirsching et al. (2020) Figures 7-10) and write a report (Markdown, plots, CSV).
+    /// pairings (Wirsching et al. (2020) Figures 7-10) and write a report (Markdown, plots, CSV;
+    /// docs/pimp.md, docs/halfspace.md).
     Validate(ValidateArgs),
     /// Traction curves F_T/(mu F_N) against the creepage (slide-to-roll ratio): Carter,
     /// Kalker linear, FASTSIM and the asperity model (Mindlin partial slip per asperity), from

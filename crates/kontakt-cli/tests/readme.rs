@@ -121,7 +121,7 @@ fn help_examples_run() {
         .take_while(|l| !l.trim().is_empty())
         .map(str::trim)
         .collect();
-    assert!(examples.len() >= 7, "{help}");
+    assert!(examples.len() >= 8, "{help}");
     let dir = std::env::temp_dir().join(format!("kontakt-help-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     std::os::unix::fs::symlink(
