@@ -35,6 +35,7 @@ use crate::common::{SCHEMA_VERSION, material_keys, parse_toml};
 use kontakt::hertz::line::LineContact;
 use kontakt::hertz::point_stress::FirstYield;
 use kontakt::hertz::subsurface::YieldCriterion;
+use kontakt::hertz::validity::{SizeCheck, line_size_check, point_size_check};
 use kontakt::hertz::{HertzPointContact, PointGeometry};
 use kontakt::material::{ElasticMaterial, dundurs_beta};
 use kontakt::{Error, Result};
@@ -237,6 +238,10 @@ pub struct ContactReport {
     pub first_yield_max_pressure_mpa: Option<f64>,
     /// Ratio of the first-yield pressure to the actual maximum pressure (> 1: elastic).
     pub yield_pressure_margin: Option<f64>,
+    /// Where the result is outside the theory's comfortable range: a contact large against
+    /// a body's radius of curvature (`kontakt::hertz::validity`), a maximum pressure above
+    /// first yield. Empty when none applies.
+    pub warnings: Vec<String>,
 }
 
 /// Inputs echoed in the report.
@@ -397,13 +402,14 @@ fn run_case_inner(case: &CaseFile) -> Result<ContactReport> {
                     ));
                 }
             };
+            let size = point_size_check(&geometry, &sol)?;
             let (peaks, _) = contact.subsurface_peaks(&sol)?;
             let fy = case
                 .yield_check
                 .map(|y| contact.first_yield(y.stress_mpa, y.criterion))
                 .transpose()?;
             let k = geometry.curvature();
-            Ok(ContactReport {
+            ContactReport {
                 kontakt_version: kontakt::VERSION,
                 schema_version: SCHEMA_VERSION,
                 name: case.name.clone(),
@@ -431,7 +437,9 @@ fn run_case_inner(case: &CaseFile) -> Result<ContactReport> {
                 first_yield_line_load_n_per_mm: None,
                 first_yield_max_pressure_mpa: fy.map(|f| f.max_pressure),
                 yield_pressure_margin: fy.map(|f| f.max_pressure / sol.max_pressure),
-            })
+                warnings: warnings(&size, fy.map(|f| f.max_pressure / sol.max_pressure)),
+            }
+            .finite()
         }
         ContactKind::Line => {
             let [r1] = radii::<1>(&case.body1, "body1", "line")?;
@@ -471,6 +479,7 @@ fn run_case_inner(case: &CaseFile) -> Result<ContactReport> {
                 }
             };
             let sol = contact.solve(line_load)?;
+            let size = line_size_check(contact.radii(), &sol)?;
             let b = sol.half_width;
             let force = length.map(|l| line_load * l);
             let approach = match (force, length) {
@@ -488,7 +497,7 @@ fn run_case_inner(case: &CaseFile) -> Result<ContactReport> {
                     Ok((fy.line_load, fy.max_pressure))
                 })
                 .transpose()?;
-            Ok(ContactReport {
+            ContactReport {
                 kontakt_version: kontakt::VERSION,
                 schema_version: SCHEMA_VERSION,
                 name: case.name.clone(),
@@ -519,7 +528,90 @@ fn run_case_inner(case: &CaseFile) -> Result<ContactReport> {
                 first_yield_line_load_n_per_mm: yield_line_load.map(|(q, _)| q),
                 first_yield_max_pressure_mpa: yield_line_load.map(|(_, p)| p),
                 yield_pressure_margin: yield_line_load.map(|(_, p)| p / sol.max_pressure),
-            })
+                warnings: warnings(&size, yield_line_load.map(|(_, p)| p / sol.max_pressure)),
+            }
+            .finite()
         }
+    }
+}
+
+/// The report's warnings: the contact's size against the bodies, and a maximum pressure
+/// above the first-yield pressure (`margin` = p0,Y / p0 < 1: the bodies yield, and elastic
+/// theory no longer describes them).
+fn warnings(size: &SizeCheck, margin: Option<f64>) -> Vec<String> {
+    let mut w: Vec<String> = size.warning().into_iter().collect();
+    if let Some(m) = margin.filter(|&m| m < 1.0) {
+        w.push(format!(
+            "first yield: the maximum pressure is {:.2} times the first-yield pressure; the \
+             bodies deform plastically and elastic Hertz theory overestimates the pressure",
+            1.0 / m
+        ));
+    }
+    w
+}
+
+impl ContactReport {
+    /// `Ok(self)` when every number is finite; otherwise the quantity that overflowed (or
+    /// underflowed to a division by zero) as an error, never `inf` in the text or `null`
+    /// in JSON, where `null` means "does not apply".
+    fn finite(self) -> Result<Self> {
+        let required = [
+            ("e_star_mpa", self.e_star_mpa),
+            ("dundurs_beta", self.dundurs_beta),
+            (
+                "relative_curvature_per_mm[0]",
+                self.relative_curvature_per_mm[0],
+            ),
+            (
+                "relative_curvature_per_mm[1]",
+                self.relative_curvature_per_mm[1],
+            ),
+            ("semi_axes_mm[1]", self.semi_axes_mm[1]),
+            ("axis_ratio", self.axis_ratio),
+            ("orientation_deg", self.orientation_deg),
+            ("max_pressure_mpa", self.max_pressure_mpa),
+            ("mean_pressure_mpa", self.mean_pressure_mpa),
+            ("max_shear_stress_mpa", self.max_shear_stress_mpa),
+            ("max_shear_depth_mm", self.max_shear_depth_mm),
+            ("max_von_mises_stress_mpa", self.max_von_mises_stress_mpa),
+            ("max_von_mises_depth_mm", self.max_von_mises_depth_mm),
+        ];
+        let optional = [
+            ("force_n", self.force_n),
+            ("line_load_n_per_mm", self.line_load_n_per_mm),
+            ("approach_mm", self.approach_mm),
+            ("contact_area_mm2", self.contact_area_mm2),
+            ("stiffness_n_per_mm", self.stiffness_n_per_mm),
+            ("first_yield_load_n", self.first_yield_load_n),
+            (
+                "first_yield_line_load_n_per_mm",
+                self.first_yield_line_load_n_per_mm,
+            ),
+            (
+                "first_yield_max_pressure_mpa",
+                self.first_yield_max_pressure_mpa,
+            ),
+            ("yield_pressure_margin", self.yield_pressure_margin),
+        ];
+        let values = required
+            .into_iter()
+            .chain(optional.into_iter().filter_map(|(k, v)| v.map(|v| (k, v))));
+        // A line contact's semi_axes_mm[0] is L/2, infinite when no length is given.
+        let line_without_length = self.kind == ContactKind::Line && self.inputs.length_mm.is_none();
+        for (key, value) in values
+            .chain((!line_without_length).then_some(("semi_axes_mm[0]", self.semi_axes_mm[0])))
+        {
+            if !value.is_finite() {
+                return Err(Error::Geometry {
+                    field: "case".into(),
+                    reason: format!(
+                        "the result {key} = {value} is beyond the range of double precision \
+                         numbers; the inputs are too extreme to give a meaningful result \
+                         (scale the radii, moduli or load towards engineering values)"
+                    ),
+                });
+            }
+        }
+        Ok(self)
     }
 }

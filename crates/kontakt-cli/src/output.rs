@@ -152,5 +152,8 @@ pub fn print_report(out: &mut impl Write, r: &ContactReport, json: bool) -> Resu
     for (k, val, unit) in rows {
         writeln!(out, "  {k:<w$}  {val:>v$}  {unit}")?;
     }
+    for warning in &r.warnings {
+        writeln!(out, "  warning: {warning}")?;
+    }
     Ok(())
 }

@@ -371,3 +371,73 @@ fn tempdir() -> PathBuf {
     std::fs::create_dir_all(&d).expect("temp dir");
     d
 }
+
+/// Validity guards of a Hertz result (issue 14): a contact large against a body's radius
+/// carries a warning in JSON and text, a contact wider than the body's radius (a
+/// near-conformal groove, a hundredfold overload) and a result beyond f64 are refused with
+/// exit status 2, and a plain case has an empty `warnings` array.
+#[test]
+fn hertz_results_outside_the_theory_warn_or_are_refused() {
+    let ball = |groove: &'static str, force: &'static str| {
+        [
+            "hertz",
+            "--body1-radii",
+            "3.969,3.969",
+            "--body2-radii",
+            groove,
+            "--force",
+            force,
+        ]
+    };
+    // The 6205 inner-race contact at 1000 N: a / R_ball = 0.33 < 0.4, no warning.
+    let v = json(&ball("15.281,-4.128", "1000"));
+    assert_eq!(v["warnings"], serde_json::json!([]));
+    // Ten times the load: a / R_ball = 0.71, the quadratic gap 14.9 % low at the edge.
+    let v = json(&ball("15.281,-4.128", "10000"));
+    let w = v["warnings"].as_array().unwrap();
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert!(
+        w[0].as_str().unwrap().contains("0.71 of body 1's radius"),
+        "{w:?}"
+    );
+    let text = kontakt()
+        .args(ball("15.281,-4.128", "10000"))
+        .output()
+        .unwrap();
+    assert!(text.status.success());
+    assert!(String::from_utf8_lossy(&text.stdout).contains("  warning: contact size:"));
+    // A groove conforming to within 1 µm, and a hundredfold overload: refused.
+    for (groove, force) in [("15.281,-3.970", "1000"), ("15.281,-4.128", "100000")] {
+        let e = bad(&ball(groove, force));
+        assert!(
+            e.contains("--body1-radii") && e.contains("times body 1's radius"),
+            "{e}"
+        );
+    }
+    // Overflow: a stiffness beyond f64 is an error naming the quantity, never inf or null.
+    let e = bad(&[
+        "hertz",
+        "--body1-radii",
+        "1e-300,1e-300",
+        "--body2-radii",
+        "inf,inf",
+        "--approach",
+        "1e-303",
+    ]);
+    assert!(
+        e.contains("--approach = 1e-303") && e.contains("double precision"),
+        "{e}"
+    );
+    let e = bad(&[
+        "hertz",
+        "--body1-radii",
+        "10,10",
+        "--body2-radii",
+        "inf,inf",
+        "--force",
+        "100",
+        "--yield-stress",
+        "1e200",
+    ]);
+    assert!(e.contains("first_yield_load_n = inf is beyond"), "{e}");
+}

@@ -67,7 +67,7 @@ impl Error {
     ) -> Self {
         Error::InvalidInput {
             field: field.into(),
-            value: value.to_string(),
+            value: shorten(value.to_string()),
             expected: expected.into(),
         }
     }
@@ -102,6 +102,25 @@ impl Error {
             other => other,
         }
     }
+}
+
+/// Longest value an error message quotes in full; a longer one is shortened.
+const MAX_VALUE_CHARS: usize = 60;
+
+/// A value as an error message quotes it: a number that Rust's `Display` wrote out in
+/// hundreds of digits (`1e300`, `1e-303`) in its shortest exponent form, and any other
+/// text longer than [`MAX_VALUE_CHARS`] cut with an ellipsis and its length.
+fn shorten(value: String) -> String {
+    if value.len() > 24
+        && let Ok(x) = value.parse::<f64>()
+    {
+        return format!("{x:e}");
+    }
+    if value.chars().count() > MAX_VALUE_CHARS {
+        let head: String = value.chars().take(MAX_VALUE_CHARS - 20).collect();
+        return format!("{head}… ({} characters)", value.chars().count());
+    }
+    value
 }
 
 /// Check that `value` is finite and strictly positive.
@@ -140,6 +159,27 @@ pub(crate) fn overflow(field: &'static str, value: f64) -> Error {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Long numbers come back in exponent form, long text cut with its length; short
+    /// values are untouched.
+    #[test]
+    fn long_values_are_shortened() {
+        let e = Error::invalid("force", 1e300, "x");
+        assert_eq!(e.to_string(), "invalid force = 1e300: expected x");
+        let e = Error::invalid("approach", 1e-303, "x");
+        assert_eq!(e.to_string(), "invalid approach = 1e-303: expected x");
+        assert_eq!(
+            Error::invalid("nu", 0.7, "x").to_string(),
+            "invalid nu = 0.7: expected x"
+        );
+        let long = "a".repeat(500);
+        let e = Error::invalid("name", &long, "x");
+        let shown = e.to_string();
+        assert!(
+            shown.contains("… (500 characters)") && shown.len() < 120,
+            "{shown}"
+        );
+    }
 
     #[test]
     fn message_names_field_value_and_range() {

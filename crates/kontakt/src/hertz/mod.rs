@@ -15,5 +15,6 @@ pub mod line;
 pub mod point;
 pub mod point_stress;
 pub mod subsurface;
+pub mod validity;
 
 pub use point::{HertzPointContact, HertzPointSolution, PointGeometry, curvature_ratio};

@@ -258,21 +258,22 @@ impl HertzPointContact {
     /// Full solution for a normal force `force` \[N\] (> 0, finite).
     ///
     /// # Errors
-    /// Non-positive or non-finite force.
+    /// Non-positive or non-finite force; a result that over- or underflows f64 (for
+    /// example radii of 1e-300 mm), named by the input `force`.
     pub fn solve_force(&self, force: Newton) -> Result<HertzPointSolution> {
         crate::error::positive("force", force)?;
-        Ok(self.solution(force))
+        self.solution(force).representable("force", force)
     }
 
     /// Full solution for an approach `approach` \[mm\] (> 0, finite).
     ///
     /// # Errors
-    /// Non-positive or non-finite approach.
+    /// Non-positive or non-finite approach; a result that over- or underflows f64.
     pub fn solve_approach(&self, approach: Millimetre) -> Result<HertzPointSolution> {
         let force = self.force_from_approach(approach)?;
         let mut s = self.solution(force);
         s.approach = approach;
-        Ok(s)
+        s.representable("approach", approach)
     }
 
     /// Maximum pressure at a force of 1 N \[MPa\]; p0 scales as F^(1/3).
@@ -301,6 +302,35 @@ impl HertzPointContact {
 }
 
 impl HertzPointSolution {
+    /// `Ok(self)` when every quantity is finite and positive; otherwise an error naming the
+    /// input `field` = `value` that led to a result beyond f64 (an overflow to inf, or an
+    /// underflow to 0 and then NaN).
+    fn representable(self, field: &'static str, value: f64) -> Result<Self> {
+        let quantities = [
+            ("semi-axis a", self.semi_axes[0]),
+            ("semi-axis b", self.semi_axes[1]),
+            ("force", self.force),
+            ("approach", self.approach),
+            ("maximum pressure", self.max_pressure),
+            ("contact area", self.contact_area),
+            ("stiffness", self.stiffness),
+        ];
+        match quantities
+            .into_iter()
+            .find(|(_, q)| !(q.is_finite() && *q > 0.0))
+        {
+            None => Ok(self),
+            Some((name, q)) => Err(Error::invalid(
+                field,
+                value,
+                format!(
+                    "a load whose contact is representable in double precision (its {name} \
+                     would be {q}; scale the inputs towards engineering values)"
+                ),
+            )),
+        }
+    }
+
     /// Hertz pressure \[MPa\] at the point (x, y) \[mm\] of the contact frame (x along body 1's
     /// first principal direction):
     /// $p = p_0\sqrt{1 - (x'/a)^2 - (y'/b)^2}$ inside the ellipse, 0 outside
