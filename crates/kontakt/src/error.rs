@@ -43,7 +43,7 @@ pub enum Error {
         /// The key path, e.g. `body1.e_mpa`; `case` when the reader cannot name a key.
         key: Cow<'static, str>,
         /// What is wrong and what the schema takes, e.g. "unknown key `contact.foo`;
-        /// [contact] takes `kind`, `angle_deg`, `length_mm`".
+        /// \[contact\] takes `kind`, `angle_deg`, `length_mm`".
         message: String,
     },
     /// An iterative computation did not reach its tolerance.
