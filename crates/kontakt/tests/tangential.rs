@@ -18,6 +18,7 @@ use kontakt::tangential::{
     Carter, ContactEllipse, Creepage, EllipseAxis, Fastsim, FastsimOptions, KalkerLinear,
     KalkerMaterial, Mindlin, PressureShape, TractionCurve, creep_coefficients,
 };
+use kontakt::traction::{AsperityCurve, AsperityTraction, AsperityTractionParams, NominalContact};
 use std::f64::consts::PI;
 
 const STEEL: ElasticMaterial = ElasticMaterial::STEEL;
@@ -842,6 +843,121 @@ fn traction_curves_share_one_interface() {
         models.iter().map(|m| m.name()).collect::<Vec<_>>(),
         ["carter", "kalker_linear", "fastsim"]
     );
+}
+
+/// Creepages over the whole f64 range, both signs: zero, subnormal, tiny, the curves'
+/// working range, and huge up to `f64::MAX` (issue 14).
+fn creepages_over_the_f64_range() -> Vec<f64> {
+    let mut xs = vec![0.0, 5e-324, 1e-310, 1e-300, 1e-200, 1e-100, 1e-20, 1e-10];
+    xs.extend((0..=60).map(|i| 1e-6 * 10f64.powf(i as f64 / 10.0)));
+    xs.extend([10.0, 1e3, 1e10, 1e100, 1e200, 1e300, f64::MAX]);
+    let mut all: Vec<f64> = xs.iter().rev().map(|x| -x).collect();
+    all.extend(xs);
+    all
+}
+
+/// Every traction curve over the full f64 range of creepage: finite, odd, monotone
+/// non-decreasing; Carter, FASTSIM and the asperity model bounded by 1 and saturated at 1
+/// (to 1e-12) far out; Kalker's linear theory finite (an error, not inf, where its
+/// unclipped line would overflow). Infinite and NaN creepages are errors naming `creepage`.
+/// FASTSIM with all three creepages huge slides everywhere, finite and unchanged in force.
+#[test]
+fn traction_curves_are_monotone_and_bounded_over_the_f64_range() {
+    let hertz = HertzPointContact::new(
+        PointGeometry::new([20.0, 20.0], [20.0, 200.0], 0.0).unwrap(),
+        STEEL,
+        STEEL,
+    )
+    .unwrap();
+    let e = ContactEllipse::from_hertz(&hertz.solve_force(1500.0).unwrap(), EllipseAxis::Minor)
+        .unwrap();
+    let models: Vec<Box<dyn TractionCurve>> = vec![
+        Box::new(Carter::from_ellipse(&e, &STEEL, &STEEL, 0.05).unwrap()),
+        Box::new(KalkerLinear::new(e, &STEEL, &STEEL, 0.05).unwrap()),
+        Box::new(Fastsim::new(e, &STEEL, &STEEL, 0.05, FastsimOptions::default()).unwrap()),
+        Box::new(AsperityCurve::new(
+            AsperityTraction::new(AsperityTractionParams::new(
+                NominalContact::Circular {
+                    half_width: 0.4,
+                    max_pressure: None,
+                },
+                680.0,
+                0.3,
+                STEEL,
+                [0.02, 0.02],
+                0.05,
+            ))
+            .unwrap(),
+        )),
+    ];
+    let xs = creepages_over_the_f64_range();
+    for m in &models {
+        let mut last = f64::NEG_INFINITY;
+        for &x in &xs {
+            let f = match m.normalized_force(x) {
+                Ok(f) => f,
+                // Only the linear theory may refuse, and only where its line leaves f64.
+                Err(e) if m.name() == "kalker_linear" && x.abs() > 1e300 => {
+                    assert_eq!(e.field(), Some("creepage"), "{e}");
+                    continue;
+                }
+                Err(e) => panic!("{} at {x:e}: {e}", m.name()),
+            };
+            assert!(f.is_finite(), "{} at {x:e}: {f}", m.name());
+            assert!(
+                f >= last,
+                "{} not monotone at {x:e}: {f} < {last}",
+                m.name()
+            );
+            last = f;
+            assert_eq!(
+                m.normalized_force(-x).unwrap(),
+                -f,
+                "{} odd at {x:e}",
+                m.name()
+            );
+            if m.name() != "kalker_linear" {
+                assert!(f.abs() <= 1.0, "{} at {x:e}: |{f}| > 1", m.name());
+                if x.abs() >= 10.0 {
+                    // Saturated: mu F_N up to the rounding of the cells' sum.
+                    assert!(
+                        1.0 - f.abs() <= 1e-12,
+                        "{} saturates at {x:e}: {f}",
+                        m.name()
+                    );
+                }
+            }
+        }
+        for bad in [f64::INFINITY, f64::NEG_INFINITY, f64::NAN] {
+            let e = m.normalized_force(bad).unwrap_err();
+            assert_eq!(e.field(), Some("creepage"), "{} at {bad}: {e}", m.name());
+        }
+    }
+    // Spin turns the slip across the contact, so |F| < mu P in full slip; the result is
+    // the same at every huge magnitude (only the creepages' ratios matter).
+    let fastsim = Fastsim::new(e, &STEEL, &STEEL, 0.05, FastsimOptions::default()).unwrap();
+    let at = |c: f64| {
+        fastsim
+            .solve(&Creepage {
+                longitudinal: c,
+                lateral: -c,
+                spin: c,
+            })
+            .unwrap()
+    };
+    let reference = at(1e20);
+    assert_eq!(reference.adhesion_area, 0.0);
+    for c in [f64::MAX, 1e300, 1e60] {
+        let s = at(c);
+        for (got, want) in s.forces.iter().zip(reference.forces) {
+            assert!(
+                (got - want).abs() <= 1e-12 * 75.0,
+                "{s:?} vs {reference:?} at {c:e}"
+            );
+        }
+        assert!((s.spin_moment - reference.spin_moment).abs() <= 1e-12 * 75.0);
+        assert!(s.forces[0].hypot(s.forces[1]) <= 0.05 * 1500.0 * (1.0 + 1e-12));
+    }
 }
 
 // ---------------------------------------------------------------------------------------

@@ -324,7 +324,7 @@ impl Fastsim {
     /// A non-finite creepage component (see [`Creepage::validate`]).
     pub fn solve(&self, creepage: &Creepage) -> Result<FastsimSolution> {
         creepage.validate()?;
-        Ok(self.march(creepage, |_, _, _| {}))
+        self.march_any(creepage, |_, _, _| {})
     }
 
     /// As [`solve`](Self::solve), also writing the traction and adhesion of every cell
@@ -347,10 +347,56 @@ impl Fastsim {
                 format!("{n} cells (use Fastsim::new_field)"),
             ));
         }
-        Ok(self.march(creepage, |k, q, stick| {
+        self.march_any(creepage, |k, q, stick| {
             field.traction[k] = q;
             field.adhesion[k] = stick;
-        }))
+        })
+    }
+
+    /// [`march`](Self::march) for any finite creepage. Creepages above
+    /// [`HUGE_CREEPAGE`] (spin: times the larger semi-axis) are scaled down together,
+    /// keeping their ratios: FASTSIM's traction then slides in every cell, and a sliding
+    /// cell's traction depends only on the direction of its slip, so the result is the
+    /// same, without the overflow (`inf · 0 = NaN`) that the unscaled slip would cause.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] naming `creepage` when a scaled creepage still adheres
+    /// somewhere (a friction coefficient of 1e90 or so) or the result is not finite.
+    fn march_any(
+        &self,
+        creepage: &Creepage,
+        visit: impl FnMut(usize, [f64; 2], bool),
+    ) -> Result<FastsimSolution> {
+        let reach = self.ellipse.a().max(self.ellipse.b());
+        let largest = creepage
+            .longitudinal
+            .abs()
+            .max(creepage.lateral.abs())
+            .max(creepage.spin.abs() * reach);
+        let scale = if largest > HUGE_CREEPAGE {
+            HUGE_CREEPAGE / largest
+        } else {
+            1.0
+        };
+        let scaled = Creepage {
+            longitudinal: creepage.longitudinal * scale,
+            lateral: creepage.lateral * scale,
+            spin: creepage.spin * scale,
+        };
+        let s = self.march(&scaled, visit);
+        let finite = s.forces.iter().all(|f| f.is_finite()) && s.spin_moment.is_finite();
+        if finite && (scale == 1.0 || s.adhesion_area == 0.0) {
+            Ok(s)
+        } else {
+            Err(Error::invalid(
+                "creepage",
+                largest,
+                format!(
+                    "a creepage up to {HUGE_CREEPAGE:e} or one at which FASTSIM slides \
+                     everywhere (the traction is then saturated)"
+                ),
+            ))
+        }
     }
 
     /// The strip-by-strip marching; `visit(cell, traction, adheres)` sees every cell.
@@ -434,6 +480,12 @@ impl Fastsim {
 /// Strips marched in lockstep by [`Fastsim::solve`].
 const LANES: usize = 4;
 
+/// Creepage \[-\] above which [`Fastsim`] scales the creepages down to it (see
+/// `Fastsim::march_any`): far beyond saturation for any physical friction coefficient
+/// (saturation is at about 3.4 mu P / (G c² C11), 1e-3 for steel), far below an overflow of
+/// the slip `creepage · dx / L`.
+pub const HUGE_CREEPAGE: f64 = 1e50;
+
 impl TractionCurve for Fastsim {
     fn name(&self) -> &'static str {
         "fastsim"
@@ -442,8 +494,10 @@ impl TractionCurve for Fastsim {
     /// `-Fx/(mu P)` under pure longitudinal creepage.
     fn normalized_force(&self, creepage: f64) -> Result<f64> {
         check_creepage(creepage)?;
-        let s = self.march(&Creepage::longitudinal(creepage), |_, _, _| {});
-        let f = -s.forces[0] / (self.friction * self.ellipse.normal_force());
+        let s = self.march_any(&Creepage::longitudinal(creepage), |_, _, _| {})?;
+        // The bound sums to mu P up to rounding (1e-15): a sliding contact saturates at
+        // exactly 1, never above.
+        let f = (-s.forces[0] / (self.friction * self.ellipse.normal_force())).clamp(-1.0, 1.0);
         // No negative zero at zero creepage.
         Ok(if f == 0.0 { 0.0 } else { f })
     }

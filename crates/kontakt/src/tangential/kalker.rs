@@ -345,10 +345,24 @@ impl TractionCurve for KalkerLinear {
         "kalker_linear"
     }
 
-    /// `G c² C11 xi/(mu P)`, unclipped.
+    /// `G c² C11 xi/(mu P)`, unclipped (the linear theory, meaningful below 1).
+    ///
+    /// # Errors
+    /// A non-finite creepage, or one so large that the unclipped line leaves f64 (about
+    /// 1e308 times the saturation creepage), naming `creepage`.
     fn normalized_force(&self, creepage: f64) -> Result<f64> {
         check_creepage(creepage)?;
-        Ok(creepage / self.saturation_creepage())
+        let f = creepage / self.saturation_creepage();
+        if f.is_finite() {
+            Ok(f)
+        } else {
+            Err(Error::invalid(
+                "creepage",
+                creepage,
+                "a creepage whose linear creep force is a finite number (the linear theory \
+                 means nothing beyond its saturation creepage anyway)",
+            ))
+        }
     }
 }
 
