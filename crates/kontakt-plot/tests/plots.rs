@@ -471,6 +471,7 @@ fn line_plot_png_and_svg() {
         x_label: "x [mm]",
         y_label: "p [MPa]",
         series: &series,
+        x_log: false,
     };
     let size = (900, 600);
     let png = dir.join("line.PNG");
@@ -518,6 +519,7 @@ fn line_plot_png_and_svg() {
         x_label: "",
         y_label: "",
         series: &series,
+        x_log: false,
     };
     line_plot(&dir.join("small.png"), &plot, (200, 150)).unwrap();
     line_plot(&dir.join("small.svg"), &plot, (200, 150)).unwrap();
@@ -761,6 +763,7 @@ fn line_plot_validation() {
                 x_label: "x",
                 y_label: "y",
                 series: &[ok],
+                x_log: false,
             },
             (100, 100),
         ),
@@ -774,6 +777,7 @@ fn line_plot_validation() {
             x_label: "x",
             y_label: "y",
             series: &[ok],
+            x_log: false,
         },
         (800, 600),
     )
@@ -815,6 +819,8 @@ fn odd_shapes_and_ranges_do_not_panic() {
                     colorbar_label: "pressure [MPa]",
                     outline: true,
                     overlays: &[Overlay {
+                    ellipse: None,
+                    max_marker: None,
                         label: "other",
                         values: &v,
                         color: (1, 2, 3),
@@ -844,6 +850,7 @@ fn odd_shapes_and_ranges_do_not_panic() {
             x_label: "x",
             y_label: "y",
             series: &series,
+            x_log: false,
         };
         for size in [(200, 150), (3000, 150)] {
             line_plot(&dir.join(format!("l{k}-{}.png", size.0)), &plot, size).unwrap();
