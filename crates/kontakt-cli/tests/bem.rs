@@ -204,12 +204,18 @@ fn validate_writes_the_report_folder() {
         .unwrap()
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
         .collect();
-    let plots = names.iter().filter(|n| n.ends_with("_contact_area.png") || n.ends_with("_max_pressure.png")).count();
+    let plots = names
+        .iter()
+        .filter(|n| n.ends_with("_contact_area.png") || n.ends_with("_max_pressure.png"))
+        .count();
     let maps = names.iter().filter(|n| n.starts_with("shape_")).count();
     assert_eq!((plots, maps, names.len()), (8, 8, 18), "{names:?}");
     let expected = format!(
         "report.md, results.csv and {} pictures ({plots} deviation plots, {maps} contact-shape maps)",
         plots + maps
     );
-    assert!(stdout.lines().last().unwrap().ends_with(&expected), "{stdout}");
+    assert!(
+        stdout.lines().last().unwrap().ends_with(&expected),
+        "{stdout}"
+    );
 }

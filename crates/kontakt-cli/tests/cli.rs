@@ -295,15 +295,29 @@ fn demo_writes_the_report() {
     let pngs = count(&|n| n.ends_with(".png"));
     let maps = count(&|n| n.ends_with("_400N.png"));
     let friction_maps = count(&|n| n.starts_with("friction_") && n.ends_with(".png"))
-        - count(&|n| ["friction_torque.png", "friction_coefficient.png", "friction_model_ratio.png"].contains(&n));
+        - count(&|n| {
+            [
+                "friction_torque.png",
+                "friction_coefficient.png",
+                "friction_model_ratio.png",
+            ]
+            .contains(&n)
+        });
     let plots = pngs - maps - friction_maps;
     let csvs = count(&|n| n.ends_with(".csv"));
     let last = stdout.lines().last().unwrap();
     let expected = format!(
         "with {pngs} pictures ({maps} pressure maps, {plots} plots, {friction_maps} friction maps) and {csvs} tables"
     );
-    assert!(last.contains(&expected), "{last}\nexpected: {expected}\nfiles: {names:?}");
-    assert_eq!((maps, plots, friction_maps, csvs), (8, 6, 2, 3), "{names:?}");
+    assert!(
+        last.contains(&expected),
+        "{last}\nexpected: {expected}\nfiles: {names:?}"
+    );
+    assert_eq!(
+        (maps, plots, friction_maps, csvs),
+        (8, 6, 2, 3),
+        "{names:?}"
+    );
     assert_eq!(names.len(), pngs + csvs + 1, "{names:?}");
 }
 

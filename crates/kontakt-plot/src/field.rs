@@ -112,7 +112,12 @@ pub(crate) fn frame(map: &FieldMap) -> Frame {
         let (a, b) = e.semi_axes;
         let hx = (a * c).hypot(b * s);
         let hy = (a * s).hypot(b * c);
-        let (ex0, ex1, ey0, ey1) = (e.centre.0 - hx, e.centre.0 + hx, e.centre.1 - hy, e.centre.1 + hy);
+        let (ex0, ex1, ey0, ey1) = (
+            e.centre.0 - hx,
+            e.centre.0 + hx,
+            e.centre.1 - hy,
+            e.centre.1 + hy,
+        );
         grow(ex0, ex1, ey0, ey1);
         gx0 = gx0.min(ex0);
         gx1 = gx1.max(ex1);
@@ -159,13 +164,50 @@ pub(crate) fn row_intervals(lines: &[Vec<(f64, f64)>], y: f64) -> Vec<(f64, f64)
     xs.chunks_exact(2).map(|p| (p[0], p[1])).collect()
 }
 
+/// The value of the cell at `(x, y)` (0 outside the grid). With `fill_edge`, a zero cell
+/// takes the value of the nearest of its eight neighbours that has one: inside the outline,
+/// which runs between the last loaded cell centre and the next, the map is then coloured up
+/// to the outline instead of leaving white slivers.
+fn cell_value(map: &FieldMap, x: f64, y: f64, fill_edge: bool) -> f64 {
+    let fi = ((x - map.x_min) / map.dx).floor();
+    let fj = ((y - map.y_min) / map.dy).floor();
+    let (nx, ny) = (map.nx as i64, map.ny as i64);
+    let (i, j) = (fi as i64, fj as i64);
+    let at = |i: i64, j: i64| -> f64 {
+        if i < 0 || j < 0 || i >= nx || j >= ny {
+            0.0
+        } else {
+            map.values[(j * nx + i) as usize]
+        }
+    };
+    let v = at(i, j);
+    if v != 0.0 || !fill_edge || !fi.is_finite() || !fj.is_finite() {
+        return v;
+    }
+    let mut best = (f64::MAX, 0.0);
+    for dj in -1..=1 {
+        for di in -1..=1 {
+            let w = at(i + di, j + dj);
+            if w != 0.0 {
+                let cx = map.x_min + ((i + di) as f64 + 0.5) * map.dx;
+                let cy = map.y_min + ((j + dj) as f64 + 0.5) * map.dy;
+                let d = ((x - cx) / map.dx).powi(2) + ((y - cy) / map.dy).powi(2);
+                if d < best.0 {
+                    best = (d, w);
+                }
+            }
+        }
+    }
+    best.1
+}
+
 /// Centre of the cell with the largest value (the first of equal ones), if any is > 0.
 pub(crate) fn argmax_centre(map: &FieldMap) -> Option<(f64, f64)> {
-    let (k, v) = map
-        .values
-        .iter()
-        .enumerate()
-        .fold((0, f64::MIN), |best, (k, &v)| if v > best.1 { (k, v) } else { best });
+    let (k, v) =
+        map.values.iter().enumerate().fold(
+            (0, f64::MIN),
+            |best, (k, &v)| if v > best.1 { (k, v) } else { best },
+        );
     (v > 0.0).then(|| {
         (
             map.x_min + ((k % map.nx) as f64 + 0.5) * map.dx,
@@ -192,11 +234,11 @@ fn draw_marker<DB: DrawingBackend>(
     at: (i32, i32),
     m: &Metrics,
 ) -> Result<(), PlotError> {
-    let r = ((5.0 * m.scale).round() as i32).max(4);
-    root.draw(&Circle::new(at, r, WHITE.filled())).de()?;
-    root.draw(&Circle::new(at, r, BLACK.stroke_width(m.line.max(1))))
+    let r = ((7.0 * m.scale).round() as i32).max(5);
+    root.draw(&Circle::new(at, r + 1, WHITE.filled())).de()?;
+    root.draw(&Circle::new(at, r, BLACK.stroke_width(m.line.max(2))))
         .de()?;
-    root.draw(&Circle::new(at, (r / 2).max(2), BLACK.filled()))
+    root.draw(&Circle::new(at, (r / 3).max(2), BLACK.filled()))
         .de()?;
     Ok(())
 }
@@ -399,15 +441,7 @@ impl Figure for FieldFigure<'_> {
             .de()?;
 
         // The map itself, inside the outline only.
-        let value_at = |x: f64, y: f64| -> f64 {
-            let i = ((x - map.x_min) / map.dx).floor();
-            let j = ((y - map.y_min) / map.dy).floor();
-            if i < 0.0 || j < 0.0 || i >= map.nx as f64 || j >= map.ny as f64 {
-                0.0
-            } else {
-                map.values[j as usize * map.nx + i as usize]
-            }
-        };
+        let value_at = |x: f64, y: f64| -> f64 { cell_value(map, x, y, map.outline) };
         let color_of = |v: f64| viridis((v - lo) / (top - lo));
         if target.raster {
             let (xr, yr) = chart.plotting_area().get_pixel_range();
@@ -564,11 +598,21 @@ impl Figure for FieldFigure<'_> {
 
         // The vector field, clipped to the map.
         let window = ((vx0, vx1), (vy0, vy1));
+        // On a stretched axis the arrows keep their true direction and the length scale of
+        // the unstretched axis: they are built where the map is to scale and mapped back.
+        let (sx, sy) = frame.stretch;
         let segments: Vec<_> = self
             .arrows
             .iter()
-            .filter_map(arrow_segments)
+            .filter_map(|a| {
+                arrow_segments(&Arrow {
+                    x: a.x * sx,
+                    y: a.y * sy,
+                    ..*a
+                })
+            })
             .flatten()
+            .map(|(a, b)| ((a.0 / sx, a.1 / sy), (b.0 / sx, b.1 / sy)))
             .filter_map(|(a, b)| clip_segment(a, b, window))
             .collect();
         let arrow_style = ARROW_COLOR.stroke_width(m.line.max(1));
@@ -869,26 +913,42 @@ mod tests {
 
     #[test]
     fn framing_is_tight_and_stretches_slender_zones() {
-        // A 1.0 x 0.1 mm zone in the middle of a 2 x 2 mm grid of 100 x 100 cells.
+        // A 1.0 x 0.12 mm zone in the middle of a 2 x 2 mm grid of 100 x 100 cells.
         let n = 100;
         let values: Vec<f64> = (0..n * n)
             .map(|k| {
-                let (x, y) = (-1.0 + ((k % n) as f64 + 0.5) * 0.02, -1.0 + ((k / n) as f64 + 0.5) * 0.02);
-                if x.abs() < 0.5 && y.abs() < 0.05 { 1.0 } else { 0.0 }
+                let (x, y) = (
+                    -1.0 + ((k % n) as f64 + 0.5) * 0.02,
+                    -1.0 + ((k / n) as f64 + 0.5) * 0.02,
+                );
+                if x.abs() < 0.5 && y.abs() < 0.06 {
+                    1.0
+                } else {
+                    0.0
+                }
             })
             .collect();
         let map = map_of(n, n, &values);
         let f = frame(&map);
-        // 8 % of the zone's size on each side, at least a cell: x ±0.58, y ±0.07.
-        assert!((f.x.0 + 0.58).abs() < 1e-9 && (f.x.1 - 0.58).abs() < 1e-9, "{f:?}");
-        assert!((f.y.0 + 0.07).abs() < 1e-9 && (f.y.1 - 0.07).abs() < 1e-9, "{f:?}");
-        // 1.16 / 0.14 = 8.3:1 is stretched by 3 to 2.8:1, and the note says so.
+        // 8 % of the zone's size on each side, at least a cell: x ±0.58, y ±0.08.
+        assert!(
+            (f.x.0 + 0.58).abs() < 1e-9 && (f.x.1 - 0.58).abs() < 1e-9,
+            "{f:?}"
+        );
+        assert!(
+            (f.y.0 + 0.08).abs() < 1e-9 && (f.y.1 - 0.08).abs() < 1e-9,
+            "{f:?}"
+        );
+        // 1.16 / 0.16 = 7.25:1 is stretched by 3 to 2.4:1, and the note says so.
         assert_eq!(f.stretch, (1.0, 3.0));
         assert!(f.note().starts_with("y axis stretched ×3"), "{}", f.note());
         // A round zone filling half the grid: to scale, no note.
         let round: Vec<f64> = (0..n * n)
             .map(|k| {
-                let (x, y) = (-1.0 + ((k % n) as f64 + 0.5) * 0.02, -1.0 + ((k / n) as f64 + 0.5) * 0.02);
+                let (x, y) = (
+                    -1.0 + ((k % n) as f64 + 0.5) * 0.02,
+                    -1.0 + ((k / n) as f64 + 0.5) * 0.02,
+                );
                 if x * x + y * y < 0.25 { 1.0 } else { 0.0 }
             })
             .collect();
@@ -909,7 +969,10 @@ mod tests {
         assert!(f.x.0 <= -0.8 && f.x.1 >= 0.8);
         let zero = vec![0.0; n * n];
         let f = frame(&map_of(n, n, &zero));
-        assert_eq!((f.x, f.y, f.stretch), ((-1.0, 1.0), (-1.0, 1.0), (1.0, 1.0)));
+        assert_eq!(
+            (f.x, f.y, f.stretch),
+            ((-1.0, 1.0), (-1.0, 1.0), (1.0, 1.0))
+        );
     }
 
     #[test]
@@ -921,7 +984,11 @@ mod tests {
         let h = 2.0 / n as f64;
         let c = |k: usize| -1.0 + (k as f64 + 0.5) * h;
         let values: Vec<f64> = (0..n * n)
-            .map(|k| (1.0 - (c(k % n).powi(2) + c(k / n).powi(2)) / 0.64).max(0.0).sqrt())
+            .map(|k| {
+                (1.0 - (c(k % n).powi(2) + c(k / n).powi(2)) / 0.64)
+                    .max(0.0)
+                    .sqrt()
+            })
             .collect();
         let lines = contour_zero(n, n, -1.0, -1.0, h, h, &values);
         let mut poking = 0;

@@ -474,7 +474,9 @@ fn validate_ellipse(ellipse: Option<&Ellipse>) -> Result<(), PlotError> {
     let Some(e) = ellipse else {
         return Ok(());
     };
-    let finite = [e.centre.0, e.centre.1, e.angle].iter().all(|v| v.is_finite());
+    let finite = [e.centre.0, e.centre.1, e.angle]
+        .iter()
+        .all(|v| v.is_finite());
     let positive = [e.semi_axes.0, e.semi_axes.1]
         .iter()
         .all(|v| v.is_finite() && *v > 0.0);

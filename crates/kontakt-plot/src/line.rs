@@ -125,7 +125,7 @@ impl Figure for LineFigure<'_> {
             };
             Ok((area_w, area_h, left, pw, x_ticks, y_ticks))
         };
-        let (mut area_w, mut area_h, mut left, mut pw, mut x_ticks, mut y_ticks) = layout(0)?;
+        let (mut area_w, mut area_h, mut left, pw, mut x_ticks, mut y_ticks) = layout(0)?;
         let ph = (area_h - bottom).max(2);
         let mut place = LegendPlace::Corner(0);
         if !labelled.is_empty() {
@@ -140,7 +140,10 @@ impl Figure for LineFigure<'_> {
                     (s.style, unit)
                 })
                 .collect();
-            let margin_fraction = (f64::from(2 * gap) / f64::from(pw), f64::from(2 * gap) / f64::from(ph));
+            let margin_fraction = (
+                f64::from(2 * gap) / f64::from(pw),
+                f64::from(2 * gap) / f64::from(ph),
+            );
             place = legend_place(
                 &units,
                 (
@@ -149,7 +152,7 @@ impl Figure for LineFigure<'_> {
                 ),
             );
             if place == LegendPlace::Outside {
-                (area_w, area_h, left, pw, x_ticks, y_ticks) = layout(box_w + gap)?;
+                (area_w, area_h, left, _, x_ticks, y_ticks) = layout(box_w + gap)?;
             }
         }
         let ph = (area_h - bottom).max(2);
@@ -219,8 +222,16 @@ impl Figure for LineFigure<'_> {
                     let right = k == 0 || k == 2;
                     let upper = k < 2;
                     (
-                        if right { px.end - gap - box_w } else { px.start + gap },
-                        if upper { py.start + gap } else { py.end - gap - box_h },
+                        if right {
+                            px.end - gap - box_w
+                        } else {
+                            px.start + gap
+                        },
+                        if upper {
+                            py.start + gap
+                        } else {
+                            py.end - gap - box_h
+                        },
                     )
                 }
             };

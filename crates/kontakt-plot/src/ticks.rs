@@ -247,7 +247,10 @@ pub(crate) fn log_ticks(lo: f64, hi: f64, length_px: f64, min_spacing_px: f64) -
             .collect();
         return make(values);
     }
-    for mults in [&[1.0, 2.0, 5.0][..], &[1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0]] {
+    for mults in [
+        &[1.0, 2.0, 5.0][..],
+        &[1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0],
+    ] {
         let values = with(mults);
         let spaced = values
             .windows(2)
@@ -274,7 +277,13 @@ pub(crate) fn log_ticks(lo: f64, hi: f64, length_px: f64, min_spacing_px: f64) -
     }
     // Less than a factor of about 2.5: linear ticks of the data, as log10.
     let t = nice_ticks(10f64.powf(lo), 10f64.powf(hi), 4);
-    make(t.values.into_iter().filter(|v| *v > 0.0).map(f64::log10).collect())
+    make(
+        t.values
+            .into_iter()
+            .filter(|v| *v > 0.0)
+            .map(f64::log10)
+            .collect(),
+    )
 }
 
 impl Ticks {
@@ -366,9 +375,11 @@ mod tests {
         let t = log_ticks(-9.0, 9.0, 200.0, 30.0);
         assert!(t.values.len() < 10, "{:?}", t.labels());
         assert!(t.values.iter().all(|v| v.fract() == 0.0));
-        // Within one decade: 1..9 times it.
+        // One decade: 1, 2, 5 times it; narrower: 1..9 times.
         let t = log_ticks(0.0, 1.0, 800.0, 30.0);
-        assert_eq!(t.labels(), vec!["1", "2", "3", "4", "5", "6", "7", "8", "9", "10"]);
+        assert_eq!(t.labels(), vec!["1", "2", "5", "10"]);
+        let t = log_ticks(2f64.log10(), 4.5f64.log10(), 800.0, 30.0);
+        assert_eq!(t.labels(), vec!["2", "3", "4"]);
         assert_eq!(format_log(-1.0), "0.1");
         assert_eq!(format_log(7.0 + 5f64.log10()), "5·10⁷");
     }

@@ -58,6 +58,8 @@ fn map<'a>(values: &'a [f64], overlays: &'a [Overlay<'a>]) -> FieldMap<'a> {
         colorbar_label: "pressure [MPa]",
         outline: true,
         overlays,
+        ellipse: None,
+        max_marker: None,
     }
 }
 
@@ -705,6 +707,7 @@ fn line_plot_validation() {
                 x_label: "x",
                 y_label: "y",
                 series,
+                x_log: false,
             },
             (800, 600),
         )
@@ -819,12 +822,12 @@ fn odd_shapes_and_ranges_do_not_panic() {
                     colorbar_label: "pressure [MPa]",
                     outline: true,
                     overlays: &[Overlay {
-                    ellipse: None,
-                    max_marker: None,
                         label: "other",
                         values: &v,
                         color: (1, 2, 3),
                     }],
+                    ellipse: None,
+                    max_marker: Some("max"),
                 };
                 let ext = if k % 2 == 0 { "png" } else { "svg" };
                 field_map(&dir.join(format!("f{k}.{ext}")), &m, size).unwrap();
@@ -858,4 +861,60 @@ fn odd_shapes_and_ranges_do_not_panic() {
         }
     }
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// The symbols the CLI's labels use are in the bundled font (no blank boxes).
+#[test]
+fn the_bundled_font_has_the_label_symbols() {
+    let labels = "Fₜ / (μ Fₙ) [-]; μ = |Fₜ| / Q_f; Fₐ = 15000 N; τ · v_s [mW/mm²]; \
+                  10⁻³ 5·10⁷ ×4 ° ≈ −";
+    assert_eq!(kontakt_plot::missing_glyphs(labels), Vec::<char>::new());
+    assert_eq!(kontakt_plot::missing_glyphs("a漢b"), vec!['漢']);
+}
+
+/// A logarithmic x axis draws, and rejects x <= 0 before writing anything.
+#[test]
+fn log_x_axis() {
+    let dir = temp_dir("log_x_axis");
+    let pts: Vec<(f64, f64)> = [50.0, 130.0, 339.0, 884.0, 2303.0, 6000.0]
+        .iter()
+        .map(|&n: &f64| (n, 1.0 / n.ln()))
+        .collect();
+    let series = [Series {
+        label: "curve",
+        points: &pts,
+        color: (31, 119, 180),
+        style: LineStyle::Solid,
+    }];
+    let plot = LinePlot {
+        title: "log axis",
+        x_label: "speed [r/min] (log scale)",
+        y_label: "y",
+        series: &series,
+        x_log: true,
+    };
+    let out = dir.join("log.svg");
+    line_plot(&out, &plot, (800, 600)).unwrap();
+    let svg = std::fs::read_to_string(&out).unwrap();
+    let texts: Vec<&str> = svg.lines().map(str::trim).collect();
+    for label in ["50", "100", "1000", "5000"] {
+        assert!(texts.contains(&label), "{label} missing");
+    }
+    let bad = [(0.0, 1.0), (10.0, 2.0)];
+    let series = [Series {
+        points: &bad,
+        ..series[0]
+    }];
+    let out = dir.join("bad.svg");
+    let e = line_plot(
+        &out,
+        &LinePlot {
+            series: &series,
+            ..plot
+        },
+        (800, 600),
+    )
+    .unwrap_err();
+    assert!(e.to_string().contains("logarithmic"), "{e}");
+    assert!(!out.exists());
 }

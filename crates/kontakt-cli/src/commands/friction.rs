@@ -209,7 +209,7 @@ fn write_curves(path: &Path, r: &FrictionReport, curve: Curve) -> Result<()> {
         Curve::Coefficient => ("friction coefficient", "μ = |Fₜ| / Q_f [-]"),
     };
     let title = format!(
-        "{}: {what}, F_a = {} N",
+        "{}: {what}, Fₐ = {} N",
         r.name.as_deref().unwrap_or(&r.pairing),
         r.axial_load_n
     );
@@ -296,7 +296,13 @@ fn write_sliding_map(path: &Path, m: &FrictionMap, r: &FrictionReport) -> Result
     let axes = axis_names(m);
     kontakt_plot::field_map_with_arrows(
         path,
-        &field_map(m, &m.field.pressure, &title, "pressure [MPa]", (&axes, &max)),
+        &field_map(
+            m,
+            &m.field.pressure,
+            &title,
+            "pressure [MPa]",
+            (&axes, &max),
+        ),
         &arrows,
         &label,
         (900, 640),
@@ -451,28 +457,29 @@ pub fn demo_study(
     }
     w.flush()?;
     written.tables.push("friction.csv".into());
-    let mut plot = |file: &str, title: &str, y_label: &str, curves: &[(String, Vec<(f64, f64)>)]| {
-        crate::commands::pimp::pairing_plot(
-            &out_dir.join(file),
-            title,
-            "inner ring speed [r/min] (log scale)",
-            y_label,
-            curves,
-            true,
-        )?;
-        written.plots.push(file.to_string());
-        Ok::<(), anyhow::Error>(())
-    };
+    let mut plot =
+        |file: &str, title: &str, y_label: &str, curves: &[(String, Vec<(f64, f64)>)]| {
+            crate::commands::pimp::pairing_plot(
+                &out_dir.join(file),
+                title,
+                "inner ring speed [r/min] (log scale)",
+                y_label,
+                curves,
+                true,
+            )?;
+            written.plots.push(file.to_string());
+            Ok::<(), anyhow::Error>(())
+        };
     let fa = base.load.axial_n;
     plot(
         "friction_torque.png",
-        &format!("Rib friction torque of the bearing, PimP, F_a = {fa} N"),
+        &format!("Rib friction torque of the bearing, PimP, Fₐ = {fa} N"),
         "rib torque [N·mm]",
         &torque_curves,
     )?;
     plot(
         "friction_coefficient.png",
-        &format!("Rib friction coefficient (Stribeck), PimP, F_a = {fa} N"),
+        &format!("Rib friction coefficient (Stribeck), PimP, Fₐ = {fa} N"),
         "μ = |Fₜ| / Q_f [-]",
         &mu_curves,
     )?;

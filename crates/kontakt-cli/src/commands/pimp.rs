@@ -204,13 +204,15 @@ pub fn write_map(
         colorbar_label: "pressure [MPa]",
         outline: true,
         overlays,
-        ellipse: notes.hertz_semi_axes_mm.map(|[a, b]| kontakt_plot::Ellipse {
-            label: "Hertz ellipse at the contact point",
-            centre: (0.0, 0.0),
-            semi_axes: (a, b),
-            angle: 0.0,
-            color: HERTZ_COLOR,
-        }),
+        ellipse: notes
+            .hertz_semi_axes_mm
+            .map(|[a, b]| kontakt_plot::Ellipse {
+                label: "Hertz ellipse at the contact point",
+                centre: (0.0, 0.0),
+                semi_axes: (a, b),
+                angle: 0.0,
+                color: HERTZ_COLOR,
+            }),
         max_marker: Some(&max),
     };
     kontakt_plot::field_map(path, &map, (900, 640))
