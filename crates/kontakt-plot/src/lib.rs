@@ -237,8 +237,8 @@ pub struct Overlay<'a> {
 /// The map is framed tightly around what it shows (the cells with values, the overlays'
 /// regions and the ellipse) with a margin of 8 % (at least one cell) on each side, not
 /// around the whole grid. Both axes have the same scale (1 mm is the same length in x and
-/// y) unless the framed region is more slender than 3:1: then the short axis is stretched
-/// by a round factor so that it is at most 3:1, and a note under the title says so (e.g.
+/// y) unless the framed region is more slender than 2.5:1: then the short axis is stretched
+/// by a whole factor so that it is at most 2.5:1, and a note under the title says so (e.g.
 /// "y axis stretched ×4: the zone is 4× more slender than drawn"). The outline, overlays,
 /// the ellipse and the maximum marker have a legend under the map.
 ///
@@ -388,9 +388,10 @@ pub struct LinePlot<'a> {
 /// `size` = (width, height) in pixels.
 ///
 /// The ranges cover all points with a small margin; there is a light grid at the ticks and a
-/// legend that never hides data: in the first corner of the plot (upper right, upper left,
-/// lower right, lower left) that holds neither points nor lines, or else to the right of
-/// the plot, outside it.
+/// legend that never hides data: in the first place in the plot that holds neither points
+/// nor lines (the corners upper right, upper left, lower right, lower left, then the middles
+/// of the right and left sides, of the top and of the bottom), or else to the right of the
+/// plot, outside it.
 ///
 /// Errors: an unsupported extension, `size` outside [`MIN_SIZE`]..[`MAX_SIZE`], no series, a
 /// series without points, a non-finite coordinate (the error names the series and the point

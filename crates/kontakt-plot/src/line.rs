@@ -283,16 +283,18 @@ impl Figure for LineFigure<'_> {
 /// Where the legend of a line plot goes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum LegendPlace {
-    /// Inside the plot, in corner 0 upper right, 1 upper left, 2 lower right, 3 lower left.
+    /// Inside the plot: 0 upper right, 1 upper left, 2 lower right, 3 lower left (the
+    /// corners), then 4 middle right, 5 middle left, 6 upper centre, 7 lower centre.
     Corner(usize),
     /// Right of the plot area, outside it.
     Outside,
 }
 
-/// The first corner of the plot (upper right, upper left, lower right, lower left) whose
+/// The first place in the plot (the corners upper right, upper left, lower right, lower
+/// left, then the middles of the right and left sides and of the top and bottom) whose
 /// legend box (its size `(fw, fh)` given as fractions of the plot, margins included) holds
 /// no data, neither points nor samples along the lines; [`LegendPlace::Outside`] when every
-/// corner does. `series` are the styles and points in unit plot coordinates (0..1, y up).
+/// place does. `series` are the styles and points in unit plot coordinates (0..1, y up).
 pub(crate) fn legend_place(
     series: &[(LineStyle, Vec<(f64, f64)>)],
     (fw, fh): (f64, f64),
@@ -301,13 +303,19 @@ pub(crate) fn legend_place(
         return LegendPlace::Outside;
     }
     // Corners as (u range, v range) in unit plot coordinates, v upwards.
+    let (mu0, mu1) = (0.5 - fw / 2.0, 0.5 + fw / 2.0);
+    let (mv0, mv1) = (0.5 - fh / 2.0, 0.5 + fh / 2.0);
     let corners = [
         (1.0 - fw, 1.0, 1.0 - fh, 1.0),
         (0.0, fw, 1.0 - fh, 1.0),
         (1.0 - fw, 1.0, 0.0, fh),
         (0.0, fw, 0.0, fh),
+        (1.0 - fw, 1.0, mv0, mv1),
+        (0.0, fw, mv0, mv1),
+        (mu0, mu1, 1.0 - fh, 1.0),
+        (mu0, mu1, 0.0, fh),
     ];
-    let mut counts = [0usize; 4];
+    let mut counts = [0usize; 8];
     let mut add = |u: f64, v: f64| {
         for (k, c) in corners.iter().enumerate() {
             if (c.0..=c.1).contains(&u) && (c.2..=c.3).contains(&v) {
@@ -331,7 +339,7 @@ pub(crate) fn legend_place(
             }
         }
     }
-    (0..4)
+    (0..8)
         .find(|&k| counts[k] == 0)
         .map_or(LegendPlace::Outside, LegendPlace::Corner)
 }
@@ -348,10 +356,19 @@ mod tests {
         // A falling line: the upper right corner is free.
         let falling = vec![(LineStyle::Solid, vec![(0.04, 0.96), (0.96, 0.04)])];
         assert_eq!(legend_place(&falling, (0.3, 0.2)), LegendPlace::Corner(0));
-        // A marker in each corner: outside.
+        // A marker in each corner and in each middle: outside.
         let corners = vec![(
             LineStyle::Markers,
-            vec![(0.05, 0.05), (0.95, 0.05), (0.05, 0.95), (0.95, 0.95)],
+            vec![
+                (0.05, 0.05),
+                (0.95, 0.05),
+                (0.05, 0.95),
+                (0.95, 0.95),
+                (0.95, 0.5),
+                (0.05, 0.5),
+                (0.5, 0.95),
+                (0.5, 0.05),
+            ],
         )];
         assert_eq!(legend_place(&corners, (0.2, 0.2)), LegendPlace::Outside);
         // A line that only passes through a corner (no point in it) still blocks it.
@@ -360,8 +377,15 @@ mod tests {
             (LineStyle::Solid, vec![(0.0, 0.5), (1.0, 0.0)]),
             (LineStyle::Solid, vec![(0.0, 0.6), (0.5, 0.99)]),
             (LineStyle::Solid, vec![(0.0, 0.4), (0.5, 0.01)]),
+            (LineStyle::Solid, vec![(0.0, 0.5), (1.0, 0.5)]),
         ];
         assert_eq!(legend_place(&through, (0.3, 0.3)), LegendPlace::Outside);
+        // Data in all four corners but none in the middle of the right side: there.
+        let band = vec![
+            (LineStyle::Solid, vec![(0.0, 0.95), (1.0, 0.95)]),
+            (LineStyle::Solid, vec![(0.0, 0.05), (1.0, 0.05)]),
+        ];
+        assert_eq!(legend_place(&band, (0.3, 0.3)), LegendPlace::Corner(4));
         // A legend larger than the plot's free space goes outside.
         assert_eq!(legend_place(&rising, (0.7, 0.2)), LegendPlace::Outside);
     }
