@@ -219,20 +219,29 @@ impl Figure for LineFigure<'_> {
             let (bx, by) = match place {
                 LegendPlace::Outside => (px.end + gap, py.start),
                 LegendPlace::Corner(k) => {
-                    let right = k == 0 || k == 2;
-                    let upper = k < 2;
-                    (
-                        if right {
-                            px.end - gap - box_w
-                        } else {
-                            px.start + gap
-                        },
-                        if upper {
-                            py.start + gap
-                        } else {
-                            py.end - gap - box_h
-                        },
-                    )
+                    // Horizontal: 0 left, 1 centre, 2 right; vertical: 0 top, 1 middle, 2 bottom.
+                    const AT: [(u8, u8); 8] = [
+                        (2, 0),
+                        (0, 0),
+                        (2, 2),
+                        (0, 2),
+                        (2, 1),
+                        (0, 1),
+                        (1, 0),
+                        (1, 2),
+                    ];
+                    let (h, v) = AT[k.min(7)];
+                    let x = match h {
+                        0 => px.start + gap,
+                        1 => (px.start + px.end - box_w) / 2,
+                        _ => px.end - gap - box_w,
+                    };
+                    let y = match v {
+                        0 => py.start + gap,
+                        1 => (py.start + py.end - box_h) / 2,
+                        _ => py.end - gap - box_h,
+                    };
+                    (x, y)
                 }
             };
             root.draw(&Rectangle::new(
