@@ -159,13 +159,19 @@ impl MapNotes {
         }
     }
 
-    /// Axes of the gap's principal frame, for contacts that are not placed in a bearing.
+    /// Axes of the gap's principal frame (x along the Hertz major axis), for contacts that
+    /// are not placed in a bearing; plain x, y for a gap map (no Hertz contact point).
     pub fn principal(hertz_semi_axes_mm: Option<[f64; 2]>) -> Self {
-        MapNotes {
-            axes: (
+        let axes = if hertz_semi_axes_mm.is_some() {
+            (
                 "x, along the Hertz major axis [mm]".to_string(),
                 "y, along the Hertz minor axis [mm]".to_string(),
-            ),
+            )
+        } else {
+            ("x [mm]".to_string(), "y [mm]".to_string())
+        };
+        MapNotes {
+            axes,
             hertz_semi_axes_mm,
         }
     }
