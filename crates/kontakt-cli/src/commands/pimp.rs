@@ -395,7 +395,14 @@ pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
                 .map_or("-".into(), |k| format!("{k:.3}")),
         ));
     }
-    md.push_str("\n## Pressure maps at 400 N (corrected)\n\n");
+    md.push_str(
+        "\n## Pressure maps at 400 N (corrected)\n\nEach map shows the PimP pressure inside \
+         the contact outline (black), the Hertz ellipse at the contact point's curvature \
+         (magenta, dotted) and the maximum (ringed dot, value in the legend). The axes are \
+         directions on the rib: along it (circumferential) and across it (in the axial \
+         section, with the lean from radial), in mm. A zone more slender than 2.5:1 is drawn \
+         with its short axis stretched by a whole factor, as the note under the title says.\n\n",
+    );
     for (name, file) in &maps {
         md.push_str(&format!("### {name}\n\n![{name}]({file})\n\n"));
     }
@@ -487,4 +494,25 @@ pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
         writeln!(out, "{}", written.summary(&md_path, rows.len()))?;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::axis_name;
+
+    #[test]
+    fn axes_are_named_by_their_direction_on_the_rib() {
+        assert_eq!(
+            axis_name([0.0, -1.0, 0.0]),
+            "along the rib (circumferential) [mm]"
+        );
+        assert_eq!(axis_name([1.0, 0.0, 0.0]), "across the rib (radial) [mm]");
+        let (s, c) = 21f64.to_radians().sin_cos();
+        assert_eq!(
+            axis_name([-c, 0.0, s]),
+            "across the rib (21° from radial) [mm]"
+        );
+        let (s, c) = 45f64.to_radians().sin_cos();
+        assert_eq!(axis_name([c, s, 0.0]), "45° from circumferential [mm]");
+    }
 }
