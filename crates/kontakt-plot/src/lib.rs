@@ -3,11 +3,14 @@
 //! The crate is independent of the `kontakt` solver crate: it takes plain slices.
 //!
 //! * [`field_map`] draws a scalar field on a uniform cell-centred grid (e.g. a contact
-//!   pressure in MPa over x, y in mm) as a heat map with equal axis scales, a colour bar and
-//!   the outline of the contact region, optionally with the outlines of other fields overlaid.
+//!   pressure in MPa over x, y in mm) as a heat map framed tightly round the region with
+//!   values (equal axis scales, or a stretched short axis with a note for a slender region),
+//!   a colour bar and the outline of the contact region, optionally with the outlines of
+//!   other fields, an [`Ellipse`] (e.g. Hertz's) and a marker at the maximum.
 //! * [`field_map_with_arrows`] draws the same heat map with a vector field of [`Arrow`]s on
 //!   top (e.g. the sliding velocity over the pressure or the friction-power density).
-//! * [`line_plot`] draws curves and measured points with a legend.
+//! * [`line_plot`] draws curves and measured points, on a linear or logarithmic x axis, with a
+//!   legend where it hides no data.
 //! * [`contour_zero`] returns the boundary of the region `values > 0` as closed polylines.
 //!
 //! The output format follows the file extension (see [`Format`]). Text is rendered with a
