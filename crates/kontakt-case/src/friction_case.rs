@@ -596,6 +596,9 @@ pub struct FrictionMap {
     pub sliding: VelocityField,
     /// Power density τ · v_s per cell \[W/mm²\].
     pub power_density: Vec<f64>,
+    /// The grid's `x` and `y` axes as unit vectors in the bearing frame (`X` radial, `Y`
+    /// circumferential at the contact point, `Z` the ring axis).
+    pub axes: [[f64; 3]; 2],
 }
 
 impl FrictionMap {
@@ -623,6 +626,7 @@ impl FrictionMap {
             field,
             sliding,
             power_density,
+            axes: model.gap().principal_axes(),
         })
     }
 }

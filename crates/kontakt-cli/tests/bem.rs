@@ -192,4 +192,30 @@ fn validate_writes_the_report_folder() {
     let csv = std::fs::read_to_string(dir.join("results.csv")).unwrap();
     assert_eq!(csv.lines().count(), 1 + 8 * 7);
     assert!(bad(&["validate", "--cells", "4"]).contains("--cells"));
+    // The table's last line counts exactly the pictures written.
+    let dir = scratch("validate-table");
+    let out = kontakt()
+        .args(["validate", "--cells", "32", "--out", dir.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    let names: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    let plots = names
+        .iter()
+        .filter(|n| n.ends_with("_contact_area.png") || n.ends_with("_max_pressure.png"))
+        .count();
+    let maps = names.iter().filter(|n| n.starts_with("shape_")).count();
+    assert_eq!((plots, maps, names.len()), (8, 8, 18), "{names:?}");
+    let expected = format!(
+        "report.md, results.csv and {} pictures ({plots} deviation plots, {maps} contact-shape maps)",
+        plots + maps
+    );
+    assert!(
+        stdout.lines().last().unwrap().ends_with(&expected),
+        "{stdout}"
+    );
 }

@@ -286,6 +286,39 @@ fn demo_writes_the_report() {
     // 8 pairings x 2 modes x 7 loads + header.
     let csv = std::fs::read_to_string(dir.join("results.csv")).unwrap();
     assert_eq!(csv.lines().count(), 8 * 2 * 7 + 1);
+    // The summary line counts exactly the files on disk (it once said "2 plots" for 3).
+    let names: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    let count = |f: &dyn Fn(&str) -> bool| names.iter().filter(|n| f(n)).count();
+    let pngs = count(&|n| n.ends_with(".png"));
+    let maps = count(&|n| n.ends_with("_400N.png"));
+    let friction_maps = count(&|n| n.starts_with("friction_") && n.ends_with(".png"))
+        - count(&|n| {
+            [
+                "friction_torque.png",
+                "friction_coefficient.png",
+                "friction_model_ratio.png",
+            ]
+            .contains(&n)
+        });
+    let plots = pngs - maps - friction_maps;
+    let csvs = count(&|n| n.ends_with(".csv"));
+    let last = stdout.lines().last().unwrap();
+    let expected = format!(
+        "with {pngs} pictures ({maps} pressure maps, {plots} plots, {friction_maps} friction maps) and {csvs} tables"
+    );
+    assert!(
+        last.contains(&expected),
+        "{last}\nexpected: {expected}\nfiles: {names:?}"
+    );
+    assert_eq!(
+        (maps, plots, friction_maps, csvs),
+        (8, 6, 2, 3),
+        "{names:?}"
+    );
+    assert_eq!(names.len(), pngs + csvs + 1, "{names:?}");
 }
 
 /// A PimP case: JSON keys, CSV of the field, SVG map; and its bad-input paths.

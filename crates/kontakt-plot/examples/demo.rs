@@ -58,6 +58,8 @@ fn main() -> Result<(), PlotError> {
         colorbar_label: "pressure [MPa]",
         outline: true,
         overlays: &overlays,
+        ellipse: None,
+        max_marker: None,
     };
     for ext in ["png", "svg"] {
         let path = out.join(format!("map128.{ext}"));
@@ -92,6 +94,8 @@ fn main() -> Result<(), PlotError> {
     }
     let sliding = FieldMap {
         overlays: &[],
+        ellipse: None,
+        max_marker: None,
         ..map
     };
     for ext in ["png", "svg"] {
@@ -124,6 +128,8 @@ fn main() -> Result<(), PlotError> {
         dy: 2.6 / n as f64,
         values: &p,
         overlays: &[],
+        ellipse: None,
+        max_marker: None,
         title: "Point contact 256×256",
         ..map
     };
@@ -149,6 +155,8 @@ fn main() -> Result<(), PlotError> {
         dy: 0.1,
         values: &zeros,
         overlays: &[],
+        ellipse: None,
+        max_marker: None,
         title: "Unloaded roller",
         ..map
     };
@@ -198,6 +206,7 @@ fn main() -> Result<(), PlotError> {
         x_label: "x [mm]",
         y_label: "pressure [MPa]",
         series: &series,
+        x_log: false,
     };
     for (ext, size) in [
         ("png", (900, 600)),

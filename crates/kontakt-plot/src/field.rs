@@ -32,11 +32,244 @@ pub(crate) struct FieldFigure<'a> {
     pub arrow_label: &'a str,
 }
 
-/// One entry of the outline legend.
+/// One entry of the legend under the map.
+#[derive(Clone)]
 struct LegendEntry<'a> {
     label: &'a str,
     color: RGBColor,
-    dashed: bool,
+    kind: EntryKind,
+}
+
+/// How a legend entry's sample is drawn.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum EntryKind {
+    Solid,
+    Dashed,
+    Dotted,
+    Marker,
+}
+
+/// The largest slenderness (long side over short side) drawn to scale.
+const MAX_ASPECT: f64 = 2.5;
+
+/// The part of the plane a map shows and the stretch of its axes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Frame {
+    /// x range in mm.
+    pub x: (f64, f64),
+    /// y range in mm.
+    pub y: (f64, f64),
+    /// Scale factors (x, y) of the axes relative to each other: (1, 1) to scale, (1, k)
+    /// for y stretched k times, (k, 1) for x stretched.
+    pub stretch: (f64, f64),
+}
+
+impl Frame {
+    /// The note on a stretched axis (empty when drawn to scale).
+    pub fn note(&self) -> String {
+        let (sx, sy) = self.stretch;
+        let (axis, k) = if sy > 1.0 { ("y", sy) } else { ("x", sx) };
+        if k <= 1.0 {
+            return String::new();
+        }
+        format!(
+            "{axis} axis stretched ×{}: the zone is {}× more slender than drawn",
+            crate::ticks::format_fixed(k, 0),
+            crate::ticks::format_fixed(k, 0)
+        )
+    }
+}
+
+/// The frame of a map: the bounding box of its cells with values, its overlays' regions and
+/// its ellipse, with a margin of 8 % of its size (at least one cell) on each side and kept
+/// within the grid and the ellipse; the whole grid when there is nothing to show. When that
+/// box is more slender than [`MAX_ASPECT`], its short axis is stretched by the smallest
+/// whole factor that brings it to at most [`MAX_ASPECT`].
+pub(crate) fn frame(map: &FieldMap) -> Frame {
+    let x_max = map.x_min + map.nx as f64 * map.dx;
+    let y_max = map.y_min + map.ny as f64 * map.dy;
+    let (mut bx0, mut bx1, mut by0, mut by1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+    let mut grow = |x0: f64, x1: f64, y0: f64, y1: f64| {
+        bx0 = bx0.min(x0);
+        bx1 = bx1.max(x1);
+        by0 = by0.min(y0);
+        by1 = by1.max(y1);
+    };
+    let fields = std::iter::once(map.values).chain(map.overlays.iter().map(|o| o.values));
+    for values in fields {
+        for (k, v) in values.iter().enumerate() {
+            if *v != 0.0 {
+                let (i, j) = ((k % map.nx) as f64, (k / map.nx) as f64);
+                let x = map.x_min + i * map.dx;
+                let y = map.y_min + j * map.dy;
+                grow(x, x + map.dx, y, y + map.dy);
+            }
+        }
+    }
+    let (mut gx0, mut gx1, mut gy0, mut gy1) = (map.x_min, x_max, map.y_min, y_max);
+    if let Some(e) = &map.ellipse {
+        let (s, c) = e.angle.sin_cos();
+        let (a, b) = e.semi_axes;
+        let hx = (a * c).hypot(b * s);
+        let hy = (a * s).hypot(b * c);
+        let (ex0, ex1, ey0, ey1) = (
+            e.centre.0 - hx,
+            e.centre.0 + hx,
+            e.centre.1 - hy,
+            e.centre.1 + hy,
+        );
+        grow(ex0, ex1, ey0, ey1);
+        gx0 = gx0.min(ex0);
+        gx1 = gx1.max(ex1);
+        gy0 = gy0.min(ey0);
+        gy1 = gy1.max(ey1);
+    }
+    if !(bx1 > bx0) || !(by1 > by0) {
+        return Frame {
+            x: (map.x_min, x_max),
+            y: (map.y_min, y_max),
+            stretch: (1.0, 1.0),
+        };
+    }
+    let px = (0.08 * (bx1 - bx0)).max(map.dx);
+    let py = (0.08 * (by1 - by0)).max(map.dy);
+    let x = ((bx0 - px).max(gx0), (bx1 + px).min(gx1));
+    let y = ((by0 - py).max(gy0), (by1 + py).min(gy1));
+    let aspect = (x.1 - x.0) / (y.1 - y.0);
+    let factor = |r: f64| (r / MAX_ASPECT - 1e-9).ceil().max(1.0);
+    let stretch = if aspect > MAX_ASPECT {
+        (1.0, factor(aspect))
+    } else if aspect < 1.0 / MAX_ASPECT {
+        (factor(1.0 / aspect), 1.0)
+    } else {
+        (1.0, 1.0)
+    };
+    Frame { x, y, stretch }
+}
+
+/// The x intervals inside the closed polylines `lines` along the horizontal line at `y`
+/// (even-odd rule: holes are outside), sorted.
+pub(crate) fn row_intervals(lines: &[Vec<(f64, f64)>], y: f64) -> Vec<(f64, f64)> {
+    let mut xs = Vec::new();
+    for line in lines {
+        let n = line.len();
+        for k in 0..n {
+            let (a, b) = (line[k], line[(k + 1) % n]);
+            if (a.1 > y) != (b.1 > y) {
+                xs.push(a.0 + (y - a.1) * (b.0 - a.0) / (b.1 - a.1));
+            }
+        }
+    }
+    xs.sort_by(f64::total_cmp);
+    xs.chunks_exact(2).map(|p| (p[0], p[1])).collect()
+}
+
+/// The value of the cell at `(x, y)` (0 outside the grid). With `fill_edge`, a zero cell
+/// takes the value of the nearest of its eight neighbours that has one: inside the outline,
+/// which runs between the last loaded cell centre and the next, the map is then coloured up
+/// to the outline instead of leaving white slivers.
+fn cell_value(map: &FieldMap, x: f64, y: f64, fill_edge: bool) -> f64 {
+    let fi = ((x - map.x_min) / map.dx).floor();
+    let fj = ((y - map.y_min) / map.dy).floor();
+    let (nx, ny) = (map.nx as i64, map.ny as i64);
+    let (i, j) = (fi as i64, fj as i64);
+    let at = |i: i64, j: i64| -> f64 {
+        if i < 0 || j < 0 || i >= nx || j >= ny {
+            0.0
+        } else {
+            map.values[(j * nx + i) as usize]
+        }
+    };
+    let v = at(i, j);
+    if v != 0.0 || !fill_edge || !fi.is_finite() || !fj.is_finite() {
+        return v;
+    }
+    let mut best = (f64::MAX, 0.0);
+    for dj in -1..=1 {
+        for di in -1..=1 {
+            let w = at(i + di, j + dj);
+            if w != 0.0 {
+                let cx = map.x_min + ((i + di) as f64 + 0.5) * map.dx;
+                let cy = map.y_min + ((j + dj) as f64 + 0.5) * map.dy;
+                let d = ((x - cx) / map.dx).powi(2) + ((y - cy) / map.dy).powi(2);
+                if d < best.0 {
+                    best = (d, w);
+                }
+            }
+        }
+    }
+    best.1
+}
+
+/// Centre of the cell with the largest value (the first of equal ones), if any is > 0.
+pub(crate) fn argmax_centre(map: &FieldMap) -> Option<(f64, f64)> {
+    let (k, v) =
+        map.values.iter().enumerate().fold(
+            (0, f64::MIN),
+            |best, (k, &v)| if v > best.1 { (k, v) } else { best },
+        );
+    (v > 0.0).then(|| {
+        (
+            map.x_min + ((k % map.nx) as f64 + 0.5) * map.dx,
+            map.y_min + ((k / map.nx) as f64 + 0.5) * map.dy,
+        )
+    })
+}
+
+/// `n` + 1 points around the ellipse (closed).
+fn ellipse_points(e: &crate::Ellipse, n: usize) -> Vec<(f64, f64)> {
+    let (s, c) = e.angle.sin_cos();
+    (0..=n)
+        .map(|k| {
+            let t = std::f64::consts::TAU * k as f64 / n as f64;
+            let (u, v) = (e.semi_axes.0 * t.cos(), e.semi_axes.1 * t.sin());
+            (e.centre.0 + c * u - s * v, e.centre.1 + s * u + c * v)
+        })
+        .collect()
+}
+
+/// The maximum's marker at pixel `at`: a black dot in a white disc with a black ring.
+fn draw_marker<DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    at: (i32, i32),
+    m: &Metrics,
+) -> Result<(), PlotError> {
+    let r = ((7.0 * m.scale).round() as i32).max(5);
+    root.draw(&Circle::new(at, r + 1, WHITE.filled())).de()?;
+    root.draw(&Circle::new(at, r, BLACK.stroke_width(m.line.max(2))))
+        .de()?;
+    root.draw(&Circle::new(at, (r / 3).max(2), BLACK.filled()))
+        .de()?;
+    Ok(())
+}
+
+/// The legend's entries broken into rows that fit `width` pixels.
+fn legend_layout<'a, DB: DrawingBackend>(
+    root: &DrawingArea<DB, Shift>,
+    entries: &[LegendEntry<'a>],
+    width: i32,
+    m: &Metrics,
+) -> Result<Vec<Vec<LegendEntry<'a>>>, PlotError> {
+    let style = text(m.tick);
+    let sample = (2.5 * m.tick).round() as i32;
+    let pad = (0.5 * m.tick).round() as i32;
+    let sep = (1.5 * m.tick).round() as i32;
+    let mut rows: Vec<Vec<LegendEntry>> = Vec::new();
+    let mut used = 0;
+    for e in entries {
+        let w = sample + pad + text_size(root, e.label, &style)?.0;
+        match rows.last_mut() {
+            Some(row) if used + sep + w <= width => {
+                row.push(e.clone());
+                used += sep + w;
+            }
+            _ => {
+                rows.push(vec![e.clone()]);
+                used = w;
+            }
+        }
+    }
+    Ok(rows)
 }
 
 impl Figure for FieldFigure<'_> {
@@ -56,9 +289,16 @@ impl Figure for FieldFigure<'_> {
         }
         let contact = map.values.iter().any(|&v| v > 0.0);
 
-        let x_max = map.x_min + map.nx as f64 * map.dx;
-        let y_max = map.y_min + map.ny as f64 * map.dy;
-        let (lx, ly) = (x_max - map.x_min, y_max - map.y_min);
+        let frame = frame(map);
+        let ((vx0, vx1), (vy0, vy1)) = (frame.x, frame.y);
+        let (lx, ly) = (vx1 - vx0, vy1 - vy0);
+        let contour = if map.outline {
+            contour_zero(
+                map.nx, map.ny, map.x_min, map.y_min, map.dx, map.dy, map.values,
+            )
+        } else {
+            Vec::new()
+        };
 
         let tick_style = text(m.tick);
         let desc_style = text(m.label);
@@ -77,8 +317,14 @@ impl Figure for FieldFigure<'_> {
         } else {
             (m.tick * 1.5).round() as i32
         };
-        // Title and caption above the figure.
-        let head_h = title_h + caption_h;
+        let note = frame.note();
+        let note_h = if note.is_empty() {
+            0
+        } else {
+            (m.tick * 1.5).round() as i32
+        };
+        // Title and captions above the figure.
+        let head_h = title_h + caption_h + note_h;
 
         let width_of = |t: &Ticks| -> Result<i32, PlotError> {
             let mut wmax = 0;
@@ -98,7 +344,7 @@ impl Figure for FieldFigure<'_> {
             }
             Ok(wmax)
         };
-        let x_tick_w = widest(map.x_min, x_max, 8)?;
+        let x_tick_w = widest(vx0, vx1, 8)?;
         let c_tick_w = widest(lo, top, 6)?;
 
         let left_for = |tick_w: i32| tick_w + label_dist + desc_h(map.y_label) + m.tick_len;
@@ -108,46 +354,65 @@ impl Figure for FieldFigure<'_> {
         let bar_right = label_dist + c_tick_w + m.tick_len + desc_h(map.colorbar_label);
 
         let mut legend: Vec<LegendEntry> = Vec::new();
-        if !map.overlays.is_empty() {
+        let any_extra =
+            !map.overlays.is_empty() || map.ellipse.is_some() || map.max_marker.is_some();
+        if any_extra {
             if map.outline {
                 legend.push(LegendEntry {
                     label: "contact boundary",
                     color: BLACK,
-                    dashed: false,
+                    kind: EntryKind::Solid,
                 });
             }
             legend.extend(map.overlays.iter().map(|o| LegendEntry {
                 label: o.label,
                 color: rgb(o.color),
-                dashed: true,
+                kind: EntryKind::Dashed,
             }));
+            if let Some(e) = &map.ellipse {
+                legend.push(LegendEntry {
+                    label: e.label,
+                    color: rgb(e.color),
+                    kind: EntryKind::Dotted,
+                });
+            }
+            if let Some(label) = map.max_marker.filter(|_| contact) {
+                legend.push(LegendEntry {
+                    label,
+                    color: BLACK,
+                    kind: EntryKind::Marker,
+                });
+            }
         }
+        let legend_rows = legend_layout(root, &legend, wi - 2 * m.margin, &m)?;
         let legend_h = if legend.is_empty() {
             0
         } else {
-            (m.tick * 2.2).round() as i32
+            (m.tick * 0.7).round() as i32 + legend_rows.len() as i32 * (m.tick * 1.5).round() as i32
         };
 
         // The plot box: as large as fits, with equal scales in x and y.
         let avail_h = (hi - 2 * m.margin - head_h - tick_h - bottom - legend_h).max(20);
         let fit = |left: i32| -> (i32, i32) {
             let avail_w = (wi - 2 * m.margin - left - gap - bar_w - bar_right).max(20);
-            let scale = (f64::from(avail_w - 1) / lx).min(f64::from(avail_h - 1) / ly);
-            let pw = ((lx * scale).round() as i32 + 1).clamp(2, avail_w);
-            let ph = ((ly * scale).round() as i32 + 1).clamp(2, avail_h);
+            let (sx, sy) = frame.stretch;
+            let scale =
+                (f64::from(avail_w - 1) / (lx * sx)).min(f64::from(avail_h - 1) / (ly * sy));
+            let pw = ((lx * sx * scale).round() as i32 + 1).clamp(2, avail_w);
+            let ph = ((ly * sy * scale).round() as i32 + 1).clamp(2, avail_h);
             (pw, ph)
         };
         let y_spacing = 1.6 * f64::from(tick_h);
         // Size the y labels for the ticks that fit the first guess of the plot height.
-        let (_, ph) = fit(left_for(widest(map.y_min, y_max, 8)?));
-        let y_ticks = ticks_fitting(map.y_min, y_max, f64::from(ph), y_spacing, 8);
+        let (_, ph) = fit(left_for(widest(vy0, vy1, 8)?));
+        let y_ticks = ticks_fitting(vy0, vy1, f64::from(ph), y_spacing, 8);
         let left = left_for(width_of(&y_ticks)?);
         let (_, ph) = fit(left);
-        let y_ticks = ticks_fitting(map.y_min, y_max, f64::from(ph), y_spacing, 8);
+        let y_ticks = ticks_fitting(vy0, vy1, f64::from(ph), y_spacing, 8);
         let left = left.max(left_for(width_of(&y_ticks)?));
         let (pw, ph) = fit(left);
         let x_spacing = f64::from(x_tick_w) + 1.5 * m.tick;
-        let x_ticks = ticks_fitting(map.x_min, x_max, f64::from(pw), x_spacing, 8);
+        let x_ticks = ticks_fitting(vx0, vx1, f64::from(pw), x_spacing, 8);
 
         // The colour bar is as tall as the map, but tall enough for its ticks.
         let bar_h = ph.max((12 * tick_h).min(avail_h));
@@ -163,18 +428,20 @@ impl Figure for FieldFigure<'_> {
         let oy = centre_y - ph / 2;
         draw_title(root, map.title, &m, start)?;
         draw_line_of_text(root, self.arrow_label, m.tick, &m, start + title_h)?;
+        draw_line_of_text(root, &note, m.tick, &m, start + title_h + caption_h)?;
 
         let area = root.clone().shrink((ox, oy), (left + pw, ph + bottom));
         let mut chart = ChartBuilder::on(&area)
             .set_label_area_size(LabelAreaPosition::Left, left.max(0) as u32)
             .set_label_area_size(LabelAreaPosition::Bottom, bottom.max(0) as u32)
             .build_cartesian_2d(
-                TickAxis::new(map.x_min, x_max, x_ticks.clone()),
-                TickAxis::new(map.y_min, y_max, y_ticks.clone()),
+                TickAxis::new(vx0, vx1, x_ticks.clone()),
+                TickAxis::new(vy0, vy1, y_ticks.clone()),
             )
             .de()?;
 
-        // The map itself.
+        // The map itself, inside the outline only.
+        let value_at = |x: f64, y: f64| -> f64 { cell_value(map, x, y, map.outline) };
         let color_of = |v: f64| viridis((v - lo) / (top - lo));
         if target.raster {
             let (xr, yr) = chart.plotting_area().get_pixel_range();
@@ -183,23 +450,20 @@ impl Figure for FieldFigure<'_> {
             let (c0, c1) = ((-xr.start).max(0), cw.min(wi - xr.start));
             let (r0, r1) = ((-yr.start).max(0), ch.min(hi - yr.start));
             if c1 > c0 && r1 > r0 {
-                let cell_of = |c: i32, n_px: i32, n: usize| -> usize {
-                    let f = (f64::from(c) + 0.5) / f64::from(n_px);
-                    ((f * n as f64).floor() as usize).min(n - 1)
-                };
-                let cols: Vec<usize> = (c0..c1).map(|c| cell_of(c, cw, map.nx)).collect();
-                let mut buf = Vec::with_capacity(cols.len() * (r1 - r0) as usize * 3);
+                let x_of = |c: i32| vx0 + (f64::from(c) + 0.5) / f64::from(cw) * lx;
+                let mut buf = Vec::with_capacity((c1 - c0) as usize * (r1 - r0) as usize * 3);
                 for r in r0..r1 {
                     // Rows run downwards, y upwards.
-                    let j = map.ny - 1 - cell_of(r, ch, map.ny);
-                    let row = &map.values[j * map.nx..(j + 1) * map.nx];
-                    for &i in &cols {
-                        let v = row[i];
-                        let (cr, cg, cb) = if v == 0.0 {
-                            (255, 255, 255)
-                        } else {
-                            color_of(v)
-                        };
+                    let y = vy1 - (f64::from(r) + 0.5) / f64::from(ch) * ly;
+                    let inside = map.outline.then(|| row_intervals(&contour, y));
+                    for c in c0..c1 {
+                        let x = x_of(c);
+                        let v = value_at(x, y);
+                        let shown = v != 0.0
+                            && inside
+                                .as_ref()
+                                .is_none_or(|iv| iv.iter().any(|&(a, b)| a <= x && x <= b));
+                        let (cr, cg, cb) = if shown { color_of(v) } else { (255, 255, 255) };
                         buf.extend_from_slice(&[cr, cg, cb]);
                     }
                 }
@@ -233,6 +497,29 @@ impl Figure for FieldFigure<'_> {
                 }
             }
             rects.extend(run);
+            // Only the parts inside the outline, taken at the middle of each row.
+            if map.outline {
+                rects = rects
+                    .into_iter()
+                    .flat_map(|r| {
+                        let iv = row_intervals(&contour, 0.5 * (r.y.0 + r.y.1));
+                        iv.into_iter().filter_map(move |(a, b)| {
+                            let (x0, x1) = (r.x.0.max(a), r.x.1.min(b));
+                            (x1 > x0).then_some(Run {
+                                x: (x0, x1),
+                                y: r.y,
+                                color: r.color,
+                            })
+                        })
+                    })
+                    .collect();
+            }
+            let window = ((vx0, vx1), (vy0, vy1));
+            rects.retain(|r| r.x.1 > vx0 && r.x.0 < vx1 && r.y.1 > vy0 && r.y.0 < vy1);
+            for r in &mut rects {
+                r.x = (r.x.0.max(window.0.0), r.x.1.min(window.0.1));
+                r.y = (r.y.0.max(window.1.0), r.y.1.min(window.1.1));
+            }
             chart
                 .draw_series(rects.into_iter().map(|r| {
                     Rectangle::new([(r.x.0, r.y.0), (r.x.1, r.y.1)], rgb(r.color).filled())
@@ -254,24 +541,20 @@ impl Figure for FieldFigure<'_> {
             .de()?;
         chart
             .draw_series(std::iter::once(Rectangle::new(
-                [(map.x_min, map.y_min), (x_max, y_max)],
+                [(vx0, vy0), (vx1, vy1)],
                 BLACK.stroke_width(1),
             )))
             .de()?;
 
         // Outlines.
         let lw = m.line.max(1) + u32::from(m.scale > 1.5);
-        if map.outline {
-            for line in contour_zero(
-                map.nx, map.ny, map.x_min, map.y_min, map.dx, map.dy, map.values,
-            ) {
-                chart
-                    .draw_series(std::iter::once(PathElement::new(
-                        line,
-                        BLACK.stroke_width(lw),
-                    )))
-                    .de()?;
-            }
+        for line in &contour {
+            chart
+                .draw_series(std::iter::once(PathElement::new(
+                    line.clone(),
+                    BLACK.stroke_width(lw),
+                )))
+                .de()?;
         }
         let dash = ((8.0 * m.scale).round() as i32).max(4);
         let space = ((5.0 * m.scale).round() as i32).max(3);
@@ -292,13 +575,44 @@ impl Figure for FieldFigure<'_> {
             }
         }
 
+        // The ellipse, dotted, and the maximum's marker.
+        if let Some(e) = &map.ellipse {
+            let dot = ((2.0 * m.scale).round() as i32).max(2);
+            let space = ((4.0 * m.scale).round() as i32).max(3);
+            chart
+                .draw_series(DashedLineSeries::new(
+                    ellipse_points(e, 180),
+                    dot,
+                    space,
+                    rgb(e.color).stroke_width(lw),
+                ))
+                .de()?;
+        }
+        if map.max_marker.is_some()
+            && contact
+            && let Some(at) = argmax_centre(map)
+        {
+            let (px, py) = chart.backend_coord(&at);
+            draw_marker(root, (px, py), &m)?;
+        }
+
         // The vector field, clipped to the map.
-        let window = ((map.x_min, x_max), (map.y_min, y_max));
+        let window = ((vx0, vx1), (vy0, vy1));
+        // On a stretched axis the arrows keep their true direction and the length scale of
+        // the unstretched axis: they are built where the map is to scale and mapped back.
+        let (sx, sy) = frame.stretch;
         let segments: Vec<_> = self
             .arrows
             .iter()
-            .filter_map(arrow_segments)
+            .filter_map(|a| {
+                arrow_segments(&Arrow {
+                    x: a.x * sx,
+                    y: a.y * sy,
+                    ..*a
+                })
+            })
             .flatten()
+            .map(|(a, b)| ((a.0 / sx, a.1 / sy), (b.0 / sx, b.1 / sy)))
             .filter_map(|(a, b)| clip_segment(a, b, window))
             .collect();
         let arrow_style = ARROW_COLOR.stroke_width(m.line.max(1));
@@ -334,8 +648,11 @@ impl Figure for FieldFigure<'_> {
         // Legend under the map.
         if !legend.is_empty() {
             let centre = ox + left + pw / 2;
-            let y = oy + ph + bottom + legend_h / 2;
-            draw_legend(root, &legend, centre, y, lw, &m)?;
+            let row_h = (m.tick * 1.5).round() as i32;
+            let y = oy + ph + bottom + (m.tick * 0.7).round() as i32 + row_h / 2;
+            for (k, row) in legend_rows.iter().enumerate() {
+                draw_legend(root, row, centre, y + k as i32 * row_h, lw, &m)?;
+            }
         }
         Ok(())
     }
@@ -464,18 +781,32 @@ fn draw_legend<DB: DrawingBackend>(
         .min((w as i32 - total).max(0));
     for (e, width) in entries.iter().zip(widths) {
         let line = e.color.stroke_width(lw);
-        if e.dashed {
-            let third = sample / 3;
-            root.draw(&PathElement::new(vec![(x, y), (x + third, y)], line))
+        match e.kind {
+            EntryKind::Dashed => {
+                let third = sample / 3;
+                root.draw(&PathElement::new(vec![(x, y), (x + third, y)], line))
+                    .de()?;
+                root.draw(&PathElement::new(
+                    vec![(x + 2 * third, y), (x + sample, y)],
+                    line,
+                ))
                 .de()?;
-            root.draw(&PathElement::new(
-                vec![(x + 2 * third, y), (x + sample, y)],
-                line,
-            ))
-            .de()?;
-        } else {
-            root.draw(&PathElement::new(vec![(x, y), (x + sample, y)], line))
-                .de()?;
+            }
+            EntryKind::Dotted => {
+                let step = (sample / 5).max(2);
+                let dot = (step / 2).max(1);
+                let mut sx = x;
+                while sx < x + sample {
+                    root.draw(&PathElement::new(vec![(sx, y), (sx + dot, y)], line))
+                        .de()?;
+                    sx += step;
+                }
+            }
+            EntryKind::Solid => {
+                root.draw(&PathElement::new(vec![(x, y), (x + sample, y)], line))
+                    .de()?;
+            }
+            EntryKind::Marker => draw_marker(root, (x + sample / 2, y), m)?,
         }
         let label_style = style.pos(Pos::new(HPos::Left, VPos::Center));
         root.draw_text(e.label, &label_style, (x + sample + pad, y))
@@ -558,6 +889,141 @@ mod tests {
 
     fn close(a: (f64, f64), b: (f64, f64)) -> bool {
         (a.0 - b.0).abs() < 1e-12 && (a.1 - b.1).abs() < 1e-12
+    }
+
+    fn map_of<'a>(nx: usize, ny: usize, values: &'a [f64]) -> FieldMap<'a> {
+        FieldMap {
+            nx,
+            ny,
+            x_min: -1.0,
+            y_min: -1.0,
+            dx: 2.0 / nx as f64,
+            dy: 2.0 / ny as f64,
+            values,
+            title: "",
+            x_label: "",
+            y_label: "",
+            colorbar_label: "",
+            outline: true,
+            overlays: &[],
+            ellipse: None,
+            max_marker: None,
+        }
+    }
+
+    #[test]
+    fn framing_is_tight_and_stretches_slender_zones() {
+        // A 1.0 x 0.12 mm zone in the middle of a 2 x 2 mm grid of 100 x 100 cells.
+        let n = 100;
+        let values: Vec<f64> = (0..n * n)
+            .map(|k| {
+                let (x, y) = (
+                    -1.0 + ((k % n) as f64 + 0.5) * 0.02,
+                    -1.0 + ((k / n) as f64 + 0.5) * 0.02,
+                );
+                if x.abs() < 0.5 && y.abs() < 0.06 {
+                    1.0
+                } else {
+                    0.0
+                }
+            })
+            .collect();
+        let map = map_of(n, n, &values);
+        let f = frame(&map);
+        // 8 % of the zone's size on each side, at least a cell: x ±0.58, y ±0.08.
+        assert!(
+            (f.x.0 + 0.58).abs() < 1e-9 && (f.x.1 - 0.58).abs() < 1e-9,
+            "{f:?}"
+        );
+        assert!(
+            (f.y.0 + 0.08).abs() < 1e-9 && (f.y.1 - 0.08).abs() < 1e-9,
+            "{f:?}"
+        );
+        // 1.16 / 0.16 = 7.25:1 is stretched by 3 to 2.4:1 (at most 2.5:1), and the note says so.
+        assert_eq!(f.stretch, (1.0, 3.0));
+        assert!(f.note().starts_with("y axis stretched ×3"), "{}", f.note());
+        // A round zone filling half the grid: to scale, no note.
+        let round: Vec<f64> = (0..n * n)
+            .map(|k| {
+                let (x, y) = (
+                    -1.0 + ((k % n) as f64 + 0.5) * 0.02,
+                    -1.0 + ((k / n) as f64 + 0.5) * 0.02,
+                );
+                if x * x + y * y < 0.25 { 1.0 } else { 0.0 }
+            })
+            .collect();
+        let f = frame(&map_of(n, n, &round));
+        assert_eq!(f.stretch, (1.0, 1.0));
+        assert!(f.note().is_empty());
+        assert!(f.x.1 - f.x.0 < 1.2 && f.y.1 - f.y.0 < 1.2, "{f:?}");
+        // The ellipse widens the frame; nothing at all shows the whole grid.
+        let mut with_ellipse = map_of(n, n, &round);
+        with_ellipse.ellipse = Some(crate::Ellipse {
+            label: "",
+            centre: (0.0, 0.0),
+            semi_axes: (0.8, 0.1),
+            angle: 0.0,
+            color: (0, 0, 0),
+        });
+        let f = frame(&with_ellipse);
+        assert!(f.x.0 <= -0.8 && f.x.1 >= 0.8);
+        let zero = vec![0.0; n * n];
+        let f = frame(&map_of(n, n, &zero));
+        assert_eq!(
+            (f.x, f.y, f.stretch),
+            ((-1.0, 1.0), (-1.0, 1.0), (1.0, 1.0))
+        );
+    }
+
+    #[test]
+    fn no_cell_is_drawn_outside_the_outline() {
+        // A Hertz-like disc: every cell colour drawn lies inside the outline's intervals, and
+        // the outer corners of the boundary cells (which a cell-by-cell drawing would show)
+        // are outside.
+        let n = 24;
+        let h = 2.0 / n as f64;
+        let c = |k: usize| -1.0 + (k as f64 + 0.5) * h;
+        let values: Vec<f64> = (0..n * n)
+            .map(|k| {
+                (1.0 - (c(k % n).powi(2) + c(k / n).powi(2)) / 0.64)
+                    .max(0.0)
+                    .sqrt()
+            })
+            .collect();
+        let lines = contour_zero(n, n, -1.0, -1.0, h, h, &values);
+        let mut poking = 0;
+        for j in 0..n {
+            let iv = row_intervals(&lines, c(j));
+            for i in 0..n {
+                if values[j * n + i] > 0.0 {
+                    // The cell centre is inside.
+                    assert!(iv.iter().any(|&(a, b)| a <= c(i) && c(i) <= b));
+                    let outer = c(i) + 0.5 * h * c(i).signum();
+                    if !iv.iter().any(|&(a, b)| a <= outer && outer <= b) {
+                        poking += 1;
+                    }
+                }
+            }
+        }
+        assert!(poking > 0, "the masking has nothing to cut");
+        // Holes are outside (even-odd).
+        let ring = vec![
+            vec![(-2.0, -2.0), (2.0, -2.0), (2.0, 2.0), (-2.0, 2.0)],
+            vec![(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)],
+        ];
+        assert_eq!(row_intervals(&ring, 0.0), vec![(-2.0, -1.0), (1.0, 2.0)]);
+    }
+
+    #[test]
+    fn the_marker_is_at_the_maximum() {
+        let mut values = vec![0.0; 16];
+        values[9] = 5.0;
+        values[10] = 7.0;
+        values[6] = 7.0;
+        // The first of the two equal maxima: cell 6 = (i 2, j 1).
+        let map = map_of(4, 4, &values);
+        assert_eq!(argmax_centre(&map), Some((0.25, -0.25)));
+        assert_eq!(argmax_centre(&map_of(4, 4, &[0.0; 16])), None);
     }
 
     #[test]

@@ -3,11 +3,14 @@
 //! The crate is independent of the `kontakt` solver crate: it takes plain slices.
 //!
 //! * [`field_map`] draws a scalar field on a uniform cell-centred grid (e.g. a contact
-//!   pressure in MPa over x, y in mm) as a heat map with equal axis scales, a colour bar and
-//!   the outline of the contact region, optionally with the outlines of other fields overlaid.
+//!   pressure in MPa over x, y in mm) as a heat map framed tightly round the region with
+//!   values (equal axis scales, or a stretched short axis with a note for a slender region),
+//!   a colour bar and the outline of the contact region, optionally with the outlines of
+//!   other fields, an [`Ellipse`] (e.g. Hertz's) and a marker at the maximum.
 //! * [`field_map_with_arrows`] draws the same heat map with a vector field of [`Arrow`]s on
 //!   top (e.g. the sliding velocity over the pressure or the friction-power density).
-//! * [`line_plot`] draws curves and measured points with a legend.
+//! * [`line_plot`] draws curves and measured points, on a linear or logarithmic x axis, with a
+//!   legend where it hides no data.
 //! * [`contour_zero`] returns the boundary of the region `values > 0` as closed polylines.
 //!
 //! The output format follows the file extension (see [`Format`]). Text is rendered with a
@@ -41,6 +44,8 @@
 //!     colorbar_label: "pressure [MPa]",
 //!     outline: true,
 //!     overlays: &[],
+//!     ellipse: None,
+//!     max_marker: Some("p_max = 1000 MPa"),
 //! };
 //! field_map(Path::new("pressure.png"), &map, (1000, 700))?;
 //! # Ok::<(), kontakt_plot::PlotError>(())
@@ -58,6 +63,7 @@ mod ticks;
 use std::path::{Path, PathBuf};
 
 pub use contour::contour_zero;
+pub use render::missing_glyphs;
 
 /// Smallest accepted image size in pixels (width, height).
 pub const MIN_SIZE: (u32, u32) = (200, 150);
@@ -187,6 +193,28 @@ pub struct FieldMap<'a> {
     /// Extra outlines to overlay (e.g. another solver's contact boundary), each drawn as the
     /// boundary of its `values > 0` in its colour (dashed), with a legend entry.
     pub overlays: &'a [Overlay<'a>],
+    /// An ellipse to draw over the map (e.g. the Hertz contact ellipse at the contact
+    /// point), dotted, with a legend entry.
+    pub ellipse: Option<Ellipse<'a>>,
+    /// Mark the cell of the largest value with a ringed dot, with this legend entry (e.g.
+    /// `"p_max = 458 MPa"`).
+    pub max_marker: Option<&'a str>,
+}
+
+/// An ellipse drawn over a [`FieldMap`] in the map's coordinates.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ellipse<'a> {
+    /// Legend entry.
+    pub label: &'a str,
+    /// Centre (x, y) in mm.
+    pub centre: (f64, f64),
+    /// Semi-axes in mm (finite, > 0): the first along the direction `angle`, the second
+    /// perpendicular to it.
+    pub semi_axes: (f64, f64),
+    /// Angle from the x axis to the first semi-axis, counter-clockwise, in radians.
+    pub angle: f64,
+    /// Line colour as (r, g, b).
+    pub color: (u8, u8, u8),
 }
 
 /// The contact boundary of another field on the same grid, overlaid on a [`FieldMap`].
@@ -203,10 +231,19 @@ pub struct Overlay<'a> {
 /// Draw a heat map of the field into `path` (`.png` or `.svg`, see [`Format`]) with the
 /// image size `size` = (width, height) in pixels.
 ///
-/// The figure has the title at the top, the map with equal scales on both axes (1 mm is the
-/// same length in x and y) and ticked axes in mm, a colour bar (viridis) with its label and
-/// tick values to the right, and the outline(s) of the contact region. Zero cells are left
-/// white. An all-zero field is allowed: the map is empty, with "no contact" in its centre.
+/// The figure has the title at the top, the map with ticked axes in mm, a colour bar
+/// (viridis) with its label and tick values to the right, and the outline(s) of the contact
+/// region; the cells are drawn inside the outline only, so that none pokes through it. Zero
+/// cells are left white. An all-zero field is allowed: the map is empty, with "no contact" in
+/// its centre.
+///
+/// The map is framed tightly around what it shows (the cells with values, the overlays'
+/// regions and the ellipse) with a margin of 8 % (at least one cell) on each side, not
+/// around the whole grid. Both axes have the same scale (1 mm is the same length in x and
+/// y) unless the framed region is more slender than 2.5:1: then the short axis is stretched
+/// by a whole factor so that it is at most 2.5:1, and a note under the title says so (e.g.
+/// "y axis stretched ×4: the zone is 4× more slender than drawn"). The outline, overlays,
+/// the ellipse and the maximum marker have a legend under the map.
 ///
 /// For PNG the map is rasterised at the pixel resolution of the plotting area; for SVG each
 /// cell becomes a rectangle, after averaging blocks of cells down to at most 128×128 cells.
@@ -267,6 +304,8 @@ pub struct Arrow {
 ///     colorbar_label: "pressure [MPa]",
 ///     outline: true,
 ///     overlays: &[],
+///     ellipse: None,
+///     max_marker: None,
 /// };
 /// // A rigid rotation about the centre: v = omega × r in mm/s, drawn 0.1 mm per mm/s.
 /// let (omega, scale) = (2.0, 0.1);
@@ -297,6 +336,7 @@ pub fn field_map_with_arrows(
     let format = Format::from_path(path)?;
     validate_size(size)?;
     validate_field(map)?;
+    validate_ellipse(map.ellipse.as_ref())?;
     validate_arrows(arrows)?;
     let figure = field::FieldFigure {
         map,
@@ -341,21 +381,39 @@ pub struct LinePlot<'a> {
     pub y_label: &'a str,
     /// The curves (at least one).
     pub series: &'a [Series<'a>],
+    /// A logarithmic x axis (every x must then be > 0): decade ticks labelled with the value
+    /// (`0.1`, `1`, `10`, ... from 0.001 to 100000, `10ᵏ` beyond), with 2 and 5 times each
+    /// decade where fewer than three decades are in range.
+    pub x_log: bool,
 }
 
 /// Draw a line plot into `path` (`.png` or `.svg`, see [`Format`]) with the image size
 /// `size` = (width, height) in pixels.
 ///
 /// The ranges cover all points with a small margin; there is a light grid at the ticks and a
-/// legend in the corner of the plot with the fewest data in it.
+/// legend that never hides data: in the first place in the plot that holds neither points
+/// nor lines (the corners upper right, upper left, lower right, lower left, then the middles
+/// of the right and left sides, of the top and of the bottom), or else to the right of the
+/// plot, outside it.
 ///
 /// Errors: an unsupported extension, `size` outside [`MIN_SIZE`]..[`MAX_SIZE`], no series, a
 /// series without points, a non-finite coordinate (the error names the series and the point
-/// index), or a file that cannot be written.
+/// index), an x ≤ 0 on a logarithmic axis, or a file that cannot be written.
 pub fn line_plot(path: &Path, plot: &LinePlot, size: (u32, u32)) -> Result<(), PlotError> {
     let format = Format::from_path(path)?;
     validate_size(size)?;
     validate_series(plot.series)?;
+    if plot.x_log {
+        for (s, item) in plot.series.iter().enumerate() {
+            if let Some(k) = item.points.iter().position(|(x, _)| !(*x > 0.0)) {
+                return Err(PlotError::invalid(
+                    format!("series[{s}] ({:?}).points[{k}].x", item.label),
+                    item.points[k].0,
+                    "x > 0 on a logarithmic x axis",
+                ));
+            }
+        }
+    }
     render::render(path, format, size, line::LineFigure(plot))
 }
 
@@ -412,6 +470,29 @@ fn validate_field(map: &FieldMap) -> Result<(), PlotError> {
             overlay.values,
             n,
         )?;
+    }
+    Ok(())
+}
+
+fn validate_ellipse(ellipse: Option<&Ellipse>) -> Result<(), PlotError> {
+    let Some(e) = ellipse else {
+        return Ok(());
+    };
+    let finite = [e.centre.0, e.centre.1, e.angle]
+        .iter()
+        .all(|v| v.is_finite());
+    let positive = [e.semi_axes.0, e.semi_axes.1]
+        .iter()
+        .all(|v| v.is_finite() && *v > 0.0);
+    if !finite || !positive {
+        return Err(PlotError::invalid(
+            "ellipse",
+            format!(
+                "centre ({}, {}), semi-axes ({}, {}), angle {}",
+                e.centre.0, e.centre.1, e.semi_axes.0, e.semi_axes.1, e.angle
+            ),
+            "a finite centre and angle and semi-axes > 0 mm",
+        ));
     }
     Ok(())
 }

@@ -2,10 +2,12 @@
 
 use plotters::prelude::*;
 
+use plotters::style::text_anchor::{HPos, Pos, VPos};
+
 use crate::render::{
     DrawResultExt, Figure, Metrics, Target, draw_title, rgb, text, text_size, title_height,
 };
-use crate::ticks::{TickAxis, Ticks, nice_ticks, ticks_fitting};
+use crate::ticks::{TickAxis, Ticks, log_ticks, nice_ticks, ticks_fitting};
 use crate::{LinePlot, LineStyle, PlotError, Series};
 
 /// A [`LinePlot`] as a drawable figure.
@@ -31,9 +33,15 @@ impl Figure for LineFigure<'_> {
         let (wi, hi) = (w as i32, h as i32);
         let m = Metrics::new((w, h));
 
-        let all = || plot.series.iter().flat_map(|s| s.points.iter().copied());
+        // On a logarithmic x axis the curves are drawn over log10 x.
+        let tx = |x: f64| if plot.x_log { x.log10() } else { x };
+        let data: Vec<Vec<(f64, f64)>> = plot
+            .series
+            .iter()
+            .map(|s| s.points.iter().map(|&(x, y)| (tx(x), y)).collect())
+            .collect();
         let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
-        for (x, y) in all() {
+        for &(x, y) in data.iter().flatten() {
             x0 = x0.min(x);
             x1 = x1.max(x);
             y0 = y0.min(y);
@@ -70,24 +78,84 @@ impl Figure for LineFigure<'_> {
         };
         // Widest x tick labels over the tick sets we may end up using.
         let mut x_tick_w = 0;
-        for n in 2..=13 {
-            let t = nice_ticks(x0, x1, n);
-            if t.values.len() <= 10 {
-                x_tick_w = x_tick_w.max(width_of(&t)?);
+        if plot.x_log {
+            x_tick_w = width_of(&log_ticks(x0, x1, 1e6, 1.0))?;
+        } else {
+            for n in 2..=13 {
+                let t = nice_ticks(x0, x1, n);
+                if t.values.len() <= 10 {
+                    x_tick_w = x_tick_w.max(width_of(&t)?);
+                }
             }
         }
 
+        // The legend: its size, then where it goes (a free corner, or right of the plot).
+        let sample = (2.5 * m.tick).round() as i32;
+        let labelled: Vec<(usize, &Series)> = plot
+            .series
+            .iter()
+            .enumerate()
+            .filter(|(_, s)| !s.label.is_empty())
+            .collect();
+        let mut label_w = 0;
+        for (_, s) in &labelled {
+            label_w = label_w.max(text_size(root, s.label, &tick_style)?.0);
+        }
+        let pad = m.tick_len;
+        let row_h = (m.tick * 1.4).round() as i32;
+        let box_w = sample + pad + label_w + 3 * pad;
+        let box_h = labelled.len() as i32 * row_h + 2 * pad;
+        let gap = 2 * m.tick_len;
+
         let bottom = tick_h + label_dist + desc_h(plot.x_label) + m.tick_len;
-        let right = m.margin.max(x_tick_w / 2 + 2);
         let top = title_bottom + tick_h / 2;
-        let area_w = (wi - m.margin - right).max(20);
-        let area_h = (hi - top - m.margin).max(20);
+        let layout = |legend_right: i32| -> Result<(i32, i32, i32, i32, Ticks, Ticks), PlotError> {
+            let right = m.margin.max(x_tick_w / 2 + 2) + legend_right;
+            let area_w = (wi - m.margin - right).max(20);
+            let area_h = (hi - top - m.margin).max(20);
+            let ph = (area_h - bottom).max(2);
+            let y_ticks = ticks_fitting(y0, y1, f64::from(ph), 1.6 * f64::from(tick_h), 10);
+            let left = width_of(&y_ticks)? + label_dist + desc_h(plot.y_label) + m.tick_len;
+            let pw = (area_w - left).max(2);
+            let x_spacing = f64::from(x_tick_w) + 1.5 * m.tick;
+            let x_ticks = if plot.x_log {
+                log_ticks(x0, x1, f64::from(pw), x_spacing)
+            } else {
+                ticks_fitting(x0, x1, f64::from(pw), x_spacing, 10)
+            };
+            Ok((area_w, area_h, left, pw, x_ticks, y_ticks))
+        };
+        let (mut area_w, mut area_h, mut left, pw, mut x_ticks, mut y_ticks) = layout(0)?;
         let ph = (area_h - bottom).max(2);
-        let y_ticks = ticks_fitting(y0, y1, f64::from(ph), 1.6 * f64::from(tick_h), 10);
-        let left = width_of(&y_ticks)? + label_dist + desc_h(plot.y_label) + m.tick_len;
-        let pw = (area_w - left).max(2);
-        let x_spacing = f64::from(x_tick_w) + 1.5 * m.tick;
-        let x_ticks = ticks_fitting(x0, x1, f64::from(pw), x_spacing, 10);
+        let mut place = LegendPlace::Corner(0);
+        if !labelled.is_empty() {
+            let units: Vec<(LineStyle, Vec<(f64, f64)>)> = data
+                .iter()
+                .zip(plot.series)
+                .map(|(pts, s)| {
+                    let unit = pts
+                        .iter()
+                        .map(|&(x, y)| ((x - x0) / (x1 - x0), (y - y0) / (y1 - y0)))
+                        .collect();
+                    (s.style, unit)
+                })
+                .collect();
+            let margin_fraction = (
+                f64::from(2 * gap) / f64::from(pw),
+                f64::from(2 * gap) / f64::from(ph),
+            );
+            place = legend_place(
+                &units,
+                (
+                    f64::from(box_w) / f64::from(pw) + margin_fraction.0,
+                    f64::from(box_h) / f64::from(ph) + margin_fraction.1,
+                ),
+            );
+            if place == LegendPlace::Outside {
+                (area_w, area_h, left, _, x_ticks, y_ticks) = layout(box_w + gap)?;
+            }
+        }
+        let ph = (area_h - bottom).max(2);
 
         let area = root.clone().shrink((m.margin, top), (area_w, area_h));
         let mut chart = ChartBuilder::on(&area)
@@ -114,44 +182,23 @@ impl Figure for LineFigure<'_> {
         let radius = ((3.5 * m.scale).round() as i32).max(3);
         let dash = ((9.0 * m.scale).round() as i32).max(5);
         let space = ((6.0 * m.scale).round() as i32).max(3);
-        let sample = (2.5 * m.tick).round() as i32;
-        for series in plot.series {
+        for (series, pts) in plot.series.iter().zip(&data) {
             let color = rgb(series.color);
             let line = color.stroke_width(lw);
-            let fill = color.filled();
-            let points = series.points.iter().copied();
-            let anno = match series.style {
-                LineStyle::Solid => {
-                    let anno = chart.draw_series(LineSeries::new(points, line)).de()?;
-                    if !series.label.is_empty() {
-                        anno.label(series.label).legend(move |(x, y)| {
-                            PathElement::new(vec![(x, y), (x + sample, y)], line)
-                        });
-                    }
-                    continue;
-                }
-                LineStyle::Dashed => chart
-                    .draw_series(DashedLineSeries::new(points, dash, space, line))
-                    .de()?,
-                LineStyle::Markers => chart
-                    .draw_series(points.map(|p| Circle::new(p, radius, fill)))
-                    .de()?,
-            };
-            if series.label.is_empty() {
-                continue;
-            }
-            let third = sample / 3;
+            let points = pts.iter().copied();
             match series.style {
-                LineStyle::Markers => {
-                    anno.label(series.label)
-                        .legend(move |(x, y)| Circle::new((x + sample / 2, y), radius, fill));
+                LineStyle::Solid => {
+                    chart.draw_series(LineSeries::new(points, line)).de()?;
                 }
-                _ => {
-                    anno.label(series.label).legend(move |(x, y)| {
-                        EmptyElement::at((x, y))
-                            + PathElement::new(vec![(0, 0), (third, 0)], line)
-                            + PathElement::new(vec![(2 * third, 0), (sample, 0)], line)
-                    });
+                LineStyle::Dashed => {
+                    chart
+                        .draw_series(DashedLineSeries::new(points, dash, space, line))
+                        .de()?;
+                }
+                LineStyle::Markers => {
+                    chart
+                        .draw_series(points.map(|p| Circle::new(p, radius, color.filled())))
+                        .de()?;
                 }
             }
         }
@@ -164,75 +211,136 @@ impl Figure for LineFigure<'_> {
             )))
             .de()?;
 
-        if plot.series.iter().any(|s| !s.label.is_empty()) {
-            let mut label_w = 0;
-            let mut rows = 0;
-            for s in plot.series.iter().filter(|s| !s.label.is_empty()) {
-                label_w = label_w.max(text_size(root, s.label, &tick_style)?.0);
-                rows += 1;
+        if !labelled.is_empty() {
+            let (px, py) = {
+                let (xr, yr) = chart.plotting_area().get_pixel_range();
+                (xr, yr)
+            };
+            let (bx, by) = match place {
+                LegendPlace::Outside => (px.end + gap, py.start),
+                LegendPlace::Corner(k) => {
+                    // Horizontal: 0 left, 1 centre, 2 right; vertical: 0 top, 1 middle, 2 bottom.
+                    const AT: [(u8, u8); 8] = [
+                        (2, 0),
+                        (0, 0),
+                        (2, 2),
+                        (0, 2),
+                        (2, 1),
+                        (0, 1),
+                        (1, 0),
+                        (1, 2),
+                    ];
+                    let (h, v) = AT[k.min(7)];
+                    let x = match h {
+                        0 => px.start + gap,
+                        1 => (px.start + px.end - box_w) / 2,
+                        _ => px.end - gap - box_w,
+                    };
+                    let y = match v {
+                        0 => py.start + gap,
+                        1 => (py.start + py.end - box_h) / 2,
+                        _ => py.end - gap - box_h,
+                    };
+                    (x, y)
+                }
+            };
+            root.draw(&Rectangle::new(
+                [(bx, by), (bx + box_w, by + box_h)],
+                WHITE.mix(0.85).filled(),
+            ))
+            .de()?;
+            root.draw(&Rectangle::new(
+                [(bx, by), (bx + box_w, by + box_h)],
+                BLACK.mix(0.6).stroke_width(1),
+            ))
+            .de()?;
+            let label_style = tick_style.pos(Pos::new(HPos::Left, VPos::Center));
+            for (row, (_, s)) in labelled.iter().enumerate() {
+                let y = by + pad + row as i32 * row_h + row_h / 2;
+                let x = bx + pad;
+                let color = rgb(s.color);
+                let line = color.stroke_width(lw);
+                match s.style {
+                    LineStyle::Solid => {
+                        root.draw(&PathElement::new(vec![(x, y), (x + sample, y)], line))
+                            .de()?;
+                    }
+                    LineStyle::Dashed => {
+                        let third = sample / 3;
+                        root.draw(&PathElement::new(vec![(x, y), (x + third, y)], line))
+                            .de()?;
+                        root.draw(&PathElement::new(
+                            vec![(x + 2 * third, y), (x + sample, y)],
+                            line,
+                        ))
+                        .de()?;
+                    }
+                    LineStyle::Markers => {
+                        root.draw(&Circle::new((x + sample / 2, y), radius, color.filled()))
+                            .de()?;
+                    }
+                }
+                root.draw_text(s.label, &label_style, (x + sample + pad, y))
+                    .de()?;
             }
-            let box_w = f64::from(label_w + sample + 3 * m.tick_len + 10);
-            let box_h = f64::from(rows) * m.tick * 1.4 + 10.0;
-            let corner = legend_corner(
-                plot.series,
-                (x0, x1, y0, y1),
-                (box_w / f64::from(pw), box_h / f64::from(ph)),
-            );
-            chart
-                .configure_series_labels()
-                .position(corner)
-                .margin(m.tick_len.max(0) as u32 * 2)
-                .legend_area_size(sample + m.tick_len)
-                .label_font(tick_style.clone())
-                .background_style(WHITE.mix(0.85))
-                .border_style(BLACK.mix(0.6).stroke_width(1))
-                .draw()
-                .de()?;
         }
+        let _ = ph;
         Ok(())
     }
 }
 
-/// The corner of the plot whose legend box (given as fractions of the plot size) covers the
-/// fewest data: points, and samples along the lines.
-fn legend_corner(
-    series: &[Series],
-    (x0, x1, y0, y1): (f64, f64, f64, f64),
+/// Where the legend of a line plot goes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum LegendPlace {
+    /// Inside the plot: 0 upper right, 1 upper left, 2 lower right, 3 lower left (the
+    /// corners), then 4 middle right, 5 middle left, 6 upper centre, 7 lower centre.
+    Corner(usize),
+    /// Right of the plot area, outside it.
+    Outside,
+}
+
+/// The first place in the plot (the corners upper right, upper left, lower right, lower
+/// left, then the middles of the right and left sides and of the top and bottom) whose
+/// legend box (its size `(fw, fh)` given as fractions of the plot, margins included) holds
+/// no data, neither points nor samples along the lines; [`LegendPlace::Outside`] when every
+/// place does. `series` are the styles and points in unit plot coordinates (0..1, y up).
+pub(crate) fn legend_place(
+    series: &[(LineStyle, Vec<(f64, f64)>)],
     (fw, fh): (f64, f64),
-) -> SeriesLabelPosition {
-    let (fw, fh) = (fw.min(1.0) + 0.03, fh.min(1.0) + 0.03);
+) -> LegendPlace {
+    if fw > 0.6 || fh > 0.9 {
+        return LegendPlace::Outside;
+    }
     // Corners as (u range, v range) in unit plot coordinates, v upwards.
+    let (mu0, mu1) = (0.5 - fw / 2.0, 0.5 + fw / 2.0);
+    let (mv0, mv1) = (0.5 - fh / 2.0, 0.5 + fh / 2.0);
     let corners = [
-        (
-            SeriesLabelPosition::UpperRight,
-            1.0 - fw,
-            1.0,
-            1.0 - fh,
-            1.0,
-        ),
-        (SeriesLabelPosition::UpperLeft, 0.0, fw, 1.0 - fh, 1.0),
-        (SeriesLabelPosition::LowerRight, 1.0 - fw, 1.0, 0.0, fh),
-        (SeriesLabelPosition::LowerLeft, 0.0, fw, 0.0, fh),
+        (1.0 - fw, 1.0, 1.0 - fh, 1.0),
+        (0.0, fw, 1.0 - fh, 1.0),
+        (1.0 - fw, 1.0, 0.0, fh),
+        (0.0, fw, 0.0, fh),
+        (1.0 - fw, 1.0, mv0, mv1),
+        (0.0, fw, mv0, mv1),
+        (mu0, mu1, 1.0 - fh, 1.0),
+        (mu0, mu1, 0.0, fh),
     ];
-    let mut counts = [0usize; 4];
+    let mut counts = [0usize; 8];
     let mut add = |u: f64, v: f64| {
         for (k, c) in corners.iter().enumerate() {
-            if (c.1..=c.2).contains(&u) && (c.3..=c.4).contains(&v) {
+            if (c.0..=c.1).contains(&u) && (c.2..=c.3).contains(&v) {
                 counts[k] += 1;
             }
         }
     };
-    let unit = |(x, y): (f64, f64)| ((x - x0) / (x1 - x0), (y - y0) / (y1 - y0));
-    for s in series {
-        let pts: Vec<(f64, f64)> = s.points.iter().map(|&p| unit(p)).collect();
-        for &(u, v) in &pts {
+    for (style, pts) in series {
+        for &(u, v) in pts {
             add(u, v);
         }
-        if s.style != LineStyle::Markers {
+        if *style != LineStyle::Markers {
             for pair in pts.windows(2) {
                 let (a, b) = (pair[0], pair[1]);
                 let len = ((b.0 - a.0).powi(2) + (b.1 - a.1).powi(2)).sqrt();
-                let n = ((len / 0.02).ceil() as usize).min(50);
+                let n = ((len / 0.005).ceil() as usize).clamp(1, 400);
                 for k in 1..n {
                     let t = k as f64 / n as f64;
                     add(a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1));
@@ -240,6 +348,54 @@ fn legend_corner(
             }
         }
     }
-    let best = (0..4).min_by_key(|&k| counts[k]).unwrap_or(0);
-    corners[best].0.clone()
+    (0..8)
+        .find(|&k| counts[k] == 0)
+        .map_or(LegendPlace::Outside, LegendPlace::Corner)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn legend_goes_to_a_corner_without_data_or_outside() {
+        // A rising line from lower left to upper right: the upper left corner is free.
+        let rising = vec![(LineStyle::Solid, vec![(0.04, 0.04), (0.96, 0.96)])];
+        assert_eq!(legend_place(&rising, (0.3, 0.2)), LegendPlace::Corner(1));
+        // A falling line: the upper right corner is free.
+        let falling = vec![(LineStyle::Solid, vec![(0.04, 0.96), (0.96, 0.04)])];
+        assert_eq!(legend_place(&falling, (0.3, 0.2)), LegendPlace::Corner(0));
+        // A marker in each corner and in each middle: outside.
+        let corners = vec![(
+            LineStyle::Markers,
+            vec![
+                (0.05, 0.05),
+                (0.95, 0.05),
+                (0.05, 0.95),
+                (0.95, 0.95),
+                (0.95, 0.5),
+                (0.05, 0.5),
+                (0.5, 0.95),
+                (0.5, 0.05),
+            ],
+        )];
+        assert_eq!(legend_place(&corners, (0.2, 0.2)), LegendPlace::Outside);
+        // A line that only passes through a corner (no point in it) still blocks it.
+        let through = vec![
+            (LineStyle::Dashed, vec![(0.0, 0.5), (1.0, 1.0)]),
+            (LineStyle::Solid, vec![(0.0, 0.5), (1.0, 0.0)]),
+            (LineStyle::Solid, vec![(0.0, 0.6), (0.5, 0.99)]),
+            (LineStyle::Solid, vec![(0.0, 0.4), (0.5, 0.01)]),
+            (LineStyle::Solid, vec![(0.0, 0.5), (1.0, 0.5)]),
+        ];
+        assert_eq!(legend_place(&through, (0.3, 0.3)), LegendPlace::Outside);
+        // Data in all four corners but none in the middle of the right side: there.
+        let band = vec![
+            (LineStyle::Solid, vec![(0.0, 0.95), (1.0, 0.95)]),
+            (LineStyle::Solid, vec![(0.0, 0.05), (1.0, 0.05)]),
+        ];
+        assert_eq!(legend_place(&band, (0.3, 0.3)), LegendPlace::Corner(4));
+        // A legend larger than the plot's free space goes outside.
+        assert_eq!(legend_place(&rising, (0.7, 0.2)), LegendPlace::Outside);
+    }
 }

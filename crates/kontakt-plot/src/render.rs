@@ -27,6 +27,22 @@ fn ensure_font() -> Result<(), PlotError> {
     }
 }
 
+/// The characters of `s` that the bundled font has no glyph for (drawn as blanks), in
+/// order of first appearance. Labels such as `"μ = |Fₜ| / Q"` can be checked with it.
+pub fn missing_glyphs(s: &str) -> Vec<char> {
+    use ab_glyph::{Font, FontRef};
+    let Ok(font) = FontRef::try_from_slice(FONT) else {
+        return s.chars().collect();
+    };
+    let mut missing = Vec::new();
+    for c in s.chars() {
+        if !c.is_whitespace() && font.glyph_id(c).0 == 0 && !missing.contains(&c) {
+            missing.push(c);
+        }
+    }
+    missing
+}
+
 /// The drawing target handed to a figure: the root area and whether it is a raster image.
 pub(crate) struct Target<DB: DrawingBackend> {
     pub root: DrawingArea<DB, Shift>,

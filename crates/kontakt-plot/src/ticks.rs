@@ -49,16 +49,22 @@ impl ValueFormatter<f64> for TickAxis {
 
 /// Tick values inside a range and how to label them: with `decimals` decimals, or, for very
 /// large or small magnitudes, as `m e<exponent>` with `decimals` decimals in the mantissa.
+/// On a logarithmic axis (`log`) the values are log10 of the data and are labelled with the
+/// data value (see [`format_log`]).
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct Ticks {
     pub values: Vec<f64>,
     pub decimals: usize,
     pub exponent: Option<i32>,
+    pub log: bool,
 }
 
 impl Ticks {
     /// Label of a value with this tick set's precision (no "-0").
     pub fn format(&self, v: f64) -> String {
+        if self.log {
+            return format_log(v);
+        }
         match self.exponent {
             None => format_fixed(v, self.decimals),
             Some(_) if v == 0.0 => "0".to_string(),
@@ -92,6 +98,7 @@ pub(crate) fn nice_ticks(lo: f64, hi: f64, max_n: usize) -> Ticks {
             values: vec![v],
             decimals: 2,
             exponent: None,
+            log: false,
         };
     }
     let raw = span / (max_n - 1) as f64;
@@ -117,6 +124,7 @@ pub(crate) fn nice_ticks(lo: f64, hi: f64, max_n: usize) -> Ticks {
             values,
             decimals: decimals_of(step),
             exponent: None,
+            log: false,
         }
     } else {
         let e = mag.log10().floor() as i32;
@@ -124,6 +132,7 @@ pub(crate) fn nice_ticks(lo: f64, hi: f64, max_n: usize) -> Ticks {
             values,
             decimals: decimals_of(step / 10f64.powi(e)),
             exponent: Some(e),
+            log: false,
         }
     }
 }
@@ -152,6 +161,137 @@ pub(crate) fn ticks_fitting(
         }
     }
     best
+}
+
+/// Superscript form of an integer (for exponents: `-3` → `⁻³`).
+fn superscript(k: i32) -> String {
+    k.to_string()
+        .chars()
+        .map(|c| match c {
+            '-' => '⁻',
+            '0' => '⁰',
+            '1' => '¹',
+            '2' => '²',
+            '3' => '³',
+            '4' => '⁴',
+            '5' => '⁵',
+            '6' => '⁶',
+            '7' => '⁷',
+            '8' => '⁸',
+            _ => '⁹',
+        })
+        .collect()
+}
+
+/// Label of the data value `10^v` at a tick of a logarithmic axis: plain numbers from 0.001
+/// to 100000 (`0.1`, `1`, `20`, `5000`), `10ᵏ` or `m·10ᵏ` beyond.
+pub(crate) fn format_log(v: f64) -> String {
+    let e = (v + 1e-9).floor();
+    let mantissa = 10f64.powf(v - e);
+    let m = mantissa.round();
+    let (m, e) = if m >= 10.0 { (1.0, e + 1.0) } else { (m, e) };
+    let e = e as i32;
+    if (-3..=5).contains(&e) {
+        let value = m * 10f64.powi(e);
+        format_fixed(value, (-e).max(0) as usize)
+    } else if m == 1.0 {
+        format!("10{}", superscript(e))
+    } else {
+        format!("{m:.0}·10{}", superscript(e))
+    }
+}
+
+/// Ticks of a logarithmic axis over the data range `[10^lo, 10^hi]` (`lo`, `hi` are log10 of
+/// the data), as log10 values: the decades (every decade, or every 2nd, 5th, ... if they
+/// would be closer than `min_spacing_px` on an axis of `length_px` pixels), with 2 and 5
+/// times each decade added when fewer than three decades are in range, and 1 to 9 times
+/// each decade when the range is narrower than that still.
+pub(crate) fn log_ticks(lo: f64, hi: f64, length_px: f64, min_spacing_px: f64) -> Ticks {
+    let make = |values: Vec<f64>| Ticks {
+        values,
+        decimals: 0,
+        exponent: None,
+        log: true,
+    };
+    if !(hi > lo) || !lo.is_finite() || !hi.is_finite() {
+        return make(vec![if lo.is_finite() { lo } else { 0.0 }]);
+    }
+    let px_per_decade = length_px / (hi - lo);
+    let (d0, d1) = ((lo - 1e-9).ceil() as i64, (hi + 1e-9).floor() as i64);
+    let in_range = |v: f64| v >= lo - 1e-9 && v <= hi + 1e-9;
+    let with = |mults: &[f64]| -> Vec<f64> {
+        let mut values = Vec::new();
+        for d in (lo.floor() as i64)..=(hi.ceil() as i64) {
+            for &m in mults {
+                let v = d as f64 + m.log10();
+                if in_range(v) {
+                    values.push(v);
+                }
+            }
+        }
+        values
+    };
+    let decades = d1 - d0 + 1;
+    if decades >= 3 {
+        // Every k-th decade, k from 1, 2, 5, 10, ... so that labels do not collide.
+        let step = [1i64, 2, 5, 10, 20, 50, 100]
+            .into_iter()
+            .find(|&k| k as f64 * px_per_decade >= min_spacing_px)
+            .unwrap_or(100);
+        let first = d0.div_euclid(step) * step;
+        let values = (0..)
+            .map(|n| first + n * step)
+            .take_while(|&d| d <= d1)
+            .filter(|&d| d >= d0)
+            .map(|d| d as f64)
+            .collect();
+        return make(values);
+    }
+    for mults in [
+        &[1.0, 2.0, 5.0][..],
+        &[1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0, 9.0],
+    ] {
+        let values = with(mults);
+        let spaced = values
+            .windows(2)
+            .all(|w| (w[1] - w[0]) * px_per_decade >= min_spacing_px);
+        if values.len() >= 3 && spaced {
+            return make(values);
+        }
+        if values.len() >= 3 {
+            // Dense enough already; thin to what fits (decades first).
+            return make(with(&mults[..1]).into_iter().chain(values).fold(
+                Vec::new(),
+                |mut acc: Vec<f64>, v| {
+                    if acc
+                        .iter()
+                        .all(|&a| (a - v).abs() * px_per_decade >= min_spacing_px)
+                    {
+                        acc.push(v);
+                    }
+                    acc
+                },
+            ))
+            .sorted();
+        }
+    }
+    // Less than a factor of about 2.5: linear ticks of the data, as log10.
+    let t = nice_ticks(10f64.powf(lo), 10f64.powf(hi), 4);
+    make(
+        t.values
+            .into_iter()
+            .filter(|v| *v > 0.0)
+            .map(f64::log10)
+            .collect(),
+    )
+}
+
+impl Ticks {
+    /// The same ticks in increasing order.
+    fn sorted(mut self) -> Self {
+        self.values.sort_by(f64::total_cmp);
+        self
+    }
 }
 
 /// Fewest decimals (at most 15) that show multiples of `step` exactly.
@@ -212,6 +352,36 @@ mod tests {
             "{:?}",
             t.labels()
         );
+    }
+
+    #[test]
+    fn log_axis_ticks_are_decades_labelled_as_numbers() {
+        // 50 to 6000 r/min: two decades in range, so 2 and 5 times each are added.
+        let (lo, hi) = (50f64.log10(), 6000f64.log10());
+        let t = log_ticks(lo, hi, 600.0, 40.0);
+        assert_eq!(
+            t.labels(),
+            vec!["50", "100", "200", "500", "1000", "2000", "5000"]
+        );
+        // Many decades: decades only, labelled 10ᵏ outside 0.001..100000.
+        let t = log_ticks(-9.0, 9.0, 800.0, 30.0);
+        assert_eq!(t.values.len(), 19);
+        assert_eq!(t.labels()[0], "10⁻⁹");
+        assert_eq!(t.labels()[8], "0.1");
+        assert_eq!(t.labels()[9], "1");
+        assert_eq!(t.labels()[14], "100000");
+        assert_eq!(t.labels()[18], "10⁹");
+        // The same on a short axis: every 2nd or 5th decade.
+        let t = log_ticks(-9.0, 9.0, 200.0, 30.0);
+        assert!(t.values.len() < 10, "{:?}", t.labels());
+        assert!(t.values.iter().all(|v| v.fract() == 0.0));
+        // One decade: 1, 2, 5 times it; narrower: 1..9 times.
+        let t = log_ticks(0.0, 1.0, 800.0, 30.0);
+        assert_eq!(t.labels(), vec!["1", "2", "5", "10"]);
+        let t = log_ticks(2f64.log10(), 4.5f64.log10(), 800.0, 30.0);
+        assert_eq!(t.labels(), vec!["2", "3", "4"]);
+        assert_eq!(format_log(-1.0), "0.1");
+        assert_eq!(format_log(7.0 + 5f64.log10()), "5·10⁷");
     }
 
     #[test]

@@ -58,6 +58,8 @@ fn map<'a>(values: &'a [f64], overlays: &'a [Overlay<'a>]) -> FieldMap<'a> {
         colorbar_label: "pressure [MPa]",
         outline: true,
         overlays,
+        ellipse: None,
+        max_marker: None,
     }
 }
 
@@ -471,6 +473,7 @@ fn line_plot_png_and_svg() {
         x_label: "x [mm]",
         y_label: "p [MPa]",
         series: &series,
+        x_log: false,
     };
     let size = (900, 600);
     let png = dir.join("line.PNG");
@@ -518,6 +521,7 @@ fn line_plot_png_and_svg() {
         x_label: "",
         y_label: "",
         series: &series,
+        x_log: false,
     };
     line_plot(&dir.join("small.png"), &plot, (200, 150)).unwrap();
     line_plot(&dir.join("small.svg"), &plot, (200, 150)).unwrap();
@@ -703,6 +707,7 @@ fn line_plot_validation() {
                 x_label: "x",
                 y_label: "y",
                 series,
+                x_log: false,
             },
             (800, 600),
         )
@@ -761,6 +766,7 @@ fn line_plot_validation() {
                 x_label: "x",
                 y_label: "y",
                 series: &[ok],
+                x_log: false,
             },
             (100, 100),
         ),
@@ -774,6 +780,7 @@ fn line_plot_validation() {
             x_label: "x",
             y_label: "y",
             series: &[ok],
+            x_log: false,
         },
         (800, 600),
     )
@@ -819,6 +826,8 @@ fn odd_shapes_and_ranges_do_not_panic() {
                         values: &v,
                         color: (1, 2, 3),
                     }],
+                    ellipse: None,
+                    max_marker: Some("max"),
                 };
                 let ext = if k % 2 == 0 { "png" } else { "svg" };
                 field_map(&dir.join(format!("f{k}.{ext}")), &m, size).unwrap();
@@ -844,6 +853,7 @@ fn odd_shapes_and_ranges_do_not_panic() {
             x_label: "x",
             y_label: "y",
             series: &series,
+            x_log: false,
         };
         for size in [(200, 150), (3000, 150)] {
             line_plot(&dir.join(format!("l{k}-{}.png", size.0)), &plot, size).unwrap();
@@ -851,4 +861,60 @@ fn odd_shapes_and_ranges_do_not_panic() {
         }
     }
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// The symbols the CLI's labels use are in the bundled font (no blank boxes).
+#[test]
+fn the_bundled_font_has_the_label_symbols() {
+    let labels = "Fₜ / (μ Fₙ) [-]; μ = |Fₜ| / Q_f; Fₐ = 15000 N; τ · v_s [mW/mm²]; \
+                  10⁻³ 5·10⁷ ×4 ° ≈ −";
+    assert_eq!(kontakt_plot::missing_glyphs(labels), Vec::<char>::new());
+    assert_eq!(kontakt_plot::missing_glyphs("a漢b"), vec!['漢']);
+}
+
+/// A logarithmic x axis draws, and rejects x <= 0 before writing anything.
+#[test]
+fn log_x_axis() {
+    let dir = temp_dir("log_x_axis");
+    let pts: Vec<(f64, f64)> = [50.0, 130.0, 339.0, 884.0, 2303.0, 6000.0]
+        .iter()
+        .map(|&n: &f64| (n, 1.0 / n.ln()))
+        .collect();
+    let series = [Series {
+        label: "curve",
+        points: &pts,
+        color: (31, 119, 180),
+        style: LineStyle::Solid,
+    }];
+    let plot = LinePlot {
+        title: "log axis",
+        x_label: "speed [r/min] (log scale)",
+        y_label: "y",
+        series: &series,
+        x_log: true,
+    };
+    let out = dir.join("log.svg");
+    line_plot(&out, &plot, (800, 600)).unwrap();
+    let svg = std::fs::read_to_string(&out).unwrap();
+    let texts: Vec<&str> = svg.lines().map(str::trim).collect();
+    for label in ["50", "100", "1000", "5000"] {
+        assert!(texts.contains(&label), "{label} missing");
+    }
+    let bad = [(0.0, 1.0), (10.0, 2.0)];
+    let series = [Series {
+        points: &bad,
+        ..series[0]
+    }];
+    let out = dir.join("bad.svg");
+    let e = line_plot(
+        &out,
+        &LinePlot {
+            series: &series,
+            ..plot
+        },
+        (800, 600),
+    )
+    .unwrap_err();
+    assert!(e.to_string().contains("logarithmic"), "{e}");
+    assert!(!out.exists());
 }

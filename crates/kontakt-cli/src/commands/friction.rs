@@ -189,7 +189,7 @@ fn write_curves(path: &Path, r: &FrictionReport, curve: Curve) -> Result<()> {
                         Curve::Torque => row.bearing_torque_nmm,
                         Curve::Coefficient => row.coefficient,
                     };
-                    (row.speed_rpm.log10(), y)
+                    (row.speed_rpm, y)
                 })
                 .collect()
         })
@@ -206,10 +206,10 @@ fn write_curves(path: &Path, r: &FrictionReport, curve: Curve) -> Result<()> {
         .collect();
     let (what, y_label) = match curve {
         Curve::Torque => ("rib friction torque", "rib torque of the bearing [N·mm]"),
-        Curve::Coefficient => ("friction coefficient", "mu = |F_t| / Q_f [-]"),
+        Curve::Coefficient => ("friction coefficient", "μ = |Fₜ| / Q_f [-]"),
     };
     let title = format!(
-        "{}: {what}, F_a = {} N",
+        "{}: {what}, Fₐ = {} N",
         r.name.as_deref().unwrap_or(&r.pairing),
         r.axial_load_n
     );
@@ -217,9 +217,10 @@ fn write_curves(path: &Path, r: &FrictionReport, curve: Curve) -> Result<()> {
         path,
         &LinePlot {
             title: &title,
-            x_label: "log10 (inner ring speed [r/min])",
+            x_label: "inner ring speed [r/min] (log scale)",
             y_label,
             series: &series,
+            x_log: true,
         },
         (900, 600),
     )
@@ -231,6 +232,7 @@ fn field_map<'a>(
     values: &'a [f64],
     title: &'a str,
     colorbar_label: &'a str,
+    (axes, max_marker): (&'a (String, String), &'a str),
 ) -> FieldMap<'a> {
     let g = &m.field.grid;
     FieldMap {
@@ -242,12 +244,20 @@ fn field_map<'a>(
         dy: g.dy(),
         values,
         title,
-        x_label: "x [mm]",
-        y_label: "y [mm]",
+        x_label: &axes.0,
+        y_label: &axes.1,
         colorbar_label,
         outline: true,
         overlays: &[],
+        ellipse: None,
+        max_marker: Some(max_marker),
     }
+}
+
+/// The map axes' names by their direction in the bearing.
+fn axis_names(m: &FrictionMap) -> (String, String) {
+    use crate::commands::pimp::axis_name;
+    (axis_name(m.axes[0]), axis_name(m.axes[1]))
 }
 
 /// The friction-power density τ · v_s per cell over the contact.
@@ -261,9 +271,12 @@ fn write_density_map(path: &Path, m: &FrictionMap, r: &FrictionReport) -> Result
         m.result.power
     );
     let values: Vec<f64> = m.power_density.iter().map(|d| d * 1e3).collect();
+    let max = values.iter().copied().fold(0.0f64, f64::max);
+    let max = format!("maximum {max:.0} mW/mm²");
+    let axes = axis_names(m);
     kontakt_plot::field_map(
         path,
-        &field_map(m, &values, &title, "tau · v_s [mW/mm²]"),
+        &field_map(m, &values, &title, "τ · v_s [mW/mm²]", (&axes, &max)),
         (900, 640),
     )
     .with_context(|| format!("drawing {}", path.display()))
@@ -279,9 +292,17 @@ fn write_sliding_map(path: &Path, m: &FrictionMap, r: &FrictionReport) -> Result
         m.speed_rpm
     );
     let (arrows, label) = sliding_arrows(m);
+    let max = crate::commands::pimp::max_label(&m.field.pressure);
+    let axes = axis_names(m);
     kontakt_plot::field_map_with_arrows(
         path,
-        &field_map(m, &m.field.pressure, &title, "pressure [MPa]"),
+        &field_map(
+            m,
+            &m.field.pressure,
+            &title,
+            "pressure [MPa]",
+            (&axes, &max),
+        ),
         &arrows,
         &label,
         (900, 640),
@@ -349,7 +370,11 @@ pub struct DemoSummary {
 /// Wirsching et al. (2020) Table 1, with the three pressure models; writes
 /// `friction.csv`, the torque and Stribeck plots of PimP, the model-ratio plot and the
 /// sliding-velocity and power-density maps of one curved zone, and returns the summary.
-pub fn demo_study(out_dir: &Path, md: &mut String) -> Result<Vec<DemoSummary>> {
+pub fn demo_study(
+    out_dir: &Path,
+    md: &mut String,
+    written: &mut crate::commands::pimp::Written,
+) -> Result<Vec<DemoSummary>> {
     use kontakt_case::friction_case::{FrictionCase, run_friction_case};
     let base: FrictionCase =
         match Case::from_toml_str(include_str!("../../../../examples/rib_friction.toml"))? {
@@ -391,7 +416,7 @@ pub fn demo_study(out_dir: &Path, md: &mut String) -> Result<Vec<DemoSummary>> {
             r.rows
                 .iter()
                 .filter(|x| x.model == m)
-                .map(|x| (x.speed_rpm.log10(), f(x)))
+                .map(|x| (x.speed_rpm, f(x)))
                 .collect::<Vec<_>>()
         };
         torque_curves.push((name.to_string(), of("pimp", &|x| x.bearing_torque_nmm)));
@@ -401,7 +426,7 @@ pub fn demo_study(out_dir: &Path, md: &mut String) -> Result<Vec<DemoSummary>> {
             r.model_difference
                 .iter()
                 .filter(|d| d.model == "pimp")
-                .map(|d| (d.speed_rpm.log10(), d.torque_vs_hertz))
+                .map(|d| (d.speed_rpm, d.torque_vs_hertz))
                 .collect(),
         ));
         let speeds: Vec<f64> = r
@@ -425,30 +450,37 @@ pub fn demo_study(out_dir: &Path, md: &mut String) -> Result<Vec<DemoSummary>> {
         if name == map_pairing {
             write_sliding_map(&out_dir.join("friction_sliding.png"), &outcome.map, r)?;
             write_density_map(&out_dir.join("friction_density.png"), &outcome.map, r)?;
+            written.friction_maps.push("friction_sliding.png".into());
+            written.friction_maps.push("friction_density.png".into());
         }
         last = Some(outcome.report);
     }
     w.flush()?;
-    let plot = |file: &str, title: &str, y_label: &str, curves: &[(String, Vec<(f64, f64)>)]| {
-        crate::commands::pimp::pairing_plot(
-            &out_dir.join(file),
-            title,
-            "log10 (inner ring speed [r/min])",
-            y_label,
-            curves,
-        )
-    };
+    written.tables.push("friction.csv".into());
+    let mut plot =
+        |file: &str, title: &str, y_label: &str, curves: &[(String, Vec<(f64, f64)>)]| {
+            crate::commands::pimp::pairing_plot(
+                &out_dir.join(file),
+                title,
+                "inner ring speed [r/min] (log scale)",
+                y_label,
+                curves,
+                true,
+            )?;
+            written.plots.push(file.to_string());
+            Ok::<(), anyhow::Error>(())
+        };
     let fa = base.load.axial_n;
     plot(
         "friction_torque.png",
-        &format!("Rib friction torque of the bearing, PimP, F_a = {fa} N"),
+        &format!("Rib friction torque of the bearing, PimP, Fₐ = {fa} N"),
         "rib torque [N·mm]",
         &torque_curves,
     )?;
     plot(
         "friction_coefficient.png",
-        &format!("Rib friction coefficient (Stribeck), PimP, F_a = {fa} N"),
-        "mu = |F_t| / Q_f [-]",
+        &format!("Rib friction coefficient (Stribeck), PimP, Fₐ = {fa} N"),
+        "μ = |Fₜ| / Q_f [-]",
         &mu_curves,
     )?;
     plot(

@@ -71,6 +71,7 @@ pub fn run(args: &MbsArgs, out: &mut impl Write) -> Result<()> {
         "rib load [N]",
         "approach [mm]",
         &curves("load", &|s| (s.force_n, s.approach_mm)),
+        false,
     )?;
     for (phase, what) in [("tilt", "tilt"), ("skew", "skew")] {
         plot(
@@ -87,6 +88,7 @@ pub fn run(args: &MbsArgs, out: &mut impl Write) -> Result<()> {
                     s.migration_x_mm.hypot(s.migration_y_mm) * s.angle_deg.signum(),
                 )
             }),
+            false,
         )?;
         plot(
             &dir.join(format!("mbs_{phase}_pressure.png")),
@@ -97,6 +99,7 @@ pub fn run(args: &MbsArgs, out: &mut impl Write) -> Result<()> {
             &format!("{what} angle [deg]"),
             "max pressure [MPa]",
             &curves(phase, &|s| (s.angle_deg, s.max_pressure_mpa)),
+            false,
         )?;
     }
     if args.json {

@@ -78,7 +78,15 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                             name.as_deref().unwrap_or(&outcome.report.geometry),
                             outcome.report.force_n,
                         );
-                        pimp::write_map(path, &s.grid, &s.pressure, &title, &[])?;
+                        let hertz = outcome.report.hertz.as_ref().map(|h| h.semi_axes_mm);
+                        pimp::write_map(
+                            path,
+                            &s.grid,
+                            &s.pressure,
+                            &title,
+                            &[],
+                            &pimp::MapNotes::principal(hertz),
+                        )?;
                     }
                     pimp::print_report(out, &outcome.report, args.json)
                 }
@@ -101,7 +109,15 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                             name.as_deref().unwrap_or(&outcome.report.geometry),
                             outcome.report.force_n,
                         );
-                        pimp::write_map(path, &s.grid, &s.pressure, &title, &[])?;
+                        let hertz = outcome.report.hertz.as_ref().map(|h| h.semi_axes_mm);
+                        pimp::write_map(
+                            path,
+                            &s.grid,
+                            &s.pressure,
+                            &title,
+                            &[],
+                            &pimp::MapNotes::principal(hertz),
+                        )?;
                     }
                     pimp::print_report(out, &outcome.report, args.json)
                 }

@@ -200,7 +200,7 @@ pub fn write_plot(path: &Path, r: &TractionReport) -> Result<()> {
         })
         .collect();
     let title = format!(
-        "{}: F_N = {} N, mu = {}",
+        "{}: Fₙ = {} N, μ = {}",
         r.name.as_deref().unwrap_or("traction curves"),
         r.force_n,
         r.mu
@@ -210,8 +210,9 @@ pub fn write_plot(path: &Path, r: &TractionReport) -> Result<()> {
         &LinePlot {
             title: &title,
             x_label: "creepage = slide-to-roll ratio [-]",
-            y_label: "F_T / (mu F_N) [-]",
+            y_label: "Fₜ / (μ Fₙ) [-]",
             series: &series,
+            x_log: false,
         },
         (900, 600),
     )

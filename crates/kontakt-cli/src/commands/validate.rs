@@ -2,7 +2,7 @@
 //! pairings of Wirsching et al. (2020) (its Figures 7-10 with the half-space solver in the place of FEM).
 
 use crate::commands::InputError;
-use crate::commands::pimp::write_map;
+use crate::commands::pimp::{MapNotes, write_map};
 use anyhow::{Context, Result};
 use kontakt::bearing::validation::{PairingStudy, ValidationRow, validate_pairing};
 use kontakt::bearing::{STUDY_FORCES, TABLE1};
@@ -55,6 +55,8 @@ pub fn validate(out_dir: &Path, cells: usize, out: &mut impl Write, json: bool) 
         );
     }
     write_csv(&out_dir.join("results.csv"), &studies)?;
+    // Counted as written, for the summary line.
+    let (mut plots, mut maps) = (0usize, 0usize);
     for (prefix, title) in TYPES {
         let of_type: Vec<&PairingStudy> = studies
             .iter()
@@ -74,6 +76,7 @@ pub fn validate(out_dir: &Path, cells: usize, out: &mut impl Write, json: bool) 
                 &of_type,
                 k,
             )?;
+            plots += 1;
         }
     }
     for s in &studies {
@@ -90,6 +93,11 @@ pub fn validate(out_dir: &Path, cells: usize, out: &mut impl Write, json: bool) 
                 color: (255, 150, 0),
             },
         ];
+        let hertz = s
+            .rows
+            .iter()
+            .find(|r| r.force_n == o.force_n)
+            .map(|r| r.hertz.semi_axes_mm);
         write_map(
             &out_dir.join(format!("shape_{}.png", s.pairing)),
             &o.grid,
@@ -99,7 +107,9 @@ pub fn validate(out_dir: &Path, cells: usize, out: &mut impl Write, json: bool) 
                 s.pairing, o.force_n
             ),
             &overlays,
+            &MapNotes::in_bearing(o.axes, hertz),
         )?;
+        maps += 1;
     }
     write_markdown(&out_dir.join("report.md"), &studies)?;
     if json {
@@ -107,7 +117,13 @@ pub fn validate(out_dir: &Path, cells: usize, out: &mut impl Write, json: bool) 
         writeln!(out)?;
     } else {
         print_summary(out, &studies)?;
-        writeln!(out, "report written to {}", out_dir.display())?;
+        writeln!(
+            out,
+            "report written to {}: report.md, results.csv and {} pictures ({plots} deviation \
+             plots, {maps} contact-shape maps)",
+            out_dir.display(),
+            plots + maps
+        )?;
     }
     Ok(())
 }
@@ -176,6 +192,7 @@ fn deviation_plot(path: &Path, title: &str, studies: &[&PairingStudy], k: usize)
             x_label: "normal force [N]",
             y_label: "deviation from the half-space solver [%]",
             series: &series,
+            x_log: false,
         },
         (1000, 640),
     )
@@ -242,7 +259,7 @@ fn write_markdown(path: &Path, studies: &[PairingStudy]) -> Result<()> {
                 ));
             }
             md.push_str(&format!(
-                "\nContact shapes at {:.0} N (colour: half-space pressure; black: its outline; red: PimP published; orange: PimP corrected):\n\n![shape](shape_{}.png)\n\n",
+                "\nContact shapes at {:.0} N (colour: half-space pressure; black: its outline; red dashed: PimP published; orange dashed: PimP corrected; magenta dotted: the Hertz ellipse at the contact point; ringed dot: the half-space maximum; axes named by their direction in the bearing):\n\n![shape](shape_{}.png)\n\n",
                 s.overlay.force_n, s.pairing
             ));
         }

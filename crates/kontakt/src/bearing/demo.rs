@@ -66,6 +66,13 @@ pub struct DemoMap {
     pub grid: Grid2,
     /// Pressure on the grid \[MPa\].
     pub pressure: Vec<f64>,
+    /// Semi-axes [a, b] \[mm\] of the Hertz ellipse at the contact point's curvature and
+    /// this force; in the grid's frame `a` lies along `x`, `b` along `y`, centred at the
+    /// origin (the contact point).
+    pub hertz_semi_axes_mm: [f64; 2],
+    /// The grid's `x` and `y` axes as unit vectors in the bearing frame (`X` radial, `Y`
+    /// circumferential at the contact point, `Z` the ring axis).
+    pub axes: [[f64; 3]; 2],
 }
 
 /// The result of [`demo_study`].
@@ -139,6 +146,8 @@ pub fn demo_study(forces: &[f64]) -> Result<DemoStudy> {
                         force_n: f,
                         grid: s.grid,
                         pressure: s.pressure,
+                        hertz_semi_axes_mm: h.semi_axes,
+                        axes: gap.principal_axes(),
                     });
                 }
             }

@@ -94,6 +94,9 @@ pub struct ShapeOverlay {
     pub pimp_published: Vec<f64>,
     /// PimP (corrected) pressure on the same grid \[MPa\].
     pub pimp_corrected: Vec<f64>,
+    /// The grid's `x` and `y` axes as unit vectors in the bearing frame (`X` radial, `Y`
+    /// circumferential at the contact point, `Z` the ring axis).
+    pub axes: [[f64; 3]; 2],
 }
 
 /// The study of one pairing.
@@ -207,6 +210,7 @@ pub fn validate_pairing(
         pimp_published: resample(&p.grid, &p.pressure, &b.grid),
         pimp_corrected: resample(&c.grid, &c.pressure, &b.grid),
         bem: b.pressure,
+        axes: gap.principal_axes(),
     };
     Ok(PairingStudy {
         pairing: pairing.to_string(),
@@ -276,6 +280,7 @@ mod tests {
                 bem: vec![0.0; 4],
                 pimp_published: vec![0.0; 4],
                 pimp_corrected: vec![0.0; 4],
+                axes: [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
             },
         };
         let d = study.deviation_stats();

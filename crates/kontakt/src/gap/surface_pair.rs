@@ -100,6 +100,17 @@ impl SurfacePairGap {
         [self.ex, self.ey, self.contact.normal]
     }
 
+    /// The axes `[x, y]` of the gap's principal frame (the frame of PimP's and the half-space
+    /// solver's grids: `x` along the direction of the smaller relative curvature A, i.e. the
+    /// Hertz ellipse's major axis) as unit vectors in world coordinates.
+    pub fn principal_axes(&self) -> [[f64; 3]; 2] {
+        let (s, c) = self.curvature.orientation.sin_cos();
+        let (ex, ey) = (self.ex.into_inner(), self.ey.into_inner());
+        let gx = ex * c + ey * s;
+        let gy = ey * c - ex * s;
+        [[gx.x, gx.y, gx.z], [gy.x, gy.y, gy.z]]
+    }
+
     /// World point of the contact-plane point `(x, y)` \[mm\].
     pub fn world_point(&self, x: Millimetre, y: Millimetre) -> Point3<f64> {
         self.contact.point + self.ex.into_inner() * x + self.ey.into_inner() * y
