@@ -11,12 +11,15 @@ mod cli;
 mod commands;
 mod output;
 
-use clap::Parser;
+use clap::{CommandFactory, Parser};
 use std::io::Write;
 use std::process::ExitCode;
 
 fn main() -> ExitCode {
-    let args = cli::Cli::parse();
+    let args = match cli::Cli::try_parse() {
+        Ok(args) => args,
+        Err(e) => return usage_error(&e),
+    };
     let mut stdout = std::io::stdout().lock();
     let result =
         commands::run(&args, &mut stdout).and_then(|()| stdout.flush().map_err(Into::into));
@@ -28,7 +31,7 @@ fn main() -> ExitCode {
                 return ExitCode::SUCCESS;
             }
             let code = exit_code(&err);
-            eprintln!("error: {}", one_line(&format!("{err:#}")));
+            eprintln!("error: {}", one_line(&chain_message(&err)));
             ExitCode::from(code)
         }
     }
@@ -49,7 +52,26 @@ fn broken_pipe(err: &anyhow::Error) -> bool {
     })
 }
 
-/// 2 for bad input, 1 for everything else.
+/// The error and its causes joined by ": ", skipping a cause that an outer message already
+/// quotes (thiserror messages that print their source, e.g. "cannot write plot file X: No
+/// such file or directory", would otherwise repeat it).
+fn chain_message(err: &anyhow::Error) -> String {
+    let mut message = String::new();
+    for cause in err.chain() {
+        let text = cause.to_string();
+        if message.contains(&text) {
+            continue;
+        }
+        if !message.is_empty() {
+            message.push_str(": ");
+        }
+        message.push_str(&text);
+    }
+    message
+}
+
+/// 2 for bad input, 1 for everything else (a solver that did not converge, an output file
+/// that cannot be written).
 fn exit_code(err: &anyhow::Error) -> u8 {
     for cause in err.chain() {
         if let Some(k) = cause.downcast_ref::<kontakt::Error>() {
@@ -64,8 +86,68 @@ fn exit_code(err: &anyhow::Error) -> u8 {
         if cause.downcast_ref::<commands::InputError>().is_some() {
             return 2;
         }
+        if let Some(e) = cause.downcast_ref::<kontakt_plot::PlotError>() {
+            return match e {
+                kontakt_plot::PlotError::Io { .. } | kontakt_plot::PlotError::Drawing(_) => 1,
+                _ => 2,
+            };
+        }
     }
     1
+}
+
+/// clap's own errors (unknown flag, unparsable number, missing argument) in the library's
+/// style: one line, exit status 2, with the flag's help text (its unit and valid range)
+/// for a value that did not parse, and the usage line. Help and version requests print
+/// as clap prints them.
+fn usage_error(e: &clap::Error) -> ExitCode {
+    use clap::error::{ContextKind, ContextValue, ErrorKind};
+    if matches!(
+        e.kind(),
+        ErrorKind::DisplayHelp
+            | ErrorKind::DisplayVersion
+            | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand
+    ) {
+        // Help on stdout (exit 0), or on stderr when a subcommand is missing (exit 2).
+        let _ = e.print();
+        return ExitCode::from(u8::try_from(e.exit_code()).unwrap_or(2));
+    }
+    let text = e.to_string();
+    let mut line = text
+        .lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty() && !l.starts_with("For more information"))
+        .map(|l| l.strip_prefix("error: ").unwrap_or(l))
+        .map(|l| l.replacen("Usage: ", "usage: ", 1))
+        .collect::<Vec<_>>()
+        .join("; ")
+        .replace(":;", ":");
+    if let Some(ContextValue::String(value)) = e.get(ContextKind::InvalidValue)
+        && value.chars().count() > 60
+    {
+        let short: String = value.chars().take(40).collect();
+        line = line.replace(
+            value.as_str(),
+            &format!("{short}… ({} characters)", value.chars().count()),
+        );
+    }
+    if let Some(ContextValue::String(arg)) = e.get(ContextKind::InvalidArg)
+        && let Some(help) = flag_help(arg)
+    {
+        line.push_str(&format!("; expected: {help}"));
+    }
+    eprintln!("error: {}", one_line(&line));
+    ExitCode::from(2)
+}
+
+/// The help text of the flag `arg` (`--force <N>`) of the subcommand on the command line.
+fn flag_help(arg: &str) -> Option<String> {
+    let long = arg.strip_prefix("--")?.split([' ', '=']).next()?;
+    let sub = std::env::args().nth(1)?;
+    let command = cli::Cli::command();
+    let sub = command.find_subcommand(&sub)?;
+    let flag = sub.get_arguments().find(|a| a.get_long() == Some(long))?;
+    Some(one_line(&flag.get_help()?.to_string()))
 }
 
 fn one_line(s: &str) -> String {

@@ -474,3 +474,66 @@ fn hertz_results_outside_the_theory_warn_or_are_refused() {
     ]);
     assert!(e.contains("first_yield_load_n = inf is beyond"), "{e}");
 }
+
+/// One error style (issue 14): clap's own errors are one line with exit status 2 and the
+/// flag's unit and range; an output that cannot be written is exit status 1 whichever flag
+/// named it, with the path once and the operating system's reason once.
+#[test]
+fn usage_errors_are_one_line_and_output_failures_exit_1() {
+    let radii = ["hertz", "--body1-radii", "5,5", "--body2-radii", "inf,inf"];
+    let e = bad(&[&radii[..], &["--force", "abc"]].concat());
+    assert!(
+        e.contains("'abc'") && e.contains("expected: Normal force [N], > 0"),
+        "{e}"
+    );
+    let e = bad(&["hertz", "--bogus"]);
+    assert!(
+        e.contains("'--bogus'") && e.contains("usage: kontakt hertz"),
+        "{e}"
+    );
+    let e = bad(&["solve"]);
+    assert!(e.contains("<CASE.toml>"), "{e}");
+    let long = format!("{}x", "9".repeat(499));
+    let e = bad(&[&radii[..], &["--force", &long]].concat());
+    assert!(e.contains("(500 characters)") && e.len() < 300, "{e}");
+    let ex = examples();
+    let (roller, wavy, traction) = (
+        ex.join("roller_rib_torus_torus.toml"),
+        ex.join("bem_wavy_map.toml"),
+        ex.join("traction_ball_all_models.toml"),
+    );
+    let p = |p: &PathBuf| p.to_str().unwrap().to_string();
+    for args in [
+        vec![
+            "solve".into(),
+            p(&roller),
+            "--map".into(),
+            "/nonexistent/p.png".into(),
+        ],
+        vec![
+            "solve".into(),
+            p(&wavy),
+            "--csv".into(),
+            "/nonexistent/p.csv".into(),
+        ],
+        vec![
+            "traction".into(),
+            p(&traction),
+            "--plot".into(),
+            "/nonexistent/t.png".into(),
+        ],
+        vec![
+            "traction".into(),
+            p(&traction),
+            "--csv".into(),
+            "/nonexistent/t.csv".into(),
+        ],
+        vec!["mbs".into(), "--out".into(), "/proc/kontakt-test".into()],
+    ] {
+        let out = kontakt().args(&args).output().unwrap();
+        assert_eq!(out.status.code(), Some(1), "{args:?}");
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert_eq!(err.lines().count(), 1, "{err}");
+        assert_eq!(err.matches("(os error 2)").count(), 1, "{err}");
+    }
+}

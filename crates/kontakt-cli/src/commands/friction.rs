@@ -4,7 +4,7 @@
 //! velocity and the friction-power density. The physics is `kontakt_case::run_friction_case`.
 
 use crate::cli::FrictionArgs;
-use crate::commands::InputError;
+use crate::commands::{InputError, cannot_write};
 use anyhow::{Context, Result};
 use kontakt_case::friction_case::{FrictionMap, FrictionReport};
 use kontakt_case::{Case, Outcome};
@@ -159,8 +159,7 @@ pub fn print_report(out: &mut impl Write, r: &FrictionReport, json: bool) -> Res
 
 /// Every row, one line per model and speed, with unit-suffixed columns.
 pub fn write_csv(path: &Path, r: &FrictionReport) -> Result<()> {
-    let mut w = csv::Writer::from_path(path)
-        .map_err(|e| InputError(format!("cannot write {}: {e}", path.display())))?;
+    let mut w = csv::Writer::from_path(path).map_err(|e| cannot_write("write", &path, e))?;
     for row in &r.rows {
         w.serialize(row)?;
     }
@@ -386,8 +385,8 @@ pub fn demo_study(
             }
         };
     let csv_path = out_dir.join("friction.csv");
-    let mut w = csv::Writer::from_path(&csv_path)
-        .map_err(|e| InputError(format!("cannot write {}: {e}", csv_path.display())))?;
+    let mut w =
+        csv::Writer::from_path(&csv_path).map_err(|e| cannot_write("write", &csv_path, e))?;
     let mut summary = Vec::new();
     let mut torque_curves: Vec<(String, Vec<(f64, f64)>)> = Vec::new();
     let mut mu_curves: Vec<(String, Vec<(f64, f64)>)> = Vec::new();

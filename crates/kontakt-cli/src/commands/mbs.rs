@@ -4,15 +4,14 @@
 //! and the measured time per evaluation. The computation is the library's; this renders it.
 
 use crate::cli::MbsArgs;
-use crate::commands::InputError;
+use crate::commands::cannot_write;
 use anyhow::Result;
 use kontakt::element::study::{MotionSample, roller_rib_motion};
 use std::io::Write;
 
 /// Run the subcommand.
 pub fn run(args: &MbsArgs, out: &mut impl Write) -> Result<()> {
-    std::fs::create_dir_all(&args.out)
-        .map_err(|e| InputError(format!("cannot create {}: {e}", args.out.display())))?;
+    std::fs::create_dir_all(&args.out).map_err(|e| cannot_write("create", &args.out, e))?;
     let backends: Vec<&str> = args.backends.iter().map(String::as_str).collect();
     let study = roller_rib_motion(
         &args.pairing,
@@ -40,8 +39,8 @@ pub fn run(args: &MbsArgs, out: &mut impl Write) -> Result<()> {
     let backends: Vec<&str> = timing.iter().map(|(name, _)| *name).collect();
     // CSV.
     let csv_path = args.out.join("mbs.csv");
-    let mut w = csv::Writer::from_path(&csv_path)
-        .map_err(|e| InputError(format!("cannot write {}: {e}", csv_path.display())))?;
+    let mut w =
+        csv::Writer::from_path(&csv_path).map_err(|e| cannot_write("write", &csv_path, e))?;
     for s in samples {
         w.serialize(s)?;
     }

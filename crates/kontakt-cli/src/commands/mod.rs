@@ -22,6 +22,16 @@ use std::io::{Read, Write};
 #[error("{0}")]
 pub struct InputError(pub String);
 
+/// An output file or folder that cannot be written: a runtime failure (exit status 1),
+/// whichever flag named it (`--csv`, `--map`, `--plot`, `--out`).
+pub fn cannot_write(
+    what: &str,
+    path: &std::path::Path,
+    e: impl std::fmt::Display,
+) -> anyhow::Error {
+    anyhow::anyhow!("cannot {what} {}: {e}", path.display())
+}
+
 pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
     match &cli.command {
         Command::Hertz(args) => {

@@ -1,7 +1,7 @@
 //! PimP output: the result table, the pressure CSV and the pressure map; and the demo
 //! report of the roller-end/rib study.
 
-use crate::commands::InputError;
+use crate::commands::{InputError, cannot_write};
 use anyhow::{Context, Result};
 use kontakt::bearing::{DemoRow, DemoStudy, STUDY_FORCES, TABLE1, demo_study};
 use kontakt::geometry::Grid2;
@@ -106,8 +106,7 @@ pub fn print_report(out: &mut impl Write, r: &PimpReport, json: bool) -> Result<
 
 /// Write fields as CSV: one row per cell, `x_mm, y_mm` and one column per named field.
 pub fn write_csv(path: &Path, grid: &Grid2, fields: &[(&str, &[f64])]) -> Result<()> {
-    let mut w = csv::Writer::from_path(path)
-        .map_err(|e| InputError(format!("cannot write {}: {e}", path.display())))?;
+    let mut w = csv::Writer::from_path(path).map_err(|e| cannot_write("write", &path, e))?;
     let mut header = vec!["x_mm", "y_mm"];
     header.extend(fields.iter().map(|(name, _)| *name));
     w.write_record(&header)?;
@@ -300,8 +299,7 @@ impl Written {
 /// Run the roller-end/rib study (`kontakt::bearing::demo_study`) and write the report
 /// folder: the computation is the library's, this renders it.
 pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
-    std::fs::create_dir_all(out_dir)
-        .map_err(|e| InputError(format!("cannot create {}: {e}", out_dir.display())))?;
+    std::fs::create_dir_all(out_dir).map_err(|e| cannot_write("create", &out_dir, e))?;
     let DemoStudy { rows, maps: fields } =
         demo_study(&STUDY_FORCES).context("the roller-end/rib demo study")?;
     let mut maps = Vec::with_capacity(fields.len());
@@ -321,8 +319,8 @@ pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
     written.maps.extend(maps.iter().map(|(_, f)| f.clone()));
     // CSV of every row.
     let csv_path = out_dir.join("results.csv");
-    let mut w = csv::Writer::from_path(&csv_path)
-        .map_err(|e| InputError(format!("cannot write {}: {e}", csv_path.display())))?;
+    let mut w =
+        csv::Writer::from_path(&csv_path).map_err(|e| cannot_write("write", &csv_path, e))?;
     for r in &rows {
         w.serialize(r)?;
     }
@@ -423,8 +421,7 @@ pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
          [traction.csv](traction.csv).\n\n![traction curves](traction.png)\n",
     );
     let friction = crate::commands::friction::demo_study(out_dir, &mut md, &mut written)?;
-    std::fs::write(&md_path, md)
-        .map_err(|e| InputError(format!("cannot write {}: {e}", md_path.display())))?;
+    std::fs::write(&md_path, md).map_err(|e| cannot_write("write", &md_path, e))?;
 
     if json {
         serde_json::to_writer_pretty(&mut *out, &rows)?;

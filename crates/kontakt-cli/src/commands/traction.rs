@@ -3,7 +3,7 @@
 //! JSON, CSV and a plot. The physics is `kontakt_case::run_traction_case`.
 
 use crate::cli::TractionArgs;
-use crate::commands::InputError;
+use crate::commands::{InputError, cannot_write};
 use anyhow::{Context, Result};
 use kontakt_case::{TractionCase, TractionReport, run_traction_case};
 use kontakt_plot::{LinePlot, LineStyle, PALETTE, Series};
@@ -111,8 +111,7 @@ pub fn print_report(out: &mut impl Write, r: &TractionReport, json: bool) -> Res
 
 /// Every point: `creepage` and one column `<model>_ft_over_mu_fn` per model.
 pub fn write_csv(path: &Path, r: &TractionReport) -> Result<()> {
-    let mut w = csv::Writer::from_path(path)
-        .map_err(|e| InputError(format!("cannot write {}: {e}", path.display())))?;
+    let mut w = csv::Writer::from_path(path).map_err(|e| cannot_write("write", &path, e))?;
     let mut header = vec!["creepage".to_string()];
     header.extend(
         r.curves

@@ -1,7 +1,7 @@
 //! `kontakt validate`: PimP against the coupled half-space solver for the roller-end/rib
 //! pairings of Wirsching et al. (2020) (its Figures 7-10 with the half-space solver in the place of FEM).
 
-use crate::commands::InputError;
+use crate::commands::cannot_write;
 use crate::commands::pimp::{MapNotes, write_map};
 use anyhow::{Context, Result};
 use kontakt::bearing::validation::{PairingStudy, ValidationRow, validate_pairing};
@@ -38,8 +38,7 @@ struct CsvRow<'a> {
 
 /// Run the study and write the report folder.
 pub fn validate(out_dir: &Path, cells: usize, out: &mut impl Write, json: bool) -> Result<()> {
-    std::fs::create_dir_all(out_dir)
-        .map_err(|e| InputError(format!("cannot create {}: {e}", out_dir.display())))?;
+    std::fs::create_dir_all(out_dir).map_err(|e| cannot_write("create", &out_dir, e))?;
     let options = BemOptions {
         cells: [cells, cells],
         ..BemOptions::default()
@@ -129,8 +128,7 @@ pub fn validate(out_dir: &Path, cells: usize, out: &mut impl Write, json: bool) 
 }
 
 fn write_csv(path: &Path, studies: &[PairingStudy]) -> Result<()> {
-    let mut w = csv::Writer::from_path(path)
-        .map_err(|e| InputError(format!("cannot write {}: {e}", path.display())))?;
+    let mut w = csv::Writer::from_path(path).map_err(|e| cannot_write("write", &path, e))?;
     for s in studies {
         for r in &s.rows {
             w.serialize(CsvRow {
@@ -264,8 +262,7 @@ fn write_markdown(path: &Path, studies: &[PairingStudy]) -> Result<()> {
             ));
         }
     }
-    std::fs::write(path, md)
-        .map_err(|e| InputError(format!("cannot write {}: {e}", path.display())).into())
+    std::fs::write(path, md).map_err(|e| cannot_write("write", path, e))
 }
 
 /// Smallest and largest of `f` over every row of every study, as "lo to hi %".
