@@ -159,7 +159,7 @@ pub fn print_report(out: &mut impl Write, r: &FrictionReport, json: bool) -> Res
 
 /// Every row, one line per model and speed, with unit-suffixed columns.
 pub fn write_csv(path: &Path, r: &FrictionReport) -> Result<()> {
-    let mut w = csv::Writer::from_path(path).map_err(|e| cannot_write("write", &path, e))?;
+    let mut w = csv::Writer::from_path(path).map_err(|e| cannot_write("write", path, e))?;
     for row in &r.rows {
         w.serialize(row)?;
     }

@@ -106,7 +106,7 @@ pub fn print_report(out: &mut impl Write, r: &PimpReport, json: bool) -> Result<
 
 /// Write fields as CSV: one row per cell, `x_mm, y_mm` and one column per named field.
 pub fn write_csv(path: &Path, grid: &Grid2, fields: &[(&str, &[f64])]) -> Result<()> {
-    let mut w = csv::Writer::from_path(path).map_err(|e| cannot_write("write", &path, e))?;
+    let mut w = csv::Writer::from_path(path).map_err(|e| cannot_write("write", path, e))?;
     let mut header = vec!["x_mm", "y_mm"];
     header.extend(fields.iter().map(|(name, _)| *name));
     w.write_record(&header)?;
@@ -299,7 +299,7 @@ impl Written {
 /// Run the roller-end/rib study (`kontakt::bearing::demo_study`) and write the report
 /// folder: the computation is the library's, this renders it.
 pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
-    std::fs::create_dir_all(out_dir).map_err(|e| cannot_write("create", &out_dir, e))?;
+    std::fs::create_dir_all(out_dir).map_err(|e| cannot_write("create", out_dir, e))?;
     let DemoStudy { rows, maps: fields } =
         demo_study(&STUDY_FORCES).context("the roller-end/rib demo study")?;
     let mut maps = Vec::with_capacity(fields.len());

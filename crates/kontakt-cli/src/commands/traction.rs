@@ -111,7 +111,7 @@ pub fn print_report(out: &mut impl Write, r: &TractionReport, json: bool) -> Res
 
 /// Every point: `creepage` and one column `<model>_ft_over_mu_fn` per model.
 pub fn write_csv(path: &Path, r: &TractionReport) -> Result<()> {
-    let mut w = csv::Writer::from_path(path).map_err(|e| cannot_write("write", &path, e))?;
+    let mut w = csv::Writer::from_path(path).map_err(|e| cannot_write("write", path, e))?;
     let mut header = vec!["creepage".to_string()];
     header.extend(
         r.curves

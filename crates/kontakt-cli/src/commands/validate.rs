@@ -38,7 +38,7 @@ struct CsvRow<'a> {
 
 /// Run the study and write the report folder.
 pub fn validate(out_dir: &Path, cells: usize, out: &mut impl Write, json: bool) -> Result<()> {
-    std::fs::create_dir_all(out_dir).map_err(|e| cannot_write("create", &out_dir, e))?;
+    std::fs::create_dir_all(out_dir).map_err(|e| cannot_write("create", out_dir, e))?;
     let options = BemOptions {
         cells: [cells, cells],
         ..BemOptions::default()
@@ -128,7 +128,7 @@ pub fn validate(out_dir: &Path, cells: usize, out: &mut impl Write, json: bool) 
 }
 
 fn write_csv(path: &Path, studies: &[PairingStudy]) -> Result<()> {
-    let mut w = csv::Writer::from_path(path).map_err(|e| cannot_write("write", &path, e))?;
+    let mut w = csv::Writer::from_path(path).map_err(|e| cannot_write("write", path, e))?;
     for s in studies {
         for r in &s.rows {
             w.serialize(CsvRow {
