@@ -128,6 +128,9 @@ pub struct HalfSpacePlan {
     /// rule: part of the planner's key.
     threads_requested: usize,
     threads: Threads,
+    /// The FFT preconditioner of this operator, planned on first use and shared by the
+    /// solvers on this plan.
+    preconditioner: std::sync::OnceLock<Arc<HalfSpacePlan>>,
 }
 
 impl std::fmt::Debug for HalfSpacePlan {
@@ -315,6 +318,7 @@ impl HalfSpacePlan {
             layout,
             threads_requested: wanted,
             threads,
+            preconditioner: std::sync::OnceLock::new(),
         }
     }
 
@@ -328,7 +332,15 @@ impl HalfSpacePlan {
     ///   is positive: the sum of a decaying `1/r` kernel over a window.
     ///
     /// The mean (`q = 0`) term is zero: the solver deflates the mean itself.
-    pub(super) fn preconditioner(&self) -> Self {
+    /// Planned once per plan (on first use) and shared.
+    pub(super) fn preconditioner(&self) -> Arc<Self> {
+        Arc::clone(
+            self.preconditioner
+                .get_or_init(|| Arc::new(self.plan_preconditioner())),
+        )
+    }
+
+    fn plan_preconditioner(&self) -> Self {
         let grid = &self.grid;
         let (nx, ny) = (self.nx, self.ny);
         let mut plan = Self::layout_on(

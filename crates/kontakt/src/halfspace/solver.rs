@@ -159,7 +159,7 @@ pub struct HalfSpaceSolver {
 /// The FFT preconditioner's plan and work arrays, planned with the solver.
 #[derive(Debug)]
 struct Precond {
-    plan: HalfSpacePlan,
+    plan: Arc<HalfSpacePlan>,
     scratch: OperatorScratch,
     /// The gap on the loaded cells (input of the preconditioner).
     w: Vec<f64>,
@@ -173,15 +173,14 @@ struct Precond {
 impl Precond {
     fn new(plan: &HalfSpacePlan) -> Result<Self> {
         let plan = plan.preconditioner();
-        let scratch = plan.scratch();
+        let mut scratch = plan.scratch();
         let [nx, ny] = plan.cells();
         let n = nx * ny;
         let mut w = vec![0.0; n];
         let mut z = vec![0.0; n];
-        let mut scratch_once = plan.scratch();
         let centre = (ny / 2) * nx + nx / 2;
         w[centre] = 1.0;
-        plan.apply_with_scratch(&w, &mut z, &mut scratch_once)?;
+        plan.apply_with_scratch(&w, &mut z, &mut scratch)?;
         let diagonal = z[centre].max(0.0);
         w[centre] = 0.0;
         Ok(Precond {
