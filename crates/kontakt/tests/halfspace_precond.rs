@@ -135,7 +135,10 @@ fn hertz_sphere_same_answer_in_a_third_of_the_iterations() {
         radius / a - 1.0,
         r.approach / (a * a / RADIUS) - 1.0,
     ];
-    eprintln!("Hertz sphere, preconditioned: p0, a, δ errors {errors:.2e?}");
+    eprintln!(
+        "Hertz sphere, preconditioned: p0, a, δ errors {:.2e} {:.2e} {:.2e}",
+        errors[0], errors[1], errors[2]
+    );
     assert!(errors[0].abs() < 0.01, "p0 {:e}", errors[0]);
     assert!(errors[1].abs() < 0.02, "a {:e}", errors[1]);
     assert!(errors[2].abs() < 0.005, "δ {:e}", errors[2]);
@@ -303,10 +306,7 @@ fn shared_plans_and_threads_give_the_serial_answer() {
 
 #[test]
 fn options_choose_the_path() {
-    assert_eq!(
-        SolverOptions::default().preconditioner,
-        Preconditioner::Fft
-    );
+    assert_eq!(SolverOptions::default().preconditioner, Preconditioner::Fft);
     let (g, _) = sphere_case();
     let plain = HalfSpaceSolver::new(
         g,

@@ -564,7 +564,8 @@ impl HalfSpaceSolver {
                 for i in 0..p.len() {
                     pc.w[i] = if p[i] > 0.0 { g[i] - g_mean } else { 0.0 };
                 }
-                pc.plan.apply_with_scratch(&pc.w, &mut pc.z, &mut pc.scratch)?;
+                pc.plan
+                    .apply_with_scratch(&pc.w, &mut pc.z, &mut pc.scratch)?;
                 applications += 1;
                 // Deflate the mean of z on the loaded cells, and under approach control
                 // give the mean gap the pressure of a flat punch of the zone's area.
@@ -590,7 +591,11 @@ impl HalfSpaceSolver {
                 };
                 g_old = gz;
                 for i in 0..p.len() {
-                    t[i] = if p[i] > 0.0 { pc.z[i] + beta * t[i] } else { 0.0 };
+                    t[i] = if p[i] > 0.0 {
+                        pc.z[i] + beta * t[i]
+                    } else {
+                        0.0
+                    };
                 }
                 admit = pc.diagonal;
             } else {
