@@ -262,7 +262,7 @@ fn warm_steps_at_64_cells_take_a_few_iterations() {
             ps.push(s.pressure().to_vec());
         }
         eprintln!(
-            "{pc:?}: iterations cold, warm load +1 %, warm pose 1 % of a, approach,              approach +1 %, approach and pose: {its:?}"
+            "{pc:?}: iterations cold, warm load +1 %, warm pose 1 % of a, approach, approach +1 %, approach and pose: {its:?}"
         );
         counts.push(its);
         answers.push(ps);
