@@ -3,7 +3,8 @@
 //!
 //! A multi-body step moves the bodies a little, so the contact zone changes a little. The
 //! element keeps one [`HalfSpaceSolver`] on a grid that holds the zone with a margin, and
-//! each evaluation re-samples the gap on that grid and restarts the constrained conjugate
+//! each evaluation re-samples the gap on that grid (interpolated from exact rays at
+//! Chebyshev-Lobatto nodes, as the PimP tracker does) and restarts the constrained conjugate
 //! gradients from the previous pressure (Polonsky & Keer 1999; [`Start::Warm`]). The grid
 //! is re-chosen only when the zone reaches its border or fills less than
 //! [`MIN_FILL`] of it (or the warm solve does not converge); then one adaptive solve ([`Bem::solve_approach`]) finds the zone
@@ -64,7 +65,7 @@ const NODES: usize = 9;
 
 /// The gap of a warm call interpolated from exact rays at `NODES × NODES`
 /// Chebyshev-Lobatto points spanning the grid's cell centres (the PimP tracker's
-/// approach, docs/pimp.md), instead of a ray at every cell: 81 rays instead of 4096 at
+/// approach, docs/mbs.md), instead of a ray at every cell: 81 rays instead of 4096 at
 /// 64², and a tensor-product Lagrange interpolation with weights planned with the grid.
 #[derive(Debug)]
 struct Stencil {
