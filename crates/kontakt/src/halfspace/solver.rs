@@ -557,9 +557,11 @@ impl HalfSpaceSolver {
             // preconditioned gap z with G = Σ g z (docs/halfspace.md §9).
             let mut admit = 1.0;
             if let Some(pc) = precond.as_mut() {
+                // (No loaded cell here means no overlap either: the direction is zero.)
+                let cells = n_c.max(1) as f64;
                 let g_mean = match control {
                     Control::Force(_) => 0.0,
-                    _ => sum_over_loaded(p, g) / n_c as f64,
+                    _ => sum_over_loaded(p, g) / cells,
                 };
                 for i in 0..p.len() {
                     pc.w[i] = if p[i] > 0.0 { g[i] - g_mean } else { 0.0 };
@@ -569,7 +571,7 @@ impl HalfSpaceSolver {
                 applications += 1;
                 // Deflate the mean of z on the loaded cells, and under approach control
                 // give the mean gap the pressure of a flat punch of the zone's area.
-                let z_mean = sum_over_loaded(p, &pc.z) / n_c as f64;
+                let z_mean = sum_over_loaded(p, &pc.z) / cells;
                 let coarse = if g_mean != 0.0 {
                     let radius = (n_c as f64 * da / std::f64::consts::PI).sqrt();
                     3.0 * std::f64::consts::PI * self.e_star / (16.0 * radius) * g_mean
