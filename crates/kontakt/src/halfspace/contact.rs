@@ -78,6 +78,7 @@ impl BemOptions {
             max_iterations: self.max_iterations,
             threads: self.threads,
             boundary,
+            ..SolverOptions::default()
         }
     }
 }

@@ -43,4 +43,4 @@ pub use crate::gap::{GapMap, MapKind};
 pub use contact::{Bem, BemOptions, BemSolution, HalfSpaceDetail, ZoneEstimate};
 pub use operator::{Boundary, ElasticOperator, HalfSpacePlan, OperatorScratch};
 pub use planner::HalfSpacePlanner;
-pub use solver::{Control, HalfSpaceSolver, SolveReport, SolverOptions, Start};
+pub use solver::{Control, HalfSpaceSolver, Preconditioner, SolveReport, SolverOptions, Start};

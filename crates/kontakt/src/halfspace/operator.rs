@@ -71,6 +71,7 @@ struct Workspace {
 /// inside this pool ([`HalfSpacePlan::pool`]), so the serial passes between two FFTs do
 /// not compete with the pool's workers for the cores. `rayon::ThreadPool` is
 /// `Send + Sync`, and concurrent `install`s from several threads are queued by rayon.
+#[derive(Clone)]
 enum Threads {
     Serial,
     Pool(Arc<rayon::ThreadPool>),
@@ -127,6 +128,9 @@ pub struct HalfSpacePlan {
     /// rule: part of the planner's key.
     threads_requested: usize,
     threads: Threads,
+    /// The FFT preconditioner of this operator, planned on first use and shared by the
+    /// solvers on this plan.
+    preconditioner: std::sync::OnceLock<Arc<HalfSpacePlan>>,
 }
 
 impl std::fmt::Debug for HalfSpacePlan {
@@ -234,7 +238,6 @@ impl HalfSpacePlan {
             Boundary::Free => (2 * nx, 2 * ny),
             Boundary::Periodic => (nx, ny),
         };
-        let kx = mx / 2 + 1;
         let threads = if wanted <= 1 || nx * ny < PARALLEL_MIN_CELLS {
             Threads::Serial
         } else {
@@ -249,6 +252,24 @@ impl HalfSpacePlan {
                 }
             }
         };
+        let mut plan = Self::layout_on(grid, e_star, mx, my, boundary, wanted, threads);
+        plan.plan_kernel(grid.dx(), grid.dy(), e_star);
+        Ok(plan)
+    }
+
+    /// The FFT plans, task split and an empty kernel for a `mx × my` transform of the
+    /// grid's data on `threads`.
+    fn layout_on(
+        grid: &Grid2,
+        e_star: f64,
+        mx: usize,
+        my: usize,
+        boundary: Boundary,
+        wanted: usize,
+        threads: Threads,
+    ) -> Self {
+        let (nx, ny) = (grid.nx(), grid.ny());
+        let kx = mx / 2 + 1;
         let n_threads = match &threads {
             Threads::Serial => 1,
             Threads::Pool(p) => p.current_num_threads(),
@@ -278,7 +299,7 @@ impl HalfSpacePlan {
             block: BLOCK * my.max(kx),
             fft_scratch: scratch_len,
         };
-        let mut plan = HalfSpacePlan {
+        HalfSpacePlan {
             grid: *grid,
             e_star,
             nx,
@@ -297,9 +318,83 @@ impl HalfSpacePlan {
             layout,
             threads_requested: wanted,
             threads,
-        };
-        plan.plan_kernel(grid.dx(), grid.dy(), e_star);
-        Ok(plan)
+            preconditioner: std::sync::OnceLock::new(),
+        }
+    }
+
+    /// The FFT preconditioner of the constrained conjugate gradients (Vollebregt 2014;
+    /// docs/halfspace.md §9): a circulant operator on the unpadded `nx × ny` grid, on this
+    /// plan's threads, whose symbol is the inverse of this operator's.
+    ///
+    /// - Periodic: the inverse of the spectral compliance, `E*|q|/2`, exact on the grid.
+    /// - Free: the inverse of Strang's circulant of the influence coefficients (the
+    ///   coefficients of the offsets `-n/2..n/2` wrapped on the `nx × ny` circle), which
+    ///   is positive: the sum of a decaying `1/r` kernel over a window.
+    ///
+    /// The mean (`q = 0`) term is zero: the solver deflates the mean itself.
+    /// Planned once per plan (on first use) and shared.
+    pub(super) fn preconditioner(&self) -> Arc<Self> {
+        Arc::clone(
+            self.preconditioner
+                .get_or_init(|| Arc::new(self.plan_preconditioner())),
+        )
+    }
+
+    fn plan_preconditioner(&self) -> Self {
+        let grid = &self.grid;
+        let (nx, ny) = (self.nx, self.ny);
+        let mut plan = Self::layout_on(
+            grid,
+            self.e_star,
+            nx,
+            ny,
+            Boundary::Periodic,
+            self.threads_requested,
+            self.threads.clone(),
+        );
+        let kx = plan.kx;
+        let norm = 1.0 / (nx * ny) as f64;
+        match self.boundary {
+            Boundary::Periodic => {
+                // The same wave vectors as this plan's kernel: invert it.
+                for (m, &c) in plan.kernel.iter_mut().zip(&self.kernel) {
+                    *m = if c > 0.0 { norm * norm / c } else { 0.0 };
+                }
+            }
+            Boundary::Free => {
+                let quadrant = quadrant_table(nx, ny, grid.dx(), grid.dy(), self.e_star);
+                let mut spec = vec![Complex::default(); ny * kx];
+                let mut row = vec![0.0; nx];
+                let mut scratch = vec![Complex::default(); plan.r2c.get_scratch_len()];
+                for j in 0..ny {
+                    let jj = signed(j, ny).abs() as usize;
+                    let q = &quadrant[jj * (nx + 1)..(jj + 1) * (nx + 1)];
+                    for (i, r) in row.iter_mut().enumerate() {
+                        *r = q[signed(i, nx).abs() as usize];
+                    }
+                    plan.r2c
+                        .process_with_scratch(
+                            &mut row,
+                            &mut spec[j * kx..(j + 1) * kx],
+                            &mut scratch,
+                        )
+                        .expect("invariant: lengths match the plan");
+                }
+                let mut col = vec![Complex::default(); ny];
+                let mut cs = vec![Complex::default(); plan.col_fwd.get_inplace_scratch_len()];
+                for (k, m) in plan.kernel.chunks_mut(ny).enumerate() {
+                    for (j, c) in col.iter_mut().enumerate() {
+                        *c = spec[j * kx + k];
+                    }
+                    plan.col_fwd.process_with_scratch(&mut col, &mut cs);
+                    for (mv, c) in m.iter_mut().zip(&col) {
+                        *mv = if c.re > 0.0 { norm / c.re } else { 0.0 };
+                    }
+                }
+                plan.kernel[0] = 0.0;
+            }
+        }
+        plan
     }
 
     /// Fill the kernel spectrum.
