@@ -11,7 +11,8 @@
 //!
 //! The integrand is smooth in `φ` (Gauss-Legendre, [`EllipseRule`]'s radial nodes) and
 //! periodic in `θ` (the trapezoid rule, spectrally accurate for smooth periodic functions).
-//! The weights sum to `2π/3`, so the normal force `2π p₀ a b / 3` comes out to round-off.
+//! The weights are scaled to sum to `2π/3`, so the normal force `2π p₀ a b / 3` and the
+//! Coulomb force of a uniform sliding come out to round-off.
 //! A sliding pole (`v = 0`) inside the ellipse makes the Coulomb direction non-smooth there;
 //! the rule's accuracy is then algebraic, not spectral (docs/VALIDATION.md gives both).
 //!
@@ -103,6 +104,11 @@ impl EllipseRule {
                 rule.weight.push(wr);
             }
         }
+        // The radial rule integrates sin φ cos² φ to 1e-8 (6 nodes) or better; scale the
+        // weights to sum to 2π/3 exactly, so that a uniform Coulomb stress (any sliding
+        // without spin) gives μ F to round-off.
+        let k = std::f64::consts::TAU / 3.0 / rule.weight.iter().sum::<f64>();
+        rule.weight.iter_mut().for_each(|w| *w *= k);
         Ok(rule)
     }
 
