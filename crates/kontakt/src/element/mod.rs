@@ -182,6 +182,8 @@ pub struct ContactElement {
     bem: Option<Bem>,
     /// The last contact point in body 1's frame: the next search starts there.
     last_point: Option<Point3<f64>>,
+    /// The Hertz back-end's last contact: the next shape inversion starts from it.
+    last_hertz: Option<HertzPointContact>,
     /// The Hertz back-end's quadrature rules over the contact ellipse (built once).
     hertz_rules: HertzFrictionRules,
     /// The half-space back-end's grid and last field, for the warm start.
@@ -306,6 +308,7 @@ impl ContactElement {
             pimp,
             bem,
             last_point: None,
+            last_hertz: None,
             hertz_rules: HertzFrictionRules::new()?,
             warm: Default::default(),
             tracker,
@@ -461,6 +464,7 @@ impl ContactElement {
     /// Forget the last contact point (the next search starts from scratch).
     pub fn reset(&mut self) {
         self.last_point = None;
+        self.last_hertz = None;
         self.warm.reset();
         if let Some(t) = &mut self.tracker {
             t.reset();
@@ -525,12 +529,15 @@ impl ContactElement {
             Backend::Hertz => {
                 // Closed form; the friction integral runs over the ellipse (turned in the gap
                 // frame) by a quadrature of the semi-ellipsoid, no sampled field.
-                let h = HertzPointContact::new(
+                // The ellipse's shape warm-started from the last call's.
+                let planned = HertzPointContact::new_near(
                     PointGeometry::from_curvature(curvature),
                     self.spec.material1,
                     self.spec.material2,
-                )?
-                .solve_approach(approach)?;
+                    self.last_hertz.as_ref(),
+                )?;
+                self.last_hertz = Some(planned);
+                let h = planned.solve_approach(approach)?;
                 FieldView {
                     samples: Samples::Ellipse {
                         semi_axes: h.semi_axes,
