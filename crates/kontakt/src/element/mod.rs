@@ -23,9 +23,8 @@
 //!    relative curvature, PimP, or the coupled half-space solver, on the gap of the two
 //!    placed surfaces.
 //! 4. Friction: the law over the pressure with the sliding field of the two twists, scaled
-//!    to the back-end's normal force: [`crate::friction::grid_friction`] over the half-space
-//!    solver's grid; over the PimP tracker's, [`crate::friction::grid_friction_blocks`] (2 × 2
-//!    cells a block, within 2e-3 of the per-cell integral); for Hertz, [`crate::friction::HertzFrictionRules`], a polar
+//!    to the back-end's normal force: [`crate::friction::grid_friction`] over the field
+//!    solvers' grids; for Hertz, [`crate::friction::HertzFrictionRules`], a polar
 //!    quadrature of the semi-ellipsoid (96 to 512 nodes by the law and the spin pole; no
 //!    sampled field; accuracy in docs/VALIDATION.md).
 //! 5. Damping (optional): `F_d = c(δ) δ̇`, `δ̇ = −n · (v_1 − v_2)` at the contact point,
@@ -46,7 +45,6 @@ use crate::error::{Error, Result};
 use crate::field::NormalSolution;
 use crate::friction::{
     CellLaw, FilmState, FrictionLaw, GridFriction, HertzFrictionRules, grid_friction,
-    grid_friction_blocks,
 };
 use crate::gap::{GapSource, SurfacePairGap};
 use crate::geometry::{
@@ -199,11 +197,8 @@ pub const PRESS_STEPS: usize = 100;
 
 /// Where the friction integral takes its pressure from.
 enum Samples<'a> {
-    /// A field on a grid (the half-space solver, PimP's full solve).
+    /// A field on a grid (PimP, the half-space solver).
     Grid(Grid2, &'a [f64]),
-    /// The PimP tracker's field: the friction on blocks of 2 × 2 cells
-    /// ([`crate::friction::grid_friction_blocks`]).
-    Blocks(Grid2, &'a [f64]),
     /// Hertz's semi-ellipsoid, integrated by the element's [`HertzFrictionRules`].
     Ellipse {
         semi_axes: [f64; 2],
@@ -581,7 +576,7 @@ impl ContactElement {
                     .ok_or_else(|| Error::invalid("backend", "pimp", "a planned element"))?
                     .evaluate(&gap, approach)?;
                 FieldView {
-                    samples: Samples::Blocks(t.grid, t.pressure),
+                    samples: Samples::Grid(t.grid, t.pressure),
                     orientation: t.orientation,
                     centroid: t.centroid,
                     force: t.force,
@@ -648,9 +643,6 @@ impl ContactElement {
         let sliding = pair.velocity_field(&frame, field.orientation)?;
         let mut sums: GridFriction = match field.samples {
             Samples::Grid(grid, pressure) => grid_friction(&grid, pressure, &sliding, &self.law)?,
-            Samples::Blocks(grid, pressure) => {
-                grid_friction_blocks(&grid, pressure, &sliding, &self.law)?
-            }
             Samples::Ellipse {
                 semi_axes,
                 orientation,
