@@ -2,9 +2,9 @@
 //! The friction integral over a Hertz ellipse by the polar quadrature of the contact
 //! element (`friction::ellipse_friction`, issue 12) against a converged reference (the same
 //! integral on a 64 × 512 rule, itself checked against the midpoint rule on 2048 × 2048
-//! cells of the sampled field) and against the element's former 16 × 16 sampled field:
-//! boundary, mixed and full-film laws; sliding, sliding with spin, pure spin, and a spin
-//! pole inside the ellipse. Errors are relative to the friction's own scales: force to
+//! cells of the sampled field), printing the element's former 16 × 16 sampled field's
+//! error beside it: boundary, mixed, full-film and Eyring laws; sliding, sliding with spin,
+//! pure spin, and spin poles inside, near and far from the ellipse. Errors are relative to the friction's own scales: force to
 //! `T = ∫ |τ| dA`, moment to `T a`, power to `T v_max` (v_max the largest sliding speed on
 //! the ellipse). Units: mm, N, MPa, mm/s; power in W.
 
