@@ -235,46 +235,50 @@ fn tracked_field_matches_the_full_adaptive_solve() {
 }
 
 /// No allocation per evaluation: the PimP element along 200 steps of a sliding, tilting
-/// roller (after two warm-up calls that size the buffers) allocates nothing.
+/// roller (after two warm-up calls that size the buffers) allocates nothing; nor does the
+/// Hertz element (its friction quadrature and the shape inversion's warm start) on the
+/// same steps.
 #[test]
 fn pimp_element_evaluation_allocates_nothing() {
     let rr = roller_rib("torus-torus-14");
-    let mut spec = ElementSpec::new(rr.face.clone(), rr.rib.clone()).unwrap();
-    spec.backend = Backend::Pimp(PimpOptions::default());
-    let mut e = ContactElement::new(spec).unwrap();
-    let n = rr.contact.normal.into_inner();
-    let across = n.cross(&Vector3::z()).normalize();
-    let axis = nalgebra::Unit::new_normalize(across.cross(&n));
-    let pose = |i: usize| {
-        let s = i as f64 / 200.0 * std::f64::consts::TAU;
-        let rot = UnitQuaternion::from_axis_angle(&axis, 0.02f64.to_radians() * s.sin());
-        let c = rr.contact.point.coords;
-        Isometry3::from_parts(
-            Translation3::from(c - rot * c - n * 0.0042 + across * 0.02 * s.sin()),
-            rot,
-        )
-    };
-    let id = Isometry3::identity();
-    let spin = Twist::new(Vector3::zeros(), Vector3::new(0.0, 0.0, 10.0));
-    for i in 0..2 {
-        e.evaluate(&pose(i), &id, &spin, &Twist::zero()).unwrap();
-    }
-    let (force, count) = counting_alloc::allocations(|| {
-        let mut total = 0.0;
-        for i in 2..202 {
-            total += e
-                .evaluate(&pose(i), &id, &spin, &Twist::zero())
-                .unwrap()
-                .normal_force;
+    for backend in [Backend::Pimp(PimpOptions::default()), Backend::Hertz] {
+        let mut spec = ElementSpec::new(rr.face.clone(), rr.rib.clone()).unwrap();
+        spec.backend = backend;
+        let mut e = ContactElement::new(spec).unwrap();
+        let n = rr.contact.normal.into_inner();
+        let across = n.cross(&Vector3::z()).normalize();
+        let axis = nalgebra::Unit::new_normalize(across.cross(&n));
+        let pose = |i: usize| {
+            let s = i as f64 / 200.0 * std::f64::consts::TAU;
+            let rot = UnitQuaternion::from_axis_angle(&axis, 0.02f64.to_radians() * s.sin());
+            let c = rr.contact.point.coords;
+            Isometry3::from_parts(
+                Translation3::from(c - rot * c - n * 0.0042 + across * 0.02 * s.sin()),
+                rot,
+            )
+        };
+        let id = Isometry3::identity();
+        let spin = Twist::new(Vector3::zeros(), Vector3::new(0.0, 0.0, 10.0));
+        for i in 0..2 {
+            e.evaluate(&pose(i), &id, &spin, &Twist::zero()).unwrap();
         }
-        total
-    });
-    println!(
-        "200 evaluations, mean force {:.2} N: {count} allocations",
-        force / 200.0
-    );
-    assert!(force > 0.0);
-    assert_eq!(count, 0);
+        let (force, count) = counting_alloc::allocations(|| {
+            let mut total = 0.0;
+            for i in 2..202 {
+                total += e
+                    .evaluate(&pose(i), &id, &spin, &Twist::zero())
+                    .unwrap()
+                    .normal_force;
+            }
+            total
+        });
+        println!(
+            "{backend:?}: 200 evaluations, mean force {:.2} N: {count} allocations",
+            force / 200.0
+        );
+        assert!(force > 0.0);
+        assert_eq!(count, 0);
+    }
 }
 
 /// Tiny approaches (a round-off touch up to 1 nm) give a small positive force on a loaded

@@ -20,11 +20,13 @@
 //!    [`find_contact`], started from the last call's point.
 //! 2. Separated (`separation > 0`): zero force, status [`ContactStatus::Separated`].
 //! 3. The normal problem at the approach `δ` by the back-end: Hertz at the contact point's
-//!    relative curvature (pressure sampled on 16 × 16 cells for the friction integral: the
-//!    spin moment of a ball to 0.3 %), PimP, or the coupled half-space solver, on the gap of
-//!    the two placed surfaces.
-//! 4. Friction: [`crate::friction::grid_friction`] of the law over the pressure field with
-//!    the sliding field of the two twists, scaled to the back-end's normal force.
+//!    relative curvature, PimP, or the coupled half-space solver, on the gap of the two
+//!    placed surfaces.
+//! 4. Friction: the law over the pressure with the sliding field of the two twists, scaled
+//!    to the back-end's normal force: [`crate::friction::grid_friction`] over the field
+//!    solvers' grids; for Hertz, [`crate::friction::HertzFrictionRules`], a polar
+//!    quadrature of the semi-ellipsoid (96 to 512 nodes by the law and the spin pole; no
+//!    sampled field; accuracy in docs/VALIDATION.md).
 //! 5. Damping (optional): `F_d = c(δ) δ̇`, `δ̇ = −n · (v_1 − v_2)` at the contact point,
 //!    `c(δ) = c_max s(δ / δ_c)`, `s(t) = 3t² − 2t³` on `[0, 1]`, 1 beyond: zero with zero slope
 //!    at first touch, so the force has no jump. The total normal force `F_n + F_d` is not
@@ -41,7 +43,9 @@ pub mod study;
 
 use crate::error::{Error, Result};
 use crate::field::NormalSolution;
-use crate::friction::{CellLaw, FilmState, FrictionLaw, grid_friction};
+use crate::friction::{
+    CellLaw, FilmState, FrictionLaw, GridFriction, HertzFrictionRules, grid_friction,
+};
 use crate::gap::{GapSource, SurfacePairGap};
 use crate::geometry::{
     BodyState, ContactFrame, ContactPair, Grid2, PlacedSurface, Twist, find_contact,
@@ -56,8 +60,8 @@ use std::sync::{Arc, Mutex};
 /// Which model solves the normal problem.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Backend {
-    /// Hertz at the relative curvature of the contact point (closed form; the pressure is
-    /// sampled on 16 × 16 cells for the friction integral).
+    /// Hertz at the relative curvature of the contact point (closed form; the friction
+    /// integral runs over the ellipse by a polar quadrature, no sampled field).
     Hertz,
     /// PimP with these options.
     Pimp(PimpOptions),
@@ -178,8 +182,10 @@ pub struct ContactElement {
     bem: Option<Bem>,
     /// The last contact point in body 1's frame: the next search starts there.
     last_point: Option<Point3<f64>>,
-    /// The Hertz back-end's pressure samples (allocated once).
-    hertz_pressure: Vec<f64>,
+    /// The Hertz back-end's last contact: the next shape inversion starts from it.
+    last_hertz: Option<HertzPointContact>,
+    /// The Hertz back-end's quadrature rules over the contact ellipse (built once).
+    hertz_rules: HertzFrictionRules,
     /// The half-space back-end's grid and last field, for the warm start.
     warm: halfspace_warm::WarmHalfSpace,
     /// The PimP back-end's grid and buffers, kept between calls (`pimp::PimpTracker`).
@@ -189,13 +195,21 @@ pub struct ContactElement {
 /// Most steps of [`ContactElement::press_to_force`].
 pub const PRESS_STEPS: usize = 100;
 
-/// Cells a side of the Hertz back-end's pressure samples for the friction integral.
-const HERTZ_CELLS: usize = 16;
+/// Where the friction integral takes its pressure from.
+enum Samples<'a> {
+    /// A field on a grid (PimP, the half-space solver).
+    Grid(Grid2, &'a [f64]),
+    /// Hertz's semi-ellipsoid, integrated by the element's [`HertzFrictionRules`].
+    Ellipse {
+        semi_axes: [f64; 2],
+        orientation: f64,
+        max_pressure: f64,
+    },
+}
 
 /// The normal solution as the rest of an evaluation needs it, whichever back-end gave it.
 struct FieldView<'a> {
-    grid: Grid2,
-    pressure: &'a [f64],
+    samples: Samples<'a>,
     /// Angle of the grid's x axis from the gap frame's x axis \[rad\].
     orientation: f64,
     /// Centre of pressure in the grid frame \[mm\].
@@ -294,7 +308,8 @@ impl ContactElement {
             pimp,
             bem,
             last_point: None,
-            hertz_pressure: vec![0.0; HERTZ_CELLS * HERTZ_CELLS],
+            last_hertz: None,
+            hertz_rules: HertzFrictionRules::new()?,
             warm: Default::default(),
             tracker,
         })
@@ -449,6 +464,7 @@ impl ContactElement {
     /// Forget the last contact point (the next search starts from scratch).
     pub fn reset(&mut self) {
         self.last_point = None;
+        self.last_hertz = None;
         self.warm.reset();
         if let Some(t) = &mut self.tracker {
             t.reset();
@@ -511,19 +527,23 @@ impl ContactElement {
         let solved: NormalSolution<()>;
         let field = match self.spec.backend {
             Backend::Hertz => {
-                // Closed form, sampled into the element's buffer for the friction integral
-                // (no allocation); the grid lies in the gap frame, the ellipse turned in it.
-                let h = HertzPointContact::new(
+                // Closed form; the friction integral runs over the ellipse (turned in the gap
+                // frame) by a quadrature of the semi-ellipsoid, no sampled field.
+                // The ellipse's shape warm-started from the last call's.
+                let planned = HertzPointContact::new_near(
                     PointGeometry::from_curvature(curvature),
                     self.spec.material1,
                     self.spec.material2,
-                )?
-                .solve_approach(approach)?;
-                let grid = h.covering_grid(HERTZ_CELLS, HERTZ_CELLS, 0.05)?;
-                h.sample_pressure_into(&grid, &mut self.hertz_pressure)?;
+                    self.last_hertz.as_ref(),
+                )?;
+                self.last_hertz = Some(planned);
+                let h = planned.solve_approach(approach)?;
                 FieldView {
-                    grid,
-                    pressure: &self.hertz_pressure,
+                    samples: Samples::Ellipse {
+                        semi_axes: h.semi_axes,
+                        orientation: h.orientation,
+                        max_pressure: h.max_pressure,
+                    },
                     orientation: 0.0,
                     centroid: [0.0, 0.0],
                     force: h.force,
@@ -538,8 +558,7 @@ impl ContactElement {
                 })?;
                 let w = self.warm.solve(bem, &gap, approach)?;
                 FieldView {
-                    grid: w.grid,
-                    pressure: w.pressure,
+                    samples: Samples::Grid(w.grid, w.pressure),
                     orientation: w.rotation,
                     centroid: w.zone.centroid,
                     force: w.force,
@@ -557,8 +576,7 @@ impl ContactElement {
                     .ok_or_else(|| Error::invalid("backend", "pimp", "a planned element"))?
                     .evaluate(&gap, approach)?;
                 FieldView {
-                    grid: t.grid,
-                    pressure: t.pressure,
+                    samples: Samples::Grid(t.grid, t.pressure),
                     orientation: t.orientation,
                     centroid: t.centroid,
                     force: t.force,
@@ -580,8 +598,7 @@ impl ContactElement {
                     }
                 };
                 FieldView {
-                    grid: solved.grid,
-                    pressure: &solved.pressure,
+                    samples: Samples::Grid(solved.grid, &solved.pressure),
                     orientation: solved.orientation,
                     centroid: solved.zone.centroid,
                     force: solved.force,
@@ -624,10 +641,23 @@ impl ContactElement {
         let gx = ex * c + ey * s;
         let gy = -ex * s + ey * c;
         let sliding = pair.velocity_field(&frame, field.orientation)?;
-        let mut sums = grid_friction(&field.grid, field.pressure, &sliding, &self.law)?;
-        // Scale the sums to the back-end's normal force (Hertz on 16 × 16 cells samples its
-        // force to about 1 %; the field solvers' fields carry their own force, a factor 1 to
-        // round-off).
+        let mut sums: GridFriction = match field.samples {
+            Samples::Grid(grid, pressure) => grid_friction(&grid, pressure, &sliding, &self.law)?,
+            Samples::Ellipse {
+                semi_axes,
+                orientation,
+                max_pressure,
+            } => self.hertz_rules.friction(
+                semi_axes,
+                orientation,
+                max_pressure,
+                &sliding,
+                &self.law,
+            )?,
+        };
+        // Scale the sums to the back-end's normal force (a factor 1 to round-off: the
+        // ellipse rule integrates the semi-ellipsoid exactly, the field solvers' fields carry
+        // their own force).
         if sums.normal_force > 0.0 {
             let k = normal_force / sums.normal_force;
             sums.force = sums.force.map(|f| f * k);

@@ -24,9 +24,11 @@
 //! Units: mm, N, MPa, mm/s, MPa·s; moments in N·mm; power in W. Derivations:
 //! docs/friction.md.
 
+pub mod ellipse;
 pub mod integral;
 pub mod law;
 
+pub use ellipse::{EllipseRule, HertzFrictionRules, ellipse_friction, sliding_pole_radius};
 pub use integral::{
     ContactFriction, GridFriction, contact_friction, grid_friction, power_density, pressure_sliding,
 };

@@ -38,14 +38,28 @@ pub(crate) fn shape_ratio(y: f64) -> Result<f64> {
     Ok((3.0 * rf - rd) / (y * rd))
 }
 
+/// The cold start of [`invert_shape_ratio_near`] (the tests' reference).
+#[cfg(test)]
+pub(crate) fn invert_shape_ratio(ratio: f64) -> Result<Inversion> {
+    invert_shape_ratio_near(ratio, None)
+}
+
 /// Solve the shape equation $B/A = $ `ratio` for $k' = b/a \in (0, 1]$.
 ///
 /// Safeguarded secant iteration on $u = \ln k'$, where $\ln(B/A)$ is nearly linear
 /// (slope between -1 and about -2), started from Hamrock and Brewe's fit
 /// $a/b \approx 1.0339\,(B/A)^{0.636}$. Converges to machine precision in 4-6 evaluations.
 ///
+/// Warm start: `previous = (ratio, k')`, the root of a nearby ratio, whose residual for
+/// this ratio is `ln(previous ratio / ratio)` without an evaluation, so the secant starts
+/// from two points after one evaluation (3 evaluations on average for changes up to 1 %,
+/// against 4.3 cold). The same root to 1e-14 (tested).
+///
 /// Returns the root, the number of function evaluations and $(R_F, R_D)$ at the root.
-pub(crate) fn invert_shape_ratio(ratio: f64) -> Result<Inversion> {
+pub(crate) fn invert_shape_ratio_near(
+    ratio: f64,
+    previous: Option<(f64, f64)>,
+) -> Result<Inversion> {
     if !(ratio.is_finite() && ratio >= 1.0) {
         return Err(Error::invalid("B/A", ratio, "a finite ratio >= 1"));
     }
@@ -81,8 +95,20 @@ pub(crate) fn invert_shape_ratio(ratio: f64) -> Result<Inversion> {
         kp.ln()
     };
     u0 = u0.min(-1e-9);
-    let mut g0 = g(u0)?;
-    let mut evals = 1;
+    // The warm start: the previous root, whose residual for this ratio is known.
+    let warm = previous.and_then(|(r, kp)| {
+        let u = kp.ln();
+        (r.is_finite() && r > 1.0 + 4.0 * f64::EPSILON && u < 0.0 && u.is_finite() && r != ratio)
+            .then(|| (u, r.ln() - target))
+            .filter(|&(_, g)| g != 0.0)
+    });
+    let (mut g0, mut evals) = match warm {
+        Some((u, g_known)) => {
+            u0 = u;
+            (g_known, 0)
+        }
+        None => (g(u0)?, 1),
+    };
     let mut lo = f64::NEG_INFINITY;
     let mut g_lo = f64::NAN;
     if g0 > 0.0 {
@@ -142,7 +168,7 @@ pub(crate) fn invert_shape_ratio(ratio: f64) -> Result<Inversion> {
     })
 }
 
-/// Result of [`invert_shape_ratio`].
+/// Result of [`invert_shape_ratio_near`].
 pub(crate) struct Inversion {
     /// b/a.
     pub axis_ratio: f64,
@@ -208,6 +234,36 @@ mod tests {
             assert_relative_eq!(inv.rf_rd.1, rd, max_relative = 1e-14);
         }
         assert!(max_evals <= 8, "max evaluations {max_evals}");
+    }
+
+    /// Warm starts from the root of a ratio 1e-8 to 30 % away, over k' from 1 to 3e-5: the
+    /// same root as the cold start to 1e-14 relative (R_F, R_D too), in fewer evaluations
+    /// on average for steps up to 1 % (measured: 3.0 against 4.3).
+    #[test]
+    fn warm_start_finds_the_same_root_in_fewer_evaluations() {
+        let (mut warm_sum, mut cold_sum) = (0, 0);
+        for i in 0..=90 {
+            let kp = 10f64.powf(-(i as f64) * 4.5 / 90.0);
+            let r0 = shape_ratio(kp * kp).unwrap();
+            let prev = invert_shape_ratio(r0).unwrap();
+            for step in [1e-8, 1e-6, 1e-4, 1e-2, -1e-2, 0.3] {
+                let r = (r0 * (1.0 + step)).max(1.0 + 1e-6);
+                let cold = invert_shape_ratio(r).unwrap();
+                let warm = invert_shape_ratio_near(r, Some((r0, prev.axis_ratio))).unwrap();
+                assert_relative_eq!(warm.axis_ratio, cold.axis_ratio, max_relative = 1e-14);
+                assert_relative_eq!(warm.rf_rd.0, cold.rf_rd.0, max_relative = 1e-14);
+                assert_relative_eq!(warm.rf_rd.1, cold.rf_rd.1, max_relative = 1e-14);
+                if step.abs() <= 1e-2 && r0 > 1.0 + 1e-6 {
+                    warm_sum += warm.evaluations;
+                    cold_sum += cold.evaluations;
+                }
+            }
+        }
+        println!("evaluations in all: warm {warm_sum}, cold {cold_sum}");
+        assert!(
+            10 * warm_sum < 8 * cold_sum,
+            "warm {warm_sum}, cold {cold_sum}"
+        );
     }
 
     #[test]

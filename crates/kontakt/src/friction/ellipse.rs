@@ -1,0 +1,310 @@
+//! The friction integral over a Hertz ellipse without a sampled pressure field.
+//!
+//! Over the ellipse of semi-axes `a`, `b` turned by `θ₀` in the grid frame, with the
+//! semi-ellipsoidal pressure `p = p₀ √(1 − ρ²)`, the polar map `x' = a ρ cos θ`,
+//! `y' = b ρ sin θ` gives `dA = a b ρ dρ dθ`, and `ρ = sin φ` removes the square root at the
+//! rim:
+//!
+//! ```text
+//! ∫ p g dA = p₀ a b ∫₀^{2π} ∫₀^{π/2} g sin φ cos² φ dφ dθ
+//! ```
+//!
+//! The integrand is smooth in `φ` (Gauss-Legendre, [`EllipseRule`]'s radial nodes) and
+//! periodic in `θ` (the trapezoid rule, spectrally accurate for smooth periodic functions).
+//! The weights are scaled to sum to `2π/3`, so the normal force `2π p₀ a b / 3` and the
+//! Coulomb force of a uniform sliding come out to round-off.
+//! A sliding pole (`v = 0`) inside the ellipse makes the Coulomb direction non-smooth there;
+//! the rule's accuracy is then algebraic, not spectral (docs/VALIDATION.md gives both).
+//!
+//! Units: mm, N, MPa, mm/s; power in W.
+
+use super::integral::GridFriction;
+use super::law::CellLaw;
+use crate::error::{Error, Result};
+use crate::geometry::VelocityField;
+
+/// N·mm/s per W.
+const MW_PER_W: f64 = 1e3;
+
+/// A product rule on the unit disc for integrals weighted by the Hertz pressure
+/// `√(1 − ρ²)`: `radial` Gauss-Legendre nodes in `φ` (`ρ = sin φ`) times `angular`
+/// trapezoid nodes in `θ`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct EllipseRule {
+    /// Unit-disc abscissae `ρ cos θ`.
+    ux: Vec<f64>,
+    /// Unit-disc ordinates `ρ sin θ`.
+    uy: Vec<f64>,
+    /// Pressure over the central pressure, `√(1 − ρ²) = cos φ`.
+    share: Vec<f64>,
+    /// Weights `w_φ sin φ cos² φ · 2π / angular` (sum `2π/3`).
+    weight: Vec<f64>,
+}
+
+/// Gauss-Legendre nodes and weights on [−1, 1] (Newton on the Legendre recurrence).
+fn gauss_legendre(n: usize) -> Vec<(f64, f64)> {
+    let mut out = Vec::with_capacity(n);
+    for i in 0..n {
+        let mut x = (std::f64::consts::PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
+        let mut dp = 1.0;
+        for _ in 0..100 {
+            let (mut p0, mut p1) = (1.0, x);
+            for k in 2..=n {
+                let k = k as f64;
+                let p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
+                p0 = p1;
+                p1 = p2;
+            }
+            let pn = if n == 0 { 1.0 } else { p1 };
+            let pm = if n == 0 { 0.0 } else { p0 };
+            dp = n as f64 * (x * pn - pm) / (x * x - 1.0);
+            let step = pn / dp;
+            x -= step;
+            if step.abs() < 1e-16 {
+                break;
+            }
+        }
+        out.push((x, 2.0 / ((1.0 - x * x) * dp * dp)));
+    }
+    out
+}
+
+impl EllipseRule {
+    /// A rule of `radial` × `angular` nodes.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] (field `nodes`) for fewer than 1 radial or 3 angular nodes.
+    pub fn new(radial: usize, angular: usize) -> Result<Self> {
+        if radial < 1 || angular < 3 {
+            return Err(Error::invalid(
+                "nodes",
+                format!("{radial} × {angular}"),
+                "at least 1 radial and 3 angular nodes",
+            ));
+        }
+        let half = std::f64::consts::FRAC_PI_4;
+        let dtheta = std::f64::consts::TAU / angular as f64;
+        let n = radial * angular;
+        let mut rule = EllipseRule {
+            ux: Vec::with_capacity(n),
+            uy: Vec::with_capacity(n),
+            share: Vec::with_capacity(n),
+            weight: Vec::with_capacity(n),
+        };
+        for (t, w) in gauss_legendre(radial) {
+            // φ = π/4 (t + 1) on [0, π/2].
+            let (sp, cp) = (half * (t + 1.0)).sin_cos();
+            let wr = w * half * sp * cp * cp * dtheta;
+            for m in 0..angular {
+                // Half a step off the axes: no node on a symmetry line of the ellipse.
+                let (st, ct) = ((m as f64 + 0.5) * dtheta).sin_cos();
+                rule.ux.push(sp * ct);
+                rule.uy.push(sp * st);
+                rule.share.push(cp);
+                rule.weight.push(wr);
+            }
+        }
+        // The radial rule integrates sin φ cos² φ to 1e-8 (6 nodes) or better; scale the
+        // weights to sum to 2π/3 exactly, so that a uniform Coulomb stress (any sliding
+        // without spin) gives μ F to round-off.
+        let k = std::f64::consts::TAU / 3.0 / rule.weight.iter().sum::<f64>();
+        rule.weight.iter_mut().for_each(|w| *w *= k);
+        Ok(rule)
+    }
+
+    /// Nodes of the rule.
+    pub fn len(&self) -> usize {
+        self.weight.len()
+    }
+
+    /// Whether the rule has no nodes (never for a rule built by [`EllipseRule::new`]).
+    pub fn is_empty(&self) -> bool {
+        self.weight.is_empty()
+    }
+}
+
+/// The friction integral of `law` over the Hertz ellipse of semi-axes `semi_axes = [a, b]`
+/// \[mm\], its `a` axis at `orientation` \[rad\] from the grid frame's x axis, centred at
+/// the grid origin, central pressure `max_pressure` \[MPa\], with the sliding field `field`
+/// (grid frame), by the rule `rule`. The same sums as [`super::grid_friction`] of the
+/// sampled field (`normal_force` is `2π p₀ a b / 3` to round-off). Does not allocate.
+///
+/// # Errors
+/// [`Error::InvalidInput`]: field `semi_axes` / `max_pressure` (not finite or negative),
+/// `sliding` (not finite), `fluid` (the Newtonian law overflowed).
+pub fn ellipse_friction(
+    semi_axes: [f64; 2],
+    orientation: f64,
+    max_pressure: f64,
+    field: &VelocityField,
+    law: &CellLaw,
+    rule: &EllipseRule,
+) -> Result<GridFriction> {
+    let [a, b] = semi_axes;
+    if !(a.is_finite() && b.is_finite() && a >= 0.0 && b >= 0.0 && orientation.is_finite()) {
+        return Err(Error::invalid(
+            "semi_axes",
+            format!("{semi_axes:?} at {orientation} rad"),
+            "finite semi-axes >= 0 mm and a finite angle",
+        ));
+    }
+    if !(max_pressure.is_finite() && max_pressure >= 0.0) {
+        return Err(Error::invalid(
+            "max_pressure",
+            max_pressure,
+            "a finite pressure >= 0 MPa",
+        ));
+    }
+    if !field.sliding.iter().flatten().all(|v| v.is_finite()) {
+        return Err(Error::invalid(
+            "sliding",
+            format!("{:?}", field.sliding),
+            "finite velocities in mm/s",
+        ));
+    }
+    if max_pressure == 0.0 || a == 0.0 || b == 0.0 {
+        return Ok(GridFriction::default());
+    }
+    let (s, c) = orientation.sin_cos();
+    // Grid-frame point of the unit-disc node (u, w): x = c a u − s b w, y = s a u + c b w.
+    let (xu, xw, yu, yw) = (c * a, -s * b, s * a, c * b);
+    let [o, dx, dy] = field.sliding;
+    // The sliding velocity as an affine function of the unit-disc node.
+    let (vxu, vxw) = (xu * dx[0] + yu * dy[0], xw * dx[0] + yw * dy[0]);
+    let (vyu, vyw) = (xu * dx[1] + yu * dy[1], xw * dx[1] + yw * dy[1]);
+    let (mb, eps2) = (law.boundary_coefficient(), law.regularisation_squared());
+    let fluid = law.has_fluid();
+    // Sums over the nodes of w·k̂·(v_x, v_y, u v_y − … , |v|²) with k = p₀ k̂ for the boundary
+    // part; the moment x τ_y − y τ_x is summed in the unit-disc coordinates u, w.
+    let (mut fx, mut fy, mut mu_, mut mw, mut pw) = (0.0, 0.0, 0.0, 0.0, 0.0);
+    let n = rule.len();
+    let (ux, uy, share, weight) = (
+        &rule.ux[..n],
+        &rule.uy[..n],
+        &rule.share[..n],
+        &rule.weight[..n],
+    );
+    for k in 0..n {
+        let (u, w) = (ux[k], uy[k]);
+        let vx = o[0] + u * vxu + w * vxw;
+        let vy = o[1] + u * vyu + w * vyw;
+        let s2 = vx * vx + vy * vy;
+        let d = (s2 + eps2).sqrt();
+        // The weight carries the pressure's share: the boundary part is linear in p.
+        let mut kk = if d > 0.0 { mb * weight[k] / d } else { 0.0 };
+        if fluid && s2 > 0.0 {
+            // The fluid part is not: the area weight alone (w / cos φ), the law at p.
+            let p = max_pressure * share[k];
+            kk += weight[k] / share[k] * law.fluid_part(p, s2.sqrt()) / max_pressure;
+        }
+        let (tx, ty) = (kk * vx, kk * vy);
+        fx -= tx;
+        fy -= ty;
+        // x τ_y − y τ_x with x = xu u + xw w, y = yu u + yw w: collect the u and w parts.
+        mu_ -= u * (xu * ty - yu * tx);
+        mw -= w * (xw * ty - yw * tx);
+        pw += kk * s2;
+    }
+    let scale = max_pressure * a * b;
+    let sums = GridFriction {
+        force: [fx * scale, fy * scale],
+        moment: (mu_ + mw) * scale,
+        power: pw * scale / MW_PER_W,
+        normal_force: std::f64::consts::TAU / 3.0 * scale,
+    };
+    let all = [sums.force[0], sums.force[1], sums.moment, sums.power];
+    if all.iter().all(|v| v.is_finite()) {
+        Ok(sums)
+    } else {
+        Err(Error::invalid(
+            "fluid",
+            "a shear stress that overflows (Newtonian law with exp(alpha p) beyond f64)",
+            "a bounded fluid law (Eyring or limiting shear) at these pressures",
+        ))
+    }
+}
+
+/// Where the sliding velocity vanishes (the spin pole), as the radius `ρ_p` of the unit
+/// disc that maps onto the ellipse (`ρ_p < 1`: inside the ellipse; infinity for a field
+/// without spin). Same arguments as [`ellipse_friction`].
+pub fn sliding_pole_radius(semi_axes: [f64; 2], orientation: f64, field: &VelocityField) -> f64 {
+    let [a, b] = semi_axes;
+    let (s, c) = orientation.sin_cos();
+    let (xu, xw, yu, yw) = (c * a, -s * b, s * a, c * b);
+    let [o, dx, dy] = field.sliding;
+    let (vxu, vxw) = (xu * dx[0] + yu * dy[0], xw * dx[0] + yw * dy[0]);
+    let (vyu, vyw) = (xu * dx[1] + yu * dy[1], xw * dx[1] + yw * dy[1]);
+    // M (u, w) = −o with M = [[vxu, vxw], [vyu, vyw]]: (u, w) = −adj(M) o / det M.
+    let det = vxu * vyw - vxw * vyu;
+    let (nu, nw) = (vyw * o[0] - vxw * o[1], -vyu * o[0] + vxu * o[1]);
+    let r = nu.hypot(nw) / det.abs();
+    if r.is_nan() { f64::INFINITY } else { r }
+}
+
+/// The contact element's three rules and the choice between them (accuracy in
+/// docs/VALIDATION.md, "Friction over a Hertz ellipse"):
+///
+/// - boundary (Coulomb) law, spin pole at `ρ_p ≥ 3`: 6 × 16 nodes (smooth integrand:
+///   errors below 3e-5 of `∫|τ| dA`);
+/// - a fluid part, pole at `ρ_p ≥ 3`: 16 × 16 (the fluid law's knee near the rim converges
+///   algebraically: below 1.5e-3);
+/// - the pole nearer (or inside the ellipse, where the sliding direction turns round the
+///   pole): 16 × 32 (below 2e-3 outside, 5e-3 inside).
+#[derive(Debug, Clone, PartialEq)]
+pub struct HertzFrictionRules {
+    fast: EllipseRule,
+    fluid: EllipseRule,
+    careful: EllipseRule,
+}
+
+/// The pole radius beyond which the lighter rules are used.
+const FAR_POLE: f64 = 3.0;
+
+impl HertzFrictionRules {
+    /// Build the three rules (allocates; once per element).
+    ///
+    /// # Errors
+    /// None in practice (those of [`EllipseRule::new`]).
+    pub fn new() -> Result<Self> {
+        Ok(HertzFrictionRules {
+            fast: EllipseRule::new(6, 16)?,
+            fluid: EllipseRule::new(16, 16)?,
+            careful: EllipseRule::new(16, 32)?,
+        })
+    }
+
+    /// The rule for this ellipse, sliding field and law.
+    pub fn select(
+        &self,
+        semi_axes: [f64; 2],
+        orientation: f64,
+        field: &VelocityField,
+        law: &CellLaw,
+    ) -> &EllipseRule {
+        if sliding_pole_radius(semi_axes, orientation, field) >= FAR_POLE {
+            if law.has_fluid() {
+                &self.fluid
+            } else {
+                &self.fast
+            }
+        } else {
+            &self.careful
+        }
+    }
+
+    /// [`ellipse_friction`] by the rule [`HertzFrictionRules::select`] picks.
+    ///
+    /// # Errors
+    /// Those of [`ellipse_friction`].
+    pub fn friction(
+        &self,
+        semi_axes: [f64; 2],
+        orientation: f64,
+        max_pressure: f64,
+        field: &VelocityField,
+        law: &CellLaw,
+    ) -> Result<GridFriction> {
+        let rule = self.select(semi_axes, orientation, field, law);
+        ellipse_friction(semi_axes, orientation, max_pressure, field, law, rule)
+    }
+}
