@@ -43,6 +43,7 @@ use nalgebra::{Isometry3, Quaternion, Translation3, UnitQuaternion, Vector3};
 use std::cell::RefCell;
 use std::ffi::{CStr, CString, c_char};
 use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::path::Path;
 
 /// Success.
 pub const KONTAKT_OK: i32 = 0;
@@ -302,13 +303,7 @@ pub unsafe extern "C" fn kontakt_element_from_file(
         unsafe { out.write(std::ptr::null_mut()) };
         // SAFETY: `path` is null (refused) or a NUL-terminated string by contract.
         let path = unsafe { text(path, "path") }?;
-        let content = std::fs::read_to_string(path).map_err(|e| {
-            library_error(Error::invalid(
-                "path",
-                path,
-                format!("a readable element case file ({e})"),
-            ))
-        })?;
+        let content = kontakt_case::read_case_file(Path::new(path)).map_err(library_error)?;
         let element = kontakt_case::element_from_toml(&content).map_err(|e| {
             // Name the file in front of the library's message.
             let (code, message) = library_error(e);

@@ -8,6 +8,63 @@ use serde::{Deserialize, Serialize};
 /// Version of the JSON result schema.
 pub const SCHEMA_VERSION: u32 = 1;
 
+/// Largest case or sweep file read \[bytes\]: 16 MiB. Case files are short TOML; gap maps
+/// and tables are separate files with their own limits (`maps`).
+pub const MAX_CASE_FILE_BYTES: u64 = 16 * 1024 * 1024;
+
+/// The text of a case (or sweep) file at `path`, read with a size cap.
+///
+/// # Errors
+/// [`Error::CaseFile`] with key `path`: a file that cannot be opened or read, is not UTF-8
+/// text, or is larger than [`MAX_CASE_FILE_BYTES`] (checked while reading: nothing beyond
+/// the cap is read, whatever the file system says).
+pub fn read_case_file(path: &std::path::Path) -> Result<String> {
+    let fail = |message: String| Error::CaseFile {
+        line: None,
+        key: "path".into(),
+        message,
+    };
+    let file = std::fs::File::open(path)
+        .map_err(|e| fail(format!("cannot read case file {}: {e}", path.display())))?;
+    read_case_text(file, &path.display().to_string())
+}
+
+/// [`read_case_file`] for any reader (standard input): `label` names it in messages.
+///
+/// # Errors
+/// As [`read_case_file`].
+pub fn read_case_text(reader: impl std::io::Read, label: &str) -> Result<String> {
+    use std::io::Read;
+    let mut bytes = Vec::new();
+    reader
+        .take(MAX_CASE_FILE_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| Error::CaseFile {
+            line: None,
+            key: "path".into(),
+            message: format!("cannot read case file {label}: {e}"),
+        })?;
+    if bytes.len() as u64 > MAX_CASE_FILE_BYTES {
+        return Err(Error::CaseFile {
+            line: None,
+            key: "path".into(),
+            message: format!(
+                "case file {label} is larger than 16 MiB (MAX_CASE_FILE_BYTES); a case is a \
+                 short TOML file, with gap maps and tables in files of their own"
+            ),
+        });
+    }
+    String::from_utf8(bytes).map_err(|e| Error::CaseFile {
+        line: None,
+        key: "path".into(),
+        message: format!(
+            "case file {label} is not UTF-8 text (invalid byte at offset {}); is it a binary \
+             file?",
+            e.utf8_error().valid_up_to()
+        ),
+    })
+}
+
 /// Parse TOML into `T`, turning the reader's errors into [`Error::CaseFile`]: the line,
 /// the key path as the file spells it and a message in the schema's words.
 pub(crate) fn parse_toml<T: serde::de::DeserializeOwned>(text: &str) -> Result<T> {

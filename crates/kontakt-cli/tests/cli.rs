@@ -537,3 +537,33 @@ fn usage_errors_are_one_line_and_output_failures_exit_1() {
         assert_eq!(err.matches("(os error 2)").count(), 1, "{err}");
     }
 }
+
+/// Resource limits (issue 14): a case file over 16 MiB is refused after reading at most
+/// 16 MiB + 1 byte (also from standard input), a binary file is named as such, and a thread
+/// count above `kontakt::MAX_THREADS` is an error before any pool is built.
+#[test]
+fn oversized_binary_and_thread_limits() {
+    let dir = tempdir();
+    let big = dir.join("big.toml");
+    std::fs::write(&big, vec![b'#'; 17 << 20]).unwrap();
+    let e = bad(&["solve", big.to_str().unwrap()]);
+    assert!(e.contains("larger than 16 MiB"), "{e}");
+    let out = kontakt()
+        .arg("solve")
+        .arg("-")
+        .write_stdin(vec![b'#'; 17 << 20])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("<stdin> is larger than 16 MiB"));
+    let bin = dir.join("bin.toml");
+    std::fs::write(&bin, [0xff, 0xfe, b'[', b'a', b']']).unwrap();
+    let e = bad(&["solve", bin.to_str().unwrap()]);
+    assert!(e.contains("not UTF-8 text") && e.contains("binary"), "{e}");
+    let case = dir.join("bem.toml");
+    let text = std::fs::read_to_string(examples().join("bem_torus_torus.toml")).unwrap();
+    std::fs::write(&case, text.replace("[bem]", "[bem]\nthreads = 100000")).unwrap();
+    let e = bad(&["solve", case.to_str().unwrap()]);
+    assert!(e.contains("100000") && e.contains("256"), "{e}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -150,13 +150,7 @@ pub fn run_toml(py: Python<'_>, text: &str, base_dir: Option<PathBuf>) -> PyResu
 /// Run a case file (TOML); paths in it are relative to its folder, as for `kontakt solve`.
 #[pyfunction]
 pub fn run_file(py: Python<'_>, path: PathBuf) -> PyResult<CaseResult> {
-    let text = std::fs::read_to_string(&path).map_err(|e| {
-        invalid(
-            "path",
-            path.display(),
-            &format!("a readable case file ({e})"),
-        )
-    })?;
+    let text = kontakt_case::read_case_file(&path).map_err(to_py)?;
     let base = path
         .parent()
         .map_or_else(|| PathBuf::from("."), Path::to_path_buf);

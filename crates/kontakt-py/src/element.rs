@@ -119,13 +119,7 @@ impl ContactElement {
     /// Plan an element from an element case file.
     #[staticmethod]
     fn from_file(path: std::path::PathBuf) -> PyResult<Self> {
-        let text = std::fs::read_to_string(&path).map_err(|e| {
-            invalid(
-                "path",
-                path.display(),
-                &format!("a readable element case file ({e})"),
-            )
-        })?;
+        let text = kontakt_case::read_case_file(&path).map_err(to_py)?;
         Self::from_toml(&text)
     }
 

@@ -33,9 +33,9 @@ pub enum Error {
         /// What is wrong and how to fix it.
         reason: String,
     },
-    /// A case file that is not valid TOML or does not follow its schema (an unknown or
-    /// missing key, a value of the wrong type), located by its line and named by its key
-    /// path as the file spells it (`contact.angle_deg`).
+    /// A case file that cannot be read (key `path`), is not valid TOML or does not follow
+    /// its schema (an unknown or missing key, a value of the wrong type), located by its
+    /// line and named by its key path as the file spells it (`contact.angle_deg`).
     #[error("{}{message}", .line.map(|l| format!("line {l}: ")).unwrap_or_default())]
     CaseFile {
         /// The line of the file (1-based), when the reader knows it.

@@ -111,6 +111,10 @@ pub use error::{Error, Result};
 /// The version of this crate, echoed in every serialized result.
 pub const VERSION: &str = env!("CARGO_PKG_VERSION");
 
+/// Most threads any solver or sweep of kontakt accepts (a documented bound, so that a typo
+/// such as `threads = 100000` is an error rather than an attempt to start that many).
+pub const MAX_THREADS: usize = 256;
+
 /// The README's Rust example is compiled and run as a doctest, so it stays true.
 #[doc = include_str!("../../../README.md")]
 #[cfg(doctest)]

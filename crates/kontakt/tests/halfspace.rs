@@ -894,6 +894,13 @@ fn bad_moduli_and_options_are_named_errors() {
             },
             "threads",
         ),
+        (
+            SolverOptions {
+                threads: Some(kontakt::MAX_THREADS + 1),
+                ..Default::default()
+            },
+            "threads",
+        ),
     ] {
         let e = HalfSpaceSolver::new(grid, e_star(), opts).unwrap_err();
         assert_eq!(invalid_field(&e), field);

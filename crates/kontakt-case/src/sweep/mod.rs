@@ -47,8 +47,8 @@ pub const MAX_CHUNK_SIZE: u64 = 10_000_000;
 /// Largest number of cases run without `max_cases` raised in the sweep file (or
 /// `--max-cases`).
 pub const DEFAULT_MAX_CASES: u64 = 10_000_000;
-/// Most worker threads of [`Sweep::run_local`].
-pub const MAX_THREADS: usize = 256;
+/// Most worker threads of [`Sweep::run_local`]: the library's bound.
+pub use kontakt::MAX_THREADS;
 
 /// What can go wrong with a sweep.
 #[derive(Debug, thiserror::Error)]
@@ -438,7 +438,7 @@ impl Sweep {
     /// # Errors
     /// As [`Sweep::from_path`].
     pub fn from_path_with_limit(path: &Path, max_cases: Option<u64>) -> SweepResult<Self> {
-        let text = std::fs::read_to_string(path).map_err(|e| SweepError::io(path, e))?;
+        let text = crate::read_case_file(path).map_err(|e| input(e.to_string()))?;
         let dir = match path.parent() {
             Some(d) if !d.as_os_str().is_empty() => d,
             _ => Path::new("."),

@@ -15,7 +15,7 @@ pub mod pimp;
 pub mod sweep;
 pub mod traction;
 pub mod validate;
-use std::io::{Read, Write};
+use std::io::Write;
 
 /// Bad input detected by the CLI itself (unreadable file).
 #[derive(Debug, thiserror::Error)]
@@ -180,16 +180,13 @@ pub fn read_case_for(
 /// Read a case file (or standard input for `-`): its label for messages and its text.
 pub fn read_case(path: &std::path::Path) -> Result<(String, String)> {
     if path.as_os_str() == "-" {
-        let mut s = String::new();
-        std::io::stdin()
-            .read_to_string(&mut s)
-            .map_err(|e| InputError(format!("cannot read the case from stdin: {e}")))?;
-        Ok(("<stdin>".to_string(), s))
+        let text = kontakt_case::read_case_text(std::io::stdin(), "<stdin>")?;
+        Ok(("<stdin>".to_string(), text))
     } else {
-        let label = path.display().to_string();
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| InputError(format!("cannot read case file {label}: {e}")))?;
-        Ok((label, text))
+        Ok((
+            path.display().to_string(),
+            kontakt_case::read_case_file(path)?,
+        ))
     }
 }
 

@@ -198,10 +198,14 @@ const PARALLEL_MIN_CELLS: usize = 96 * 96;
 /// count (all cores, or the size of the pool the caller runs in).
 ///
 /// # Errors
-/// [`Error::InvalidInput`] for `Some(0)`.
+/// [`Error::InvalidInput`] for `Some(0)` or more than [`crate::MAX_THREADS`].
 pub(super) fn resolve_threads(threads: Option<usize>) -> Result<usize> {
     match threads {
-        Some(0) => Err(Error::invalid("threads", 0, ">= 1 thread, or unset")),
+        Some(n) if !(1..=crate::MAX_THREADS).contains(&n) => Err(Error::invalid(
+            "threads",
+            n,
+            "1 <= threads <= 256 (kontakt::MAX_THREADS), or unset for all cores",
+        )),
         Some(n) => Ok(n),
         None => Ok(rayon::current_num_threads()),
     }
@@ -214,7 +218,7 @@ impl HalfSpacePlan {
     /// Grids below 96 × 96 cells always run serially.
     ///
     /// # Errors
-    /// [`Error::InvalidInput`] for a non-positive modulus or `threads == Some(0)`.
+    /// [`Error::InvalidInput`] for a non-positive modulus or `threads` outside 1..=[`crate::MAX_THREADS`].
     pub fn new(
         grid: &Grid2,
         e_star: f64,
@@ -735,7 +739,7 @@ impl ElasticOperator {
     /// `boundary` (see [`HalfSpacePlan::new`] for `threads`).
     ///
     /// # Errors
-    /// [`Error::InvalidInput`] for a non-positive modulus or `threads == Some(0)`.
+    /// [`Error::InvalidInput`] for a non-positive modulus or `threads` outside 1..=[`crate::MAX_THREADS`].
     pub fn new(
         grid: &Grid2,
         e_star: f64,

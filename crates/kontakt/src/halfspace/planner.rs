@@ -76,7 +76,7 @@ impl HalfSpacePlanner {
     /// [`grid`](HalfSpacePlan::grid) is the first grid it was planned for.
     ///
     /// # Errors
-    /// [`crate::Error::InvalidInput`] for a non-positive modulus or `threads == Some(0)`.
+    /// [`crate::Error::InvalidInput`] for a non-positive modulus or `threads` outside 1..=[`crate::MAX_THREADS`].
     pub fn plan(
         &mut self,
         grid: &Grid2,

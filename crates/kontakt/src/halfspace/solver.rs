@@ -90,8 +90,15 @@ impl SolverOptions {
         if self.max_iterations == 0 {
             return Err(Error::invalid("max_iterations", 0, ">= 1"));
         }
-        if self.threads == Some(0) {
-            return Err(Error::invalid("threads", 0, ">= 1, or unset for all cores"));
+        if let Some(n) = self
+            .threads
+            .filter(|n| !(1..=crate::MAX_THREADS).contains(n))
+        {
+            return Err(Error::invalid(
+                "threads",
+                n,
+                "1 <= threads <= 256 (kontakt::MAX_THREADS), or unset for all cores",
+            ));
         }
         Ok(())
     }
