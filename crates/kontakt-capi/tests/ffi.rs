@@ -268,7 +268,11 @@ fn case_files_load() {
     // SAFETY: a valid C string and a writable out pointer.
     let code = unsafe { kontakt_element_from_file(missing.as_ptr(), &mut e) };
     assert_eq!(code, KONTAKT_INVALID_INPUT);
-    assert!(last_error().starts_with("cannot read case file"), "{}", last_error());
+    assert!(
+        last_error().starts_with("cannot read case file"),
+        "{}",
+        last_error()
+    );
     assert!(e.is_null());
 }
 

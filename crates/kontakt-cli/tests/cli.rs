@@ -567,3 +567,21 @@ fn oversized_binary_and_thread_limits() {
     assert!(e.contains("100000") && e.contains("256"), "{e}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Progress bars (issue 14) are drawn only on a terminal: a piped run of a long command
+/// writes nothing to standard error.
+#[test]
+fn long_runs_are_quiet_when_piped() {
+    let dir = tempdir();
+    let out = kontakt()
+        .args(["validate", "--out", dir.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    assert!(
+        out.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -22,6 +22,25 @@ use std::io::Write;
 #[error("{0}")]
 pub struct InputError(pub String);
 
+/// A progress indicator on standard error, shown only when standard error is a terminal
+/// and the output is not JSON (`quiet`): a bar of `len` steps, or a spinner for `None`.
+/// Piped or redirected runs stay silent.
+pub fn progress(len: Option<u64>, template: &str, quiet: bool) -> Option<indicatif::ProgressBar> {
+    use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+    use std::io::IsTerminal;
+    if quiet || !std::io::stderr().is_terminal() {
+        return None;
+    }
+    let bar = ProgressBar::with_draw_target(len, ProgressDrawTarget::stderr());
+    let style =
+        ProgressStyle::with_template(template).unwrap_or_else(|_| ProgressStyle::default_bar());
+    bar.set_style(style);
+    if len.is_none() {
+        bar.enable_steady_tick(std::time::Duration::from_millis(120));
+    }
+    Some(bar)
+}
+
 /// An output file or folder that cannot be written: a runtime failure (exit status 1),
 /// whichever flag named it (`--csv`, `--map`, `--plot`, `--out`).
 pub fn cannot_write(

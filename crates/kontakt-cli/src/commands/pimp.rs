@@ -1,7 +1,7 @@
 //! PimP output: the result table, the pressure CSV and the pressure map; and the demo
 //! report of the roller-end/rib study.
 
-use crate::commands::{InputError, cannot_write};
+use crate::commands::{InputError, cannot_write, progress};
 use anyhow::{Context, Result};
 use kontakt::bearing::{DemoRow, DemoStudy, STUDY_FORCES, TABLE1, demo_study};
 use kontakt::geometry::Grid2;
@@ -300,8 +300,16 @@ impl Written {
 /// folder: the computation is the library's, this renders it.
 pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
     std::fs::create_dir_all(out_dir).map_err(|e| cannot_write("create", out_dir, e))?;
-    let DemoStudy { rows, maps: fields } =
-        demo_study(&STUDY_FORCES).context("the roller-end/rib demo study")?;
+    let spinner = progress(
+        None,
+        "{spinner} [{elapsed_precise}] the roller-end/rib study: 8 pairings, PimP and Hertz",
+        json,
+    );
+    let study = demo_study(&STUDY_FORCES).context("the roller-end/rib demo study");
+    if let Some(s) = &spinner {
+        s.finish_and_clear();
+    }
+    let DemoStudy { rows, maps: fields } = study?;
     let mut maps = Vec::with_capacity(fields.len());
     for m in &fields {
         let file = format!("{}_{:.0}N.png", m.pairing, m.force_n);

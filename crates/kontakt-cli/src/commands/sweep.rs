@@ -2,11 +2,10 @@
 //! bar, resumable, combined into one table. A thin shell over `kontakt_case::Sweep`.
 
 use crate::cli::{SweepArgs, SweepFormat};
-use crate::commands::InputError;
+use crate::commands::{InputError, progress};
 use anyhow::Result;
-use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use kontakt_case::sweep::{LocalOptions, MAX_THREADS, OutputFormat, Progress, Sweep};
-use std::io::{IsTerminal, Write};
+use std::io::Write;
 
 /// Run the subcommand.
 pub fn run(args: &SweepArgs, out: &mut impl Write) -> Result<()> {
@@ -21,20 +20,12 @@ pub fn run(args: &SweepArgs, out: &mut impl Write) -> Result<()> {
         SweepFormat::Parquet => OutputFormat::Parquet,
         SweepFormat::Csv => OutputFormat::Csv,
     };
-    let show = !args.quiet && !args.json && std::io::stderr().is_terminal();
-    let bar = if show {
-        let bar = ProgressBar::with_draw_target(Some(sweep.len()), ProgressDrawTarget::stderr());
-        bar.set_style(
-            ProgressStyle::with_template(
-                "{spinner} [{elapsed_precise}] {wide_bar} {pos}/{len} cases ({per_sec}, {eta} left)",
-            )
-            .unwrap_or_else(|_| ProgressStyle::default_bar()),
-        );
-        Some(bar)
-    } else {
-        None
-    };
-    let progress = |p: Progress| {
+    let bar = progress(
+        Some(sweep.len()),
+        "{spinner} [{elapsed_precise}] {wide_bar} {pos}/{len} cases ({per_sec}, {eta} left)",
+        args.quiet || args.json,
+    );
+    let on_progress = |p: Progress| {
         if let Some(b) = &bar {
             b.set_position(p.cases_done);
         }
@@ -44,7 +35,7 @@ pub fn run(args: &SweepArgs, out: &mut impl Write) -> Result<()> {
         LocalOptions {
             threads: args.threads.unwrap_or(0),
             format,
-            progress: Some(&progress),
+            progress: Some(&on_progress),
         },
     );
     if let Some(b) = &bar {

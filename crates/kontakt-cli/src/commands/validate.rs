@@ -1,8 +1,8 @@
 //! `kontakt validate`: PimP against the coupled half-space solver for the roller-end/rib
 //! pairings of Wirsching et al. (2020) (its Figures 7-10 with the half-space solver in the place of FEM).
 
-use crate::commands::cannot_write;
 use crate::commands::pimp::{MapNotes, write_map};
+use crate::commands::{cannot_write, progress};
 use anyhow::{Context, Result};
 use kontakt::bearing::validation::{PairingStudy, ValidationRow, validate_pairing};
 use kontakt::bearing::{STUDY_FORCES, TABLE1};
@@ -47,11 +47,25 @@ pub fn validate(out_dir: &Path, cells: usize, out: &mut impl Write, json: bool) 
         .validate()
         .map_err(|e| e.map_field(|_| "--cells".into()))?;
     let mut studies = Vec::new();
+    let bar = progress(
+        Some(TABLE1.len() as u64),
+        "{spinner} [{elapsed_precise}] {wide_bar} {pos}/{len} pairings: {msg}",
+        json,
+    );
     for &(name, ..) in TABLE1.iter() {
+        if let Some(b) = &bar {
+            b.set_message(name);
+        }
         studies.push(
             validate_pairing(name, &STUDY_FORCES, options)
                 .with_context(|| format!("validating {name}"))?,
         );
+        if let Some(b) = &bar {
+            b.inc(1);
+        }
+    }
+    if let Some(b) = &bar {
+        b.finish_and_clear();
     }
     write_csv(&out_dir.join("results.csv"), &studies)?;
     // Counted as written, for the summary line.
