@@ -222,6 +222,50 @@ fn z_axis() -> [f64; 3] {
     [0.0, 0.0, 1.0]
 }
 
+impl SurfaceSpec {
+    /// A key of another shape (a cone's `half_angle_deg` on a sphere) is an error, as an
+    /// unknown key is: it would otherwise be ignored without a word.
+    fn reject_other_shapes_keys(&self, prefix: &str) -> Result<()> {
+        let takes: &[&str] = match self.shape.as_str() {
+            "plane" => &[],
+            "sphere" => &["radius_mm"],
+            "cone" => &["half_angle_deg"],
+            "torus" => &["major_mm", "minor_mm"],
+            "crowned" => &["radius_mm", "crown_radius_mm", "half_length_mm"],
+            // An unknown shape is reported by `build` with the valid ones.
+            _ => return Ok(()),
+        };
+        let given = [
+            ("radius_mm", self.radius_mm),
+            ("half_angle_deg", self.half_angle_deg),
+            ("major_mm", self.major_mm),
+            ("minor_mm", self.minor_mm),
+            ("crown_radius_mm", self.crown_radius_mm),
+            ("half_length_mm", self.half_length_mm),
+        ];
+        match given
+            .iter()
+            .find(|(key, v)| v.is_some() && !takes.contains(key))
+        {
+            None => Ok(()),
+            Some((key, v)) => Err(Error::invalid(
+                format!("{prefix}.{key}"),
+                v.unwrap_or_default(),
+                format!(
+                    "no {key} for shape = \"{}\" (it takes {}; remove the key or change the \
+                     shape)",
+                    self.shape,
+                    if takes.is_empty() {
+                        "no size keys".to_string()
+                    } else {
+                        takes.join(", ")
+                    }
+                ),
+            )),
+        }
+    }
+}
+
 fn need(field: String, v: Option<f64>, shape: &str) -> Result<f64> {
     v.ok_or_else(|| Error::invalid(field, "missing", format!("a value for shape = \"{shape}\"")))
 }
@@ -234,6 +278,7 @@ impl SurfaceSpec {
     pub fn build(&self, prefix: &str) -> Result<PlacedSurface> {
         let f = |k: &str| format!("{prefix}.{k}");
         let s = self.shape.as_str();
+        self.reject_other_shapes_keys(prefix)?;
         let surface = match s {
             "plane" => Ok(Surface::plane(self.material)),
             "sphere" => Surface::sphere(need(f("radius_mm"), self.radius_mm, s)?, self.material),

@@ -146,6 +146,15 @@ fn errors_name_case_keys() {
         (BALL.replace("\"hertz\"", "\"fem\""), "element.backend"),
         (format!("{BALL}colour = 1\n"), "element.colour"),
         (format!("{BALL}cells = [64, 64]\n"), "element.cells"),
+        // A key of another shape (a cone's half-angle on the sphere) is refused.
+        (
+            BALL.replace("radius_mm = 10.0", "radius_mm = 10.0\nhalf_angle_deg = 5.0"),
+            "geometry.body1.half_angle_deg",
+        ),
+        (
+            BALL.replace("shape = \"plane\"", "shape = \"plane\"\nminor_mm = 1.0"),
+            "geometry.body2.minor_mm",
+        ),
         (format!("{BALL}mode = \"published\"\n"), "element.mode"),
         (
             format!("{BALL}max_approach_ratio = -1.0\n"),

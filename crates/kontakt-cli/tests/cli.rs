@@ -399,8 +399,12 @@ fn stdin_case() {
     assert_eq!(v["kind"], "line");
 }
 
+/// A fresh folder per call: the tests of this file run in parallel in one process, and
+/// some remove their folder when done.
 fn tempdir() -> PathBuf {
-    let d = std::env::temp_dir().join(format!("kontakt-cli-test-{}", std::process::id()));
+    static NEXT: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let n = NEXT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let d = std::env::temp_dir().join(format!("kontakt-cli-test-{}-{n}", std::process::id()));
     std::fs::create_dir_all(&d).expect("temp dir");
     d
 }
