@@ -88,6 +88,14 @@ fn run(case: &PimpCase, base_dir: &Path, given: Option<GapMap>) -> Result<BemOut
             "\"bem\" for this schema",
         ));
     }
+    if case.pimp.is_some() {
+        return Err(Error::invalid(
+            "pimp",
+            "a [pimp] table",
+            "no [pimp] table in a method = \"bem\" case (it holds PimP's options: use \
+             method = \"pimp\", or [bem] for the half-space solver's)",
+        ));
+    }
     let m1 = material(&case.body1, "body1")?;
     let m2 = material(&case.body2, "body2")?;
     let spec = case.bem.unwrap_or_default();

@@ -72,10 +72,10 @@ pub struct PimpCase {
     pub method: String,
     /// The two surfaces.
     pub geometry: GeometrySpec,
-    /// PimP options (`method = "pimp"`).
+    /// PimP options (`method = "pimp"` only; refused in a `"bem"` case).
     #[serde(default)]
-    pub pimp: PimpSpec,
-    /// Half-space solver options (`method = "bem"`).
+    pub pimp: Option<PimpSpec>,
+    /// Half-space solver options (`method = "bem"` only; refused in a `"pimp"` case).
     #[serde(default)]
     pub bem: Option<BemSpec>,
     /// Body 1 material (the roller for `roller_rib`).
@@ -504,12 +504,21 @@ pub fn run_pimp_case(case: &PimpCase) -> Result<PimpOutcome> {
             "\"pimp\" for this schema",
         ));
     }
+    if case.bem.is_some() {
+        return Err(Error::invalid(
+            "bem",
+            "a [bem] table",
+            "no [bem] table in a method = \"pimp\" case (it holds the half-space solver's \
+             options: use method = \"bem\", or [pimp] for PimP's)",
+        ));
+    }
+    let pimp = case.pimp.unwrap_or_default();
     let m1 = material(&case.body1, "body1")?;
     let m2 = material(&case.body2, "body2")?;
     let options = PimpOptions {
-        mode: case.pimp.mode,
-        cells: case.pimp.cells,
-        extent: case.pimp.extent_mm,
+        mode: pimp.mode,
+        cells: pimp.cells,
+        extent: pimp.extent_mm,
         ..PimpOptions::default()
     };
     let pimp = Pimp::new(m1, m2, options).map_err(|e| {

@@ -236,6 +236,28 @@ fn bad_case_files_fail_with_one_line() {
     assert!(l.contains("exactly one of force_n"), "{l}");
     let l = bad(&["solve", dir.join("missing.toml").to_str().unwrap()]);
     assert!(l.contains("cannot read case file"), "{l}");
+    // A table of the other method (PimP's options in a half-space case and back) is
+    // refused, as an unknown key is.
+    let bem = std::fs::read_to_string(examples().join("bem_torus_torus.toml")).unwrap();
+    let p = write(
+        "bem_pimp.toml",
+        &format!("{bem}\n[pimp]\nmode = \"published\"\n"),
+    );
+    let l = bad(&["solve", &p]);
+    assert!(
+        l.contains("invalid pimp") && l.contains("method = \"bem\""),
+        "{l}"
+    );
+    let pimp = std::fs::read_to_string(examples().join("pimp_sphere_on_torus.toml")).unwrap();
+    let p = write(
+        "pimp_bem.toml",
+        &format!("{pimp}\n[bem]\ncells = [32, 32]\n"),
+    );
+    let l = bad(&["solve", &p]);
+    assert!(
+        l.contains("invalid bem") && l.contains("method = \"pimp\""),
+        "{l}"
+    );
 }
 
 #[test]

@@ -8,7 +8,7 @@ use crate::hertz::Material;
 use kontakt::gap::{GapMap, MapKind};
 use kontakt::halfspace::Boundary;
 use kontakt::material::ElasticMaterial;
-use kontakt_case::pimp_case::{BemSpec, GeometrySpec, MaterialSpec, PimpCase, PimpLoad, PimpSpec};
+use kontakt_case::pimp_case::{BemSpec, GeometrySpec, MaterialSpec, PimpCase, PimpLoad};
 use numpy::{AllowTypeChange, IntoPyArray, PyArray1, PyArray2, PyArrayLike2};
 use pyo3::prelude::*;
 
@@ -192,7 +192,7 @@ impl HalfSpace {
                 values: kind,
                 boundary: self.boundary,
             },
-            pimp: PimpSpec::default(),
+            pimp: None,
             bem: Some(spec),
             body1: material(&self.materials[0]),
             body2: material(&self.materials[1]),
