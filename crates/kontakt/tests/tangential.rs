@@ -809,10 +809,9 @@ fn fastsim_circular_longitudinal_behaviour() {
     );
 }
 
-/// The traction-curve interface: all three models start at 0, are odd, and Carter and
-/// FASTSIM end at 1.
-#[test]
-fn traction_curves_share_one_interface() {
+/// Carter, Kalker linear and FASTSIM (μ = 0.05) on the ellipse of a 1500 N Hertz contact
+/// (R 20 / 20 against 20 / 200 mm), rolling along the minor axis.
+fn carter_kalker_fastsim() -> (ContactEllipse, Vec<Box<dyn TractionCurve>>) {
     let hertz = HertzPointContact::new(
         PointGeometry::new([20.0, 20.0], [20.0, 200.0], 0.0).unwrap(),
         STEEL,
@@ -826,6 +825,14 @@ fn traction_curves_share_one_interface() {
         Box::new(KalkerLinear::new(e, &STEEL, &STEEL, 0.05).unwrap()),
         Box::new(Fastsim::new(e, &STEEL, &STEEL, 0.05, FastsimOptions::default()).unwrap()),
     ];
+    (e, models)
+}
+
+/// The traction-curve interface: all three models start at 0, are odd, and Carter and
+/// FASTSIM end at 1.
+#[test]
+fn traction_curves_share_one_interface() {
+    let (_, models) = carter_kalker_fastsim();
     let xs: Vec<f64> = (0..=100).map(|i| 0.01 * i as f64 / 100.0).collect();
     for m in &models {
         let curve = m.traction_curve(&xs).unwrap();
@@ -863,33 +870,21 @@ fn creepages_over_the_f64_range() -> Vec<f64> {
 /// FASTSIM with all three creepages huge slides everywhere, finite and unchanged in force.
 #[test]
 fn traction_curves_are_monotone_and_bounded_over_the_f64_range() {
-    let hertz = HertzPointContact::new(
-        PointGeometry::new([20.0, 20.0], [20.0, 200.0], 0.0).unwrap(),
-        STEEL,
-        STEEL,
-    )
-    .unwrap();
-    let e = ContactEllipse::from_hertz(&hertz.solve_force(1500.0).unwrap(), EllipseAxis::Minor)
-        .unwrap();
-    let models: Vec<Box<dyn TractionCurve>> = vec![
-        Box::new(Carter::from_ellipse(&e, &STEEL, &STEEL, 0.05).unwrap()),
-        Box::new(KalkerLinear::new(e, &STEEL, &STEEL, 0.05).unwrap()),
-        Box::new(Fastsim::new(e, &STEEL, &STEEL, 0.05, FastsimOptions::default()).unwrap()),
-        Box::new(AsperityCurve::new(
-            AsperityTraction::new(AsperityTractionParams::new(
-                NominalContact::Circular {
-                    half_width: 0.4,
-                    max_pressure: None,
-                },
-                680.0,
-                0.3,
-                STEEL,
-                [0.02, 0.02],
-                0.05,
-            ))
-            .unwrap(),
-        )),
-    ];
+    let (e, mut models) = carter_kalker_fastsim();
+    models.push(Box::new(AsperityCurve::new(
+        AsperityTraction::new(AsperityTractionParams::new(
+            NominalContact::Circular {
+                half_width: 0.4,
+                max_pressure: None,
+            },
+            680.0,
+            0.3,
+            STEEL,
+            [0.02, 0.02],
+            0.05,
+        ))
+        .unwrap(),
+    )));
     let xs = creepages_over_the_f64_range();
     for m in &models {
         let mut last = f64::NEG_INFINITY;

@@ -102,20 +102,8 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                     }
                     if let Some(path) = &args.map {
                         let mode = outcome.report.mode.map_or("", |m| m.as_str());
-                        let title = format!(
-                            "{}, {:.0} N, PimP {mode}",
-                            name.as_deref().unwrap_or(&outcome.report.geometry),
-                            outcome.report.force_n,
-                        );
-                        let hertz = outcome.report.hertz.as_ref().map(|h| h.semi_axes_mm);
-                        pimp::write_map(
-                            path,
-                            &s.grid,
-                            &s.pressure,
-                            &title,
-                            &[],
-                            &pimp::MapNotes::principal(hertz),
-                        )?;
+                        let what = format!("PimP {mode}");
+                        write_case_map(path, &outcome.report, s, name.as_deref(), &what)?;
                     }
                     pimp::print_report(out, &outcome.report, args.json)
                 }
@@ -133,19 +121,12 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                         )?;
                     }
                     if let Some(path) = &args.map {
-                        let title = format!(
-                            "{}, {:.0} N, coupled half-space",
-                            name.as_deref().unwrap_or(&outcome.report.geometry),
-                            outcome.report.force_n,
-                        );
-                        let hertz = outcome.report.hertz.as_ref().map(|h| h.semi_axes_mm);
-                        pimp::write_map(
+                        write_case_map(
                             path,
-                            &s.grid,
-                            &s.pressure,
-                            &title,
-                            &[],
-                            &pimp::MapNotes::principal(hertz),
+                            &outcome.report,
+                            s,
+                            name.as_deref(),
+                            "coupled half-space",
                         )?;
                     }
                     pimp::print_report(out, &outcome.report, args.json)
@@ -194,6 +175,31 @@ pub fn read_case_for(
         .into());
     }
     Ok((label, text))
+}
+
+/// `--map` of a PimP or half-space case: the pressure map titled by the case's name (or
+/// geometry), force and method, with the local Hertz ellipse.
+fn write_case_map<D>(
+    path: &std::path::Path,
+    report: &kontakt_case::PimpReport,
+    s: &kontakt::field::NormalSolution<D>,
+    name: Option<&str>,
+    what: &str,
+) -> Result<()> {
+    let title = format!(
+        "{}, {:.0} N, {what}",
+        name.unwrap_or(&report.geometry),
+        report.force_n,
+    );
+    let hertz = report.hertz.as_ref().map(|h| h.semi_axes_mm);
+    pimp::write_map(
+        path,
+        &s.grid,
+        &s.pressure,
+        &title,
+        &[],
+        &pimp::MapNotes::principal(hertz),
+    )
 }
 
 /// Read a case file (or standard input for `-`): its label for messages and its text.
