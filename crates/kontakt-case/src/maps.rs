@@ -73,6 +73,7 @@ fn read_csv(bytes: &[u8]) -> std::result::Result<(usize, usize, Vec<f64>), Strin
 }
 
 fn read_npy(bytes: &[u8]) -> std::result::Result<(usize, usize, Vec<f64>), String> {
+    check_npy_shape(bytes)?;
     let npy = npyz::NpyFile::new(bytes).map_err(|e| e.to_string())?;
     let shape = npy.shape().to_vec();
     if shape.len() != 2 {
@@ -95,6 +96,61 @@ fn read_npy(bytes: &[u8]) -> std::result::Result<(usize, usize, Vec<f64>), Strin
             .collect(),
     };
     Ok((nx, ny, values))
+}
+
+/// Check the shape in a `.npy` header against the data the file holds, before the reader
+/// sees it: a shape whose product overflows 64 bits (the reader would overflow) or that
+/// needs more values than the file has bytes (a truncated file, or a header claiming a huge
+/// array) is refused here. Headers this cannot read are left to the reader's own errors.
+fn check_npy_shape(bytes: &[u8]) -> std::result::Result<(), String> {
+    if bytes.len() < 10 || !bytes.starts_with(b"\x93NUMPY") {
+        return Ok(());
+    }
+    let (len, start) = if bytes[6] == 1 {
+        (u16::from_le_bytes([bytes[8], bytes[9]]) as usize, 10usize)
+    } else if bytes.len() >= 12 {
+        let l = u32::from_le_bytes([bytes[8], bytes[9], bytes[10], bytes[11]]);
+        (l as usize, 12)
+    } else {
+        return Ok(());
+    };
+    let Some(header) = bytes.get(start..start.saturating_add(len)) else {
+        return Ok(());
+    };
+    let header = String::from_utf8_lossy(header);
+    let Some(after) = header
+        .find("'shape'")
+        .or_else(|| header.find("\"shape\""))
+        .map(|i| &header[i + 7..])
+    else {
+        return Ok(());
+    };
+    let Some(dims) = after
+        .split_once('(')
+        .and_then(|(_, rest)| rest.split_once(')'))
+        .map(|(dims, _)| dims)
+    else {
+        return Ok(());
+    };
+    let mut count: u64 = 1;
+    let mut shown = Vec::new();
+    for d in dims.split(',').map(str::trim).filter(|d| !d.is_empty()) {
+        let Ok(n) = d.parse::<u64>() else {
+            return Ok(());
+        };
+        shown.push(d.to_string());
+        count = count.checked_mul(n).ok_or_else(|| {
+            format!("the header's shape ({dims}) has more than 2^64 values")
+        })?;
+    }
+    let data = bytes.len() - start - len;
+    if count > data as u64 {
+        return Err(format!(
+            "the file is truncated or its header is wrong: shape ({}) needs {count} values, the file holds {data} bytes of data",
+            shown.join(", ")
+        ));
+    }
+    Ok(())
 }
 
 #[cfg(test)]
@@ -148,6 +204,21 @@ mod tests {
         let ints: Vec<u8> = [1i64, 2].iter().flat_map(|v| v.to_le_bytes()).collect();
         let e = read_npy(&npy_bytes("<i8", "(1, 2)", &ints)).unwrap_err();
         assert!(e.contains("float64 or float32"), "{e}");
+    }
+
+    /// Found by the fuzz harness (tests/fuzz.rs): a header whose shape overflows 64 bits
+    /// made the `.npy` reader panic (multiply with overflow); a header claiming a huge
+    /// shape over a few bytes of data is a truncated file, refused before any allocation.
+    #[test]
+    fn npy_header_shape_overflow_and_truncation() {
+        let e = read_npy(&npy_bytes("<f8", "(4294967296, 4294967296)", &[])).unwrap_err();
+        assert!(e.contains("more than 2^64 values"), "{e}");
+        let e = read_npy(&npy_bytes("<f8", "(18446744073709551615, 2)", &[0; 16])).unwrap_err();
+        assert!(e.contains("more than 2^64 values"), "{e}");
+        let e = read_npy(&npy_bytes("<f8", "(100000, 100000)", &[0; 64])).unwrap_err();
+        assert!(e.contains("truncated") && e.contains("(100000, 100000)"), "{e}");
+        let v64: Vec<u8> = [1.0f64, 2.0].iter().flat_map(|v| v.to_le_bytes()).collect();
+        assert!(read_npy(&npy_bytes("<f8", "(1, 2)", &v64)).is_ok());
     }
 
     #[test]

@@ -107,13 +107,10 @@ fn check_message(what: &str, message: &str) {
     );
 }
 
-/// A report: no NaN or infinity, neither as a number nor written out.
+/// A report: no NaN or infinity among its numbers. (JSON writes null for them, so the
+/// report is looked at as TOML values, which keep them; its strings may hold any text.)
 fn check_report<T: serde::Serialize>(report: &T) {
-    let json = serde_json::to_string(report).unwrap();
-    for bad in ["NaN", "inf", "Infinity"] {
-        assert!(!json.contains(bad), "{bad} in the report: {json}");
-    }
-    // JSON writes null for NaN and inf; TOML values keep them, so look there.
+    serde_json::to_string(report).unwrap();
     if let Ok(v) = Value::try_from(report) {
         if let Some(at) = non_finite(&v, "report") {
             panic!("non-finite number in the report: {at}");
