@@ -15,6 +15,9 @@ use std::path::Path;
 /// ragged CSV row (named), or the errors of [`GapMap::new`].
 pub fn read_gap_map(path: &Path, spacing: [f64; 2], kind: MapKind) -> Result<GapMap> {
     let file_err = |why: String| {
+        // The readers' messages may span lines (the .npy header parser draws a caret
+        // under the bad character): one line, as every error.
+        let why = why.split_whitespace().collect::<Vec<_>>().join(" ");
         Error::invalid(
             "gap_map.file",
             path.display(),
@@ -132,17 +135,22 @@ fn check_npy_shape(bytes: &[u8]) -> std::result::Result<(), String> {
     else {
         return Ok(());
     };
-    let mut count: u64 = 1;
+    // The product of the non-zero dimensions bounds every partial product the reader
+    // forms (its strides), also when a zero makes the array empty.
+    let mut nonzero: u64 = 1;
+    let mut empty = false;
     let mut shown = Vec::new();
     for d in dims.split(',').map(str::trim).filter(|d| !d.is_empty()) {
         let Ok(n) = d.parse::<u64>() else {
             return Ok(());
         };
         shown.push(d.to_string());
-        count = count.checked_mul(n).ok_or_else(|| {
+        empty |= n == 0;
+        nonzero = nonzero.checked_mul(n.max(1)).ok_or_else(|| {
             format!("the header's shape ({dims}) has more than 2^64 values")
         })?;
     }
+    let count = if empty { 0 } else { nonzero };
     let data = bytes.len() - start - len;
     if count > data as u64 {
         return Err(format!(
@@ -215,10 +223,29 @@ mod tests {
         assert!(e.contains("more than 2^64 values"), "{e}");
         let e = read_npy(&npy_bytes("<f8", "(18446744073709551615, 2)", &[0; 16])).unwrap_err();
         assert!(e.contains("more than 2^64 values"), "{e}");
+        let e = read_npy(&npy_bytes("<f8", "(0, 2, 18446744073709551615)", &[])).unwrap_err();
+        assert!(e.contains("more than 2^64 values"), "{e}");
         let e = read_npy(&npy_bytes("<f8", "(100000, 100000)", &[0; 64])).unwrap_err();
         assert!(e.contains("truncated") && e.contains("(100000, 100000)"), "{e}");
         let v64: Vec<u8> = [1.0f64, 2.0].iter().flat_map(|v| v.to_le_bytes()).collect();
         assert!(read_npy(&npy_bytes("<f8", "(1, 2)", &v64)).is_ok());
+    }
+
+    /// Found by the fuzz harness: a `.npy` header that is not a Python literal gave an
+    /// error of several lines (the parser's caret drawing); it is one line.
+    #[test]
+    fn npy_bad_header_is_one_line() {
+        let path = std::env::temp_dir().join(format!(
+            "kontakt-case-badheader-{}-{:?}.npy",
+            std::process::id(),
+            std::thread::current().id()
+        ));
+        std::fs::write(&path, npy_bytes("[('a', '<f8')]", "()", &[0; 8])).unwrap();
+        let e = read_gap_map(&path, [0.01, 0.01], MapKind::Gap).unwrap_err();
+        std::fs::remove_file(&path).unwrap();
+        let m = e.to_string();
+        assert_eq!(e.field(), Some("gap_map.file"));
+        assert!(!m.contains('\n') && m.contains("syntax error"), "{m}");
     }
 
     #[test]
