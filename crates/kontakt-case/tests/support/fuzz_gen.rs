@@ -129,6 +129,9 @@ pub enum Edit {
     Set(usize, Value),
     /// Scale a number at a path (keeps the type; integers saturate).
     Scale(usize, f64),
+    /// Replace a number by another of its type (float by float, integer by integer), the
+    /// edit that reaches the solvers; the path picks among the numbers only.
+    Number(usize, f64, i64),
     /// Drop the key or array element at a path.
     Remove(usize),
     /// Add a key (a known key name or a made-up one) to a table.
@@ -150,7 +153,8 @@ pub const KEYS: &[&str] = &[
 
 pub fn edit() -> impl Strategy<Value = Edit> {
     prop_oneof![
-        6 => (any::<usize>(), value()).prop_map(|(p, v)| Edit::Set(p, v)),
+        4 => (any::<usize>(), value()).prop_map(|(p, v)| Edit::Set(p, v)),
+        8 => (any::<usize>(), float(), integer()).prop_map(|(p, f, i)| Edit::Number(p, f, i)),
         2 => (any::<usize>(), prop_oneof![Just(0.0), Just(-1.0), Just(1e-3), Just(1e3), Just(1e12), Just(1e-12), Just(-1e300), Just(1.000001)])
             .prop_map(|(p, f)| Edit::Scale(p, f)),
         2 => any::<usize>().prop_map(Edit::Remove),
@@ -196,6 +200,14 @@ fn at<'a>(v: &'a mut Value, path: &[Step]) -> &'a mut Value {
     }
 }
 
+fn get<'a>(v: &'a Value, path: &[Step]) -> &'a Value {
+    match path.split_first() {
+        None => v,
+        Some((Step::Key(k), rest)) => get(&v.as_table().unwrap()[k], rest),
+        Some((Step::Index(i), rest)) => get(&v.as_array().unwrap()[*i], rest),
+    }
+}
+
 /// Apply `edits` to the document `doc` in order.
 pub fn apply(doc: &mut Value, edits: &[Edit]) {
     for e in edits {
@@ -216,6 +228,20 @@ pub fn apply(doc: &mut Value, edits: &[Edit]) {
                     Value::Float(y) => *y *= f,
                     Value::Integer(n) => *n = (*n as f64 * f) as i64,
                     _ => {}
+                }
+            }
+            Edit::Number(i, f, n) => {
+                let numbers: Vec<_> = all
+                    .iter()
+                    .filter(|p| matches!(get(doc, p), Value::Float(_) | Value::Integer(_)))
+                    .cloned()
+                    .collect();
+                if let Some(p) = numbers.get(i % numbers.len().max(1)) {
+                    match at(doc, p) {
+                        Value::Float(y) => *y = *f,
+                        Value::Integer(y) => *y = *n,
+                        _ => {}
+                    }
                 }
             }
             Edit::Remove(i) => {
