@@ -113,11 +113,10 @@ pub fn check(args: &[String]) {
     match Cli::try_parse_from(args) {
         Err(e) => {
             let code = e.exit_code();
+            // A missing subcommand shows the help as a usage error (status 2).
             let help = matches!(
                 e.kind(),
-                clap::error::ErrorKind::DisplayHelp
-                    | clap::error::ErrorKind::DisplayVersion
-                    | clap::error::ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand
+                clap::error::ErrorKind::DisplayHelp | clap::error::ErrorKind::DisplayVersion
             );
             assert_eq!(code, if help { 0 } else { 2 }, "{args:?}: {e}");
             assert!(!e.to_string().trim().is_empty(), "{args:?}");
