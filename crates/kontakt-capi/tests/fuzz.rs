@@ -54,13 +54,22 @@ fn check_code(what: &str, code: i32) {
     let m = last_error();
     assert_ne!(code, KONTAKT_PANIC, "{what}: panic: {m}");
     assert!(
-        [KONTAKT_OK, KONTAKT_INVALID_INPUT, KONTAKT_FAILED, KONTAKT_NULL_OR_UTF8].contains(&code),
+        [
+            KONTAKT_OK,
+            KONTAKT_INVALID_INPUT,
+            KONTAKT_FAILED,
+            KONTAKT_NULL_OR_UTF8
+        ]
+        .contains(&code),
         "{what}: undocumented code {code}"
     );
     if code == KONTAKT_OK {
         assert!(m.is_empty(), "{what}: message after success: {m}");
     } else {
-        assert!(!m.trim().is_empty(), "{what}: code {code} without a message");
+        assert!(
+            !m.trim().is_empty(),
+            "{what}: code {code} without a message"
+        );
         assert!(!m.contains('\n'), "{what}: message of several lines: {m:?}");
     }
 }
@@ -75,10 +84,20 @@ fn check_result(r: &KontaktResult) {
         r.max_pressure,
         r.contact_area,
     ];
-    for v in [r.point, r.normal, r.friction_force, r.force1, r.moment1, r.moment2] {
+    for v in [
+        r.point,
+        r.normal,
+        r.friction_force,
+        r.force1,
+        r.moment1,
+        r.moment2,
+    ] {
         all.extend(v);
     }
-    assert!(all.iter().all(|x| x.is_finite()), "non-finite result: {r:?}");
+    assert!(
+        all.iter().all(|x| x.is_finite()),
+        "non-finite result: {r:?}"
+    );
     assert!((0..=2).contains(&r.status), "status {}", r.status);
 }
 
@@ -136,7 +155,7 @@ fn evaluate(e: *mut KontaktElement, p: &[[f64; 7]; 2], t: &[[f64; 6]; 2], nulls:
 }
 
 proptest! {
-    #![proptest_config(config(400))]
+    #![proptest_config(config(2_000))]
 
     /// Edited element cases: created, evaluated at several poses, reset, freed.
     #[test]
@@ -192,4 +211,55 @@ proptest! {
             unsafe { kontakt_element_free(e) };
         }
     }
+}
+
+/// Found by fuzzing: a finite but huge spin (ω_z = 2.85e152 rad/s) with a damping
+/// coefficient of 1e300 N·s/mm overflowed the forces to inf and NaN in a result with code
+/// 0; it is now code 2 (the computation failed) naming the overflowing result.
+#[test]
+fn overflowing_result_is_an_error() {
+    let text = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/element_roller_rib.toml"),
+    )
+    .unwrap()
+    .replace(
+        "coefficient_n_s_per_mm = 0.5",
+        "coefficient_n_s_per_mm = 1e300",
+    );
+    let c = std::ffi::CString::new(text).unwrap();
+    let mut e = null_mut();
+    // SAFETY: a C string and a writable out pointer.
+    assert_eq!(
+        unsafe { kontakt_element_from_toml(c.as_ptr(), &mut e) },
+        KONTAKT_OK
+    );
+    let p1 = [
+        0.0,
+        0.010992173302650109,
+        0.0,
+        0.9999910853855316,
+        -0.004222457751912781,
+        0.0,
+        0.0,
+    ];
+    let p2 = [0.0, -0.030301956237438515, 0.0, 1.0, 0.0, 0.0, 0.0];
+    let t1 = [1e-9, 1e-9, 1e-9, 1e-9, 0.0, 2.8496990505027887e152];
+    // SAFETY: KontaktResult is plain data: all zeros is a valid value.
+    let mut r: KontaktResult = unsafe { std::mem::zeroed() };
+    // SAFETY: a live element, arrays of 7 and 6 doubles, a writable result.
+    let code = unsafe {
+        kontakt_element_evaluate(
+            e,
+            p1.as_ptr(),
+            p2.as_ptr(),
+            t1.as_ptr(),
+            [0.0; 6].as_ptr(),
+            &mut r,
+        )
+    };
+    let m = last_error();
+    assert_eq!(code, KONTAKT_FAILED, "{m}");
+    assert!(m.contains("overflows"), "{m}");
+    // SAFETY: freed once.
+    unsafe { kontakt_element_free(e) };
 }

@@ -146,9 +146,9 @@ fn check_npy_shape(bytes: &[u8]) -> std::result::Result<(), String> {
         };
         shown.push(d.to_string());
         empty |= n == 0;
-        nonzero = nonzero.checked_mul(n.max(1)).ok_or_else(|| {
-            format!("the header's shape ({dims}) has more than 2^64 values")
-        })?;
+        nonzero = nonzero
+            .checked_mul(n.max(1))
+            .ok_or_else(|| format!("the header's shape ({dims}) has more than 2^64 values"))?;
     }
     let count = if empty { 0 } else { nonzero };
     let data = bytes.len() - start - len;
@@ -226,7 +226,10 @@ mod tests {
         let e = read_npy(&npy_bytes("<f8", "(0, 2, 18446744073709551615)", &[])).unwrap_err();
         assert!(e.contains("more than 2^64 values"), "{e}");
         let e = read_npy(&npy_bytes("<f8", "(100000, 100000)", &[0; 64])).unwrap_err();
-        assert!(e.contains("truncated") && e.contains("(100000, 100000)"), "{e}");
+        assert!(
+            e.contains("truncated") && e.contains("(100000, 100000)"),
+            "{e}"
+        );
         let v64: Vec<u8> = [1.0f64, 2.0].iter().flat_map(|v| v.to_le_bytes()).collect();
         assert!(read_npy(&npy_bytes("<f8", "(1, 2)", &v64)).is_ok());
     }

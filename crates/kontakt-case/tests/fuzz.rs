@@ -46,7 +46,14 @@ fn case_seeds() -> &'static [Value] {
         assert!(files.len() >= 10, "{files:?}");
         files
             .iter()
-            .map(|f| small(std::fs::read_to_string(f).unwrap().parse::<toml::Table>().unwrap()))
+            .map(|f| {
+                small(
+                    std::fs::read_to_string(f)
+                        .unwrap()
+                        .parse::<toml::Table>()
+                        .unwrap(),
+                )
+            })
             .collect()
     })
 }
@@ -87,7 +94,14 @@ fn element_seeds() -> Vec<Value> {
     files.sort();
     files
         .iter()
-        .map(|f| small(std::fs::read_to_string(f).unwrap().parse::<toml::Table>().unwrap()))
+        .map(|f| {
+            small(
+                std::fs::read_to_string(f)
+                    .unwrap()
+                    .parse::<toml::Table>()
+                    .unwrap(),
+            )
+        })
         .collect()
 }
 
@@ -136,7 +150,7 @@ fn mutated(seeds: &[Value], seed: usize, edits: &[Edit]) -> Option<String> {
 }
 
 proptest! {
-    #![proptest_config(config(1500))]
+    #![proptest_config(config(10_000))]
 
     /// Case files of every schema, edited structurally, parsed and run.
     #[test]
@@ -148,7 +162,7 @@ proptest! {
 }
 
 proptest! {
-    #![proptest_config(config(1500))]
+    #![proptest_config(config(10_000))]
 
     /// Case files with text spliced in (broken syntax, duplicated tables, hostile numbers).
     #[test]
@@ -169,7 +183,7 @@ proptest! {
 }
 
 proptest! {
-    #![proptest_config(config(500))]
+    #![proptest_config(config(2_000))]
 
     /// Element cases (`method = "element"`), edited: planned, never a panic.
     #[test]
@@ -245,7 +259,18 @@ fn npy(version: u8, dict: &str, data: &[u8]) -> Vec<u8> {
 
 fn npy_file() -> impl Strategy<Value = Vec<u8>> {
     let descr = prop::sample::select(vec![
-        "<f8", ">f8", "<f4", "<f2", "<i8", "<u1", "|b1", "<c16", "|O", "<U8", "[('a', '<f8')]", "",
+        "<f8",
+        ">f8",
+        "<f4",
+        "<f2",
+        "<i8",
+        "<u1",
+        "|b1",
+        "<c16",
+        "|O",
+        "<U8",
+        "[('a', '<f8')]",
+        "",
     ]);
     let dim = prop_oneof![
         Just(0u64),
@@ -299,8 +324,23 @@ fn csv_file() -> impl Strategy<Value = Vec<u8>> {
     let cell = prop_oneof![
         fuzz_gen::float().prop_map(|x| x.to_string()),
         prop::sample::select(vec![
-            "", " ", "nan", "NaN", "inf", "-inf", "1,5", "0,25", "1e999", "-0", "0x10", "\"1\"",
-            "#", "δ", "1;2", "1\t2", "\u{feff}1",
+            "",
+            " ",
+            "nan",
+            "NaN",
+            "inf",
+            "-inf",
+            "1,5",
+            "0,25",
+            "1e999",
+            "-0",
+            "0x10",
+            "\"1\"",
+            "#",
+            "δ",
+            "1;2",
+            "1\t2",
+            "\u{feff}1",
         ])
         .prop_map(str::to_string),
     ];
@@ -321,17 +361,24 @@ fn csv_file() -> impl Strategy<Value = Vec<u8>> {
 
 /// A temporary file of this thread (overwritten by each input).
 fn scratch(ext: &str) -> PathBuf {
-    std::env::temp_dir().join(format!(
-        "kontakt-fuzz-{}-{:?}.{ext}",
-        std::process::id(),
-        std::thread::current().id()
-    ).replace(['(', ')'], ""))
+    std::env::temp_dir().join(
+        format!(
+            "kontakt-fuzz-{}-{:?}.{ext}",
+            std::process::id(),
+            std::thread::current().id()
+        )
+        .replace(['(', ')'], ""),
+    )
 }
 
 fn read_map(bytes: &[u8], ext: &str, spacing: [f64; 2], height: bool) {
     let path = scratch(ext);
     std::fs::write(&path, bytes).unwrap();
-    let kind = if height { MapKind::Height } else { MapKind::Gap };
+    let kind = if height {
+        MapKind::Height
+    } else {
+        MapKind::Gap
+    };
     let r = read_gap_map(&path, spacing, kind);
     std::fs::remove_file(&path).unwrap();
     if let Err(e) = r {
@@ -345,7 +392,7 @@ fn read_map(bytes: &[u8], ext: &str, spacing: [f64; 2], height: bool) {
 }
 
 proptest! {
-    #![proptest_config(config(2000))]
+    #![proptest_config(config(10_000))]
 
     /// `.npy` gap maps: every dtype, order and shape (up to 2^64), truncated anywhere.
     #[test]

@@ -34,19 +34,82 @@ fn example(name: &str) -> String {
 /// A word of an argument vector: subcommands, every flag, values of every kind.
 pub fn word() -> impl Strategy<Value = String> {
     let flags = prop::sample::select(vec![
-        "--body1-radii", "--body2-radii", "--angle-deg", "--e1", "--nu1", "--e2", "--nu2",
-        "--force", "--approach", "--yield-stress", "--criterion", "--json", "--csv", "--map",
-        "--plot", "--stribeck", "--density", "--out", "--cells", "--pairing", "--rpm",
-        "--steps", "--backends", "--format", "--threads", "--max-cases", "--quiet", "--help",
-        "--version", "-h", "-V", "--", "-", "--force=", "--e1=-1", "--body1-radii=1,1",
+        "--body1-radii",
+        "--body2-radii",
+        "--angle-deg",
+        "--e1",
+        "--nu1",
+        "--e2",
+        "--nu2",
+        "--force",
+        "--approach",
+        "--yield-stress",
+        "--criterion",
+        "--json",
+        "--csv",
+        "--map",
+        "--plot",
+        "--stribeck",
+        "--density",
+        "--out",
+        "--cells",
+        "--pairing",
+        "--rpm",
+        "--steps",
+        "--backends",
+        "--format",
+        "--threads",
+        "--max-cases",
+        "--quiet",
+        "--help",
+        "--version",
+        "-h",
+        "-V",
+        "--",
+        "-",
+        "--force=",
+        "--e1=-1",
+        "--body1-radii=1,1",
         "--unknown",
     ])
     .prop_map(str::to_string);
     let numbers = prop::sample::select(vec![
-        "0", "-0", "1", "-1", "10", "10,10", "inf,inf", "-inf", "inf", "nan", "NaN", "1e308",
-        "1e309", "-1e309", "5e-324", "1e-300", "0.5", "1,", ",", ",,", "1,2,3", "0x10", "1_000",
-        "99999999999999999999", "1.5.5", " 1", "", "1,nan", "inf,-inf", "1e300,1e300",
-        "von-mises", "tresca", "parquet", "csv", "hertz,pimp", "δ",
+        "0",
+        "-0",
+        "1",
+        "-1",
+        "10",
+        "10,10",
+        "inf,inf",
+        "-inf",
+        "inf",
+        "nan",
+        "NaN",
+        "1e308",
+        "1e309",
+        "-1e309",
+        "5e-324",
+        "1e-300",
+        "0.5",
+        "1,",
+        ",",
+        ",,",
+        "1,2,3",
+        "0x10",
+        "1_000",
+        "99999999999999999999",
+        "1.5.5",
+        " 1",
+        "",
+        "1,nan",
+        "inf,-inf",
+        "1e300,1e300",
+        "von-mises",
+        "tresca",
+        "parquet",
+        "csv",
+        "hertz,pimp",
+        "δ",
     ])
     .prop_map(str::to_string);
     let number = fuzz_float().prop_map(|x| x.to_string());
@@ -102,9 +165,16 @@ fn runnable(args: &[String]) -> bool {
     let cmd = args.get(1).map(String::as_str);
     matches!(cmd, Some("hertz" | "solve" | "traction"))
         && !args.iter().any(|a| {
-            ["--csv", "--map", "--plot", "--stribeck", "--density", "--out"]
-                .iter()
-                .any(|f| a.starts_with(f))
+            [
+                "--csv",
+                "--map",
+                "--plot",
+                "--stribeck",
+                "--density",
+                "--out",
+            ]
+            .iter()
+            .any(|f| a.starts_with(f))
         })
 }
 
@@ -138,7 +208,11 @@ pub fn check(args: &[String]) {
                     // `inf` is how the text report writes a flat body's radius: look for
                     // NaN in the text, and for infinities where JSON was asked for.
                     let json = args.iter().any(|a| a == "--json");
-                    let bad: &[&str] = if json { &["NaN", "inf", "Infinity"] } else { &["NaN"] };
+                    let bad: &[&str] = if json {
+                        &["NaN", "inf", "Infinity"]
+                    } else {
+                        &["NaN"]
+                    };
                     for bad in bad {
                         let found = text
                             .split(|c: char| !c.is_alphanumeric())
@@ -152,7 +226,7 @@ pub fn check(args: &[String]) {
 }
 
 proptest! {
-    #![proptest_config(config(3000))]
+    #![proptest_config(config(10_000))]
 
     /// Argument vectors, parsed in-process and run where cheap.
     #[test]

@@ -13,10 +13,34 @@ use std::process::Command;
 fn word() -> impl Strategy<Value = String> {
     prop_oneof![
         prop::sample::select(vec![
-            "--body1-radii", "--body2-radii", "--angle-deg", "--e1", "--nu2", "--force",
-            "--approach", "--yield-stress", "--criterion", "--json", "--cells", "--steps",
-            "--threads", "--max-cases", "--help", "-V", "0", "-1", "10,10", "inf,inf", "nan",
-            "1e309", "5e-324", ",", "1,2,3", "tresca", "δ", "",
+            "--body1-radii",
+            "--body2-radii",
+            "--angle-deg",
+            "--e1",
+            "--nu2",
+            "--force",
+            "--approach",
+            "--yield-stress",
+            "--criterion",
+            "--json",
+            "--cells",
+            "--steps",
+            "--threads",
+            "--max-cases",
+            "--help",
+            "-V",
+            "0",
+            "-1",
+            "10,10",
+            "inf,inf",
+            "nan",
+            "1e309",
+            "5e-324",
+            ",",
+            "1,2,3",
+            "tresca",
+            "δ",
+            "",
         ])
         .prop_map(str::to_string),
         any::<f64>().prop_map(|x| x.to_string()),
@@ -29,7 +53,7 @@ fn binary_argument_vectors() {
     let n = std::env::var("KONTAKT_FUZZ_SPAWNS")
         .ok()
         .and_then(|s| s.parse().ok())
-        .unwrap_or(60);
+        .unwrap_or(300);
     let mut runner = TestRunner::new(Config {
         cases: n,
         failure_persistence: Some(Box::new(FileFailurePersistence::Off)),
