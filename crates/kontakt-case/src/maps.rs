@@ -251,6 +251,21 @@ mod tests {
         assert!(!m.contains('\n') && m.contains("syntax error"), "{m}");
     }
 
+    /// Found by fuzzing: a cell size of 1e308 mm over a 2 x 2 map overflowed the map's
+    /// extent and the error named the grid's `y_range`; it names the spacing.
+    #[test]
+    fn huge_spacing_names_the_spacing() {
+        let path = std::env::temp_dir().join(format!(
+            "kontakt-case-spacing-{}-{:?}.csv",
+            std::process::id(),
+            std::thread::current().id()
+        ));
+        std::fs::write(&path, "0.1, 0.0\n0.0, 0.1\n").unwrap();
+        let e = read_gap_map(&path, [0.01, 1e308], MapKind::Gap).unwrap_err();
+        std::fs::remove_file(&path).unwrap();
+        assert_eq!(e.field(), Some("spacing[1]"), "{e}");
+    }
+
     #[test]
     fn files_that_cannot_be_read_name_the_file_and_the_row() {
         let path = std::env::temp_dir().join(format!(
