@@ -62,10 +62,10 @@ fn case_seeds() -> &'static [Value] {
 fn small(mut t: toml::Table) -> Value {
     let cells = Value::Array(vec![Value::Integer(12), Value::Integer(12)]);
     for table in ["pimp", "bem", "element"] {
-        if let Some(Value::Table(s)) = t.get_mut(table) {
-            if s.contains_key("cells") {
-                s.insert("cells".into(), cells.clone());
-            }
+        if let Some(Value::Table(s)) = t.get_mut(table)
+            && s.contains_key("cells")
+        {
+            s.insert("cells".into(), cells.clone());
         }
     }
     if let Some(Value::Table(s)) = t.get_mut("creepage") {
@@ -125,10 +125,10 @@ fn check_message(what: &str, message: &str) {
 /// report is looked at as TOML values, which keep them; its strings may hold any text.)
 fn check_report<T: serde::Serialize>(report: &T) {
     serde_json::to_string(report).unwrap();
-    if let Ok(v) = Value::try_from(report) {
-        if let Some(at) = non_finite(&v, "report") {
-            panic!("non-finite number in the report: {at}");
-        }
+    if let Ok(v) = Value::try_from(report)
+        && let Some(at) = non_finite(&v, "report")
+    {
+        panic!("non-finite number in the report: {at}");
     }
 }
 
@@ -188,10 +188,10 @@ proptest! {
     /// Element cases (`method = "element"`), edited: planned, never a panic.
     #[test]
     fn element_cases_edited(seed in any::<usize>(), edits in prop::collection::vec(edit(), 1..4)) {
-        if let Some(text) = mutated(&element_seeds(), seed, &edits) {
-            if let Err(e) = element_from_toml(&text) {
-                check_message("element_from_toml", &e.to_string());
-            }
+        if let Some(text) = mutated(&element_seeds(), seed, &edits)
+            && let Err(e) = element_from_toml(&text)
+        {
+            check_message("element_from_toml", &e.to_string());
         }
     }
 

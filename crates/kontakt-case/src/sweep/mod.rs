@@ -936,7 +936,8 @@ mod tests {
     /// Found by fuzzing: a parameter key with a line break gave a message of two lines.
     #[test]
     fn line_break_in_a_key_is_escaped() {
-        let text = "base = \"../ball_on_flat.toml\"\n[[parameter]]\nkey = \"a\\nb\"\nvalues = [1.0]\n";
+        let text =
+            "base = \"../ball_on_flat.toml\"\n[[parameter]]\nkey = \"a\\nb\"\nvalues = [1.0]\n";
         let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/sweeps");
         let m = Sweep::from_toml_str(text, &dir).unwrap_err().to_string();
         assert!(!m.contains('\n') && m.contains("a\\nb"), "{m}");
