@@ -39,10 +39,10 @@ fn seeds() -> Vec<Value> {
         .iter()
         .map(|f| {
             let mut t: toml::Table = std::fs::read_to_string(f).unwrap().parse().unwrap();
-            if let Some(Value::Table(e)) = t.get_mut("element") {
-                if e.contains_key("cells") {
-                    e.insert("cells".into(), Value::Array(vec![Value::Integer(12); 2]));
-                }
+            if let Some(Value::Table(e)) = t.get_mut("element")
+                && e.contains_key("cells")
+            {
+                e.insert("cells".into(), Value::Array(vec![Value::Integer(12); 2]));
             }
             Value::Table(t)
         })
