@@ -106,6 +106,24 @@ impl Case {
     /// Invalid input named by its case-file key, geometry the method cannot solve, and
     /// non-convergence; see each method's runner.
     pub fn run(&self, base_dir: &Path) -> Result<Outcome> {
+        let outcome = self.run_unchecked(base_dir)?;
+        // Finite inputs at the extremes of f64 can overflow a result (found by fuzzing: a
+        // Carter saturation creepage of inf): an error naming the report key, never inf
+        // in the text or null in the JSON.
+        if let Ok(report) = toml::Value::try_from(&outcome)
+            && let Some((key, value)) = non_finite(&report, "")
+        {
+            return Err(Error::Geometry {
+                field: key.into(),
+                reason: format!(
+                    "the result is {value}: the inputs are beyond what f64 arithmetic holds for this model"
+                ),
+            });
+        }
+        Ok(outcome)
+    }
+
+    fn run_unchecked(&self, base_dir: &Path) -> Result<Outcome> {
         Ok(match self {
             Case::Hertz(case) => Outcome::Hertz(Box::new(crate::hertz_case::run_case(case)?)),
             Case::Pimp(case) => Outcome::Pimp(Box::new(crate::pimp_case::run_pimp_case(case)?)),
@@ -119,6 +137,26 @@ impl Case {
                 Outcome::Friction(Box::new(crate::friction_case::run_friction_case(case)?))
             }
         })
+    }
+}
+
+/// The key path (`rows[3].power_w`) and value of the first NaN or infinite number in `v`.
+fn non_finite(v: &toml::Value, path: &str) -> Option<(String, f64)> {
+    match v {
+        toml::Value::Float(x) if !x.is_finite() => Some((path.to_string(), *x)),
+        toml::Value::Table(t) => t.iter().find_map(|(k, x)| {
+            let p = if path.is_empty() {
+                k.clone()
+            } else {
+                format!("{path}.{k}")
+            };
+            non_finite(x, &p)
+        }),
+        toml::Value::Array(a) => a
+            .iter()
+            .enumerate()
+            .find_map(|(i, x)| non_finite(x, &format!("{path}[{i}]"))),
+        _ => None,
     }
 }
 
@@ -147,6 +185,32 @@ impl Serialize for Outcome {
             Outcome::Bem(o) => o.report.serialize(s),
             Outcome::Traction(r) => r.serialize(s),
             Outcome::Friction(o) => o.report.serialize(s),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Found by fuzzing: a friction coefficient of 1e300 on bodies of 1e-300 MPa gave a
+    /// Carter saturation creepage of inf in a report that came back as a success; an
+    /// overflowing result is an error naming the report key.
+    #[test]
+    fn overflowing_report_is_an_error() {
+        let text = std::fs::read_to_string(
+            Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/traction_twin_disc.toml"),
+        )
+        .unwrap_or_default()
+        .replace("mu = 0.1", "mu = 1e300")
+        .replace("e_mpa = 210000.0", "e_mpa = 1e-300");
+        let case = Case::from_toml_str(&text);
+        assert!(case.is_ok(), "{case:?}");
+        if let Ok(case) = case {
+            let e = case.run(Path::new(".")).map(|_| ()).unwrap_err();
+            let m = e.to_string();
+            assert!(m.contains("inf") && e.field().is_some(), "{m}");
+            assert!(!m.contains('\n'), "{m}");
         }
     }
 }

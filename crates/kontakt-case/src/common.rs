@@ -78,6 +78,21 @@ pub(crate) fn parse_toml<T: serde::de::DeserializeOwned>(text: &str) -> Result<T
 /// header above it (`[contact]`, `[[loads]]`) and the key on its line. serde's wording
 /// ("field", "f64") becomes the schema's ("key", "a number").
 pub(crate) fn case_file_error(text: &str, e: &toml::de::Error) -> Error {
+    match case_file_error_raw(text, e) {
+        // The reader quotes the file's strings (`kind = "a\nb"`, found by fuzzing):
+        // control characters are escaped so that the message stays on one line.
+        Error::CaseFile { line, key, message } if message.chars().any(char::is_control) => {
+            Error::CaseFile {
+                line,
+                key,
+                message: message.chars().flat_map(char::escape_default).collect(),
+            }
+        }
+        other => other,
+    }
+}
+
+fn case_file_error_raw(text: &str, e: &toml::de::Error) -> Error {
     let (line, table, key) = match e.span() {
         Some(span) => locate(text, span.start.min(text.len())),
         None => (None, String::new(), None),
@@ -263,6 +278,19 @@ mod tests {
             Err(Error::CaseFile { line, key, message }) => (line, key.into_owned(), message),
             other => panic!("expected a case-file error, got {other:?}"),
         }
+    }
+
+    /// Found by fuzzing: a string value with a line break in an error made a message of
+    /// two lines; it is escaped (`\n`), for an unknown variant and an unknown method alike.
+    #[test]
+    fn line_breaks_in_values_are_escaped() {
+        let text = BALL.replace("\"point\"", "\"a\\nb\"");
+        let m = Case::from_toml_str(&text).unwrap_err().to_string();
+        assert!(!m.contains('\n') && m.contains("a\\nb"), "{m}");
+        let m = Case::from_toml_str(&format!("method = \"x\\ny\"\n{BALL}"))
+            .unwrap_err()
+            .to_string();
+        assert!(!m.contains('\n') && m.contains("x\\ny"), "{m}");
     }
 
     /// Each class of reader error reads as the schema's words, with the line and the key

@@ -15,6 +15,9 @@ use std::path::Path;
 /// ragged CSV row (named), or the errors of [`GapMap::new`].
 pub fn read_gap_map(path: &Path, spacing: [f64; 2], kind: MapKind) -> Result<GapMap> {
     let file_err = |why: String| {
+        // The readers' messages may span lines (the .npy header parser draws a caret
+        // under the bad character): one line, as every error.
+        let why = why.split_whitespace().collect::<Vec<_>>().join(" ");
         Error::invalid(
             "gap_map.file",
             path.display(),
@@ -73,6 +76,7 @@ fn read_csv(bytes: &[u8]) -> std::result::Result<(usize, usize, Vec<f64>), Strin
 }
 
 fn read_npy(bytes: &[u8]) -> std::result::Result<(usize, usize, Vec<f64>), String> {
+    check_npy_shape(bytes)?;
     let npy = npyz::NpyFile::new(bytes).map_err(|e| e.to_string())?;
     let shape = npy.shape().to_vec();
     if shape.len() != 2 {
@@ -95,6 +99,66 @@ fn read_npy(bytes: &[u8]) -> std::result::Result<(usize, usize, Vec<f64>), Strin
             .collect(),
     };
     Ok((nx, ny, values))
+}
+
+/// Check the shape in a `.npy` header against the data the file holds, before the reader
+/// sees it: a shape whose product overflows 64 bits (the reader would overflow) or that
+/// needs more values than the file has bytes (a truncated file, or a header claiming a huge
+/// array) is refused here. Headers this cannot read are left to the reader's own errors.
+fn check_npy_shape(bytes: &[u8]) -> std::result::Result<(), String> {
+    if bytes.len() < 10 || !bytes.starts_with(b"\x93NUMPY") {
+        return Ok(());
+    }
+    let (len, start) = if bytes[6] == 1 {
+        (u16::from_le_bytes([bytes[8], bytes[9]]) as usize, 10usize)
+    } else if bytes.len() >= 12 {
+        let l = u32::from_le_bytes([bytes[8], bytes[9], bytes[10], bytes[11]]);
+        (l as usize, 12)
+    } else {
+        return Ok(());
+    };
+    let Some(header) = bytes.get(start..start.saturating_add(len)) else {
+        return Ok(());
+    };
+    let header = String::from_utf8_lossy(header);
+    let Some(after) = header
+        .find("'shape'")
+        .or_else(|| header.find("\"shape\""))
+        .map(|i| &header[i + 7..])
+    else {
+        return Ok(());
+    };
+    let Some(dims) = after
+        .split_once('(')
+        .and_then(|(_, rest)| rest.split_once(')'))
+        .map(|(dims, _)| dims)
+    else {
+        return Ok(());
+    };
+    // The product of the non-zero dimensions bounds every partial product the reader
+    // forms (its strides), also when a zero makes the array empty.
+    let mut nonzero: u64 = 1;
+    let mut empty = false;
+    let mut shown = Vec::new();
+    for d in dims.split(',').map(str::trim).filter(|d| !d.is_empty()) {
+        let Ok(n) = d.parse::<u64>() else {
+            return Ok(());
+        };
+        shown.push(d.to_string());
+        empty |= n == 0;
+        nonzero = nonzero
+            .checked_mul(n.max(1))
+            .ok_or_else(|| format!("the header's shape ({dims}) has more than 2^64 values"))?;
+    }
+    let count = if empty { 0 } else { nonzero };
+    let data = bytes.len() - start - len;
+    if count > data as u64 {
+        return Err(format!(
+            "the file is truncated or its header is wrong: shape ({}) needs {count} values, the file holds {data} bytes of data",
+            shown.join(", ")
+        ));
+    }
+    Ok(())
 }
 
 #[cfg(test)]
@@ -148,6 +212,58 @@ mod tests {
         let ints: Vec<u8> = [1i64, 2].iter().flat_map(|v| v.to_le_bytes()).collect();
         let e = read_npy(&npy_bytes("<i8", "(1, 2)", &ints)).unwrap_err();
         assert!(e.contains("float64 or float32"), "{e}");
+    }
+
+    /// Found by the fuzz harness (tests/fuzz.rs): a header whose shape overflows 64 bits
+    /// made the `.npy` reader panic (multiply with overflow); a header claiming a huge
+    /// shape over a few bytes of data is a truncated file, refused before any allocation.
+    #[test]
+    fn npy_header_shape_overflow_and_truncation() {
+        let e = read_npy(&npy_bytes("<f8", "(4294967296, 4294967296)", &[])).unwrap_err();
+        assert!(e.contains("more than 2^64 values"), "{e}");
+        let e = read_npy(&npy_bytes("<f8", "(18446744073709551615, 2)", &[0; 16])).unwrap_err();
+        assert!(e.contains("more than 2^64 values"), "{e}");
+        let e = read_npy(&npy_bytes("<f8", "(0, 2, 18446744073709551615)", &[])).unwrap_err();
+        assert!(e.contains("more than 2^64 values"), "{e}");
+        let e = read_npy(&npy_bytes("<f8", "(100000, 100000)", &[0; 64])).unwrap_err();
+        assert!(
+            e.contains("truncated") && e.contains("(100000, 100000)"),
+            "{e}"
+        );
+        let v64: Vec<u8> = [1.0f64, 2.0].iter().flat_map(|v| v.to_le_bytes()).collect();
+        assert!(read_npy(&npy_bytes("<f8", "(1, 2)", &v64)).is_ok());
+    }
+
+    /// Found by the fuzz harness: a `.npy` header that is not a Python literal gave an
+    /// error of several lines (the parser's caret drawing); it is one line.
+    #[test]
+    fn npy_bad_header_is_one_line() {
+        let path = std::env::temp_dir().join(format!(
+            "kontakt-case-badheader-{}-{:?}.npy",
+            std::process::id(),
+            std::thread::current().id()
+        ));
+        std::fs::write(&path, npy_bytes("[('a', '<f8')]", "()", &[0; 8])).unwrap();
+        let e = read_gap_map(&path, [0.01, 0.01], MapKind::Gap).unwrap_err();
+        std::fs::remove_file(&path).unwrap();
+        let m = e.to_string();
+        assert_eq!(e.field(), Some("gap_map.file"));
+        assert!(!m.contains('\n') && m.contains("syntax error"), "{m}");
+    }
+
+    /// Found by fuzzing: a cell size of 1e308 mm over a 2 x 2 map overflowed the map's
+    /// extent and the error named the grid's `y_range`; it names the spacing.
+    #[test]
+    fn huge_spacing_names_the_spacing() {
+        let path = std::env::temp_dir().join(format!(
+            "kontakt-case-spacing-{}-{:?}.csv",
+            std::process::id(),
+            std::thread::current().id()
+        ));
+        std::fs::write(&path, "0.1, 0.0\n0.0, 0.1\n").unwrap();
+        let e = read_gap_map(&path, [0.01, 1e308], MapKind::Gap).unwrap_err();
+        std::fs::remove_file(&path).unwrap();
+        assert_eq!(e.field(), Some("spacing[1]"), "{e}");
     }
 
     #[test]

@@ -11,6 +11,9 @@ mod cli;
 mod commands;
 mod output;
 
+#[cfg(test)]
+mod fuzz;
+
 use clap::{CommandFactory, Parser};
 use std::io::Write;
 use std::process::ExitCode;

@@ -111,6 +111,13 @@ const MAX_VALUE_CHARS: usize = 60;
 /// hundreds of digits (`1e300`, `1e-303`) in its shortest exponent form, and any other
 /// text longer than [`MAX_VALUE_CHARS`] cut with an ellipsis and its length.
 fn shorten(value: String) -> String {
+    // A value with a line break or another control character (a case-file string
+    // `"a\nb"`, found by fuzzing) is escaped: messages stay on one line.
+    let value = if value.chars().any(char::is_control) {
+        value.chars().flat_map(char::escape_default).collect()
+    } else {
+        value
+    };
     if value.len() > 24
         && let Ok(x) = value.parse::<f64>()
     {

@@ -94,7 +94,14 @@ impl SweepError {
 pub type SweepResult<T> = std::result::Result<T, SweepError>;
 
 fn input(msg: impl Into<String>) -> SweepError {
-    SweepError::Input(msg.into())
+    // Messages quote the file's strings (a key path `"a\nb"`, found by fuzzing): control
+    // characters are escaped so that the message stays on one line.
+    let msg: String = msg.into();
+    if msg.chars().any(char::is_control) {
+        SweepError::Input(msg.chars().flat_map(char::escape_default).collect())
+    } else {
+        SweepError::Input(msg)
+    }
 }
 
 /// How the parameters combine.
@@ -925,6 +932,16 @@ fn fnv1a128(bytes: &[u8]) -> u128 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Found by fuzzing: a parameter key with a line break gave a message of two lines.
+    #[test]
+    fn line_break_in_a_key_is_escaped() {
+        let text =
+            "base = \"../ball_on_flat.toml\"\n[[parameter]]\nkey = \"a\\nb\"\nvalues = [1.0]\n";
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/sweeps");
+        let m = Sweep::from_toml_str(text, &dir).unwrap_err().to_string();
+        assert!(!m.contains('\n') && m.contains("a\\nb"), "{m}");
+    }
 
     const BASE: &str = r#"
 [base]

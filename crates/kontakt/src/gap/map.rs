@@ -63,6 +63,17 @@ impl GapMap {
                 "finite values in mm",
             ));
         }
+        // A huge cell size over many cells overflows the map's extent (found by fuzzing:
+        // the error named the grid's `y_range`, not the key the user wrote).
+        for (i, n) in [nx, ny].into_iter().enumerate() {
+            if !(n as f64 * spacing[i]).is_finite() {
+                return Err(Error::invalid(
+                    if i == 0 { "spacing[0]" } else { "spacing[1]" },
+                    spacing[i],
+                    format!("a cell size whose {n} cells span a finite extent in mm"),
+                ));
+            }
+        }
         let grid = Grid2::centered(
             0.5 * nx as f64 * spacing[0],
             0.5 * ny as f64 * spacing[1],
