@@ -1,0 +1,94 @@
+//! The case reader's messages (issue 15, item 5): the line, the key path as the file spells
+//! it and the schema's words; values with line breaks stay on one line (issue 14).
+
+#![allow(clippy::unwrap_used)] // test helpers: a panic is a test failure with its message
+
+use kontakt::Error;
+use kontakt_case::Case;
+
+const BALL: &str = "[contact]\nkind = \"point\"\n\n[body1]\nradii_mm = [5.0, 5.0]\n\
+    e_mpa = 210000.0\nnu = 0.3\n\n[body2]\nradii_mm = [1e300, 1e300]\ne_mpa = 210000.0\n\
+    nu = 0.3\n\n[load]\nforce_n = 100.0\n";
+
+/// The reader's error on `text` as (line, key, message).
+fn error(text: &str) -> (Option<usize>, String, String) {
+    match Case::from_toml_str(text) {
+        Err(Error::CaseFile { line, key, message }) => (line, key.into_owned(), message),
+        other => panic!("expected a case-file error, got {other:?}"),
+    }
+}
+
+/// Found by fuzzing: a string value with a line break in an error made a message of
+/// two lines; it is escaped (`\n`), for an unknown variant and an unknown method alike.
+#[test]
+fn line_breaks_in_values_are_escaped() {
+    let text = BALL.replace("\"point\"", "\"a\\nb\"");
+    let m = Case::from_toml_str(&text).unwrap_err().to_string();
+    assert!(!m.contains('\n') && m.contains("a\\nb"), "{m}");
+    let m = Case::from_toml_str(&format!("method = \"x\\ny\"\n{BALL}"))
+        .unwrap_err()
+        .to_string();
+    assert!(!m.contains('\n') && m.contains("x\\ny"), "{m}");
+}
+
+/// Each class of reader error reads as the schema's words, with the line and the key
+/// path as the file spells it (issue 15: no "invalid case = TOML at line 9").
+#[test]
+fn reader_errors_name_line_and_key_path() {
+    assert_eq!(BALL.lines().count(), 15);
+    assert!(Case::from_toml_str(BALL).is_ok());
+    let cases: [(String, usize, &str, &str); 7] = [
+        (
+            BALL.replace("nu = 0.3\n\n[body2]", "nu = = 0.3\n\n[body2]"),
+            7,
+            "case",
+            "not valid TOML: ",
+        ),
+        (
+            BALL.replace("kind = \"point\"", "kind = \"point\"\nangel_deg = 1.0"),
+            3,
+            "contact.angel_deg",
+            "unknown key `contact.angel_deg`; [contact] takes `kind`, `angle_deg`",
+        ),
+        (
+            format!("{BALL}\n[yeld]\nstress_mpa = 1.0\n"),
+            17,
+            "yeld",
+            "unknown key `yeld`; the top level takes `name`, ",
+        ),
+        (
+            BALL.replace("force_n = 100.0", "force_n = \"100\""),
+            15,
+            "load.force_n",
+            "`load.force_n`: string \"100\", expected a number",
+        ),
+        (
+            BALL.replace(
+                "e_mpa = 210000.0\nnu = 0.3\n\n[body2]",
+                "nu = 0.3\n\n[body2]",
+            ),
+            4,
+            "body1.e_mpa",
+            "missing key `body1.e_mpa`",
+        ),
+        (
+            BALL.replace("\"point\"", "\"spot\""),
+            2,
+            "contact.kind",
+            "`contact.kind` = `spot`: expected `point` or `line`",
+        ),
+        (
+            BALL.replace("[load]", "[load.extra]\nx = 1\n[load]"),
+            14,
+            "load.extra",
+            "unknown key `load.extra`; [load] takes ",
+        ),
+    ];
+    for (text, line, key, start) in cases {
+        let (l, k, m) = error(&text);
+        assert_eq!((l, k.as_str()), (Some(line), key), "{m}\n{text}");
+        assert!(m.starts_with(start), "{m:?} should start with {start:?}");
+        let shown = Case::from_toml_str(&text).unwrap_err().to_string();
+        assert_eq!(shown, format!("line {line}: {m}"));
+    }
+}
