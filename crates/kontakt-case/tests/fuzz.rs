@@ -37,25 +37,31 @@ fn examples() -> PathBuf {
 fn case_seeds() -> &'static [Value] {
     static SEEDS: std::sync::OnceLock<Vec<Value>> = std::sync::OnceLock::new();
     SEEDS.get_or_init(|| {
-        let mut files: Vec<_> = std::fs::read_dir(examples())
-            .unwrap()
-            .map(|e| e.unwrap().path())
-            .filter(|p| p.extension().is_some_and(|e| e == "toml"))
-            .collect();
-        files.sort();
-        assert!(files.len() >= 10, "{files:?}");
-        files
-            .iter()
-            .map(|f| {
-                small(
-                    std::fs::read_to_string(f)
-                        .unwrap()
-                        .parse::<toml::Table>()
-                        .unwrap(),
-                )
-            })
-            .collect()
+        let seeds = small_toml_files(&examples());
+        assert!(seeds.len() >= 10, "{} seeds", seeds.len());
+        seeds
     })
+}
+
+/// Every `.toml` file of `dir`, sorted by name, parsed and cut by [`small`].
+fn small_toml_files(dir: &Path) -> Vec<Value> {
+    let mut files: Vec<_> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .collect();
+    files.sort();
+    files
+        .iter()
+        .map(|f| {
+            small(
+                std::fs::read_to_string(f)
+                    .unwrap()
+                    .parse::<toml::Table>()
+                    .unwrap(),
+            )
+        })
+        .collect()
 }
 
 /// `doc` with smaller grids and fewer points (same schema, same keys).
@@ -85,24 +91,7 @@ fn small(mut t: toml::Table) -> Value {
 }
 
 fn element_seeds() -> Vec<Value> {
-    let dir = root().join("crates/kontakt-capi/examples");
-    let mut files: Vec<_> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
-        .collect();
-    files.sort();
-    files
-        .iter()
-        .map(|f| {
-            small(
-                std::fs::read_to_string(f)
-                    .unwrap()
-                    .parse::<toml::Table>()
-                    .unwrap(),
-            )
-        })
-        .collect()
+    small_toml_files(&root().join("crates/kontakt-capi/examples"))
 }
 
 fn sweep_seeds() -> Vec<String> {
