@@ -54,25 +54,58 @@ fn read_csv(bytes: &[u8]) -> std::result::Result<(usize, usize, Vec<f64>), Strin
         if ny == 0 {
             nx = record.len();
         } else if record.len() != nx {
-            return Err(format!(
-                "row {} has {} values, the first row {nx}",
-                row + 1,
-                record.len()
-            ));
+            return Err(decimal_commas(&record, row).unwrap_or_else(|| {
+                format!(
+                    "row {} has {} values, the first row {nx}",
+                    row + 1,
+                    record.len()
+                )
+            }));
         }
         for (col, field) in record.iter().enumerate() {
             let v: f64 = field.parse().map_err(|_| {
-                format!(
-                    "row {}, column {}: `{field}` is not a number",
-                    row + 1,
-                    col + 1
-                )
+                decimal_commas(&record, row).unwrap_or_else(|| {
+                    format!(
+                        "row {}, column {}: `{field}` is not a number",
+                        row + 1,
+                        col + 1
+                    )
+                })
             })?;
             values.push(v);
         }
         ny += 1;
     }
     Ok((nx, ny, values))
+}
+
+/// The message for a row written with decimal commas and `;`, tab or space between the
+/// numbers (a spreadsheet's export in many locales), which the comma-separated reader would
+/// otherwise split inside the numbers; `None` when the row is not of that kind.
+fn decimal_commas(record: &csv::StringRecord, row: usize) -> Option<String> {
+    let line = record.iter().collect::<Vec<_>>().join(",");
+    let separator = [';', '\t', ' '].into_iter().find(|&c| line.contains(c))?;
+    let numbers: Vec<&str> = line
+        .split(separator)
+        .map(str::trim)
+        .filter(|f| !f.is_empty())
+        .collect();
+    let all_numbers = numbers
+        .iter()
+        .all(|f| f.replace(',', ".").parse::<f64>().is_ok());
+    (line.contains(',') && all_numbers).then(|| {
+        format!(
+            "row {} reads as numbers with decimal commas separated by {} (`{}`): write the map \
+             with decimal points and commas between the numbers, or save it as .npy",
+            row + 1,
+            match separator {
+                ';' => "`;`",
+                '\t' => "tabs",
+                _ => "spaces",
+            },
+            numbers.first().copied().unwrap_or_default()
+        )
+    })
 }
 
 fn read_npy(bytes: &[u8]) -> std::result::Result<(usize, usize, Vec<f64>), String> {
@@ -174,6 +207,18 @@ mod tests {
         assert!(e.contains("row 2 has 2 values"), "{e}");
         let e = read_csv(b"1,x\n").unwrap_err();
         assert!(e.contains("`x` is not a number"), "{e}");
+        // Decimal commas (a spreadsheet's export) are named as such, whatever the separator.
+        for text in [
+            &b"0,25;0,5;1\n0,75;1;1,25\n"[..],
+            b"0,25\t0,5\n1\t2\n",
+            b"0,5 1,5\n",
+        ] {
+            let e = read_csv(text).unwrap_err();
+            assert!(e.contains("decimal commas") && e.contains("row 1"), "{e}");
+        }
+        // Other separators without decimal commas keep the plain message.
+        let e = read_csv(b"1;x\n").unwrap_err();
+        assert!(e.contains("`1;x` is not a number"), "{e}");
     }
 
     /// A `.npy` file as numpy writes it (format 1.0).
