@@ -43,8 +43,8 @@ fn case_seeds() -> &'static [Value] {
     })
 }
 
-/// Every `.toml` file of `dir`, sorted by name, parsed and cut by [`small`].
-fn small_toml_files(dir: &Path) -> Vec<Value> {
+/// The `.toml` files of `dir`, sorted by name.
+fn toml_paths(dir: &Path) -> Vec<PathBuf> {
     let mut files: Vec<_> = std::fs::read_dir(dir)
         .unwrap()
         .map(|e| e.unwrap().path())
@@ -52,6 +52,11 @@ fn small_toml_files(dir: &Path) -> Vec<Value> {
         .collect();
     files.sort();
     files
+}
+
+/// Every `.toml` file of `dir`, sorted by name, parsed and cut by [`small`].
+fn small_toml_files(dir: &Path) -> Vec<Value> {
+    toml_paths(dir)
         .iter()
         .map(|f| {
             small(
@@ -217,13 +222,7 @@ proptest! {
 }
 
 fn case_seeds_names() -> Vec<String> {
-    let mut files: Vec<_> = std::fs::read_dir(examples())
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
-        .collect();
-    files.sort();
-    files
+    toml_paths(&examples())
         .iter()
         .map(|p| p.file_name().unwrap().to_string_lossy().into_owned())
         .collect()
