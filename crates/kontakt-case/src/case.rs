@@ -177,6 +177,63 @@ pub enum Outcome {
     Friction(Box<crate::friction_case::FrictionOutcome>),
 }
 
+/// One field of an [`Outcome`] on its grid: values per cell, row-major with `x` fastest
+/// (`values[j * nx + i]` at `(grid.x(i), grid.y(j))`, cell centres), in the grid frame of
+/// the method's report (the gap's principal frame).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FieldView<'a> {
+    /// The field's name, which is also its file-name suffix: `pressure`, `displacement`,
+    /// `gap`.
+    pub name: &'static str,
+    /// Its unit: `MPa` or `mm`.
+    pub unit: &'static str,
+    /// The grid \[mm\].
+    pub grid: &'a kontakt::geometry::Grid2,
+    /// The values, `grid.len()` of them.
+    pub values: &'a [f64],
+}
+
+impl Outcome {
+    /// The fields of a field method, on the grid its report echoes (`grid.*`), for writers
+    /// that store them (the sweeps' `fields = "npy"`): PimP the pressure \[MPa\]; the
+    /// half-space solver the pressure, the elastic displacement and the undeformed gap
+    /// \[mm\] (`+inf` where the bodies cannot meet). Hertz and traction cases have none
+    /// (their pressure is a closed form), nor rib friction, whose report does not carry the
+    /// grid of its map (the CLI's `--map` writes that map).
+    pub fn fields(&self) -> Vec<FieldView<'_>> {
+        fn view<'a>(
+            name: &'static str,
+            unit: &'static str,
+            grid: &'a kontakt::geometry::Grid2,
+            values: &'a [f64],
+        ) -> FieldView<'a> {
+            FieldView {
+                name,
+                unit,
+                grid,
+                values,
+            }
+        }
+        match self {
+            Outcome::Hertz(_) | Outcome::Traction(_) | Outcome::Friction(_) => Vec::new(),
+            Outcome::Pimp(o) => vec![view(
+                "pressure",
+                "MPa",
+                &o.solution.grid,
+                &o.solution.pressure,
+            )],
+            Outcome::Bem(o) => {
+                let s = &o.solution;
+                vec![
+                    view("pressure", "MPa", &s.grid, &s.pressure),
+                    view("displacement", "mm", &s.grid, &s.detail.displacement),
+                    view("gap", "mm", &s.grid, &s.detail.gap),
+                ]
+            }
+        }
+    }
+}
+
 impl Serialize for Outcome {
     fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
         match self {
@@ -192,6 +249,35 @@ impl Serialize for Outcome {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The half-space solver's fields: three of them on the report's grid, the pressure
+    /// integrating to the report's force, gap minus displacement equal to the approach
+    /// where the pressure is positive (the contact condition, to the solver's tolerance).
+    #[test]
+    fn bem_outcome_has_its_three_fields_on_its_grid() {
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples");
+        let text = std::fs::read_to_string(dir.join("bem_torus_torus.toml")).unwrap_or_default();
+        let outcome = Case::from_toml_str(&text).and_then(|c| c.run(&dir));
+        assert!(outcome.is_ok(), "{outcome:?}");
+        let Ok(Outcome::Bem(o)) = outcome else {
+            return;
+        };
+        let all = Outcome::Bem(o.clone());
+        let f = all.fields();
+        let names: Vec<_> = f.iter().map(|v| v.name).collect();
+        assert_eq!(names, ["pressure", "displacement", "gap"]);
+        let n = o.solution.grid.len();
+        assert!(f.iter().all(|v| v.values.len() == n));
+        let force = f[0].values.iter().sum::<f64>() * o.solution.grid.cell_area();
+        assert!((force - o.report.force_n).abs() < 1e-9 * o.report.force_n);
+        let delta = o.report.approach_mm;
+        for k in 0..n {
+            if f[0].values[k] > 0.0 {
+                let gap = f[2].values[k] + f[1].values[k] - delta;
+                assert!(gap.abs() < 1e-6 * delta, "cell {k}: {gap}");
+            }
+        }
+    }
 
     /// Found by fuzzing: a friction coefficient of 1e300 on bodies of 1e-300 MPa gave a
     /// Carter saturation creepage of inf in a report that came back as a success; an

@@ -33,7 +33,7 @@ pub mod sweep;
 pub mod traction_case;
 
 pub use bem_case::{BemOutcome, run_bem_case, run_bem_case_on_map};
-pub use case::{Case, CaseFile, Outcome};
+pub use case::{Case, CaseFile, FieldView, Outcome};
 pub use common::{MAX_CASE_FILE_BYTES, SCHEMA_VERSION, read_case_file, read_case_text};
 pub use element_case::{ElementCase, element_from_case, element_from_toml};
 pub use friction_case::{FrictionCase, FrictionOutcome, FrictionReport, run_friction_case};

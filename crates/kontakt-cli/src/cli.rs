@@ -281,6 +281,12 @@ pub enum SweepFormat {
     Csv,
 }
 
+#[derive(Debug, Clone, Copy, clap::ValueEnum)]
+pub enum SweepFields {
+    None,
+    Npy,
+}
+
 #[derive(Debug, Args)]
 pub struct SweepArgs {
     /// Sweep file (TOML; docs/sweep.md).
@@ -299,6 +305,12 @@ pub struct SweepArgs {
     /// Raise (or lower) the sweep file's limit on the number of cases (default 10000000).
     #[arg(long, value_name = "N")]
     pub max_cases: Option<u64>,
+    /// Also store every case's fields (pimp: pressure; bem: pressure, displacement and
+    /// gap) as .npy files in DIR/fields/ (default: the sweep file's
+    /// `fields`, else none). Part of the sweep's identity: a folder is resumed only with
+    /// the same choice.
+    #[arg(long, value_enum, value_name = "none|npy")]
+    pub fields: Option<SweepFields>,
     /// No progress bar.
     #[arg(long)]
     pub quiet: bool,

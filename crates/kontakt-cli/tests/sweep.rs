@@ -400,3 +400,85 @@ fn bad_sweep_files_fail_with_one_line_naming_the_key() {
     assert!(err.contains("--threads = 0"), "{err}");
     assert!(!out.exists(), "nothing written for bad input");
 }
+
+/// Read a `.npy` file of float64: its shape and values.
+fn read_npy(path: &Path) -> (Vec<u64>, Vec<f64>) {
+    let bytes = std::fs::read(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let npy = npyz::NpyFile::new(&bytes[..]).unwrap();
+    assert_eq!(npy.header().dtype().descr(), "'<f8'", "{}", path.display());
+    let shape = npy.shape().to_vec();
+    (shape, npy.into_vec::<f64>().unwrap())
+}
+
+/// `--fields npy`: one pressure file per case, shaped as the row's grid, whose integral is
+/// the row's force and whose maximum is the row's peak; the choice is part of the sweep's
+/// identity, and a method without fields is refused.
+#[test]
+fn fields_npy_stores_each_case_pressure_consistent_with_its_row() {
+    let dir = tempdir("fields");
+    let out = dir.join("out");
+    let sweep = examples().join("sweeps/pimp_roller_rib.toml");
+    let args = |extra: &[&str]| {
+        let mut a = vec![
+            "sweep".to_string(),
+            sweep.to_str().unwrap().to_string(),
+            "--out".into(),
+            out.to_str().unwrap().to_string(),
+            "--format".into(),
+            "csv".into(),
+        ];
+        a.extend(extra.iter().map(|s| s.to_string()));
+        a
+    };
+    let a = args(&["--fields", "npy"]);
+    let v = run_json(&a.iter().map(String::as_str).collect::<Vec<_>>());
+    assert_eq!(v["cases"], 14);
+    assert!(v["fields"].as_str().unwrap().ends_with("fields"), "{v}");
+    let rows = read_csv(&out.join("results.csv"));
+    for r in &rows {
+        let case: u64 = r["case"].parse().unwrap();
+        let path = out.join(format!("fields/chunk-000000/case-{case:09}-pressure.npy"));
+        let (shape, p) = read_npy(&path);
+        let (nx, ny) = (num(r, "grid.cells[0]"), num(r, "grid.cells[1]"));
+        assert_eq!(shape, vec![ny as u64, nx as u64]);
+        let cell = num(r, "grid.cell_mm[0]") * num(r, "grid.cell_mm[1]");
+        let force: f64 = p.iter().sum::<f64>() * cell;
+        let f = num(r, "force_n");
+        assert!(
+            (force - f).abs() < 1e-9 * f,
+            "case {case}: {force} against {f}"
+        );
+        let max = p.iter().copied().fold(f64::MIN, f64::max);
+        assert_eq!(max, num(r, "max_pressure_mpa"), "case {case}");
+        assert!(p.iter().all(|x| x.is_finite() && *x >= 0.0));
+    }
+    let files = std::fs::read_dir(out.join("fields/chunk-000000"))
+        .unwrap()
+        .count();
+    assert_eq!(files, 14, "one file per case, no temporary left");
+
+    // Rerunning without fields into the same folder is another sweep.
+    let a = args(&["--fields", "none"]);
+    let msg = bad(&a.iter().map(String::as_str).collect::<Vec<_>>());
+    assert!(msg.contains("holds a different sweep"), "{msg}");
+
+    // A Hertz case has no field.
+    let hertz = dir.join("hertz.toml");
+    std::fs::write(
+        &hertz,
+        format!("{HERTZ_BASE}\n[[parameter]]\nkey = \"load.force_n\"\nvalues = [1.0, 2.0]\n"),
+    )
+    .unwrap();
+    let msg = bad(&[
+        "sweep",
+        hertz.to_str().unwrap(),
+        "--out",
+        dir.join("h").to_str().unwrap(),
+        "--fields",
+        "npy",
+    ]);
+    assert!(
+        msg.contains("invalid fields = \"npy\"") && msg.contains("hertz"),
+        "{msg}"
+    );
+}

@@ -4,7 +4,7 @@
 //! resumes from the other.
 
 use crate::errors::input_error;
-use kontakt_case::sweep::OutputFormat;
+use kontakt_case::sweep::{Fields, OutputFormat};
 use kontakt_case::{Sweep as CaseSweep, SweepError};
 use pyo3::exceptions::{PyOSError, PyRuntimeError};
 use pyo3::prelude::*;
@@ -24,6 +24,24 @@ fn sweep_err(e: SweepError) -> PyErr {
     }
 }
 
+/// `sweep` storing `fields` (`None`: the sweep file's choice).
+fn with_fields(sweep: CaseSweep, fields: Option<&str>) -> PyResult<Sweep> {
+    let fields = match fields {
+        None => return Ok(Sweep { inner: sweep }),
+        Some("none") => Fields::None,
+        Some("npy") => Fields::Npy,
+        Some(other) => {
+            return Err(crate::errors::invalid(
+                "fields",
+                other,
+                "\"none\" or \"npy\"",
+            ));
+        }
+    };
+    let inner = sweep.with_fields(fields).map_err(sweep_err)?;
+    Ok(Sweep { inner })
+}
+
 /// A parameter sweep (docs/sweep.md): a base case and parameters by their case keys, a full
 /// grid or given points, split into chunks of `chunk_size` cases. Units are the case
 /// file's (mm, N, MPa; degrees in case files).
@@ -35,21 +53,34 @@ pub struct Sweep {
 #[pymethods]
 impl Sweep {
     /// Read a sweep file (TOML; relative paths in it are relative to the file).
-    /// `max_cases` raises the refusal threshold (default 10 000 000 cases).
+    /// `max_cases` raises the refusal threshold (default 10 000 000 cases); `fields`
+    /// (`"none"` or `"npy"`) replaces the file's `fields`.
     #[staticmethod]
-    #[pyo3(signature = (path, max_cases = None))]
-    fn from_file(path: PathBuf, max_cases: Option<u64>) -> PyResult<Self> {
+    #[pyo3(signature = (path, max_cases = None, fields = None))]
+    fn from_file(path: PathBuf, max_cases: Option<u64>, fields: Option<&str>) -> PyResult<Self> {
         let inner = CaseSweep::from_path_with_limit(&path, max_cases).map_err(sweep_err)?;
-        Ok(Sweep { inner })
+        with_fields(inner, fields)
     }
 
     /// A sweep from TOML text; relative paths in it are relative to `base_dir`.
     #[staticmethod]
-    #[pyo3(signature = (text, base_dir = PathBuf::from("."), max_cases = None))]
-    fn from_toml(text: &str, base_dir: PathBuf, max_cases: Option<u64>) -> PyResult<Self> {
+    #[pyo3(signature = (text, base_dir = PathBuf::from("."), max_cases = None, fields = None))]
+    fn from_toml(
+        text: &str,
+        base_dir: PathBuf,
+        max_cases: Option<u64>,
+        fields: Option<&str>,
+    ) -> PyResult<Self> {
         let inner =
             CaseSweep::from_toml_str_with_limit(text, &base_dir, max_cases).map_err(sweep_err)?;
-        Ok(Sweep { inner })
+        with_fields(inner, fields)
+    }
+
+    /// Which fields the sweep stores besides its table: `"none"` or `"npy"` (one `.npy`
+    /// per case and field in `out_dir/fields/chunk-NNNNNN/`, float64, shape `[ny, nx]`).
+    #[getter]
+    fn fields(&self) -> &'static str {
+        self.inner.fields().as_str()
     }
 
     fn __len__(&self) -> usize {

@@ -138,3 +138,30 @@ def test_a_lost_worker_loses_no_results(client, tmp_path: Path) -> None:
     assert killed
     assert killed[0] not in client.scheduler_info()["workers"], "the worker did not die"
     check_hertz_rows(read_rows(path), 8000)
+
+
+def test_fields_npy_holds_each_case_pressure(tmp_path: Path) -> None:
+    """fields="npy": one float64 [ny, nx] pressure file per PimP case whose integral is the
+    row's force and whose maximum is the row's peak (the same files as `kontakt sweep
+    --fields npy`); a Hertz sweep has no field and is refused with field = "sweep"."""
+    import numpy as np
+
+    out = tmp_path / "fields"
+    path = kt.sweep(
+        ROOT / "examples" / "sweeps" / "pimp_roller_rib.toml", out, format="csv", fields="npy"
+    )
+    rows = read_rows(path)
+    assert len(rows) == 14
+    for r in rows:
+        p = np.load(out / "fields" / "chunk-000000" / f"case-{int(r['case']):09d}-pressure.npy")
+        assert p.dtype == np.float64
+        assert p.shape == (int(r["grid.cells[1]"]), int(r["grid.cells[0]"]))
+        cell = float(r["grid.cell_mm[0]"]) * float(r["grid.cell_mm[1]"])
+        assert p.sum() * cell == pytest.approx(float(r["force_n"]), rel=1e-9)
+        assert p.max() == float(r["max_pressure_mpa"])
+    with pytest.raises(kt.InputError, match="no field") as e:
+        kt.sweep(sweep_text(4096, count=2), tmp_path / "hertz", fields="npy")
+    assert e.value.field == "sweep"
+    with pytest.raises(kt.InputError) as e:
+        kt.sweep(sweep_text(4096, count=2), tmp_path / "hertz", fields="zarr")
+    assert e.value.field == "fields"

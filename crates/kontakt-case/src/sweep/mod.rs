@@ -6,6 +6,7 @@
 //! mode = "grid"                       # or "points": the i-th value of every parameter
 //! base = "../ball_on_flat.toml"       # a case file (relative to this file), or an inline [base] table
 //! chunk_size = 4096                   # cases per chunk file (1..=10 000 000)
+//! fields = "none"                     # or "npy": every case's fields as .npy files too
 //!
 //! [[parameter]]
 //! key = "load.force_n"                # N
@@ -31,7 +32,9 @@
 mod store;
 pub mod table;
 
-pub use store::{ChunkSummary, CombineSummary, LocalOptions, LocalSummary, OutputFormat, Progress};
+pub use store::{
+    ChunkSummary, CombineSummary, FIELDS_DIR, LocalOptions, LocalSummary, OutputFormat, Progress,
+};
 
 use crate::case::Case;
 use crate::common::case_file_error;
@@ -124,6 +127,30 @@ impl SweepMode {
     }
 }
 
+/// Which fields a sweep stores besides its table (`fields` in the sweep file, `--fields`
+/// on the command line).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Fields {
+    /// The table only (the default): scalars are what most sweeps need.
+    #[default]
+    None,
+    /// Also every field of every case as a NumPy `.npy` file (little-endian float64, shape
+    /// `[ny, nx]`, C order): `OUT/fields/chunk-000042/case-000000042-pressure.npy`; see
+    /// [`crate::Outcome::fields`] for which methods have which fields.
+    Npy,
+}
+
+impl Fields {
+    /// The name in the sweep file: `none` or `npy`.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Fields::None => "none",
+            Fields::Npy => "npy",
+        }
+    }
+}
+
 /// Spacing of a range.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -147,6 +174,8 @@ struct SweepSpec {
     chunk_size: Option<i64>,
     #[serde(default)]
     max_cases: Option<i64>,
+    #[serde(default)]
+    fields: Fields,
     #[serde(default, rename = "parameter")]
     parameters: Vec<ParameterSpec>,
 }
@@ -399,6 +428,7 @@ pub struct Sweep {
     strides: Vec<u64>,
     len: u64,
     chunk_size: u64,
+    fields: Fields,
     definition: String,
     hash: String,
 }
@@ -559,7 +589,7 @@ impl Sweep {
             }
         }
 
-        let mut sweep = Sweep {
+        let sweep = Sweep {
             name: spec.name,
             mode: spec.mode,
             base,
@@ -568,13 +598,42 @@ impl Sweep {
             strides,
             len,
             chunk_size,
+            fields: Fields::None,
             definition: String::new(),
             hash: String::new(),
         };
         sweep.check_keys(base_case.method())?;
-        sweep.definition = sweep.normalised_definition();
-        sweep.hash = format!("fnv1a128:{:032x}", fnv1a128(sweep.definition.as_bytes()));
-        Ok(sweep)
+        sweep.with_fields(spec.fields)
+    }
+
+    /// The same sweep storing `fields` (replacing the sweep file's `fields`). Storing
+    /// fields is part of the definition: its hash changes, so an output directory written
+    /// without fields is not resumed with them, nor the other way round.
+    ///
+    /// # Errors
+    /// [`SweepError::Input`] for `Fields::Npy` on a method without fields (`hertz`,
+    /// `traction`).
+    pub fn with_fields(mut self, fields: Fields) -> SweepResult<Self> {
+        if fields != Fields::None {
+            let method = Case::from_toml_table(self.base.clone())
+                .map(|c| c.method())
+                .unwrap_or("?");
+            if !matches!(method, "pimp" | "bem") {
+                return Err(input(format!(
+                    "invalid fields = \"{}\": a {method} case has no field in its rows' grid (the pressure of hertz and traction cases is a closed form); expected \"none\", or a pimp or bem base case",
+                    fields.as_str()
+                )));
+            }
+        }
+        self.fields = fields;
+        self.definition = self.normalised_definition();
+        self.hash = format!("fnv1a128:{:032x}", fnv1a128(self.definition.as_bytes()));
+        Ok(self)
+    }
+
+    /// Which fields the sweep stores besides its table.
+    pub fn fields(&self) -> Fields {
+        self.fields
     }
 
     /// Check every parameter against the case reader: each list value (a range: its ends)
@@ -645,6 +704,10 @@ impl Sweep {
             self.mode.as_str(),
             self.chunk_size
         );
+        // Written only when set, so that the hashes of sweeps without fields stay as they were.
+        if self.fields != Fields::None {
+            let _ = writeln!(s, "fields = {}", self.fields.as_str());
+        }
         for p in &self.parameters {
             let _ = write!(s, "parameter {} keys [{}] ", p.name, p.keys().join(", "));
             match &p.values {

@@ -9,7 +9,7 @@
 //! ```
 
 use super::table::{self, CASE_COLUMN, Row, STATUS_COLUMN, Status};
-use super::{MAX_THREADS, Sweep, SweepError, SweepResult, input};
+use super::{Fields, MAX_THREADS, Sweep, SweepError, SweepResult, input};
 use crate::case::Case;
 use arrow_array::{Array, ArrayRef, RecordBatch, StringArray, UInt64Array};
 use arrow_schema::{DataType, Field, Schema};
@@ -29,6 +29,43 @@ use std::time::Instant;
 pub const MANIFEST: &str = "sweep.json";
 /// The folder of the chunk files in the output directory.
 pub const CHUNKS_DIR: &str = "chunks";
+/// The folder of the fields (`fields = "npy"`) in the output directory.
+pub const FIELDS_DIR: &str = "fields";
+
+/// The file of field `name` of case `index` in its chunk's fields folder.
+fn field_file_name(index: u64, name: &str) -> String {
+    format!("case-{index:09}-{name}.npy")
+}
+
+/// Write `field` as a NumPy `.npy` file: little-endian float64, shape `[ny, nx]`, C order
+/// (row `j` is `y(j)`, column `i` is `x(i)`).
+fn write_npy(path: &Path, field: &crate::FieldView<'_>) -> SweepResult<()> {
+    use npyz::WriterBuilder as _;
+    let write = || -> std::io::Result<()> {
+        let file = std::io::BufWriter::new(File::create(path)?);
+        let shape = [field.grid.ny() as u64, field.grid.nx() as u64];
+        let little_f8: npyz::TypeStr = "<f8"
+            .parse()
+            .map_err(|e| std::io::Error::other(format!("{e}")))?;
+        let mut w = npyz::WriteOptions::new()
+            .dtype(npyz::DType::Plain(little_f8))
+            .shape(&shape)
+            .writer(file)
+            .begin_nd()?;
+        w.extend(field.values.iter().copied())?;
+        w.finish()
+    };
+    write().map_err(|e| SweepError::io(path, e))
+}
+
+/// A row for an error that cannot happen (a case evaluated without writing files).
+fn unreachable_row(error: String) -> Row {
+    Row {
+        status: Status::Failed,
+        error: Some(error),
+        outputs: Vec::new(),
+    }
+}
 
 /// Format of the combined results.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -261,6 +298,14 @@ impl Sweep {
 
     /// Run case `index` (never panics: a panic of a solver becomes status `panic`).
     pub fn evaluate(&self, index: u64) -> Row {
+        // Without a fields folder nothing is written, so nothing can fail.
+        self.evaluate_case(index, None)
+            .unwrap_or_else(|e| unreachable_row(e.to_string()))
+    }
+
+    /// Run case `index`; with `fields_dir`, write its fields there as
+    /// `case-NNNNNNNNN-<name>.npy` (an error only when a file cannot be written).
+    fn evaluate_case(&self, index: u64, fields_dir: Option<&Path>) -> SweepResult<Row> {
         let fail = |status, error: String| Row {
             status,
             error: Some(error),
@@ -271,17 +316,24 @@ impl Sweep {
             .and_then(|t| Case::from_toml_table(t).map_err(|e| input(e.to_string())))
         {
             Ok(c) => c,
-            Err(e) => return fail(Status::Invalid, e.to_string()),
+            Err(e) => return Ok(fail(Status::Invalid, e.to_string())),
         };
         let run =
             std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| case.run(self.base_dir())));
-        match run {
+        Ok(match run {
             Ok(Ok(outcome)) => match serde_json::to_value(&outcome) {
-                Ok(v) => Row {
-                    status: Status::Ok,
-                    error: None,
-                    outputs: table::flatten(&v),
-                },
+                Ok(v) => {
+                    if let Some(dir) = fields_dir {
+                        for field in outcome.fields() {
+                            write_npy(&dir.join(field_file_name(index, field.name)), &field)?;
+                        }
+                    }
+                    Row {
+                        status: Status::Ok,
+                        error: None,
+                        outputs: table::flatten(&v),
+                    }
+                }
                 Err(e) => fail(Status::Failed, format!("report: {e}")),
             },
             Ok(Err(e @ kontakt::Error::NotConverged { .. })) => fail(Status::Failed, e.to_string()),
@@ -294,20 +346,31 @@ impl Sweep {
                     .unwrap_or_else(|| "unknown panic".into());
                 fail(Status::Panic, format!("panic: {msg}"))
             }
-        }
+        })
     }
 
     /// The rows of chunk `index`, computed in parallel on the current rayon pool, in
-    /// case order; `on_case` is called after each case.
-    fn chunk_rows(&self, index: u64, on_case: &(dyn Fn() + Sync)) -> Vec<Row> {
+    /// case order; `on_case` is called after each case. With `fields_dir` each case's
+    /// fields are written there.
+    fn chunk_rows(
+        &self,
+        index: u64,
+        fields_dir: Option<&Path>,
+        on_case: &(dyn Fn() + Sync),
+    ) -> SweepResult<Vec<Row>> {
         self.chunk_range(index)
             .into_par_iter()
             .map(|i| {
-                let row = self.evaluate(i);
+                let row = self.evaluate_case(i, fields_dir);
                 on_case();
                 row
             })
             .collect()
+    }
+
+    /// The folder of chunk `index`'s fields in `out_dir`: `fields/chunk-000042`.
+    pub fn fields_dir(&self, out_dir: &Path, index: u64) -> PathBuf {
+        out_dir.join(FIELDS_DIR).join(format!("chunk-{index:06}"))
     }
 
     /// The table of chunk `index`, computed in memory (no file): for a driver that keeps
@@ -317,7 +380,7 @@ impl Sweep {
     /// [`SweepError::Input`] for `index >= chunk_count()`.
     pub fn chunk_table(&self, index: u64) -> SweepResult<RecordBatch> {
         self.check_chunk_index(index)?;
-        let rows = self.chunk_rows(index, &|| {});
+        let rows = self.chunk_rows(index, None, &|| {})?;
         table::chunk_batch(self, self.chunk_range(index).start, &rows)
             .map_err(|m| table_err(Path::new("<memory>"), m))
     }
@@ -352,7 +415,38 @@ impl Sweep {
         on_case: &(dyn Fn() + Sync),
     ) -> SweepResult<ChunkSummary> {
         let start = Instant::now();
-        let rows = self.chunk_rows(index, on_case);
+        // Fields first, into a temporary folder renamed into place before the chunk file is
+        // written: a chunk file on disk means its fields are complete too.
+        let fields = match self.fields() {
+            Fields::None => None,
+            Fields::Npy => Some(self.fields_dir(out_dir, index)),
+        };
+        let temp = fields.as_ref().map(|dir| {
+            dir.with_file_name(format!(
+                ".chunk-{index:06}.{}-{}.tmp",
+                std::process::id(),
+                TEMP_COUNTER.fetch_add(1, Ordering::Relaxed)
+            ))
+        });
+        if let Some(t) = &temp {
+            std::fs::create_dir_all(t).map_err(|e| SweepError::io(t, e))?;
+        }
+        let rows = match self.chunk_rows(index, temp.as_deref(), on_case) {
+            Ok(r) => r,
+            Err(e) => {
+                if let Some(t) = &temp {
+                    let _ = std::fs::remove_dir_all(t);
+                }
+                return Err(e);
+            }
+        };
+        if let (Some(t), Some(dir)) = (&temp, &fields) {
+            // A folder left by a run killed between this rename and the chunk file.
+            if dir.exists() {
+                std::fs::remove_dir_all(dir).map_err(|e| SweepError::io(dir, e))?;
+            }
+            std::fs::rename(t, dir).map_err(|e| SweepError::io(dir, e))?;
+        }
         let not_ok = rows.iter().filter(|r| r.status != Status::Ok).count() as u64;
         let path = self.chunk_path(out_dir, index);
         let batch = table::chunk_batch(self, self.chunk_range(index).start, &rows)
@@ -519,11 +613,18 @@ impl Sweep {
             }
         };
         self.prepare(out_dir)?;
-        let chunks_dir = out_dir.join(CHUNKS_DIR);
-        if let Ok(entries) = std::fs::read_dir(&chunks_dir) {
-            for e in entries.flatten() {
-                if e.file_name().to_string_lossy().ends_with(".tmp") {
-                    let _ = std::fs::remove_file(e.path());
+        // Temporary files and field folders left by a killed run.
+        for dir in [out_dir.join(CHUNKS_DIR), out_dir.join(FIELDS_DIR)] {
+            if let Ok(entries) = std::fs::read_dir(&dir) {
+                for e in entries.flatten() {
+                    if e.file_name().to_string_lossy().ends_with(".tmp") {
+                        let path = e.path();
+                        let _ = if path.is_dir() {
+                            std::fs::remove_dir_all(path)
+                        } else {
+                            std::fs::remove_file(path)
+                        };
+                    }
                 }
             }
         }

@@ -1,10 +1,12 @@
 //! `kontakt sweep SWEEP.toml`: a parameter sweep run on the local cores with a progress
 //! bar, resumable, combined into one table. A thin shell over `kontakt_case::Sweep`.
 
-use crate::cli::{SweepArgs, SweepFormat};
+use crate::cli::{SweepArgs, SweepFields, SweepFormat};
 use crate::commands::{InputError, progress};
 use anyhow::Result;
-use kontakt_case::sweep::{LocalOptions, MAX_THREADS, OutputFormat, Progress, Sweep};
+use kontakt_case::sweep::{
+    FIELDS_DIR, Fields, LocalOptions, MAX_THREADS, OutputFormat, Progress, Sweep,
+};
 use std::io::Write;
 
 /// Run the subcommand.
@@ -15,7 +17,13 @@ pub fn run(args: &SweepArgs, out: &mut impl Write) -> Result<()> {
         ))
         .into());
     }
-    let sweep = Sweep::from_path_with_limit(&args.sweep, args.max_cases)?;
+    let mut sweep = Sweep::from_path_with_limit(&args.sweep, args.max_cases)?;
+    if let Some(f) = args.fields {
+        sweep = sweep.with_fields(match f {
+            SweepFields::None => Fields::None,
+            SweepFields::Npy => Fields::Npy,
+        })?;
+    }
     let format = match args.format {
         SweepFormat::Parquet => OutputFormat::Parquet,
         SweepFormat::Csv => OutputFormat::Csv,
@@ -57,6 +65,7 @@ pub fn run(args: &SweepArgs, out: &mut impl Write) -> Result<()> {
             "seconds_combining": s.seconds_combining,
             "results": s.combined.path,
             "columns": s.combined.columns,
+            "fields": (sweep.fields() != Fields::None).then(|| args.out.join(FIELDS_DIR)),
         });
         serde_json::to_writer_pretty(&mut *out, &v)?;
         writeln!(out)?;
@@ -99,5 +108,12 @@ pub fn run(args: &SweepArgs, out: &mut impl Write) -> Result<()> {
         s.combined.rows,
         s.combined.columns.len()
     )?;
+    if sweep.fields() != Fields::None {
+        writeln!(
+            out,
+            "Fields: {}/chunk-*/case-*-<field>.npy (float64, [ny, nx])",
+            args.out.join(FIELDS_DIR).display()
+        )?;
+    }
     Ok(())
 }

@@ -19,15 +19,15 @@ from ._kontakt import Sweep
 
 __all__ = ["sweep"]
 
-# What a worker needs to rebuild the sweep: ("file", path, max_cases) or
-# ("toml", text, base_dir, max_cases). Plain strings and numbers, so Dask can ship them.
+# What a worker needs to rebuild the sweep: ("file", path, max_cases, fields) or
+# ("toml", text, base_dir, max_cases, fields). Plain strings and numbers, so Dask can ship them.
 _Source = tuple[Any, ...]
 
 
 def _load(source: _Source) -> Sweep:
     if source[0] == "file":
-        return Sweep.from_file(source[1], source[2])
-    return Sweep.from_toml(source[1], source[2], source[3])
+        return Sweep.from_file(source[1], source[2], source[3])
+    return Sweep.from_toml(source[1], source[2], source[3], source[4])
 
 
 def _run_chunk(source: _Source, index: int, out: str) -> dict[str, Any]:
@@ -44,6 +44,7 @@ def sweep(
     max_cases: int | None = None,
     base_dir: str | os.PathLike[str] = ".",
     retries: int = 3,
+    fields: str | None = None,
     on_chunk: Callable[[dict[str, Any]], None] | None = None,
 ) -> str:
     """Run a sweep into the folder ``out`` and return the path of the combined table.
@@ -55,16 +56,20 @@ def sweep(
     more tries on an error; a task on a worker that dies is rescheduled by Dask); the
     workers need the ``kontakt`` package and access to ``out``. ``on_chunk`` is called with
     each finished chunk's summary (``index``, ``cases``, ``not_ok``, ``path``, ``seconds``).
-    ``format`` is ``"parquet"`` or ``"csv"`` for the combined table.
+    ``format`` is ``"parquet"`` or ``"csv"`` for the combined table. ``fields="npy"``
+    also stores every case's fields (pimp and bem cases: pressure [MPa]; bem also the
+    displacement and the gap [mm]) as ``out/fields/chunk-NNNNNN/case-NNNNNNNNN-<field>.npy``
+    (float64, shape ``[ny, nx]``, the grid of the row's ``grid.*`` columns); ``None`` keeps
+    the sweep file's ``fields`` (default ``"none"``).
 
     Raises ``kontakt.InputError`` for a bad sweep file or an ``out`` that holds another
     sweep, ``OSError`` when a file cannot be written.
     """
     text = os.fspath(definition) if isinstance(definition, (str, os.PathLike)) else None
     if text is not None and "\n" in text:
-        source: _Source = ("toml", text, os.fspath(base_dir), max_cases)
+        source: _Source = ("toml", text, os.fspath(base_dir), max_cases, fields)
     else:
-        source = ("file", os.fspath(definition), max_cases)
+        source = ("file", os.fspath(definition), max_cases, fields)
     s = _load(source)
     out_dir = os.fspath(Path(out))
     s.prepare(out_dir)
