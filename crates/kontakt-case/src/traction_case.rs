@@ -32,6 +32,9 @@
 //! max = 0.006
 //! points = 121               # optional, default 101
 //! # min = 0.0                # optional, default 0
+//! # lateral = 0.0            # optional: a constant lateral creepage [-] at every point
+//! # spin_per_mm = 0.0        # optional: a constant spin creepage [1/mm] at every point
+//! #                          # (both: kalker_linear and fastsim only)
 //!
 //! [fastsim]                  # optional
 //! elements = [50, 50]
@@ -213,6 +216,14 @@ pub struct CreepageRange {
     /// Number of points, 2..=100000, default 101.
     #[serde(default = "default_points")]
     pub points: usize,
+    /// Lateral creepage \[-\], the same at every point, default 0 (Kalker's linear
+    /// theory and FASTSIM only).
+    #[serde(default)]
+    pub lateral: f64,
+    /// Spin creepage \[1/mm\], the same at every point, default 0 (Kalker's linear theory
+    /// and FASTSIM only).
+    #[serde(default)]
+    pub spin_per_mm: f64,
 }
 
 fn default_points() -> usize {
@@ -246,6 +257,22 @@ impl CreepageRange {
                 self.points,
                 "2..=100000 points",
             ));
+        }
+        for (field, v, unit) in [
+            (
+                "creepage.lateral",
+                self.lateral,
+                "a finite lateral creepage [-]",
+            ),
+            (
+                "creepage.spin_per_mm",
+                self.spin_per_mm,
+                "a finite spin creepage [1/mm]",
+            ),
+        ] {
+            if !v.is_finite() {
+                return Err(Error::invalid(field, v, unit));
+            }
         }
         let n = self.points - 1;
         Ok((0..=n)
@@ -300,8 +327,27 @@ impl TractionCase {
 pub struct CurveReport {
     /// Model name (`carter`, `kalker_linear`, `fastsim`).
     pub model: &'static str,
-    /// `F_T/(mu F_N)` \[-\] at each creepage of the report (Kalker linear: unclipped).
+    /// `F_T/(mu F_N)` \[-\] at each creepage of the report (Kalker linear: unclipped),
+    /// with `F_T = -Fx` the longitudinal creep force opposing the longitudinal creepage.
     pub normalized_force: Vec<f64>,
+    /// The creep forces in both directions and the spin moment at each point (Kalker's
+    /// linear theory and FASTSIM, which take lateral and spin creepage): present when the
+    /// case gives `creepage.lateral` or `creepage.spin_per_mm`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub forces: Option<CreepForces>,
+}
+
+/// Creep forces and spin moment on body 1 along a curve (Kalker's sign convention: the
+/// forces oppose the creepages).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CreepForces {
+    /// Longitudinal force `Fx` \[N\] at each point.
+    pub longitudinal_force_n: Vec<f64>,
+    /// Lateral force `Fy` \[N\] at each point.
+    pub lateral_force_n: Vec<f64>,
+    /// Spin moment `Mz` about the contact centre \[N·mm\] at each point (FASTSIM; the
+    /// linear theory's `C33` is not in kontakt's coefficient table, so none for it).
+    pub spin_moment_nmm: Option<Vec<f64>>,
 }
 
 /// The result of a traction case. Keys carry their units; dimensionless quantities have
@@ -347,6 +393,14 @@ pub struct TractionReport {
     pub asperities: Option<usize>,
     /// The longitudinal creepages (slide-to-roll ratios) \[-\].
     pub creepage: Vec<f64>,
+    /// The constant lateral creepage \[-\] of every point, when the case gives lateral or
+    /// spin creepage.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lateral_creepage: Option<f64>,
+    /// The constant spin creepage \[1/mm\] of every point, when the case gives lateral or
+    /// spin creepage.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub spin_creepage_per_mm: Option<f64>,
     /// One curve per model, in the order of the case.
     pub curves: Vec<CurveReport>,
 }
@@ -511,7 +565,24 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
     let mut fastsim = None;
     let mut asperity = None;
     let mut curves = Vec::with_capacity(case.models.len());
+    let combined = case.creepage.lateral != 0.0 || case.creepage.spin_per_mm != 0.0;
     for &model in &case.models {
+        if combined && matches!(model, TractionModel::Carter | TractionModel::Asperity) {
+            let (field, value) = if case.creepage.lateral != 0.0 {
+                ("creepage.lateral", case.creepage.lateral)
+            } else {
+                ("creepage.spin_per_mm", case.creepage.spin_per_mm)
+            };
+            return Err(Error::invalid(
+                field,
+                value,
+                format!(
+                    "0 with model {} (a theory of longitudinal creepage only); lateral and \
+                     spin creepage need models = [\"kalker_linear\", \"fastsim\"]",
+                    model.as_str()
+                ),
+            ));
+        }
         let curve: &dyn TractionCurve = match model {
             TractionModel::Carter => &carter,
             TractionModel::Asperity => {
@@ -543,9 +614,18 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
                 }
             }
         };
+        let (normalized_force, forces) = if combined {
+            let (n, f) = combined_curve(&case.creepage, &creepage, kalker, fastsim.as_ref(), model)
+                .map_err(map_common)?;
+            (n, Some(f))
+        } else {
+            let n = curve.traction_curve(&creepage).map_err(map_common)?;
+            (n, None)
+        };
         curves.push(CurveReport {
             model: model.as_str(),
-            normalized_force: curve.traction_curve(&creepage).map_err(map_common)?,
+            normalized_force,
+            forces,
         });
     }
     // Linear-theory data for every point contact, also when the model was not asked for.
@@ -574,8 +654,72 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
         fastsim_elements: fastsim.map(|f| f.options().elements),
         asperities: asperity.map(|a| a.model().asperities().len()),
         creepage,
+        lateral_creepage: combined.then_some(case.creepage.lateral),
+        spin_creepage_per_mm: combined.then_some(case.creepage.spin_per_mm),
         curves,
     })
+}
+
+/// Kalker's linear theory or FASTSIM along the longitudinal creepages `xis` \[-\] with the
+/// case's constant lateral and spin creepage: `F_T/(mu F_N) = -Fx/(mu F_N)` (FASTSIM:
+/// within [-1, 1], as its pure-creepage curve) and the forces and moment.
+fn combined_curve(
+    range: &CreepageRange,
+    xis: &[f64],
+    kalker: Option<KalkerLinear>,
+    fastsim: Option<&Fastsim>,
+    model: TractionModel,
+) -> Result<(Vec<f64>, CreepForces)> {
+    let n = xis.len();
+    let mut normalized = Vec::with_capacity(n);
+    let mut fx = Vec::with_capacity(n);
+    let mut fy = Vec::with_capacity(n);
+    let mut mz = Vec::with_capacity(n);
+    for &xi in xis {
+        let c = kontakt::tangential::Creepage {
+            longitudinal: xi,
+            lateral: range.lateral,
+            spin: range.spin_per_mm,
+        };
+        let (forces, moment, bound, clip) = match (model, kalker, fastsim) {
+            (TractionModel::KalkerLinear, Some(k), _) => (
+                k.forces(&c)?,
+                None,
+                k.friction_coefficient() * k.ellipse().normal_force(),
+                false,
+            ),
+            (TractionModel::Fastsim, _, Some(f)) => {
+                let s = f.solve(&c)?;
+                (
+                    s.forces,
+                    Some(s.spin_moment),
+                    f.friction_coefficient() * f.ellipse().normal_force(),
+                    true,
+                )
+            }
+            _ => {
+                return Err(Error::invalid(
+                    "models",
+                    model.as_str(),
+                    "kalker_linear or fastsim with lateral or spin creepage",
+                ));
+            }
+        };
+        let t = -forces[0] / bound;
+        let t = if clip { t.clamp(-1.0, 1.0) } else { t };
+        normalized.push(if t == 0.0 { 0.0 } else { t });
+        fx.push(forces[0]);
+        fy.push(forces[1]);
+        mz.extend(moment);
+    }
+    Ok((
+        normalized,
+        CreepForces {
+            longitudinal_force_n: fx,
+            lateral_force_n: fy,
+            spin_moment_nmm: (mz.len() == n).then_some(mz),
+        },
+    ))
 }
 
 /// Plan the asperity model on the case's nominal contact.
