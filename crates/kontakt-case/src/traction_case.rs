@@ -13,7 +13,9 @@
 //! radii2_mm = [20.0, inf]
 //! angle_deg = 0.0
 //! # kind = "ellipse": semi_axes_mm = [a, b], a along the rolling direction
-//! # kind = "line": radii_mm = [R1, R2], length_mm = L (parallel cylinders; carter only)
+//! # kind = "line": radii_mm = [R1, R2] or half_width_mm = a, and length_mm = L
+//! #   (parallel cylinders, or a strip of given half-width under the Hertz pressure;
+//! #   carter and asperity only)
 //!
 //! [body1]
 //! e_mpa = 210000.0
@@ -23,7 +25,7 @@
 //! nu = 0.3
 //!
 //! [load]
-//! force_n = 1000.0
+//! force_n = 1000.0           # or, for kind = "line", line_load_n_per_mm [N/mm]
 //!
 //! [friction]
 //! mu = 0.1
@@ -179,10 +181,16 @@ pub enum TractionGeometry {
         /// Semi-axes `[a, b]` \[mm\]: `a` along the rolling direction, `b` across.
         semi_axes_mm: [f64; 2],
     },
-    /// Two parallel cylinders rolling about their axes (Carter's case).
+    /// Two parallel cylinders rolling about their axes (Carter's case), given by their
+    /// radii or by the half-width of their contact strip (exactly one).
     Line {
         /// Radii `[R1, R2]` \[mm\] (convex > 0, concave < 0, inf flat).
-        radii_mm: [f64; 2],
+        #[serde(default)]
+        radii_mm: Option<[f64; 2]>,
+        /// Half-width `a` \[mm\] of the strip, carrying the Hertz pressure
+        /// `p0 = 2 P'/(pi a)` of the line load `P'`.
+        #[serde(default)]
+        half_width_mm: Option<f64>,
         /// Contact length \[mm\]: the line load is `force_n / length_mm`.
         length_mm: f64,
     },
@@ -192,8 +200,52 @@ pub enum TractionGeometry {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct TractionLoad {
-    /// Normal force \[N\], > 0.
-    pub force_n: f64,
+    /// Normal force \[N\], > 0 (exactly one of `force_n` and `line_load_n_per_mm`).
+    #[serde(default)]
+    pub force_n: Option<f64>,
+    /// Line load \[N/mm\], > 0, for `kind = "line"`: the force is this times `length_mm`.
+    #[serde(default)]
+    pub line_load_n_per_mm: Option<f64>,
+}
+
+impl TractionLoad {
+    /// The normal force \[N\] and the key that gave it, for a contact of length `length`
+    /// \[mm\] (line contacts).
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] naming `load` (none or both given),
+    /// `load.line_load_n_per_mm` (a point contact, or not a finite value > 0) or
+    /// `load.force_n` (not a finite value > 0).
+    pub fn force(&self, length: Option<f64>) -> Result<(f64, &'static str)> {
+        match (self.force_n, self.line_load_n_per_mm, length) {
+            (Some(f), None, _) => Ok((
+                kontakt::error::positive_as("load.force_n", f, "a finite force > 0 N")?,
+                "load.force_n",
+            )),
+            (None, Some(q), Some(l)) => {
+                let q = kontakt::error::positive_as(
+                    "load.line_load_n_per_mm",
+                    q,
+                    "a finite line load > 0 N/mm",
+                )?;
+                Ok((q * l, "load.line_load_n_per_mm"))
+            }
+            (None, Some(q), None) => Err(Error::invalid(
+                "load.line_load_n_per_mm",
+                q,
+                "force_n for a point contact (a line load needs kind = \"line\")",
+            )),
+            (f, q, _) => Err(Error::invalid(
+                "load",
+                if f.is_some() && q.is_some() {
+                    "both force_n and line_load_n_per_mm"
+                } else {
+                    "neither force_n nor line_load_n_per_mm"
+                },
+                "exactly one of force_n [N] or line_load_n_per_mm [N/mm] (kind = \"line\")",
+            )),
+        }
+    }
 }
 
 /// `[friction]`.
@@ -456,10 +508,24 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
     let m1 = material(&case.body1, "body1")?;
     let m2 = material(&case.body2, "body2")?;
     let mu = case.friction.mu;
+    let length = match &case.geometry {
+        TractionGeometry::Line { length_mm, .. } => {
+            if !(length_mm.is_finite() && *length_mm > 0.0) {
+                return Err(Error::invalid(
+                    "geometry.length_mm",
+                    length_mm,
+                    "a finite length > 0 mm",
+                ));
+            }
+            Some(*length_mm)
+        }
+        _ => None,
+    };
+    let (force, load_key) = case.load.force(length)?;
     let map_common = |e: Error| {
         e.map_field(|f| match f {
             "friction_coefficient" => "friction.mu".into(),
-            "normal_force" | "force" | "line_load" => "load.force_n".into(),
+            "normal_force" | "force" | "line_load" => load_key.into(),
             "poisson_ratio" => "body1.nu, body2.nu".into(),
             "elements[0]" => "fastsim.elements[0]".into(),
             "elements[1]" => "fastsim.elements[1]".into(),
@@ -498,7 +564,7 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
                 },
             )?;
             let sol = HertzPointContact::new(g, m1, m2)?
-                .solve_force(case.load.force_n)
+                .solve_force(force)
                 .map_err(map_common)?;
             let Some(axis) = rolling_axis(&sol) else {
                 return Err(Error::Geometry {
@@ -517,38 +583,52 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
             ("hertz", Some(e), carter, None, axes, e.max_pressure())
         }
         TractionGeometry::Ellipse { semi_axes_mm } => {
-            let e = ContactEllipse::new(semi_axes_mm[0], semi_axes_mm[1], case.load.force_n)
-                .map_err(map_common)?;
+            let e =
+                ContactEllipse::new(semi_axes_mm[0], semi_axes_mm[1], force).map_err(map_common)?;
             let carter = Carter::from_ellipse(&e, &m1, &m2, mu).map_err(map_common)?;
             let axes = [e.a(), e.b()];
             ("ellipse", Some(e), carter, None, axes, e.max_pressure())
         }
         TractionGeometry::Line {
             radii_mm,
+            half_width_mm,
             length_mm,
         } => {
-            if !(length_mm.is_finite() && *length_mm > 0.0) {
-                return Err(Error::invalid(
-                    "geometry.length_mm",
-                    length_mm,
-                    "a finite length > 0 mm",
-                ));
-            }
-            let contact = LineContact::new(radii_mm[0], radii_mm[1], m1, m2).map_err(|e| {
-                e.map_field(|f| match f {
-                    "body1.radius" => "geometry.radii_mm[0]".into(),
-                    "body2.radius" => "geometry.radii_mm[1]".into(),
-                    _ => "geometry.radii_mm".into(),
-                })
-            })?;
-            let positive_force = kontakt::error::positive_as(
-                "normal_force",
-                case.load.force_n,
-                "a finite force > 0 N",
-            )
-            .map_err(map_common)?;
-            let line_load = positive_force / length_mm;
-            let carter = Carter::from_line_contact(&contact, line_load, mu).map_err(map_common)?;
+            let line_load = force / length_mm;
+            let carter = match (radii_mm, half_width_mm) {
+                (Some(radii_mm), None) => {
+                    let contact =
+                        LineContact::new(radii_mm[0], radii_mm[1], m1, m2).map_err(|e| {
+                            e.map_field(|f| match f {
+                                "body1.radius" => "geometry.radii_mm[0]".into(),
+                                "body2.radius" => "geometry.radii_mm[1]".into(),
+                                _ => "geometry.radii_mm".into(),
+                            })
+                        })?;
+                    Carter::from_line_contact(&contact, line_load, mu).map_err(map_common)?
+                }
+                (None, Some(a)) => {
+                    let a = kontakt::error::positive_as(
+                        "geometry.half_width_mm",
+                        *a,
+                        "a finite half-width > 0 mm",
+                    )?;
+                    // Hertz strip: P' = (pi/2) p0 a.
+                    let p0 = 2.0 * line_load / (std::f64::consts::PI * a);
+                    Carter::new(a, p0, e_star, mu).map_err(map_common)?
+                }
+                (r, _) => {
+                    return Err(Error::invalid(
+                        "geometry",
+                        if r.is_some() {
+                            "both radii_mm and half_width_mm"
+                        } else {
+                            "neither radii_mm nor half_width_mm"
+                        },
+                        "exactly one of radii_mm [R1, R2] or half_width_mm for kind = \"line\"",
+                    ));
+                }
+            };
             let axes = [carter.semi_width(), 0.5 * length_mm];
             (
                 "line",
@@ -586,7 +666,7 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
         let curve: &dyn TractionCurve = match model {
             TractionModel::Carter => &carter,
             TractionModel::Asperity => {
-                asperity = Some(asperity_model(case, &carter, ellipse, m1, m2)?);
+                asperity = Some(asperity_model(case, force, &carter, ellipse, m1, m2)?);
                 asperity.as_ref().expect("invariant: just set")
             }
             TractionModel::KalkerLinear | TractionModel::Fastsim => {
@@ -640,7 +720,7 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
         name: case.name.clone(),
         method: "traction",
         geometry: label,
-        force_n: case.load.force_n,
+        force_n: force,
         line_load_n_per_mm: line_load,
         mu,
         e_star_mpa: e_star,
@@ -725,6 +805,7 @@ fn combined_curve(
 /// Plan the asperity model on the case's nominal contact.
 fn asperity_model(
     case: &TractionCase,
+    force: f64,
     carter: &Carter,
     ellipse: Option<ContactEllipse>,
     m1: kontakt::material::ElasticMaterial,
@@ -754,14 +835,22 @@ fn asperity_model(
     ) {
         (
             TractionGeometry::Line {
-                radii_mm,
+                radii_mm: Some(radii_mm),
                 length_mm,
+                ..
             },
             _,
         ) => NominalContact::HertzLine {
             length: *length_mm,
             radii: *radii_mm,
         },
+        (TractionGeometry::Line { .. }, _) => {
+            return Err(Error::invalid(
+                "geometry.half_width_mm",
+                carter.semi_width(),
+                "radii_mm instead, for the asperity model (its Hertz line contact needs the radii)",
+            ));
+        }
         (_, Some(circle)) => circle,
         _ => {
             return Err(Error::invalid(
@@ -777,7 +866,7 @@ fn asperity_model(
     };
     let params = AsperityTractionParams {
         nominal,
-        load: case.load.force_n,
+        load: force,
         friction_coefficient: case.friction.mu,
         youngs_modulus: m1.youngs_modulus(),
         poisson_ratio: m1.poisson_ratio(),

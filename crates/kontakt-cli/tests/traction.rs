@@ -443,3 +443,61 @@ fn lateral_and_spin_creepage_give_forces_in_both_directions() {
         "{l}"
     );
 }
+
+/// A line contact given by its half-width or by its load per length (issue 16, item 5):
+/// the strip of the Hertz half-width of two cylinders under the same line load is the same
+/// Carter contact (p0 and saturation creepage to 1e-12); `line_load_n_per_mm = 100` with a
+/// 10 mm length is `force_n = 1000`; contradictory or misplaced keys are one-line errors.
+#[test]
+fn line_contact_by_half_width_or_line_load() {
+    let dir = tempdir();
+    let base = std::fs::read_to_string(example()).unwrap().replace(
+        "models = [\"carter\", \"kalker_linear\", \"fastsim\"]",
+        "models = [\"carter\"]",
+    );
+    let geometry = "kind = \"hertz\"\nradii1_mm = [20.0, 50.0]    # [circumferential (rolling), crown]\nradii2_mm = [20.0, inf]     # cylindrical disc\nangle_deg = 0.0";
+    assert!(base.contains(geometry));
+    let write = |name: &str, geometry_text: &str, load: &str| {
+        let p = dir.join(name);
+        let text = base
+            .replace(geometry, geometry_text)
+            .replace("force_n = 1000.0", load);
+        std::fs::write(&p, text).unwrap();
+        p
+    };
+    let radii = write(
+        "line_radii.toml",
+        "kind = \"line\"\nradii_mm = [20.0, 20.0]\nlength_mm = 10.0",
+        "force_n = 1000.0",
+    );
+    let r = run_json(&["traction", radii.to_str().unwrap()]);
+    let a = r["semi_axes_mm"][0].as_f64().unwrap();
+    let strip = write(
+        "line_strip.toml",
+        &format!("kind = \"line\"\nhalf_width_mm = {a:?}\nlength_mm = 10.0"),
+        "line_load_n_per_mm = 100.0",
+    );
+    let s = run_json(&["traction", strip.to_str().unwrap()]);
+    assert_eq!(s["force_n"], 1000.0);
+    assert_eq!(s["line_load_n_per_mm"], 100.0);
+    for key in ["max_pressure_mpa", "carter_saturation_creepage"] {
+        let (x, y) = (r[key].as_f64().unwrap(), s[key].as_f64().unwrap());
+        assert!((x / y - 1.0).abs() < 1e-12, "{key}: {x} vs {y}");
+    }
+    let both = write(
+        "line_both.toml",
+        "kind = \"line\"\nradii_mm = [20.0, 20.0]\nhalf_width_mm = 0.1\nlength_mm = 10.0",
+        "force_n = 1000.0",
+    );
+    let l = bad(&["traction", both.to_str().unwrap()]);
+    assert!(
+        l.contains("invalid geometry = both radii_mm and half_width_mm"),
+        "{l}"
+    );
+    let point_line_load = write("point_q.toml", geometry, "line_load_n_per_mm = 100.0");
+    let l = bad(&["traction", point_line_load.to_str().unwrap()]);
+    assert!(l.contains("invalid load.line_load_n_per_mm = 100"), "{l}");
+    let no_load = write("no_load.toml", geometry, "");
+    let l = bad(&["traction", no_load.to_str().unwrap()]);
+    assert!(l.contains("invalid load = neither"), "{l}");
+}
