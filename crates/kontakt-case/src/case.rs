@@ -10,6 +10,9 @@ use kontakt::{Error, Result};
 use serde::Serialize;
 use std::path::Path;
 
+/// The valid `method` values, as an error message names them.
+const METHODS: &str = "\"hertz\", \"pimp\", \"bem\", \"traction\", \"friction\" or \"mindlin\"";
+
 /// A case of any method: the `method` key decides the schema.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Case {
@@ -24,6 +27,9 @@ pub enum Case {
     /// `method = "friction"`: rib friction of a tapered roller bearing
     /// ([`crate::friction_case`]).
     Friction(Box<crate::friction_case::FrictionCase>),
+    /// `method = "mindlin"`: Cattaneo-Mindlin partial slip and its loading history
+    /// ([`crate::mindlin_case`]).
+    Mindlin(Box<crate::mindlin_case::MindlinCase>),
 }
 
 impl Case {
@@ -43,11 +49,8 @@ impl Case {
             "bem" => Ok(Case::Bem(Box::new(parse_toml(text)?))),
             "traction" => Ok(Case::Traction(Box::new(parse_toml(text)?))),
             "friction" => Ok(Case::Friction(Box::new(parse_toml(text)?))),
-            other => Err(Error::invalid(
-                "method",
-                other,
-                "\"hertz\", \"pimp\", \"bem\", \"traction\" or \"friction\"",
-            )),
+            "mindlin" => Ok(Case::Mindlin(Box::new(parse_toml(text)?))),
+            other => Err(Error::invalid("method", other, METHODS)),
         }
     }
 
@@ -66,11 +69,7 @@ impl Case {
             None => "hertz".to_string(),
             Some(toml::Value::String(m)) => m.clone(),
             Some(other) => {
-                return Err(Error::invalid(
-                    "method",
-                    other,
-                    "\"hertz\", \"pimp\", \"bem\", \"traction\" or \"friction\"",
-                ));
+                return Err(Error::invalid("method", other, METHODS));
             }
         };
         match method.as_str() {
@@ -79,11 +78,8 @@ impl Case {
             "bem" => Ok(Case::Bem(Box::new(read(table)?))),
             "traction" => Ok(Case::Traction(Box::new(read(table)?))),
             "friction" => Ok(Case::Friction(Box::new(read(table)?))),
-            other => Err(Error::invalid(
-                "method",
-                other,
-                "\"hertz\", \"pimp\", \"bem\", \"traction\" or \"friction\"",
-            )),
+            "mindlin" => Ok(Case::Mindlin(Box::new(read(table)?))),
+            other => Err(Error::invalid("method", other, METHODS)),
         }
     }
 
@@ -95,6 +91,7 @@ impl Case {
             Case::Bem(_) => "bem",
             Case::Traction(_) => "traction",
             Case::Friction(_) => "friction",
+            Case::Mindlin(_) => "mindlin",
         }
     }
 
@@ -136,6 +133,9 @@ impl Case {
             Case::Friction(case) => {
                 Outcome::Friction(Box::new(crate::friction_case::run_friction_case(case)?))
             }
+            Case::Mindlin(case) => {
+                Outcome::Mindlin(Box::new(crate::mindlin_case::run_mindlin_case(case)?))
+            }
         })
     }
 }
@@ -175,6 +175,8 @@ pub enum Outcome {
     Traction(Box<crate::traction_case::TractionReport>),
     /// Rib friction report and the field of its maps.
     Friction(Box<crate::friction_case::FrictionOutcome>),
+    /// Cattaneo-Mindlin report with its loading history.
+    Mindlin(Box<crate::mindlin_case::MindlinReport>),
 }
 
 /// One field of an [`Outcome`] on its grid: values per cell, row-major with `x` fastest
@@ -215,7 +217,10 @@ impl Outcome {
             }
         }
         match self {
-            Outcome::Hertz(_) | Outcome::Traction(_) | Outcome::Friction(_) => Vec::new(),
+            Outcome::Hertz(_)
+            | Outcome::Traction(_)
+            | Outcome::Friction(_)
+            | Outcome::Mindlin(_) => Vec::new(),
             Outcome::Pimp(o) => vec![view(
                 "pressure",
                 "MPa",
@@ -242,6 +247,7 @@ impl Serialize for Outcome {
             Outcome::Bem(o) => o.report.serialize(s),
             Outcome::Traction(r) => r.serialize(s),
             Outcome::Friction(o) => o.report.serialize(s),
+            Outcome::Mindlin(r) => r.serialize(s),
         }
     }
 }
