@@ -26,4 +26,4 @@ pub use gt::{
     roughness_parameter,
 };
 pub use gw::{GreenwoodWilliamson, GwState, plasticity_index};
-pub use heights::{SummitHeights, height_integral};
+pub use heights::{SummitHeights, height_integral, height_integral_quadrature};
