@@ -424,7 +424,7 @@ impl GreenwoodTripp {
             let load_at = |d: f64| -> f64 {
                 w1.iter()
                     .zip(rho.iter().zip(&w_hertz))
-                    .map(|(w, (r, wh))| w * c * table.f32_f12((-d + 0.5 * r * r + wh) / alpha).0)
+                    .map(|(w, (r, wh))| w * c * table.f32((-d + 0.5 * r * r + wh) / alpha))
                     .sum::<f64>()
             };
             let (mut lo, mut hi) = (-50.0 * alpha - 10.0, 50.0 * alpha + 10.0);
@@ -435,7 +435,8 @@ impl GreenwoodTripp {
                 } else {
                     lo = mid;
                 }
-                if hi - lo < 1e-12 {
+                // a start for Newton: 1e-9 δ0 is plenty
+                if hi - lo < 1e-9 {
                     break;
                 }
             }
@@ -465,7 +466,7 @@ impl GreenwoodTripp {
         let a0 = params.hertz_radius();
         let p0 = params.hertz_pressure();
         let delta0 = params.hertz_approach();
-        let p_hat: Vec<f64> = g.iter().map(|&gi| c * table.f32_f12(gi).0).collect();
+        let p_hat: Vec<f64> = g.iter().map(|&gi| c * table.f32(gi)).collect();
         if p_hat.iter().any(|p| !p.is_finite()) || !d.is_finite() {
             return Err(Error::NotConverged {
                 what: "Greenwood-Tripp pressure".into(),

@@ -209,8 +209,10 @@ pub(crate) fn gaussian_far_below(n: f64, h: f64) -> f64 {
 /// $\ln F_n$ with the exact slopes $-nF_{n-1}/F_n$, on a step of 1/64 (interpolation
 /// error below 1e-9 relative, unit tested against the quadrature).
 pub(crate) struct GaussTable {
-    /// $\ln F_{3/2}$, $\ln F_{1/2}$, $\ln F_{-1/2}$ at the nodes.
-    ln_f: [Vec<f64>; 3],
+    /// $\ln F_{3/2}$, $\ln F_{1/2}$ at the nodes.
+    ln_f: [Vec<f64>; 2],
+    /// Their slopes times the step, $-nF_{n-1}/F_n\cdot\Delta h$, at the nodes.
+    slope: [Vec<f64>; 2],
 }
 
 /// Range and step of [`GaussTable`].
@@ -236,8 +238,51 @@ impl GaussTable {
                     ln_f[k].push(f.ln());
                 }
             }
-            GaussTable { ln_f }
+            let slope = [
+                (0..TABLE_NODES)
+                    .map(|j| -1.5 * (ln_f[1][j] - ln_f[0][j]).exp() * TABLE_STEP)
+                    .collect(),
+                (0..TABLE_NODES)
+                    .map(|j| -0.5 * (ln_f[2][j] - ln_f[1][j]).exp() * TABLE_STEP)
+                    .collect(),
+            ];
+            let [l32, l12, _] = ln_f;
+            GaussTable {
+                ln_f: [l32, l12],
+                slope,
+            }
         })
+    }
+
+    /// Node index and fraction of `h` (inside the table).
+    fn locate(h: f64) -> (usize, f64) {
+        let x = (h - TABLE_H_MIN) / TABLE_STEP;
+        let i = (x.floor() as usize).min(TABLE_NODES - 2);
+        (i, x - i as f64)
+    }
+
+    /// Cubic Hermite interpolation of table `k` at node `i`, fraction `t`.
+    fn hermite(&self, k: usize, i: usize, t: f64) -> f64 {
+        let (y, m) = (&self.ln_f[k], &self.slope[k]);
+        let t2 = t * t;
+        let t3 = t2 * t;
+        ((2.0 * t3 - 3.0 * t2 + 1.0) * y[i]
+            + (t3 - 2.0 * t2 + t) * m[i]
+            + (-2.0 * t3 + 3.0 * t2) * y[i + 1]
+            + (t3 - t2) * m[i + 1])
+            .exp()
+    }
+
+    /// $F_{3/2}(h)$, Gaussian heights.
+    pub(crate) fn f32(&self, h: f64) -> f64 {
+        if h >= GAUSS_H_MAX - 1.0 {
+            return 0.0;
+        }
+        if h < TABLE_H_MIN {
+            return gaussian_far_below(1.5, h);
+        }
+        let (i, t) = Self::locate(h);
+        self.hermite(0, i, t)
     }
 
     /// $(F_{3/2}(h), F_{1/2}(h))$, Gaussian heights.
@@ -248,24 +293,8 @@ impl GaussTable {
         if h < TABLE_H_MIN {
             return (gaussian_far_below(1.5, h), gaussian_far_below(0.5, h));
         }
-        let x = (h - TABLE_H_MIN) / TABLE_STEP;
-        let i = (x.floor() as usize).min(TABLE_NODES - 2);
-        let t = x - i as f64;
-        let [l32, l12, lm12] = &self.ln_f;
-        // slopes of ln F_n in h: -n F_{n-1}/F_n, times the step
-        let s32 = |j: usize| -1.5 * (l12[j] - l32[j]).exp() * TABLE_STEP;
-        let s12 = |j: usize| -0.5 * (lm12[j] - l12[j]).exp() * TABLE_STEP;
-        let hermite = |y0: f64, y1: f64, m0: f64, m1: f64| {
-            let t2 = t * t;
-            let t3 = t2 * t;
-            (2.0 * t3 - 3.0 * t2 + 1.0) * y0
-                + (t3 - 2.0 * t2 + t) * m0
-                + (-2.0 * t3 + 3.0 * t2) * y1
-                + (t3 - t2) * m1
-        };
-        let a = hermite(l32[i], l32[i + 1], s32(i), s32(i + 1)).exp();
-        let b = hermite(l12[i], l12[i + 1], s12(i), s12(i + 1)).exp();
-        (a, b)
+        let (i, t) = Self::locate(h);
+        (self.hermite(0, i, t), self.hermite(1, i, t))
     }
 }
 
