@@ -227,7 +227,7 @@ impl GreenwoodWilliamson {
             let r = f32.max(f64::MIN_POSITIVE).ln() - ln_t;
             let slope = -1.5 * f12 / f32;
             let mut next = h - r / slope;
-            if !(next > lo && next < hi) || !next.is_finite() {
+            if !(next > lo && next < hi && next.is_finite()) {
                 next = 0.5 * (lo + hi);
             }
             if (next - h).abs() < 1e-13 * (1.0 + h.abs()) || hi - lo < 1e-13 {

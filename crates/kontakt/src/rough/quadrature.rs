@@ -13,6 +13,8 @@
 //! Piessens, de Doncker-Kapenga, Überhuber and Kahaner (1983), *QUADPACK*, Springer.
 
 /// Kronrod abscissae on [0, 1] (the rule is symmetric); odd indices are the Gauss nodes.
+// The digits as QUADPACK prints them, so that they can be checked by eye.
+#[allow(clippy::excessive_precision)]
 const XGK: [f64; 8] = [
     0.991_455_371_120_812_639_206_854_697_526_329,
     0.949_107_912_342_758_524_526_189_684_047_851,
@@ -25,6 +27,8 @@ const XGK: [f64; 8] = [
 ];
 
 /// Kronrod weights, matching [`XGK`].
+// The digits as QUADPACK prints them, so that they can be checked by eye.
+#[allow(clippy::excessive_precision)]
 const WGK: [f64; 8] = [
     0.022_935_322_010_529_224_963_732_008_058_970,
     0.063_092_092_629_978_553_290_700_663_189_204,
@@ -37,6 +41,8 @@ const WGK: [f64; 8] = [
 ];
 
 /// Gauss weights of the nodes `XGK[1], XGK[3], XGK[5], XGK[7]`.
+// The digits as QUADPACK prints them, so that they can be checked by eye.
+#[allow(clippy::excessive_precision)]
 const WG: [f64; 4] = [
     0.129_484_966_168_869_693_270_611_432_679_082,
     0.279_705_391_489_276_667_901_467_771_423_780,
