@@ -263,6 +263,7 @@ fn gt_force_balance() {
         load *= 2.0 * PI;
         assert!(rel(load, 100.0) < 1e-6, "α {alpha}: {load}");
         assert!(rel(s.load, 100.0) < 1e-6);
+        println!("α {alpha}: load error {:e}", rel(load, 100.0));
         // negligible pressure at the outer radius
         assert!(*s.pressure.last().unwrap() < 1e-9 * s.centre_pressure);
     }
@@ -286,6 +287,7 @@ fn gt_centre_satisfies_gap_equation() {
         let gw =
             GreenwoodWilliamson::new(eta, beta, sigma, 115_000.0, SummitHeights::Gaussian).unwrap();
         let p = gw.at_separation(-s.approach + w0).unwrap().nominal_pressure;
+        println!("α {alpha}: centre gap equation error {:e}", rel(p, s.centre_pressure));
         assert!(
             rel(p, s.centre_pressure) < 1e-6,
             "α {alpha}: {p} vs {}",
