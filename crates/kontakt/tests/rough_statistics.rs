@@ -287,7 +287,10 @@ fn gt_centre_satisfies_gap_equation() {
         let gw =
             GreenwoodWilliamson::new(eta, beta, sigma, 115_000.0, SummitHeights::Gaussian).unwrap();
         let p = gw.at_separation(-s.approach + w0).unwrap().nominal_pressure;
-        println!("α {alpha}: centre gap equation error {:e}", rel(p, s.centre_pressure));
+        println!(
+            "α {alpha}: centre gap equation error {:e}",
+            rel(p, s.centre_pressure)
+        );
         assert!(
             rel(p, s.centre_pressure) < 1e-6,
             "α {alpha}: {p} vs {}",

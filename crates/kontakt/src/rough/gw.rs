@@ -52,8 +52,10 @@ const H_RANGE: (f64, f64) = (-30.0, 37.0);
 /// assert!((back.standardised_separation - 2.0).abs() < 1e-10);
 /// # Ok::<(), kontakt::Error>(())
 /// ```
+///
+/// Serialized but not deserialized: build it with [`new`](Self::new), which validates.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct GreenwoodWilliamson {
     summit_density: f64,
     summit_radius: Millimetre,
