@@ -302,7 +302,7 @@ fn gt_centre_satisfies_gap_equation() {
 /// Off the centre the gap equation holds too, with the displacement integrated in the
 /// test by another method: w(r) = (4/(πE*)) ∫ p(s) s/(s+r) K(k) ds with K from the
 /// arithmetic-geometric mean and a midpoint rule after s = r ± u² on each side of the logarithmic singularity
-/// (the solver uses Carlson's R_F, Gauss-Legendre and tanh-sinh on a unit kernel).
+/// (the solver uses Carlson's R_F, Kronrod and tanh-sinh on a unit kernel).
 #[test]
 fn gt_gap_equation_off_centre() {
     let (alpha, mu, e, r_sphere, beta) = (0.3, 4.0, 115_000.0, 10.0, 0.02);

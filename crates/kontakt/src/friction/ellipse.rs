@@ -42,7 +42,7 @@ pub struct EllipseRule {
 }
 
 /// Gauss-Legendre nodes and weights on [−1, 1] (Newton on the Legendre recurrence).
-pub(crate) fn gauss_legendre(n: usize) -> Vec<(f64, f64)> {
+fn gauss_legendre(n: usize) -> Vec<(f64, f64)> {
     let mut out = Vec::with_capacity(n);
     for i in 0..n {
         let mut x = (std::f64::consts::PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();

@@ -38,7 +38,7 @@
 //! # Numerical method
 //! Piecewise-linear pressure on a uniform radial grid of `nodes` intervals over
 //! $[0, \rho_{max}]$; the displacement of each hat function at each node is integrated
-//! once per solver (Carlson's $R_F$ for $K$, Gauss-Legendre on regular elements,
+//! once per solver (Carlson's $R_F$ for $K$, the 15-point Kronrod rule on regular elements,
 //! tanh-sinh on the two elements with the logarithmic singularity) on a grid of unit
 //! spacing and scaled by the spacing (the displacement is homogeneous of degree one in
 //! length). The unknowns are the gaps $\hat g_i$ and the approach $\hat d$; Newton's
@@ -350,7 +350,7 @@ impl GreenwoodTripp {
         if options.max_iterations == 0 {
             return Err(Error::invalid("max_iterations", 0, "at least 1"));
         }
-        let gl = crate::friction::ellipse::gauss_legendre(12);
+        let gl = super::quadrature::kronrod15_rule();
         let ts = tanh_sinh();
         let m = n + 1;
         let mut kernel = DMatrix::zeros(m, m);
@@ -388,7 +388,7 @@ impl GreenwoodTripp {
                 kernel[(i, j)] = c * v;
             }
         }
-        // moment weights of the hats on the unit grid, exact (GL 12 on each element)
+        // moment weights of the hats on the unit grid, exact (Kronrod 15 on each element)
         let mut w1 = vec![0.0; m];
         let mut w3 = vec![0.0; m];
         for e in 0..n {

@@ -53,6 +53,18 @@ const WG: [f64; 4] = [
 /// Most sub-intervals the adaptive rule creates before it returns its best estimate.
 const MAX_INTERVALS: usize = 200;
 
+/// The 15-point Kronrod rule on [-1, 1] as (node, weight) pairs: a fixed rule exact for
+/// polynomials of degree 22, for smooth integrands on short intervals.
+pub(crate) fn kronrod15_rule() -> [(f64, f64); 15] {
+    let mut out = [(0.0, 0.0); 15];
+    for i in 0..7 {
+        out[2 * i] = (-XGK[i], WGK[i]);
+        out[2 * i + 1] = (XGK[i], WGK[i]);
+    }
+    out[14] = (0.0, WGK[7]);
+    out
+}
+
 /// One 15-point Kronrod estimate on `[a, b]` and its error bound `|K15 - G7|`.
 fn kronrod15(f: &impl Fn(f64) -> f64, a: f64, b: f64) -> (f64, f64) {
     let c = 0.5 * (a + b);
