@@ -424,6 +424,23 @@ fn gt_trends_in_alpha() {
     }
 }
 
+/// The solver converges, balances the load and leaves no pressure at its outer radius
+/// over α = 1e-5 … 1e4 and μ = 0.1 … 1000 (the range the docs state).
+#[test]
+fn gt_converges_over_wide_range() {
+    let solver = GreenwoodTripp::new(GreenwoodTrippOptions::default()).unwrap();
+    for mu in [0.1, 1.0, 17.0, 1000.0] {
+        for alpha in [1e-5, 1e-3, 0.1, 10.0, 1e4] {
+            let s = solver.solve(&gt_params(alpha, mu)).unwrap();
+            assert!(s.status.converged(), "α {alpha} μ {mu}: {:?}", s.status);
+            assert!(s.status.iterations <= 8, "α {alpha} μ {mu}: {:?}", s.status);
+            assert!(rel(s.load, 100.0) < 1e-9, "α {alpha} μ {mu}: {}", s.load);
+            assert!(*s.pressure.last().unwrap() < 1e-9 * s.centre_pressure);
+            assert!(s.pressure.iter().all(|p| p.is_finite() && *p >= 0.0));
+        }
+    }
+}
+
 /// Grid convergence: 64 intervals (default) and 256 agree to 1e-3.
 #[test]
 fn gt_grid_convergence() {
