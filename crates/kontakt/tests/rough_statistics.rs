@@ -434,6 +434,7 @@ fn gt_converges_over_wide_range() {
             let s = solver.solve(&gt_params(alpha, mu)).unwrap();
             assert!(s.status.converged(), "α {alpha} μ {mu}: {:?}", s.status);
             assert!(s.status.iterations <= 8, "α {alpha} μ {mu}: {:?}", s.status);
+            println!("α {alpha} μ {mu}: {} Newton steps", s.status.iterations);
             assert!(rel(s.load, 100.0) < 1e-9, "α {alpha} μ {mu}: {}", s.load);
             assert!(*s.pressure.last().unwrap() < 1e-9 * s.centre_pressure);
             assert!(s.pressure.iter().all(|p| p.is_finite() && *p >= 0.0));
