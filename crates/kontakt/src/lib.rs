@@ -71,6 +71,7 @@
 //! | [`pimp`] | PimP: substitute geometry, Winkler bedding (published / corrected), force equilibrium, zone shape | done |
 //! | [`halfspace`] | coupled elastic half-space: Love coefficients, FFT operator (free / periodic), Polonsky-Keer solver with warm start, any gap or gap map, adaptive domain | done |
 //! | [`tangential`] | Cattaneo-Mindlin partial slip and Mindlin-Deresiewicz loading history, Carter's creep curve, Kalker's creep coefficients and linear theory, FASTSIM; traction curves | done |
+//! | [`rough`] | statistical rough surfaces: Greenwood-Williamson (Gaussian and exponential summit heights, load, real area and contact count against separation and its inverse, plasticity index) and Greenwood-Tripp's rough sphere (smoothed pressure, effective radius, approach against α and μ) | done; fractal surfaces and the deterministic solver not yet |
 //! | [`traction`] | asperity-based traction curves: periodic spherical asperities on a rough line or circular Hertz contact, Mindlin partial slip per asperity (the thesis "Study of the traction curves", §3.1.2.2) | done |
 //! | [`lubrication`] | lubricant (ASTM D341 viscosity-temperature, ISO VG grades), film parameter Λ, EHL film thickness (Hamrock-Dowson central and minimum film, entrainment at any angle via R_e/R_s, regime groups U, G, W, k, Moes M, L, g_V, g_E, validity warnings) | lubricant, Λ and Hamrock-Dowson film done; Chittenden (1985) and Nijenbanning-Venner-Moes (1994) not implemented (constants unverified, see docs/film.md) |
 //! | [`friction`] | mixed-friction law per cell (Coulomb, load sharing exp(−BΛ^C), Newtonian / Eyring / limiting-shear fluid, regularised direction) and its integral over any pressure field: force, moments, power | done |
@@ -101,6 +102,7 @@ pub mod load;
 pub mod lubrication;
 pub mod material;
 pub mod pimp;
+pub mod rough;
 pub mod solve;
 pub mod tangential;
 pub mod traction;
