@@ -264,6 +264,42 @@ fn elastic_negative_rebound_below_the_sliding_threshold() -> Result<()> {
     Ok(())
 }
 
+/// Johnson's superball: a solid rubber ball (nu = 0.5: kappa = 2/3, chi = 7/6) rebounds with
+/// w2 < 0 at every incidence below the sliding threshold 4 chi - 1 = 3.67 (and with
+/// -1 <= psi2 < 0 up to 4 chi = 4.67), down to psi1 = 0.01, where the rigid theory gives
+/// w2 = 0. Thrown forward with back-spin (u1 = w1/4, omega1 R = 3 w1/4), it comes back with
+/// both u and omega reversed (J82 Fig. 11a) for psi1 up to 3.6 (the reversal of omega needs
+/// psi2 < -psi1/20 with this spin). Checked through the dimensional API.
+#[test]
+fn superball_springs_back() -> Result<()> {
+    let rubber = ElasticMaterial::new(5.0, 0.5)?;
+    let ball = SphereBody::solid_sphere(25.0, 6.5e-5)?;
+    let mu = 0.8;
+    let options = ElasticImpactOptions::default();
+    let imp = ElasticObliqueImpact::new(ball, rubber, ElasticMaterial::RIGID, mu, options)?;
+    assert!((imp.chi() - 7.0 / 6.0).abs() < 1e-12);
+    let v = 3000.0;
+    for psi1 in [0.01, 0.1, 0.5, 1.0, 2.0, 3.0, 3.6, 4.6] {
+        let w1 = psi1 * mu * v / imp.kappa();
+        let inc = IncidentMotion::new(v, 0.25 * w1, 0.75 * w1 / 25.0)?;
+        let r = imp.rebound(&inc)?;
+        eprintln!(
+            "superball psi1 {psi1}: psi2 {}, u2/u1 {}, omega2/omega1 {}",
+            r.psi2,
+            r.tangential_velocity / inc.tangential_velocity(),
+            r.angular_velocity / inc.angular_velocity()
+        );
+        assert!(r.psi2 < 0.0 && r.psi2 >= -psi1, "psi1 {psi1}: {}", r.psi2);
+        if psi1 <= 3.6 {
+            assert!(
+                r.tangential_velocity < 0.0 && r.angular_velocity < 0.0,
+                "psi1 {psi1}"
+            );
+        }
+    }
+    Ok(())
+}
+
 /// An exact solution: for chi = 1/2 the tangential problem is similar to the normal one
 /// (with psi1 <= 1 every spring sticks and the tangential displacement is
 /// (w1/V) delta(t)), so the contact point leaves with w2 = -w1 exactly; for psi1 >= 1 = 4 chi
