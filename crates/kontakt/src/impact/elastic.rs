@@ -276,6 +276,14 @@ impl ElasticObliqueImpact {
         let ke1 = b.kinetic_energy(v, u1, om1);
         let ke2 = b.kinetic_energy(out.normal_velocity, u2, om2);
         let scale = self.kappa / (self.friction * v);
+        let values = [u2, om2, ke1 - ke2, scale * w1, scale * out.w2];
+        if !values.iter().all(|x| x.is_finite()) {
+            return Err(Error::invalid(
+                "incident",
+                format!("V = {v}, w1 = {w1} (mu = {})", self.friction),
+                "an impact whose rebound, energy and psi values are finite f64 values",
+            ));
+        }
         Ok(ElasticRebound {
             normal_velocity: out.normal_velocity,
             tangential_velocity: u2,
@@ -555,4 +563,80 @@ fn integrate(c: &Core, options: &ElasticImpactOptions) -> Result<CoreOut> {
         iterations: max_steps,
         residual: delta / delta_star,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn unit_core(mu: f64) -> Core {
+        Core {
+            mass: 1.0,
+            tangential_mass: 0.3,
+            radius: 2.0,
+            e_star: 3.0,
+            g_star: 0.7,
+            mu,
+            v: 1.0,
+            w1: 0.0,
+        }
+    }
+
+    /// The cells' normal forces are exact integrals: when every cell slides, the tangential
+    /// force is mu times the Hertz load 4/3 E* sqrt(R) delta^1.5 to rounding, for a
+    /// contact edge anywhere in a cell, growing and shrinking.
+    #[test]
+    fn sliding_cells_carry_mu_times_the_hertz_load() {
+        let c = unit_core(0.4);
+        let mut line = Cells {
+            dx: 0.013,
+            covered: vec![0.0; 200],
+            force: vec![0.0; 200],
+            active: 0,
+            delta: 0.0,
+        };
+        let k = 4.0 / 3.0 * c.e_star * c.radius.sqrt();
+        for delta in [1e-4, 3e-3, 0.01, 0.02, 0.015, 0.004, 2e-5] {
+            let (q, all) = line.update(&c, delta, 1e3).expect("fits");
+            let p = k * delta * f64::sqrt(delta);
+            assert!(all);
+            assert!(
+                (q / (c.mu * p) - 1.0).abs() < 1e-12,
+                "{delta}: {q} vs {}",
+                c.mu * p
+            );
+        }
+        // out of contact: no force anywhere
+        let (q, _) = line.update(&c, -1e-6, 1.0).expect("fits");
+        assert_eq!(q, 0.0);
+        assert!(line.force.iter().all(|f| *f == 0.0));
+    }
+
+    /// A contact that outgrows the cell line is reported, not truncated.
+    #[test]
+    fn outgrown_line_is_an_error() {
+        let c = unit_core(0.4);
+        let mut line = Cells {
+            dx: 0.001,
+            covered: vec![0.0; 10],
+            force: vec![0.0; 10],
+            active: 0,
+            delta: 0.0,
+        };
+        assert!(matches!(
+            line.update(&c, 1.0, 0.0),
+            Err(Error::NotConverged { .. })
+        ));
+    }
+
+    /// Absurdly small friction makes psi overflow: an error, not inf.
+    #[test]
+    fn overflowing_psi_is_an_error() {
+        let s = ElasticMaterial::STEEL;
+        let ball = SphereBody::solid_sphere(5.0, 4.1e-6).expect("ball");
+        let imp = ElasticObliqueImpact::new(ball, s, s, 1e-310, ElasticImpactOptions::default())
+            .expect("impact");
+        let inc = IncidentMotion::new(1000.0, 100.0, 0.0).expect("motion");
+        assert!(imp.rebound(&inc).is_err());
+    }
 }
