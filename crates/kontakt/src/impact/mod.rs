@@ -54,7 +54,9 @@
 pub mod elastic;
 pub mod rigid;
 
-pub use elastic::{ElasticImpactOptions, ElasticObliqueImpact, ElasticRebound};
+pub use elastic::{
+    ElasticImpactOptions, ElasticObliqueImpact, ElasticRebound, elastic_rebound_psi,
+};
 pub use rigid::{RigidObliqueImpact, RigidRebound, RigidRegime, rigid_rebound_psi};
 
 use crate::error::{Error, Result, positive_as};
