@@ -45,7 +45,7 @@ LAYERS=(
   "field"
   "hertz"
   "pimp halfspace"
-  "tangential traction lubrication rough"
+  "tangential traction lubrication rough impact gear"
   "friction"
   "bearing element"
 )

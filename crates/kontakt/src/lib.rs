@@ -68,6 +68,8 @@
 //! | [`gap`] | the substitute geometry: `GapSource` (quadratic, any function, two placed surfaces), gap and height maps | done |
 //! | [`field`] | one result type of the field solvers (`NormalSolution`), the zone's shape, the one adaptive-domain loop | done |
 //! | [`hertz`] | exact point (elliptical/circular) and line contact, approximations, subsurface stress and yield, impact, JKR adhesion | done |
+//! | [`impact`] | oblique impact with friction of a sphere on a flat: rigid-body regimes (Johnson 1982 eqs 39-40, 64-70) and the elastic Hertz + Mindlin-Deresiewicz analysis of Maw, Barber and Fawcett (rebound peripheral velocity, negative at small incidence) | done |
+//! | [`gear`] | bending and contact deflection of a pair of spur-gear teeth (Johnson 1982 Appendix 2) | done |
 //! | [`pimp`] | PimP: substitute geometry, Winkler bedding (published / corrected), force equilibrium, zone shape | done |
 //! | [`halfspace`] | coupled elastic half-space: Love coefficients, FFT operator (free / periodic), Polonsky-Keer solver with warm start, any gap or gap map, adaptive domain | done |
 //! | [`tangential`] | Cattaneo-Mindlin partial slip and Mindlin-Deresiewicz loading history, Carter's creep curve, Kalker's creep coefficients and linear theory, FASTSIM; traction curves | done |
@@ -95,9 +97,11 @@ pub mod error;
 pub mod field;
 pub mod friction;
 pub mod gap;
+pub mod gear;
 pub mod geometry;
 pub mod halfspace;
 pub mod hertz;
+pub mod impact;
 pub mod load;
 pub mod lubrication;
 pub mod material;
