@@ -11,7 +11,8 @@ use serde::Serialize;
 use std::path::Path;
 
 /// The valid `method` values, as an error message names them.
-const METHODS: &str = "\"hertz\", \"pimp\", \"bem\", \"traction\", \"friction\" or \"mindlin\"";
+const METHODS: &str =
+    "\"hertz\", \"pimp\", \"bem\", \"traction\", \"friction\", \"mindlin\" or \"impact\"";
 
 /// A case of any method: the `method` key decides the schema.
 #[derive(Debug, Clone, PartialEq)]
@@ -30,6 +31,9 @@ pub enum Case {
     /// `method = "mindlin"`: Cattaneo-Mindlin partial slip and its loading history
     /// ([`crate::mindlin_case`]).
     Mindlin(Box<crate::mindlin_case::MindlinCase>),
+    /// `method = "impact"`: a sphere striking a flat, normal or oblique with friction
+    /// ([`crate::impact_case`]).
+    Impact(Box<crate::impact_case::ImpactCase>),
 }
 
 impl Case {
@@ -50,6 +54,7 @@ impl Case {
             "traction" => Ok(Case::Traction(Box::new(parse_toml(text)?))),
             "friction" => Ok(Case::Friction(Box::new(parse_toml(text)?))),
             "mindlin" => Ok(Case::Mindlin(Box::new(parse_toml(text)?))),
+            "impact" => Ok(Case::Impact(Box::new(parse_toml(text)?))),
             other => Err(Error::invalid("method", other, METHODS)),
         }
     }
@@ -79,6 +84,7 @@ impl Case {
             "traction" => Ok(Case::Traction(Box::new(read(table)?))),
             "friction" => Ok(Case::Friction(Box::new(read(table)?))),
             "mindlin" => Ok(Case::Mindlin(Box::new(read(table)?))),
+            "impact" => Ok(Case::Impact(Box::new(read(table)?))),
             other => Err(Error::invalid("method", other, METHODS)),
         }
     }
@@ -92,6 +98,7 @@ impl Case {
             Case::Traction(_) => "traction",
             Case::Friction(_) => "friction",
             Case::Mindlin(_) => "mindlin",
+            Case::Impact(_) => "impact",
         }
     }
 
@@ -136,6 +143,9 @@ impl Case {
             Case::Mindlin(case) => {
                 Outcome::Mindlin(Box::new(crate::mindlin_case::run_mindlin_case(case)?))
             }
+            Case::Impact(case) => {
+                Outcome::Impact(Box::new(crate::impact_case::run_impact_case(case)?))
+            }
         })
     }
 }
@@ -177,6 +187,8 @@ pub enum Outcome {
     Friction(Box<crate::friction_case::FrictionOutcome>),
     /// Cattaneo-Mindlin report with its loading history.
     Mindlin(Box<crate::mindlin_case::MindlinReport>),
+    /// Impact report.
+    Impact(Box<crate::impact_case::ImpactReport>),
 }
 
 /// One field of an [`Outcome`] on its grid: values per cell, row-major with `x` fastest
@@ -220,7 +232,8 @@ impl Outcome {
             Outcome::Hertz(_)
             | Outcome::Traction(_)
             | Outcome::Friction(_)
-            | Outcome::Mindlin(_) => Vec::new(),
+            | Outcome::Mindlin(_)
+            | Outcome::Impact(_) => Vec::new(),
             Outcome::Pimp(o) => vec![view(
                 "pressure",
                 "MPa",
@@ -248,6 +261,7 @@ impl Serialize for Outcome {
             Outcome::Traction(r) => r.serialize(s),
             Outcome::Friction(o) => o.report.serialize(s),
             Outcome::Mindlin(r) => r.serialize(s),
+            Outcome::Impact(r) => r.serialize(s),
         }
     }
 }

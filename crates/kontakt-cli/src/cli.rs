@@ -16,6 +16,7 @@ use std::path::PathBuf;
       kontakt validate --out kontakt-validate\n  \
       kontakt traction examples/traction_ball_all_models.toml --plot traction.png\n  \
       kontakt mindlin examples/mindlin_fretting.toml --plot loop.png\n  \
+      kontakt impact examples/impact_oblique.toml\n  \
       kontakt friction examples/rib_friction.toml --plot torque.png\n  \
       kontakt mbs --out kontakt-mbs\n  \
       kontakt sweep examples/sweeps/hertz_load.toml --out kontakt-sweep\n\n\
@@ -51,6 +52,10 @@ pub enum Command {
     /// force: stick zone, shift, the Mindlin-Deresiewicz hysteresis loop and the energy
     /// dissipated per cycle (TOML case, method = "mindlin"; docs/case-schema.md).
     Mindlin(MindlinArgs),
+    /// A sphere striking a flat: the Hertz normal impact and, with friction, the oblique
+    /// rebound (rigid-body theory and the elastic analysis of Maw, Barber and Fawcett 1976)
+    /// (TOML case, method = "impact"; docs/case-schema.md, docs/impact.md).
+    Impact(ImpactArgs),
     /// Friction torque and power of the roller-end/rib contact of a tapered roller bearing
     /// over a speed sweep: Hertz, PimP and/or half-space pressure, lubricant film, mixed
     /// friction (TOML case, method = "friction"; docs/case-schema.md).
@@ -218,6 +223,16 @@ pub struct MindlinArgs {
     /// Draw the hysteresis loop, Q against the shift (.png or .svg).
     #[arg(long, value_name = "FILE.png|svg")]
     pub plot: Option<PathBuf>,
+    /// Print one JSON document instead of the text.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Debug, Args)]
+pub struct ImpactArgs {
+    /// Case file (TOML, method = "impact"), or `-` for standard input.
+    #[arg(value_name = "CASE.toml")]
+    pub case: PathBuf,
     /// Print one JSON document instead of the text.
     #[arg(long)]
     pub json: bool,

@@ -10,6 +10,7 @@ use kontakt_case::case::{
 use kontakt_case::{Case, Outcome, run_case};
 
 pub mod friction;
+pub mod impact;
 pub mod mbs;
 pub mod mindlin;
 pub mod pimp;
@@ -73,6 +74,12 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                 "friction" if wants_field => {
                     return Err(InputError(format!(
                         "{label}: friction cases write their tables and maps with `kontakt friction {label} --csv FILE --map FILE`"
+                    ))
+                    .into());
+                }
+                "impact" if wants_field => {
+                    return Err(InputError(format!(
+                        "{label}: --csv and --map need a pressure field: use method = \"pimp\" or \"bem\""
                     ))
                     .into());
                 }
@@ -143,12 +150,14 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                     friction::print_report(out, &outcome.report, args.json)
                 }
                 Outcome::Mindlin(report) => mindlin::print_report(out, &report, args.json),
+                Outcome::Impact(report) => impact::print_report(out, &report, args.json),
             }
         }
         Command::Demo(args) => pimp::demo(&args.out, out, args.json),
         Command::Validate(args) => validate::validate(&args.out, args.cells, out, args.json),
         Command::Traction(args) => traction::run(args, out),
         Command::Mindlin(args) => mindlin::run(args, out),
+        Command::Impact(args) => impact::run(args, out),
         Command::Friction(args) => friction::run(args, out),
         Command::Mbs(args) => mbs::run(args, out),
         Command::Sweep(args) => sweep::run(args, out),
@@ -176,6 +185,7 @@ pub fn read_case_for(
             "traction" => "kontakt traction (or kontakt solve)",
             "friction" => "kontakt friction (or kontakt solve)",
             "mindlin" => "kontakt mindlin (or kontakt solve)",
+            "impact" => "kontakt impact (or kontakt solve)",
             _ => "kontakt solve",
         };
         return Err(InputError(format!(
