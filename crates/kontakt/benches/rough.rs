@@ -1,11 +1,12 @@
 //! Criterion benchmarks of the statistical rough-surface models (`kontakt::rough`): one
 //! Greenwood-Tripp pressure distribution (64 intervals, the default) at Johnson's two
-//! α of Fig. 12, the solver's set-up, and GW evaluations. Figures are recorded in
+//! α of Fig. 12, the solver's set-up, GW evaluations, and a 1024² self-affine surface. Figures are recorded in
 //! docs/rough.md and docs/PERFORMANCE.md.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use kontakt::rough::{
-    GreenwoodTripp, GreenwoodTrippOptions, GreenwoodTrippParams, GreenwoodWilliamson, SummitHeights,
+    Amplitude, GreenwoodTripp, GreenwoodTrippOptions, GreenwoodTrippParams, GreenwoodWilliamson,
+    SelfAffineSpec, SummitHeights,
 };
 use std::hint::black_box;
 
@@ -42,6 +43,21 @@ fn bench_rough(c: &mut Criterion) {
     });
     g.bench_function("gw_gaussian_inverse", |b| {
         b.iter(|| gw.separation_from_pressure(black_box(0.5)).expect("valid"))
+    });
+    // Issue 16's target: a 1024 x 1024 self-affine surface in under 0.2 s.
+    let surface = SelfAffineSpec {
+        points: [1024, 1024],
+        size: [1.0, 1.0],
+        hurst: 0.8,
+        long_cutoff: 1.0,
+        rolloff: 0.5,
+        short_cutoff: 4.0 / 1024.0,
+        amplitude: Amplitude::RmsSlope(0.1),
+        seed: 1,
+    };
+    g.sample_size(10);
+    g.bench_function("self_affine_surface_1024", |b| {
+        b.iter(|| black_box(&surface).generate().expect("valid"))
     });
     g.finish();
 }

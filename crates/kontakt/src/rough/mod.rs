@@ -9,6 +9,7 @@
 //! | [`height_integral`], [`SummitHeights`] | $F_n(h)$ for Gaussian and exponential summit heights |
 //! | [`GreenwoodWilliamson`], [`GwState`], [`plasticity_index`] | load, real area and contact count per nominal area against separation, and the inverse; $\psi$ |
 //! | [`GreenwoodTripp`], [`GreenwoodTrippParams`], [`GreenwoodTrippSolution`], [`roughness_parameter`] | smoothed pressure of a rough sphere, effective radius, approach, $\alpha$ and $\mu$ |
+//! | [`SelfAffineSpec`], [`SelfAffineSurface`], [`Amplitude`] | random self-affine (fractal) surfaces on a periodic grid: Hurst exponent, cut-offs, rms height or slope, seeded |
 //!
 //! # References
 //! - Greenwood and Williamson (1966), Proc. R. Soc. Lond. A 295, 300-319.
@@ -20,6 +21,7 @@ mod gt;
 mod gw;
 mod heights;
 mod quadrature;
+mod surface;
 
 pub use gt::{
     GreenwoodTripp, GreenwoodTrippOptions, GreenwoodTrippParams, GreenwoodTrippSolution,
@@ -27,3 +29,4 @@ pub use gt::{
 };
 pub use gw::{GreenwoodWilliamson, GwState, plasticity_index};
 pub use heights::{SummitHeights, height_integral, height_integral_quadrature};
+pub use surface::{Amplitude, SelfAffineSpec, SelfAffineSurface};
