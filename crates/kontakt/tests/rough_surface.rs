@@ -220,3 +220,67 @@ fn height_map_for_the_half_space_solver() {
     assert_eq!(map.grid().nx(), 128);
     assert_eq!(map.grid().ny(), 96);
 }
+
+/// Real contact area of a self-affine surface on the periodic half-space solver. At small
+/// loads A/A0 = kappa p/(E* h'_rms): kappa is about 2 for the boundary-element and GFMD
+/// solvers (Hyun et al. 2004; Monti, Sanner and Pastewka 2021), sqrt(8/pi) = 1.60 in
+/// Persson's theory. 512² cells, H = 0.8, q_s/q_r = 64, lambda_s = 8 cells, h'_rms = 0.1,
+/// areas of 1-5 %: kappa within [1.9, 2.4] at each load (counting loaded cells
+/// overestimates the area by some per cent at 8 cells per lambda_s, Yastrebov et al. 2017),
+/// above Persson's value, and constant to 15 % over a fourfold load (area nearly proportional to
+/// load). The preconditioned solver needs fewer than 60 iterations.
+#[test]
+fn real_contact_area_is_proportional_to_load() {
+    use kontakt::halfspace::{Boundary, Control, HalfSpaceSolver, SolverOptions, Start};
+    let sp = SelfAffineSpec {
+        points: [512, 512],
+        size: [1.0, 1.0],
+        hurst: 0.8,
+        long_cutoff: 1.0,
+        rolloff: 1.0,
+        short_cutoff: 8.0 / 512.0,
+        amplitude: Amplitude::RmsSlope(0.1),
+        seed: 7,
+    };
+    let s = sp.generate().unwrap();
+    let map = s.height_map().unwrap();
+    let e_star = 1000.0;
+    let mut solver = HalfSpaceSolver::new(
+        *map.grid(),
+        e_star,
+        SolverOptions {
+            boundary: Boundary::Periodic,
+            tolerance: 1e-6,
+            max_iterations: 3000,
+            ..SolverOptions::default()
+        },
+    )
+    .unwrap();
+    let mut kappas = Vec::new();
+    for load in [0.005, 0.01, 0.02] {
+        let pbar = load * e_star * s.rms_slope;
+        let r = solver
+            .solve(map.values(), Control::Force(pbar * 1.0), Start::Cold)
+            .unwrap();
+        assert!(
+            r.status.converged() && r.status.iterations < 60,
+            "{:?}",
+            r.status
+        );
+        let p = solver.pressure();
+        let frac = p.iter().filter(|&&x| x > 0.0).count() as f64 / p.len() as f64;
+        let kappa = frac / load;
+        eprintln!(
+            "p/(E* h') = {load}: A/A0 = {frac:.5}, kappa = {kappa:.4}, {} iterations",
+            r.status.iterations
+        );
+        assert!((1.9..=2.4).contains(&kappa), "kappa {kappa} at {load}");
+        kappas.push(kappa);
+    }
+    let persson = (8.0 / PI).sqrt();
+    let (lo, hi) = kappas
+        .iter()
+        .fold((f64::MAX, 0.0f64), |(a, b), &k| (a.min(k), b.max(k)));
+    assert!(lo > persson, "{kappas:?}");
+    assert!(hi / lo < 1.15, "not proportional: {kappas:?}");
+}
