@@ -9,6 +9,7 @@
 //! | [`height_integral`], [`SummitHeights`] | $F_n(h)$ for Gaussian and exponential summit heights |
 //! | [`GreenwoodWilliamson`], [`GwState`], [`plasticity_index`] | load, real area and contact count per nominal area against separation, and the inverse; $\psi$ |
 //! | [`GreenwoodTripp`], [`GreenwoodTrippParams`], [`GreenwoodTrippSolution`], [`roughness_parameter`] | smoothed pressure of a rough sphere, effective radius, approach, $\alpha$ and $\mu$ |
+//! | [`RoughContact`], [`RoughContactPoint`], [`persson_area_fraction`] | a periodic rough surface on the half-space solver: real area, κ, patches, mean gap against nominal pressure; Persson's area |
 //! | [`SelfAffineSpec`], [`SelfAffineSurface`], [`Amplitude`] | random self-affine (fractal) surfaces on a periodic grid: Hurst exponent, cut-offs, rms height or slope, seeded |
 //!
 //! # References
@@ -17,12 +18,14 @@
 //! - Johnson (1982), "One hundred years of Hertz contact", Proc. IMechE 196, §8.
 //! - Johnson, *Contact Mechanics* (1985), §13.2-13.4.
 
+mod contact;
 mod gt;
 mod gw;
 mod heights;
 mod quadrature;
 mod surface;
 
+pub use contact::{RoughContact, RoughContactPoint, persson_area_fraction};
 pub use gt::{
     GreenwoodTripp, GreenwoodTrippOptions, GreenwoodTrippParams, GreenwoodTrippSolution,
     roughness_parameter,
