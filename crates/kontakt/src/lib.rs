@@ -71,6 +71,7 @@
 //! | [`pimp`] | PimP: substitute geometry, Winkler bedding (published / corrected), force equilibrium, zone shape | done |
 //! | [`halfspace`] | coupled elastic half-space: Love coefficients, FFT operator (free / periodic), Polonsky-Keer solver with warm start, any gap or gap map, adaptive domain | done |
 //! | [`tangential`] | Cattaneo-Mindlin partial slip and Mindlin-Deresiewicz loading history, Carter's creep curve, Kalker's creep coefficients and linear theory, FASTSIM; traction curves | done |
+//! | [`rolling`] | exact (Kalker) tangential contact on the half-space grid: Cerruti's influence coefficients for uniform tractions on cells, the FFT tangential operator, the shift (Cattaneo) problem with Coulomb friction under a shift or a force, quasi-identical bodies | shift problem done and validated against Cattaneo; steady rolling (creepages, spin), dissimilar-body coupling and the traction-curve model not yet (issue 17) |
 //! | [`traction`] | asperity-based traction curves: periodic spherical asperities on a rough line or circular Hertz contact, Mindlin partial slip per asperity (the thesis "Study of the traction curves", §3.1.2.2) | done |
 //! | [`lubrication`] | lubricant (ASTM D341 viscosity-temperature, ISO VG grades), film parameter Λ, EHL film thickness (Hamrock-Dowson central and minimum film, entrainment at any angle via R_e/R_s, regime groups U, G, W, k, Moes M, L, g_V, g_E, validity warnings) | lubricant, Λ and Hamrock-Dowson film done; Chittenden (1985) and Nijenbanning-Venner-Moes (1994) not implemented (constants unverified, see docs/film.md) |
 //! | [`friction`] | mixed-friction law per cell (Coulomb, load sharing exp(−BΛ^C), Newtonian / Eyring / limiting-shear fluid, regularised direction) and its integral over any pressure field: force, moments, power | done |
@@ -101,6 +102,7 @@ pub mod load;
 pub mod lubrication;
 pub mod material;
 pub mod pimp;
+pub mod rolling;
 pub mod solve;
 pub mod tangential;
 pub mod traction;

@@ -1,0 +1,27 @@
+//! Exact (Kalker) tangential contact on the half-space grid: Cerruti's influence
+//! coefficients, the FFT tangential operator and the shift (Cattaneo) problem with
+//! Coulomb friction. The first step of steady rolling contact (issue 17).
+//!
+//! - [`influence`]: the displacement differences `u_x`, `u_y` \[mm\] per unit uniform
+//!   tangential traction \[MPa\] on a rectangular cell, in closed form (Cerruti's point-force
+//!   solution integrated over the cell), for quasi-identical bodies.
+//! - [`TangentialOperator`]: `u = A τ` by FFT on the free-boundary plans of
+//!   [`crate::halfspace`]; [`KalkerMaterial`]: Kalker's combined `G`, `ν` and difference
+//!   parameter `K`.
+//! - [`ShiftSolver`]: tractions, stick/slip map and slip for a given pressure and
+//!   friction coefficient under a prescribed rigid shift or total tangential force,
+//!   accelerated projected gradients with a stated residual and a
+//!   [`crate::solve::SolveStatus`].
+//!
+//! Not yet here: steady rolling (slip `s = w - V ∂u/∂x` with creepages and spin), the
+//! normal-tangential coupling of dissimilar bodies (`K ≠ 0`), transient rolling and the
+//! `kontakt traction` model. Method and validation: docs/rolling.md.
+//!
+//! Units: mm, N, MPa throughout.
+
+pub mod influence;
+mod operator;
+mod shift;
+
+pub use operator::{KalkerMaterial, TangentialOperator};
+pub use shift::{CellState, ShiftLoad, ShiftOptions, ShiftSolution, ShiftSolver};
