@@ -37,7 +37,7 @@
 //! difference parameter `K = (G/4)[(1-2ν1)/G1 - (1-2ν2)/G2] = 0`), so that tangential
 //! tractions cause no normal displacement difference and pressure none tangential: the
 //! normal and tangential problems decouple. For dissimilar bodies this neglects the
-//! coupling ([`super::KalkerMaterial::difference_parameter`] reports its size).
+//! coupling ([`super::difference_parameter`] reports its size).
 //!
 //! # References
 //! - Johnson, *Contact Mechanics* (1985), §3.3, eq. (3.86a).

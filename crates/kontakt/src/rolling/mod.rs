@@ -6,8 +6,8 @@
 //!   tangential traction \[MPa\] on a rectangular cell, in closed form (Cerruti's point-force
 //!   solution integrated over the cell), for quasi-identical bodies.
 //! - [`TangentialOperator`]: `u = A τ` by FFT on the free-boundary plans of
-//!   [`crate::halfspace`]; [`KalkerMaterial`]: Kalker's combined `G`, `ν` and difference
-//!   parameter `K`.
+//!   [`crate::halfspace`], for Kalker's combined `G`, `ν` ([`KalkerMaterial`]);
+//!   [`difference_parameter`]: Kalker's `K`, which is neglected.
 //! - [`ShiftSolver`]: tractions, stick/slip map and slip for a given pressure and
 //!   friction coefficient under a prescribed rigid shift or total tangential force,
 //!   accelerated projected gradients with a stated residual and a
@@ -23,5 +23,6 @@ pub mod influence;
 mod operator;
 mod shift;
 
-pub use operator::{KalkerMaterial, TangentialOperator};
+pub use crate::tangential::KalkerMaterial;
+pub use operator::{TangentialOperator, difference_parameter};
 pub use shift::{CellState, ShiftLoad, ShiftOptions, ShiftSolution, ShiftSolver};

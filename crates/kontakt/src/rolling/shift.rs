@@ -53,10 +53,11 @@
 //! - Beck & Teboulle (2009), SIAM J. Imaging Sci. 2, 183-202 (FISTA); O'Donoghue &
 //!   Candès (2015), Found. Comput. Math. 15, 715-732 (adaptive restart).
 
-use super::operator::{KalkerMaterial, TangentialOperator};
+use super::operator::TangentialOperator;
 use crate::error::{Error, Result};
 use crate::geometry::Grid2;
 use crate::solve::{SolveStatus, Termination};
+use crate::tangential::KalkerMaterial;
 use crate::units::{Millimetre, Newton};
 
 /// What is prescribed in a shift problem.
