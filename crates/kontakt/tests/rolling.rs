@@ -28,7 +28,11 @@ fn hertz(n: usize) -> (Grid2, Vec<f64>) {
         .points()
         .map(|(x, y)| {
             let r2 = (x * x + y * y) / (A * A);
-            if r2 < 1.0 { P0 * (1.0 - r2).sqrt() } else { 0.0 }
+            if r2 < 1.0 {
+                P0 * (1.0 - r2).sqrt()
+            } else {
+                0.0
+            }
         })
         .collect();
     (grid, p)
@@ -141,7 +145,11 @@ fn cattaneo_circle_nu_zero() {
     let (_, s, e) = solve_force(48, 0.0, 0.5);
     // Stick radius within 2 % of a, half a cell (dx = 0.043 a); measured 0.7960 vs
     // 0.7937.
-    assert!((e.c_over_a - e.c_over_a_ref).abs() < 0.02, "c/a {}", e.c_over_a);
+    assert!(
+        (e.c_over_a - e.c_over_a_ref).abs() < 0.02,
+        "c/a {}",
+        e.c_over_a
+    );
     // Traction: RMS within 0.5 % of μ p0 (measured 0.34 %), max within 4 % (measured
     // 2.9 %; the max sits at the stick edge, where q has an infinite slope).
     assert!(e.rms < 0.005, "rms {}", e.rms);
@@ -160,7 +168,11 @@ fn cattaneo_circle_nu_03() {
     let (_, _, e) = solve_force(48, 0.3, 0.5);
     // Measured: c/a 0.7960 vs 0.7937, RMS 0.34 %, cross traction 3.1 % of μ p0, shift
     // 0.1 % below Mindlin's.
-    assert!((e.c_over_a - e.c_over_a_ref).abs() < 0.02, "c/a {}", e.c_over_a);
+    assert!(
+        (e.c_over_a - e.c_over_a_ref).abs() < 0.02,
+        "c/a {}",
+        e.c_over_a
+    );
     assert!(e.rms < 0.005, "rms {}", e.rms);
     assert!(e.cross > 0.005 && e.cross < 0.05, "cross {}", e.cross);
     assert!(((e.shift - e.shift_ref) / e.shift_ref).abs() < 0.01);
@@ -237,7 +249,10 @@ fn grid_convergence_of_the_traction() {
         .map(|&n| solve_force(n, 0.0, 0.5).2.rms)
         .collect();
     println!("RMS traction errors 16/32/64: {errs:?}");
-    assert!(errs[1] < 0.7 * errs[0] && errs[2] < 0.7 * errs[1], "{errs:?}");
+    assert!(
+        errs[1] < 0.7 * errs[0] && errs[2] < 0.7 * errs[1],
+        "{errs:?}"
+    );
     assert!(errs[2] < 0.004, "{errs:?}");
 }
 

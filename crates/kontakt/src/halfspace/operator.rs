@@ -303,8 +303,15 @@ impl HalfSpacePlan {
             ));
         }
         let threads = Self::threads_for(nx, ny, wanted)?;
-        let mut plan =
-            Self::layout_on(grid, modulus, 2 * nx, 2 * ny, Boundary::Free, wanted, threads);
+        let mut plan = Self::layout_on(
+            grid,
+            modulus,
+            2 * nx,
+            2 * ny,
+            Boundary::Free,
+            wanted,
+            threads,
+        );
         plan.fill_free_kernel(quadrant, parity);
         Ok(Arc::new(plan))
     }
@@ -512,8 +519,7 @@ impl HalfSpacePlan {
                     let sy = signed(j, my);
                     for (i, r) in row.iter_mut().enumerate() {
                         let sx = signed(i, mx);
-                        *r = if jj == ny || sx.abs() as usize == nx || sx == 0.0 || sy == 0.0
-                        {
+                        *r = if jj == ny || sx.abs() as usize == nx || sx == 0.0 || sy == 0.0 {
                             0.0
                         } else {
                             (sx.signum() * sy.signum()) * q[sx.abs() as usize]
@@ -522,11 +528,7 @@ impl HalfSpacePlan {
                 }
             }
             self.r2c
-                .process_with_scratch(
-                    &mut row,
-                    &mut spec[j * kx..(j + 1) * kx],
-                    &mut scratch,
-                )
+                .process_with_scratch(&mut row, &mut spec[j * kx..(j + 1) * kx], &mut scratch)
                 .expect("invariant: lengths match the plan");
         }
         let mut col = vec![Complex::default(); my];

@@ -50,8 +50,16 @@ use std::f64::consts::PI;
 /// The three antiderivatives at one corner `(X, Y)` \[mm\]: `X asinh(Y/|X|)`,
 /// `Y asinh(X/|Y|)` (each 0 where its factor vanishes) and `ρ`.
 fn corner(x: f64, y: f64) -> [f64; 3] {
-    let fx = if x != 0.0 { x * (y / x.abs()).asinh() } else { 0.0 };
-    let fy = if y != 0.0 { y * (x / y.abs()).asinh() } else { 0.0 };
+    let fx = if x != 0.0 {
+        x * (y / x.abs()).asinh()
+    } else {
+        0.0
+    };
+    let fy = if y != 0.0 {
+        y * (x / y.abs()).asinh()
+    } else {
+        0.0
+    };
     [fx, fy, x.hypot(y)]
 }
 
@@ -102,14 +110,7 @@ fn coefficients(s: [f64; 3], g: f64, nu: f64) -> CerrutiCoefficients {
 /// by parity (`xx`, `yy` even, `xy` odd in each direction). Each antiderivative is
 /// evaluated once per cell corner and shared by the four cells meeting there.
 #[must_use]
-pub fn quadrant_tables(
-    nx: usize,
-    ny: usize,
-    dx: f64,
-    dy: f64,
-    g: f64,
-    nu: f64,
-) -> [Vec<f64>; 3] {
+pub fn quadrant_tables(nx: usize, ny: usize, dx: f64, dy: f64, g: f64, nu: f64) -> [Vec<f64>; 3] {
     let (cx, cy) = (nx + 2, ny + 2);
     // Corner k sits at (k - 1/2) dx.
     let mut corners = vec![[0.0; 3]; cx * cy];
@@ -176,9 +177,17 @@ mod tests {
         ] {
             let c = cerruti(x, y, 1.0, 0.6, g, nu);
             let [ux, uy] = quadrature(x, y, 1.0, 0.6, g, nu);
-            assert!(((c.xx - ux) / ux).abs() < 1e-5, "xx ({x}, {y}): {} vs {ux}", c.xx);
+            assert!(
+                ((c.xx - ux) / ux).abs() < 1e-5,
+                "xx ({x}, {y}): {} vs {ux}",
+                c.xx
+            );
             // u_y is odd: compare to the size of u_x where it vanishes.
-            assert!((c.xy - uy).abs() < 1e-5 * ux.abs(), "xy ({x}, {y}): {} vs {uy}", c.xy);
+            assert!(
+                (c.xy - uy).abs() < 1e-5 * ux.abs(),
+                "xy ({x}, {y}): {} vs {uy}",
+                c.xy
+            );
             // A traction in y: exchange the roles of x and y.
             let t = cerruti(y, x, 0.6, 1.0, g, nu);
             assert!(((t.yy - ux) / ux).abs() < 1e-5, "yy ({y}, {x})");

@@ -114,14 +114,7 @@ impl TangentialOperator {
         check_material(&material)?;
         let (g, nu) = (material.shear_modulus, material.poisson_ratio);
         let (nx, ny) = (grid.nx(), grid.ny());
-        let [qxx, qyy, qxy] = quadrant_tables(
-            nx,
-            ny,
-            grid.dx(),
-            grid.dy(),
-            g,
-            nu,
-        );
+        let [qxx, qyy, qxy] = quadrant_tables(nx, ny, grid.dx(), grid.dy(), g, nu);
         let xx = HalfSpacePlan::from_quadrant(grid, g, &qxx, Parity::Even, threads)?;
         let yy = HalfSpacePlan::from_quadrant(grid, g, &qyy, Parity::Even, threads)?;
         let xy = if nu != 0.0 {
@@ -306,7 +299,10 @@ mod tests {
             ty.iter_mut().zip(&uy).for_each(|(t, u)| *t = u / norm);
         }
         let bound = op.spectral_bound();
-        assert!(lambda <= bound && lambda > 0.85 * bound, "{lambda} vs {bound}");
+        assert!(
+            lambda <= bound && lambda > 0.85 * bound,
+            "{lambda} vs {bound}"
+        );
     }
 
     #[test]
@@ -319,7 +315,12 @@ mod tests {
         let rigid = ElasticMaterial::RIGID;
         assert!(difference_parameter(&rigid, &rigid).is_err());
         let grid = Grid2::centered(1.0, 1.0, 4, 4).unwrap();
-        for (g, nu) in [(-1.0, 0.3), (f64::INFINITY, 0.3), (1.0, f64::NAN), (1.0, 0.6)] {
+        for (g, nu) in [
+            (-1.0, 0.3),
+            (f64::INFINITY, 0.3),
+            (1.0, f64::NAN),
+            (1.0, 0.6),
+        ] {
             let m = KalkerMaterial {
                 shear_modulus: g,
                 poisson_ratio: nu,

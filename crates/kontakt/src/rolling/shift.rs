@@ -216,12 +216,19 @@ impl ShiftSolver {
             ));
         }
         if let Some(p) = pressure.iter().find(|p| !(p.is_finite() && **p >= 0.0)) {
-            return Err(Error::invalid("pressure", p, "finite cell pressures >= 0 MPa"));
+            return Err(Error::invalid(
+                "pressure",
+                p,
+                "finite cell pressures >= 0 MPa",
+            ));
         }
         crate::tangential::check_friction(mu)?;
-        if !(options.tolerance.is_finite() && options.tolerance > 0.0 && options.tolerance < 1.0)
-        {
-            return Err(Error::invalid("tolerance", options.tolerance, "0 < tolerance < 1"));
+        if !(options.tolerance.is_finite() && options.tolerance > 0.0 && options.tolerance < 1.0) {
+            return Err(Error::invalid(
+                "tolerance",
+                options.tolerance,
+                "0 < tolerance < 1",
+            ));
         }
         if !(options.force_tolerance.is_finite()
             && options.force_tolerance > 0.0
