@@ -21,8 +21,8 @@
 //! tangential problems decouple (see [`super::influence`]). Free boundary only.
 //!
 //! # References
-//! Kalker (1990) §1.6 (combined constants, difference parameter); Vollebregt (2014)
-//! (FFT-based convolution of the influence numbers in CONTACT).
+//! Kalker (1990) §1.6 (combined constants, difference parameter); the FFT convolution is
+//! the normal solver's (docs/halfspace.md).
 
 use super::influence::quadrant_tables;
 use crate::error::{Error, Result};

@@ -48,8 +48,6 @@
 //! # References
 //! - Cattaneo (1938); Mindlin (1949); Johnson, *Contact Mechanics* (1985) §7.1-7.2.
 //! - Kalker, *Three-dimensional elastic bodies in rolling contact* (1990), ch. 2 and 5.
-//! - Vollebregt (2014), "A new solver for the elastic normal contact problem using
-//!   conjugate gradients, deflation, and an FFT-based preconditioner", J. Comput. Phys.
 //! - Beck & Teboulle (2009), SIAM J. Imaging Sci. 2, 183-202 (FISTA); O'Donoghue &
 //!   Candès (2015), Found. Comput. Math. 15, 715-732 (adaptive restart).
 
