@@ -11,9 +11,11 @@
 #![allow(clippy::unwrap_used)] // test helpers: a panic is a test failure with its message
 
 use kontakt::geometry::Grid2;
-use kontakt::rolling::{CellState, ShiftLoad, ShiftOptions, ShiftSolution, ShiftSolver};
+use kontakt::rolling::{
+    CellState, ShiftLoad, ShiftOptions, ShiftSolution, ShiftSolver, SteadyOptions, SteadySolver,
+};
 use kontakt::solve::Termination;
-use kontakt::tangential::KalkerMaterial;
+use kontakt::tangential::{Creepage, KalkerMaterial, creep_coefficients};
 
 const A: f64 = 0.5; // contact radius [mm]
 const P0: f64 = 1500.0; // peak pressure [MPa]
@@ -23,6 +25,25 @@ const G: f64 = 80_000.0; // combined shear modulus [MPa]
 /// A grid of `n × n` cells over `[-1.04 a, 1.04 a]²` and the Hertz pressure on it.
 fn hertz(n: usize) -> (Grid2, Vec<f64>) {
     let h = 1.04 * A;
+    let grid = Grid2::centered(h, h, n, n).unwrap();
+    let p = grid
+        .points()
+        .map(|(x, y)| {
+            let r2 = (x * x + y * y) / (A * A);
+            if r2 < 1.0 {
+                P0 * (1.0 - r2).sqrt()
+            } else {
+                0.0
+            }
+        })
+        .collect();
+    (grid, p)
+}
+
+/// A grid of `n × n` cells over `[-h, h]²` with `h = a (1 + 2/n)`, so that the
+/// leading-edge column (`i = n - 1`) lies outside the contact, and the Hertz pressure.
+fn hertz_rolling(n: usize) -> (Grid2, Vec<f64>) {
+    let h = A * (1.0 + 2.0 / n as f64);
     let grid = Grid2::centered(h, h, n, n).unwrap();
     let p = grid
         .points()
@@ -330,4 +351,127 @@ fn bad_input_is_an_error() {
         .unwrap();
     assert!(s.traction_x.iter().chain(&s.traction_y).all(|t| *t == 0.0));
     assert_eq!(s.slip_cells, 0);
+}
+
+/// Steady rolling of the circle at creepage `c` on `n × n` cells: the solution and the
+/// wall time.
+fn rolling(n: usize, nu: f64, c: Creepage) -> kontakt::rolling::SteadySolution {
+    let (grid, p) = hertz_rolling(n);
+    let mut solver = SteadySolver::new(&grid, material(nu), Some(1)).unwrap();
+    let t = std::time::Instant::now();
+    let s = solver.solve(&p, MU, c, &SteadyOptions::default()).unwrap();
+    println!(
+        "{n}x{n} nu={nu} {c:?}: F {:?} N (muP {:.3}), Mz {:.4e}, stick {} slip {}, {} sweeps, \
+         residual {:.1e}, {:?}",
+        s.force,
+        MU * s.normal_force,
+        s.spin_moment,
+        s.stick_cells,
+        s.slip_cells,
+        s.status.iterations,
+        s.status.residual,
+        t.elapsed()
+    );
+    s.status.require_converged("steady rolling").unwrap();
+    s
+}
+
+#[test]
+fn steady_rolling_small_creepage_gives_kalker_coefficients() {
+    // Linear theory (Kalker 1967, 1990 Table E.3) for a circle, c = a, ν = 0.25:
+    // F_x = -G a² C11 ξ, F_y = -G a² C22 η, M_z = G a³ C23 η with C11 = 4.12,
+    // C22 = 3.67, C23 = 1.47. ξ, η = 1e-5: F is 0.35 % of μP, the slip zone vanishes.
+    let nu = 0.25;
+    let k = creep_coefficients(1.0, nu).unwrap();
+    let xi = 1e-5;
+    let c11: Vec<f64> = [16, 24, 32]
+        .iter()
+        .map(|&n| {
+            let s = rolling(n, nu, Creepage::longitudinal(xi));
+            -s.force[0] / (G * A * A * xi)
+        })
+        .collect();
+    let s = rolling(
+        32,
+        nu,
+        Creepage {
+            lateral: xi,
+            ..Creepage::default()
+        },
+    );
+    let c22 = -s.force[1] / (G * A * A * xi);
+    let c23 = s.spin_moment / (G * A.powi(3) * xi);
+    println!(
+        "C11 16/24/32 {c11:?} vs {:.4}; C22 {c22:.4} vs {:.4}; C23 {c23:.4} vs {:.4}",
+        k.c11, k.c22, k.c23
+    );
+    // Measured: C11 4.342, 4.231, 4.174 on 16², 24², 32² (+5.4 %, +2.7 %, +1.3 %: first
+    // order in the cell size); on 32² C22 3.729 (+1.6 %), C23 1.446 (-1.7 %).
+    let e11 = |c: f64| ((c - k.c11) / k.c11).abs();
+    assert!(e11(c11[2]) < 0.02, "C11 {c11:?} vs {}", k.c11);
+    assert!(
+        e11(c11[1]) < 0.7 * e11(c11[0]) && e11(c11[2]) < 0.7 * e11(c11[1]),
+        "C11 {c11:?} does not converge"
+    );
+    assert!(
+        ((c22 - k.c22) / k.c22).abs() < 0.025,
+        "C22 {c22} vs {}",
+        k.c22
+    );
+    assert!(
+        ((c23 - k.c23) / k.c23).abs() < 0.04,
+        "C23 {c23} vs {}",
+        k.c23
+    );
+    // Small creepage: (almost) all stick.
+    assert!(
+        s.slip_cells * 50 < s.stick_cells,
+        "{} slip cells",
+        s.slip_cells
+    );
+}
+
+#[test]
+fn steady_rolling_saturates_at_mu_p() {
+    // ξ = 0.05 (about 18 times the creepage at which the linear force would reach μP):
+    // full slip and F = μP to the spread of the slip direction.
+    let s = rolling(32, 0.25, Creepage::longitudinal(0.05));
+    assert_eq!(s.stick_cells, 0);
+    let f = -s.force[0] / (MU * s.normal_force);
+    assert!(f > 0.999 && f <= 1.0 + 1e-12, "{f}");
+}
+
+#[test]
+fn steady_rolling_bad_input() {
+    let (grid, p) = hertz_rolling(16);
+    let mut solver = SteadySolver::new(&grid, material(0.3), Some(1)).unwrap();
+    let o = SteadyOptions::default();
+    let c = Creepage::longitudinal(1e-3);
+    let field = |r: kontakt::Result<kontakt::rolling::SteadySolution>| {
+        r.unwrap_err().field().map(str::to_owned)
+    };
+    assert_eq!(
+        field(solver.solve(&p, MU, Creepage::longitudinal(f64::NAN), &o)).as_deref(),
+        Some("creepage.longitudinal")
+    );
+    assert_eq!(
+        field(solver.solve(&p, -0.1, c, &o)).as_deref(),
+        Some("friction_coefficient")
+    );
+    assert_eq!(
+        field(solver.solve(&vec![0.0; p.len()], MU, c, &o)).as_deref(),
+        Some("pressure")
+    );
+    // A contact that reaches the leading-edge column.
+    let wide = vec![100.0; p.len()];
+    assert_eq!(
+        field(solver.solve(&wide, MU, c, &o)).as_deref(),
+        Some("pressure")
+    );
+    // The step limit is a status, not an error.
+    let s = solver
+        .solve(&p, MU, c, &SteadyOptions { max_steps: 2, ..o })
+        .unwrap();
+    assert_eq!(s.status.termination, Termination::MaxIterations);
+    assert_eq!(s.status.iterations, 2);
 }

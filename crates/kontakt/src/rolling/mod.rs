@@ -22,7 +22,9 @@
 pub mod influence;
 mod operator;
 mod shift;
+mod steady;
 
 pub use crate::tangential::KalkerMaterial;
 pub use operator::{TangentialOperator, difference_parameter};
 pub use shift::{CellState, ShiftLoad, ShiftOptions, ShiftSolution, ShiftSolver};
+pub use steady::{SteadyOptions, SteadySolution, SteadySolver};

@@ -59,7 +59,7 @@ pub fn difference_parameter(body1: &ElasticMaterial, body2: &ElasticMaterial) ->
 }
 
 /// Check the combined constants (their fields are public).
-fn check_material(m: &KalkerMaterial) -> Result<()> {
+pub(super) fn check_material(m: &KalkerMaterial) -> Result<()> {
     crate::error::positive_as(
         "shear_modulus",
         m.shear_modulus,

@@ -140,18 +140,21 @@ pub struct ShiftSolver {
     op: TangentialOperator,
     grid: Grid2,
     /// Traction bounds `μ p_i` \[MPa\].
-    bound: Vec<f64>,
-    tau: [Vec<f64>; 2],
+    pub(super) bound: Vec<f64>,
+    pub(super) tau: [Vec<f64>; 2],
     prev: [Vec<f64>; 2],
     y: [Vec<f64>; 2],
-    u: [Vec<f64>; 2],
+    pub(super) u: [Vec<f64>; 2],
+    /// The rigid part of the slip per cell \[mm\]: the shift, or in a rolling step the
+    /// rigid slip minus the previous displacement upstream.
+    pub(super) rigid: [Vec<f64>; 2],
 }
 
 /// Inner iteration outcome.
-struct Inner {
-    termination: Termination,
-    iterations: usize,
-    residual: f64,
+pub(super) struct Inner {
+    pub(super) termination: Termination,
+    pub(super) iterations: usize,
+    pub(super) residual: f64,
 }
 
 impl ShiftSolver {
@@ -172,12 +175,20 @@ impl ShiftSolver {
             prev: z(),
             y: z(),
             u: z(),
+            rigid: z(),
         })
     }
 
     /// The tangential operator.
     pub fn operator(&self) -> &TangentialOperator {
         &self.op
+    }
+
+    /// The displacements `A τ` \[mm\] of the stored tractions into `out`.
+    pub(super) fn displacements(&mut self, out: &mut [Vec<f64>; 2]) -> Result<()> {
+        let ShiftSolver { op, tau, .. } = self;
+        let [ux, uy] = out;
+        op.apply(&tau[0], &tau[1], ux, uy)
     }
 
     /// Forget the last tractions: the next solve starts from zero traction.
@@ -394,7 +405,20 @@ impl ShiftSolver {
 
     /// FISTA with gradient restart for the shift `d`, from the stored tractions.
     fn inner(&mut self, d: [f64; 2], options: &ShiftOptions) -> Inner {
-        let scale = d[0].hypot(d[1]);
+        for (r, dk) in self.rigid.iter_mut().zip(d) {
+            r.fill(dk);
+        }
+        self.inner_rigid(d[0].hypot(d[1]), options.tolerance, options.max_iterations)
+    }
+
+    /// FISTA with gradient restart for the stored rigid slip `rigid` \[mm\] per cell,
+    /// from the stored tractions; `scale` \[mm\] is the slip the tolerance refers to.
+    pub(super) fn inner_rigid(
+        &mut self,
+        scale: f64,
+        tolerance: f64,
+        max_iterations: usize,
+    ) -> Inner {
         let ShiftSolver {
             op,
             bound,
@@ -402,6 +426,7 @@ impl ShiftSolver {
             prev,
             y,
             u,
+            rigid,
             ..
         } = self;
         if scale == 0.0 {
@@ -431,7 +456,7 @@ impl ShiftSolver {
         }
         let mut theta: f64 = 1.0;
         let mut residual = f64::INFINITY;
-        for it in 1..=options.max_iterations {
+        for it in 1..=max_iterations {
             {
                 let [yx, yy] = &*y;
                 let [ux, uy] = &mut *u;
@@ -442,7 +467,7 @@ impl ShiftSolver {
             let mut gmax: f64 = 0.0;
             let mut restart = 0.0;
             for i in 0..bound.len() {
-                let (sx, sy) = (u[0][i] + d[0], u[1][i] + d[1]);
+                let (sx, sy) = (u[0][i] + rigid[0][i], u[1][i] + rigid[1][i]);
                 let (mut zx, mut zy) = (y[0][i] - step * sx, y[1][i] - step * sy);
                 let m = zx.hypot(zy);
                 let b = bound[i];
@@ -465,7 +490,7 @@ impl ShiftSolver {
                     residual,
                 };
             }
-            if residual <= options.tolerance {
+            if residual <= tolerance {
                 return Inner {
                     termination: Termination::Converged,
                     iterations: it,
@@ -491,7 +516,7 @@ impl ShiftSolver {
         }
         Inner {
             termination: Termination::MaxIterations,
-            iterations: options.max_iterations,
+            iterations: max_iterations,
             residual,
         }
     }
