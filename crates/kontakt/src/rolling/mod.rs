@@ -1,6 +1,6 @@
 //! Exact (Kalker) tangential contact on the half-space grid: Cerruti's influence
-//! coefficients, the FFT tangential operator and the shift (Cattaneo) problem with
-//! Coulomb friction. The first step of steady rolling contact (issue 17).
+//! coefficients, the FFT tangential operator, the shift (Cattaneo) problem and steady
+//! rolling with Coulomb friction. The first step of issue 17.
 //!
 //! - [`influence`]: the displacement differences `u_x`, `u_y` \[mm\] per unit uniform
 //!   tangential traction \[MPa\] on a rectangular cell, in closed form (Cerruti's point-force
@@ -12,10 +12,13 @@
 //!   friction coefficient under a prescribed rigid shift or total tangential force,
 //!   accelerated projected gradients with a stated residual and a
 //!   [`crate::solve::SolveStatus`].
+//! - [`SteadySolver`]: steady rolling for given creepages and spin (`S = ω − ∂u/∂x`,
+//!   upwind, the rolling step one cell), as Kalker's transient steps marched to the
+//!   steady state; creep forces, spin moment, stick/slip map and slip.
 //!
-//! Not yet here: steady rolling (slip `s = w - V ∂u/∂x` with creepages and spin), the
-//! normal-tangential coupling of dissimilar bodies (`K ≠ 0`), transient rolling and the
-//! `kontakt traction` model. Method and validation: docs/rolling.md.
+//! Not yet here: the normal-tangential coupling of dissimilar bodies (`K ≠ 0`), the
+//! speed targets of issue 17, Carter's and Kalker's published creep curves as tests, and
+//! the `kontakt traction` model. Method and validation: docs/rolling.md.
 //!
 //! Units: mm, N, MPa throughout.
 
