@@ -232,7 +232,20 @@ impl SteadySolver {
                 }
             }
         }
-        // The displacements of the warm start.
+        // The warm start, projected onto the new discs, and its displacements.
+        {
+            let core = &mut self.core;
+            for c in 0..n {
+                let (tx, ty) = (core.tau[0][c], core.tau[1][c]);
+                let m = tx.hypot(ty);
+                let b = core.bound[c];
+                if m > b {
+                    let f = if m > 0.0 { b / m } else { 0.0 };
+                    core.tau[0][c] = tx * f;
+                    core.tau[1][c] = ty * f;
+                }
+            }
+        }
         self.core.displacements(&mut self.last)?;
         let mut termination = Termination::MaxIterations;
         let (mut steps, mut fft, mut change) = (0, 0, f64::INFINITY);
