@@ -10,6 +10,10 @@ use kontakt::{Error, Result};
 use serde::Serialize;
 use std::path::Path;
 
+/// The valid `method` values, as an error message names them.
+const METHODS: &str =
+    "\"hertz\", \"pimp\", \"bem\", \"traction\", \"friction\", \"mindlin\" or \"impact\"";
+
 /// A case of any method: the `method` key decides the schema.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Case {
@@ -24,6 +28,12 @@ pub enum Case {
     /// `method = "friction"`: rib friction of a tapered roller bearing
     /// ([`crate::friction_case`]).
     Friction(Box<crate::friction_case::FrictionCase>),
+    /// `method = "mindlin"`: Cattaneo-Mindlin partial slip and its loading history
+    /// ([`crate::mindlin_case`]).
+    Mindlin(Box<crate::mindlin_case::MindlinCase>),
+    /// `method = "impact"`: a sphere striking a flat, normal or oblique with friction
+    /// ([`crate::impact_case`]).
+    Impact(Box<crate::impact_case::ImpactCase>),
 }
 
 impl Case {
@@ -43,11 +53,9 @@ impl Case {
             "bem" => Ok(Case::Bem(Box::new(parse_toml(text)?))),
             "traction" => Ok(Case::Traction(Box::new(parse_toml(text)?))),
             "friction" => Ok(Case::Friction(Box::new(parse_toml(text)?))),
-            other => Err(Error::invalid(
-                "method",
-                other,
-                "\"hertz\", \"pimp\", \"bem\", \"traction\" or \"friction\"",
-            )),
+            "mindlin" => Ok(Case::Mindlin(Box::new(parse_toml(text)?))),
+            "impact" => Ok(Case::Impact(Box::new(parse_toml(text)?))),
+            other => Err(Error::invalid("method", other, METHODS)),
         }
     }
 
@@ -66,11 +74,7 @@ impl Case {
             None => "hertz".to_string(),
             Some(toml::Value::String(m)) => m.clone(),
             Some(other) => {
-                return Err(Error::invalid(
-                    "method",
-                    other,
-                    "\"hertz\", \"pimp\", \"bem\", \"traction\" or \"friction\"",
-                ));
+                return Err(Error::invalid("method", other, METHODS));
             }
         };
         match method.as_str() {
@@ -79,11 +83,9 @@ impl Case {
             "bem" => Ok(Case::Bem(Box::new(read(table)?))),
             "traction" => Ok(Case::Traction(Box::new(read(table)?))),
             "friction" => Ok(Case::Friction(Box::new(read(table)?))),
-            other => Err(Error::invalid(
-                "method",
-                other,
-                "\"hertz\", \"pimp\", \"bem\", \"traction\" or \"friction\"",
-            )),
+            "mindlin" => Ok(Case::Mindlin(Box::new(read(table)?))),
+            "impact" => Ok(Case::Impact(Box::new(read(table)?))),
+            other => Err(Error::invalid("method", other, METHODS)),
         }
     }
 
@@ -95,6 +97,8 @@ impl Case {
             Case::Bem(_) => "bem",
             Case::Traction(_) => "traction",
             Case::Friction(_) => "friction",
+            Case::Mindlin(_) => "mindlin",
+            Case::Impact(_) => "impact",
         }
     }
 
@@ -136,6 +140,12 @@ impl Case {
             Case::Friction(case) => {
                 Outcome::Friction(Box::new(crate::friction_case::run_friction_case(case)?))
             }
+            Case::Mindlin(case) => {
+                Outcome::Mindlin(Box::new(crate::mindlin_case::run_mindlin_case(case)?))
+            }
+            Case::Impact(case) => {
+                Outcome::Impact(Box::new(crate::impact_case::run_impact_case(case)?))
+            }
         })
     }
 }
@@ -175,6 +185,10 @@ pub enum Outcome {
     Traction(Box<crate::traction_case::TractionReport>),
     /// Rib friction report and the field of its maps.
     Friction(Box<crate::friction_case::FrictionOutcome>),
+    /// Cattaneo-Mindlin report with its loading history.
+    Mindlin(Box<crate::mindlin_case::MindlinReport>),
+    /// Impact report.
+    Impact(Box<crate::impact_case::ImpactReport>),
 }
 
 /// One field of an [`Outcome`] on its grid: values per cell, row-major with `x` fastest
@@ -215,7 +229,11 @@ impl Outcome {
             }
         }
         match self {
-            Outcome::Hertz(_) | Outcome::Traction(_) | Outcome::Friction(_) => Vec::new(),
+            Outcome::Hertz(_)
+            | Outcome::Traction(_)
+            | Outcome::Friction(_)
+            | Outcome::Mindlin(_)
+            | Outcome::Impact(_) => Vec::new(),
             Outcome::Pimp(o) => vec![view(
                 "pressure",
                 "MPa",
@@ -242,6 +260,8 @@ impl Serialize for Outcome {
             Outcome::Bem(o) => o.report.serialize(s),
             Outcome::Traction(r) => r.serialize(s),
             Outcome::Friction(o) => o.report.serialize(s),
+            Outcome::Mindlin(r) => r.serialize(s),
+            Outcome::Impact(r) => r.serialize(s),
         }
     }
 }

@@ -7,7 +7,8 @@
 //! TOML case file ──parse──▶ Case ──Case::run──▶ kontakt (physics) ──▶ Outcome ──▶ JSON report
 //! ```
 //!
-//! - [`Case`]: every schema (`method = "hertz" | "pimp" | "bem" | "traction" | "friction"`), parsed
+//! - [`Case`]: every schema (`method = "hertz" | "pimp" | "bem" | "traction" | "friction" |
+//!   "mindlin" | "impact"`), parsed
 //!   from TOML with unknown keys refused; [`Case::run`] is the one dispatch that every
 //!   front end calls.
 //! - [`Outcome`]: the report (stable, unit-suffixed JSON keys, `schema_version`) plus,
@@ -27,7 +28,9 @@ mod common;
 pub mod element_case;
 pub mod friction_case;
 pub mod hertz_case;
+pub mod impact_case;
 pub mod maps;
+pub mod mindlin_case;
 pub mod pimp_case;
 pub mod sweep;
 pub mod traction_case;
@@ -38,6 +41,8 @@ pub use common::{MAX_CASE_FILE_BYTES, SCHEMA_VERSION, read_case_file, read_case_
 pub use element_case::{ElementCase, element_from_case, element_from_toml};
 pub use friction_case::{FrictionCase, FrictionOutcome, FrictionReport, run_friction_case};
 pub use hertz_case::{ContactReport, run_case};
+pub use impact_case::{ImpactCase, ImpactReport, run_impact_case};
+pub use mindlin_case::{MindlinCase, MindlinReport, run_mindlin_case};
 pub use pimp_case::{PimpCase, PimpOutcome, PimpReport, run_pimp_case};
 pub use sweep::{Sweep, SweepError};
 pub use traction_case::{TractionCase, TractionReport, run_traction_case};

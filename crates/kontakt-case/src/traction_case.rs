@@ -13,7 +13,9 @@
 //! radii2_mm = [20.0, inf]
 //! angle_deg = 0.0
 //! # kind = "ellipse": semi_axes_mm = [a, b], a along the rolling direction
-//! # kind = "line": radii_mm = [R1, R2], length_mm = L (parallel cylinders; carter only)
+//! # kind = "line": radii_mm = [R1, R2] or half_width_mm = a, and length_mm = L
+//! #   (parallel cylinders, or a strip of given half-width under the Hertz pressure;
+//! #   carter and asperity only)
 //!
 //! [body1]
 //! e_mpa = 210000.0
@@ -23,7 +25,7 @@
 //! nu = 0.3
 //!
 //! [load]
-//! force_n = 1000.0
+//! force_n = 1000.0           # or, for kind = "line", line_load_n_per_mm [N/mm]
 //!
 //! [friction]
 //! mu = 0.1
@@ -32,6 +34,9 @@
 //! max = 0.006
 //! points = 121               # optional, default 101
 //! # min = 0.0                # optional, default 0
+//! # lateral = 0.0            # optional: a constant lateral creepage [-] at every point
+//! # spin_per_mm = 0.0        # optional: a constant spin creepage [1/mm] at every point
+//! #                          # (both: kalker_linear and fastsim only)
 //!
 //! [fastsim]                  # optional
 //! elements = [50, 50]
@@ -176,10 +181,16 @@ pub enum TractionGeometry {
         /// Semi-axes `[a, b]` \[mm\]: `a` along the rolling direction, `b` across.
         semi_axes_mm: [f64; 2],
     },
-    /// Two parallel cylinders rolling about their axes (Carter's case).
+    /// Two parallel cylinders rolling about their axes (Carter's case), given by their
+    /// radii or by the half-width of their contact strip (exactly one).
     Line {
         /// Radii `[R1, R2]` \[mm\] (convex > 0, concave < 0, inf flat).
-        radii_mm: [f64; 2],
+        #[serde(default)]
+        radii_mm: Option<[f64; 2]>,
+        /// Half-width `a` \[mm\] of the strip, carrying the Hertz pressure
+        /// `p0 = 2 P'/(pi a)` of the line load `P'`.
+        #[serde(default)]
+        half_width_mm: Option<f64>,
         /// Contact length \[mm\]: the line load is `force_n / length_mm`.
         length_mm: f64,
     },
@@ -189,8 +200,52 @@ pub enum TractionGeometry {
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct TractionLoad {
-    /// Normal force \[N\], > 0.
-    pub force_n: f64,
+    /// Normal force \[N\], > 0 (exactly one of `force_n` and `line_load_n_per_mm`).
+    #[serde(default)]
+    pub force_n: Option<f64>,
+    /// Line load \[N/mm\], > 0, for `kind = "line"`: the force is this times `length_mm`.
+    #[serde(default)]
+    pub line_load_n_per_mm: Option<f64>,
+}
+
+impl TractionLoad {
+    /// The normal force \[N\] and the key that gave it, for a contact of length `length`
+    /// \[mm\] (line contacts).
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] naming `load` (none or both given),
+    /// `load.line_load_n_per_mm` (a point contact, or not a finite value > 0) or
+    /// `load.force_n` (not a finite value > 0).
+    pub fn force(&self, length: Option<f64>) -> Result<(f64, &'static str)> {
+        match (self.force_n, self.line_load_n_per_mm, length) {
+            (Some(f), None, _) => Ok((
+                kontakt::error::positive_as("load.force_n", f, "a finite force > 0 N")?,
+                "load.force_n",
+            )),
+            (None, Some(q), Some(l)) => {
+                let q = kontakt::error::positive_as(
+                    "load.line_load_n_per_mm",
+                    q,
+                    "a finite line load > 0 N/mm",
+                )?;
+                Ok((q * l, "load.line_load_n_per_mm"))
+            }
+            (None, Some(q), None) => Err(Error::invalid(
+                "load.line_load_n_per_mm",
+                q,
+                "force_n for a point contact (a line load needs kind = \"line\")",
+            )),
+            (f, q, _) => Err(Error::invalid(
+                "load",
+                if f.is_some() && q.is_some() {
+                    "both force_n and line_load_n_per_mm"
+                } else {
+                    "neither force_n nor line_load_n_per_mm"
+                },
+                "exactly one of force_n [N] or line_load_n_per_mm [N/mm] (kind = \"line\")",
+            )),
+        }
+    }
 }
 
 /// `[friction]`.
@@ -213,6 +268,14 @@ pub struct CreepageRange {
     /// Number of points, 2..=100000, default 101.
     #[serde(default = "default_points")]
     pub points: usize,
+    /// Lateral creepage \[-\], the same at every point, default 0 (Kalker's linear
+    /// theory and FASTSIM only).
+    #[serde(default)]
+    pub lateral: f64,
+    /// Spin creepage \[1/mm\], the same at every point, default 0 (Kalker's linear theory
+    /// and FASTSIM only).
+    #[serde(default)]
+    pub spin_per_mm: f64,
 }
 
 fn default_points() -> usize {
@@ -246,6 +309,22 @@ impl CreepageRange {
                 self.points,
                 "2..=100000 points",
             ));
+        }
+        for (field, v, unit) in [
+            (
+                "creepage.lateral",
+                self.lateral,
+                "a finite lateral creepage [-]",
+            ),
+            (
+                "creepage.spin_per_mm",
+                self.spin_per_mm,
+                "a finite spin creepage [1/mm]",
+            ),
+        ] {
+            if !v.is_finite() {
+                return Err(Error::invalid(field, v, unit));
+            }
         }
         let n = self.points - 1;
         Ok((0..=n)
@@ -300,8 +379,27 @@ impl TractionCase {
 pub struct CurveReport {
     /// Model name (`carter`, `kalker_linear`, `fastsim`).
     pub model: &'static str,
-    /// `F_T/(mu F_N)` \[-\] at each creepage of the report (Kalker linear: unclipped).
+    /// `F_T/(mu F_N)` \[-\] at each creepage of the report (Kalker linear: unclipped),
+    /// with `F_T = -Fx` the longitudinal creep force opposing the longitudinal creepage.
     pub normalized_force: Vec<f64>,
+    /// The creep forces in both directions and the spin moment at each point (Kalker's
+    /// linear theory and FASTSIM, which take lateral and spin creepage): present when the
+    /// case gives `creepage.lateral` or `creepage.spin_per_mm`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub forces: Option<CreepForces>,
+}
+
+/// Creep forces and spin moment on body 1 along a curve (Kalker's sign convention: the
+/// forces oppose the creepages).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CreepForces {
+    /// Longitudinal force `Fx` \[N\] at each point.
+    pub longitudinal_force_n: Vec<f64>,
+    /// Lateral force `Fy` \[N\] at each point.
+    pub lateral_force_n: Vec<f64>,
+    /// Spin moment `Mz` about the contact centre \[N·mm\] at each point (FASTSIM; the
+    /// linear theory's `C33` is not in kontakt's coefficient table, so none for it).
+    pub spin_moment_nmm: Option<Vec<f64>>,
 }
 
 /// The result of a traction case. Keys carry their units; dimensionless quantities have
@@ -347,6 +445,14 @@ pub struct TractionReport {
     pub asperities: Option<usize>,
     /// The longitudinal creepages (slide-to-roll ratios) \[-\].
     pub creepage: Vec<f64>,
+    /// The constant lateral creepage \[-\] of every point, when the case gives lateral or
+    /// spin creepage.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lateral_creepage: Option<f64>,
+    /// The constant spin creepage \[1/mm\] of every point, when the case gives lateral or
+    /// spin creepage.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub spin_creepage_per_mm: Option<f64>,
     /// One curve per model, in the order of the case.
     pub curves: Vec<CurveReport>,
 }
@@ -402,10 +508,24 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
     let m1 = material(&case.body1, "body1")?;
     let m2 = material(&case.body2, "body2")?;
     let mu = case.friction.mu;
+    let length = match &case.geometry {
+        TractionGeometry::Line { length_mm, .. } => {
+            if !(length_mm.is_finite() && *length_mm > 0.0) {
+                return Err(Error::invalid(
+                    "geometry.length_mm",
+                    length_mm,
+                    "a finite length > 0 mm",
+                ));
+            }
+            Some(*length_mm)
+        }
+        _ => None,
+    };
+    let (force, load_key) = case.load.force(length)?;
     let map_common = |e: Error| {
         e.map_field(|f| match f {
             "friction_coefficient" => "friction.mu".into(),
-            "normal_force" | "force" | "line_load" => "load.force_n".into(),
+            "normal_force" | "force" | "line_load" => load_key.into(),
             "poisson_ratio" => "body1.nu, body2.nu".into(),
             "elements[0]" => "fastsim.elements[0]".into(),
             "elements[1]" => "fastsim.elements[1]".into(),
@@ -444,7 +564,7 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
                 },
             )?;
             let sol = HertzPointContact::new(g, m1, m2)?
-                .solve_force(case.load.force_n)
+                .solve_force(force)
                 .map_err(map_common)?;
             let Some(axis) = rolling_axis(&sol) else {
                 return Err(Error::Geometry {
@@ -463,38 +583,52 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
             ("hertz", Some(e), carter, None, axes, e.max_pressure())
         }
         TractionGeometry::Ellipse { semi_axes_mm } => {
-            let e = ContactEllipse::new(semi_axes_mm[0], semi_axes_mm[1], case.load.force_n)
-                .map_err(map_common)?;
+            let e =
+                ContactEllipse::new(semi_axes_mm[0], semi_axes_mm[1], force).map_err(map_common)?;
             let carter = Carter::from_ellipse(&e, &m1, &m2, mu).map_err(map_common)?;
             let axes = [e.a(), e.b()];
             ("ellipse", Some(e), carter, None, axes, e.max_pressure())
         }
         TractionGeometry::Line {
             radii_mm,
+            half_width_mm,
             length_mm,
         } => {
-            if !(length_mm.is_finite() && *length_mm > 0.0) {
-                return Err(Error::invalid(
-                    "geometry.length_mm",
-                    length_mm,
-                    "a finite length > 0 mm",
-                ));
-            }
-            let contact = LineContact::new(radii_mm[0], radii_mm[1], m1, m2).map_err(|e| {
-                e.map_field(|f| match f {
-                    "body1.radius" => "geometry.radii_mm[0]".into(),
-                    "body2.radius" => "geometry.radii_mm[1]".into(),
-                    _ => "geometry.radii_mm".into(),
-                })
-            })?;
-            let positive_force = kontakt::error::positive_as(
-                "normal_force",
-                case.load.force_n,
-                "a finite force > 0 N",
-            )
-            .map_err(map_common)?;
-            let line_load = positive_force / length_mm;
-            let carter = Carter::from_line_contact(&contact, line_load, mu).map_err(map_common)?;
+            let line_load = force / length_mm;
+            let carter = match (radii_mm, half_width_mm) {
+                (Some(radii_mm), None) => {
+                    let contact =
+                        LineContact::new(radii_mm[0], radii_mm[1], m1, m2).map_err(|e| {
+                            e.map_field(|f| match f {
+                                "body1.radius" => "geometry.radii_mm[0]".into(),
+                                "body2.radius" => "geometry.radii_mm[1]".into(),
+                                _ => "geometry.radii_mm".into(),
+                            })
+                        })?;
+                    Carter::from_line_contact(&contact, line_load, mu).map_err(map_common)?
+                }
+                (None, Some(a)) => {
+                    let a = kontakt::error::positive_as(
+                        "geometry.half_width_mm",
+                        *a,
+                        "a finite half-width > 0 mm",
+                    )?;
+                    // Hertz strip: P' = (pi/2) p0 a.
+                    let p0 = 2.0 * line_load / (std::f64::consts::PI * a);
+                    Carter::new(a, p0, e_star, mu).map_err(map_common)?
+                }
+                (r, _) => {
+                    return Err(Error::invalid(
+                        "geometry",
+                        if r.is_some() {
+                            "both radii_mm and half_width_mm"
+                        } else {
+                            "neither radii_mm nor half_width_mm"
+                        },
+                        "exactly one of radii_mm [R1, R2] or half_width_mm for kind = \"line\"",
+                    ));
+                }
+            };
             let axes = [carter.semi_width(), 0.5 * length_mm];
             (
                 "line",
@@ -511,11 +645,28 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
     let mut fastsim = None;
     let mut asperity = None;
     let mut curves = Vec::with_capacity(case.models.len());
+    let combined = case.creepage.lateral != 0.0 || case.creepage.spin_per_mm != 0.0;
     for &model in &case.models {
+        if combined && matches!(model, TractionModel::Carter | TractionModel::Asperity) {
+            let (field, value) = if case.creepage.lateral != 0.0 {
+                ("creepage.lateral", case.creepage.lateral)
+            } else {
+                ("creepage.spin_per_mm", case.creepage.spin_per_mm)
+            };
+            return Err(Error::invalid(
+                field,
+                value,
+                format!(
+                    "0 with model {} (a theory of longitudinal creepage only); lateral and \
+                     spin creepage need models = [\"kalker_linear\", \"fastsim\"]",
+                    model.as_str()
+                ),
+            ));
+        }
         let curve: &dyn TractionCurve = match model {
             TractionModel::Carter => &carter,
             TractionModel::Asperity => {
-                asperity = Some(asperity_model(case, &carter, ellipse, m1, m2)?);
+                asperity = Some(asperity_model(case, force, &carter, ellipse, m1, m2)?);
                 asperity.as_ref().expect("invariant: just set")
             }
             TractionModel::KalkerLinear | TractionModel::Fastsim => {
@@ -543,9 +694,18 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
                 }
             }
         };
+        let (normalized_force, forces) = if combined {
+            let (n, f) = combined_curve(&case.creepage, &creepage, kalker, fastsim.as_ref(), model)
+                .map_err(map_common)?;
+            (n, Some(f))
+        } else {
+            let n = curve.traction_curve(&creepage).map_err(map_common)?;
+            (n, None)
+        };
         curves.push(CurveReport {
             model: model.as_str(),
-            normalized_force: curve.traction_curve(&creepage).map_err(map_common)?,
+            normalized_force,
+            forces,
         });
     }
     // Linear-theory data for every point contact, also when the model was not asked for.
@@ -560,7 +720,7 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
         name: case.name.clone(),
         method: "traction",
         geometry: label,
-        force_n: case.load.force_n,
+        force_n: force,
         line_load_n_per_mm: line_load,
         mu,
         e_star_mpa: e_star,
@@ -574,13 +734,78 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
         fastsim_elements: fastsim.map(|f| f.options().elements),
         asperities: asperity.map(|a| a.model().asperities().len()),
         creepage,
+        lateral_creepage: combined.then_some(case.creepage.lateral),
+        spin_creepage_per_mm: combined.then_some(case.creepage.spin_per_mm),
         curves,
     })
+}
+
+/// Kalker's linear theory or FASTSIM along the longitudinal creepages `xis` \[-\] with the
+/// case's constant lateral and spin creepage: `F_T/(mu F_N) = -Fx/(mu F_N)` (FASTSIM:
+/// within [-1, 1], as its pure-creepage curve) and the forces and moment.
+fn combined_curve(
+    range: &CreepageRange,
+    xis: &[f64],
+    kalker: Option<KalkerLinear>,
+    fastsim: Option<&Fastsim>,
+    model: TractionModel,
+) -> Result<(Vec<f64>, CreepForces)> {
+    let n = xis.len();
+    let mut normalized = Vec::with_capacity(n);
+    let mut fx = Vec::with_capacity(n);
+    let mut fy = Vec::with_capacity(n);
+    let mut mz = Vec::with_capacity(n);
+    for &xi in xis {
+        let c = kontakt::tangential::Creepage {
+            longitudinal: xi,
+            lateral: range.lateral,
+            spin: range.spin_per_mm,
+        };
+        let (forces, moment, bound, clip) = match (model, kalker, fastsim) {
+            (TractionModel::KalkerLinear, Some(k), _) => (
+                k.forces(&c)?,
+                None,
+                k.friction_coefficient() * k.ellipse().normal_force(),
+                false,
+            ),
+            (TractionModel::Fastsim, _, Some(f)) => {
+                let s = f.solve(&c)?;
+                (
+                    s.forces,
+                    Some(s.spin_moment),
+                    f.friction_coefficient() * f.ellipse().normal_force(),
+                    true,
+                )
+            }
+            _ => {
+                return Err(Error::invalid(
+                    "models",
+                    model.as_str(),
+                    "kalker_linear or fastsim with lateral or spin creepage",
+                ));
+            }
+        };
+        let t = -forces[0] / bound;
+        let t = if clip { t.clamp(-1.0, 1.0) } else { t };
+        normalized.push(if t == 0.0 { 0.0 } else { t });
+        fx.push(forces[0]);
+        fy.push(forces[1]);
+        mz.extend(moment);
+    }
+    Ok((
+        normalized,
+        CreepForces {
+            longitudinal_force_n: fx,
+            lateral_force_n: fy,
+            spin_moment_nmm: (mz.len() == n).then_some(mz),
+        },
+    ))
 }
 
 /// Plan the asperity model on the case's nominal contact.
 fn asperity_model(
     case: &TractionCase,
+    force: f64,
     carter: &Carter,
     ellipse: Option<ContactEllipse>,
     m1: kontakt::material::ElasticMaterial,
@@ -610,14 +835,22 @@ fn asperity_model(
     ) {
         (
             TractionGeometry::Line {
-                radii_mm,
+                radii_mm: Some(radii_mm),
                 length_mm,
+                ..
             },
             _,
         ) => NominalContact::HertzLine {
             length: *length_mm,
             radii: *radii_mm,
         },
+        (TractionGeometry::Line { .. }, _) => {
+            return Err(Error::invalid(
+                "geometry.half_width_mm",
+                carter.semi_width(),
+                "radii_mm instead, for the asperity model (its Hertz line contact needs the radii)",
+            ));
+        }
         (_, Some(circle)) => circle,
         _ => {
             return Err(Error::invalid(
@@ -633,7 +866,7 @@ fn asperity_model(
     };
     let params = AsperityTractionParams {
         nominal,
-        load: case.load.force_n,
+        load: force,
         friction_coefficient: case.friction.mu,
         youngs_modulus: m1.youngs_modulus(),
         poisson_ratio: m1.poisson_ratio(),

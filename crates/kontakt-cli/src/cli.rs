@@ -15,6 +15,8 @@ use std::path::PathBuf;
       kontakt demo --out kontakt-demo\n  \
       kontakt validate --out kontakt-validate\n  \
       kontakt traction examples/traction_ball_all_models.toml --plot traction.png\n  \
+      kontakt mindlin examples/mindlin_fretting.toml --plot loop.png\n  \
+      kontakt impact examples/impact_oblique.toml\n  \
       kontakt friction examples/rib_friction.toml --plot torque.png\n  \
       kontakt mbs --out kontakt-mbs\n  \
       kontakt sweep examples/sweeps/hertz_load.toml --out kontakt-sweep\n\n\
@@ -46,6 +48,14 @@ pub enum Command {
     /// Kalker linear, FASTSIM and the asperity model (Mindlin partial slip per asperity), from
     /// a TOML case (method = "traction"; docs/case-schema.md).
     Traction(TractionArgs),
+    /// Cattaneo-Mindlin partial slip of a Hertz contact under an oscillating tangential
+    /// force: stick zone, shift, the Mindlin-Deresiewicz hysteresis loop and the energy
+    /// dissipated per cycle (TOML case, method = "mindlin"; docs/case-schema.md).
+    Mindlin(MindlinArgs),
+    /// A sphere striking a flat: the Hertz normal impact and, with friction, the oblique
+    /// rebound (rigid-body theory and the elastic analysis of Maw, Barber and Fawcett 1976)
+    /// (TOML case, method = "impact"; docs/case-schema.md, docs/impact.md).
+    Impact(ImpactArgs),
     /// Friction torque and power of the roller-end/rib contact of a tapered roller bearing
     /// over a speed sweep: Hertz, PimP and/or half-space pressure, lubricant film, mixed
     /// friction (TOML case, method = "friction"; docs/case-schema.md).
@@ -198,6 +208,32 @@ pub struct TractionArgs {
     #[arg(long, value_name = "FILE.png|svg")]
     pub plot: Option<PathBuf>,
     /// Print one JSON document instead of the table.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Debug, Args)]
+pub struct MindlinArgs {
+    /// Case file (TOML, method = "mindlin"), or `-` for standard input.
+    #[arg(value_name = "CASE.toml")]
+    pub case: PathBuf,
+    /// Write every point of the loading history to this CSV file (force_n, displacement_mm).
+    #[arg(long, value_name = "FILE.csv")]
+    pub csv: Option<PathBuf>,
+    /// Draw the hysteresis loop, Q against the shift (.png or .svg).
+    #[arg(long, value_name = "FILE.png|svg")]
+    pub plot: Option<PathBuf>,
+    /// Print one JSON document instead of the text.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Debug, Args)]
+pub struct ImpactArgs {
+    /// Case file (TOML, method = "impact"), or `-` for standard input.
+    #[arg(value_name = "CASE.toml")]
+    pub case: PathBuf,
+    /// Print one JSON document instead of the text.
     #[arg(long)]
     pub json: bool,
 }

@@ -311,3 +311,193 @@ fn asperity_model_on_a_circular_contact() {
     let l = bad(&["traction", p.to_str().unwrap()]);
     assert!(l.contains("invalid models = asperity on an ellipse"), "{l}");
 }
+
+/// The case text of a circular contact (a = b = 0.3 mm, 1000 N, mu = 0.1, steel) with
+/// Kalker's linear theory and FASTSIM and the given `[creepage]` table.
+fn combined_case(creepage: &str, models: &str) -> PathBuf {
+    let text = format!(
+        "method = \"traction\"\nmodels = [{models}]\n[geometry]\nkind = \"ellipse\"\nsemi_axes_mm = [0.3, 0.3]\n\
+         [body1]\ne_mpa = 210000.0\nnu = 0.3\n[body2]\ne_mpa = 210000.0\nnu = 0.3\n\
+         [load]\nforce_n = 1000.0\n[friction]\nmu = 0.1\n[creepage]\n{creepage}\n\
+         [fastsim]\nelements = [60, 60]\n"
+    );
+    let name = format!("combined-{:016x}.toml", fnv(&text));
+    let p = tempdir().join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+fn fnv(s: &str) -> u64 {
+    s.bytes().fold(0xcbf2_9ce4_8422_2325, |h, b| {
+        (h ^ u64::from(b)).wrapping_mul(0x100_0000_01b3)
+    })
+}
+
+fn forces(v: &Value, model: &str) -> [Vec<f64>; 3] {
+    let c = v["curves"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|c| c["model"] == model)
+        .unwrap();
+    let list = |k: &str| -> Vec<f64> {
+        c["forces"][k]
+            .as_array()
+            .map(|a| a.iter().map(|x| x.as_f64().unwrap()).collect())
+            .unwrap_or_default()
+    };
+    [
+        list("longitudinal_force_n"),
+        list("lateral_force_n"),
+        list("spin_moment_nmm"),
+    ]
+}
+
+/// Lateral and spin creepage (issue 16, item 5): at small creepages FASTSIM's forces equal
+/// Kalker's linear theory, whose coefficients FASTSIM's flexibilities are built from (within
+/// 2 % on a 60 x 60 grid); the spin moment opposes the spin; at a large lateral creepage
+/// FASTSIM's force saturates at mu F_N (1e-9), in the direction (C11 xi, C22 eta); Carter, a longitudinal
+/// theory, refuses lateral creepage naming the key.
+#[test]
+fn lateral_and_spin_creepage_give_forces_in_both_directions() {
+    let both = "\"kalker_linear\", \"fastsim\"";
+    // Small lateral creepage, small longitudinal creepages.
+    let v = run_json(&[
+        "traction",
+        combined_case("max = 1e-5\npoints = 3\nlateral = 1e-5", both)
+            .to_str()
+            .unwrap(),
+    ]);
+    assert_eq!(v["lateral_creepage"], 1e-5);
+    let [kx, ky, km] = forces(&v, "kalker_linear");
+    let [fx, fy, fm] = forces(&v, "fastsim");
+    assert!(km.is_empty() && fm.len() == 3);
+    for i in 1..3 {
+        assert!(
+            (fx[i] / kx[i] - 1.0).abs() < 0.02,
+            "Fx {} vs {}",
+            fx[i],
+            kx[i]
+        );
+    }
+    for i in 0..3 {
+        assert!(
+            ky[i] < 0.0 && (fy[i] / ky[i] - 1.0).abs() < 0.02,
+            "Fy {} vs {}",
+            fy[i],
+            ky[i]
+        );
+    }
+    // Small spin alone: the lateral force of spin, C23.
+    let v = run_json(&[
+        "traction",
+        combined_case("max = 1e-6\npoints = 2\nspin_per_mm = 1e-4", both)
+            .to_str()
+            .unwrap(),
+    ]);
+    let [_, ky, _] = forces(&v, "kalker_linear");
+    let [_, fy, fm] = forces(&v, "fastsim");
+    assert!(
+        (fy[0] / ky[0] - 1.0).abs() < 0.02,
+        "spin Fy {} vs {}",
+        fy[0],
+        ky[0]
+    );
+    assert!(fm[0] < 0.0, "Mz {} should oppose a positive spin", fm[0]);
+    // Large lateral creepage: full sliding, |F| = mu F_N = 100 N.
+    let v = run_json(&[
+        "traction",
+        combined_case("max = 0.5\npoints = 5\nlateral = 1.0", "\"fastsim\"")
+            .to_str()
+            .unwrap(),
+    ]);
+    let [fx, fy, _] = forces(&v, "fastsim");
+    for i in 0..5 {
+        let f = fx[i].hypot(fy[i]);
+        assert!((f - 100.0).abs() < 1e-9 * 100.0, "|F| = {f}");
+    }
+    // In full sliding FASTSIM clips the traction increment (xi/L1, eta/L2), whose
+    // flexibilities are L ~ 1/C: its force points along (C11 xi, C22 eta), not along the
+    // creepage (Kalker's simplified theory; docs/tangential.md). At xi = 0.01 and 0.5:
+    let c = &v["creep_coefficients"];
+    let ratio = c["c11"].as_f64().unwrap() / c["c22"].as_f64().unwrap();
+    assert!(ratio > 1.05, "{ratio}");
+    for (i, xi) in [(1, 0.125), (4, 0.5)] {
+        let r = fx[i] / fy[i] / (xi * ratio);
+        assert!(
+            (r - 1.0).abs() < 1e-3,
+            "point {i}: Fx/Fy {} against {}",
+            fx[i] / fy[i],
+            xi * ratio
+        );
+    }
+    // Carter takes no lateral creepage.
+    let l = bad(&[
+        "traction",
+        combined_case("max = 0.001\nlateral = 1e-4", "\"carter\"")
+            .to_str()
+            .unwrap(),
+    ]);
+    assert!(
+        l.contains("invalid creepage.lateral = 0.0001") && l.contains("fastsim"),
+        "{l}"
+    );
+}
+
+/// A line contact given by its half-width or by its load per length (issue 16, item 5):
+/// the strip of the Hertz half-width of two cylinders under the same line load is the same
+/// Carter contact (p0 and saturation creepage to 1e-12); `line_load_n_per_mm = 100` with a
+/// 10 mm length is `force_n = 1000`; contradictory or misplaced keys are one-line errors.
+#[test]
+fn line_contact_by_half_width_or_line_load() {
+    let dir = tempdir();
+    let base = std::fs::read_to_string(example()).unwrap().replace(
+        "models = [\"carter\", \"kalker_linear\", \"fastsim\"]",
+        "models = [\"carter\"]",
+    );
+    let geometry = "kind = \"hertz\"\nradii1_mm = [20.0, 50.0]    # [circumferential (rolling), crown]\nradii2_mm = [20.0, inf]     # cylindrical disc\nangle_deg = 0.0";
+    assert!(base.contains(geometry));
+    let write = |name: &str, geometry_text: &str, load: &str| {
+        let p = dir.join(name);
+        let text = base
+            .replace(geometry, geometry_text)
+            .replace("force_n = 1000.0", load);
+        std::fs::write(&p, text).unwrap();
+        p
+    };
+    let radii = write(
+        "line_radii.toml",
+        "kind = \"line\"\nradii_mm = [20.0, 20.0]\nlength_mm = 10.0",
+        "force_n = 1000.0",
+    );
+    let r = run_json(&["traction", radii.to_str().unwrap()]);
+    let a = r["semi_axes_mm"][0].as_f64().unwrap();
+    let strip = write(
+        "line_strip.toml",
+        &format!("kind = \"line\"\nhalf_width_mm = {a:?}\nlength_mm = 10.0"),
+        "line_load_n_per_mm = 100.0",
+    );
+    let s = run_json(&["traction", strip.to_str().unwrap()]);
+    assert_eq!(s["force_n"], 1000.0);
+    assert_eq!(s["line_load_n_per_mm"], 100.0);
+    for key in ["max_pressure_mpa", "carter_saturation_creepage"] {
+        let (x, y) = (r[key].as_f64().unwrap(), s[key].as_f64().unwrap());
+        assert!((x / y - 1.0).abs() < 1e-12, "{key}: {x} vs {y}");
+    }
+    let both = write(
+        "line_both.toml",
+        "kind = \"line\"\nradii_mm = [20.0, 20.0]\nhalf_width_mm = 0.1\nlength_mm = 10.0",
+        "force_n = 1000.0",
+    );
+    let l = bad(&["traction", both.to_str().unwrap()]);
+    assert!(
+        l.contains("invalid geometry = both radii_mm and half_width_mm"),
+        "{l}"
+    );
+    let point_line_load = write("point_q.toml", geometry, "line_load_n_per_mm = 100.0");
+    let l = bad(&["traction", point_line_load.to_str().unwrap()]);
+    assert!(l.contains("invalid load.line_load_n_per_mm = 100"), "{l}");
+    let no_load = write("no_load.toml", geometry, "");
+    let l = bad(&["traction", no_load.to_str().unwrap()]);
+    assert!(l.contains("invalid load = neither"), "{l}");
+}

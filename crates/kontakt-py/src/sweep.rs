@@ -129,17 +129,30 @@ impl Sweep {
         self.inner.missing_chunks(&out_dir).map_err(sweep_err)
     }
 
-    /// Run chunk `index` (its cases in parallel on the local cores, without the GIL) and
-    /// write `out_dir/chunks/chunk-NNNNNN.parquet` atomically. Safe to run twice and from
-    /// several processes. Returns `{"index", "cases", "not_ok", "path", "seconds"}`.
+    /// Run chunk `index` (its cases in parallel on `threads` threads, default all local
+    /// cores, without the GIL) and write `out_dir/chunks/chunk-NNNNNN.parquet` atomically.
+    /// Safe to run twice and from several processes. Returns `{"index", "cases", "not_ok",
+    /// "path", "seconds"}`.
+    #[pyo3(signature = (index, out_dir, threads = None))]
     fn run_chunk<'py>(
         &self,
         py: Python<'py>,
         index: u64,
         out_dir: PathBuf,
+        threads: Option<usize>,
     ) -> PyResult<Bound<'py, PyDict>> {
+        if let Some(t) = threads.filter(|&t| t == 0 || t > kontakt::MAX_THREADS) {
+            return Err(crate::errors::invalid(
+                "threads",
+                t,
+                &format!("1..={}", kontakt::MAX_THREADS),
+            ));
+        }
         let s = py
-            .detach(|| self.inner.run_chunk(index, &out_dir))
+            .detach(|| match threads {
+                None => self.inner.run_chunk(index, &out_dir),
+                Some(t) => self.inner.run_chunk_threads(index, &out_dir, t),
+            })
             .map_err(sweep_err)?;
         let d = PyDict::new(py);
         d.set_item("index", s.index)?;

@@ -18,6 +18,8 @@ EXAMPLES = {
     "bem_wavy_map": "solve_bem_wavy_map",
     "traction_twin_disc": "solve_traction_twin_disc",
     "rib_friction": "solve_rib_friction",
+    "mindlin_fretting": "solve_mindlin_fretting",
+    "impact_oblique": "solve_impact_oblique",
 }
 # keys that may differ from the recorded baseline (as crates/kontakt-cli/tests/reports.rs)
 NEW_KEYS = {"status"}

@@ -165,3 +165,21 @@ def test_fields_npy_holds_each_case_pressure(tmp_path: Path) -> None:
     with pytest.raises(kt.InputError) as e:
         kt.sweep(sweep_text(4096, count=2), tmp_path / "hertz", fields="zarr")
     assert e.value.field == "fields"
+
+
+def test_run_chunk_on_a_given_number_of_threads(tmp_path: Path) -> None:
+    """run_chunk(threads=1) (what a Dask worker with one thread calls) writes the same rows
+    as on all cores; threads = 0 or above the library's bound is an InputError."""
+    s = kt.Sweep.from_toml(sweep_text(300, count=200), ".")
+    one, all_ = tmp_path / "one", tmp_path / "all"
+    for out, threads in [(one, 1), (all_, None)]:
+        s.prepare(out)
+        for i in range(s.chunk_count):
+            s.run_chunk(i, out, threads)
+    a = read_rows(s.combine(one, "csv"))
+    b = read_rows(s.combine(all_, "csv"))
+    assert a == b and len(a) == 600
+    for bad in (0, 100_000):
+        with pytest.raises(kt.InputError) as e:
+            s.run_chunk(0, one, bad)
+        assert e.value.field == "threads"

@@ -58,6 +58,27 @@ fn write_npy(path: &Path, field: &crate::FieldView<'_>) -> SweepResult<()> {
     write().map_err(|e| SweepError::io(path, e))
 }
 
+/// A rayon pool of `threads` threads (0: the available cores, at most [`MAX_THREADS`]).
+fn thread_pool(threads: usize, out_dir: &Path) -> SweepResult<(usize, rayon::ThreadPool)> {
+    let threads = match threads {
+        0 => std::thread::available_parallelism()
+            .map(usize::from)
+            .unwrap_or(1)
+            .min(MAX_THREADS),
+        t if t <= MAX_THREADS => t,
+        t => {
+            return Err(input(format!(
+                "invalid threads = {t}: expected 1..={MAX_THREADS}"
+            )));
+        }
+    };
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .map_err(|e| table_err(out_dir, format!("thread pool: {e}")))?;
+    Ok((threads, pool))
+}
+
 /// A row for an error that cannot happen (a case evaluated without writing files).
 fn unreachable_row(error: String) -> Row {
     Row {
@@ -408,6 +429,23 @@ impl Sweep {
         self.run_chunk_prepared(index, out_dir, &|| {})
     }
 
+    /// As [`Sweep::run_chunk`], on a pool of its own of `threads` threads (0: the available
+    /// cores) instead of the current rayon pool: for a driver whose workers each own a
+    /// share of the cores (a Dask worker with `nthreads`), so that they do not
+    /// oversubscribe the machine.
+    ///
+    /// # Errors
+    /// As [`Sweep::run_chunk`], and `threads` above [`MAX_THREADS`].
+    pub fn run_chunk_threads(
+        &self,
+        index: u64,
+        out_dir: &Path,
+        threads: usize,
+    ) -> SweepResult<ChunkSummary> {
+        let (_, pool) = thread_pool(threads, out_dir)?;
+        pool.install(|| self.run_chunk(index, out_dir))
+    }
+
     fn run_chunk_prepared(
         &self,
         index: u64,
@@ -600,18 +638,7 @@ impl Sweep {
         out_dir: &Path,
         options: LocalOptions<'_>,
     ) -> SweepResult<LocalSummary> {
-        let threads = match options.threads {
-            0 => std::thread::available_parallelism()
-                .map(usize::from)
-                .unwrap_or(1)
-                .min(MAX_THREADS),
-            t if t <= MAX_THREADS => t,
-            t => {
-                return Err(input(format!(
-                    "invalid threads = {t}: expected 1..={MAX_THREADS}"
-                )));
-            }
-        };
+        let (threads, pool) = thread_pool(options.threads, out_dir)?;
         self.prepare(out_dir)?;
         // Temporary files and field folders left by a killed run.
         for dir in [out_dir.join(CHUNKS_DIR), out_dir.join(FIELDS_DIR)] {
@@ -646,10 +673,6 @@ impl Sweep {
             }
         };
         report(done.load(Ordering::Relaxed));
-        let pool = rayon::ThreadPoolBuilder::new()
-            .num_threads(threads)
-            .build()
-            .map_err(|e| table_err(out_dir, format!("thread pool: {e}")))?;
         let on_case = || report(done.fetch_add(1, Ordering::Relaxed) + 1);
         let start = Instant::now();
         for &i in &missing {

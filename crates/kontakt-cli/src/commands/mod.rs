@@ -10,7 +10,9 @@ use kontakt_case::case::{
 use kontakt_case::{Case, Outcome, run_case};
 
 pub mod friction;
+pub mod impact;
 pub mod mbs;
+pub mod mindlin;
 pub mod pimp;
 pub mod sweep;
 pub mod traction;
@@ -75,6 +77,18 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                     ))
                     .into());
                 }
+                "impact" if wants_field => {
+                    return Err(InputError(format!(
+                        "{label}: --csv and --map need a pressure field: use method = \"pimp\" or \"bem\""
+                    ))
+                    .into());
+                }
+                "mindlin" if wants_field => {
+                    return Err(InputError(format!(
+                        "{label}: mindlin cases write their loop with `kontakt mindlin {label} --csv FILE --plot FILE`"
+                    ))
+                    .into());
+                }
                 "traction" if wants_field => {
                     return Err(InputError(format!(
                         "{label}: traction cases write curves with `kontakt traction {label} --csv FILE --plot FILE`"
@@ -135,11 +149,15 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                 Outcome::Friction(outcome) => {
                     friction::print_report(out, &outcome.report, args.json)
                 }
+                Outcome::Mindlin(report) => mindlin::print_report(out, &report, args.json),
+                Outcome::Impact(report) => impact::print_report(out, &report, args.json),
             }
         }
         Command::Demo(args) => pimp::demo(&args.out, out, args.json),
         Command::Validate(args) => validate::validate(&args.out, args.cells, out, args.json),
         Command::Traction(args) => traction::run(args, out),
+        Command::Mindlin(args) => mindlin::run(args, out),
+        Command::Impact(args) => impact::run(args, out),
         Command::Friction(args) => friction::run(args, out),
         Command::Mbs(args) => mbs::run(args, out),
         Command::Sweep(args) => sweep::run(args, out),
@@ -166,6 +184,8 @@ pub fn read_case_for(
         let runner = match found.as_str() {
             "traction" => "kontakt traction (or kontakt solve)",
             "friction" => "kontakt friction (or kontakt solve)",
+            "mindlin" => "kontakt mindlin (or kontakt solve)",
+            "impact" => "kontakt impact (or kontakt solve)",
             _ => "kontakt solve",
         };
         return Err(InputError(format!(

@@ -106,6 +106,52 @@ pub fn print_report(out: &mut impl Write, r: &TractionReport, json: bool) -> Res
             "  (every {step}th of {n} points; --csv writes all; Kalker linear is unclipped)"
         )?;
     }
+    print_forces(out, r, step)
+}
+
+/// With lateral or spin creepage: the creep forces and the spin moment of each model that
+/// computes them, at the same points as the curve table.
+fn print_forces(out: &mut impl Write, r: &TractionReport, step: usize) -> Result<()> {
+    let with: Vec<_> = r
+        .curves
+        .iter()
+        .filter_map(|c| c.forces.as_ref().map(|f| (c.model, f)))
+        .collect();
+    if with.is_empty() {
+        return Ok(());
+    }
+    writeln!(
+        out,
+        "  creep forces on body 1 at lateral creepage {} and spin {} 1/mm (Fx, Fy in N, Mz in N mm)",
+        r.lateral_creepage.unwrap_or(0.0),
+        r.spin_creepage_per_mm.unwrap_or(0.0)
+    )?;
+    write!(out, "  {:>12}", "creepage")?;
+    for (model, f) in &with {
+        write!(out, " {:>14} {:>14}", format!("{model} Fx"), "Fy")?;
+        if f.spin_moment_nmm.is_some() {
+            write!(out, " {:>14}", "Mz")?;
+        }
+    }
+    writeln!(out)?;
+    let n = r.creepage.len();
+    let rows = (0..n)
+        .step_by(step)
+        .chain((!(n - 1).is_multiple_of(step)).then_some(n - 1));
+    for i in rows {
+        write!(out, "  {:>12.6}", r.creepage[i])?;
+        for (_, f) in &with {
+            write!(
+                out,
+                " {:>14.5} {:>14.5}",
+                f.longitudinal_force_n[i], f.lateral_force_n[i]
+            )?;
+            if let Some(m) = &f.spin_moment_nmm {
+                write!(out, " {:>14.5}", m[i])?;
+            }
+        }
+        writeln!(out)?;
+    }
     Ok(())
 }
 
@@ -118,6 +164,16 @@ pub fn write_csv(path: &Path, r: &TractionReport) -> Result<()> {
             .iter()
             .map(|c| format!("{}_ft_over_mu_fn", c.model)),
     );
+    // With lateral or spin creepage: the forces and moment of the models that give them.
+    for c in &r.curves {
+        if let Some(f) = &c.forces {
+            header.push(format!("{}_fx_n", c.model));
+            header.push(format!("{}_fy_n", c.model));
+            if f.spin_moment_nmm.is_some() {
+                header.push(format!("{}_mz_nmm", c.model));
+            }
+        }
+    }
     w.write_record(&header)?;
     for (i, xi) in r.creepage.iter().enumerate() {
         let mut row = vec![format!("{xi:.8e}")];
@@ -126,6 +182,13 @@ pub fn write_csv(path: &Path, r: &TractionReport) -> Result<()> {
                 .iter()
                 .map(|c| format!("{:.8e}", c.normalized_force[i])),
         );
+        for f in r.curves.iter().filter_map(|c| c.forces.as_ref()) {
+            row.push(format!("{:.8e}", f.longitudinal_force_n[i]));
+            row.push(format!("{:.8e}", f.lateral_force_n[i]));
+            if let Some(m) = &f.spin_moment_nmm {
+                row.push(format!("{:.8e}", m[i]));
+            }
+        }
         w.write_record(&row)?;
     }
     w.flush()?;

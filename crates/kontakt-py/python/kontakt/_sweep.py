@@ -31,8 +31,17 @@ def _load(source: _Source) -> Sweep:
 
 
 def _run_chunk(source: _Source, index: int, out: str) -> dict[str, Any]:
-    """One chunk on a worker: rebuild the sweep from its source and run the chunk."""
-    return _load(source).run_chunk(index, out)
+    """One chunk on a worker: rebuild the sweep from its source and run the chunk on as many
+    threads as the worker has (``nthreads``), so that the workers of one machine share its
+    cores instead of each starting a thread per core."""
+    threads: int | None = None
+    try:
+        from dask.distributed import get_worker
+
+        threads = max(1, int(get_worker().state.nthreads))
+    except (ImportError, ValueError, AttributeError):
+        threads = None
+    return _load(source).run_chunk(index, out, threads)
 
 
 def sweep(
