@@ -488,6 +488,14 @@ fn steady_rolling_bad_input() {
         field(solver.solve(&vec![0.0; p.len()], MU, c, &o)).as_deref(),
         Some("pressure")
     );
+    // An absurd but finite creepage: full slip at μP, finite everywhere.
+    let s = solver
+        .solve(&p, MU, Creepage::longitudinal(1e300), &o)
+        .unwrap();
+    assert!(s.status.converged(), "{:?}", s.status);
+    assert!(s.traction_x.iter().chain(&s.slip_x).all(|v| v.is_finite()));
+    assert!((-s.force[0] / (MU * s.normal_force) - 1.0).abs() < 1e-9);
+    solver.reset();
     // A contact that reaches the leading-edge column.
     let wide = vec![100.0; p.len()];
     assert_eq!(

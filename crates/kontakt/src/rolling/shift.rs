@@ -443,12 +443,7 @@ impl ShiftSolver {
         // Start: the stored tractions, projected onto the discs.
         let [tx, ty] = tau;
         for ((x, yv), b) in tx.iter_mut().zip(ty.iter_mut()).zip(bound.iter()) {
-            let m = x.hypot(*yv);
-            if m > *b {
-                let f = if m > 0.0 { b / m } else { 0.0 };
-                *x *= f;
-                *yv *= f;
-            }
+            (*x, *yv) = project(*x, *yv, *b);
         }
         for k in 0..2 {
             y[k].copy_from_slice(&tau[k]);
@@ -468,14 +463,7 @@ impl ShiftSolver {
             let mut restart = 0.0;
             for i in 0..bound.len() {
                 let (sx, sy) = (u[0][i] + rigid[0][i], u[1][i] + rigid[1][i]);
-                let (mut zx, mut zy) = (y[0][i] - step * sx, y[1][i] - step * sy);
-                let m = zx.hypot(zy);
-                let b = bound[i];
-                if m > b {
-                    let f = if m > 0.0 { b / m } else { 0.0 };
-                    zx *= f;
-                    zy *= f;
-                }
+                let (zx, zy) = project(y[0][i] - step * sx, y[1][i] - step * sy, bound[i]);
                 let (gx, gy) = ((y[0][i] - zx) / step, (y[1][i] - zy) / step);
                 gmax = gmax.max(gx.hypot(gy));
                 restart += sx * (zx - prev[0][i]) + sy * (zy - prev[1][i]);
@@ -581,4 +569,26 @@ impl ShiftSolver {
             status: SolveStatus::new(inner.termination, inner.iterations, residual),
         }
     }
+}
+
+/// The projection of `(x, y)` \[MPa\] onto the disc of radius `b >= 0`. A component
+/// that overflowed to infinity (an absurd but finite shift or creepage) keeps its
+/// direction: the result is always finite.
+pub(super) fn project(x: f64, y: f64, b: f64) -> (f64, f64) {
+    let m = x.hypot(y);
+    if m <= b {
+        return (x, y);
+    }
+    if !m.is_finite() {
+        let unit = |v: f64| if v.is_infinite() { v.signum() } else { 0.0 };
+        let (ux, uy) = (unit(x), unit(y));
+        let n = ux.hypot(uy);
+        return if n > 0.0 {
+            (b * ux / n, b * uy / n)
+        } else {
+            (0.0, 0.0)
+        };
+    }
+    let f = if m > 0.0 { b / m } else { 0.0 };
+    (x * f, y * f)
 }

@@ -47,7 +47,7 @@
 //! Kalker, *Three-dimensional elastic bodies in rolling contact* (1990), ch. 2 and 5;
 //! Johnson (1985) §8.
 
-use super::shift::{CellState, ShiftSolver};
+use super::shift::{CellState, ShiftSolver, project};
 use crate::error::{Error, Result};
 use crate::geometry::Grid2;
 use crate::solve::{SolveStatus, Termination};
@@ -244,14 +244,8 @@ impl SteadySolver {
         {
             let core = &mut self.core;
             for c in 0..n {
-                let (tx, ty) = (core.tau[0][c], core.tau[1][c]);
-                let m = tx.hypot(ty);
-                let b = core.bound[c];
-                if m > b {
-                    let f = if m > 0.0 { b / m } else { 0.0 };
-                    core.tau[0][c] = tx * f;
-                    core.tau[1][c] = ty * f;
-                }
+                (core.tau[0][c], core.tau[1][c]) =
+                    project(core.tau[0][c], core.tau[1][c], core.bound[c]);
             }
         }
         self.core.displacements(&mut self.last)?;
