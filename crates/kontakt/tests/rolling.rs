@@ -337,6 +337,20 @@ fn bad_input_is_an_error() {
         field(solver.solve(&p, MU, ShiftLoad::Force([f64::INFINITY, 0.0]), &o)).as_deref(),
         Some("force")
     );
+    let mut nan = p.clone();
+    nan[5] = f64::NAN;
+    assert_eq!(
+        field(solver.solve(&nan, MU, sh, &o)).as_deref(),
+        Some("pressure")
+    );
+    let no_iterations = ShiftOptions {
+        max_iterations: 0,
+        ..o
+    };
+    assert_eq!(
+        field(solver.solve(&p, MU, sh, &no_iterations)).as_deref(),
+        Some("max_iterations")
+    );
     let bad = ShiftOptions {
         tolerance: 0.0,
         ..o
