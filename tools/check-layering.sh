@@ -45,7 +45,7 @@ LAYERS=(
   "field"
   "hertz"
   "pimp halfspace"
-  "tangential traction lubrication rough impact gear"
+  "tangential traction lubrication rough impact gear rolling"
   "friction"
   "bearing element"
 )

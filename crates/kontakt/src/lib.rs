@@ -73,6 +73,7 @@
 //! | [`pimp`] | PimP: substitute geometry, Winkler bedding (published / corrected), force equilibrium, zone shape | done |
 //! | [`halfspace`] | coupled elastic half-space: Love coefficients, FFT operator (free / periodic), Polonsky-Keer solver with warm start, any gap or gap map, adaptive domain | done |
 //! | [`tangential`] | Cattaneo-Mindlin partial slip and Mindlin-Deresiewicz loading history, Carter's creep curve, Kalker's creep coefficients and linear theory, FASTSIM; traction curves | done |
+//! | [`rolling`] | exact (Kalker) tangential contact on the half-space grid: Cerruti's influence coefficients for uniform tractions on cells, the FFT tangential operator, the shift (Cattaneo) problem under a shift or a force, steady rolling with creepages and spin (Kalker's discretisation, marched to steady state); quasi-identical bodies | shift problem and steady rolling done, validated against Cattaneo, Kalker's C11/C22/C23 and Carter's strips on a long ellipse; not yet: Kalker's exact creep curves as tests, dissimilar-body coupling, speed (seconds at 32², issue 17's 10 ms target not met), the `kontakt traction` model (issue 17) |
 //! | [`rough`] | statistical rough surfaces: Greenwood-Williamson (Gaussian and exponential summit heights, load, real area and contact count against separation and its inverse, plasticity index) and Greenwood-Tripp's rough sphere (smoothed pressure, effective radius, approach against α and μ) | done; fractal surfaces and the deterministic solver not yet |
 //! | [`traction`] | asperity-based traction curves: periodic spherical asperities on a rough line or circular Hertz contact, Mindlin partial slip per asperity (the thesis "Study of the traction curves", §3.1.2.2) | done |
 //! | [`lubrication`] | lubricant (ASTM D341 viscosity-temperature, ISO VG grades), film parameter Λ, EHL film thickness (Hamrock-Dowson central and minimum film, entrainment at any angle via R_e/R_s, regime groups U, G, W, k, Moes M, L, g_V, g_E, validity warnings) | lubricant, Λ and Hamrock-Dowson film done; Chittenden (1985) and Nijenbanning-Venner-Moes (1994) not implemented (constants unverified, see docs/film.md) |
@@ -106,6 +107,7 @@ pub mod load;
 pub mod lubrication;
 pub mod material;
 pub mod pimp;
+pub mod rolling;
 pub mod rough;
 pub mod solve;
 pub mod tangential;

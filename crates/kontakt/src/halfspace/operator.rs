@@ -47,6 +47,15 @@ pub enum Boundary {
     Periodic,
 }
 
+/// How a free-boundary kernel given on one quadrant of offsets extends to the others.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Parity {
+    /// `k(-x, y) = k(x, -y) = k(x, y)` (Love's and Cerruti's direct coefficients).
+    Even,
+    /// `k(-x, y) = k(x, -y) = -k(x, y)` (Cerruti's cross coefficients).
+    OddOdd,
+}
+
 /// Columns (or rows) handled together in the transposing passes: two cache lines of
 /// `Complex<f64>`.
 const BLOCK: usize = 8;
@@ -242,6 +251,14 @@ impl HalfSpacePlan {
             Boundary::Free => (2 * nx, 2 * ny),
             Boundary::Periodic => (nx, ny),
         };
+        let threads = Self::threads_for(nx, ny, wanted)?;
+        let mut plan = Self::layout_on(grid, e_star, mx, my, boundary, wanted, threads);
+        plan.plan_kernel(grid.dx(), grid.dy(), e_star);
+        Ok(plan)
+    }
+
+    /// The threading of a plan of `nx × ny` cells for a resolved count `wanted >= 1`.
+    fn threads_for(nx: usize, ny: usize, wanted: usize) -> Result<Threads> {
         let threads = if wanted <= 1 || nx * ny < PARALLEL_MIN_CELLS {
             Threads::Serial
         } else {
@@ -256,9 +273,56 @@ impl HalfSpacePlan {
                 }
             }
         };
-        let mut plan = Self::layout_on(grid, e_star, mx, my, boundary, wanted, threads);
-        plan.plan_kernel(grid.dx(), grid.dy(), e_star);
-        Ok(plan)
+        Ok(threads)
+    }
+
+    /// A free-boundary plan whose kernel is given by the caller: `quadrant[j * (nx + 1)
+    /// + i]` is the displacement \[mm\] at the offset `(i dx, j dy)`, `i = 0..=nx`,
+    /// `j = 0..=ny`, per unit traction \[MPa\] on a cell, extended to negative offsets
+    /// by `parity`. `modulus` \[MPa\] is recorded as the plan's modulus (it does not
+    /// enter the kernel). Used by the tangential (Cerruti) operator of
+    /// [`crate::rolling`]; such a plan has no preconditioner of its own.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] for `threads` outside 1..=[`crate::MAX_THREADS`] or a
+    /// quadrant of the wrong length.
+    pub(crate) fn from_quadrant(
+        grid: &Grid2,
+        modulus: f64,
+        quadrant: &[f64],
+        parity: Parity,
+        threads: Option<usize>,
+    ) -> Result<Arc<Self>> {
+        let wanted = resolve_threads(threads)?;
+        let (nx, ny) = (grid.nx(), grid.ny());
+        if quadrant.len() != (nx + 1) * (ny + 1) {
+            return Err(Error::invalid(
+                "quadrant",
+                format!("{} values", quadrant.len()),
+                format!("{} values ((nx + 1) (ny + 1))", (nx + 1) * (ny + 1)),
+            ));
+        }
+        let threads = Self::threads_for(nx, ny, wanted)?;
+        let mut plan = Self::layout_on(
+            grid,
+            modulus,
+            2 * nx,
+            2 * ny,
+            Boundary::Free,
+            wanted,
+            threads,
+        );
+        plan.fill_free_kernel(quadrant, parity);
+        Ok(Arc::new(plan))
+    }
+
+    /// The eigenvalues \[mm/MPa\] of the circulant operator the plan applies on its
+    /// padded grid (the kernel spectrum, one per wave vector of the half spectrum). The
+    /// operator on the `nx × ny` cells is a principal block of that circulant, so their
+    /// range bounds its eigenvalues.
+    pub(crate) fn spectrum(&self) -> impl Iterator<Item = f64> + '_ {
+        let scale = (self.mx * self.my) as f64;
+        self.kernel.iter().map(move |k| k * scale)
     }
 
     /// The FFT plans, task split and an empty kernel for a `mx × my` transform of the
@@ -407,38 +471,8 @@ impl HalfSpacePlan {
         let norm = 1.0 / (mx * my) as f64;
         match self.boundary {
             Boundary::Free => {
-                // Real-space kernel on the padded circle, transformed once.
-                let (nx, ny) = (self.nx, self.ny);
-                let quadrant = quadrant_table(nx, ny, dx, dy, e_star);
-                let mut spec = vec![Complex::default(); my * kx];
-                let mut row = vec![0.0; mx];
-                let mut scratch = vec![Complex::default(); self.r2c.get_scratch_len()];
-                for j in 0..my {
-                    let jj = signed(j, my).abs() as usize;
-                    let q = &quadrant[jj * (nx + 1)..(jj + 1) * (nx + 1)];
-                    for (i, r) in row.iter_mut().enumerate() {
-                        *r = q[signed(i, mx).abs() as usize];
-                    }
-                    self.r2c
-                        .process_with_scratch(
-                            &mut row,
-                            &mut spec[j * kx..(j + 1) * kx],
-                            &mut scratch,
-                        )
-                        .expect("invariant: lengths match the plan");
-                }
-                let mut col = vec![Complex::default(); my];
-                let mut cs = vec![Complex::default(); self.col_fwd.get_inplace_scratch_len()];
-                for (k, kernel) in self.kernel.chunks_mut(my).enumerate() {
-                    for (j, c) in col.iter_mut().enumerate() {
-                        *c = spec[j * kx + k];
-                    }
-                    self.col_fwd.process_with_scratch(&mut col, &mut cs);
-                    for (kv, c) in kernel.iter_mut().zip(&col) {
-                        // The kernel is even in x and y: its spectrum is real.
-                        *kv = c.re * norm;
-                    }
-                }
+                let quadrant = quadrant_table(self.nx, self.ny, dx, dy, e_star);
+                self.fill_free_kernel(&quadrant, Parity::Even);
             }
             Boundary::Periodic => {
                 let (lx, ly) = (self.nx as f64 * dx, self.ny as f64 * dy);
@@ -455,6 +489,59 @@ impl HalfSpacePlan {
                         };
                     }
                 }
+            }
+        }
+    }
+
+    /// Fill the kernel spectrum of a free-boundary plan from the coefficients of one
+    /// quadrant of offsets, `quadrant[j * (nx + 1) + i]` for the offsets `i = 0..=nx`,
+    /// `j = 0..=ny` cells, extended to negative offsets by `parity`.
+    fn fill_free_kernel(&mut self, quadrant: &[f64], parity: Parity) {
+        let (mx, my, kx) = (self.mx, self.my, self.kx);
+        let norm = 1.0 / (mx * my) as f64;
+        // Real-space kernel on the padded circle, transformed once.
+        let (nx, ny) = (self.nx, self.ny);
+        let mut spec = vec![Complex::default(); my * kx];
+        let mut row = vec![0.0; mx];
+        let mut scratch = vec![Complex::default(); self.r2c.get_scratch_len()];
+        for j in 0..my {
+            let jj = signed(j, my).abs() as usize;
+            let q = &quadrant[jj * (nx + 1)..(jj + 1) * (nx + 1)];
+            match parity {
+                Parity::Even => {
+                    for (i, r) in row.iter_mut().enumerate() {
+                        *r = q[signed(i, mx).abs() as usize];
+                    }
+                }
+                Parity::OddOdd => {
+                    // The offsets ±nx, ±ny (unused by the first nx × ny
+                    // outputs) are zero, so that the kernel is exactly odd.
+                    let sy = signed(j, my);
+                    for (i, r) in row.iter_mut().enumerate() {
+                        let sx = signed(i, mx);
+                        *r = if jj == ny || sx.abs() as usize == nx || sx == 0.0 || sy == 0.0 {
+                            0.0
+                        } else {
+                            (sx.signum() * sy.signum()) * q[sx.abs() as usize]
+                        };
+                    }
+                }
+            }
+            self.r2c
+                .process_with_scratch(&mut row, &mut spec[j * kx..(j + 1) * kx], &mut scratch)
+                .expect("invariant: lengths match the plan");
+        }
+        let mut col = vec![Complex::default(); my];
+        let mut cs = vec![Complex::default(); self.col_fwd.get_inplace_scratch_len()];
+        for (k, kernel) in self.kernel.chunks_mut(my).enumerate() {
+            for (j, c) in col.iter_mut().enumerate() {
+                *c = spec[j * kx + k];
+            }
+            self.col_fwd.process_with_scratch(&mut col, &mut cs);
+            for (kv, c) in kernel.iter_mut().zip(&col) {
+                // The kernel is even in x and y, or odd in both: either way
+                // its spectrum is real.
+                *kv = c.re * norm;
             }
         }
     }
