@@ -11,8 +11,7 @@ use serde::Serialize;
 use std::path::Path;
 
 /// The valid `method` values, as an error message names them.
-const METHODS: &str =
-    "\"hertz\", \"pimp\", \"bem\", \"traction\", \"friction\", \"mindlin\" or \"impact\"";
+const METHODS: &str = "\"hertz\", \"pimp\", \"bem\", \"traction\", \"friction\", \"mindlin\", \"impact\" or \"rough\"";
 
 /// A case of any method: the `method` key decides the schema.
 #[derive(Debug, Clone, PartialEq)]
@@ -34,6 +33,9 @@ pub enum Case {
     /// `method = "impact"`: a sphere striking a flat, normal or oblique with friction
     /// ([`crate::impact_case`]).
     Impact(Box<crate::impact_case::ImpactCase>),
+    /// `method = "rough"`: a periodic rough surface on the half-space solver
+    /// ([`crate::rough_case`]).
+    Rough(Box<crate::rough_case::RoughCase>),
 }
 
 impl Case {
@@ -55,6 +57,7 @@ impl Case {
             "friction" => Ok(Case::Friction(Box::new(parse_toml(text)?))),
             "mindlin" => Ok(Case::Mindlin(Box::new(parse_toml(text)?))),
             "impact" => Ok(Case::Impact(Box::new(parse_toml(text)?))),
+            "rough" => Ok(Case::Rough(Box::new(parse_toml(text)?))),
             other => Err(Error::invalid("method", other, METHODS)),
         }
     }
@@ -85,6 +88,7 @@ impl Case {
             "friction" => Ok(Case::Friction(Box::new(read(table)?))),
             "mindlin" => Ok(Case::Mindlin(Box::new(read(table)?))),
             "impact" => Ok(Case::Impact(Box::new(read(table)?))),
+            "rough" => Ok(Case::Rough(Box::new(read(table)?))),
             other => Err(Error::invalid("method", other, METHODS)),
         }
     }
@@ -99,6 +103,7 @@ impl Case {
             Case::Friction(_) => "friction",
             Case::Mindlin(_) => "mindlin",
             Case::Impact(_) => "impact",
+            Case::Rough(_) => "rough",
         }
     }
 
@@ -146,6 +151,9 @@ impl Case {
             Case::Impact(case) => {
                 Outcome::Impact(Box::new(crate::impact_case::run_impact_case(case)?))
             }
+            Case::Rough(case) => {
+                Outcome::Rough(Box::new(crate::rough_case::run_rough_case(case, base_dir)?))
+            }
         })
     }
 }
@@ -189,6 +197,8 @@ pub enum Outcome {
     Mindlin(Box<crate::mindlin_case::MindlinReport>),
     /// Impact report.
     Impact(Box<crate::impact_case::ImpactReport>),
+    /// Rough-contact report and the pressure at its highest load.
+    Rough(Box<crate::rough_case::RoughOutcome>),
 }
 
 /// One field of an [`Outcome`] on its grid: values per cell, row-major with `x` fastest
@@ -211,7 +221,8 @@ impl Outcome {
     /// The fields of a field method, on the grid its report echoes (`grid.*`), for writers
     /// that store them (the sweeps' `fields = "npy"`): PimP the pressure \[MPa\]; the
     /// half-space solver the pressure, the elastic displacement and the undeformed gap
-    /// \[mm\] (`+inf` where the bodies cannot meet). Hertz and traction cases have none
+    /// \[mm\] (`+inf` where the bodies cannot meet); a rough case the pressure at its
+    /// highest load (grid: its `points` and `spacing_mm`). Hertz and traction cases have none
     /// (their pressure is a closed form), nor rib friction, whose report does not carry the
     /// grid of its map (the CLI's `--map` writes that map).
     pub fn fields(&self) -> Vec<FieldView<'_>> {
@@ -234,6 +245,7 @@ impl Outcome {
             | Outcome::Friction(_)
             | Outcome::Mindlin(_)
             | Outcome::Impact(_) => Vec::new(),
+            Outcome::Rough(o) => vec![view("pressure", "MPa", &o.grid, &o.pressure)],
             Outcome::Pimp(o) => vec![view(
                 "pressure",
                 "MPa",
@@ -262,6 +274,7 @@ impl Serialize for Outcome {
             Outcome::Friction(o) => o.report.serialize(s),
             Outcome::Mindlin(r) => r.serialize(s),
             Outcome::Impact(r) => r.serialize(s),
+            Outcome::Rough(o) => o.report.serialize(s),
         }
     }
 }

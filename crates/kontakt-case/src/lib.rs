@@ -8,7 +8,7 @@
 //! ```
 //!
 //! - [`Case`]: every schema (`method = "hertz" | "pimp" | "bem" | "traction" | "friction" |
-//!   "mindlin" | "impact"`), parsed
+//!   "mindlin" | "impact" | "rough"`), parsed
 //!   from TOML with unknown keys refused; [`Case::run`] is the one dispatch that every
 //!   front end calls.
 //! - [`Outcome`]: the report (stable, unit-suffixed JSON keys, `schema_version`) plus,
@@ -32,6 +32,7 @@ pub mod impact_case;
 pub mod maps;
 pub mod mindlin_case;
 pub mod pimp_case;
+pub mod rough_case;
 pub mod sweep;
 pub mod traction_case;
 
@@ -44,5 +45,6 @@ pub use hertz_case::{ContactReport, run_case};
 pub use impact_case::{ImpactCase, ImpactReport, run_impact_case};
 pub use mindlin_case::{MindlinCase, MindlinReport, run_mindlin_case};
 pub use pimp_case::{PimpCase, PimpOutcome, PimpReport, run_pimp_case};
+pub use rough_case::{RoughCase, RoughOutcome, RoughReport, run_rough_case};
 pub use sweep::{Sweep, SweepError};
 pub use traction_case::{TractionCase, TractionReport, run_traction_case};

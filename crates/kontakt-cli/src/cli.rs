@@ -17,6 +17,7 @@ use std::path::PathBuf;
       kontakt traction examples/traction_ball_all_models.toml --plot traction.png\n  \
       kontakt mindlin examples/mindlin_fretting.toml --plot loop.png\n  \
       kontakt impact examples/impact_oblique.toml\n  \
+      kontakt rough examples/rough_self_affine.toml --plot area.png\n  \
       kontakt friction examples/rib_friction.toml --plot torque.png\n  \
       kontakt mbs --out kontakt-mbs\n  \
       kontakt sweep examples/sweeps/hertz_load.toml --out kontakt-sweep\n\n\
@@ -56,6 +57,11 @@ pub enum Command {
     /// rebound (rigid-body theory and the elastic analysis of Maw, Barber and Fawcett 1976)
     /// (TOML case, method = "impact"; docs/case-schema.md, docs/impact.md).
     Impact(ImpactArgs),
+    /// A periodic rough surface (generated self-affine, or a measured height map) against a
+    /// flat on the periodic half-space solver: real contact area, kappa, Persson's area,
+    /// patches and mean gap per nominal pressure (TOML case, method = "rough";
+    /// docs/case-schema.md, docs/rough.md).
+    Rough(RoughArgs),
     /// Friction torque and power of the roller-end/rib contact of a tapered roller bearing
     /// over a speed sweep: Hertz, PimP and/or half-space pressure, lubricant film, mixed
     /// friction (TOML case, method = "friction"; docs/case-schema.md).
@@ -234,6 +240,25 @@ pub struct ImpactArgs {
     #[arg(value_name = "CASE.toml")]
     pub case: PathBuf,
     /// Print one JSON document instead of the text.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Debug, Args)]
+pub struct RoughArgs {
+    /// Case file (TOML, method = "rough"), or `-` for standard input.
+    #[arg(value_name = "CASE.toml")]
+    pub case: PathBuf,
+    /// Write one row per load to this CSV file.
+    #[arg(long, value_name = "FILE.csv")]
+    pub csv: Option<PathBuf>,
+    /// Draw the real contact area against the load, with Persson's theory (.png or .svg).
+    #[arg(long, value_name = "FILE.png|svg")]
+    pub plot: Option<PathBuf>,
+    /// Draw the pressure at the highest load (.png or .svg).
+    #[arg(long, value_name = "FILE.png|svg")]
+    pub map: Option<PathBuf>,
+    /// Print one JSON document instead of the table.
     #[arg(long)]
     pub json: bool,
 }

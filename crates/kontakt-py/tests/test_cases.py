@@ -20,6 +20,7 @@ EXAMPLES = {
     "rib_friction": "solve_rib_friction",
     "mindlin_fretting": "solve_mindlin_fretting",
     "impact_oblique": "solve_impact_oblique",
+    "rough_self_affine": "solve_rough_self_affine",
 }
 # keys that may differ from the recorded baseline (as crates/kontakt-cli/tests/reports.rs)
 NEW_KEYS = {"status"}

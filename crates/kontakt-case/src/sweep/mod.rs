@@ -618,9 +618,9 @@ impl Sweep {
             let method = Case::from_toml_table(self.base.clone())
                 .map(|c| c.method())
                 .unwrap_or("?");
-            if !matches!(method, "pimp" | "bem") {
+            if !matches!(method, "pimp" | "bem" | "rough") {
                 return Err(input(format!(
-                    "invalid fields = \"{}\": a {method} case has no field in its rows' grid (the pressure of hertz and traction cases is a closed form); expected \"none\", or a pimp or bem base case",
+                    "invalid fields = \"{}\": a {method} case has no field in its rows' grid (the pressure of hertz and traction cases is a closed form); expected \"none\", or a pimp, bem or rough base case",
                     fields.as_str()
                 )));
             }

@@ -14,6 +14,7 @@ pub mod impact;
 pub mod mbs;
 pub mod mindlin;
 pub mod pimp;
+pub mod rough;
 pub mod sweep;
 pub mod traction;
 pub mod validate;
@@ -80,6 +81,12 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                 "impact" if wants_field => {
                     return Err(InputError(format!(
                         "{label}: --csv and --map need a pressure field: use method = \"pimp\" or \"bem\""
+                    ))
+                    .into());
+                }
+                "rough" if wants_field => {
+                    return Err(InputError(format!(
+                        "{label}: rough cases write their table and maps with `kontakt rough {label} --csv FILE --map FILE`"
                     ))
                     .into());
                 }
@@ -151,6 +158,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                 }
                 Outcome::Mindlin(report) => mindlin::print_report(out, &report, args.json),
                 Outcome::Impact(report) => impact::print_report(out, &report, args.json),
+                Outcome::Rough(outcome) => rough::print_report(out, &outcome.report, args.json),
             }
         }
         Command::Demo(args) => pimp::demo(&args.out, out, args.json),
@@ -158,6 +166,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
         Command::Traction(args) => traction::run(args, out),
         Command::Mindlin(args) => mindlin::run(args, out),
         Command::Impact(args) => impact::run(args, out),
+        Command::Rough(args) => rough::run(args, out),
         Command::Friction(args) => friction::run(args, out),
         Command::Mbs(args) => mbs::run(args, out),
         Command::Sweep(args) => sweep::run(args, out),
@@ -186,6 +195,7 @@ pub fn read_case_for(
             "friction" => "kontakt friction (or kontakt solve)",
             "mindlin" => "kontakt mindlin (or kontakt solve)",
             "impact" => "kontakt impact (or kontakt solve)",
+            "rough" => "kontakt rough (or kontakt solve)",
             _ => "kontakt solve",
         };
         return Err(InputError(format!(
