@@ -87,7 +87,10 @@ fn wavy_surface_against_westergaard() {
         // The crest pressure p(0) = 2 p/sin(pi a/lambda) = 2 sqrt(p p*), within 0.5 %.
         let crest = 2.0 * (f * p_star * p_star).sqrt();
         let pmax = num(&row["max_pressure_mpa"]);
-        assert!((pmax / crest - 1.0).abs() < 5e-3, "p/p* = {f}: p_max {pmax} vs {crest}");
+        assert!(
+            (pmax / crest - 1.0).abs() < 5e-3,
+            "p/p* = {f}: p_max {pmax} vs {crest}"
+        );
     }
 }
 
