@@ -314,8 +314,11 @@ pub fn run_rough_case(case: &RoughCase, base_dir: &Path) -> Result<RoughOutcome>
         &map,
         e_star,
         rms_slope,
-        case.solver.tolerance,
-        case.solver.max_iterations,
+        kontakt::halfspace::SolverOptions {
+            tolerance: case.solver.tolerance,
+            max_iterations: case.solver.max_iterations,
+            ..Default::default()
+        },
     )
     .map_err(|e| e.map_field(|f| format!("solver.{f}")))?;
     let mut rows = Vec::with_capacity(loads.len());

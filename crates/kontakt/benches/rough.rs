@@ -6,7 +6,7 @@
 use criterion::{Criterion, criterion_group, criterion_main};
 use kontakt::rough::{
     Amplitude, GreenwoodTripp, GreenwoodTrippOptions, GreenwoodTrippParams, GreenwoodWilliamson,
-    SelfAffineSpec, SummitHeights,
+    RoughContact, SelfAffineSpec, SummitHeights,
 };
 use std::hint::black_box;
 
@@ -58,6 +58,38 @@ fn bench_rough(c: &mut Criterion) {
     g.sample_size(10);
     g.bench_function("self_affine_surface_1024", |b| {
         b.iter(|| black_box(&surface).generate().expect("valid"))
+    });
+    // Issue 16's target for deterministic rough contact: a 512² periodic rough contact at
+    // most as long as the same grid's Hertz solve per iteration times the iterations it
+    // needs (docs/PERFORMANCE.md, cold Hertz solves at 512², 1 thread).
+    let spec = SelfAffineSpec {
+        points: [512, 512],
+        short_cutoff: 8.0 / 512.0,
+        rolloff: 1.0,
+        ..surface
+    };
+    let map = spec.generate().expect("valid").height_map().expect("valid");
+    let options = kontakt::halfspace::SolverOptions {
+        tolerance: 1e-6,
+        max_iterations: 3000,
+        threads: Some(1),
+        ..Default::default()
+    };
+    let point = RoughContact::new(&map, 1000.0, 0.1, options)
+        .expect("valid")
+        .solve(1.0)
+        .expect("solves");
+    eprintln!(
+        "rough_contact_512: A/A0 = {:.4}, {} iterations",
+        point.area_fraction, point.status.iterations
+    );
+    g.bench_function("rough_contact_512_cold_1_thread", |b| {
+        b.iter(|| {
+            RoughContact::new(black_box(&map), 1000.0, 0.1, options)
+                .expect("valid")
+                .solve(1.0)
+                .expect("solves")
+        })
     });
     g.finish();
 }

@@ -68,7 +68,8 @@ impl RoughContact {
     /// values are used as the gap `max(z) - z`) against a flat, with the contact modulus
     /// `e_star` \[MPa\], the rms slope `rms_slope` \[-\] used to normalise the load (the
     /// surface's own, e.g. [`super::SelfAffineSurface::rms_slope`]), and the solver's
-    /// `tolerance` and `max_iterations` (periodic boundary).
+    /// `options` (tolerance, iterations, threads, preconditioner; the boundary is always
+    /// periodic).
     ///
     /// # Errors
     /// [`Error::InvalidInput`] naming `e_star`, `rms_slope` or a solver option.
@@ -76,8 +77,7 @@ impl RoughContact {
         heights: &GapMap,
         e_star: f64,
         rms_slope: f64,
-        tolerance: f64,
-        max_iterations: usize,
+        options: SolverOptions,
     ) -> Result<Self> {
         positive_as("e_star", e_star, "a finite contact modulus > 0 MPa")?;
         positive_as("rms_slope", rms_slope, "a finite rms slope > 0")?;
@@ -87,9 +87,7 @@ impl RoughContact {
             e_star,
             SolverOptions {
                 boundary: Boundary::Periodic,
-                tolerance,
-                max_iterations,
-                ..SolverOptions::default()
+                ..options
             },
         )?;
         Ok(RoughContact {
