@@ -34,6 +34,7 @@ pub mod mindlin_case;
 pub mod pimp_case;
 pub mod rough_case;
 pub mod sweep;
+pub mod topography;
 pub mod traction_case;
 
 pub use bem_case::{BemOutcome, run_bem_case, run_bem_case_on_map};

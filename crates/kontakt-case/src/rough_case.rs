@@ -93,12 +93,16 @@ pub enum SurfaceSpec {
         /// Seed of the random phases.
         seed: u64,
     },
-    /// A measured height map (CSV or `.npy`, docs/case-schema.md), periodic.
+    /// A measured height map, periodic: a CSV matrix or `.npy` array (with `spacing_mm`),
+    /// or a file that carries its grid, `.xyz` or ISO 25178-71 ASCII `.sdf`
+    /// ([`crate::topography`]).
     Map {
         /// The file, relative to the case file's folder.
         file: String,
-        /// Cell size `[dx, dy]` \[mm\].
-        spacing_mm: [f64; 2],
+        /// Cell size `[dx, dy]` \[mm\]: needed for CSV and `.npy`, refused for `.xyz` and
+        /// `.sdf` (their files give it).
+        #[serde(default)]
+        spacing_mm: Option<[f64; 2]>,
     },
 }
 
@@ -291,15 +295,35 @@ pub fn run_rough_case(case: &RoughCase, base_dir: &Path) -> Result<RoughOutcome>
             ("self_affine", s.height_map()?, s.rms_height, s.rms_slope)
         }
         SurfaceSpec::Map { file, spacing_mm } => {
-            let map = crate::maps::read_gap_map(&base_dir.join(file), *spacing_mm, MapKind::Height)
-                .map_err(|e| {
-                    e.map_field(|f| match f {
-                        "spacing[0]" => "surface.spacing_mm[0]".into(),
-                        "spacing[1]" => "surface.spacing_mm[1]".into(),
-                        _ => "surface.file".into(),
-                    })
-                })?;
-            let (h, s) = map_roughness(&map, *spacing_mm);
+            let path = base_dir.join(file);
+            let map = match (crate::topography::carries_grid(&path), spacing_mm) {
+                (true, None) => crate::topography::read_topography(&path)?,
+                (true, Some(s)) => {
+                    return Err(Error::invalid(
+                        "surface.spacing_mm",
+                        format!("{s:?}"),
+                        "no spacing_mm for an .xyz or .sdf file (the file gives its grid)",
+                    ));
+                }
+                (false, None) => {
+                    return Err(Error::invalid(
+                        "surface.spacing_mm",
+                        "missing",
+                        "the cell size [dx, dy] in mm of a CSV or .npy map",
+                    ));
+                }
+                (false, Some(spacing)) => {
+                    crate::maps::read_gap_map(&path, *spacing, MapKind::Height).map_err(|e| {
+                        e.map_field(|f| match f {
+                            "spacing[0]" => "surface.spacing_mm[0]".into(),
+                            "spacing[1]" => "surface.spacing_mm[1]".into(),
+                            _ => "surface.file".into(),
+                        })
+                    })?
+                }
+            };
+            let spacing = [map.grid().dx(), map.grid().dy()];
+            let (h, s) = map_roughness(&map, spacing);
             if !(s > 0.0) {
                 return Err(Error::invalid(
                     "surface.file",

@@ -42,7 +42,8 @@ fn num(v: &Value) -> f64 {
 /// 8 rows: the periodic 2-D solver then solves the plane problem) against Westergaard's
 /// solution (Johnson 1985 §13.2): p = p* sin²(pi a/lambda) with p* = pi E* D/lambda, so
 /// the contact fraction 2a/lambda = (2/pi) arcsin(sqrt(p/p*)), within two cells (1/64),
-/// and the crest pressure 2 sqrt(p p*) within 0.5 %.
+/// and the crest pressure 2 sqrt(p p*) within 0.5 %; the same surface read from an SDF
+/// and an .xyz file gives the same rows.
 #[test]
 fn wavy_surface_against_westergaard() {
     let dir = tempdir("wavy");
@@ -91,6 +92,60 @@ fn wavy_surface_against_westergaard() {
             (pmax / crest - 1.0).abs() < 5e-3,
             "p/p* = {f}: p_max {pmax} vs {crest}"
         );
+    }
+
+    // The same surface as an ISO 25178-71 ASCII SDF (metres, heights in nm) and as an .xyz
+    // point list (mm, shuffled rows): the same rows (areas exact, pressures 1e-9).
+    let z: Vec<f64> = (0..n)
+        .map(|i| {
+            let x = (i as f64 + 0.5) * lambda / n as f64 - 0.5 * lambda;
+            d * (2.0 * std::f64::consts::PI * x / lambda).cos()
+        })
+        .collect();
+    let dx = lambda / n as f64;
+    let mut sdf = format!(
+        "aBCR-1.0\nManufacID = kontakt test\nNumPoints = {n}\nNumProfiles = 8\nXscale = {:e}\nYscale = {:e}\nZscale = 1.0E-9\nZresolution = -1\nCompression = 0\nDataType = 7\nCheckType = 0\n*\n",
+        dx * 1e-3,
+        dx * 1e-3
+    );
+    let mut xyz = String::from("# x y z [mm]\n");
+    for j in (0..8).rev() {
+        for (i, zi) in z.iter().enumerate() {
+            xyz.push_str(&format!(
+                "{:e} {:e} {:e}\n",
+                i as f64 * dx,
+                j as f64 * dx,
+                zi
+            ));
+        }
+    }
+    for _ in 0..8 {
+        let row: Vec<String> = z.iter().map(|v| format!("{:e}", v * 1e6)).collect();
+        sdf.push_str(&row.join(" "));
+        sdf.push('\n');
+    }
+    sdf.push_str("*\n");
+    std::fs::write(dir.join("wavy.sdf"), sdf).unwrap();
+    std::fs::write(dir.join("wavy.xyz"), xyz).unwrap();
+    let csv_case = std::fs::read_to_string(dir.join("wavy.toml")).unwrap();
+    let spacing_line = format!("spacing_mm = [{dx:?}, {dx:?}]\n");
+    assert!(csv_case.contains(&spacing_line));
+    for file in ["wavy.sdf", "wavy.xyz"] {
+        let text = csv_case
+            .replace("wavy.csv", file)
+            .replace(&spacing_line, "");
+        std::fs::write(dir.join("other.toml"), text).unwrap();
+        let w = run_json(&["rough", dir.join("other.toml").to_str().unwrap()]);
+        for (a, b) in w["rows"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .zip(v["rows"].as_array().unwrap())
+        {
+            assert_eq!(a["area_fraction"], b["area_fraction"], "{file}");
+            let (pa, pb) = (num(&a["max_pressure_mpa"]), num(&b["max_pressure_mpa"]));
+            assert!((pa / pb - 1.0).abs() < 1e-9, "{file}: {pa} vs {pb}");
+        }
     }
 }
 
