@@ -35,6 +35,7 @@
 
 use crate::pimp_case::{
     GapSetup, GeometrySpec, PimpCase, PimpReport, ReportMeta, gap_setup, hertz_echo, material,
+    zone_warnings,
 };
 use kontakt::gap::GapMap;
 use kontakt::halfspace::{Bem, BemOptions, BemSolution, Control};
@@ -132,7 +133,9 @@ fn run(case: &PimpCase, base_dir: &Path, given: Option<GapMap>) -> Result<BemOut
             "exactly one of force_n or approach_mm (or neither for surfaces placed in contact)",
         )
     };
-    let (label, solution, separation, rib_angle, curvature, boundary) = match &case.geometry {
+    let (label, solution, separation, rib_angle, curvature, boundary, warnings) = match &case
+        .geometry
+    {
         GeometrySpec::Map {
             file,
             spacing_mm,
@@ -158,7 +161,16 @@ fn run(case: &PimpCase, base_dir: &Path, given: Option<GapMap>) -> Result<BemOut
                 _ => return Err(load_error()),
             };
             let s = bem.solve_map(&map, control, *boundary).map_err(map_load)?;
-            (format!("gap map {file}"), s, None, None, None, *boundary)
+            // A map's bodies are unknown: no size check.
+            (
+                format!("gap map {file}"),
+                s,
+                None,
+                None,
+                None,
+                *boundary,
+                Vec::new(),
+            )
         }
         g => {
             let GapSetup {
@@ -183,6 +195,7 @@ fn run(case: &PimpCase, base_dir: &Path, given: Option<GapMap>) -> Result<BemOut
                 _ => return Err(load_error()),
             }
             .map_err(map_load)?;
+            let warnings = zone_warnings(g, source.as_ref(), &s)?;
             let k = source.curvature();
             (
                 label,
@@ -191,6 +204,7 @@ fn run(case: &PimpCase, base_dir: &Path, given: Option<GapMap>) -> Result<BemOut
                 rib_angle,
                 Some(k),
                 kontakt::halfspace::Boundary::Free,
+                warnings,
             )
         }
     };
@@ -214,6 +228,7 @@ fn run(case: &PimpCase, base_dir: &Path, given: Option<GapMap>) -> Result<BemOut
             rib_angle_deg: rib_angle,
             hertz: curvature.and_then(|k| hertz_echo(k, m1, m2, solution.force)),
             grid_rounds: solution.domains,
+            warnings,
         },
         &solution,
     );

@@ -407,6 +407,11 @@ pub struct PimpReport {
     pub rib_angle_deg: Option<f64>,
     /// The Hertz solution for the curvature at the contact point, same load.
     pub hertz: Option<HertzEcho>,
+    /// Where the result is outside the method's comfortable range: a zone large against a
+    /// body's radius of curvature or close to the edge of a face
+    /// (`kontakt::field::validity`). Empty when none applies (always for a gap map, whose
+    /// bodies are unknown).
+    pub warnings: Vec<String>,
 }
 
 /// The grid of a PimP result.
@@ -567,6 +572,7 @@ pub fn run_pimp_case(case: &PimpCase) -> Result<PimpOutcome> {
             ));
         }
     };
+    let warnings = zone_warnings(&case.geometry, source.as_ref(), &solution)?;
     let k = source.curvature();
     let hertz = hertz_echo(k, m1, m2, solution.force);
     let report = PimpReport::assemble(
@@ -582,10 +588,40 @@ pub fn run_pimp_case(case: &PimpCase) -> Result<PimpOutcome> {
             rib_angle_deg: rib_angle,
             hertz,
             grid_rounds: solution.domains - 1,
+            warnings,
         },
         &solution,
     );
     Ok(PimpOutcome { report, solution })
+}
+
+/// The size check of a solution against the bodies of its geometry
+/// (`kontakt::field::validity`): the report's warnings, or the error naming the case-file
+/// key of the body's radii or the face's edge.
+pub(crate) fn zone_warnings<D>(
+    geometry: &GeometrySpec,
+    source: &dyn GapSource,
+    solution: &NormalSolution<D>,
+) -> Result<Vec<String>> {
+    let check = kontakt::field::validity::zone_size_check(source, solution).map_err(|e| {
+        e.map_field(|f| {
+            let body = if f.starts_with("body2") { 2 } else { 1 };
+            match (geometry, f) {
+                (GeometrySpec::RollerRib { .. }, "bearing.roller_large_end_radius") => {
+                    "geometry.bearing.roller_large_end_radius_mm".into()
+                }
+                (GeometrySpec::RollerRib { pairing: Some(_), .. }, _) => "geometry.pairing".into(),
+                (GeometrySpec::RollerRib { .. }, _) if body == 1 => "geometry.face".into(),
+                (GeometrySpec::RollerRib { .. }, _) => "geometry.rib".into(),
+                (GeometrySpec::Hertz { .. }, _) => format!("geometry.radii{body}_mm"),
+                (GeometrySpec::Surfaces { .. }, f) if f.ends_with(".half_length") => {
+                    format!("geometry.body{body}.half_length_mm")
+                }
+                _ => format!("geometry.body{body}"),
+            }
+        })
+    })?;
+    Ok(check.warnings())
 }
 
 /// The substitute geometry of a case and what the report echoes about it.
@@ -609,7 +645,7 @@ pub(crate) fn gap_setup(geometry: &GeometrySpec) -> Result<GapSetup> {
                 Error::invalid("geometry.kind", "roller_rib", "a roller/rib geometry")
             })?;
             let angle = pair.rib_angle_deg;
-            let gap = SurfacePairGap::new(pair.face, pair.rib, pair.contact).map_err(|e| {
+            let gap = pair.gap().map_err(|e| {
                 e.map_field(|f| match f {
                     "surfaces" => "geometry.pairing".into(),
                     other => other.into(),
@@ -627,21 +663,16 @@ pub(crate) fn gap_setup(geometry: &GeometrySpec) -> Result<GapSetup> {
             radii2_mm,
             angle_deg,
         } => {
-            let k = RelativeCurvature::from_radii(*radii1_mm, *radii2_mm, angle_deg.to_radians())
+            let gap = QuadraticGap::of_bodies(*radii1_mm, *radii2_mm, angle_deg.to_radians())
                 .map_err(|e| {
-                e.map_field(|f| match f {
-                    "radii" => "geometry.radii1_mm, geometry.radii2_mm".into(),
-                    f => f
-                        .replace("body1.radii", "geometry.radii1_mm")
-                        .replace("body2.radii", "geometry.radii2_mm"),
-                })
-            })?;
-            (
-                "hertz gap".into(),
-                Box::new(QuadraticGap::new(k)),
-                None,
-                None,
-            )
+                    e.map_field(|f| match f {
+                        "radii" => "geometry.radii1_mm, geometry.radii2_mm".into(),
+                        f => f
+                            .replace("body1.radii", "geometry.radii1_mm")
+                            .replace("body2.radii", "geometry.radii2_mm"),
+                    })
+                })?;
+            ("hertz gap".into(), Box::new(gap), None, None)
         }
         GeometrySpec::Surfaces {
             body1,
@@ -726,6 +757,8 @@ pub(crate) struct ReportMeta {
     pub hertz: Option<HertzEcho>,
     /// The report's `grid_rounds`: PimP counts grid resizes, bem the domains tried.
     pub grid_rounds: usize,
+    /// The size check's warnings.
+    pub warnings: Vec<String>,
 }
 
 impl PimpReport {
@@ -760,6 +793,7 @@ impl PimpReport {
             separation_mm: meta.separation_mm,
             rib_angle_deg: meta.rib_angle_deg,
             hertz: meta.hertz,
+            warnings: meta.warnings,
         }
     }
 }
