@@ -35,7 +35,7 @@
 
 use crate::pimp_case::{
     GapSetup, GeometrySpec, PimpCase, PimpReport, ReportMeta, gap_setup, hertz_echo, material,
-    zone_warnings,
+    precheck, zone_warnings,
 };
 use kontakt::gap::GapMap;
 use kontakt::halfspace::{Bem, BemOptions, BemSolution, Control};
@@ -179,6 +179,7 @@ fn run(case: &PimpCase, base_dir: &Path, given: Option<GapMap>) -> Result<BemOut
                 separation,
                 rib_angle,
             } = gap_setup(g)?;
+            precheck(g, source.as_ref(), m1, m2, &case.load, separation)?;
             let s = match (case.load.force_n, case.load.approach_mm, separation) {
                 (Some(f), None, _) => bem.solve_force(source.as_ref(), f),
                 (None, Some(d), _) => bem.solve_approach(source.as_ref(), d),

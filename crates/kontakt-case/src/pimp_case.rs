@@ -548,6 +548,7 @@ pub fn run_pimp_case(case: &PimpCase) -> Result<PimpOutcome> {
             other => other.into(),
         })
     };
+    precheck(&case.geometry, source.as_ref(), m1, m2, &case.load, separation)?;
     let solution = match (case.load.force_n, case.load.approach_mm, separation) {
         (Some(f), None, _) => pimp.solve_force(source.as_ref(), f).map_err(map_load)?,
         (None, Some(d), _) => pimp.solve_approach(source.as_ref(), d).map_err(map_load)?,
@@ -595,6 +596,56 @@ pub fn run_pimp_case(case: &PimpCase) -> Result<PimpOutcome> {
     Ok(PimpOutcome { report, solution })
 }
 
+/// Before a solve: the size check on the Hertz ellipse of the local curvature under the
+/// case's load (`kontakt::field::validity::ellipse_size_check`), so that a contact far
+/// larger than the bodies (a groove conforming to within micrometres) is refused naming
+/// the body, not left to fail on the solver's grid. Only refusals: the warnings come from
+/// the solution.
+pub(crate) fn precheck(
+    geometry: &GeometrySpec,
+    source: &dyn GapSource,
+    m1: ElasticMaterial,
+    m2: ElasticMaterial,
+    load: &PimpLoad,
+    separation: Option<f64>,
+) -> Result<()> {
+    let Ok(hertz) = HertzPointContact::new(PointGeometry::from_curvature(source.curvature()), m1, m2)
+    else {
+        return Ok(());
+    };
+    let approach = load
+        .approach_mm
+        .or(separation.filter(|s| *s < 0.0).map(|s| -s));
+    let sol = match (load.force_n, approach) {
+        (Some(f), _) => hertz.solve_force(f),
+        (None, Some(d)) => hertz.solve_approach(d),
+        _ => return Ok(()),
+    };
+    // An invalid load is reported by the solver with its key.
+    let Ok(sol) = sol else { return Ok(()) };
+    kontakt::field::validity::ellipse_size_check(source, sol.semi_axes, sol.orientation)
+        .map_err(|e| e.map_field(|f| size_field(geometry, f)))?;
+    Ok(())
+}
+
+/// The case-file key of a size check's field (`body1.radii`, an edge's quantity).
+fn size_field(geometry: &GeometrySpec, f: &str) -> String {
+    let body = if f.starts_with("body2") { 2 } else { 1 };
+    match (geometry, f) {
+        (GeometrySpec::RollerRib { .. }, "bearing.roller_large_end_radius") => {
+            "geometry.bearing.roller_large_end_radius_mm".into()
+        }
+        (GeometrySpec::RollerRib { pairing: Some(_), .. }, _) => "geometry.pairing".into(),
+        (GeometrySpec::RollerRib { .. }, _) if body == 1 => "geometry.face".into(),
+        (GeometrySpec::RollerRib { .. }, _) => "geometry.rib".into(),
+        (GeometrySpec::Hertz { .. }, _) => format!("geometry.radii{body}_mm"),
+        (GeometrySpec::Surfaces { .. }, f) if f.ends_with(".half_length") => {
+            format!("geometry.body{body}.half_length_mm")
+        }
+        _ => format!("geometry.body{body}"),
+    }
+}
+
 /// The size check of a solution against the bodies of its geometry
 /// (`kontakt::field::validity`): the report's warnings, or the error naming the case-file
 /// key of the body's radii or the face's edge.
@@ -603,24 +654,8 @@ pub(crate) fn zone_warnings<D>(
     source: &dyn GapSource,
     solution: &NormalSolution<D>,
 ) -> Result<Vec<String>> {
-    let check = kontakt::field::validity::zone_size_check(source, solution).map_err(|e| {
-        e.map_field(|f| {
-            let body = if f.starts_with("body2") { 2 } else { 1 };
-            match (geometry, f) {
-                (GeometrySpec::RollerRib { .. }, "bearing.roller_large_end_radius") => {
-                    "geometry.bearing.roller_large_end_radius_mm".into()
-                }
-                (GeometrySpec::RollerRib { pairing: Some(_), .. }, _) => "geometry.pairing".into(),
-                (GeometrySpec::RollerRib { .. }, _) if body == 1 => "geometry.face".into(),
-                (GeometrySpec::RollerRib { .. }, _) => "geometry.rib".into(),
-                (GeometrySpec::Hertz { .. }, _) => format!("geometry.radii{body}_mm"),
-                (GeometrySpec::Surfaces { .. }, f) if f.ends_with(".half_length") => {
-                    format!("geometry.body{body}.half_length_mm")
-                }
-                _ => format!("geometry.body{body}"),
-            }
-        })
-    })?;
+    let check = kontakt::field::validity::zone_size_check(source, solution)
+        .map_err(|e| e.map_field(|f| size_field(geometry, f)))?;
     Ok(check.warnings())
 }
 

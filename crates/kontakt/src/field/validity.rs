@@ -170,12 +170,45 @@ pub fn zone_size_check<D>(
     source: &dyn GapSource,
     solution: &NormalSolution<D>,
 ) -> Result<ZoneCheck> {
+    check(
+        source,
+        solution.zone.extents,
+        solution.orientation,
+        [solution.grid.dx(), solution.grid.dy()],
+    )
+}
+
+/// The same check on a predicted zone, the ellipse of semi-axes `semi_axes` \[mm\] (the
+/// first at `orientation` \[rad\] from the source's `x` axis) centred on the contact
+/// point: run before a solve on the Hertz ellipse of the local curvature, it refuses a
+/// contact that would be far larger than the bodies (a groove conforming to within
+/// micrometres) with the quantity named, where the solver would fail on its grid or take
+/// long to find an answer that is refused anyway.
+///
+/// # Errors
+/// As [`zone_size_check`].
+pub fn ellipse_size_check(
+    source: &dyn GapSource,
+    semi_axes: [Millimetre; 2],
+    orientation: f64,
+) -> Result<ZoneCheck> {
+    let [a, b] = semi_axes;
+    check(source, [[-a, a], [-b, b]], orientation, [0.0, 0.0])
+}
+
+/// The check of a zone with the bounding box `extents` (grid frame, turned by `rotation`
+/// from the source's `x`) on a grid of cells `cell` \[mm\].
+fn check(
+    source: &dyn GapSource,
+    extents: [[f64; 2]; 2],
+    rotation: f64,
+    cell: [f64; 2],
+) -> Result<ZoneCheck> {
     let Some(bodies) = source.bodies() else {
         return Ok(ZoneCheck::default());
     };
-    let [[x0, x1], [y0, y1]] = solution.zone.extents;
+    let [[x0, x1], [y0, y1]] = extents;
     let half = [x0.abs().max(x1.abs()), y0.abs().max(y1.abs())];
-    let rotation = solution.orientation;
     let curvature = curvature_ratio(&bodies, half, rotation);
     if !(curvature.ratio < MAX_SIZE_RATIO) {
         return Err(Error::Geometry {
@@ -193,7 +226,7 @@ pub fn zone_size_check<D>(
             ),
         });
     }
-    let box_ = solution.zone.extents;
+    let box_ = extents;
     let edge = bodies
         .iter()
         .enumerate()
@@ -204,13 +237,16 @@ pub fn zone_size_check<D>(
             let (s, c) = t.sin_cos();
             let reach = (box_[0][0] * c).max(box_[0][1] * c) + (box_[1][0] * s).max(box_[1][1] * s);
             let reach = reach.max(0.0);
+            // Where the face ends the gap does (a ray misses the surface): a zone on the
+            // true gap stops there, so one that reaches the edge to within a cell is cut.
+            let cut = reach + (cell[0] * c).abs() + (cell[1] * s).abs() >= e.distance;
             let ratio = if e.distance > 0.0 {
                 reach / e.distance
             } else {
                 f64::INFINITY
             };
             EdgeRatio {
-                ratio,
+                ratio: if cut { ratio.max(MAX_EDGE_RATIO) } else { ratio },
                 body: b as u8 + 1,
                 reach,
                 edge: *e,
@@ -224,14 +260,13 @@ pub fn zone_size_check<D>(
         return Err(Error::Geometry {
             field: e.edge.quantity.into(),
             reason: format!(
-                "the contact zone would reach {} mm towards {} of body {}, which is {} mm from \
-                 the contact point: the contact is larger than the face (ratio {} >= \
-                 {MAX_EDGE_RATIO}); reduce the load, or check the dimensions",
+                "the contact zone reaches {} mm towards {} of body {}, which is {} mm from the \
+                 contact point: the contact is larger than the face (it reaches the edge to \
+                 within a grid cell, or beyond); reduce the load, or check the dimensions",
                 significant(e.reach),
                 e.edge.what,
                 e.body,
                 significant(e.edge.distance),
-                significant(e.ratio)
             ),
         });
     }
