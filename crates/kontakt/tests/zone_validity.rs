@@ -1,5 +1,5 @@
 //! The size check of PimP and half-space results (`kontakt::field::validity`, docs/pimp.md
-//! §7 and docs/halfspace.md §9): a ten-times overload warns, a groove conforming to within a
+//! §5 and docs/halfspace.md §10): a ten-times overload warns, a groove conforming to within a
 //! micrometre and a contact running over a roller's end face are refused, naming the
 //! quantity; the nominal cases pass plainly.
 
