@@ -216,6 +216,7 @@ impl HalfSpace {
         let s = &outcome.solution;
         let fields = Fields::of(s, Some(&s.detail.displacement), Some(&s.detail.gap));
         Ok(HalfSpaceResult {
+            warnings: outcome.report.warnings.clone(),
             report,
             fields,
             force: s.force,
@@ -235,6 +236,7 @@ impl HalfSpace {
 #[pyclass(frozen, module = "kontakt._kontakt")]
 pub struct HalfSpaceResult {
     report: String,
+    warnings: Vec<String>,
     fields: Fields,
     force: f64,
     offset: f64,
@@ -316,6 +318,12 @@ impl HalfSpaceResult {
     }
     /// The record `kontakt solve` writes for the same map as a `method = "bem"` case with
     /// `[geometry] kind = "map"` (`--json`), as a dict.
+    /// The size check's warnings (always empty for a map: its bodies are unknown, see
+    /// docs/halfspace.md §10); also `to_dict()["warnings"]`.
+    #[getter]
+    fn warnings(&self) -> Vec<String> {
+        self.warnings.clone()
+    }
     fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         py.import("json")?
             .call_method1("loads", (self.report.as_str(),))
