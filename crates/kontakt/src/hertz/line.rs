@@ -139,11 +139,30 @@ impl LineContact {
         crate::error::positive("line_load", line_load)?;
         let b = (4.0 * line_load * self.effective_radius / (PI * self.e_star)).sqrt();
         let p0 = 2.0 * line_load / (PI * b);
+        let mean = line_load / (2.0 * b);
+        // A line load near f64::MAX overflows the half-width (found by the Python fuzz
+        // harness): an error naming the load, never inf in a result.
+        for (name, q) in [
+            ("half-width", b),
+            ("maximum pressure", p0),
+            ("mean pressure", mean),
+        ] {
+            if !(q.is_finite() && q > 0.0) {
+                return Err(Error::invalid(
+                    "line_load",
+                    line_load,
+                    format!(
+                        "a load whose contact is representable in double precision (its {name} \
+                         would be {q}; scale the inputs towards engineering values)"
+                    ),
+                ));
+            }
+        }
         Ok(LineSolution {
             line_load,
             half_width: b,
             max_pressure: p0,
-            mean_pressure: line_load / (2.0 * b),
+            mean_pressure: mean,
         })
     }
 
