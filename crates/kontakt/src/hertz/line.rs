@@ -331,6 +331,21 @@ mod tests {
     use super::*;
     use approx::assert_relative_eq;
 
+    /// Found by the Python fuzz harness: a line load of f64::MAX on R = 1 mm gave an
+    /// infinite half-width; now an error naming the load.
+    #[test]
+    fn overflowing_line_load_is_an_error() {
+        let s = ElasticMaterial::STEEL;
+        let c = LineContact::new(1.0, 1.0, s, s).unwrap();
+        let e = c.solve(f64::MAX).unwrap_err();
+        assert!(
+            matches!(&e, Error::InvalidInput { field, .. } if field == "line_load"),
+            "{e}"
+        );
+        assert!(e.to_string().contains("double precision"), "{e}");
+        assert!(c.solve(1e-300).is_ok());
+    }
+
     #[test]
     fn profile_integrates_to_line_load() {
         let s = ElasticMaterial::STEEL;
