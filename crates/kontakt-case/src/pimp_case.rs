@@ -548,7 +548,14 @@ pub fn run_pimp_case(case: &PimpCase) -> Result<PimpOutcome> {
             other => other.into(),
         })
     };
-    precheck(&case.geometry, source.as_ref(), m1, m2, &case.load, separation)?;
+    precheck(
+        &case.geometry,
+        source.as_ref(),
+        m1,
+        m2,
+        &case.load,
+        separation,
+    )?;
     let solution = match (case.load.force_n, case.load.approach_mm, separation) {
         (Some(f), None, _) => pimp.solve_force(source.as_ref(), f).map_err(map_load)?,
         (None, Some(d), _) => pimp.solve_approach(source.as_ref(), d).map_err(map_load)?,
@@ -609,7 +616,8 @@ pub(crate) fn precheck(
     load: &PimpLoad,
     separation: Option<f64>,
 ) -> Result<()> {
-    let Ok(hertz) = HertzPointContact::new(PointGeometry::from_curvature(source.curvature()), m1, m2)
+    let Ok(hertz) =
+        HertzPointContact::new(PointGeometry::from_curvature(source.curvature()), m1, m2)
     else {
         return Ok(());
     };
@@ -635,7 +643,12 @@ fn size_field(geometry: &GeometrySpec, f: &str) -> String {
         (GeometrySpec::RollerRib { .. }, "bearing.roller_large_end_radius") => {
             "geometry.bearing.roller_large_end_radius_mm".into()
         }
-        (GeometrySpec::RollerRib { pairing: Some(_), .. }, _) => "geometry.pairing".into(),
+        (
+            GeometrySpec::RollerRib {
+                pairing: Some(_), ..
+            },
+            _,
+        ) => "geometry.pairing".into(),
         (GeometrySpec::RollerRib { .. }, _) if body == 1 => "geometry.face".into(),
         (GeometrySpec::RollerRib { .. }, _) => "geometry.rib".into(),
         (GeometrySpec::Hertz { .. }, _) => format!("geometry.radii{body}_mm"),

@@ -12,10 +12,10 @@ use kontakt::field::validity::{
     MAX_EDGE_RATIO, MAX_SIZE_RATIO, WARN_EDGE_RATIO, WARN_SIZE_RATIO, ellipse_size_check,
     zone_size_check,
 };
-use kontakt::hertz::{HertzPointContact, PointGeometry};
 use kontakt::gap::{GapSource, QuadraticGap, SurfacePairGap};
 use kontakt::geometry::surface::{Material, PlacedSurface, Surface};
 use kontakt::halfspace::{Bem, BemOptions};
+use kontakt::hertz::{HertzPointContact, PointGeometry};
 use kontakt::material::ElasticMaterial;
 use kontakt::pimp::{Pimp, PimpOptions};
 use nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
@@ -52,7 +52,9 @@ fn check_both(source: &dyn GapSource, force: f64) -> [Result<Vec<String>, Error>
         run(pimp()
             .solve_force(source, force)
             .map(|s| s.map_detail(|_| ()))),
-        run(bem().solve_force(source, force).map(|s| s.map_detail(|_| ()))),
+        run(bem()
+            .solve_force(source, force)
+            .map(|s| s.map_detail(|_| ()))),
     ]
 }
 
@@ -71,7 +73,8 @@ fn ten_times_overload_warns() {
         let w = r.unwrap();
         assert_eq!(w.len(), 1, "{w:?}");
         assert!(
-            w[0].starts_with("contact size:") && w[0].contains("of body 1's radius of curvature 3.969 mm"),
+            w[0].starts_with("contact size:")
+                && w[0].contains("of body 1's radius of curvature 3.969 mm"),
             "{w:?}"
         );
     }
@@ -216,7 +219,8 @@ fn crowned_roller_end() {
         &nalgebra::Unit::new_normalize(axis),
     );
     let roller = PlacedSurface::new(roller, pose).unwrap();
-    let plane = PlacedSurface::new(Surface::plane(Material::Inside), Isometry3::identity()).unwrap();
+    let plane =
+        PlacedSurface::new(Surface::plane(Material::Inside), Isometry3::identity()).unwrap();
     let gap = SurfacePairGap::from_poses(roller, plane, None).unwrap();
     let edges = gap.bodies().unwrap()[0].edges;
     let nearest = edges
@@ -238,12 +242,8 @@ fn crowned_roller_end() {
 /// A source that does not know its bodies is not checked.
 #[test]
 fn unknown_bodies_are_not_checked() {
-    let k = kontakt::geometry::RelativeCurvature::from_radii(
-        [3.969, 3.969],
-        [15.281, -3.970],
-        0.0,
-    )
-    .unwrap();
+    let k = kontakt::geometry::RelativeCurvature::from_radii([3.969, 3.969], [15.281, -3.970], 0.0)
+        .unwrap();
     let gap = QuadraticGap::new(k);
     let s = pimp().solve_force(&gap, 1000.0).unwrap();
     assert_eq!(zone_size_check(&gap, &s).unwrap(), Default::default());

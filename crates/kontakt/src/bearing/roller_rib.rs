@@ -20,8 +20,8 @@
 //!    face meets the roller's conical side at the large-end edge.
 
 use crate::error::{Error, Result, positive_as};
-use crate::geometry::contact_point::ContactPoint;
 use crate::gap::SurfacePairGap;
+use crate::geometry::contact_point::ContactPoint;
 use crate::geometry::surface::{Material, PlacedSurface, Surface};
 use crate::units::Millimetre;
 use nalgebra::{Isometry3, Point3, Translation3, Unit, UnitQuaternion, Vector3};

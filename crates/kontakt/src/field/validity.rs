@@ -246,7 +246,11 @@ fn check(
                 f64::INFINITY
             };
             EdgeRatio {
-                ratio: if cut { ratio.max(MAX_EDGE_RATIO) } else { ratio },
+                ratio: if cut {
+                    ratio.max(MAX_EDGE_RATIO)
+                } else {
+                    ratio
+                },
                 body: b as u8 + 1,
                 reach,
                 edge: *e,
