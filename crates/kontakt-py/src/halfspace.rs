@@ -75,6 +75,19 @@ impl HalfSpace {
                 ));
             }
         };
+        // A subnormal e_star passes the material's check but its contact modulus
+        // underflows to 0 (found by the fuzz harness): refused here, not at the solve.
+        let e = kontakt::material::effective_modulus(&materials[0], &materials[1]);
+        if !(e.is_finite() && e > 0.0) {
+            return Err(match e_star {
+                Some(v) => invalid("e_star", v, "a finite contact modulus > 0 MPa"),
+                None => invalid(
+                    "material1, material2",
+                    e,
+                    "materials whose contact modulus is a finite number > 0 MPa",
+                ),
+            });
+        }
         Ok(HalfSpace {
             nb_grid_pts,
             physical_sizes,

@@ -164,7 +164,7 @@ fn placed_ball_in_groove() {
 /// over that edge, naming `bearing.roller_large_end_radius`.
 #[test]
 fn roller_end_face_edge() {
-    assert!(WARN_EDGE_RATIO < MAX_EDGE_RATIO);
+    const { assert!(WARN_EDGE_RATIO < MAX_EDGE_RATIO) };
     let pair = RollerRib::new(RollerRibSpec::builtin("torus-torus-14").unwrap()).unwrap();
     let gap = pair.gap().unwrap();
     let edge = gap.bodies().unwrap()[0].edges[0].unwrap();

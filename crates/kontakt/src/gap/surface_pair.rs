@@ -84,7 +84,7 @@ impl SurfacePairGap {
             ["body1.half_length", "body1.profile"],
             ["body2.half_length", "body2.profile"],
         ];
-        for b in 0..2 {
+        for (b, names) in QUANTITY.iter().enumerate() {
             let (surface, point) = if b == 0 {
                 (&self.body1, self.contact.point1)
             } else {
@@ -94,8 +94,8 @@ impl SurfacePairGap {
                 continue;
             };
             let quantity = match rev.profile() {
-                Profile::Table { .. } => QUANTITY[b][1],
-                _ => QUANTITY[b][0],
+                Profile::Table { .. } => names[1],
+                _ => names[0],
             };
             let z = surface.to_local(&point).z;
             let [z_min, z_max] = rev.z_range();

@@ -191,7 +191,19 @@ impl LineContact {
         let l = 0.5 * length;
         let b = self.solve(force / length)?.half_width;
         lundberg_length(length, b)?;
-        Ok(force / (PI * l * self.e_star) * ((l / b).ln() + LUNDBERG_CONSTANT))
+        let approach = force / (PI * l * self.e_star) * ((l / b).ln() + LUNDBERG_CONSTANT);
+        // A length near f64::MAX overflows `π l E*` (found by the Python fuzz harness: NaN).
+        if !(approach.is_finite() && approach > 0.0) {
+            return Err(Error::invalid(
+                "length",
+                length,
+                format!(
+                    "a contact whose approach is representable in double precision (it would be \
+                     {approach}; scale the inputs towards engineering values)"
+                ),
+            ));
+        }
+        Ok(approach)
     }
 
     /// Contact stiffness dF/dδ [N/mm] of a contact of length `length` \[mm\] under the
@@ -344,6 +356,10 @@ mod tests {
         );
         assert!(e.to_string().contains("double precision"), "{e}");
         assert!(c.solve(1e-300).is_ok());
+        // Lundberg's approach over a length near f64::MAX: NaN before, now an error.
+        let flat = LineContact::new(f64::INFINITY, 1.0, s, s).unwrap();
+        let e = flat.lundberg_approach(f64::MAX, f64::MAX).unwrap_err();
+        assert!(e.to_string().contains("double precision"), "{e}");
     }
 
     #[test]
