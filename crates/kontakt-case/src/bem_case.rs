@@ -35,6 +35,7 @@
 
 use crate::pimp_case::{
     GapSetup, GeometrySpec, PimpCase, PimpReport, ReportMeta, gap_setup, hertz_echo, material,
+    precheck, zone_warnings,
 };
 use kontakt::gap::GapMap;
 use kontakt::halfspace::{Bem, BemOptions, BemSolution, Control};
@@ -132,7 +133,9 @@ fn run(case: &PimpCase, base_dir: &Path, given: Option<GapMap>) -> Result<BemOut
             "exactly one of force_n or approach_mm (or neither for surfaces placed in contact)",
         )
     };
-    let (label, solution, separation, rib_angle, curvature, boundary) = match &case.geometry {
+    let (label, solution, separation, rib_angle, curvature, boundary, warnings) = match &case
+        .geometry
+    {
         GeometrySpec::Map {
             file,
             spacing_mm,
@@ -158,7 +161,16 @@ fn run(case: &PimpCase, base_dir: &Path, given: Option<GapMap>) -> Result<BemOut
                 _ => return Err(load_error()),
             };
             let s = bem.solve_map(&map, control, *boundary).map_err(map_load)?;
-            (format!("gap map {file}"), s, None, None, None, *boundary)
+            // A map's bodies are unknown: no size check.
+            (
+                format!("gap map {file}"),
+                s,
+                None,
+                None,
+                None,
+                *boundary,
+                Vec::new(),
+            )
         }
         g => {
             let GapSetup {
@@ -167,6 +179,7 @@ fn run(case: &PimpCase, base_dir: &Path, given: Option<GapMap>) -> Result<BemOut
                 separation,
                 rib_angle,
             } = gap_setup(g)?;
+            precheck(g, source.as_ref(), m1, m2, &case.load, separation)?;
             let s = match (case.load.force_n, case.load.approach_mm, separation) {
                 (Some(f), None, _) => bem.solve_force(source.as_ref(), f),
                 (None, Some(d), _) => bem.solve_approach(source.as_ref(), d),
@@ -183,6 +196,7 @@ fn run(case: &PimpCase, base_dir: &Path, given: Option<GapMap>) -> Result<BemOut
                 _ => return Err(load_error()),
             }
             .map_err(map_load)?;
+            let warnings = zone_warnings(g, source.as_ref(), &s)?;
             let k = source.curvature();
             (
                 label,
@@ -191,6 +205,7 @@ fn run(case: &PimpCase, base_dir: &Path, given: Option<GapMap>) -> Result<BemOut
                 rib_angle,
                 Some(k),
                 kontakt::halfspace::Boundary::Free,
+                warnings,
             )
         }
     };
@@ -214,6 +229,7 @@ fn run(case: &PimpCase, base_dir: &Path, given: Option<GapMap>) -> Result<BemOut
             rib_angle_deg: rib_angle,
             hertz: curvature.and_then(|k| hertz_echo(k, m1, m2, solution.force)),
             grid_rounds: solution.domains,
+            warnings,
         },
         &solution,
     );

@@ -4,6 +4,7 @@
 use kontakt::material::ElasticMaterial;
 use kontakt::{Error, Result};
 use serde::{Deserialize, Serialize};
+use std::path::Path;
 
 /// Version of the JSON result schema.
 pub const SCHEMA_VERSION: u32 = 1;
@@ -18,15 +19,15 @@ pub const MAX_CASE_FILE_BYTES: u64 = 16 * 1024 * 1024;
 /// [`Error::CaseFile`] with key `path`: a file that cannot be opened or read, is not UTF-8
 /// text, or is larger than [`MAX_CASE_FILE_BYTES`] (checked while reading: nothing beyond
 /// the cap is read, whatever the file system says).
-pub fn read_case_file(path: &std::path::Path) -> Result<String> {
+pub fn read_case_file(path: &Path) -> Result<String> {
     let fail = |message: String| Error::CaseFile {
         line: None,
         key: "path".into(),
         message,
     };
     let file = std::fs::File::open(path)
-        .map_err(|e| fail(format!("cannot read case file {}: {e}", path.display())))?;
-    read_case_text(file, &path.display().to_string())
+        .map_err(|e| fail(format!("cannot read case file {}: {e}", one_line(path))))?;
+    read_case_text(file, &one_line(path))
 }
 
 /// [`read_case_file`] for any reader (standard input): `label` names it in messages.
@@ -261,4 +262,31 @@ pub(crate) fn material_keys(e_mpa: f64, nu: f64, prefix: &str) -> Result<Elastic
 /// The material of a `[body1]`/`[body2]` table, errors named `{prefix}.e_mpa`, `{prefix}.nu`.
 pub(crate) fn material(m: &MaterialSpec, prefix: &str) -> Result<ElasticMaterial> {
     material_keys(m.e_mpa, m.nu, prefix)
+}
+
+/// A path as messages quote it: line breaks and other control characters escaped (`\n`)
+/// and a path longer than 80 characters shortened (`… (N characters)`), so that a message
+/// stays one readable line (a path `"\n"` and a whole case text passed as a path, found by
+/// the Python fuzz harness).
+fn one_line(path: &Path) -> String {
+    let shown: String = path
+        .display()
+        .to_string()
+        .chars()
+        .flat_map(|c| {
+            let escaped: Vec<char> = if c.is_control() {
+                c.escape_default().collect()
+            } else {
+                vec![c]
+            };
+            escaped
+        })
+        .collect();
+    let n = shown.chars().count();
+    if n > 80 {
+        let head: String = shown.chars().take(60).collect();
+        format!("{head}… ({n} characters)")
+    } else {
+        shown
+    }
 }

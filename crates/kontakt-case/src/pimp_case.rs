@@ -407,6 +407,11 @@ pub struct PimpReport {
     pub rib_angle_deg: Option<f64>,
     /// The Hertz solution for the curvature at the contact point, same load.
     pub hertz: Option<HertzEcho>,
+    /// Where the result is outside the method's comfortable range: a zone large against a
+    /// body's radius of curvature or close to the edge of a face
+    /// (`kontakt::field::validity`). Empty when none applies (always for a gap map, whose
+    /// bodies are unknown).
+    pub warnings: Vec<String>,
 }
 
 /// The grid of a PimP result.
@@ -543,6 +548,14 @@ pub fn run_pimp_case(case: &PimpCase) -> Result<PimpOutcome> {
             other => other.into(),
         })
     };
+    precheck(
+        &case.geometry,
+        source.as_ref(),
+        m1,
+        m2,
+        &case.load,
+        separation,
+    )?;
     let solution = match (case.load.force_n, case.load.approach_mm, separation) {
         (Some(f), None, _) => pimp.solve_force(source.as_ref(), f).map_err(map_load)?,
         (None, Some(d), _) => pimp.solve_approach(source.as_ref(), d).map_err(map_load)?,
@@ -567,6 +580,7 @@ pub fn run_pimp_case(case: &PimpCase) -> Result<PimpOutcome> {
             ));
         }
     };
+    let warnings = zone_warnings(&case.geometry, source.as_ref(), &solution)?;
     let k = source.curvature();
     let hertz = hertz_echo(k, m1, m2, solution.force);
     let report = PimpReport::assemble(
@@ -582,10 +596,80 @@ pub fn run_pimp_case(case: &PimpCase) -> Result<PimpOutcome> {
             rib_angle_deg: rib_angle,
             hertz,
             grid_rounds: solution.domains - 1,
+            warnings,
         },
         &solution,
     );
     Ok(PimpOutcome { report, solution })
+}
+
+/// Before a solve: the size check on the Hertz ellipse of the local curvature under the
+/// case's load (`kontakt::field::validity::ellipse_size_check`), so that a contact far
+/// larger than the bodies (a groove conforming to within micrometres) is refused naming
+/// the body, not left to fail on the solver's grid. Only refusals: the warnings come from
+/// the solution.
+pub(crate) fn precheck(
+    geometry: &GeometrySpec,
+    source: &dyn GapSource,
+    m1: ElasticMaterial,
+    m2: ElasticMaterial,
+    load: &PimpLoad,
+    separation: Option<f64>,
+) -> Result<()> {
+    let Ok(hertz) =
+        HertzPointContact::new(PointGeometry::from_curvature(source.curvature()), m1, m2)
+    else {
+        return Ok(());
+    };
+    let approach = load
+        .approach_mm
+        .or(separation.filter(|s| *s < 0.0).map(|s| -s));
+    let sol = match (load.force_n, approach) {
+        (Some(f), _) => hertz.solve_force(f),
+        (None, Some(d)) => hertz.solve_approach(d),
+        _ => return Ok(()),
+    };
+    // An invalid load is reported by the solver with its key.
+    let Ok(sol) = sol else { return Ok(()) };
+    kontakt::field::validity::ellipse_size_check(source, sol.semi_axes, sol.orientation)
+        .map_err(|e| e.map_field(|f| size_field(geometry, f)))?;
+    Ok(())
+}
+
+/// The case-file key of a size check's field (`body1.radii`, an edge's quantity).
+fn size_field(geometry: &GeometrySpec, f: &str) -> String {
+    let body = if f.starts_with("body2") { 2 } else { 1 };
+    match (geometry, f) {
+        (GeometrySpec::RollerRib { .. }, "bearing.roller_large_end_radius") => {
+            "geometry.bearing.roller_large_end_radius_mm".into()
+        }
+        (
+            GeometrySpec::RollerRib {
+                pairing: Some(_), ..
+            },
+            _,
+        ) => "geometry.pairing".into(),
+        (GeometrySpec::RollerRib { .. }, _) if body == 1 => "geometry.face".into(),
+        (GeometrySpec::RollerRib { .. }, _) => "geometry.rib".into(),
+        (GeometrySpec::Hertz { .. }, _) => format!("geometry.radii{body}_mm"),
+        (GeometrySpec::Surfaces { .. }, f) if f.ends_with(".half_length") => {
+            format!("geometry.body{body}.half_length_mm")
+        }
+        _ => format!("geometry.body{body}"),
+    }
+}
+
+/// The size check of a solution against the bodies of its geometry
+/// (`kontakt::field::validity`): the report's warnings, or the error naming the case-file
+/// key of the body's radii or the face's edge.
+pub(crate) fn zone_warnings<D>(
+    geometry: &GeometrySpec,
+    source: &dyn GapSource,
+    solution: &NormalSolution<D>,
+) -> Result<Vec<String>> {
+    let check = kontakt::field::validity::zone_size_check(source, solution)
+        .map_err(|e| e.map_field(|f| size_field(geometry, f)))?;
+    Ok(check.warnings())
 }
 
 /// The substitute geometry of a case and what the report echoes about it.
@@ -609,7 +693,7 @@ pub(crate) fn gap_setup(geometry: &GeometrySpec) -> Result<GapSetup> {
                 Error::invalid("geometry.kind", "roller_rib", "a roller/rib geometry")
             })?;
             let angle = pair.rib_angle_deg;
-            let gap = SurfacePairGap::new(pair.face, pair.rib, pair.contact).map_err(|e| {
+            let gap = pair.gap().map_err(|e| {
                 e.map_field(|f| match f {
                     "surfaces" => "geometry.pairing".into(),
                     other => other.into(),
@@ -627,21 +711,16 @@ pub(crate) fn gap_setup(geometry: &GeometrySpec) -> Result<GapSetup> {
             radii2_mm,
             angle_deg,
         } => {
-            let k = RelativeCurvature::from_radii(*radii1_mm, *radii2_mm, angle_deg.to_radians())
+            let gap = QuadraticGap::of_bodies(*radii1_mm, *radii2_mm, angle_deg.to_radians())
                 .map_err(|e| {
-                e.map_field(|f| match f {
-                    "radii" => "geometry.radii1_mm, geometry.radii2_mm".into(),
-                    f => f
-                        .replace("body1.radii", "geometry.radii1_mm")
-                        .replace("body2.radii", "geometry.radii2_mm"),
-                })
-            })?;
-            (
-                "hertz gap".into(),
-                Box::new(QuadraticGap::new(k)),
-                None,
-                None,
-            )
+                    e.map_field(|f| match f {
+                        "radii" => "geometry.radii1_mm, geometry.radii2_mm".into(),
+                        f => f
+                            .replace("body1.radii", "geometry.radii1_mm")
+                            .replace("body2.radii", "geometry.radii2_mm"),
+                    })
+                })?;
+            ("hertz gap".into(), Box::new(gap), None, None)
         }
         GeometrySpec::Surfaces {
             body1,
@@ -726,6 +805,8 @@ pub(crate) struct ReportMeta {
     pub hertz: Option<HertzEcho>,
     /// The report's `grid_rounds`: PimP counts grid resizes, bem the domains tried.
     pub grid_rounds: usize,
+    /// The size check's warnings.
+    pub warnings: Vec<String>,
 }
 
 impl PimpReport {
@@ -760,6 +841,7 @@ impl PimpReport {
             separation_mm: meta.separation_mm,
             rib_angle_deg: meta.rib_angle_deg,
             hertz: meta.hertz,
+            warnings: meta.warnings,
         }
     }
 }

@@ -92,3 +92,16 @@ fn reader_errors_name_line_and_key_path() {
         assert_eq!(shown, format!("line {line}: {m}"));
     }
 }
+
+/// Found by the Python fuzz harness: a path with a line break, or a whole case text given
+/// as a path, gave a message of several lines; now escaped and shortened to one line.
+#[test]
+fn odd_paths_give_one_line() {
+    for path in ["\n", "a\nb/c.toml", &"x/".repeat(300)] {
+        let e = kontakt_case::read_case_file(std::path::Path::new(path))
+            .unwrap_err()
+            .to_string();
+        assert!(!e.contains('\n'), "{e:?}");
+        assert!(e.chars().count() < 200, "{e:?}");
+    }
+}

@@ -611,3 +611,72 @@ fn long_runs_are_quiet_when_piped() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// PimP and half-space cases outside the half-space model's size limit
+/// (`kontakt::field::validity`): the 6205 inner-race contact warns at ten times its load
+/// (JSON `warnings`, text `warning:` lines), a groove conforming to within 1 µm and a
+/// contact running over the roller's end face are refused with status 2 and the case-file
+/// key.
+#[test]
+fn pimp_and_bem_results_outside_the_model_warn_or_are_refused() {
+    let dir = tempdir().join("zone-validity");
+    std::fs::create_dir_all(&dir).unwrap();
+    let groove_case = |method: &str, groove: &str, force: &str| {
+        let options = if method == "pimp" {
+            "[pimp]\ncells = [48, 48]"
+        } else {
+            "[bem]\ncells = [48, 48]\nthreads = 1"
+        };
+        let path = dir.join(format!("{method}-{groove}-{force}.toml"));
+        std::fs::write(
+            &path,
+            format!(
+                "method = \"{method}\"\n[geometry]\nkind = \"hertz\"\nradii1_mm = [3.969, 3.969]\n\
+                 radii2_mm = [15.281, {groove}]\n{options}\n[body1]\ne_mpa = 210000.0\nnu = 0.3\n\
+                 [body2]\ne_mpa = 210000.0\nnu = 0.3\n[load]\nforce_n = {force}\n"
+            ),
+        )
+        .unwrap();
+        path.to_str().unwrap().to_string()
+    };
+    for method in ["pimp", "bem"] {
+        let v = json(&["solve", &groove_case(method, "-4.128", "1000")]);
+        assert_eq!(v["warnings"], serde_json::json!([]), "{method}");
+        let heavy = groove_case(method, "-4.128", "10000");
+        let v = json(&["solve", &heavy]);
+        let w = v["warnings"].as_array().unwrap();
+        assert_eq!(w.len(), 1, "{method}: {w:?}");
+        assert!(
+            w[0].as_str()
+                .unwrap()
+                .contains("of body 1's radius of curvature 3.969 mm"),
+            "{method}: {w:?}"
+        );
+        let text = kontakt().args(["solve", &heavy]).output().unwrap();
+        assert!(text.status.success(), "{method}");
+        assert!(
+            String::from_utf8_lossy(&text.stdout).contains("  warning: contact size:"),
+            "{method}"
+        );
+        let e = bad(&["solve", &groove_case(method, "-3.970", "1000")]);
+        assert!(
+            e.contains("geometry.radii1_mm") && e.contains("times body 1's radius"),
+            "{method}: {e}"
+        );
+    }
+    // The roller end face ends 0.1 mm beyond a contact at 5.4 mm from the roller axis.
+    let rib = dir.join("roller-edge.toml");
+    std::fs::write(
+        &rib,
+        "method = \"pimp\"\n[geometry]\nkind = \"roller_rib\"\npairing = \"torus-torus-14\"\n\
+         contact_height_mm = 5.4\n[pimp]\ncells = [48, 48]\n[body1]\ne_mpa = 210000.0\nnu = 0.3\n\
+         [body2]\ne_mpa = 210000.0\nnu = 0.3\n[load]\nforce_n = 250.0\n",
+    )
+    .unwrap();
+    let e = bad(&["solve", rib.to_str().unwrap()]);
+    assert!(
+        e.contains("geometry.bearing.roller_large_end_radius_mm")
+            && e.contains("larger than the face"),
+        "{e}"
+    );
+}

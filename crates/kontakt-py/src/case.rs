@@ -57,6 +57,21 @@ pub struct CaseResult {
     method: &'static str,
     report: String,
     fields: Option<Fields>,
+    warnings: Vec<String>,
+}
+
+/// The report's `warnings` (hertz, pimp, bem, friction reports; empty for the others).
+pub fn report_warnings(report: &str) -> Vec<String> {
+    serde_json::from_str::<serde_json::Value>(report)
+        .ok()
+        .and_then(|v| {
+            v.get("warnings")?.as_array().map(|w| {
+                w.iter()
+                    .filter_map(|s| s.as_str().map(str::to_string))
+                    .collect()
+            })
+        })
+        .unwrap_or_default()
 }
 
 fn array2<'py>(py: Python<'py>, a: &Option<Array2<f64>>) -> Option<Bound<'py, PyArray2<f64>>> {
@@ -99,6 +114,13 @@ impl CaseResult {
     fn gap<'py>(&self, py: Python<'py>) -> Option<Bound<'py, PyArray2<f64>>> {
         self.fields.as_ref().and_then(|f| array2(py, &f.gap))
     }
+    /// Where the result is outside the method's comfortable range (the report's
+    /// `warnings`: a contact large against a body's radius of curvature or near the edge
+    /// of a face, a pressure above first yield); empty when none applies.
+    #[getter]
+    fn warnings(&self) -> Vec<String> {
+        self.warnings.clone()
+    }
     /// The report as a JSON string, exactly as `kontakt solve --json` writes it (compact).
     fn to_json(&self) -> &str {
         &self.report
@@ -127,6 +149,7 @@ fn result(case: &Case, outcome: Outcome) -> PyResult<CaseResult> {
     };
     Ok(CaseResult {
         method: case.method(),
+        warnings: report_warnings(&report),
         report,
         fields,
     })

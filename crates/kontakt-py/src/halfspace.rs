@@ -75,6 +75,19 @@ impl HalfSpace {
                 ));
             }
         };
+        // A subnormal e_star passes the material's check but its contact modulus
+        // underflows to 0 (found by the fuzz harness): refused here, not at the solve.
+        let e = kontakt::material::effective_modulus(&materials[0], &materials[1]);
+        if !(e.is_finite() && e > 0.0) {
+            return Err(match e_star {
+                Some(v) => invalid("e_star", v, "a finite contact modulus > 0 MPa"),
+                None => invalid(
+                    "material1, material2",
+                    e,
+                    "materials whose contact modulus is a finite number > 0 MPa",
+                ),
+            });
+        }
         Ok(HalfSpace {
             nb_grid_pts,
             physical_sizes,
@@ -208,6 +221,11 @@ impl HalfSpace {
                     "bem.tolerance" => Some("tolerance".into()),
                     "bem.max_iterations" => Some("max_iterations".into()),
                     "bem.threads" => Some("threads".into()),
+                    // The grid is this object's (the fuzz harness found the case keys
+                    // leaking): too few cells across the contact, or a contact that
+                    // reaches the border of the domain.
+                    "bem.cells" => Some("nb_grid_pts".into()),
+                    "bem.extent_mm" => Some("physical_sizes".into()),
                     _ => None,
                 })
             })?;
@@ -216,6 +234,7 @@ impl HalfSpace {
         let s = &outcome.solution;
         let fields = Fields::of(s, Some(&s.detail.displacement), Some(&s.detail.gap));
         Ok(HalfSpaceResult {
+            warnings: outcome.report.warnings.clone(),
             report,
             fields,
             force: s.force,
@@ -235,6 +254,7 @@ impl HalfSpace {
 #[pyclass(frozen, module = "kontakt._kontakt")]
 pub struct HalfSpaceResult {
     report: String,
+    warnings: Vec<String>,
     fields: Fields,
     force: f64,
     offset: f64,
@@ -316,6 +336,12 @@ impl HalfSpaceResult {
     }
     /// The record `kontakt solve` writes for the same map as a `method = "bem"` case with
     /// `[geometry] kind = "map"` (`--json`), as a dict.
+    /// The size check's warnings (always empty for a map: its bodies are unknown, see
+    /// docs/halfspace.md §10); also `to_dict()["warnings"]`.
+    #[getter]
+    fn warnings(&self) -> Vec<String> {
+        self.warnings.clone()
+    }
     fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         py.import("json")?
             .call_method1("loads", (self.report.as_str(),))

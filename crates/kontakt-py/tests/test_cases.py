@@ -23,7 +23,7 @@ EXAMPLES = {
     "rough_self_affine": "solve_rough_self_affine",
 }
 # keys that may differ from the recorded baseline (as crates/kontakt-cli/tests/reports.rs)
-NEW_KEYS = {"status"}
+NEW_KEYS = {"status", "warnings"}
 
 
 def same(new, old, path="report"):
@@ -100,3 +100,36 @@ def test_case_errors_name_the_key():
     assert e.value.field == "path"
     with pytest.raises(kt.InputError):
         kt.run_case({"contact": {"kind": object()}})
+
+
+def groove_case(method: str, groove: float, force: float) -> dict:
+    """The 6205 inner-race contact (ball 3.969 mm in a groove) as a PimP or bem case."""
+    options = {"cells": [48, 48]} if method == "pimp" else {"cells": [48, 48], "threads": 1}
+    return {
+        "method": method,
+        "geometry": {"kind": "hertz", "radii1_mm": [3.969, 3.969], "radii2_mm": [15.281, groove]},
+        method: options,
+        "body1": {"e_mpa": 210000.0, "nu": 0.3},
+        "body2": {"e_mpa": 210000.0, "nu": 0.3},
+        "load": {"force_n": force},
+    }
+
+
+@pytest.mark.parametrize("method", ["pimp", "bem"])
+def test_field_results_carry_the_size_check(method):
+    """PimP and bem results warn at a tenfold overload (docs/pimp.md §5) and refuse a
+    groove conforming to within 1 µm, naming the key; a plain result has no warning."""
+    plain = kt.run_case(groove_case(method, -4.128, 1000.0))
+    assert plain.warnings == [] and plain.to_dict()["warnings"] == []
+    heavy = kt.run_case(groove_case(method, -4.128, 10000.0))
+    assert len(heavy.warnings) == 1 and heavy.warnings == heavy.to_dict()["warnings"]
+    assert "radius of curvature 3.969 mm" in heavy.warnings[0]
+    with pytest.raises(kt.InputError) as e:
+        kt.run_case(groove_case(method, -3.970, 1000.0))
+    assert e.value.field == "geometry.radii1_mm"
+
+
+def test_hertz_warnings_on_case_result(repo):
+    r = kt.run(repo / "examples/rib_friction.toml")
+    assert r.warnings == r.to_dict()["warnings"]
+    assert kt.run(repo / "examples/ball_on_flat.toml").warnings == []

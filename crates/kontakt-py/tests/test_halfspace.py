@@ -38,6 +38,8 @@ def test_sphere_map_against_hertz():
     d = r.to_dict()
     assert d["method"] == "bem" and d["max_pressure_mpa"] == r.max_pressure
     assert d["solver"]["boundary"] == "free"
+    # a map's bodies are unknown: never a size warning (docs/halfspace.md §10)
+    assert r.warnings == [] and d["warnings"] == []
 
 
 def test_same_map_as_the_cli_case(repo, tmp_path):

@@ -101,6 +101,9 @@ pub fn print_report(out: &mut impl Write, r: &PimpReport, json: bool) -> Result<
         "  grid {} x {} cells of {:.4} x {:.4} mm, {work}",
         r.grid.cells[0], r.grid.cells[1], r.grid.cell_mm[0], r.grid.cell_mm[1]
     )?;
+    for warning in &r.warnings {
+        writeln!(out, "  warning: {warning}")?;
+    }
     Ok(())
 }
 

@@ -20,6 +20,7 @@
 //!    face meets the roller's conical side at the large-end edge.
 
 use crate::error::{Error, Result, positive_as};
+use crate::gap::SurfacePairGap;
 use crate::geometry::contact_point::ContactPoint;
 use crate::geometry::surface::{Material, PlacedSurface, Surface};
 use crate::units::Millimetre;
@@ -458,6 +459,31 @@ impl RollerRib {
             apex,
             raceway_angle_deg: alpha_i.to_degrees(),
         })
+    }
+}
+
+impl RollerRib {
+    /// The substitute geometry of the pair: the face (body 1) and the rib (body 2) at the
+    /// idealised contact point, with the face's edge at the roller's large end (radius
+    /// `bearing.roller_large_end_radius` from the roller axis) known to the size check
+    /// ([`crate::field::validity`]). The rib's height is not part of the bearing data and
+    /// is not checked.
+    ///
+    /// # Errors
+    /// Those of [`SurfacePairGap::new`].
+    pub fn gap(&self) -> Result<SurfacePairGap> {
+        let mut gap = SurfacePairGap::new(self.face.clone(), self.rib.clone(), self.contact)?;
+        let u = self.roller_axis.into_inner();
+        let from_axis = self.contact.point1 - self.apex;
+        let radial = from_axis - u * from_axis.dot(&u);
+        gap.add_edge(
+            0,
+            radial,
+            self.spec.bearing.roller_large_end_radius - radial.norm(),
+            "bearing.roller_large_end_radius",
+            "the roller's large end (the edge of its end face)",
+        );
+        Ok(gap)
     }
 }
 

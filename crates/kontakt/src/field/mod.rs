@@ -8,6 +8,8 @@
 //!   displacement, gap and iteration record).
 //! - [`ContactZone`]: the shape of a pressure field (area, extents, centre of pressure,
 //!   patches, centre-line curvature).
+//! - [`validity`]: the size check of a solution against its bodies (the zone small against
+//!   their radii of curvature, clear of their faces' edges).
 //! - [`domain`]: the one adaptive-domain loop that both field solvers run: a grid that
 //!   grows until it holds the contact and zooms in once when the contact is small in it.
 //!
@@ -16,6 +18,7 @@
 //! normal (see [`crate::gap::GapSource`]).
 
 pub mod domain;
+pub mod validity;
 mod zone;
 
 pub use zone::ContactZone;

@@ -17,9 +17,11 @@
 //! This module is shared vocabulary: every field solver (PimP, the half-space solver,
 //! the ones to come) takes its geometry from here, and none of them owns it.
 
+mod bodies;
 mod map;
 mod surface_pair;
 
+pub use bodies::{BodyAtContact, FaceEdge};
 pub use map::{GapMap, MapKind};
 pub use surface_pair::SurfacePairGap;
 
@@ -35,6 +37,15 @@ pub trait GapSource: Send + Sync {
     /// The gap's quadratic form at the contact point: `g ≈ A x'² + B y'²` with `A <= B`
     /// \[1/mm\] and `x'` at angle `orientation` \[rad\] from the source's `x` axis.
     fn curvature(&self) -> RelativeCurvature;
+
+    /// The two bodies at the contact point (each one's curvature and the edges of its
+    /// face), for the size check of a solution ([`crate::field::validity`]); `None` when
+    /// the source knows only the gap (the default: an [`FnGap`], a [`QuadraticGap`] built
+    /// from a relative curvature). [`SurfacePairGap`] and [`QuadraticGap::of_bodies`] know
+    /// them.
+    fn bodies(&self) -> Option<[BodyAtContact; 2]> {
+        None
+    }
 
     /// Sample the touching gap `g >= 0` \[mm\] at the cell centres of `grid` into `out`
     /// (`out.len() == grid.len()`). The grid lives in a frame turned by `rotation` \[rad\]
@@ -92,18 +103,49 @@ pub trait GapSource: Send + Sync {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct QuadraticGap {
     curvature: RelativeCurvature,
+    bodies: Option<[BodyAtContact; 2]>,
 }
 
 impl QuadraticGap {
-    /// The gap of a relative curvature.
+    /// The gap of a relative curvature (the bodies' own radii unknown: a solution on it is
+    /// not size-checked against them).
     pub fn new(curvature: RelativeCurvature) -> Self {
-        QuadraticGap { curvature }
+        QuadraticGap {
+            curvature,
+            bodies: None,
+        }
+    }
+
+    /// The gap of two bodies given by their principal radii \[mm\] (convex > 0, concave
+    /// < 0, `inf` flat), body 2's first principal direction at `angle` \[rad\] from body
+    /// 1's, as [`RelativeCurvature::from_radii`]; the source's `x` axis is body 1's first
+    /// principal direction. The bodies are known to [`GapSource::bodies`].
+    ///
+    /// # Errors
+    /// Those of [`RelativeCurvature::from_radii`].
+    pub fn of_bodies(
+        body1_radii: [Millimetre; 2],
+        body2_radii: [Millimetre; 2],
+        angle: f64,
+    ) -> Result<Self> {
+        let curvature = RelativeCurvature::from_radii(body1_radii, body2_radii, angle)?;
+        Ok(QuadraticGap {
+            curvature,
+            bodies: Some([
+                BodyAtContact::from_radii(body1_radii, 0.0),
+                BodyAtContact::from_radii(body2_radii, angle),
+            ]),
+        })
     }
 }
 
 impl GapSource for QuadraticGap {
     fn curvature(&self) -> RelativeCurvature {
         self.curvature
+    }
+
+    fn bodies(&self) -> Option<[BodyAtContact; 2]> {
+        self.bodies
     }
 
     fn sample(&self, grid: &Grid2, rotation: f64, out: &mut [f64]) -> Result<()> {

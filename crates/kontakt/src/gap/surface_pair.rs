@@ -1,10 +1,10 @@
 //! The substitute geometry of two placed analytic surfaces, by ray casting (Wirsching et al. 2020,
 //! Step 2, eq. 2).
 
-use super::{GapSource, check_len};
+use super::{BodyAtContact, FaceEdge, GapSource, check_len};
 use crate::error::{Error, Result};
 use crate::geometry::contact_point::{ContactPoint, find_contact};
-use crate::geometry::surface::{Curvature, PlacedSurface, Ray};
+use crate::geometry::surface::{Curvature, PlacedSurface, Profile, Ray, Surface};
 use crate::geometry::{ContactFrame, Grid2, RelativeCurvature};
 use crate::units::Millimetre;
 use nalgebra::{Point3, Unit, Vector3};
@@ -25,6 +25,7 @@ pub struct SurfacePairGap {
     ex: Unit<Vector3<f64>>,
     ey: Unit<Vector3<f64>>,
     curvature: RelativeCurvature,
+    bodies: [BodyAtContact; 2],
 }
 
 impl SurfacePairGap {
@@ -48,11 +49,13 @@ impl SurfacePairGap {
             })?;
         let ey = Unit::new_normalize(n.cross(&ex));
         let (mut kxx, mut kyy, mut kxy) = (0.0, 0.0, 0.0);
-        for k in [&k1, &k2] {
+        let mut bodies = [BodyAtContact::from_radii([f64::INFINITY; 2], 0.0); 2];
+        for (b, k) in bodies.iter_mut().zip([&k1, &k2]) {
             let (xx, yy, xy) = tensor(k, &ex, &ey);
             kxx += xx;
             kyy += yy;
             kxy += xy;
+            b.curvature = [xx, yy, xy];
         }
         let curvature = RelativeCurvature::from_tensor(kxx, kyy, kxy).map_err(|e| match e {
             Error::Geometry { reason, .. } => Error::Geometry {
@@ -61,14 +64,75 @@ impl SurfacePairGap {
             },
             other => other,
         })?;
-        Ok(SurfacePairGap {
+        let mut gap = SurfacePairGap {
             body1,
             body2,
             contact,
             ex,
             ey,
             curvature,
-        })
+            bodies,
+        };
+        gap.add_profile_ends();
+        Ok(gap)
+    }
+
+    /// A surface of revolution (a crowned roller) ends at its profile's `z` range: both
+    /// ends become edges of its face.
+    fn add_profile_ends(&mut self) {
+        const QUANTITY: [[&str; 2]; 2] = [
+            ["body1.half_length", "body1.profile"],
+            ["body2.half_length", "body2.profile"],
+        ];
+        for (b, names) in QUANTITY.iter().enumerate() {
+            let (surface, point) = if b == 0 {
+                (&self.body1, self.contact.point1)
+            } else {
+                (&self.body2, self.contact.point2)
+            };
+            let Surface::Revolution(rev) = &surface.surface else {
+                continue;
+            };
+            let quantity = match rev.profile() {
+                Profile::Table { .. } => names[1],
+                _ => names[0],
+            };
+            let z = surface.to_local(&point).z;
+            let [z_min, z_max] = rev.z_range();
+            let axis = surface.pose.rotation * Vector3::z();
+            self.add_edge(b, axis, z_max - z, quantity, "the end of the profile");
+            self.add_edge(b, -axis, z - z_min, quantity, "the end of the profile");
+        }
+    }
+
+    /// Mark an edge of body `body` (0 or 1) where its face ends: the face ends where a
+    /// coordinate whose world gradient is `gradient` (a unit vector, for example the
+    /// radial direction from a roller's axis) has grown by `remaining` \[mm\] from the
+    /// contact point. `quantity` names the input that sets the edge, `what` describes it.
+    /// The edge lies along the gradient's projection into the contact plane; a gradient
+    /// along the normal (the face ends nowhere near in the plane) adds no edge.
+    pub fn add_edge(
+        &mut self,
+        body: usize,
+        gradient: Vector3<f64>,
+        remaining: Millimetre,
+        quantity: &'static str,
+        what: &'static str,
+    ) {
+        let n = self.contact.normal.into_inner();
+        let g = gradient.try_normalize(0.0).unwrap_or_else(Vector3::zeros);
+        let in_plane = g - n * g.dot(&n);
+        let rate = in_plane.norm();
+        if body > 1 || !(rate > 1e-9) || !remaining.is_finite() {
+            return;
+        }
+        let u = in_plane / rate;
+        self.bodies[body] = self.bodies[body].with_edge(FaceEdge {
+            distance: remaining / rate,
+            direction: [u.dot(&self.ex), u.dot(&self.ey)],
+            quantity,
+            what,
+        });
     }
 
     /// Find the contact point of the two placed surfaces (Step 1) and build the gap.
@@ -140,6 +204,10 @@ fn any_perpendicular(n: &Unit<Vector3<f64>>) -> Option<Unit<Vector3<f64>>> {
 impl GapSource for SurfacePairGap {
     fn curvature(&self) -> RelativeCurvature {
         self.curvature
+    }
+
+    fn bodies(&self) -> Option<[BodyAtContact; 2]> {
+        Some(self.bodies)
     }
 
     fn sample(&self, grid: &Grid2, rotation: f64, out: &mut [f64]) -> Result<()> {

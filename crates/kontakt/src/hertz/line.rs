@@ -139,11 +139,30 @@ impl LineContact {
         crate::error::positive("line_load", line_load)?;
         let b = (4.0 * line_load * self.effective_radius / (PI * self.e_star)).sqrt();
         let p0 = 2.0 * line_load / (PI * b);
+        let mean = line_load / (2.0 * b);
+        // A line load near f64::MAX overflows the half-width (found by the Python fuzz
+        // harness): an error naming the load, never inf in a result.
+        for (name, q) in [
+            ("half-width", b),
+            ("maximum pressure", p0),
+            ("mean pressure", mean),
+        ] {
+            if !(q.is_finite() && q > 0.0) {
+                return Err(Error::invalid(
+                    "line_load",
+                    line_load,
+                    format!(
+                        "a load whose contact is representable in double precision (its {name} \
+                         would be {q}; scale the inputs towards engineering values)"
+                    ),
+                ));
+            }
+        }
         Ok(LineSolution {
             line_load,
             half_width: b,
             max_pressure: p0,
-            mean_pressure: line_load / (2.0 * b),
+            mean_pressure: mean,
         })
     }
 
@@ -172,7 +191,19 @@ impl LineContact {
         let l = 0.5 * length;
         let b = self.solve(force / length)?.half_width;
         lundberg_length(length, b)?;
-        Ok(force / (PI * l * self.e_star) * ((l / b).ln() + LUNDBERG_CONSTANT))
+        let approach = force / (PI * l * self.e_star) * ((l / b).ln() + LUNDBERG_CONSTANT);
+        // A length near f64::MAX overflows `π l E*` (found by the Python fuzz harness: NaN).
+        if !(approach.is_finite() && approach > 0.0) {
+            return Err(Error::invalid(
+                "length",
+                length,
+                format!(
+                    "a contact whose approach is representable in double precision (it would be \
+                     {approach}; scale the inputs towards engineering values)"
+                ),
+            ));
+        }
+        Ok(approach)
     }
 
     /// Contact stiffness dF/dδ [N/mm] of a contact of length `length` \[mm\] under the
@@ -311,6 +342,25 @@ fn lundberg_length(length: Millimetre, b: Millimetre) -> Result<()> {
 mod tests {
     use super::*;
     use approx::assert_relative_eq;
+
+    /// Found by the Python fuzz harness: a line load of f64::MAX on R = 1 mm gave an
+    /// infinite half-width; now an error naming the load.
+    #[test]
+    fn overflowing_line_load_is_an_error() {
+        let s = ElasticMaterial::STEEL;
+        let c = LineContact::new(1.0, 1.0, s, s).unwrap();
+        let e = c.solve(f64::MAX).unwrap_err();
+        assert!(
+            matches!(&e, Error::InvalidInput { field, .. } if field == "line_load"),
+            "{e}"
+        );
+        assert!(e.to_string().contains("double precision"), "{e}");
+        assert!(c.solve(1e-300).is_ok());
+        // Lundberg's approach over a length near f64::MAX: NaN before, now an error.
+        let flat = LineContact::new(f64::INFINITY, 1.0, s, s).unwrap();
+        let e = flat.lundberg_approach(f64::MAX, f64::MAX).unwrap_err();
+        assert!(e.to_string().contains("double precision"), "{e}");
+    }
 
     #[test]
     fn profile_integrates_to_line_load() {
