@@ -199,10 +199,12 @@ fn every_example_solves() {
         let path = entry.unwrap().path();
         if path.extension().is_some_and(|e| e == "toml") {
             let v = json(&["solve", path.to_str().unwrap()]);
-            // Friction reports carry the pressure per row (model × speed).
+            // Friction and rough reports carry the pressure per row (model × speed, load);
+            // impact reports in their normal impact.
             let p = v["max_pressure_mpa"]
                 .as_f64()
-                .or_else(|| v["rows"][0]["max_pressure_mpa"].as_f64());
+                .or_else(|| v["rows"][0]["max_pressure_mpa"].as_f64())
+                .or_else(|| v["normal"]["max_pressure_mpa"].as_f64());
             assert!(p.unwrap() > 0.0, "{}", path.display());
             n += 1;
         }
