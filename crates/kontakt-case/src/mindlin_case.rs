@@ -39,7 +39,6 @@
 
 use crate::common::{MaterialSpec, SCHEMA_VERSION, material, parse_toml};
 use crate::traction_case::{FrictionSpec, TractionGeometry, TractionLoad};
-use kontakt::hertz::{HertzPointContact, PointGeometry};
 use kontakt::tangential::{ContactEllipse, EllipseAxis, Mindlin};
 use kontakt::{Error, Result};
 use serde::{Deserialize, Serialize};
@@ -213,26 +212,10 @@ pub fn run_mindlin_case(case: &MindlinCase) -> Result<MindlinReport> {
             radii2_mm,
             angle_deg,
         } => {
-            if !angle_deg.is_finite() {
-                return Err(Error::invalid(
-                    "geometry.angle_deg",
-                    angle_deg,
-                    "a finite angle [deg]",
-                ));
-            }
-            let g = PointGeometry::new(*radii1_mm, *radii2_mm, angle_deg.to_radians()).map_err(
-                |e| {
-                    e.map_field(|f| match f {
-                        "radii" => "geometry.radii1_mm, geometry.radii2_mm".into(),
-                        f => f
-                            .replace("body1.radii", "geometry.radii1_mm")
-                            .replace("body2.radii", "geometry.radii2_mm"),
-                    })
-                },
-            )?;
-            let sol = HertzPointContact::new(g, m1, m2)?
-                .solve_force(force)
-                .map_err(map)?;
+            let sol = crate::traction_case::hertz_of_geometry(
+                *radii1_mm, *radii2_mm, *angle_deg, m1, m2, force,
+            )
+            .map_err(map)?;
             (
                 "hertz",
                 ContactEllipse::from_hertz(&sol, EllipseAxis::Major)?,

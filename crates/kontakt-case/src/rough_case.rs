@@ -152,8 +152,12 @@ pub struct RoughRow {
     pub max_pressure_mpa: f64,
     /// Mean pressure on the real contact area \[MPa\].
     pub real_mean_pressure_mpa: f64,
-    /// Contact patches.
+    /// Contact patches (joined by cell sides, across the periodic borders too).
     pub patches: usize,
+    /// Mean patch area \[mm²\].
+    pub mean_patch_area_mm2: f64,
+    /// Largest patch area \[mm²\].
+    pub largest_patch_area_mm2: f64,
     /// Mean gap \[mm\].
     pub mean_gap_mm: f64,
     /// Solver iterations.
@@ -360,6 +364,8 @@ pub fn run_rough_case(case: &RoughCase, base_dir: &Path) -> Result<RoughOutcome>
             max_pressure_mpa: r.max_pressure,
             real_mean_pressure_mpa: r.real_mean_pressure,
             patches: r.patches,
+            mean_patch_area_mm2: r.mean_patch_area,
+            largest_patch_area_mm2: r.largest_patch_area,
             mean_gap_mm: r.mean_gap,
             iterations: r.status.iterations,
         });

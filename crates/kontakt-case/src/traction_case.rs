@@ -546,25 +546,7 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
             radii2_mm,
             angle_deg,
         } => {
-            if !angle_deg.is_finite() {
-                return Err(Error::invalid(
-                    "geometry.angle_deg",
-                    angle_deg,
-                    "a finite angle [deg]",
-                ));
-            }
-            let g = PointGeometry::new(*radii1_mm, *radii2_mm, angle_deg.to_radians()).map_err(
-                |e| {
-                    e.map_field(|f| match f {
-                        "radii" => "geometry.radii1_mm, geometry.radii2_mm".into(),
-                        f => f
-                            .replace("body1.radii", "geometry.radii1_mm")
-                            .replace("body2.radii", "geometry.radii2_mm"),
-                    })
-                },
-            )?;
-            let sol = HertzPointContact::new(g, m1, m2)?
-                .solve_force(force)
+            let sol = hertz_of_geometry(*radii1_mm, *radii2_mm, *angle_deg, m1, m2, force)
                 .map_err(map_common)?;
             let Some(axis) = rolling_axis(&sol) else {
                 return Err(Error::Geometry {
@@ -800,6 +782,36 @@ fn combined_curve(
             spin_moment_nmm: (mz.len() == n).then_some(mz),
         },
     ))
+}
+
+/// The Hertz solution of a `kind = "hertz"` geometry (principal radii \[mm\], the angle
+/// between the principal planes \[deg\]) under the normal force `force` \[N\]; errors name
+/// the case keys (`geometry.angle_deg`, `geometry.radii1_mm`, ...). Shared with the
+/// Cattaneo-Mindlin cases.
+pub(crate) fn hertz_of_geometry(
+    radii1_mm: [f64; 2],
+    radii2_mm: [f64; 2],
+    angle_deg: f64,
+    m1: kontakt::material::ElasticMaterial,
+    m2: kontakt::material::ElasticMaterial,
+    force: f64,
+) -> Result<kontakt::hertz::HertzPointSolution> {
+    if !angle_deg.is_finite() {
+        return Err(Error::invalid(
+            "geometry.angle_deg",
+            angle_deg,
+            "a finite angle [deg]",
+        ));
+    }
+    let g = PointGeometry::new(radii1_mm, radii2_mm, angle_deg.to_radians()).map_err(|e| {
+        e.map_field(|f| match f {
+            "radii" => "geometry.radii1_mm, geometry.radii2_mm".into(),
+            f => f
+                .replace("body1.radii", "geometry.radii1_mm")
+                .replace("body2.radii", "geometry.radii2_mm"),
+        })
+    })?;
+    HertzPointContact::new(g, m1, m2)?.solve_force(force)
 }
 
 /// Plan the asperity model on the case's nominal contact.

@@ -50,9 +50,9 @@ fn wavy_surface_against_westergaard() {
     let (n, lambda, d) = (128usize, 1.0f64, 1e-3f64);
     let row: Vec<String> = (0..n)
         .map(|i| {
-            // The crest in the middle of the map, so that the contact is one patch (patches
-            // are not joined across the periodic border).
-            let x = (i as f64 + 0.5) * lambda / n as f64 - 0.5 * lambda;
+            // The crest at the map's left and right edges: one patch across the periodic
+            // border.
+            let x = (i as f64 + 0.5) * lambda / n as f64;
             format!("{:e}", d * (2.0 * std::f64::consts::PI * x / lambda).cos())
         })
         .collect();
@@ -85,6 +85,9 @@ fn wavy_surface_against_westergaard() {
             "p/p* = {f}: {ours} vs {west}"
         );
         assert_eq!(row["patches"], 1);
+        // The one patch is the whole contact: a band of width 2a over the map's height.
+        let band = ours * lambda * 8.0 * lambda / n as f64;
+        assert!((num(&row["largest_patch_area_mm2"]) / band - 1.0).abs() < 1e-12);
         // The crest pressure p(0) = 2 p/sin(pi a/lambda) = 2 sqrt(p p*), within 0.5 %.
         let crest = 2.0 * (f * p_star * p_star).sqrt();
         let pmax = num(&row["max_pressure_mpa"]);
@@ -98,7 +101,7 @@ fn wavy_surface_against_westergaard() {
     // point list (mm, shuffled rows): the same rows (areas exact, pressures 1e-9).
     let z: Vec<f64> = (0..n)
         .map(|i| {
-            let x = (i as f64 + 0.5) * lambda / n as f64 - 0.5 * lambda;
+            let x = (i as f64 + 0.5) * lambda / n as f64;
             d * (2.0 * std::f64::consts::PI * x / lambda).cos()
         })
         .collect();

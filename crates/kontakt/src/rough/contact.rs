@@ -42,9 +42,13 @@ pub struct RoughContactPoint {
     pub max_pressure: f64,
     /// Mean pressure on the real contact area `p̄ A0/A` \[MPa\].
     pub real_mean_pressure: f64,
-    /// Contact patches: groups of loaded cells joined by their sides (a patch across the
-    /// periodic border counts once on each side).
+    /// Contact patches: groups of loaded cells joined by their sides, across the periodic
+    /// borders too.
     pub patches: usize,
+    /// Mean area of a patch \[mm²\].
+    pub mean_patch_area: f64,
+    /// Area of the largest patch \[mm²\].
+    pub largest_patch_area: f64,
     /// Mean gap between the deformed surfaces over the nominal area \[mm\].
     pub mean_gap: f64,
     /// The solver's termination, iterations and residual.
@@ -140,6 +144,8 @@ impl RoughContact {
         self.warm = true;
         let p = self.solver.pressure();
         let zone = ContactZone::analyse(&self.grid, p)?;
+        let sizes = periodic_patches(self.grid.nx(), self.grid.ny(), p);
+        let cell = self.grid.cell_area();
         let loaded = p.iter().filter(|&&x| x > 0.0).count() as f64;
         let area_fraction = loaded / n;
         let load = mean_pressure / (self.e_star * self.rms_slope);
@@ -167,11 +173,46 @@ impl RoughContact {
             } else {
                 0.0
             },
-            patches: zone.patches,
+            patches: sizes.len(),
+            mean_patch_area: if sizes.is_empty() {
+                0.0
+            } else {
+                cell * sizes.iter().sum::<usize>() as f64 / sizes.len() as f64
+            },
+            largest_patch_area: cell * sizes.iter().copied().max().unwrap_or(0) as f64,
             mean_gap,
             status: report.status,
         })
     }
+}
+
+/// The cell counts of the contact patches of `pressure` (`nx × ny`, row-major, x fastest):
+/// loaded cells joined through their four sides, across the periodic borders too.
+pub(crate) fn periodic_patches(nx: usize, ny: usize, pressure: &[f64]) -> Vec<usize> {
+    let mut seen = vec![false; pressure.len()];
+    let mut sizes = Vec::new();
+    let mut stack = Vec::new();
+    for start in 0..pressure.len() {
+        if seen[start] || !(pressure[start] > 0.0) {
+            continue;
+        }
+        seen[start] = true;
+        stack.push(start);
+        let mut size = 0;
+        while let Some(k) = stack.pop() {
+            size += 1;
+            let (i, j) = (k % nx, k / nx);
+            for (di, dj) in [(1, 0), (nx - 1, 0), (0, 1), (0, ny - 1)] {
+                let n = (j + dj) % ny * nx + (i + di) % nx;
+                if !seen[n] && pressure[n] > 0.0 {
+                    seen[n] = true;
+                    stack.push(n);
+                }
+            }
+        }
+        sizes.push(size);
+    }
+    sizes
 }
 
 /// Persson's real-area fraction `A/A0 = erf(√2 p̄/(E* h'_rms))` \[-\] for the nominal
@@ -179,4 +220,26 @@ impl RoughContact {
 /// `rms_slope` (Persson 2001; the small-load slope is `√(8/π)`).
 pub fn persson_area_fraction(mean_pressure: f64, e_star: f64, rms_slope: f64) -> f64 {
     libm::erf(std::f64::consts::SQRT_2 * mean_pressure / (e_star * rms_slope))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::periodic_patches;
+
+    /// A patch across the left/right and the top/bottom borders is one patch; a separate
+    /// one is another; diagonal neighbours do not join.
+    #[test]
+    fn patches_join_across_periodic_borders() {
+        let (nx, ny) = (6, 5);
+        let mut p = vec![0.0; nx * ny];
+        for (i, j) in [(0, 0), (5, 0), (0, 4), (5, 4), (1, 0)] {
+            p[j * nx + i] = 1.0; // one patch of 5 cells through both borders
+        }
+        p[2 * nx + 3] = 2.0; // a single cell
+        p[3 * nx + 4] = 2.0; // its diagonal neighbour: a third patch
+        let mut sizes = periodic_patches(nx, ny, &p);
+        sizes.sort_unstable();
+        assert_eq!(sizes, vec![1, 1, 5]);
+        assert!(periodic_patches(nx, ny, &vec![0.0; nx * ny]).is_empty());
+    }
 }
