@@ -234,25 +234,24 @@ pub fn run_impact_case(case: &ImpactCase) -> Result<ImpactReport> {
         "sphere",
     )?;
     let flat_material = material(&case.flat, "flat")?;
-    let rename = |prefix: &'static str| {
-        move |e: Error| {
-            e.map_field(|f| match f {
-                "radius" => "sphere.radius_mm".into(),
-                "density" => "sphere.density_t_per_mm3".into(),
-                "mass" => "sphere.mass_t".into(),
-                "radius_of_gyration" => "sphere.radius_of_gyration_mm".into(),
-                "speed" | "normal_speed" => "impact.speed_mm_per_s".into(),
-                "incidence_angle" => "impact.angle_deg".into(),
-                "angular_velocity" => "impact.spin_rad_per_s".into(),
-                "friction_coefficient" => "friction.mu".into(),
-                "restitution" => "friction.restitution".into(),
-                "materials" => "sphere, flat".into(),
-                other => format!("{prefix}{other}"),
-            })
-        }
+    // The library's argument names as the case file spells them.
+    let rename = |e: Error| {
+        e.map_field(|f| match f {
+            "radius" => "sphere.radius_mm".into(),
+            "density" => "sphere.density_t_per_mm3".into(),
+            "mass" => "sphere.mass_t".into(),
+            "radius_of_gyration" => "sphere.radius_of_gyration_mm".into(),
+            "speed" | "normal_speed" => "impact.speed_mm_per_s".into(),
+            "incidence_angle" => "impact.angle_deg".into(),
+            "angular_velocity" => "impact.spin_rad_per_s".into(),
+            "friction_coefficient" => "friction.mu".into(),
+            "restitution" => "friction.restitution".into(),
+            "materials" => "sphere, flat".into(),
+            other => other.into(),
+        })
     };
     let mass = match (s.density_t_per_mm3, s.mass_t) {
-        (Some(rho), None) => sphere_mass(s.radius_mm, rho).map_err(rename(""))?,
+        (Some(rho), None) => sphere_mass(s.radius_mm, rho).map_err(rename)?,
         (None, Some(m)) => kontakt::error::positive_as("sphere.mass_t", m, "a finite mass > 0 t")?,
         (d, _) => {
             return Err(Error::invalid(
@@ -270,7 +269,7 @@ pub fn run_impact_case(case: &ImpactCase) -> Result<ImpactReport> {
         None => SphereBody::solid_sphere(s.radius_mm, mass),
         Some(k) => SphereBody::new(s.radius_mm, mass, k),
     }
-    .map_err(rename(""))?;
+    .map_err(rename)?;
     let i = case.impact;
     if !(i.angle_deg.is_finite() && i.angle_deg.abs() < 90.0) {
         return Err(Error::invalid(
@@ -281,12 +280,12 @@ pub fn run_impact_case(case: &ImpactCase) -> Result<ImpactReport> {
     }
     let incident =
         IncidentMotion::from_angle(i.speed_mm_per_s, i.angle_deg.to_radians(), i.spin_rad_per_s)
-            .map_err(rename(""))?;
+            .map_err(rename)?;
     let e_star = effective_modulus(&sphere_material, &flat_material);
     // A sphere on a flat at rest: the effective radius is the sphere's, the effective mass
     // the sphere's (the flat's is infinite).
     let hertz = HertzImpact::sphere(s.radius_mm, e_star, mass, incident.normal_speed())
-        .map_err(rename(""))?
+        .map_err(rename)?
         .result();
     let normal = NormalImpactReport {
         normal_speed_mm_per_s: incident.normal_speed(),
@@ -309,7 +308,7 @@ pub fn run_impact_case(case: &ImpactCase) -> Result<ImpactReport> {
         Some(f) => {
             let rigid = RigidObliqueImpact::new(body, f.mu, f.restitution)
                 .and_then(|r| r.rebound(&incident))
-                .map_err(rename(""))?;
+                .map_err(rename)?;
             let model = ElasticObliqueImpact::new(
                 body,
                 sphere_material,
@@ -317,8 +316,8 @@ pub fn run_impact_case(case: &ImpactCase) -> Result<ImpactReport> {
                 f.mu,
                 ElasticImpactOptions::default(),
             )
-            .map_err(rename(""))?;
-            let el = model.rebound(&incident).map_err(rename(""))?;
+            .map_err(rename)?;
+            let el = model.rebound(&incident).map_err(rename)?;
             (
                 Some(model.kappa()),
                 Some(model.chi()),
