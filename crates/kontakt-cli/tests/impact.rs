@@ -4,38 +4,18 @@
 
 #![allow(clippy::unwrap_used)] // test helpers: a panic is a test failure with its message
 
-use assert_cmd::Command;
-use serde_json::Value;
-use std::path::PathBuf;
+mod support;
 
-fn kontakt() -> Command {
-    Command::cargo_bin("kontakt").expect("binary built")
-}
+use std::path::PathBuf;
+use support::{kontakt, num, run_json};
 
 fn example() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/impact_oblique.toml")
+    support::example("impact_oblique.toml")
 }
 
 /// A fresh folder per test.
 fn tempdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("kontakt-impact-test-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn run_json(args: &[&str]) -> Value {
-    let out = kontakt().args(args).arg("--json").output().unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).unwrap()
-}
-
-fn num(v: &Value) -> f64 {
-    v.as_f64().unwrap_or_else(|| panic!("not a number: {v}"))
+    support::tempdir("impact", name)
 }
 
 /// The example with some lines replaced, written to a file.

@@ -4,53 +4,25 @@
 
 #![allow(clippy::unwrap_used)] // test helpers: a panic is a test failure with its message
 
-use assert_cmd::Command;
+mod support;
+
 use serde_json::Value;
 use std::path::PathBuf;
-
-fn kontakt() -> Command {
-    Command::cargo_bin("kontakt").expect("binary built")
-}
+use support::{bad, run_json};
 
 fn example() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/mindlin_fretting.toml")
+    support::example("mindlin_fretting.toml")
 }
 
 /// A fresh folder per test.
 fn tempdir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!(
-        "kontakt-mindlin-test-{}-{name}",
-        std::process::id()
-    ));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
-
-fn run_json(args: &[&str]) -> Value {
-    let out = kontakt().args(args).arg("--json").output().unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).unwrap()
+    support::tempdir("mindlin", name)
 }
 
 fn f(v: &Value, key: &str) -> f64 {
     v[key]
         .as_f64()
         .unwrap_or_else(|| panic!("{key}: {}", v[key]))
-}
-
-/// Run, expect exit status 2 and one stderr line; return it.
-fn bad(args: &[&str]) -> String {
-    let out = kontakt().args(args).output().unwrap();
-    let err = String::from_utf8(out.stderr).unwrap();
-    assert_eq!(out.status.code(), Some(2), "args {args:?}: {err}");
-    let lines: Vec<_> = err.lines().filter(|l| !l.trim().is_empty()).collect();
-    assert_eq!(lines.len(), 1, "not one line: {err}");
-    lines[0].to_string()
 }
 
 /// The example (a steel ball on a steel flat, circular contact) against the closed forms
