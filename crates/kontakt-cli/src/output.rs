@@ -30,21 +30,27 @@ fn radii(r: &[f64]) -> String {
 }
 
 /// One report as a two-column table, or as pretty JSON.
+/// Print `report` as pretty JSON with a final newline (every command's `--json`).
+pub fn print_json(out: &mut impl Write, report: &impl serde::Serialize) -> Result<()> {
+    serde_json::to_writer_pretty(&mut *out, report)?;
+    writeln!(out)?;
+    Ok(())
+}
+
+/// `": NAME"` for a case's optional name, empty without one (the suffix of report titles).
+pub fn name_suffix(name: Option<&str>) -> String {
+    name.map(|n| format!(": {n}")).unwrap_or_default()
+}
+
 pub fn print_report(out: &mut impl Write, r: &ContactReport, json: bool) -> Result<()> {
     if json {
-        serde_json::to_writer_pretty(&mut *out, r)?;
-        writeln!(out)?;
-        return Ok(());
+        return crate::output::print_json(out, r);
     }
     let title = match r.kind {
         ContactKind::Point => "Hertz point contact (exact elliptical solution)",
         ContactKind::Line => "Hertz line contact",
     };
-    let name = r
-        .name
-        .as_deref()
-        .map(|n| format!(": {n}"))
-        .unwrap_or_default();
+    let name = crate::output::name_suffix(r.name.as_deref());
     writeln!(out, "kontakt {} — {title}{name}", r.kontakt_version)?;
     let i = &r.inputs;
     let mut rows: Vec<(&str, String, &str)> = vec![

@@ -42,15 +42,9 @@ pub fn run(args: &FrictionArgs, out: &mut impl Write) -> Result<()> {
 /// The report as a table per model, or as pretty JSON.
 pub fn print_report(out: &mut impl Write, r: &FrictionReport, json: bool) -> Result<()> {
     if json {
-        serde_json::to_writer_pretty(&mut *out, r)?;
-        writeln!(out)?;
-        return Ok(());
+        return crate::output::print_json(out, r);
     }
-    let name = r
-        .name
-        .as_deref()
-        .map(|n| format!(": {n}"))
-        .unwrap_or_default();
+    let name = crate::output::name_suffix(r.name.as_deref());
     writeln!(
         out,
         "kontakt {} — roller-end/rib friction{name}",

@@ -13,9 +13,7 @@ use std::path::Path;
 /// Print a PimP result as a table or JSON.
 pub fn print_report(out: &mut impl Write, r: &PimpReport, json: bool) -> Result<()> {
     if json {
-        serde_json::to_writer_pretty(&mut *out, r)?;
-        writeln!(out)?;
-        return Ok(());
+        return crate::output::print_json(out, r);
     }
     let name = r.name.as_deref().unwrap_or("(unnamed)");
     let method = match r.mode {

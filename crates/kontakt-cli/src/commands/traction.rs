@@ -30,15 +30,9 @@ pub fn run(args: &TractionArgs, out: &mut impl Write) -> Result<()> {
 /// The report as a table (a subsample of the points) or as pretty JSON.
 pub fn print_report(out: &mut impl Write, r: &TractionReport, json: bool) -> Result<()> {
     if json {
-        serde_json::to_writer_pretty(&mut *out, r)?;
-        writeln!(out)?;
-        return Ok(());
+        return crate::output::print_json(out, r);
     }
-    let name = r
-        .name
-        .as_deref()
-        .map(|n| format!(": {n}"))
-        .unwrap_or_default();
+    let name = crate::output::name_suffix(r.name.as_deref());
     writeln!(
         out,
         "kontakt {} — traction curves F_T/(mu F_N){name}",
