@@ -22,7 +22,8 @@ fn tempdir(name: &str) -> PathBuf {
 /// 8 rows: the periodic 2-D solver then solves the plane problem) against Westergaard's
 /// solution (Johnson 1985 §13.2): p = p* sin²(pi a/lambda) with p* = pi E* D/lambda, so
 /// the contact fraction 2a/lambda = (2/pi) arcsin(sqrt(p/p*)), within two cells (1/64),
-/// and the crest pressure 2 sqrt(p p*) within 0.5 %; the same surface read from an SDF
+/// and the crest pressure 2 sqrt(p p*) within 0.5 %; the map's rms height and slope; the same
+/// surface read from an SDF
 /// and an .xyz file gives the same rows.
 #[test]
 fn wavy_surface_against_westergaard() {
@@ -56,6 +57,17 @@ fn wavy_surface_against_westergaard() {
     std::fs::write(dir.join("wavy.toml"), case).unwrap();
     let v = run_json(&["rough", dir.join("wavy.toml").to_str().unwrap()]);
     assert_eq!(v["surface"], "map");
+    // The map's roughness: rms height D/sqrt 2 (whole periods, 1e-12); rms slope by central
+    // differences, the slope amplitude 2 pi D/lambda times sin(k dx)/(k dx), over sqrt 2 (1e-9).
+    let k = 2.0 * std::f64::consts::PI / lambda;
+    let kdx = k * lambda / n as f64;
+    assert!((num(&v["rms_height_mm"]) / (d / 2f64.sqrt()) - 1.0).abs() < 1e-12);
+    let slope = k * d * kdx.sin() / kdx / 2f64.sqrt();
+    assert!(
+        (num(&v["rms_slope"]) / slope - 1.0).abs() < 1e-9,
+        "{}",
+        v["rms_slope"]
+    );
     assert!((num(&v["e_star_mpa"]) / e_star - 1.0).abs() < 1e-12);
     for (row, f) in v["rows"].as_array().unwrap().iter().zip(fractions) {
         let west = 2.0 / std::f64::consts::PI * f.sqrt().asin();
