@@ -22,12 +22,16 @@
 //!
 //! Units: mm, N, MPa throughout.
 
+mod coupled;
+mod cross;
 pub mod influence;
 mod operator;
 mod shift;
 mod steady;
 
 pub use crate::tangential::KalkerMaterial;
+pub use coupled::{CoupledOptions, CoupledShiftSolver, CoupledSolution};
+pub use cross::CouplingOperator;
 pub use operator::{TangentialOperator, difference_parameter};
 pub use shift::{CellState, ShiftLoad, ShiftOptions, ShiftSolution, ShiftSolver};
 pub use steady::{SteadyOptions, SteadySolution, SteadySolver};
