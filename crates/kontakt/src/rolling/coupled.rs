@@ -23,8 +23,8 @@
 //! for the gap `h + A_n τ` (the half-space solver, [`crate::halfspace::HalfSpaceSolver`],
 //! warm-started); (2) the tangential problem for that pressure with `A_t p - u' + Δδ` as
 //! a per-cell rigid slip (the shift solver's iteration, warm-started); repeated until
-//! the largest change of pressure and of traction over one pass is at most
-//! `tolerance · max p` (tractions: `tolerance · μ max p`). For `K = 0` the coupling
+//! the change of all tractions `(p, τ)` over one pass is at most `tolerance` times their
+//! norm (Euclidean over the cells, as CONTACT's criterion). For `K = 0` the coupling
 //! vanishes and one pass is exact. The status reports the outer termination:
 //! `MaxIterations` at `max_outer`, `Stagnated` when the change has not reached a new low
 //! in `patience` passes, an inner solver's failure as its own termination.
@@ -57,9 +57,9 @@ use crate::units::{Millimetre, Newton};
 /// Options of [`CoupledShiftSolver`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct CoupledOptions {
-    /// Outer tolerance: the largest change of pressure over one pass relative to the
-    /// largest pressure, and of traction relative to `μ` times it. In (0, 1); default
-    /// 1e-6.
+    /// Outer tolerance: the change of the tractions `(p, τ)` over one pass in the
+    /// Euclidean norm over all cells, relative to their norm (as CONTACT's
+    /// `|P_k - P_k-1| <= ε |P_k|`). In (0, 1); default 1e-6.
     pub tolerance: f64,
     /// Most outer passes per step, >= 1 (default 30).
     pub max_outer: usize,
@@ -399,19 +399,17 @@ impl CoupledShiftSolver {
             }
             // (3) The change over the pass.
             let p = self.normal.pressure();
-            let pmax = p.iter().copied().fold(0.0, f64::max);
-            let dp = p
-                .iter()
-                .zip(&self.old_p)
-                .map(|(a, b)| (a - b).abs())
-                .fold(0.0, f64::max);
-            let dt = (0..n)
-                .map(|i| {
-                    (self.tang.tau[0][i] - self.old_tau[0][i])
-                        .hypot(self.tang.tau[1][i] - self.old_tau[1][i])
-                })
-                .fold(0.0, f64::max);
-            change = (dp / pmax).max(dt / (mu * pmax));
+            let (mut num, mut den) = (0.0, 0.0);
+            for i in 0..n {
+                let (dx, dy) = (
+                    self.tang.tau[0][i] - self.old_tau[0][i],
+                    self.tang.tau[1][i] - self.old_tau[1][i],
+                );
+                let dp = p[i] - self.old_p[i];
+                num += dp * dp + dx * dx + dy * dy;
+                den += p[i] * p[i] + self.tang.tau[0][i].powi(2) + self.tang.tau[1][i].powi(2);
+            }
+            change = (num / den).sqrt();
             self.old_p.copy_from_slice(p);
             for k in 0..2 {
                 self.old_tau[k].copy_from_slice(&self.tang.tau[k]);
