@@ -13,7 +13,7 @@
 //! ```
 //!
 //! with `h` the undeformed gap \[mm\], `C` Love's and `A` Cerruti's operators, `A_n` and
-//! `A_t = -A_nᵀ` the coupling, `Δδ` \[mm\] the rigid shift since the previous load step
+//! `A_t = A_nᵀ` (Betti) the coupling, `Δδ` \[mm\] the rigid shift since the previous load step
 //! and `u'` \[mm\] the tangential displacement difference at the previous step: the slip
 //! is the displacement of body 1 relative to body 2 over one step of a quasi-static
 //! loading history (Kalker 1990 §2.2; "shift transient" in CONTACT). The first step
@@ -358,7 +358,10 @@ impl CoupledShiftSolver {
                 *b = mu * pv;
             }
             for k in 0..2 {
-                for ((b, up), u0) in self.base[k].iter_mut().zip(&self.up[k]).zip(&self.prev_u[k])
+                for ((b, up), u0) in self.base[k]
+                    .iter_mut()
+                    .zip(&self.up[k])
+                    .zip(&self.prev_u[k])
                 {
                     *b = up - u0;
                 }

@@ -202,7 +202,11 @@ impl CouplingOperator {
     /// # Errors
     /// [`Error::InvalidInput`] when a length differs from `nx·ny`.
     pub fn normal(&mut self, tx: &[f64], ty: &[f64], un: &mut [f64]) -> Result<()> {
-        self.check(&[("traction_x", tx.len()), ("traction_y", ty.len()), ("u_n", un.len())])?;
+        self.check(&[
+            ("traction_x", tx.len()),
+            ("traction_y", ty.len()),
+            ("u_n", un.len()),
+        ])?;
         self.load(tx);
         self.forward();
         for ((a, t), s) in self.acc.iter_mut().zip(&self.tbuf).zip(&self.spec[0]) {
@@ -316,7 +320,10 @@ mod tests {
                 .map(|(a, b)| a * b)
                 .sum();
             // u_t = -A^T... : with A_xn(x) = -A_nx(x) = A_nx(-x), the transpose.
-            assert!((lhs - rhs).abs() < 1e-12 * lhs.abs().max(rhs.abs()), "{lhs} {rhs}");
+            assert!(
+                (lhs - rhs).abs() < 1e-12 * lhs.abs().max(rhs.abs()),
+                "{lhs} {rhs}"
+            );
         }
     }
 

@@ -174,7 +174,8 @@ pub fn coupling(x: f64, y: f64, dx: f64, dy: f64, g: f64, k: f64) -> f64 {
         // Odd in x: exactly zero on the axis.
         return 0.0;
     }
-    let s = coupling_corner(x + a, y + b) - coupling_corner(x + a, y - b)
+    let s = coupling_corner(x + a, y + b)
+        - coupling_corner(x + a, y - b)
         - coupling_corner(x - a, y + b)
         + coupling_corner(x - a, y - b);
     k / (PI * g) * s
@@ -305,7 +306,13 @@ mod tests {
     #[test]
     fn coupling_matches_quadrature_and_parity() {
         let (g, k, dx, dy) = (8.0e4, 0.2, 1.0, 0.6);
-        for &(x, y) in &[(2.0, 0.3), (-1.7, 0.9), (0.4, -2.2), (-3.0, -3.0), (1.3, 0.0)] {
+        for &(x, y) in &[
+            (2.0, 0.3),
+            (-1.7, 0.9),
+            (0.4, -2.2),
+            (-3.0, -3.0),
+            (1.3, 0.0),
+        ] {
             let c = coupling(x, y, dx, dy, g, k);
             let q = coupling_quadrature(x, y, dx, dy, g, k);
             assert!(((c - q) / q).abs() < 1e-5, "({x}, {y}): {c} vs {q}");
