@@ -403,14 +403,12 @@ impl CoupledShiftSolver {
             // (3) The change over the pass.
             let p = self.normal.pressure();
             let (mut num, mut den) = (0.0, 0.0);
-            for i in 0..n {
-                let (dx, dy) = (
-                    self.tang.tau[0][i] - self.old_tau[0][i],
-                    self.tang.tau[1][i] - self.old_tau[1][i],
-                );
-                let dp = p[i] - self.old_p[i];
+            let [tx, ty] = &self.tang.tau;
+            let [ox, oy] = &self.old_tau;
+            for (i, (pv, po)) in p.iter().zip(&self.old_p).enumerate() {
+                let (dx, dy, dp) = (tx[i] - ox[i], ty[i] - oy[i], pv - po);
                 num += dp * dp + dx * dx + dy * dy;
-                den += p[i] * p[i] + self.tang.tau[0][i].powi(2) + self.tang.tau[1][i].powi(2);
+                den += pv * pv + tx[i] * tx[i] + ty[i] * ty[i];
             }
             change = (num / den).sqrt();
             self.old_p.copy_from_slice(p);
@@ -583,8 +581,8 @@ impl CoupledShiftSolver {
             cross
                 .normal(tx, ty, &mut coupling_gap)
                 .expect("invariant: lengths match the grid");
-            for k in 0..2 {
-                for (a, b) in u[k].iter_mut().zip(&self.up[k]) {
+            for (uk, upk) in u.iter_mut().zip(&self.up) {
+                for (a, b) in uk.iter_mut().zip(upk) {
                     *a += b;
                 }
             }
@@ -616,8 +614,8 @@ impl CoupledShiftSolver {
             self.tang.tau[0].iter().sum::<f64>() * area,
             self.tang.tau[1].iter().sum::<f64>() * area,
         ];
-        for k in 0..2 {
-            self.prev_u[k].copy_from_slice(&u[k]);
+        for (prev, uk) in self.prev_u.iter_mut().zip(&u) {
+            prev.copy_from_slice(uk);
         }
         self.prev_shift = shift;
         let [ux, uy] = u;
