@@ -39,6 +39,11 @@
 //! normal and tangential problems decouple. For dissimilar bodies this neglects the
 //! coupling ([`super::difference_parameter`] reports its size).
 //!
+//! # Coupling of dissimilar bodies
+//! [`coupling`] gives the normal-tangential coupling coefficient `A_nx = K/(πG) S[X
+//! atan(Y/X) + Y ln ρ]` \[mm/MPa\] (the cell integral of `K X/(πG ρ²)`), used by
+//! [`super::CouplingOperator`] and [`super::CoupledShiftSolver`].
+//!
 //! # References
 //! - Johnson, *Contact Mechanics* (1985), §3.3, eq. (3.86a).
 //! - Kalker, *Three-dimensional elastic bodies in rolling contact* (1990), §1.6 and
