@@ -72,7 +72,9 @@ pub struct CoupledOptions {
     /// The tangential solver's tolerances (its `tolerance` refers to the largest rigid
     /// slip of the step) and, under force control, its shift iteration.
     pub shift: ShiftOptions,
-    /// The normal solver's options (its tolerance should be below `tolerance`).
+    /// The normal solver's options (its tolerance should be below `tolerance`; default:
+    /// the half-space solver's defaults on one thread, which the tangential solver also
+    /// uses).
     pub normal: SolverOptions,
 }
 
@@ -165,7 +167,7 @@ pub struct CoupledSolution {
     /// The last normal solve's report.
     pub normal_report: SolveReport,
     /// The outer loop: termination, passes, and the last relative change (0 after the
-    /// single pass of uncoupled bodies).
+    /// single pass of uncoupled bodies; when an inner solver failed, its residual).
     pub status: SolveStatus,
 }
 
@@ -191,6 +193,8 @@ pub struct CoupledShiftSolver {
     old_p: Vec<f64>,
     old_tau: [Vec<f64>; 2],
     base: [Vec<f64>; 2],
+    /// The last tangential solve's relative residual.
+    inner_residual: f64,
 }
 
 impl CoupledShiftSolver {
@@ -256,6 +260,7 @@ impl CoupledShiftSolver {
             old_p: vec![0.0; n],
             old_tau: z2(),
             base: z2(),
+            inner_residual: 0.0,
         })
     }
 
@@ -345,6 +350,7 @@ impl CoupledShiftSolver {
             report = self.normal.solve(normal_gap, control, Start::Warm)?;
             if report.status.termination != Termination::Converged {
                 termination = report.status.termination;
+                change = report.status.residual;
                 break;
             }
             let p = self.normal.pressure();
@@ -393,6 +399,7 @@ impl CoupledShiftSolver {
             tang_iters += inner.1;
             if inner.0 != Termination::Converged {
                 termination = inner.0;
+                change = self.inner_residual;
                 break;
             }
             if self.cross.is_none() {
@@ -456,6 +463,7 @@ impl CoupledShiftSolver {
         }
         let o = self.options.shift;
         let inner = self.tang.inner_rigid(scale, o.tolerance, o.max_iterations);
+        self.inner_residual = inner.residual;
         (inner.termination, inner.iterations)
     }
 
