@@ -329,7 +329,7 @@ impl CoupledShiftSolver {
         let mut tang_iters = 0;
         let mut best = f64::INFINITY;
         let mut since_best = 0;
-        let mut change = 0.0;
+        let mut change;
         let mut passes = 0;
         let termination;
         let mut report;
