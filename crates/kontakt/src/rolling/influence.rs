@@ -39,6 +39,11 @@
 //! normal and tangential problems decouple. For dissimilar bodies this neglects the
 //! coupling ([`super::difference_parameter`] reports its size).
 //!
+//! # Coupling of dissimilar bodies
+//! [`coupling`] gives the normal-tangential coupling coefficient `A_nx = K/(πG) S[X
+//! atan(Y/X) + Y ln ρ]` \[mm/MPa\] (the cell integral of `K X/(πG ρ²)`), used by
+//! [`super::CouplingOperator`] and [`super::CoupledShiftSolver`].
+//!
 //! # References
 //! - Johnson, *Contact Mechanics* (1985), §3.3, eq. (3.86a).
 //! - Kalker, *Three-dimensional elastic bodies in rolling contact* (1990), §1.6 and
@@ -139,6 +144,46 @@ pub fn quadrant_tables(nx: usize, ny: usize, dx: f64, dy: f64, g: f64, nu: f64) 
         }
     }
     tables
+}
+
+/// The antiderivative `F = X atan(Y/X) + Y ln ρ` of `X/ρ²` (`∂²F/∂X∂Y = X/ρ²`) at one
+/// corner `(X, Y)` \[mm\]; each term 0 where its factor vanishes (its limit). The unit
+/// of the logarithm's argument only adds a function of `Y` alone, which cancels in the
+/// four-corner sum.
+fn coupling_corner(x: f64, y: f64) -> f64 {
+    let fx = if x != 0.0 { x * (y / x).atan() } else { 0.0 };
+    let fy = if y != 0.0 { y * x.hypot(y).ln() } else { 0.0 };
+    fx + fy
+}
+
+/// The normal-tangential coupling coefficient \[mm/MPa\] of dissimilar bodies at the
+/// point `(x, y)` \[mm\] for a uniform traction on the cell `dx × dy` \[mm\] centred on the
+/// origin, combined shear modulus `g` \[MPa\] and Kalker's difference parameter `k`
+/// (see [`super::difference_parameter`]):
+///
+/// ```text
+/// A_nx = K/(πG) ∫∫_cell X/ρ² = K/(πG) S[X atan(Y/X) + Y ln ρ],
+/// ```
+///
+/// the normal displacement sum `u_z1 + u_z2` (positive into the bodies: it opens the
+/// gap) per unit traction `τ_x` on body 1. The same number with the opposite sign is the
+/// tangential displacement difference `u_x = u_x1 - u_x2` per unit pressure:
+/// `A_xn(x, y) = -A_nx(x, y)` (Betti's reciprocity with the field point and the source
+/// exchanged, `A_nx` being odd in `x`). The coefficients for `τ_y` follow with `x` and `y`
+/// exchanged: `A_ny(x, y) = coupling(y, x, dy, dx, g, k)`. `A_nx` is odd in `x`, even in
+/// `y`, and 0 on the axis `x = 0`. Derivation: docs/rolling.md §9.
+#[must_use]
+pub fn coupling(x: f64, y: f64, dx: f64, dy: f64, g: f64, k: f64) -> f64 {
+    let (a, b) = (0.5 * dx, 0.5 * dy);
+    if x == 0.0 {
+        // Odd in x: exactly zero on the axis.
+        return 0.0;
+    }
+    let s = coupling_corner(x + a, y + b)
+        - coupling_corner(x + a, y - b)
+        - coupling_corner(x - a, y + b)
+        + coupling_corner(x - a, y - b);
+    k / (PI * g) * s
 }
 
 #[cfg(test)]
@@ -246,5 +291,66 @@ mod tests {
         assert!(((c.xx - ux) / ux).abs() < 1e-5);
         assert!(((c.xy - uy) / uy).abs() < 1e-5);
         assert!(((c.yy - vx) / vx).abs() < 1e-5);
+    }
+    /// Midpoint quadrature of `K/(πG) X/ρ²` over the cell (the coupling's point-force
+    /// kernel), for points outside the cell.
+    fn coupling_quadrature(x: f64, y: f64, dx: f64, dy: f64, g: f64, k: f64) -> f64 {
+        let n = 400;
+        let (hx, hy) = (dx / n as f64, dy / n as f64);
+        let mut s = 0.0;
+        for i in 0..n {
+            for j in 0..n {
+                let xx = x - (-0.5 * dx + (i as f64 + 0.5) * hx);
+                let yy = y - (-0.5 * dy + (j as f64 + 0.5) * hy);
+                s += xx / (xx * xx + yy * yy);
+            }
+        }
+        s * hx * hy * k / (PI * g)
+    }
+
+    #[test]
+    fn coupling_matches_quadrature_and_parity() {
+        let (g, k, dx, dy) = (8.0e4, 0.2, 1.0, 0.6);
+        for &(x, y) in &[
+            (2.0, 0.3),
+            (-1.7, 0.9),
+            (0.4, -2.2),
+            (-3.0, -3.0),
+            (1.3, 0.0),
+        ] {
+            let c = coupling(x, y, dx, dy, g, k);
+            let q = coupling_quadrature(x, y, dx, dy, g, k);
+            assert!(((c - q) / q).abs() < 1e-5, "({x}, {y}): {c} vs {q}");
+            // Odd in x, even in y.
+            assert!((coupling(-x, y, dx, dy, g, k) + c).abs() <= 1e-14 * c.abs());
+            assert!((coupling(x, -y, dx, dy, g, k) - c).abs() <= 1e-14 * c.abs());
+        }
+        // Inside the cell the integrand is singular but integrable: the neighbouring
+        // cell's coefficient equals quadrature, and the own cell's is 0 by symmetry.
+        assert_eq!(coupling(0.0, 0.0, dx, dy, g, k), 0.0);
+        assert_eq!(coupling(0.0, 1.2, dx, dy, g, k), 0.0);
+        // Sign: ahead of a traction in +x (x > 0) the gap opens for K > 0.
+        assert!(coupling(1.0, 0.0, dx, dy, g, k) > 0.0);
+        // Linear in K, inverse in G.
+        let c = coupling(1.5, 0.5, dx, dy, g, k);
+        assert!((coupling(1.5, 0.5, dx, dy, 2.0 * g, -k) + 0.5 * c).abs() < 1e-15 * c.abs());
+    }
+
+    #[test]
+    fn coupling_far_field_and_adjacent_cell() {
+        // Far away the cell acts as the point force τ dx dy: K/(πG) X/ρ² dx dy.
+        let (dx, dy, g, k) = (0.1, 0.2, 8.0e4, 0.3);
+        let (x, y): (f64, f64) = (30.0, -40.0);
+        let c = coupling(x, y, dx, dy, g, k);
+        let point = k / (PI * g) * x / (x * x + y * y) * dx * dy;
+        assert!(((c - point) / point).abs() < 1e-5, "{c} vs {point}");
+        // The adjacent cell along x: closed form of the strip integral
+        // ∫_{a}^{3a} ∫_{-b}^{b} X/ρ² dY dX = [2X atan(b/X) + b ln(X² + b²)]_{a}^{3a},
+        // with a = dx/2, b = dy/2.
+        let (a, b) = (0.5 * dx, 0.5 * dy);
+        let f = |xx: f64| 2.0 * xx * (b / xx).atan() + b * (xx * xx + b * b).ln();
+        let exact = k / (PI * g) * (f(3.0 * a) - f(a));
+        let c = coupling(dx, 0.0, dx, dy, g, k);
+        assert!(((c - exact) / exact).abs() < 1e-13, "{c} vs {exact}");
     }
 }

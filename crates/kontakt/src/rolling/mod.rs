@@ -16,18 +16,27 @@
 //!   upwind, the rolling step one cell), as Kalker's transient steps marched to the
 //!   steady state; creep forces, spin moment, stick/slip map and slip.
 //!
-//! Not yet here: the normal-tangential coupling of dissimilar bodies (`K ≠ 0`), the
-//! speed targets of issue 17, Carter's and Kalker's published creep curves as tests, and
-//! the `kontakt traction` model. Method and validation: docs/rolling.md.
+//! - [`CoupledShiftSolver`]: the shift problem of dissimilar bodies (Kalker's
+//!   difference parameter `K ≠ 0`), the normal and tangential problems coupled through
+//!   [`CouplingOperator`] and solved by an outer loop along a loading history (Spence's
+//!   compression with friction is the special case without shift).
+//!
+//! Not yet here: the coupling in steady rolling, the speed targets of issue 17, Kalker's
+//! published creep curves as tests, and the `kontakt traction` model. Method and
+//! validation: docs/rolling.md.
 //!
 //! Units: mm, N, MPa throughout.
 
+mod coupled;
+mod cross;
 pub mod influence;
 mod operator;
 mod shift;
 mod steady;
 
 pub use crate::tangential::KalkerMaterial;
+pub use coupled::{CoupledOptions, CoupledShiftSolver, CoupledSolution};
+pub use cross::CouplingOperator;
 pub use operator::{TangentialOperator, difference_parameter};
 pub use shift::{CellState, ShiftLoad, ShiftOptions, ShiftSolution, ShiftSolver};
 pub use steady::{SteadyOptions, SteadySolution, SteadySolver};
