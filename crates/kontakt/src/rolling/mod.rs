@@ -23,6 +23,7 @@
 //! Units: mm, N, MPa throughout.
 
 pub mod influence;
+mod newton;
 mod operator;
 mod shift;
 mod steady;
@@ -30,4 +31,4 @@ mod steady;
 pub use crate::tangential::KalkerMaterial;
 pub use operator::{TangentialOperator, difference_parameter};
 pub use shift::{CellState, ShiftLoad, ShiftOptions, ShiftSolution, ShiftSolver};
-pub use steady::{SteadyOptions, SteadySolution, SteadySolver};
+pub use steady::{SteadyMethod, SteadyOptions, SteadySolution, SteadySolver};

@@ -47,6 +47,7 @@
 //! Kalker, *Three-dimensional elastic bodies in rolling contact* (1990), ch. 2 and 5;
 //! Johnson (1985) §8.
 
+use super::newton::{NewtonSettings, SteadyNewton};
 use super::shift::{CellState, ShiftSolver, project};
 use crate::error::{Error, Result};
 use crate::geometry::Grid2;
@@ -60,18 +61,39 @@ const INITIAL_STEP_TOLERANCE: f64 = 1e-3;
 /// A step's tolerance is this times the last step's relative traction change.
 const STEP_TOLERANCE_FACTOR: f64 = 0.1;
 
+/// The method of [`SteadySolver::solve`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
+pub enum SteadyMethod {
+    /// Semismooth Newton on the steady equations, GMRES with the row-block
+    /// preconditioner (the default; see the module docs).
+    #[default]
+    Newton,
+    /// Kalker's transient rolling steps marched to the steady state (the reference,
+    /// slow: seconds at 32 × 32 cells).
+    Marching,
+}
+
 /// Tolerances and limits of [`SteadySolver::solve`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SteadyOptions {
-    /// Tolerance of each step's shift problem, relative to `max |ω| dx`. Default 1e-8.
+    /// Relative tolerance, on the slip in stick cells relative to `max |ω| dx` (Newton:
+    /// the residual of the steady equations; marching: each step's shift problem).
+    /// Default 1e-8.
     pub tolerance: f64,
-    /// Most FFT iterations per step. Default 20 000.
+    /// Newton: most FFT applications of `A` in all; marching: most FFT iterations per
+    /// step. Default 20 000.
     pub max_iterations: usize,
-    /// Steady when the largest traction change of a step is below this times `μ max p`.
-    /// Default 1e-7.
+    /// Marching only: steady when the largest traction change of a step is below this
+    /// times `μ max p`. Default 1e-7.
     pub steady_tolerance: f64,
-    /// Most rolling steps. Default 2000.
+    /// Marching only: most rolling steps. Default 2000.
     pub max_steps: usize,
+    /// The method. Default [`SteadyMethod::Newton`].
+    pub method: SteadyMethod,
+    /// Newton only: most Newton iterations. Default 100.
+    pub max_newton_iterations: usize,
 }
 
 impl Default for SteadyOptions {
@@ -81,6 +103,8 @@ impl Default for SteadyOptions {
             max_iterations: 20_000,
             steady_tolerance: 1e-7,
             max_steps: 2000,
+            method: SteadyMethod::Newton,
+            max_newton_iterations: 100,
         }
     }
 }
@@ -108,10 +132,15 @@ pub struct SteadySolution {
     pub stick_cells: usize,
     /// Cells in slip.
     pub slip_cells: usize,
-    /// FFT iterations over all steps.
+    /// FFT applications of `A` (Newton: residuals and GMRES products; marching: the
+    /// iterations over all steps).
     pub fft_iterations: usize,
-    /// Termination (converged: steady, and every step converged), rolling steps, and
-    /// the last step's traction change relative to `μ max p`.
+    /// GMRES iterations over all Newton iterations (0 for marching).
+    pub linear_iterations: usize,
+    /// Newton: termination, Newton iterations and the final relative residual (see the
+    /// module docs). Marching: termination (converged: steady, and every step
+    /// converged), rolling steps, and the last step's traction change relative to
+    /// `μ max p`.
     pub status: SolveStatus,
 }
 
@@ -120,6 +149,7 @@ pub struct SteadySolution {
 #[derive(Debug)]
 pub struct SteadySolver {
     core: ShiftSolver,
+    newton: SteadyNewton,
     grid: Grid2,
     /// The previous step's displacements \[mm\].
     last: [Vec<f64>; 2],
@@ -140,8 +170,17 @@ impl SteadySolver {
         }
         let core = ShiftSolver::new(grid, material, threads)?;
         let n = grid.len();
+        let newton = SteadyNewton::new(
+            grid.nx(),
+            grid.ny(),
+            grid.dx(),
+            grid.dy(),
+            material.shear_modulus,
+            material.poisson_ratio,
+        );
         Ok(SteadySolver {
             core,
+            newton,
             grid: *grid,
             last: [vec![0.0; n], vec![0.0; n]],
             before: [vec![0.0; n], vec![0.0; n]],
@@ -205,6 +244,7 @@ impl SteadySolver {
         for (field, v) in [
             ("max_iterations", options.max_iterations),
             ("max_steps", options.max_steps),
+            ("max_newton_iterations", options.max_newton_iterations),
         ] {
             if v == 0 {
                 return Err(Error::invalid(field, v, "at least 1"));
@@ -239,6 +279,46 @@ impl SteadySolver {
                     scale = scale.max(w[0].hypot(w[1]) * dx);
                 }
             }
+        }
+        if options.method == SteadyMethod::Newton {
+            let grid = self.grid;
+            let rigid = |c: usize| {
+                let w = omega(c % nx, c / nx, &grid);
+                [w[0] * dx, w[1] * dx]
+            };
+            let (termination, iterations, residual, fft, linear) = if scale > 0.0 {
+                let settings = NewtonSettings {
+                    tolerance: options.tolerance,
+                    max_newton: options.max_newton_iterations,
+                    max_fft: options.max_iterations,
+                };
+                let (op, bound, tau) = self.core.parts_mut();
+                let out = self.newton.solve(
+                    op,
+                    bound,
+                    rigid,
+                    tau,
+                    &mut self.last,
+                    scale,
+                    &settings,
+                );
+                (out.termination, out.newton, out.residual, out.fft, out.gmres)
+            } else {
+                // No creepage: no traction.
+                for t in self.core.tau.iter_mut() {
+                    t.fill(0.0);
+                }
+                (Termination::Converged, 0, 0.0, 0, 0)
+            };
+            // `last` holds the slip distances s [mm] of the loaded cells.
+            return Ok(self.collect(
+                scale,
+                normal_force,
+                |s: &Self, k| [s.last[0][k] / dx, s.last[1][k] / dx],
+                fft,
+                linear,
+                SolveStatus::new(termination, iterations, residual),
+            ));
         }
         // The warm start, projected onto the new discs, and its displacements.
         {
@@ -298,7 +378,36 @@ impl SteadySolver {
                 .tolerance
                 .max(inner_tolerance.min(STEP_TOLERANCE_FACTOR * change));
         }
-        // Collect: the slip of the last step per unit rolling distance.
+        let status = SolveStatus::new(termination, steps, change);
+        Ok(self.collect(
+            scale,
+            normal_force,
+            |s: &Self, k| {
+                [
+                    (s.core.rigid[0][k] + s.last[0][k]) / dx,
+                    (s.core.rigid[1][k] + s.last[1][k]) / dx,
+                ]
+            },
+            fft,
+            0,
+            status,
+        ))
+    }
+
+    /// The solution from the stored tractions; `slip(self, cell)` is the slip per unit
+    /// rolling distance of a slipping cell.
+    fn collect(
+        &self,
+        scale: f64,
+        normal_force: f64,
+        slip: impl Fn(&Self, usize) -> [f64; 2],
+        fft: usize,
+        linear: usize,
+        status: SolveStatus,
+    ) -> SteadySolution {
+        let (nx, ny) = (self.grid.nx(), self.grid.ny());
+        let n = nx * ny;
+        let area = self.grid.cell_area();
         let mut state = vec![CellState::Exterior; n];
         let (mut slip_x, mut slip_y) = (vec![0.0; n], vec![0.0; n]);
         let (mut stick_cells, mut slip_cells) = (0, 0);
@@ -318,15 +427,14 @@ impl SteadySolver {
                 if tx.hypot(ty) >= b * (1.0 - 1e-9) && scale > 0.0 {
                     state[k] = CellState::Slip;
                     slip_cells += 1;
-                    slip_x[k] = (core.rigid[0][k] + self.last[0][k]) / dx;
-                    slip_y[k] = (core.rigid[1][k] + self.last[1][k]) / dx;
+                    [slip_x[k], slip_y[k]] = slip(self, k);
                 } else {
                     state[k] = CellState::Stick;
                     stick_cells += 1;
                 }
             }
         }
-        Ok(SteadySolution {
+        SteadySolution {
             traction_x: core.tau[0].clone(),
             traction_y: core.tau[1].clone(),
             slip_x,
@@ -338,7 +446,8 @@ impl SteadySolver {
             stick_cells,
             slip_cells,
             fft_iterations: fft,
-            status: SolveStatus::new(termination, steps, change),
-        })
+            linear_iterations: linear,
+            status,
+        }
     }
 }
