@@ -27,6 +27,7 @@ mod newton;
 mod operator;
 mod shift;
 mod steady;
+mod steady_fft;
 
 pub use crate::tangential::KalkerMaterial;
 pub use operator::{TangentialOperator, difference_parameter};

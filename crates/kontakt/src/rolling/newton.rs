@@ -53,12 +53,16 @@
 //! Walker (1996) for the forcing terms; Kalker (1990) ch. 5 for the discretisation.
 
 use super::influence::cerruti;
-use super::operator::TangentialOperator;
 use super::shift::project;
+use super::steady_fft::SteadyFft;
 use crate::solve::Termination;
 
 /// The Krylov dimension of the restarted GMRES.
 const RESTART: usize = 40;
+
+/// A row's factorisation is renewed when a slip direction in it turned by more than this
+/// (the chord of the unit circle, about radians).
+const REFACTOR_TURN: f64 = 0.2;
 
 /// Most halvings of the Newton step in the line search.
 const MAX_HALVINGS: usize = 6;
@@ -91,6 +95,8 @@ pub(super) struct NewtonOutcome {
 #[derive(Debug)]
 pub(super) struct SteadyNewton {
     nx: usize,
+    /// `B = (I − S) A` by FFT.
+    op: SteadyFft,
     /// `b(m) = A(m, 0) − A(m + 1, 0)` for `xx` and `yy` \[mm/MPa\], index `m + nx`.
     bx: Vec<f64>,
     by: Vec<f64>,
@@ -103,6 +109,16 @@ pub(super) struct SteadyNewton {
     blk_off: Vec<usize>,
     lu: Vec<f64>,
     piv: Vec<usize>,
+    /// The linearisation each row was last factorised with (slip flag and normal per
+    /// cell), and whether that factorisation is valid for the current cells.
+    factored_slip: Vec<bool>,
+    factored_normal: Vec<[f64; 2]>,
+    row_valid: Vec<bool>,
+    /// The unknown cells of the previous solve (the factorisations are kept when the
+    /// cells and bounds are unchanged).
+    last_cells: Vec<usize>,
+    /// Rows factorised (a count for the statistics).
+    factorisations: usize,
     /// Per unknown cell: bound, slip flag, κ and n of the linearisation.
     g: Vec<f64>,
     slip: Vec<bool>,
@@ -147,6 +163,7 @@ impl SteadyNewton {
         let n = nx * ny;
         SteadyNewton {
             nx,
+            op: SteadyFft::new(nx, ny, dx, dy, g, nu),
             bx,
             by,
             r,
@@ -155,6 +172,11 @@ impl SteadyNewton {
             blk_off: vec![0; ny + 1],
             lu: Vec::new(),
             piv: Vec::new(),
+            factored_slip: Vec::with_capacity(n),
+            factored_normal: Vec::with_capacity(n),
+            row_valid: vec![false; ny],
+            last_cells: Vec::with_capacity(n),
+            factorisations: 0,
             g: Vec::with_capacity(n),
             slip: Vec::with_capacity(n),
             kappa: Vec::with_capacity(n),
@@ -188,7 +210,6 @@ impl SteadyNewton {
     #[allow(clippy::too_many_arguments)]
     pub(super) fn solve(
         &mut self,
-        op: &mut TangentialOperator,
         bound: &[f64],
         rigid: impl Fn(usize) -> [f64; 2],
         tau: &mut [Vec<f64>; 2],
@@ -262,12 +283,23 @@ impl SteadyNewton {
         for f in self.grid_t.iter_mut() {
             f.fill(0.0);
         }
+        // Keep the row factorisations while the loaded cells are the same.
+        if self.cells != self.last_cells {
+            self.row_valid.fill(false);
+            self.last_cells.clear();
+            self.last_cells.extend_from_slice(&self.cells);
+            self.factored_slip.clear();
+            self.factored_slip.resize(nc, false);
+            self.factored_normal.clear();
+            self.factored_normal.resize(nc, [0.0, 0.0]);
+        }
+        self.factorisations = 0;
         let mut fft = 0;
         let mut gmres_total = 0;
         let norm_scale = 1.0 / (self.r * scale);
         // F at the start.
         fft += 1;
-        let mut residual = self.evaluate(op, false) * norm_scale;
+        let mut residual = self.evaluate(false) * norm_scale;
         let mut merit = norm2(&self.f);
         let mut newton = 0;
         let termination = loop {
@@ -286,7 +318,7 @@ impl SteadyNewton {
             // -F as the right side; GMRES for J Δ = -F.
             let eta = 0.1f64.min(residual.max(0.1 * settings.tolerance / residual));
             let budget = settings.max_fft.saturating_sub(fft).max(1);
-            let (its, products) = self.gmres(op, eta, budget);
+            let (its, products) = self.gmres(eta, budget);
             gmres_total += its;
             fft += products;
             // Backtracking on |F|.
@@ -297,7 +329,7 @@ impl SteadyNewton {
                     self.trial[k] = self.tau[k] + alpha * self.delta[k];
                 }
                 fft += 1;
-                let r = self.evaluate(op, true);
+                let r = self.evaluate(true);
                 let m = norm2(&self.f_trial);
                 if m <= (1.0 - 1e-4 * alpha) * merit || halving == MAX_HALVINGS || !m.is_finite()
                 {
@@ -341,9 +373,9 @@ impl SteadyNewton {
         }
     }
 
-    /// `out = B v` (one FFT application of `A`).
+    /// `out = B v` (one FFT application).
     fn apply_b(
-        op: &mut TangentialOperator,
+        op: &mut SteadyFft,
         cells: &[usize],
         grid_t: &mut [Vec<f64>; 2],
         grid_u: &mut [Vec<f64>; 2],
@@ -356,18 +388,16 @@ impl SteadyNewton {
         }
         let [tx, ty] = &*grid_t;
         let [ux, uy] = grid_u;
-        op.apply(tx, ty, ux, uy)
-            .expect("invariant: lengths match the grid");
+        op.apply([tx, ty], [ux, uy]);
         for (k, &c) in cells.iter().enumerate() {
-            // Loaded cells are never in the leading-edge column: c + 1 is on the grid.
-            out[2 * k] = ux[c] - ux[c + 1];
-            out[2 * k + 1] = uy[c] - uy[c + 1];
+            out[2 * k] = ux[c];
+            out[2 * k + 1] = uy[c];
         }
     }
 
     /// `s = ω dx + B τ` and `F(τ)` at `τ` (or at the trial point into the trial
     /// arrays); returns `max_i |F_i|`.
-    fn evaluate(&mut self, op: &mut TangentialOperator, trial: bool) -> f64 {
+    fn evaluate(&mut self, trial: bool) -> f64 {
         let (tau, mut s, mut f) = if trial {
             (
                 std::mem::take(&mut self.trial),
@@ -381,7 +411,7 @@ impl SteadyNewton {
                 std::mem::take(&mut self.f),
             )
         };
-        let worst = self.evaluate_into(op, &tau, &mut s, &mut f);
+        let worst = self.evaluate_into(&tau, &mut s, &mut f);
         if trial {
             (self.trial, self.s_trial, self.f_trial) = (tau, s, f);
         } else {
@@ -392,12 +422,18 @@ impl SteadyNewton {
 
     fn evaluate_into(
         &mut self,
-        op: &mut TangentialOperator,
         tau: &[f64],
         s: &mut [f64],
         f: &mut [f64],
     ) -> f64 {
-        Self::apply_b(op, &self.cells, &mut self.grid_t, &mut self.grid_u, tau, s);
+        Self::apply_b(
+            &mut self.op,
+            &self.cells,
+            &mut self.grid_t,
+            &mut self.grid_u,
+            tau,
+            s,
+        );
         let rigid = &self.rigid;
         let r = self.r;
         let mut worst: f64 = 0.0;
@@ -457,7 +493,10 @@ impl SteadyNewton {
         }
     }
 
-    /// Factorise the row blocks of the Jacobian (LU with partial pivoting).
+    /// Factorise the row blocks of the Jacobian (LU with partial pivoting) where the
+    /// linearisation changed since the row's last factorisation: a cell changed between
+    /// stick and slip, or a slip direction turned by more than [`REFACTOR_TURN`]. The
+    /// other rows keep their factors (a preconditioner need not be exact).
     fn factor(&mut self) {
         let nx = self.nx;
         let r = self.r;
@@ -467,6 +506,23 @@ impl SteadyNewton {
             let nr = c1 - c0;
             if nr == 0 {
                 continue;
+            }
+            let stale = !self.row_valid[j]
+                || (c0..c1).any(|k| {
+                    self.slip[k] != self.factored_slip[k]
+                        || (self.slip[k] && {
+                            let (a, b) = (self.normal[k], self.factored_normal[k]);
+                            (a[0] - b[0]).hypot(a[1] - b[1]) > REFACTOR_TURN
+                        })
+                });
+            if !stale {
+                continue;
+            }
+            self.row_valid[j] = true;
+            self.factorisations += 1;
+            for k in c0..c1 {
+                self.factored_slip[k] = self.slip[k];
+                self.factored_normal[k] = self.normal[k];
             }
             let m = 2 * nr;
             let blk = &mut self.lu[self.blk_off[j]..self.blk_off[j] + m * m];
@@ -522,7 +578,7 @@ impl SteadyNewton {
     /// Restarted, right-preconditioned GMRES for `J Δ = −F` into `delta`, from 0, to the
     /// relative tolerance `eta`; at most `budget` products. Returns (iterations,
     /// products).
-    fn gmres(&mut self, op: &mut TangentialOperator, eta: f64, budget: usize) -> (usize, usize) {
+    fn gmres(&mut self, eta: f64, budget: usize) -> (usize, usize) {
         let len = 2 * self.cells.len();
         self.delta[..len].fill(0.0);
         let beta0 = norm2(&self.f);
@@ -556,7 +612,7 @@ impl SteadyNewton {
                 self.precondition(&mut z);
                 let mut bz = std::mem::take(&mut self.s_trial);
                 Self::apply_b(
-                    op,
+                    &mut self.op,
                     &self.cells,
                     &mut self.grid_t,
                     &mut self.grid_u,
@@ -647,7 +703,7 @@ impl SteadyNewton {
             let delta = std::mem::take(&mut self.delta);
             let mut bz = std::mem::take(&mut self.s_trial);
             Self::apply_b(
-                op,
+                &mut self.op,
                 &self.cells,
                 &mut self.grid_t,
                 &mut self.grid_u,
@@ -712,8 +768,8 @@ fn lu_factor(a: &mut [f64], m: usize, piv: &mut [usize]) {
             let l = row[k] * inv;
             row[k] = l;
             if l != 0.0 {
-                for c in k + 1..m {
-                    row[c] -= l * pivot_row[c];
+                for (a, p) in row[k + 1..].iter_mut().zip(&pivot_row[k + 1..]) {
+                    *a -= l * p;
                 }
             }
         }

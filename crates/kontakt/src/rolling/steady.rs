@@ -292,9 +292,8 @@ impl SteadySolver {
                     max_newton: options.max_newton_iterations,
                     max_fft: options.max_iterations,
                 };
-                let (op, bound, tau) = self.core.parts_mut();
+                let (_, bound, tau) = self.core.parts_mut();
                 let out = self.newton.solve(
-                    op,
                     bound,
                     rigid,
                     tau,
