@@ -137,6 +137,11 @@ pub(super) struct SteadyNewton {
     z: Vec<f64>,
     /// GMRES: basis `(m + 1) × 2N`, Hessenberg `(m + 1) × m`, rotations, right side.
     basis: Vec<f64>,
+    /// The preconditioned vectors `z_j = M⁻¹ v_j` and their products `B z_j`.
+    zbasis: Vec<f64>,
+    bzbasis: Vec<f64>,
+    /// `B Δ` of the last GMRES solution.
+    bdelta: Vec<f64>,
     hess: Vec<f64>,
     cs: Vec<f64>,
     sn: Vec<f64>,
@@ -192,6 +197,9 @@ impl SteadyNewton {
             w: Vec::new(),
             z: Vec::new(),
             basis: Vec::new(),
+            zbasis: Vec::new(),
+            bzbasis: Vec::new(),
+            bdelta: Vec::new(),
             hess: vec![0.0; (RESTART + 1) * RESTART],
             cs: vec![0.0; RESTART],
             sn: vec![0.0; RESTART],
@@ -254,14 +262,17 @@ impl SteadyNewton {
             &mut self.f_trial,
             &mut self.w,
             &mut self.z,
+            &mut self.bdelta,
         ] {
             v.resize(len, 0.0);
         }
         if self.piv.len() < len {
             self.piv.resize(len, 0);
         }
-        if self.basis.len() < (RESTART + 1) * len {
-            self.basis.resize((RESTART + 1) * len, 0.0);
+        for b in [&mut self.basis, &mut self.zbasis, &mut self.bzbasis] {
+            if b.len() < (RESTART + 1) * len {
+                b.resize((RESTART + 1) * len, 0.0);
+            }
         }
         self.g.clear();
         self.slip.clear();
@@ -325,11 +336,12 @@ impl SteadyNewton {
             let mut alpha = 1.0;
             let mut accepted = false;
             for halving in 0..=MAX_HALVINGS {
+                // s is linear in τ: s(τ + αΔ) = s + α BΔ, no FFT.
                 for k in 0..len {
                     self.trial[k] = self.tau[k] + alpha * self.delta[k];
+                    self.s_trial[k] = self.s[k] + alpha * self.bdelta[k];
                 }
-                fft += 1;
-                let r = self.evaluate(true);
+                let r = self.residual_of(true);
                 let m = norm2(&self.f_trial);
                 if m <= (1.0 - 1e-4 * alpha) * merit || halving == MAX_HALVINGS || !m.is_finite()
                 {
@@ -344,6 +356,13 @@ impl SteadyNewton {
                 alpha *= 0.5;
             }
             debug_assert!(accepted);
+            if residual <= settings.tolerance {
+                // Confirm with the slip evaluated afresh (the updates accumulate
+                // round-off).
+                fft += 1;
+                residual = self.evaluate(false) * norm_scale;
+                merit = norm2(&self.f);
+            }
         };
         // The last projection τ ← P(τ − r s) = τ − F: slip cells exactly on their disc.
         for v in slip.iter_mut() {
@@ -434,21 +453,49 @@ impl SteadyNewton {
             tau,
             s,
         );
-        let rigid = &self.rigid;
+        for (a, w) in s.iter_mut().zip(&self.rigid) {
+            *a += w;
+        }
+        self.residual_into(tau, s, f)
+    }
+
+    /// `F` at `τ` (or the trial point) from the stored `s`; returns `max_i |F_i|`.
+    fn residual_of(&mut self, trial: bool) -> f64 {
+        let (tau, s, mut f) = if trial {
+            (
+                std::mem::take(&mut self.trial),
+                std::mem::take(&mut self.s_trial),
+                std::mem::take(&mut self.f_trial),
+            )
+        } else {
+            (
+                std::mem::take(&mut self.tau),
+                std::mem::take(&mut self.s),
+                std::mem::take(&mut self.f),
+            )
+        };
+        let worst = self.residual_into(&tau, &s, &mut f);
+        if trial {
+            (self.trial, self.s_trial, self.f_trial) = (tau, s, f);
+        } else {
+            (self.tau, self.s, self.f) = (tau, s, f);
+        }
+        worst
+    }
+
+    fn residual_into(&self, tau: &[f64], s: &[f64], f: &mut [f64]) -> f64 {
         let r = self.r;
         let mut worst: f64 = 0.0;
         for k in 0..self.cells.len() {
-            let (sx, sy) = (s[2 * k] + rigid[2 * k], s[2 * k + 1] + rigid[2 * k + 1]);
-            s[2 * k] = sx;
-            s[2 * k + 1] = sy;
+            let (sx, sy) = (s[2 * k], s[2 * k + 1]);
             let (tx, ty) = (tau[2 * k], tau[2 * k + 1]);
-            let (px, py) = project(tx - r * sx, ty - r * sy, self.g[k]);
+            let (px, py) = fast_project(tx - r * sx, ty - r * sy, self.g[k]);
             let (fx, fy) = (tx - px, ty - py);
             f[2 * k] = fx;
             f[2 * k + 1] = fy;
-            worst = worst.max(fx.hypot(fy));
+            worst = worst.max(fx * fx + fy * fy);
         }
-        worst
+        worst.sqrt()
     }
 
     /// The linearisation at the current `τ`, `s`: slip flags, `κ` and `n` per cell.
@@ -457,13 +504,13 @@ impl SteadyNewton {
         for k in 0..self.cells.len() {
             let zx = self.tau[2 * k] - r * self.s[2 * k];
             let zy = self.tau[2 * k + 1] - r * self.s[2 * k + 1];
-            let m = zx.hypot(zy);
+            let m = (zx * zx + zy * zy).sqrt();
             let g = self.g[k];
             if m <= g {
                 self.slip[k] = false;
             } else {
                 self.slip[k] = true;
-                let (nx_, ny_) = project(zx, zy, 1.0);
+                let (nx_, ny_) = fast_project(zx, zy, 1.0);
                 self.normal[k] = [nx_, ny_];
                 self.kappa[k] = if m.is_finite() { g / m } else { 0.0 };
             }
@@ -575,56 +622,56 @@ impl SteadyNewton {
         }
     }
 
-    /// Restarted, right-preconditioned GMRES for `J Δ = −F` into `delta`, from 0, to the
-    /// relative tolerance `eta`; at most `budget` products. Returns (iterations,
+    /// Restarted, right-preconditioned GMRES for `J Δ = −F` into `delta` (and `B Δ`
+    /// into `bdelta`), from 0, to the relative tolerance `eta`; at most `budget`
+    /// products. The preconditioned vectors and their `B` products are kept, so `Δ`,
+    /// `B Δ` and the restart residual cost no further FFT. Returns (iterations,
     /// products).
     fn gmres(&mut self, eta: f64, budget: usize) -> (usize, usize) {
         let len = 2 * self.cells.len();
         self.delta[..len].fill(0.0);
+        self.bdelta[..len].fill(0.0);
         let beta0 = norm2(&self.f);
         if !(beta0 > 0.0) {
             return (0, 0);
         }
         let target = eta * beta0;
         let mut products = 0;
-        let mut iterations = 0;
         // The residual of the current Δ, in `w` (first: −F).
         for k in 0..len {
             self.w[k] = -self.f[k];
         }
         let mut beta = beta0;
         loop {
-            // v_0 = w/β.
             for k in 0..len {
                 self.basis[k] = self.w[k] / beta;
             }
             self.gv.fill(0.0);
             self.gv[0] = beta;
             let mut used = 0;
-            let mut done = false;
             for jcol in 0..RESTART {
                 if products >= budget {
                     break;
                 }
-                // z = M⁻¹ v_j; w = J z.
-                self.z.copy_from_slice(&self.basis[jcol * len..(jcol + 1) * len]);
-                let mut z = std::mem::take(&mut self.z);
-                self.precondition(&mut z);
-                let mut bz = std::mem::take(&mut self.s_trial);
+                // z_j = M⁻¹ v_j; B z_j; w = J z_j.
+                let (zj, bzj) = (jcol * len..(jcol + 1) * len, jcol * len..(jcol + 1) * len);
+                let mut z = std::mem::take(&mut self.zbasis);
+                z[zj.clone()].copy_from_slice(&self.basis[jcol * len..(jcol + 1) * len]);
+                self.precondition(&mut z[zj.clone()]);
+                let mut bz = std::mem::take(&mut self.bzbasis);
                 Self::apply_b(
                     &mut self.op,
                     &self.cells,
                     &mut self.grid_t,
                     &mut self.grid_u,
-                    &z,
-                    &mut bz,
+                    &z[zj.clone()],
+                    &mut bz[bzj.clone()],
                 );
                 let mut w = std::mem::take(&mut self.w);
-                self.jacobian_rows(&z, &bz, &mut w);
-                self.z = z;
-                self.s_trial = bz;
+                self.jacobian_rows(&z[zj], &bz[bzj], &mut w);
+                self.zbasis = z;
+                self.bzbasis = bz;
                 products += 1;
-                iterations += 1;
                 // Modified Gram-Schmidt.
                 for i in 0..=jcol {
                     let vi = &self.basis[i * len..(i + 1) * len];
@@ -666,14 +713,13 @@ impl SteadyNewton {
                 self.gv[jcol] *= c;
                 used = jcol + 1;
                 if self.gv[jcol + 1].abs() <= target || hn == 0.0 || !d.is_finite() {
-                    done = true;
                     break;
                 }
             }
             if used == 0 {
                 break;
             }
-            // y = H⁻¹ g (upper triangular), Δ += M⁻¹ V y.
+            // y = H⁻¹ g (upper triangular); Δ += Z y, B Δ += (B Z) y.
             for i in (0..used).rev() {
                 let mut acc = self.gv[i];
                 for l in i + 1..used {
@@ -682,50 +728,45 @@ impl SteadyNewton {
                 let d = self.hess[i * RESTART + i];
                 self.yv[i] = if d != 0.0 { acc / d } else { 0.0 };
             }
-            self.z[..len].fill(0.0);
             for i in 0..used {
                 let yi = self.yv[i];
-                let vi = &self.basis[i * len..(i + 1) * len];
-                for (a, b) in self.z.iter_mut().zip(vi) {
+                let zi = &self.zbasis[i * len..(i + 1) * len];
+                for (a, b) in self.delta.iter_mut().zip(zi) {
+                    *a += yi * b;
+                }
+                let bi = &self.bzbasis[i * len..(i + 1) * len];
+                for (a, b) in self.bdelta.iter_mut().zip(bi) {
                     *a += yi * b;
                 }
             }
-            let mut z = std::mem::take(&mut self.z);
-            self.precondition(&mut z);
-            for (d, a) in self.delta.iter_mut().zip(&z) {
-                *d += a;
-            }
-            self.z = z;
-            if done || products >= budget {
-                break;
-            }
-            // Restart: the true residual w = −F − J Δ.
-            let delta = std::mem::take(&mut self.delta);
-            let mut bz = std::mem::take(&mut self.s_trial);
-            Self::apply_b(
-                &mut self.op,
-                &self.cells,
-                &mut self.grid_t,
-                &mut self.grid_u,
-                &delta,
-                &mut bz,
-            );
+            // The true residual w = −F − J Δ (from B Δ: no FFT).
             let mut w = std::mem::take(&mut self.w);
-            self.jacobian_rows(&delta, &bz, &mut w);
+            self.jacobian_rows(&self.delta, &self.bdelta, &mut w);
             for (a, f) in w.iter_mut().zip(&self.f) {
                 *a = -f - *a;
             }
-            products += 1;
-            self.delta = delta;
-            self.s_trial = bz;
             beta = norm2(&w);
             self.w = w;
             if beta <= target || products >= budget || !(beta > 0.0) {
                 break;
             }
         }
-        (iterations, products)
+        (products, products)
     }
+}
+
+/// [`project`] without `hypot` (its overflow care costs a fifth of the solve): the plain
+/// square root where it is finite, [`project`] otherwise.
+fn fast_project(x: f64, y: f64, b: f64) -> (f64, f64) {
+    let m2 = x * x + y * y;
+    if m2 <= b * b {
+        return (x, y);
+    }
+    if !(m2.is_finite() && m2 > 1e-300) {
+        return project(x, y, b);
+    }
+    let f = b / m2.sqrt();
+    (x * f, y * f)
 }
 
 fn dot(a: &[f64], b: &[f64]) -> f64 {
