@@ -155,6 +155,26 @@ pub struct SteadySolver {
     last: [Vec<f64>; 2],
     /// The previous step's tractions \[MPa\].
     before: [Vec<f64>; 2],
+    /// The creepage and `μ` of the stored tractions (`None` after a reset).
+    warm: Option<(Creepage, f64)>,
+}
+
+/// `λ > 0` with `new = λ old` (the three creepages parallel to 1e-9), else `None`.
+fn creep_ratio(old: Creepage, new: Creepage) -> Option<f64> {
+    let a = [old.longitudinal, old.lateral, old.spin];
+    let b = [new.longitudinal, new.lateral, new.spin];
+    let aa: f64 = a.iter().map(|v| v * v).sum();
+    let ab: f64 = a.iter().zip(&b).map(|(x, y)| x * y).sum();
+    let bb: f64 = b.iter().map(|v| v * v).sum();
+    if !(aa > 0.0 && bb > 0.0 && ab > 0.0 && aa.is_finite() && bb.is_finite()) {
+        return None;
+    }
+    let lambda = ab / aa;
+    let parallel = a
+        .iter()
+        .zip(&b)
+        .all(|(x, y)| (y - lambda * x).abs() <= 1e-9 * bb.sqrt());
+    (parallel && lambda.is_finite()).then_some(lambda)
 }
 
 impl SteadySolver {
@@ -184,12 +204,14 @@ impl SteadySolver {
             grid: *grid,
             last: [vec![0.0; n], vec![0.0; n]],
             before: [vec![0.0; n], vec![0.0; n]],
+            warm: None,
         })
     }
 
     /// Forget the last tractions: the next solve starts from zero traction.
     pub fn reset(&mut self) {
         self.core.reset();
+        self.warm = None;
     }
 
     /// Solve for the cell pressures `pressure` \[MPa\] (row-major, x fastest, `>= 0`),
@@ -281,6 +303,18 @@ impl SteadySolver {
             }
         }
         if options.method == SteadyMethod::Newton {
+            // Warm start: along a creep curve (the creepage a positive multiple λ of the
+            // last one, same μ) the tractions are scaled by λ, exact while all cells
+            // stick (linear theory); the solver projects them onto the discs.
+            if let Some((c0, mu0)) = self.warm
+                && mu0 == mu
+                && let Some(lambda) = creep_ratio(c0, creepage)
+            {
+                for t in self.core.tau.iter_mut() {
+                    t.iter_mut().for_each(|v| *v *= lambda);
+                }
+            }
+            self.warm = Some((creepage, mu));
             let grid = self.grid;
             let rigid = |c: usize| {
                 let w = omega(c % nx, c / nx, &grid);
