@@ -97,7 +97,10 @@ fn bench_points(c: &mut Criterion) {
         let mut g = c.benchmark_group(format!("steady_35_{shape}"));
         for (name, creep) in cases(a) {
             let o = options(SteadyMethod::Newton);
-            report(&format!("{shape} {name} newton"), &cold(&mut solver, &p, creep, &o));
+            report(
+                &format!("{shape} {name} newton"),
+                &cold(&mut solver, &p, creep, &o),
+            );
             g.bench_function(format!("newton_{name}"), |bch| {
                 bch.iter(|| cold(&mut solver, &p, black_box(creep), &o))
             });
@@ -115,7 +118,10 @@ fn bench_marching(c: &mut Criterion) {
     g.measurement_time(Duration::from_secs(1));
     for (name, creep) in cases(0.5) {
         let o = options(SteadyMethod::Marching);
-        report(&format!("circle {name} marching"), &cold(&mut solver, &p, creep, &o));
+        report(
+            &format!("circle {name} marching"),
+            &cold(&mut solver, &p, creep, &o),
+        );
         g.bench_function(format!("marching_{name}"), |bch| {
             bch.iter(|| cold(&mut solver, &p, black_box(creep), &o))
         });
@@ -164,13 +170,19 @@ fn bench_grids(c: &mut Criterion) {
         let (grid, p) = hertz(0.5, 0.5, n);
         let mut solver = SteadySolver::new(&grid, MATERIAL, Some(1)).expect("valid");
         let o = options(SteadyMethod::Newton);
-        report(&format!("knee {n}x{n} newton"), &cold(&mut solver, &p, knee, &o));
+        report(
+            &format!("knee {n}x{n} newton"),
+            &cold(&mut solver, &p, knee, &o),
+        );
         g.bench_function(format!("newton_{n}"), |bch| {
             bch.iter(|| cold(&mut solver, &p, knee, &o))
         });
         if n <= 25 {
             let o = options(SteadyMethod::Marching);
-            report(&format!("knee {n}x{n} marching"), &cold(&mut solver, &p, knee, &o));
+            report(
+                &format!("knee {n}x{n} marching"),
+                &cold(&mut solver, &p, knee, &o),
+            );
             g.bench_function(format!("marching_{n}"), |bch| {
                 bch.iter(|| cold(&mut solver, &p, knee, &o))
             });
@@ -188,7 +200,10 @@ fn bench_operator(c: &mut Criterion) {
             kontakt::rolling::TangentialOperator::new(&grid, MATERIAL, Some(1)).expect("valid");
         let (mut ux, mut uy) = (vec![0.0; p.len()], vec![0.0; p.len()]);
         g.bench_function(format!("apply_{n}"), |bch| {
-            bch.iter(|| op.apply(black_box(&p), &p, &mut ux, &mut uy).expect("valid"))
+            bch.iter(|| {
+                op.apply(black_box(&p), &p, &mut ux, &mut uy)
+                    .expect("valid")
+            })
         });
     }
     g.finish();

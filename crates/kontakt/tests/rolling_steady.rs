@@ -12,9 +12,7 @@
 #![allow(clippy::unwrap_used)] // test helpers: a panic is a test failure with its message
 
 use kontakt::geometry::Grid2;
-use kontakt::rolling::{
-    CellState, SteadyMethod, SteadyOptions, SteadySolution, SteadySolver,
-};
+use kontakt::rolling::{CellState, SteadyMethod, SteadyOptions, SteadySolution, SteadySolver};
 use kontakt::solve::Termination;
 use kontakt::tangential::{Creepage, KalkerMaterial};
 
@@ -114,12 +112,7 @@ fn agree(n: &SteadySolution, m: &SteadySolution, rel: f64, cells: usize) {
         n.spin_moment,
         m.spin_moment
     );
-    let differ = n
-        .state
-        .iter()
-        .zip(&m.state)
-        .filter(|(a, b)| a != b)
-        .count();
+    let differ = n.state.iter().zip(&m.state).filter(|(a, b)| a != b).count();
     assert!(differ <= cells, "{differ} cells differ in state");
     assert!(
         n.traction_x
@@ -167,7 +160,12 @@ fn newton_agrees_with_marching_on_a_long_ellipse() {
     let (grid, p) = hertz(a, b, 12, 24);
     let e_star = MATERIAL.shear_modulus / (1.0 - MATERIAL.poisson_ratio);
     let xi = 0.5 * 2.0 * MU * P0 / e_star;
-    let (n, m) = both(&grid, &p, Creepage::longitudinal(xi), &SteadyOptions::default());
+    let (n, m) = both(
+        &grid,
+        &p,
+        Creepage::longitudinal(xi),
+        &SteadyOptions::default(),
+    );
     agree(&n, &m, 1e-6, 0);
     assert!(n.slip_cells > 20 && n.stick_cells > 20, "{n:?}");
 }
@@ -208,7 +206,12 @@ fn newton_reports_non_convergence() {
         .unwrap();
     assert_eq!(s.status.termination, Termination::MaxIterations);
     assert!(s.fft_iterations <= 4, "{}", s.fft_iterations);
-    assert!(s.traction_x.iter().chain(&s.traction_y).all(|v| v.is_finite()));
+    assert!(
+        s.traction_x
+            .iter()
+            .chain(&s.traction_y)
+            .all(|v| v.is_finite())
+    );
     // The tractions within the bounds always.
     for ((tx, ty), pc) in s.traction_x.iter().zip(&s.traction_y).zip(&p) {
         assert!(tx.hypot(*ty) <= MU * pc * (1.0 + 1e-12));

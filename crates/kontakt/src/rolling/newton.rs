@@ -343,8 +343,7 @@ impl SteadyNewton {
                 }
                 let r = self.residual_of(true);
                 let m = norm2(&self.f_trial);
-                if m <= (1.0 - 1e-4 * alpha) * merit || halving == MAX_HALVINGS || !m.is_finite()
-                {
+                if m <= (1.0 - 1e-4 * alpha) * merit || halving == MAX_HALVINGS || !m.is_finite() {
                     std::mem::swap(&mut self.tau, &mut self.trial);
                     std::mem::swap(&mut self.s, &mut self.s_trial);
                     std::mem::swap(&mut self.f, &mut self.f_trial);
@@ -373,11 +372,7 @@ impl SteadyNewton {
         }
         for (k, &c) in self.cells.iter().enumerate() {
             let (fx, fy) = (self.f[2 * k], self.f[2 * k + 1]);
-            let (tx, ty) = project(
-                self.tau[2 * k] - fx,
-                self.tau[2 * k + 1] - fy,
-                self.g[k],
-            );
+            let (tx, ty) = project(self.tau[2 * k] - fx, self.tau[2 * k + 1] - fy, self.g[k]);
             tau[0][c] = tx;
             tau[1][c] = ty;
             slip[0][c] = self.s[2 * k];
@@ -439,12 +434,7 @@ impl SteadyNewton {
         worst
     }
 
-    fn evaluate_into(
-        &mut self,
-        tau: &[f64],
-        s: &mut [f64],
-        f: &mut [f64],
-    ) -> f64 {
+    fn evaluate_into(&mut self, tau: &[f64], s: &mut [f64], f: &mut [f64]) -> f64 {
         Self::apply_b(
             &mut self.op,
             &self.cells,
@@ -831,8 +821,8 @@ fn lu_factor(a: &mut [f64], m: usize, piv: &mut [usize]) {
 
 /// Solve with the factors of [`lu_factor`], in place.
 fn lu_solve(a: &[f64], m: usize, piv: &[usize], b: &mut [f64]) {
-    for k in 0..m {
-        b.swap(k, piv[k]);
+    for (k, &p) in piv[..m].iter().enumerate() {
+        b.swap(k, p);
     }
     for i in 0..m {
         let s = dot(&a[i * m..i * m + i], &b[..i]);

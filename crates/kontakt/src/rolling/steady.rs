@@ -327,15 +327,16 @@ impl SteadySolver {
                     max_fft: options.max_iterations,
                 };
                 let (_, bound, tau) = self.core.parts_mut();
-                let out = self.newton.solve(
-                    bound,
-                    rigid,
-                    tau,
-                    &mut self.last,
-                    scale,
-                    &settings,
-                );
-                (out.termination, out.newton, out.residual, out.fft, out.gmres)
+                let out = self
+                    .newton
+                    .solve(bound, rigid, tau, &mut self.last, scale, &settings);
+                (
+                    out.termination,
+                    out.newton,
+                    out.residual,
+                    out.fft,
+                    out.gmres,
+                )
             } else {
                 // No creepage: no traction.
                 for t in self.core.tau.iter_mut() {

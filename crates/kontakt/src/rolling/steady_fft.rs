@@ -33,7 +33,7 @@ fn smooth_at_least(m: usize) -> usize {
     loop {
         let mut k = n;
         for p in [2, 3, 5] {
-            while k % p == 0 {
+            while k.is_multiple_of(p) {
                 k /= p;
             }
         }
@@ -182,8 +182,8 @@ impl SteadyFft {
             }
             for k in 0..kx {
                 let col = &mut cols[k * my..(k + 1) * my];
-                for j in 0..ny {
-                    col[j] = self.spec[j * kx + k];
+                for (j, c) in col[..ny].iter_mut().enumerate() {
+                    *c = self.spec[j * kx + k];
                 }
                 col[ny..].fill(Complex::default());
             }
@@ -198,7 +198,7 @@ impl SteadyFft {
                 cy[i] = kxy[i] * a + kyy[i] * b;
             }
         }
-        let even = self.mx % 2 == 0;
+        let even = self.mx.is_multiple_of(2);
         for (c, o) in out.into_iter().enumerate() {
             let cols = &mut self.cols[c];
             self.col_inv.process_with_scratch(cols, &mut self.scratch);
