@@ -13,12 +13,13 @@
 //!   accelerated projected gradients with a stated residual and a
 //!   [`crate::solve::SolveStatus`].
 //! - [`SteadySolver`]: steady rolling for given creepages and spin (`S = ω − ∂u/∂x`,
-//!   upwind, the rolling step one cell), as Kalker's transient steps marched to the
-//!   steady state; creep forces, spin moment, stick/slip map and slip.
+//!   upwind, the rolling step one cell), by a semismooth Newton method with GMRES on the
+//!   steady equations (default) or Kalker's transient steps marched to the steady state
+//!   ([`SteadyMethod`]); creep forces, spin moment, stick/slip map and slip.
 //!
-//! Not yet here: the normal-tangential coupling of dissimilar bodies (`K ≠ 0`), the
-//! speed targets of issue 17, Carter's and Kalker's published creep curves as tests, and
-//! the `kontakt traction` model. Method and validation: docs/rolling.md.
+//! Not yet here: the normal-tangential coupling of dissimilar bodies (`K ≠ 0`), Kalker's
+//! published creep curves as tests, and the `kontakt traction` model. Method and
+//! validation: docs/rolling.md.
 //!
 //! Units: mm, N, MPa throughout.
 

@@ -12,31 +12,47 @@
 //! `S_i = 0`; slip `τ_i = −μ p_i S_i/|S_i|`. Forces on body 1: `F = Σ τ ΔA` \[N\], spin
 //! moment `M_z = Σ (x τ_y − y τ_x) ΔA` \[N·mm\] about the grid origin.
 //!
-//! # Discretisation and solver
-//! Kalker's transient discretisation with the rolling step equal to one cell (the grid is
-//! aligned with the rolling direction): in one step the material at cell `i` comes from
-//! cell `i + 1` (upwind), and the slip distance over the step is
+//! # Discretisation
+//! Kalker's discretisation with the rolling step equal to one cell (the grid is aligned
+//! with the rolling direction): the material at cell `i` comes from cell `i + 1`
+//! (upwind), and the steady slip distance per cell is
 //!
 //! ```text
-//! s_i = ω_i dx + u_i − u'_{i+1}          [mm],   S_i = s_i/dx,
+//! s_i = ω_i dx + u_i − u_{i+1}  [mm],   s = ω dx + (I − S) A τ,   S_i = s_i/dx,
 //! ```
 //!
-//! with `u'` the displacement of the previous step. Each step is a shift problem with the
-//! per-cell rigid term `ω_i dx − u'_{i+1}`, solved by the convex minimisation of
-//! [`super::ShiftSolver`] (accelerated projected gradients, warm-started from the
-//! previous step). Steady rolling is the limit of these steps: starting from zero
-//! traction, the contact rolls step by step until the tractions stop changing. Every
-//! material point has passed the whole contact after `nx` steps, so the count is about
-//! the cells along `x`. (A Gauss-Seidel sweep on the steady equations, as in CONTACT's
-//! SteadyGS, needs a line solver: plain point Gauss-Seidel diverged in our trials, its
-//! backward marching amplifies the downstream coupling.)
+//! `S` the shift by one cell in `+x`.
 //!
-//! **Convergence criterion.** Each step to the shift solver's criterion (stick holds to
-//! a fraction of the largest rigid slip `max |ω| dx`: 1e-3 in the first step, then 0.1
-//! times the last step's relative traction change, never below `tolerance`); steady when
-//! the largest change of traction over one step is `<= steady_tolerance · μ max p` and the
-//! step was solved to `tolerance`. The status reports the
-//! steps (its `iterations`) and that change; the solution also reports the FFT iterations.
+//! # Solvers ([`SteadyOptions::method`])
+//! - [`SteadyMethod::Newton`] (default): a semismooth Newton method on the projection
+//!   form of Coulomb's law `F(τ) = τ − P(τ − r s(τ)) = 0` (`P` the projection onto each
+//!   cell's disc `|τ_i| <= μ p_i`, `r` \[MPa/mm\] the inverse of the operator's
+//!   diagonal), each linear system by restarted GMRES whose product is one FFT
+//!   application of `(I − S) A` and whose preconditioner is the exact Jacobian of each
+//!   grid row (LU per row). Backtracking on `|F|`; the warm start is the last tractions
+//!   (scaled by `λ` when the creepage is `λ` times the last one). Derivation and
+//!   measured speed: docs/rolling.md §5.1.
+//! - [`SteadyMethod::Marching`] (the reference): Kalker's transient steps marched to the
+//!   steady state: each step is a shift problem with the per-cell rigid term
+//!   `ω_i dx − u'_{i+1}` (`u'` the previous step's displacements), solved by the convex
+//!   minimisation of [`super::ShiftSolver`]; from zero traction until the tractions stop
+//!   changing (about the cells along `x` in steps, seconds at 32 × 32).
+//!
+//! **Convergence criterion, Newton.** `max_i |F_i| <= tolerance · r · max_i |ω_i| dx`:
+//! in a stick cell the slip, in a slip cell the traction's distance from the Coulomb
+//! traction expressed as a slip, relative to the largest rigid slip (default `1e-8`).
+//! The status reports the Newton iterations and that relative residual; the solution
+//! also counts the FFT applications and GMRES iterations. Reaching
+//! `max_newton_iterations` or `max_iterations` FFT applications is
+//! [`Termination::MaxIterations`] (the tractions are then those of the last iterate,
+//! projected onto the discs: finite, within the bounds).
+//!
+//! **Convergence criterion, marching.** Each step to the shift solver's criterion (stick
+//! holds to a fraction of `max |ω| dx`: 1e-3 in the first step, then 0.1 times the last
+//! step's relative traction change, never below `tolerance`); steady when the largest
+//! change of traction over one step is `<= steady_tolerance · μ max p` and the step was
+//! solved to `tolerance`. The status reports the steps (its `iterations`) and that
+//! change.
 //!
 //! # Assumptions
 //! Quasi-identical bodies (`K = 0`), the pressure given and constant, constant `μ`,
@@ -45,7 +61,8 @@
 //!
 //! # References
 //! Kalker, *Three-dimensional elastic bodies in rolling contact* (1990), ch. 2 and 5;
-//! Johnson (1985) §8.
+//! Johnson (1985) §8; Alart & Curnier (1991), Qi & Sun (1993) (semismooth Newton);
+//! Saad & Schultz (1986) (GMRES).
 
 use super::newton::{NewtonSettings, SteadyNewton};
 use super::shift::{CellState, ShiftSolver, project};
