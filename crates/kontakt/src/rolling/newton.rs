@@ -60,9 +60,9 @@ use crate::solve::Termination;
 /// The Krylov dimension of the restarted GMRES.
 const RESTART: usize = 40;
 
-/// A row's factorisation is renewed when a slip direction in it turned by more than this
-/// (the chord of the unit circle, about radians).
-const REFACTOR_TURN: f64 = 0.2;
+/// A row's factorisation is renewed when more than `1/REFACTOR_SHARE` of its cells
+/// changed between stick and slip since it was factorised.
+const REFACTOR_SHARE: usize = 10;
 
 /// Most halvings of the Newton step in the line search.
 const MAX_HALVINGS: usize = 6;
@@ -544,14 +544,10 @@ impl SteadyNewton {
             if nr == 0 {
                 continue;
             }
-            let stale = !self.row_valid[j]
-                || (c0..c1).any(|k| {
-                    self.slip[k] != self.factored_slip[k]
-                        || (self.slip[k] && {
-                            let (a, b) = (self.normal[k], self.factored_normal[k]);
-                            (a[0] - b[0]).hypot(a[1] - b[1]) > REFACTOR_TURN
-                        })
-                });
+            let changed = (c0..c1)
+                .filter(|&k| self.slip[k] != self.factored_slip[k])
+                .count();
+            let stale = !self.row_valid[j] || changed * REFACTOR_SHARE > nr;
             if !stale {
                 continue;
             }
