@@ -33,7 +33,8 @@
 //! 1986). The product `J v` costs one FFT application of `A`. The preconditioner is the
 //! block diagonal of `J` over grid rows: within a row `A_xy` vanishes (it is odd in `y`)
 //! and `B` couples the cells of the row through `b(m) = A(m, 0) − A(m + 1, 0)`; each row's
-//! block (`2 n_row` square) is factorised by LU with partial pivoting. It captures the
+//! block (`2 n_row` square) is factorised by LU with partial pivoting (renewed only when a
+//! tenth of the row's cells changed between stick and slip). It captures the
 //! rolling direction exactly (the upwind difference and its downstream tail, which made a
 //! point Gauss-Seidel sweep diverge); only the coupling between rows is left to GMRES.
 //! Inexact Newton: each GMRES solve to the relative tolerance
@@ -109,10 +110,9 @@ pub(super) struct SteadyNewton {
     blk_off: Vec<usize>,
     lu: Vec<f64>,
     piv: Vec<usize>,
-    /// The linearisation each row was last factorised with (slip flag and normal per
-    /// cell), and whether that factorisation is valid for the current cells.
+    /// The slip flag of each cell when its row was last factorised, and whether that
+    /// factorisation is valid for the current cells.
     factored_slip: Vec<bool>,
-    factored_normal: Vec<[f64; 2]>,
     row_valid: Vec<bool>,
     /// The unknown cells of the previous solve (the factorisations are kept when the
     /// cells and bounds are unchanged).
@@ -178,7 +178,6 @@ impl SteadyNewton {
             lu: Vec::new(),
             piv: Vec::new(),
             factored_slip: Vec::with_capacity(n),
-            factored_normal: Vec::with_capacity(n),
             row_valid: vec![false; ny],
             last_cells: Vec::with_capacity(n),
             factorisations: 0,
@@ -301,8 +300,6 @@ impl SteadyNewton {
             self.last_cells.extend_from_slice(&self.cells);
             self.factored_slip.clear();
             self.factored_slip.resize(nc, false);
-            self.factored_normal.clear();
-            self.factored_normal.resize(nc, [0.0, 0.0]);
         }
         self.factorisations = 0;
         let mut fft = 0;
@@ -530,10 +527,11 @@ impl SteadyNewton {
         }
     }
 
-    /// Factorise the row blocks of the Jacobian (LU with partial pivoting) where the
-    /// linearisation changed since the row's last factorisation: a cell changed between
-    /// stick and slip, or a slip direction turned by more than [`REFACTOR_TURN`]. The
-    /// other rows keep their factors (a preconditioner need not be exact).
+    /// Factorise the row blocks of the Jacobian (LU with partial pivoting) where more
+    /// than `1/REFACTOR_SHARE` of the row's cells changed between stick and slip since
+    /// its last factorisation (or the loaded cells changed). The other rows keep their
+    /// factors and old slip directions: a preconditioner need not be exact, and the
+    /// factorisations, `O(n_row³)` each, would otherwise dominate the cost.
     fn factor(&mut self) {
         let nx = self.nx;
         let r = self.r;
@@ -555,7 +553,6 @@ impl SteadyNewton {
             self.factorisations += 1;
             for k in c0..c1 {
                 self.factored_slip[k] = self.slip[k];
-                self.factored_normal[k] = self.normal[k];
             }
             let m = 2 * nr;
             let blk = &mut self.lu[self.blk_off[j]..self.blk_off[j] + m * m];
