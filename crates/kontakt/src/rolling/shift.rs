@@ -184,10 +184,9 @@ impl ShiftSolver {
         &self.op
     }
 
-    /// The operator (mutable: its applications use its work arrays), the traction
-    /// bounds and the stored tractions, borrowed together.
-    pub(super) fn parts_mut(&mut self) -> (&mut TangentialOperator, &[f64], &mut [Vec<f64>; 2]) {
-        (&mut self.op, &self.bound, &mut self.tau)
+    /// The traction bounds and the stored tractions, borrowed together.
+    pub(super) fn bound_and_tractions(&mut self) -> (&[f64], &mut [Vec<f64>; 2]) {
+        (&self.bound, &mut self.tau)
     }
 
     /// The displacements `A τ` \[mm\] of the stored tractions into `out`.

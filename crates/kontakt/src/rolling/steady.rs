@@ -343,7 +343,7 @@ impl SteadySolver {
                     max_newton: options.max_newton_iterations,
                     max_fft: options.max_iterations,
                 };
-                let (_, bound, tau) = self.core.parts_mut();
+                let (bound, tau) = self.core.bound_and_tractions();
                 let out = self
                     .newton
                     .solve(bound, rigid, tau, &mut self.last, scale, &settings);
