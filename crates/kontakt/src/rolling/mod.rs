@@ -13,16 +13,16 @@
 //!   accelerated projected gradients with a stated residual and a
 //!   [`crate::solve::SolveStatus`].
 //! - [`SteadySolver`]: steady rolling for given creepages and spin (`S = ω − ∂u/∂x`,
-//!   upwind, the rolling step one cell), as Kalker's transient steps marched to the
-//!   steady state; creep forces, spin moment, stick/slip map and slip.
-//!
+//!   upwind, the rolling step one cell), by a semismooth Newton method with GMRES on the
+//!   steady equations (default) or Kalker's transient steps marched to the steady state
+//!   ([`SteadyMethod`]); creep forces, spin moment, stick/slip map and slip.
 //! - [`CoupledShiftSolver`]: the shift problem of dissimilar bodies (Kalker's
 //!   difference parameter `K ≠ 0`), the normal and tangential problems coupled through
 //!   [`CouplingOperator`] and solved by an outer loop along a loading history (Spence's
 //!   compression with friction is the special case without shift).
 //!
-//! Not yet here: the coupling in steady rolling, the speed targets of issue 17, Kalker's
-//! published creep curves as tests, and the `kontakt traction` model. Method and
+//! Not yet here: the coupling in steady rolling, Kalker's published creep curves as
+//! tests, and the `kontakt traction` model. Method and
 //! validation: docs/rolling.md.
 //!
 //! Units: mm, N, MPa throughout.
@@ -30,13 +30,15 @@
 mod coupled;
 mod cross;
 pub mod influence;
+mod newton;
 mod operator;
 mod shift;
 mod steady;
+mod steady_fft;
 
 pub use crate::tangential::KalkerMaterial;
 pub use coupled::{CoupledOptions, CoupledShiftSolver, CoupledSolution};
 pub use cross::CouplingOperator;
 pub use operator::{TangentialOperator, difference_parameter};
 pub use shift::{CellState, ShiftLoad, ShiftOptions, ShiftSolution, ShiftSolver};
-pub use steady::{SteadyOptions, SteadySolution, SteadySolver};
+pub use steady::{SteadyMethod, SteadyOptions, SteadySolution, SteadySolver};

@@ -184,6 +184,11 @@ impl ShiftSolver {
         &self.op
     }
 
+    /// The traction bounds and the stored tractions, borrowed together.
+    pub(super) fn bound_and_tractions(&mut self) -> (&[f64], &mut [Vec<f64>; 2]) {
+        (&self.bound, &mut self.tau)
+    }
+
     /// The displacements `A τ` \[mm\] of the stored tractions into `out`.
     pub(super) fn displacements(&mut self, out: &mut [Vec<f64>; 2]) -> Result<()> {
         let ShiftSolver { op, tau, .. } = self;

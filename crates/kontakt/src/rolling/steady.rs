@@ -12,31 +12,47 @@
 //! `S_i = 0`; slip `τ_i = −μ p_i S_i/|S_i|`. Forces on body 1: `F = Σ τ ΔA` \[N\], spin
 //! moment `M_z = Σ (x τ_y − y τ_x) ΔA` \[N·mm\] about the grid origin.
 //!
-//! # Discretisation and solver
-//! Kalker's transient discretisation with the rolling step equal to one cell (the grid is
-//! aligned with the rolling direction): in one step the material at cell `i` comes from
-//! cell `i + 1` (upwind), and the slip distance over the step is
+//! # Discretisation
+//! Kalker's discretisation with the rolling step equal to one cell (the grid is aligned
+//! with the rolling direction): the material at cell `i` comes from cell `i + 1`
+//! (upwind), and the steady slip distance per cell is
 //!
 //! ```text
-//! s_i = ω_i dx + u_i − u'_{i+1}          [mm],   S_i = s_i/dx,
+//! s_i = ω_i dx + u_i − u_{i+1}  [mm],   s = ω dx + (I − S) A τ,   S_i = s_i/dx,
 //! ```
 //!
-//! with `u'` the displacement of the previous step. Each step is a shift problem with the
-//! per-cell rigid term `ω_i dx − u'_{i+1}`, solved by the convex minimisation of
-//! [`super::ShiftSolver`] (accelerated projected gradients, warm-started from the
-//! previous step). Steady rolling is the limit of these steps: starting from zero
-//! traction, the contact rolls step by step until the tractions stop changing. Every
-//! material point has passed the whole contact after `nx` steps, so the count is about
-//! the cells along `x`. (A Gauss-Seidel sweep on the steady equations, as in CONTACT's
-//! SteadyGS, needs a line solver: plain point Gauss-Seidel diverged in our trials, its
-//! backward marching amplifies the downstream coupling.)
+//! `S` the shift by one cell in `+x`.
 //!
-//! **Convergence criterion.** Each step to the shift solver's criterion (stick holds to
-//! a fraction of the largest rigid slip `max |ω| dx`: 1e-3 in the first step, then 0.1
-//! times the last step's relative traction change, never below `tolerance`); steady when
-//! the largest change of traction over one step is `<= steady_tolerance · μ max p` and the
-//! step was solved to `tolerance`. The status reports the
-//! steps (its `iterations`) and that change; the solution also reports the FFT iterations.
+//! # Solvers ([`SteadyOptions::method`])
+//! - [`SteadyMethod::Newton`] (default): a semismooth Newton method on the projection
+//!   form of Coulomb's law `F(τ) = τ − P(τ − r s(τ)) = 0` (`P` the projection onto each
+//!   cell's disc `|τ_i| <= μ p_i`, `r` \[MPa/mm\] the inverse of the operator's
+//!   diagonal), each linear system by restarted GMRES whose product is one FFT
+//!   application of `(I − S) A` and whose preconditioner is the exact Jacobian of each
+//!   grid row (LU per row). Backtracking on `|F|`; the warm start is the last tractions
+//!   (scaled by `λ` when the creepage is `λ` times the last one). Derivation and
+//!   measured speed: docs/rolling.md §5.1.
+//! - [`SteadyMethod::Marching`] (the reference): Kalker's transient steps marched to the
+//!   steady state: each step is a shift problem with the per-cell rigid term
+//!   `ω_i dx − u'_{i+1}` (`u'` the previous step's displacements), solved by the convex
+//!   minimisation of [`super::ShiftSolver`]; from zero traction until the tractions stop
+//!   changing (about the cells along `x` in steps, seconds at 32 × 32).
+//!
+//! **Convergence criterion, Newton.** `max_i |F_i| <= tolerance · r · max_i |ω_i| dx`:
+//! in a stick cell the slip, in a slip cell the traction's distance from the Coulomb
+//! traction expressed as a slip, relative to the largest rigid slip (default `1e-8`).
+//! The status reports the Newton iterations and that relative residual; the solution
+//! also counts the FFT applications and GMRES iterations. Reaching
+//! `max_newton_iterations` or `max_iterations` FFT applications is
+//! [`Termination::MaxIterations`] (the tractions are then those of the last iterate,
+//! projected onto the discs: finite, within the bounds).
+//!
+//! **Convergence criterion, marching.** Each step to the shift solver's criterion (stick
+//! holds to a fraction of `max |ω| dx`: 1e-3 in the first step, then 0.1 times the last
+//! step's relative traction change, never below `tolerance`); steady when the largest
+//! change of traction over one step is `<= steady_tolerance · μ max p` and the step was
+//! solved to `tolerance`. The status reports the steps (its `iterations`) and that
+//! change.
 //!
 //! # Assumptions
 //! Quasi-identical bodies (`K = 0`), the pressure given and constant, constant `μ`,
@@ -45,8 +61,10 @@
 //!
 //! # References
 //! Kalker, *Three-dimensional elastic bodies in rolling contact* (1990), ch. 2 and 5;
-//! Johnson (1985) §8.
+//! Johnson (1985) §8; Alart & Curnier (1991), Qi & Sun (1993) (semismooth Newton);
+//! Saad & Schultz (1986) (GMRES).
 
+use super::newton::{NewtonSettings, SteadyNewton};
 use super::shift::{CellState, ShiftSolver, project};
 use crate::error::{Error, Result};
 use crate::geometry::Grid2;
@@ -60,18 +78,39 @@ const INITIAL_STEP_TOLERANCE: f64 = 1e-3;
 /// A step's tolerance is this times the last step's relative traction change.
 const STEP_TOLERANCE_FACTOR: f64 = 0.1;
 
+/// The method of [`SteadySolver::solve`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
+pub enum SteadyMethod {
+    /// Semismooth Newton on the steady equations, GMRES with the row-block
+    /// preconditioner (the default; see the module docs).
+    #[default]
+    Newton,
+    /// Kalker's transient rolling steps marched to the steady state (the reference,
+    /// slow: seconds at 32 × 32 cells).
+    Marching,
+}
+
 /// Tolerances and limits of [`SteadySolver::solve`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SteadyOptions {
-    /// Tolerance of each step's shift problem, relative to `max |ω| dx`. Default 1e-8.
+    /// Relative tolerance, on the slip in stick cells relative to `max |ω| dx` (Newton:
+    /// the residual of the steady equations; marching: each step's shift problem).
+    /// Default 1e-8.
     pub tolerance: f64,
-    /// Most FFT iterations per step. Default 20 000.
+    /// Newton: most FFT applications of `A` in all; marching: most FFT iterations per
+    /// step. Default 20 000.
     pub max_iterations: usize,
-    /// Steady when the largest traction change of a step is below this times `μ max p`.
-    /// Default 1e-7.
+    /// Marching only: steady when the largest traction change of a step is below this
+    /// times `μ max p`. Default 1e-7.
     pub steady_tolerance: f64,
-    /// Most rolling steps. Default 2000.
+    /// Marching only: most rolling steps. Default 2000.
     pub max_steps: usize,
+    /// The method. Default [`SteadyMethod::Newton`].
+    pub method: SteadyMethod,
+    /// Newton only: most Newton iterations. Default 100.
+    pub max_newton_iterations: usize,
 }
 
 impl Default for SteadyOptions {
@@ -81,6 +120,8 @@ impl Default for SteadyOptions {
             max_iterations: 20_000,
             steady_tolerance: 1e-7,
             max_steps: 2000,
+            method: SteadyMethod::Newton,
+            max_newton_iterations: 100,
         }
     }
 }
@@ -108,10 +149,15 @@ pub struct SteadySolution {
     pub stick_cells: usize,
     /// Cells in slip.
     pub slip_cells: usize,
-    /// FFT iterations over all steps.
+    /// FFT applications of `A` (Newton: residuals and GMRES products; marching: the
+    /// iterations over all steps).
     pub fft_iterations: usize,
-    /// Termination (converged: steady, and every step converged), rolling steps, and
-    /// the last step's traction change relative to `μ max p`.
+    /// GMRES iterations over all Newton iterations (0 for marching).
+    pub linear_iterations: usize,
+    /// Newton: termination, Newton iterations and the final relative residual (see the
+    /// module docs). Marching: termination (converged: steady, and every step
+    /// converged), rolling steps, and the last step's traction change relative to
+    /// `μ max p`.
     pub status: SolveStatus,
 }
 
@@ -120,11 +166,32 @@ pub struct SteadySolution {
 #[derive(Debug)]
 pub struct SteadySolver {
     core: ShiftSolver,
+    newton: SteadyNewton,
     grid: Grid2,
     /// The previous step's displacements \[mm\].
     last: [Vec<f64>; 2],
     /// The previous step's tractions \[MPa\].
     before: [Vec<f64>; 2],
+    /// The creepage and `μ` of the stored tractions (`None` after a reset).
+    warm: Option<(Creepage, f64)>,
+}
+
+/// `λ > 0` with `new = λ old` (the three creepages parallel to 1e-9), else `None`.
+fn creep_ratio(old: Creepage, new: Creepage) -> Option<f64> {
+    let a = [old.longitudinal, old.lateral, old.spin];
+    let b = [new.longitudinal, new.lateral, new.spin];
+    let aa: f64 = a.iter().map(|v| v * v).sum();
+    let ab: f64 = a.iter().zip(&b).map(|(x, y)| x * y).sum();
+    let bb: f64 = b.iter().map(|v| v * v).sum();
+    if !(aa > 0.0 && bb > 0.0 && ab > 0.0 && aa.is_finite() && bb.is_finite()) {
+        return None;
+    }
+    let lambda = ab / aa;
+    let parallel = a
+        .iter()
+        .zip(&b)
+        .all(|(x, y)| (y - lambda * x).abs() <= 1e-9 * bb.sqrt());
+    (parallel && lambda.is_finite()).then_some(lambda)
 }
 
 impl SteadySolver {
@@ -140,17 +207,28 @@ impl SteadySolver {
         }
         let core = ShiftSolver::new(grid, material, threads)?;
         let n = grid.len();
+        let newton = SteadyNewton::new(
+            grid.nx(),
+            grid.ny(),
+            grid.dx(),
+            grid.dy(),
+            material.shear_modulus,
+            material.poisson_ratio,
+        );
         Ok(SteadySolver {
             core,
+            newton,
             grid: *grid,
             last: [vec![0.0; n], vec![0.0; n]],
             before: [vec![0.0; n], vec![0.0; n]],
+            warm: None,
         })
     }
 
     /// Forget the last tractions: the next solve starts from zero traction.
     pub fn reset(&mut self) {
         self.core.reset();
+        self.warm = None;
     }
 
     /// Solve for the cell pressures `pressure` \[MPa\] (row-major, x fastest, `>= 0`),
@@ -205,6 +283,7 @@ impl SteadySolver {
         for (field, v) in [
             ("max_iterations", options.max_iterations),
             ("max_steps", options.max_steps),
+            ("max_newton_iterations", options.max_newton_iterations),
         ] {
             if v == 0 {
                 return Err(Error::invalid(field, v, "at least 1"));
@@ -239,6 +318,58 @@ impl SteadySolver {
                     scale = scale.max(w[0].hypot(w[1]) * dx);
                 }
             }
+        }
+        if options.method == SteadyMethod::Newton {
+            // Warm start: along a creep curve (the creepage a positive multiple λ of the
+            // last one, same μ) the tractions are scaled by λ, exact while all cells
+            // stick (linear theory); the solver projects them onto the discs.
+            if let Some((c0, mu0)) = self.warm
+                && mu0 == mu
+                && let Some(lambda) = creep_ratio(c0, creepage)
+            {
+                for t in self.core.tau.iter_mut() {
+                    t.iter_mut().for_each(|v| *v *= lambda);
+                }
+            }
+            self.warm = Some((creepage, mu));
+            let grid = self.grid;
+            let rigid = |c: usize| {
+                let w = omega(c % nx, c / nx, &grid);
+                [w[0] * dx, w[1] * dx]
+            };
+            let (termination, iterations, residual, fft, linear) = if scale > 0.0 {
+                let settings = NewtonSettings {
+                    tolerance: options.tolerance,
+                    max_newton: options.max_newton_iterations,
+                    max_fft: options.max_iterations,
+                };
+                let (bound, tau) = self.core.bound_and_tractions();
+                let out = self
+                    .newton
+                    .solve(bound, rigid, tau, &mut self.last, scale, &settings);
+                (
+                    out.termination,
+                    out.newton,
+                    out.residual,
+                    out.fft,
+                    out.gmres,
+                )
+            } else {
+                // No creepage: no traction.
+                for t in self.core.tau.iter_mut() {
+                    t.fill(0.0);
+                }
+                (Termination::Converged, 0, 0.0, 0, 0)
+            };
+            // `last` holds the slip distances s [mm] of the loaded cells.
+            return Ok(self.collect(
+                scale,
+                normal_force,
+                |s: &Self, k| [s.last[0][k] / dx, s.last[1][k] / dx],
+                fft,
+                linear,
+                SolveStatus::new(termination, iterations, residual),
+            ));
         }
         // The warm start, projected onto the new discs, and its displacements.
         {
@@ -298,7 +429,36 @@ impl SteadySolver {
                 .tolerance
                 .max(inner_tolerance.min(STEP_TOLERANCE_FACTOR * change));
         }
-        // Collect: the slip of the last step per unit rolling distance.
+        let status = SolveStatus::new(termination, steps, change);
+        Ok(self.collect(
+            scale,
+            normal_force,
+            |s: &Self, k| {
+                [
+                    (s.core.rigid[0][k] + s.last[0][k]) / dx,
+                    (s.core.rigid[1][k] + s.last[1][k]) / dx,
+                ]
+            },
+            fft,
+            0,
+            status,
+        ))
+    }
+
+    /// The solution from the stored tractions; `slip(self, cell)` is the slip per unit
+    /// rolling distance of a slipping cell.
+    fn collect(
+        &self,
+        scale: f64,
+        normal_force: f64,
+        slip: impl Fn(&Self, usize) -> [f64; 2],
+        fft: usize,
+        linear: usize,
+        status: SolveStatus,
+    ) -> SteadySolution {
+        let (nx, ny) = (self.grid.nx(), self.grid.ny());
+        let n = nx * ny;
+        let area = self.grid.cell_area();
         let mut state = vec![CellState::Exterior; n];
         let (mut slip_x, mut slip_y) = (vec![0.0; n], vec![0.0; n]);
         let (mut stick_cells, mut slip_cells) = (0, 0);
@@ -318,15 +478,14 @@ impl SteadySolver {
                 if tx.hypot(ty) >= b * (1.0 - 1e-9) && scale > 0.0 {
                     state[k] = CellState::Slip;
                     slip_cells += 1;
-                    slip_x[k] = (core.rigid[0][k] + self.last[0][k]) / dx;
-                    slip_y[k] = (core.rigid[1][k] + self.last[1][k]) / dx;
+                    [slip_x[k], slip_y[k]] = slip(self, k);
                 } else {
                     state[k] = CellState::Stick;
                     stick_cells += 1;
                 }
             }
         }
-        Ok(SteadySolution {
+        SteadySolution {
             traction_x: core.tau[0].clone(),
             traction_y: core.tau[1].clone(),
             slip_x,
@@ -338,7 +497,8 @@ impl SteadySolver {
             stick_cells,
             slip_cells,
             fft_iterations: fft,
-            status: SolveStatus::new(termination, steps, change),
-        })
+            linear_iterations: linear,
+            status,
+        }
     }
 }
