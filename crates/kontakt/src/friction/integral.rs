@@ -361,6 +361,9 @@ pub fn binning_error(grid: &Grid2, field: &VelocityField) -> f64 {
     }
 }
 
+/// Blocks per lane group of [`binned_sums`].
+const BLOCK_LANES: usize = 4;
+
 /// The sums of [`grid_friction_binned`]: `[fx, fy, m, power, load, raw]` as
 /// [`boundary_sums`], blocks of 2 × 2 cells by their Taylor expansion about the block's
 /// centre, a last odd row or column cell by cell.
@@ -386,54 +389,75 @@ fn binned_sums(grid: &Grid2, pressure: &[f64], field: &VelocityField, law: &Cell
         t[4] += q;
         t[5] += p;
     };
+    let nb = nx / 2;
+    let (hh, hk) = (0.5 * h, 0.5 * k);
+    let (sh, sk, shk) = (0.25 * h * h, 0.25 * k * k, 0.25 * h * k);
+    let xb = grid.x(0) + hh;
     for jb in 0..ny / 2 {
         let j = 2 * jb;
-        let yc = grid.y(j) + 0.5 * k;
+        let yc = grid.y(j) + hk;
         let r0 = &pressure[j * nx..(j + 1) * nx];
         let r1 = &pressure[(j + 1) * nx..(j + 2) * nx];
         // The row pair's velocity at x = 0.
         let (ox, oy) = (o[0] + yc * dy[0], o[1] + yc * dy[1]);
-        let mut acc = [0.0; 6];
-        for ib in 0..nx / 2 {
-            let i = 2 * ib;
-            let (p00, p01, p10, p11) = (r0[i], r0[i + 1], r1[i], r1[i + 1]);
-            acc[5] += (p00 + p01) + (p10 + p11);
-            let q = |p: f64| if p > 0.0 { p } else { 0.0 };
-            let (q00, q01, q10, q11) = (q(p00), q(p01), q(p10), q(p11));
-            let pp = (q00 + q01) + (q10 + q11);
-            if pp == 0.0 {
+        // Lanes of BLOCK_LANES blocks (independent sums, vector code): Σ g_x q, Σ g_y q,
+        // Σ x g_y q − (y − y_c) g_x q, the power density, Σ q, Σ p.
+        let mut acc = [[0.0f64; BLOCK_LANES]; 6];
+        for g0 in (0..nb).step_by(BLOCK_LANES) {
+            // The cells q00, q01 (row j), q10, q11 (row j + 1) of each block.
+            let mut q = [[0.0f64; BLOCK_LANES]; 4];
+            let mut any = false;
+            for l in 0..BLOCK_LANES.min(nb - g0) {
+                let i = 2 * (g0 + l);
+                let ps = [r0[i], r0[i + 1], r1[i], r1[i + 1]];
+                acc[5][l] += (ps[0] + ps[1]) + (ps[2] + ps[3]);
+                for (c, &p) in ps.iter().enumerate() {
+                    q[c][l] = if p > 0.0 { p } else { 0.0 };
+                    any |= p > 0.0;
+                }
+            }
+            if !any {
                 continue;
             }
-            let xc = grid.x(i) + 0.5 * h;
-            // First moments about the block's centre.
-            let mx = 0.5 * h * ((q01 + q11) - (q00 + q10));
-            let my = 0.5 * k * ((q10 + q11) - (q00 + q01));
-            let (vx, vy) = (ox + xc * dx[0], oy + xc * dx[1]);
-            let s2 = vx * vx + vy * vy;
-            let r = 1.0 / (s2 + eps2).sqrt();
-            let r3 = r * r * r;
-            let (ax, ay) = (vx * dx[0] + vy * dx[1], vx * dy[0] + vy * dy[1]);
-            let (gx, gy) = (vx * r, vy * r);
-            // ∂g/∂x and ∂g/∂y.
-            let (gxx, gyx) = (dx[0] * r - vx * ax * r3, dx[1] * r - vy * ax * r3);
-            let (gxy, gyy) = (dy[0] * r - vx * ay * r3, dy[1] * r - vy * ay * r3);
-            let sx = pp * gx + mx * gxx + my * gxy;
-            let sy = pp * gy + mx * gyx + my * gyy;
-            acc[0] += sx;
-            acc[1] += sy;
-            // Σ q (x g_y − y g_x) with g to first order and the exact moments of q:
-            // Σ q x g_y ≈ x_c Σ q g_y + g_y m_x + ∇g_y · Σ q δx δ (δ = x − c), likewise y.
-            let (sxx, syy) = (0.25 * h * h * pp, 0.25 * k * k * pp);
-            let sxy = 0.25 * h * k * ((q00 + q11) - (q01 + q10));
-            acc[2] += (xc * sy - yc * sx) + (mx * gy - my * gx) + (gyx * sxx + gyy * sxy)
-                - (gxx * sxy + gxy * syy);
-            // |v|²/d: its gradient (v·∂v) (2 − |v|²/d²)/d.
-            acc[3] += pp * s2 * r + (mx * ax + my * ay) * r * (2.0 - s2 * r * r);
-            acc[4] += pp;
+            for l in 0..BLOCK_LANES {
+                let (q00, q01, q10, q11) = (q[0][l], q[1][l], q[2][l], q[3][l]);
+                let pp = (q00 + q01) + (q10 + q11);
+                let xc = xb + (2 * (g0 + l)) as f64 * h;
+                // First moments about the block's centre.
+                let mx = hh * ((q01 + q11) - (q00 + q10));
+                let my = hk * ((q10 + q11) - (q00 + q01));
+                let (vx, vy) = (ox + xc * dx[0], oy + xc * dx[1]);
+                let s2 = vx * vx + vy * vy;
+                let r = 1.0 / (s2 + eps2).sqrt();
+                let r3 = r * r * r;
+                let (ax, ay) = (vx * dx[0] + vy * dx[1], vx * dy[0] + vy * dy[1]);
+                let (gx, gy) = (vx * r, vy * r);
+                // ∂g/∂x and ∂g/∂y.
+                let (vxr3, vyr3) = (vx * r3, vy * r3);
+                let (gxx, gyx) = (dx[0] * r - vxr3 * ax, dx[1] * r - vyr3 * ax);
+                let (gxy, gyy) = (dy[0] * r - vxr3 * ay, dy[1] * r - vyr3 * ay);
+                let sx = pp * gx + mx * gxx + my * gxy;
+                let sy = pp * gy + mx * gyx + my * gyy;
+                acc[0][l] += sx;
+                acc[1][l] += sy;
+                // Σ q (x g_y − y g_x) with g to first order and the exact moments of q:
+                // Σ q x g_y ≈ x_c Σ q g_y + g_y m_x + ∇g_y · Σ q δx δ (δ = x − c), likewise
+                // y; the y_c Σ q g_x part is added per row pair.
+                let sxy = shk * ((q00 + q11) - (q01 + q10));
+                acc[2][l] +=
+                    xc * sy + (mx * gy - my * gx) + pp * (sh * gyx - sk * gxy) + sxy * (gyy - gxx);
+                // |v|²/d: its gradient (v·∂v) (2 − |v|²/d²)/d.
+                acc[3][l] += r * (pp * s2 + (mx * ax + my * ay) * (2.0 - s2 * r * r));
+                acc[4][l] += pp;
+            }
         }
-        for (a, v) in t.iter_mut().zip(acc) {
-            *a += v;
-        }
+        let [sx, sy, m, w, load, raw] = acc.map(|a| (a[0] + a[1]) + (a[2] + a[3]));
+        t[0] += sx;
+        t[1] += sy;
+        t[2] += m - yc * sx;
+        t[3] += w;
+        t[4] += load;
+        t[5] += raw;
         if nx % 2 == 1 {
             let x = grid.x(nx - 1);
             cell(&mut t, x, grid.y(j), r0[nx - 1]);
