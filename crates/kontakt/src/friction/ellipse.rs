@@ -249,8 +249,7 @@ fn finish(sums: GridFriction) -> Result<GridFriction> {
 /// Independent accumulators of [`boundary_sums`] (no loop-carried sum: vector code).
 const LANES: usize = 4;
 
-/// The boundary (Coulomb) part alone over the rule's nodes (`1/|v|` by Newton steps where
-/// the sliding varies by at most 25 % over the ellipse, see [`boundary_kernel`]), `[Σ τ_x, Σ τ_y, Σ (x τ_y − y τ_x),
+/// The boundary (Coulomb) part alone over the rule's nodes, `[Σ τ_x, Σ τ_y, Σ (x τ_y − y τ_x),
 /// Σ k |v|²]` in units of `p₀ a b` (the same sums as the general loop of
 /// [`ellipse_friction`] without its fluid branch, so that the loop vectorises): `vx = [o_x,
 /// ∂v_x/∂u, ∂v_x/∂w]`, `vy` likewise, `xy = [xu, xw, yu, yw]` the map of the unit disc,
@@ -263,40 +262,6 @@ fn boundary_sums(
     mb: f64,
     eps2: f64,
 ) -> [f64; 4] {
-    // 1/√(|v|² + v_ε²) by Newton's iteration r ← r (3 − S r²)/2 from its value at the
-    // disc's centre where that converges to round-off in a few steps: with β the relative
-    // spread of √S over the disc (|v − v_c| ≤ L' = the Frobenius norm of the map), the seed's
-    // relative error e ≤ β and each step maps e to at most (3/2) e² + e³/2.
-    let sc = vx[0] * vx[0] + vy[0] * vy[0] + eps2;
-    let spread = (vx[1] * vx[1] + vx[2] * vx[2] + vy[1] * vy[1] + vy[2] * vy[2]).sqrt();
-    let beta = spread / sc.sqrt();
-    let mut steps = 0;
-    if beta <= 0.25 {
-        let mut e = beta;
-        while e > 1e-17 {
-            e = 1.5 * e * e + 0.5 * e * e * e;
-            steps += 1;
-        }
-    }
-    let args = (rule, vx, vy, [xu, xw, yu, yw], mb, eps2, 1.0 / sc.sqrt());
-    match steps {
-        1 => boundary_kernel::<1>(args),
-        2 => boundary_kernel::<2>(args),
-        3 => boundary_kernel::<3>(args),
-        4 => boundary_kernel::<4>(args),
-        5 => boundary_kernel::<5>(args),
-        _ => boundary_kernel::<0>(args),
-    }
-}
-
-/// The arguments of [`boundary_kernel`].
-type KernelArgs<'a> = (&'a EllipseRule, [f64; 3], [f64; 3], [f64; 4], f64, f64, f64);
-
-/// The loop of [`boundary_sums`]: `1/√S` by a square root and a division (`STEPS = 0`) or by
-/// `STEPS` Newton steps from `seed`.
-fn boundary_kernel<const STEPS: usize>(
-    (rule, vx, vy, [xu, xw, yu, yw], mb, eps2, seed): KernelArgs<'_>,
-) -> [f64; 4] {
     let n = rule.len();
     let (ux, uy, weight) = (&rule.ux[..n], &rule.uy[..n], &rule.weight[..n]);
     let mut acc = [[0.0f64; LANES]; 4];
@@ -304,17 +269,8 @@ fn boundary_kernel<const STEPS: usize>(
         let sx = vx[0] + u * vx[1] + w * vx[2];
         let sy = vy[0] + u * vy[1] + w * vy[2];
         let s2 = sx * sx + sy * sy;
-        let kk = if STEPS == 0 {
-            let d = (s2 + eps2).sqrt();
-            if d > 0.0 { mb * wt / d } else { 0.0 }
-        } else {
-            let half = 0.5 * (s2 + eps2);
-            let mut r = seed;
-            for _ in 0..STEPS {
-                r *= 1.5 - half * r * r;
-            }
-            mb * wt * r
-        };
+        let d = (s2 + eps2).sqrt();
+        let kk = if d > 0.0 { mb * wt / d } else { 0.0 };
         let (tx, ty) = (kk * sx, kk * sy);
         acc[0][l] -= tx;
         acc[1][l] -= ty;
