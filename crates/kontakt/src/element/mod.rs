@@ -24,7 +24,8 @@
 //!    placed surfaces.
 //! 4. Friction: the law over the pressure with the sliding field of the two twists, scaled
 //!    to the back-end's normal force: [`crate::friction::grid_friction`] over the field
-//!    solvers' grids; for Hertz, [`crate::friction::HertzFrictionRules`], a polar
+//!    solvers' grids (PimP's tracked grid: [`crate::friction::grid_friction_binned`], 2 × 2
+//!    cells per evaluation of the law where the sliding varies little); for Hertz, [`crate::friction::HertzFrictionRules`], a polar
 //!    quadrature of the semi-ellipsoid (96 to 512 nodes by the law and the spin pole; no
 //!    sampled field; accuracy in docs/VALIDATION.md).
 //! 5. Damping (optional): `F_d = c(δ) δ̇`, `δ̇ = −n · (v_1 − v_2)` at the contact point,
@@ -45,6 +46,7 @@ use crate::error::{Error, Result};
 use crate::field::NormalSolution;
 use crate::friction::{
     CellLaw, FilmState, FrictionLaw, GridFriction, HertzFrictionRules, grid_friction,
+    grid_friction_binned,
 };
 use crate::gap::{GapSource, SurfacePairGap};
 use crate::geometry::{
@@ -199,6 +201,8 @@ pub const PRESS_STEPS: usize = 100;
 enum Samples<'a> {
     /// A field on a grid (PimP, the half-space solver).
     Grid(Grid2, &'a [f64]),
+    /// PimP's field on its grid: the friction by [`grid_friction_binned`].
+    Binned(Grid2, &'a [f64]),
     /// Hertz's semi-ellipsoid, integrated by the element's [`HertzFrictionRules`].
     Ellipse {
         semi_axes: [f64; 2],
@@ -624,7 +628,7 @@ impl ContactElement {
                     .ok_or_else(|| Error::invalid("backend", "pimp", "a planned element"))?
                     .evaluate(&gap, approach)?;
                 FieldView {
-                    samples: Samples::Grid(t.grid, t.pressure),
+                    samples: Samples::Binned(t.grid, t.pressure),
                     orientation: t.orientation,
                     centroid: t.centroid,
                     force: t.force,
@@ -691,6 +695,9 @@ impl ContactElement {
         let sliding = pair.velocity_field(&frame, field.orientation)?;
         let mut sums: GridFriction = match field.samples {
             Samples::Grid(grid, pressure) => grid_friction(&grid, pressure, &sliding, &self.law)?,
+            Samples::Binned(grid, pressure) => {
+                grid_friction_binned(&grid, pressure, &sliding, &self.law)?
+            }
             Samples::Ellipse {
                 semi_axes,
                 orientation,

@@ -176,6 +176,23 @@ pub fn ellipse_friction(
     let fluid = law.has_fluid();
     // Sums over the nodes of w·k̂·(v_x, v_y, u v_y − … , |v|²) with k = p₀ k̂ for the boundary
     // part; the moment x τ_y − y τ_x is summed in the unit-disc coordinates u, w.
+    if !fluid {
+        let [fx, fy, m, pw] = boundary_sums(
+            rule,
+            [o[0], vxu, vxw],
+            [o[1], vyu, vyw],
+            [xu, xw, yu, yw],
+            mb,
+            eps2,
+        );
+        let scale = max_pressure * a * b;
+        return finish(GridFriction {
+            force: [fx * scale, fy * scale],
+            moment: m * scale,
+            power: pw * scale / MW_PER_W,
+            normal_force: std::f64::consts::TAU / 3.0 * scale,
+        });
+    }
     let (mut fx, mut fy, mut mu_, mut mw, mut pw) = (0.0, 0.0, 0.0, 0.0, 0.0);
     let n = rule.len();
     let (ux, uy, share, weight) = (
@@ -212,6 +229,11 @@ pub fn ellipse_friction(
         power: pw * scale / MW_PER_W,
         normal_force: std::f64::consts::TAU / 3.0 * scale,
     };
+    finish(sums)
+}
+
+/// The sums of [`ellipse_friction`] if finite, else the overflow error.
+fn finish(sums: GridFriction) -> Result<GridFriction> {
     let all = [sums.force[0], sums.force[1], sums.moment, sums.power];
     if all.iter().all(|v| v.is_finite()) {
         Ok(sums)
@@ -222,6 +244,50 @@ pub fn ellipse_friction(
             "a bounded fluid law (Eyring or limiting shear) at these pressures",
         ))
     }
+}
+
+/// Independent accumulators of [`boundary_sums`] (no loop-carried sum: vector code).
+const LANES: usize = 4;
+
+/// The boundary (Coulomb) part alone over the rule's nodes, `[Σ τ_x, Σ τ_y, Σ (x τ_y − y τ_x),
+/// Σ k |v|²]` in units of `p₀ a b` (the same sums as the general loop of
+/// [`ellipse_friction`] without its fluid branch, so that the loop vectorises): `vx = [o_x,
+/// ∂v_x/∂u, ∂v_x/∂w]`, `vy` likewise, `xy = [xu, xw, yu, yw]` the map of the unit disc,
+/// `mb` the boundary coefficient, `eps2` the regularisation v_ε².
+fn boundary_sums(
+    rule: &EllipseRule,
+    vx: [f64; 3],
+    vy: [f64; 3],
+    [xu, xw, yu, yw]: [f64; 4],
+    mb: f64,
+    eps2: f64,
+) -> [f64; 4] {
+    let n = rule.len();
+    let (ux, uy, weight) = (&rule.ux[..n], &rule.uy[..n], &rule.weight[..n]);
+    let mut acc = [[0.0f64; LANES]; 4];
+    let body = |acc: &mut [[f64; LANES]; 4], l: usize, u: f64, w: f64, wt: f64| {
+        let sx = vx[0] + u * vx[1] + w * vx[2];
+        let sy = vy[0] + u * vy[1] + w * vy[2];
+        let s2 = sx * sx + sy * sy;
+        let d = (s2 + eps2).sqrt();
+        let kk = if d > 0.0 { mb * wt / d } else { 0.0 };
+        let (tx, ty) = (kk * sx, kk * sy);
+        acc[0][l] -= tx;
+        acc[1][l] -= ty;
+        // x τ_y − y τ_x with x = xu u + xw w, y = yu u + yw w.
+        acc[2][l] -= (xu * u + xw * w) * ty - (yu * u + yw * w) * tx;
+        acc[3][l] += kk * s2;
+    };
+    let full = n - n % LANES;
+    for k in (0..full).step_by(LANES) {
+        for l in 0..LANES {
+            body(&mut acc, l, ux[k + l], uy[k + l], weight[k + l]);
+        }
+    }
+    for k in full..n {
+        body(&mut acc, k - full, ux[k], uy[k], weight[k]);
+    }
+    acc.map(|a| (a[0] + a[1]) + (a[2] + a[3]))
 }
 
 /// Where the sliding velocity vanishes (the spin pole), as the radius `ρ_p` of the unit

@@ -265,6 +265,12 @@ pub fn grid_friction(
         m += f_m;
         power += f_power;
     }
+    finish_sums(grid, [fx, fy, m, power, load, raw])
+}
+
+/// The sums `[fx, fy, m, power, load, raw]` over the cells (stress × cell, before the cell
+/// area) as a [`GridFriction`], or the error of a non-finite pressure or an overflow.
+fn finish_sums(grid: &Grid2, [fx, fy, m, power, load, raw]: [f64; 6]) -> Result<GridFriction> {
     let load = if raw.is_finite() { load } else { raw };
     let area = grid.cell_area();
     let sums = GridFriction {
@@ -295,6 +301,176 @@ pub fn grid_friction(
             "a bounded fluid law (Eyring or limiting shear) at these pressures",
         ))
     }
+}
+
+/// Largest estimated error of [`grid_friction_binned`] relative to `Σ |τ| ΔA` (its Taylor
+/// bound, see there) for which it bins the cells; beyond it, the cell-by-cell sums.
+pub const BINNED_TOLERANCE: f64 = 1e-6;
+
+/// The friction integral of [`grid_friction`] with the boundary (Coulomb) law evaluated
+/// once per block of 2 × 2 cells instead of once per cell, where the sliding field allows:
+/// the contact element's PimP back-end (docs/mbs.md). Same arguments, outputs and errors as
+/// [`grid_friction`]; does not allocate.
+///
+/// With `q` the pressure (≥ 0) and `g(x) = v/√(|v|² + v_ε²)` the stress direction of the
+/// boundary part, a block of centre `c` contributes
+/// `Σ q g(x_k) ≈ P g(c) + ∇g(c) · Σ q_k (x_k − c)`, `P = Σ q_k` (one square root and one
+/// division per four cells; the moment `x × g` and the power density `|v|² / d` likewise).
+/// The remainder is the second-order Taylor term: along a line, `|∂²g| ≤ 4 L² / |v|²`
+/// (`L` the Frobenius norm of the sliding field's gradient), so each cell's error is at most
+/// `2 (ρ L / v_min)²` of its `q`, with `ρ` half a block's cell diagonal and `v_min` a lower
+/// bound of the sliding speed over the grid. The blocks are used when that bound is at most
+/// [`BINNED_TOLERANCE`] (sliding that varies little over a cell: the roller-end/rib contact
+/// spinning about a far axis); otherwise, and for a law with a fluid part (not linear in
+/// the pressure), the cell-by-cell sums of [`grid_friction`]. Error against them in
+/// docs/VALIDATION.md.
+///
+/// # Errors
+/// Those of [`grid_friction`].
+pub fn grid_friction_binned(
+    grid: &Grid2,
+    pressure: &[f64],
+    field: &VelocityField,
+    law: &CellLaw,
+) -> Result<GridFriction> {
+    check_field(grid, pressure, field)?;
+    if law.has_fluid() || binning_error(grid, field) > BINNED_TOLERANCE {
+        return grid_friction(grid, pressure, field, law);
+    }
+    finish_sums(grid, binned_sums(grid, pressure, field, law))
+}
+
+/// The bound `2 (ρ L / v_min)²` of [`grid_friction_binned`] (infinite when the sliding
+/// may vanish on the grid).
+pub fn binning_error(grid: &Grid2, field: &VelocityField) -> f64 {
+    let [_, dx, dy] = field.sliding;
+    let (nx, ny) = (grid.nx(), grid.ny());
+    let (h, k) = (grid.dx(), grid.dy());
+    let xc = 0.5 * (grid.x(0) + grid.x(nx - 1));
+    let yc = 0.5 * (grid.y(0) + grid.y(ny - 1));
+    let [vx, vy] = field.sliding_at(xc, yc);
+    let l = (dx[0] * dx[0] + dx[1] * dx[1] + dy[0] * dy[0] + dy[1] * dy[1]).sqrt();
+    // |v| over the grid >= |v(c)| − L × the half-diagonal.
+    let half = 0.5 * ((nx as f64 * h).powi(2) + (ny as f64 * k).powi(2)).sqrt();
+    let v_min = vx.hypot(vy) - l * half;
+    let rho = 0.5 * h.hypot(k);
+    if v_min > 0.0 && l.is_finite() {
+        2.0 * (rho * l / v_min).powi(2)
+    } else {
+        f64::INFINITY
+    }
+}
+
+/// Blocks per lane group of [`binned_sums`].
+const BLOCK_LANES: usize = 4;
+
+/// The sums of [`grid_friction_binned`]: `[fx, fy, m, power, load, raw]` as
+/// [`boundary_sums`], blocks of 2 × 2 cells by their Taylor expansion about the block's
+/// centre, a last odd row or column cell by cell.
+fn binned_sums(grid: &Grid2, pressure: &[f64], field: &VelocityField, law: &CellLaw) -> [f64; 6] {
+    let [o, dx, dy] = field.sliding;
+    let (b, eps2) = (law.boundary_coefficient(), law.regularisation_squared());
+    let (nx, ny) = (grid.nx(), grid.ny());
+    let (h, k) = (grid.dx(), grid.dy());
+    // [Σ g_x q, Σ g_y q, Σ (x g_y − y g_x) q, Σ q |v|²/d, Σ q, Σ p]; the coefficient b at
+    // the end.
+    let mut t = [0.0; 6];
+    let cell = |t: &mut [f64; 6], x: f64, y: f64, p: f64| {
+        let q = if p > 0.0 { p } else { 0.0 };
+        let (vx, vy) = (o[0] + x * dx[0] + y * dy[0], o[1] + x * dx[1] + y * dy[1]);
+        let s2 = vx * vx + vy * vy;
+        let d = (s2 + eps2).sqrt();
+        let r = if d > 0.0 { q / d } else { 0.0 };
+        let (gx, gy) = (r * vx, r * vy);
+        t[0] += gx;
+        t[1] += gy;
+        t[2] += x * gy - y * gx;
+        t[3] += r * s2;
+        t[4] += q;
+        t[5] += p;
+    };
+    let nb = nx / 2;
+    let (hh, hk) = (0.5 * h, 0.5 * k);
+    let (sh, sk, shk) = (0.25 * h * h, 0.25 * k * k, 0.25 * h * k);
+    let xb = grid.x(0) + hh;
+    for jb in 0..ny / 2 {
+        let j = 2 * jb;
+        let yc = grid.y(j) + hk;
+        let r0 = &pressure[j * nx..(j + 1) * nx];
+        let r1 = &pressure[(j + 1) * nx..(j + 2) * nx];
+        // The row pair's velocity at x = 0.
+        let (ox, oy) = (o[0] + yc * dy[0], o[1] + yc * dy[1]);
+        // Lanes of BLOCK_LANES blocks (independent sums, vector code): Σ g_x q, Σ g_y q,
+        // Σ x g_y q − (y − y_c) g_x q, the power density, Σ q, Σ p.
+        let mut acc = [[0.0f64; BLOCK_LANES]; 6];
+        for g0 in (0..nb).step_by(BLOCK_LANES) {
+            // The cells q00, q01 (row j), q10, q11 (row j + 1) of each block.
+            let mut q = [[0.0f64; BLOCK_LANES]; 4];
+            let mut any = false;
+            for l in 0..BLOCK_LANES.min(nb - g0) {
+                let i = 2 * (g0 + l);
+                let ps = [r0[i], r0[i + 1], r1[i], r1[i + 1]];
+                acc[5][l] += (ps[0] + ps[1]) + (ps[2] + ps[3]);
+                for (c, &p) in ps.iter().enumerate() {
+                    q[c][l] = if p > 0.0 { p } else { 0.0 };
+                    any |= p > 0.0;
+                }
+            }
+            if !any {
+                continue;
+            }
+            for l in 0..BLOCK_LANES {
+                let (q00, q01, q10, q11) = (q[0][l], q[1][l], q[2][l], q[3][l]);
+                let pp = (q00 + q01) + (q10 + q11);
+                let xc = xb + (2 * (g0 + l)) as f64 * h;
+                // First moments about the block's centre.
+                let mx = hh * ((q01 + q11) - (q00 + q10));
+                let my = hk * ((q10 + q11) - (q00 + q01));
+                let (vx, vy) = (ox + xc * dx[0], oy + xc * dx[1]);
+                let s2 = vx * vx + vy * vy;
+                let r = 1.0 / (s2 + eps2).sqrt();
+                let r3 = r * r * r;
+                let (ax, ay) = (vx * dx[0] + vy * dx[1], vx * dy[0] + vy * dy[1]);
+                let (gx, gy) = (vx * r, vy * r);
+                // ∂g/∂x and ∂g/∂y.
+                let (vxr3, vyr3) = (vx * r3, vy * r3);
+                let (gxx, gyx) = (dx[0] * r - vxr3 * ax, dx[1] * r - vyr3 * ax);
+                let (gxy, gyy) = (dy[0] * r - vxr3 * ay, dy[1] * r - vyr3 * ay);
+                let sx = pp * gx + mx * gxx + my * gxy;
+                let sy = pp * gy + mx * gyx + my * gyy;
+                acc[0][l] += sx;
+                acc[1][l] += sy;
+                // Σ q (x g_y − y g_x) with g to first order and the exact moments of q:
+                // Σ q x g_y ≈ x_c Σ q g_y + g_y m_x + ∇g_y · Σ q δx δ (δ = x − c), likewise
+                // y; the y_c Σ q g_x part is added per row pair.
+                let sxy = shk * ((q00 + q11) - (q01 + q10));
+                acc[2][l] +=
+                    xc * sy + (mx * gy - my * gx) + pp * (sh * gyx - sk * gxy) + sxy * (gyy - gxx);
+                // |v|²/d: its gradient (v·∂v) (2 − |v|²/d²)/d.
+                acc[3][l] += r * (pp * s2 + (mx * ax + my * ay) * (2.0 - s2 * r * r));
+                acc[4][l] += pp;
+            }
+        }
+        let [sx, sy, m, w, load, raw] = acc.map(|a| (a[0] + a[1]) + (a[2] + a[3]));
+        t[0] += sx;
+        t[1] += sy;
+        t[2] += m - yc * sx;
+        t[3] += w;
+        t[4] += load;
+        t[5] += raw;
+        if nx % 2 == 1 {
+            let x = grid.x(nx - 1);
+            cell(&mut t, x, grid.y(j), r0[nx - 1]);
+            cell(&mut t, x, grid.y(j + 1), r1[nx - 1]);
+        }
+    }
+    if ny % 2 == 1 {
+        let j = ny - 1;
+        for i in 0..nx {
+            cell(&mut t, grid.x(i), grid.y(j), pressure[j * nx + i]);
+        }
+    }
+    [-b * t[0], -b * t[1], -b * t[2], b * t[3], t[4], t[5]]
 }
 
 /// The dissipated power density `τ · v` per cell \[W/mm²\] (0 where `p ≤ 0`), the layout of

@@ -30,6 +30,7 @@ pub mod law;
 
 pub use ellipse::{EllipseRule, HertzFrictionRules, ellipse_friction, sliding_pole_radius};
 pub use integral::{
-    ContactFriction, GridFriction, contact_friction, grid_friction, power_density, pressure_sliding,
+    BINNED_TOLERANCE, ContactFriction, GridFriction, binning_error, contact_friction,
+    grid_friction, grid_friction_binned, power_density, pressure_sliding,
 };
 pub use law::{CellLaw, FilmState, FluidShear, FrictionLaw, LoadSharing, REGULARISATION_SPEED};

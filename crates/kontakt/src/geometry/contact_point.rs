@@ -231,16 +231,17 @@ impl Solution {
 /// after reaching [`GRAD_TOL`]; returns the best iterate.
 fn refine(a: &PlacedSurface, b: &PlacedSurface, start: Point3<f64>, scale: f64) -> Solution {
     let eval = |p: Point3<f64>| {
-        let (pb, nb) = b.closest_point(&p);
-        (b.signed_distance(&p), pb, nb.into_inner())
+        let (pb, nb, sd) = b.closest_point_distance(&p);
+        (sd, pb, nb.into_inner())
     };
     let grad = |na: &Vector3<f64>, nb: &Vector3<f64>| {
         let (e1, e2) = tangent_basis(na);
         (e1, e2, nb.dot(&e1), nb.dot(&e2))
     };
-    let mut p = a.closest_point(&start).0;
+    // The foot's normal is the normal at the foot (the same direction): no second foot.
+    let (mut p, na0) = a.closest_point(&start);
+    let mut na = na0.into_inner();
     let (mut sd, mut pb, mut nb) = eval(p);
-    let mut na = a.normal(&p).into_inner();
     let mut best = Solution {
         pa: p,
         pb,
@@ -305,14 +306,14 @@ fn refine(a: &PlacedSurface, b: &PlacedSurface, start: Point3<f64>, scale: f64) 
                 u1 *= radius / len;
                 u2 *= radius / len;
             }
-            let p_try = a.closest_point(&(p + e1 * u1 + e2 * u2)).0;
+            let (p_try, na_try) = a.closest_point(&(p + e1 * u1 + e2 * u2));
             let (sd_try, pb_try, nb_try) = eval(p_try);
             if sd_try <= sd + 8.0 * f64::EPSILON * (sd.abs() + scale) {
                 p = p_try;
                 sd = sd_try;
                 pb = pb_try;
                 nb = nb_try;
-                na = a.normal(&p).into_inner();
+                na = na_try.into_inner();
                 lambda *= 0.25;
                 if lambda < floor {
                     lambda = 0.0;

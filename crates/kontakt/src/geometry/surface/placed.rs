@@ -122,6 +122,17 @@ impl PlacedSurface {
         (self.pose.transform_point(&q), self.unit_to_world(&n))
     }
 
+    /// [`PlacedSurface::closest_point`] and [`PlacedSurface::signed_distance`] of the world
+    /// point `p` at once: the foot \[mm\], the outward normal there (world), the signed
+    /// distance \[mm\].
+    pub fn closest_point_distance(
+        &self,
+        p: &Point3<f64>,
+    ) -> (Point3<f64>, Unit<Vector3<f64>>, f64) {
+        let (q, n, d) = self.surface.closest_point_distance(&self.to_local(p));
+        (self.pose.transform_point(&q), self.unit_to_world(&n), d)
+    }
+
     /// Hessian of the signed distance at the world point `p`, in world coordinates.
     pub(crate) fn sdf_hessian(&self, p: &Point3<f64>) -> Matrix3<f64> {
         let r = self.pose.rotation.to_rotation_matrix();

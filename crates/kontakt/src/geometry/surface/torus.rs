@@ -15,7 +15,7 @@
 //! the boundary of the union of the balls of radius r centred on the circle.
 
 use super::trace::{self, RayFunction, Sample};
-use super::{Material, Shape, outer, radial};
+use super::{Material, Shape, hypot, outer, radial};
 use crate::error::{Error, Result};
 use nalgebra::{Matrix3, Point3, Vector3};
 
@@ -91,7 +91,7 @@ impl Torus {
             return None;
         }
         let a = rho - big_r;
-        let dd = a.hypot(z);
+        let dd = hypot(a, z);
         // Foot at rho_f = R + r (rho - R)/D < 0.
         (big_r * dd + r * a < 0.0).then(|| {
             let zc = ((r - big_r) * (r + big_r)).sqrt();
@@ -356,8 +356,8 @@ impl Shape for Torus {
     fn implicit(&self, p: &Point3<f64>) -> f64 {
         let (big_r, r) = (self.major, self.minor);
         let rho = p.x.hypot(p.y);
-        let d_near = (rho - big_r).hypot(p.z);
-        let d_far = (rho + big_r).hypot(p.z);
+        let d_near = hypot(rho - big_r, p.z);
+        let d_far = hypot(rho + big_r, p.z);
         (d_near - r) * (d_near + r) * ((d_far - r) * (d_far + r)).abs()
     }
 
@@ -365,7 +365,7 @@ impl Shape for Torus {
         let rho = p.x.hypot(p.y);
         match self.cusp(rho, p.z) {
             Some(c) => -(p - c).norm(),
-            None => (rho - self.major).hypot(p.z) - self.minor,
+            None => hypot(rho - self.major, p.z) - self.minor,
         }
     }
 
@@ -386,9 +386,31 @@ impl Shape for Torus {
             return (c, n);
         }
         let a = rho - self.major;
-        let dd = a.hypot(p.z);
+        let dd = hypot(a, p.z);
         let n = Self::tube_normal(&er, a, p.z, dd);
         (Point3::from(er * self.major + n * self.minor), n)
+    }
+
+    fn foot_distance(&self, p: &Point3<f64>) -> (Point3<f64>, Vector3<f64>, f64) {
+        let (er, rho) = radial(p);
+        if let Some(c) = self.cusp(rho, p.z) {
+            let v = c - p;
+            let len = v.norm();
+            let n = if len > 0.0 {
+                v / len
+            } else {
+                Vector3::z() * c.z.signum()
+            };
+            return (c, n, -len);
+        }
+        let a = rho - self.major;
+        let dd = hypot(a, p.z);
+        let n = Self::tube_normal(&er, a, p.z, dd);
+        (
+            Point3::from(er * self.major + n * self.minor),
+            n,
+            dd - self.minor,
+        )
     }
 
     fn curvature(&self, p: &Point3<f64>) -> [(f64, Vector3<f64>); 2] {
@@ -419,7 +441,7 @@ impl Shape for Torus {
             return -(Matrix3::identity() - outer(&n)) / len;
         }
         let a = rho - self.major;
-        let dd = a.hypot(p.z).max(tiny);
+        let dd = hypot(a, p.z).max(tiny);
         let n = Self::tube_normal(&er, a, p.z, dd);
         let around = Vector3::new(-er.y, er.x, 0.0);
         let meridian = around.cross(&n);
