@@ -237,11 +237,16 @@ fn tracked_field_matches_the_full_adaptive_solve() {
 /// No allocation per evaluation: the PimP element along 200 steps of a sliding, tilting
 /// roller (after two warm-up calls that size the buffers) allocates nothing; nor does the
 /// Hertz element (its friction quadrature and the shape inversion's warm start) on the
-/// same steps.
+/// same steps, nor the half-space element's warm calls on its kept grid (its solve, gap
+/// interpolation and zone analysis).
 #[test]
 fn pimp_element_evaluation_allocates_nothing() {
     let rr = roller_rib("torus-torus-14");
-    for backend in [Backend::Pimp(PimpOptions::default()), Backend::Hertz] {
+    for backend in [
+        Backend::Pimp(PimpOptions::default()),
+        Backend::Hertz,
+        Backend::HalfSpace(Default::default()),
+    ] {
         let mut spec = ElementSpec::new(rr.face.clone(), rr.rib.clone()).unwrap();
         spec.backend = backend;
         let mut e = ContactElement::new(spec).unwrap();

@@ -18,7 +18,7 @@
 //! it beyond the discretisation.
 
 use crate::error::{Error, Result};
-use crate::field::ContactZone;
+use crate::field::{ContactZone, ZoneScratch};
 use crate::gap::GapSource;
 use crate::geometry::Grid2;
 use crate::halfspace::{Bem, Control, HalfSpaceSolver, Start};
@@ -56,6 +56,8 @@ struct State {
     zeros: Vec<f64>,
     /// The zone of the solver's last pressure field.
     zone: ContactZone,
+    /// Work arrays of the zone analysis, kept so that a warm call allocates nothing.
+    zone_scratch: ZoneScratch,
     /// The interpolated gap of the warm calls (`None`: ray-cast every cell).
     stencil: Option<Stencil>,
 }
@@ -208,7 +210,8 @@ impl WarmHalfSpace {
                 // A warm solve that does not converge is not the answer: lay a grid and
                 // solve from cold (whose non-convergence is then an error).
                 report.status.converged() && {
-                    st.zone = ContactZone::analyse(&grid, st.solver.pressure())?;
+                    st.zone =
+                        ContactZone::analyse_in(&grid, st.solver.pressure(), &mut st.zone_scratch)?;
                     fits(&grid, &st.zone)
                 }
             }
@@ -274,6 +277,7 @@ impl WarmHalfSpace {
                 zeros: vec![0.0; gap.len()],
                 gap,
                 zone,
+                zone_scratch: ZoneScratch::default(),
                 stencil: Stencil::new(&grid),
             });
             return Ok(iterations);

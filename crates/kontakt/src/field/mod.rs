@@ -21,7 +21,7 @@ pub mod domain;
 pub mod validity;
 mod zone;
 
-pub use zone::ContactZone;
+pub use zone::{ContactZone, ZoneScratch};
 
 use crate::geometry::Grid2;
 use crate::solve::SolveStatus;

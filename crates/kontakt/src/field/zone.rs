@@ -50,9 +50,21 @@ impl ContactZone {
 
     /// Analyse `pressure` \[MPa\] sampled on `grid` (row-major, x fastest).
     ///
+    /// Allocates the patch count's work arrays; a caller that analyses many fields keeps a
+    /// [`ZoneScratch`] and calls [`ContactZone::analyse_in`].
+    ///
     /// # Errors
     /// [`crate::Error::InvalidInput`] when the lengths disagree.
     pub fn analyse(grid: &Grid2, pressure: &[f64]) -> Result<Self> {
+        Self::analyse_in(grid, pressure, &mut ZoneScratch::default())
+    }
+
+    /// [`ContactZone::analyse`] with caller-owned work arrays: after the first call on a
+    /// grid of a given size, a call allocates nothing.
+    ///
+    /// # Errors
+    /// [`crate::Error::InvalidInput`] when the lengths disagree.
+    pub fn analyse_in(grid: &Grid2, pressure: &[f64], scratch: &mut ZoneScratch) -> Result<Self> {
         check_len(grid, pressure)?;
         let (nx, ny) = (grid.nx(), grid.ny());
         let da = grid.cell_area();
@@ -98,7 +110,7 @@ impl ContactZone {
                 [grid.y(j0) - 0.5 * dy, grid.y(j1) + 0.5 * dy],
             ],
             centroid,
-            patches: count_patches(nx, ny, pressure),
+            patches: count_patches(nx, ny, pressure, scratch),
             centre_line_curvature: centre_line_curvature(grid, pressure, centroid[0]),
             touches_border: border,
         })
@@ -114,10 +126,22 @@ impl ContactZone {
     }
 }
 
+/// The work arrays of [`ContactZone::analyse_in`]'s patch count (a flag and a stack entry
+/// per cell at most), kept between calls so that the analysis allocates nothing.
+#[derive(Debug, Clone, Default)]
+pub struct ZoneScratch {
+    seen: Vec<bool>,
+    stack: Vec<usize>,
+}
+
 /// Connected components of the loaded cells (4-neighbourhood), by flood fill.
-fn count_patches(nx: usize, ny: usize, pressure: &[f64]) -> usize {
-    let mut seen = vec![false; pressure.len()];
-    let mut stack = Vec::new();
+fn count_patches(nx: usize, ny: usize, pressure: &[f64], scratch: &mut ZoneScratch) -> usize {
+    let ZoneScratch { seen, stack } = scratch;
+    seen.clear();
+    seen.resize(pressure.len(), false);
+    stack.clear();
+    // Every cell is pushed at most once, so this capacity is never exceeded.
+    stack.reserve(pressure.len());
     let mut patches = 0;
     for start in 0..pressure.len() {
         if seen[start] || !(pressure[start] > 0.0) {
