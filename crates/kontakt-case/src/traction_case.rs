@@ -5,7 +5,8 @@
 //! ```toml
 //! name = "twin-disc, crowned disc on cylindrical disc"
 //! method = "traction"
-//! models = ["carter", "kalker_linear", "fastsim"]   # default: all three
+//! models = ["carter", "kalker_linear", "fastsim"]   # default: these three; also
+//!                                                   # "kalker_exact", "asperity"
 //!
 //! [geometry]
 //! kind = "hertz"             # principal radii -> Hertz ellipse; rolling along body 1's
@@ -36,11 +37,15 @@
 //! # min = 0.0                # optional, default 0
 //! # lateral = 0.0            # optional: a constant lateral creepage [-] at every point
 //! # spin_per_mm = 0.0        # optional: a constant spin creepage [1/mm] at every point
-//! #                          # (both: kalker_linear and fastsim only)
+//! #                          # (both: kalker_linear, fastsim, kalker_exact)
 //!
 //! [fastsim]                  # optional
 //! elements = [50, 50]
 //! pressure = "parabolic"     # or "elliptic"
+//!
+//! [kalker_exact]             # optional: Kalker's exact theory on the half-space grid
+//! elements = [32, 32]        # cells across the ellipse (along rolling, across), 8..=1024
+//! max_steps = 2000           # rolling steps per point before it counts as not converged
 //!
 //! # [asperity]               # for models = [..., "asperity"]: circular or line contacts
 //! # asperity_radii_mm = [0.02, 0.02]     # of identical bodies (kontakt::traction)
@@ -51,11 +56,20 @@
 //! into a [`TractionReport`]. Kalker's linear curve is reported *unclipped* (it is the
 //! linear theory; it exceeds 1 beyond its saturation creepage); `kontakt traction --plot`
 //! draws it up to where it reaches 1.
+//!
+//! `kalker_exact` ([`kontakt::rolling::KalkerExact`]) solves Kalker's exact steady-rolling
+//! problem at every point of the curve (warm-started along it) and reports each point's
+//! solver status, the stick fraction and the grid in the curve's `exact` record; a point
+//! that did not converge is named in the report's `warnings`. It costs a steady solve per
+//! point (milliseconds to seconds, growing with `elements`), where the other models cost
+//! microseconds.
 
 use crate::common::{MaterialSpec, SCHEMA_VERSION, material, parse_toml};
 use kontakt::hertz::line::LineContact;
 use kontakt::hertz::{HertzPointContact, PointGeometry};
 use kontakt::material::effective_modulus;
+use kontakt::rolling::{KalkerExact, KalkerExactOptions};
+use kontakt::solve::SolveStatus;
 use kontakt::tangential::{
     Carter, ContactEllipse, CreepCoefficients, Fastsim, FastsimOptions, KalkerLinear,
     KalkerMaterial, PressureShape, TractionCurve,
@@ -94,6 +108,9 @@ pub struct TractionCase {
     /// FASTSIM options.
     #[serde(default)]
     pub fastsim: FastsimSpec,
+    /// Options of the `kalker_exact` model.
+    #[serde(default)]
+    pub kalker_exact: KalkerExactSpec,
     /// The asperity lattice, needed by the `asperity` model.
     #[serde(default)]
     pub asperity: Option<AsperitySpec>,
@@ -146,6 +163,9 @@ pub enum TractionModel {
     /// The asperity micro-slip model ([`AsperityTraction`]) of a rough circular or line
     /// contact; needs `[asperity]`.
     Asperity,
+    /// Kalker's exact theory of steady rolling on the half-space grid
+    /// ([`KalkerExact`]), with a solver status per point.
+    KalkerExact,
 }
 
 impl TractionModel {
@@ -156,6 +176,7 @@ impl TractionModel {
             TractionModel::KalkerLinear => "kalker_linear",
             TractionModel::Fastsim => "fastsim",
             TractionModel::Asperity => "asperity",
+            TractionModel::KalkerExact => "kalker_exact",
         }
     }
 }
@@ -363,6 +384,31 @@ impl Default for FastsimSpec {
     }
 }
 
+/// `[kalker_exact]`: options of Kalker's exact theory.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct KalkerExactSpec {
+    /// Cells across the contact ellipse `[mx, my]` (along the rolling direction, across),
+    /// each 8..=1024; default `[32, 32]`. Below 16 the report warns: the creep force is
+    /// then high by more than about 5 % at small creepage (first-order grid error).
+    pub elements: [usize; 2],
+    /// Most rolling steps of the steady solver per point, >= 1 (default 2000); a point
+    /// that needs more is reported as not converged.
+    pub max_steps: usize,
+}
+
+impl Default for KalkerExactSpec {
+    fn default() -> Self {
+        KalkerExactSpec {
+            elements: KalkerExactOptions::default().elements,
+            max_steps: KalkerExactOptions::default().steady.max_steps,
+        }
+    }
+}
+
+/// Fewer cells across the contact than this gives a warning for `kalker_exact`.
+pub const KALKER_EXACT_WARN_ELEMENTS: usize = 16;
+
 impl TractionCase {
     /// Parse a traction case from TOML text.
     ///
@@ -387,6 +433,29 @@ pub struct CurveReport {
     /// case gives `creepage.lateral` or `creepage.spin_per_mm`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub forces: Option<CreepForces>,
+    /// Kalker's exact theory only: the grid and the solver's record at each point.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub exact: Option<ExactCurveReport>,
+}
+
+/// The solver's record of a `kalker_exact` curve.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ExactCurveReport {
+    /// Cells across the contact `[mx, my]`.
+    pub elements: [usize; 2],
+    /// Cell size `[dx, dy]` \[mm\].
+    pub cell_mm: [f64; 2],
+    /// Whether every point converged.
+    pub converged: bool,
+    /// Indices of the points that did not converge (their values are not results).
+    pub not_converged: Vec<usize>,
+    /// Stick cells over loaded cells at each point \[-\].
+    pub stick_fraction: Vec<f64>,
+    /// FFT applications of the tangential operator over the whole curve.
+    pub fft_iterations: usize,
+    /// The steady solver's status at each point: termination, rolling steps and the last
+    /// traction change relative to `mu p_max`.
+    pub status: Vec<SolveStatus>,
 }
 
 /// Creep forces and spin moment on body 1 along a curve (Kalker's sign convention: the
@@ -455,6 +524,9 @@ pub struct TractionReport {
     pub spin_creepage_per_mm: Option<f64>,
     /// One curve per model, in the order of the case.
     pub curves: Vec<CurveReport>,
+    /// Results to treat with care: unconverged points of `kalker_exact`, a coarse grid.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub warnings: Vec<String>,
 }
 
 /// Run a traction case: build the contact, plan each model once and evaluate its curve.
@@ -502,7 +574,7 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
         return Err(Error::invalid(
             "models",
             "[]",
-            "at least one of carter, kalker_linear, fastsim",
+            "at least one of carter, kalker_linear, fastsim, kalker_exact, asperity",
         ));
     }
     let m1 = material(&case.body1, "body1")?;
@@ -529,6 +601,7 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
             "poisson_ratio" => "body1.nu, body2.nu".into(),
             "elements[0]" => "fastsim.elements[0]".into(),
             "elements[1]" => "fastsim.elements[1]".into(),
+            "creepage.spin" => "creepage.spin_per_mm".into(),
             "semi_axes[0]" => "geometry.semi_axes_mm[0]".into(),
             "semi_axes[1]" => "geometry.semi_axes_mm[1]".into(),
             other => other.into(),
@@ -627,6 +700,7 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
     let mut fastsim = None;
     let mut asperity = None;
     let mut curves = Vec::with_capacity(case.models.len());
+    let mut warnings = Vec::new();
     let combined = case.creepage.lateral != 0.0 || case.creepage.spin_per_mm != 0.0;
     for &model in &case.models {
         if combined && matches!(model, TractionModel::Carter | TractionModel::Asperity) {
@@ -640,12 +714,29 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
                 value,
                 format!(
                     "0 with model {} (a theory of longitudinal creepage only); lateral and \
-                     spin creepage need models = [\"kalker_linear\", \"fastsim\"]",
+                     spin creepage need models = [\"kalker_linear\", \"fastsim\", \
+                     \"kalker_exact\"]",
                     model.as_str()
                 ),
             ));
         }
+        if model == TractionModel::KalkerExact {
+            let Some(e) = ellipse else {
+                return Err(Error::invalid(
+                    "models",
+                    model.as_str(),
+                    "carter or asperity for kind = \"line\" (Kalker's theories need a \
+                     contact ellipse: use kind = \"hertz\" or \"ellipse\")",
+                ));
+            };
+            let (report, notes) =
+                exact_curve(case, e, &m1, &m2, &creepage, combined).map_err(map_common)?;
+            warnings.extend(notes);
+            curves.push(report);
+            continue;
+        }
         let curve: &dyn TractionCurve = match model {
+            TractionModel::KalkerExact => unreachable!("handled above"),
             TractionModel::Carter => &carter,
             TractionModel::Asperity => {
                 asperity = Some(asperity_model(case, force, &carter, ellipse, m1, m2)?);
@@ -688,6 +779,7 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
             model: model.as_str(),
             normalized_force,
             forces,
+            exact: None,
         });
     }
     // Linear-theory data for every point contact, also when the model was not asked for.
@@ -719,7 +811,102 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
         lateral_creepage: combined.then_some(case.creepage.lateral),
         spin_creepage_per_mm: combined.then_some(case.creepage.spin_per_mm),
         curves,
+        warnings,
     })
+}
+
+/// Kalker's exact theory along the case's creepages (longitudinal `xis` \[-\], with the
+/// constant lateral and spin creepage when `combined`): the curve, its solver record and
+/// the warnings (a coarse grid, unconverged points).
+fn exact_curve(
+    case: &TractionCase,
+    ellipse: ContactEllipse,
+    m1: &kontakt::material::ElasticMaterial,
+    m2: &kontakt::material::ElasticMaterial,
+    xis: &[f64],
+    combined: bool,
+) -> Result<(CurveReport, Vec<String>)> {
+    if case.kalker_exact.max_steps == 0 {
+        return Err(Error::invalid(
+            "kalker_exact.max_steps",
+            0,
+            "at least 1 rolling step",
+        ));
+    }
+    let mut options = KalkerExactOptions {
+        elements: case.kalker_exact.elements,
+        ..KalkerExactOptions::default()
+    };
+    options.steady.max_steps = case.kalker_exact.max_steps;
+    let model = KalkerExact::new(ellipse, m1, m2, case.friction.mu, options).map_err(|e| {
+        e.map_field(|f| match f {
+            "elements[0]" => "kalker_exact.elements[0]".into(),
+            "elements[1]" => "kalker_exact.elements[1]".into(),
+            other => other.into(),
+        })
+    })?;
+    let creepages: Vec<kontakt::tangential::Creepage> = xis
+        .iter()
+        .map(|&xi| kontakt::tangential::Creepage {
+            longitudinal: xi,
+            lateral: case.creepage.lateral,
+            spin: case.creepage.spin_per_mm,
+        })
+        .collect();
+    let points = model.curve(&creepages)?;
+    let mut warnings = Vec::new();
+    let [mx, my] = case.kalker_exact.elements;
+    if mx.min(my) < KALKER_EXACT_WARN_ELEMENTS {
+        warnings.push(format!(
+            "kalker_exact: {mx} x {my} cells across the contact; below {KALKER_EXACT_WARN_ELEMENTS} \
+             the creep force at small creepage is high by about {:.0} % (first-order grid \
+             error 0.8/cells); use kalker_exact.elements >= [32, 32] for results",
+            80.0 / mx.min(my) as f64
+        ));
+    }
+    let not_converged: Vec<usize> = points
+        .iter()
+        .enumerate()
+        .filter(|(_, p)| !p.status.converged())
+        .map(|(i, _)| i)
+        .collect();
+    if !not_converged.is_empty() {
+        let first = &points[not_converged[0]];
+        warnings.push(format!(
+            "kalker_exact: {} of {} points did not converge (first at creepage {:e}: {} after \
+             {} rolling steps, traction change {:.1e}); their values are not results",
+            not_converged.len(),
+            points.len(),
+            first.creepage.longitudinal,
+            first.status.termination.as_str(),
+            first.status.iterations,
+            first.status.residual
+        ));
+    }
+    let grid = model.grid();
+    let exact = ExactCurveReport {
+        elements: [mx, my],
+        cell_mm: [grid.dx(), grid.dy()],
+        converged: not_converged.is_empty(),
+        not_converged,
+        stick_fraction: points.iter().map(|p| p.stick_fraction).collect(),
+        fft_iterations: points.iter().map(|p| p.fft_iterations).sum(),
+        status: points.iter().map(|p| p.status).collect(),
+    };
+    let forces = combined.then(|| CreepForces {
+        longitudinal_force_n: points.iter().map(|p| p.force[0]).collect(),
+        lateral_force_n: points.iter().map(|p| p.force[1]).collect(),
+        spin_moment_nmm: Some(points.iter().map(|p| p.spin_moment).collect()),
+    });
+    Ok((
+        CurveReport {
+            model: TractionModel::KalkerExact.as_str(),
+            normalized_force: points.iter().map(|p| p.normalized_force).collect(),
+            forces,
+            exact: Some(exact),
+        },
+        warnings,
+    ))
 }
 
 /// Kalker's linear theory or FASTSIM along the longitudinal creepages `xis` \[-\] with the

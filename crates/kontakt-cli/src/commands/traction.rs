@@ -77,6 +77,24 @@ pub fn print_report(out: &mut impl Write, r: &TractionReport, json: bool) -> Res
     if let Some([nx, ny]) = r.fastsim_elements {
         writeln!(out, "  FASTSIM grid {nx} x {ny} elements")?;
     }
+    for c in &r.curves {
+        if let Some(x) = &c.exact {
+            let state = if x.converged {
+                format!("converged at all {} points", x.status.len())
+            } else {
+                format!(
+                    "NOT converged at {} of {} points (marked *)",
+                    x.not_converged.len(),
+                    x.status.len()
+                )
+            };
+            writeln!(
+                out,
+                "  Kalker exact grid {} x {} cells across the contact; {state}",
+                x.elements[0], x.elements[1]
+            )?;
+        }
+    }
     write!(out, "  {:>12}", "creepage")?;
     for c in &r.curves {
         write!(out, " {:>14}", c.model)?;
@@ -90,7 +108,15 @@ pub fn print_report(out: &mut impl Write, r: &TractionReport, json: bool) -> Res
     for i in rows {
         write!(out, "  {:>12.6}", r.creepage[i])?;
         for c in &r.curves {
-            write!(out, " {:>14.5}", c.normalized_force[i])?;
+            let bad = c
+                .exact
+                .as_ref()
+                .is_some_and(|x| x.not_converged.contains(&i));
+            if bad {
+                write!(out, " {:>13.5}*", c.normalized_force[i])?;
+            } else {
+                write!(out, " {:>14.5}", c.normalized_force[i])?;
+            }
         }
         writeln!(out)?;
     }
@@ -100,7 +126,11 @@ pub fn print_report(out: &mut impl Write, r: &TractionReport, json: bool) -> Res
             "  (every {step}th of {n} points; --csv writes all; Kalker linear is unclipped)"
         )?;
     }
-    print_forces(out, r, step)
+    print_forces(out, r, step)?;
+    for w in &r.warnings {
+        writeln!(out, "  warning: {w}")?;
+    }
+    Ok(())
 }
 
 /// With lateral or spin creepage: the creep forces and the spin moment of each model that
@@ -221,6 +251,7 @@ pub fn write_plot(path: &Path, r: &TractionReport) -> Result<()> {
             "carter" => "Carter".to_string(),
             "kalker_linear" => "Kalker linear (to saturation)".to_string(),
             "fastsim" => "FASTSIM".to_string(),
+            "kalker_exact" => "Kalker exact".to_string(),
             other => other.to_string(),
         })
         .collect();
@@ -230,6 +261,16 @@ pub fn write_plot(path: &Path, r: &TractionReport) -> Result<()> {
         .map(|c| {
             if c.model == "kalker_linear" {
                 clip_to_saturation(&r.creepage, &c.normalized_force)
+            } else if let Some(x) = &c.exact {
+                // Unconverged points are not results: leave them out of the plot.
+                r.creepage
+                    .iter()
+                    .copied()
+                    .zip(c.normalized_force.iter().copied())
+                    .enumerate()
+                    .filter(|(i, _)| !x.not_converged.contains(i))
+                    .map(|(_, p)| p)
+                    .collect()
             } else {
                 r.creepage
                     .iter()

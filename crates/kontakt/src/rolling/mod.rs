@@ -15,6 +15,9 @@
 //! - [`SteadySolver`]: steady rolling for given creepages and spin (`S = ω − ∂u/∂x`,
 //!   upwind, the rolling step one cell), as Kalker's transient steps marched to the
 //!   steady state; creep forces, spin moment, stick/slip map and slip.
+//! - [`KalkerExact`]: the traction model `kalker_exact` — a steady solver planned on a
+//!   Hertz ellipse, evaluated along a creep curve with warm starts, each point with its
+//!   status (`kontakt traction`, docs/tangential.md §11).
 //!
 //! Not yet here: the normal-tangential coupling of dissimilar bodies (`K ≠ 0`), the
 //! speed targets of issue 17, Carter's and Kalker's published creep curves as tests, and
@@ -22,12 +25,14 @@
 //!
 //! Units: mm, N, MPa throughout.
 
+mod curve;
 pub mod influence;
 mod operator;
 mod shift;
 mod steady;
 
 pub use crate::tangential::KalkerMaterial;
+pub use curve::{ExactPoint, KalkerExact, KalkerExactOptions};
 pub use operator::{TangentialOperator, difference_parameter};
 pub use shift::{CellState, ShiftLoad, ShiftOptions, ShiftSolution, ShiftSolver};
 pub use steady::{SteadyOptions, SteadySolution, SteadySolver};
