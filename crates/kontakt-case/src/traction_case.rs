@@ -389,8 +389,8 @@ impl Default for FastsimSpec {
 #[serde(deny_unknown_fields, default)]
 pub struct KalkerExactSpec {
     /// Cells across the contact ellipse `[mx, my]` (along the rolling direction, across),
-    /// each 8..=1024; default `[32, 32]`. Below 16 the report warns: the creep force is
-    /// then high by more than about 5 % at small creepage (first-order grid error).
+    /// each 8..=1024; default `[32, 32]`. Below 16 the report warns: the creep force may
+    /// then be off by 5 % or more (grid convergence in docs/tangential.md §11).
     pub elements: [usize; 2],
     /// Most rolling steps of the steady solver per point, >= 1 (default 2000); a point
     /// that needs more is reported as not converged.
@@ -858,10 +858,10 @@ fn exact_curve(
     let [mx, my] = case.kalker_exact.elements;
     if mx.min(my) < KALKER_EXACT_WARN_ELEMENTS {
         warnings.push(format!(
-            "kalker_exact: {mx} x {my} cells across the contact; below {KALKER_EXACT_WARN_ELEMENTS} \
-             the creep force at small creepage is high by about {:.0} % (first-order grid \
-             error 0.8/cells); use kalker_exact.elements >= [32, 32] for results",
-            80.0 / mx.min(my) as f64
+            "kalker_exact: {mx} x {my} cells across the contact; below \
+             {KALKER_EXACT_WARN_ELEMENTS} the creep force may be off by 5 % or more (grid \
+             convergence: docs/tangential.md section 11); use kalker_exact.elements >= [32, 32] \
+             for results"
         ));
     }
     let not_converged: Vec<usize> = points

@@ -172,17 +172,29 @@ fn contact_fastsim_case_with_our_fastsim() {
         };
         let f = Fastsim::new(e, &steel, &steel, 0.3, options).unwrap();
         let s = f.solve(&c).unwrap();
-        println!("our FASTSIM {n}: Fy {:.1} Mz {:.1}", s.forces[1], s.spin_moment);
+        println!(
+            "our FASTSIM {n}: Fy {:.1} Mz {:.1}",
+            s.forces[1], s.spin_moment
+        );
         if n == 200 {
-            assert!((s.forces[1] / -1.564e4 - 1.0).abs() < 0.03, "{}", s.forces[1]);
-            assert!((s.spin_moment / -3.798e4 - 1.0).abs() < 0.03, "{}", s.spin_moment);
+            assert!(
+                (s.forces[1] / -1.564e4 - 1.0).abs() < 0.03,
+                "{}",
+                s.forces[1]
+            );
+            assert!(
+                (s.spin_moment / -3.798e4 - 1.0).abs() < 0.03,
+                "{}",
+                s.spin_moment
+            );
         }
     }
 }
 
 /// Small creepage: the slope is Kalker's linear C11 (a circle, ν = 0.28, C11 = 4.226 by
-/// the reference table) within the grid error: +4.5 % measured on 16 × 16 (the
-/// first-order error `0.8/cells`); tolerance 6 %. Lateral: C22 likewise.
+/// the reference table) within the grid error: +4.8 % measured on 16 × 16 (the grid
+/// error at small creepage is not monotone: +0.9 %, +4.8 %, -0.3 %, +1.4 % at 12, 16, 24,
+/// 32 cells); tolerance 6 %. Lateral: C22 likewise.
 #[test]
 fn small_creepage_slope_is_kalker_linear() {
     let e = ContactEllipse::new(1.0, 1.0, 1000.0).unwrap();
