@@ -563,6 +563,75 @@ pub struct TractionReport {
 /// # Ok::<(), kontakt::Error>(())
 /// ```
 pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
+    run_traction_case_with_map(case, None).map(|(r, _)| r)
+}
+
+/// Where `kontakt traction --map` draws the stick/slip map of `kalker_exact`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum MapPoint {
+    /// The first point of the curve where `F_T/(mu F_N)` reaches 0.5 (partial slip).
+    Auto,
+    /// This longitudinal creepage \[-\] (with the case's lateral and spin creepage).
+    Creepage(f64),
+}
+
+/// The tractions and the stick/slip state of one `kalker_exact` point on its grid.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ExactMap {
+    /// Longitudinal, lateral creepage \[-\] and spin \[1/mm\] of the point.
+    pub creepage: [f64; 3],
+    /// `F_T/(mu F_N)` \[-\] of the point.
+    pub normalized_force: f64,
+    /// Stick cells over loaded cells \[-\].
+    pub stick_fraction: f64,
+    /// The solver's status at the point.
+    pub status: SolveStatus,
+    /// Cells `[nx, ny]` of the grid (with the unloaded columns).
+    pub cells: [usize; 2],
+    /// Lower-left corner of the grid `[x_min, y_min]` \[mm\].
+    pub origin_mm: [f64; 2],
+    /// Cell size `[dx, dy]` \[mm\].
+    pub cell_mm: [f64; 2],
+    /// Semi-axes `[a, b]` of the contact ellipse \[mm\].
+    pub semi_axes_mm: [f64; 2],
+    /// Traction magnitude `|tau|` \[MPa\] per cell, row-major with x fastest.
+    pub traction_mpa: Vec<f64>,
+    /// 1 in stick cells, 0 elsewhere.
+    pub stick: Vec<f64>,
+    /// 1 in slip cells, 0 elsewhere.
+    pub slip: Vec<f64>,
+}
+
+/// [`run_traction_case`], and with `map` the stick/slip map of `kalker_exact` at that
+/// point (solved from zero traction on the model's grid).
+///
+/// # Errors
+/// As [`run_traction_case`]; [`Error::InvalidInput`] naming `models` when a map is asked
+/// for without `kalker_exact`, or `--map-creepage` when it is not finite.
+pub fn run_traction_case_with_map(
+    case: &TractionCase,
+    map: Option<MapPoint>,
+) -> Result<(TractionReport, Option<ExactMap>)> {
+    if map.is_some() && !case.models.contains(&TractionModel::KalkerExact) {
+        return Err(Error::invalid(
+            "models",
+            format!(
+                "{:?}",
+                case.models.iter().map(|m| m.as_str()).collect::<Vec<_>>()
+            ),
+            "a list with \"kalker_exact\" for --map (the stick/slip map of Kalker's exact theory)",
+        ));
+    }
+    if let Some(MapPoint::Creepage(xi)) = map {
+        if !xi.is_finite() {
+            return Err(Error::invalid(
+                "--map-creepage",
+                xi,
+                "a finite creepage [-]",
+            ));
+        }
+    }
+    let mut exact_map = None;
     if case.method != "traction" {
         return Err(Error::invalid(
             "method",
@@ -729,8 +798,9 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
                      contact ellipse: use kind = \"hertz\" or \"ellipse\")",
                 ));
             };
-            let (report, notes) =
-                exact_curve(case, e, &m1, &m2, &creepage, combined).map_err(map_common)?;
+            let (report, notes, field) =
+                exact_curve(case, e, &m1, &m2, &creepage, combined, map).map_err(map_common)?;
+            exact_map = field;
             warnings.extend(notes);
             curves.push(report);
             continue;
@@ -788,7 +858,7 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
         (None, Some(e)) => Some(KalkerLinear::new(e, &m1, &m2, mu).map_err(map_common)?),
         (None, None) => None,
     };
-    Ok(TractionReport {
+    let report = TractionReport {
         kontakt_version: kontakt::VERSION,
         schema_version: SCHEMA_VERSION,
         name: case.name.clone(),
@@ -812,7 +882,8 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
         spin_creepage_per_mm: combined.then_some(case.creepage.spin_per_mm),
         curves,
         warnings,
-    })
+    };
+    Ok((report, exact_map))
 }
 
 /// Kalker's exact theory along the case's creepages (longitudinal `xis` \[-\], with the
@@ -825,7 +896,8 @@ fn exact_curve(
     m2: &kontakt::material::ElasticMaterial,
     xis: &[f64],
     combined: bool,
-) -> Result<(CurveReport, Vec<String>)> {
+    map: Option<MapPoint>,
+) -> Result<(CurveReport, Vec<String>, Option<ExactMap>)> {
     if case.kalker_exact.max_steps == 0 {
         return Err(Error::invalid(
             "kalker_exact.max_steps",
@@ -884,6 +956,49 @@ fn exact_curve(
         ));
     }
     let grid = model.grid();
+    let field = match map {
+        None => None,
+        Some(at) => {
+            let xi = match at {
+                MapPoint::Creepage(xi) => xi,
+                MapPoint::Auto => points
+                    .iter()
+                    .find(|p| p.normalized_force >= 0.5)
+                    .or(points.last())
+                    .map_or(0.0, |p| p.creepage.longitudinal),
+            };
+            let c = kontakt::tangential::Creepage {
+                longitudinal: xi,
+                lateral: case.creepage.lateral,
+                spin: case.creepage.spin_per_mm,
+            };
+            let (p, s) = model.solve_with_field(&c, false)?;
+            let flag = |want: kontakt::rolling::CellState| -> Vec<f64> {
+                s.state
+                    .iter()
+                    .map(|st| if *st == want { 1.0 } else { 0.0 })
+                    .collect()
+            };
+            Some(ExactMap {
+                creepage: [xi, c.lateral, c.spin],
+                normalized_force: p.normalized_force,
+                stick_fraction: p.stick_fraction,
+                status: p.status,
+                cells: [grid.nx(), grid.ny()],
+                origin_mm: [grid.x(0) - 0.5 * grid.dx(), grid.y(0) - 0.5 * grid.dy()],
+                cell_mm: [grid.dx(), grid.dy()],
+                semi_axes_mm: [ellipse.a(), ellipse.b()],
+                traction_mpa: s
+                    .traction_x
+                    .iter()
+                    .zip(&s.traction_y)
+                    .map(|(x, y)| x.hypot(*y))
+                    .collect(),
+                stick: flag(kontakt::rolling::CellState::Stick),
+                slip: flag(kontakt::rolling::CellState::Slip),
+            })
+        }
+    };
     let exact = ExactCurveReport {
         elements: [mx, my],
         cell_mm: [grid.dx(), grid.dy()],
@@ -906,6 +1021,7 @@ fn exact_curve(
             exact: Some(exact),
         },
         warnings,
+        field,
     ))
 }
 

@@ -686,3 +686,42 @@ fn kalker_exact_bad_input_and_unconverged_points() {
         "{text}"
     );
 }
+
+/// `--map`: kalker_exact's stick/slip map at one point (PNG and SVG written; the SVG
+/// names the stick area and the ellipse); without kalker_exact in the models, or with a
+/// non-finite `--map-creepage`, one line and exit 2.
+#[test]
+fn kalker_exact_stick_slip_map() {
+    let case = exact_case("elements = [16, 16]", "max = 0.004\npoints = 3");
+    let dir = tempdir();
+    let (png, svg) = (dir.join("map.png"), dir.join("map.svg"));
+    for (path, extra) in [(&png, None), (&svg, Some("0.001"))] {
+        let mut cmd = kontakt();
+        cmd.args(["traction", case.to_str().unwrap(), "--map"]).arg(path);
+        if let Some(xi) = extra {
+            cmd.args(["--map-creepage", xi]);
+        }
+        let out = cmd.output().unwrap();
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        assert!(std::fs::metadata(path).unwrap().len() > 1000);
+    }
+    let drawn = std::fs::read_to_string(&svg).unwrap();
+    assert!(drawn.contains("stick (adhesion) area"), "legend");
+    assert!(drawn.contains("xi = 1.0000e-3"), "title names the creepage");
+    let l = bad(&[
+        "traction",
+        example().to_str().unwrap(),
+        "--map",
+        dir.join("no.png").to_str().unwrap(),
+    ]);
+    assert!(l.contains("invalid models") && l.contains("kalker_exact"), "{l}");
+    let l = bad(&[
+        "traction",
+        case.to_str().unwrap(),
+        "--map",
+        png.to_str().unwrap(),
+        "--map-creepage",
+        "nan",
+    ]);
+    assert!(l.contains("--map-creepage"), "{l}");
+}

@@ -5,8 +5,8 @@
 use crate::cli::TractionArgs;
 use crate::commands::{InputError, cannot_write};
 use anyhow::{Context, Result};
-use kontakt_case::{TractionCase, TractionReport, run_traction_case};
-use kontakt_plot::{LinePlot, LineStyle, PALETTE, Series};
+use kontakt_case::{ExactMap, MapPoint, TractionCase, TractionReport, run_traction_case_with_map};
+use kontakt_plot::{Ellipse, FieldMap, LinePlot, LineStyle, Overlay, PALETTE, Series};
 use std::io::Write;
 use std::path::Path;
 
@@ -17,7 +17,14 @@ const MAX_ROWS: usize = 21;
 pub fn run(args: &TractionArgs, out: &mut impl Write) -> Result<()> {
     let (label, text) = crate::commands::read_case_for(&args.case, "traction", "traction")?;
     let case = TractionCase::from_toml_str(&text).with_context(|| label.clone())?;
-    let report = run_traction_case(&case).with_context(|| label.clone())?;
+    let map = args
+        .map
+        .as_ref()
+        .map(|_| args.map_creepage.map_or(MapPoint::Auto, MapPoint::Creepage));
+    let (report, field) = run_traction_case_with_map(&case, map).with_context(|| label.clone())?;
+    if let (Some(path), Some(field)) = (&args.map, &field) {
+        write_map(path, field)?;
+    }
     if let Some(path) = &args.csv {
         write_csv(path, &report)?;
     }
@@ -239,6 +246,57 @@ fn clip_to_saturation(xs: &[f64], ys: &[f64]) -> Vec<(f64, f64)> {
         }
     }
     pts
+}
+
+/// Draw kalker_exact's traction magnitude at one point with its stick area outlined
+/// over the Hertz ellipse.
+pub fn write_map(path: &Path, m: &ExactMap) -> Result<()> {
+    kontakt_plot::Format::from_path(path).map_err(|e| InputError(e.to_string()))?;
+    let [xi, eta, phi] = m.creepage;
+    let mut title = format!(
+        "Kalker exact: xi = {xi:.4e}, F_T/(mu F_N) = {:.4}, stick {:.0} %",
+        m.normalized_force,
+        100.0 * m.stick_fraction
+    );
+    if eta != 0.0 || phi != 0.0 {
+        title.push_str(&format!(", eta = {eta:.3e}, phi = {phi:.3e}/mm"));
+    }
+    if !m.status.converged() {
+        title.push_str(" (NOT converged)");
+    }
+    let overlays = [Overlay {
+        label: "stick (adhesion) area; slip elsewhere",
+        values: &m.stick,
+        color: (214, 39, 40),
+    }];
+    kontakt_plot::field_map(
+        path,
+        &FieldMap {
+            nx: m.cells[0],
+            ny: m.cells[1],
+            x_min: m.origin_mm[0],
+            y_min: m.origin_mm[1],
+            dx: m.cell_mm[0],
+            dy: m.cell_mm[1],
+            values: &m.traction_mpa,
+            title: &title,
+            x_label: "x [mm] (rolling direction, leading edge at +x)",
+            y_label: "y [mm]",
+            colorbar_label: "|traction| [MPa]",
+            outline: true,
+            overlays: &overlays,
+            ellipse: Some(Ellipse {
+                label: "Hertz contact ellipse",
+                centre: (0.0, 0.0),
+                semi_axes: (m.semi_axes_mm[0], m.semi_axes_mm[1]),
+                angle: 0.0,
+                color: (80, 80, 80),
+            }),
+            max_marker: None,
+        },
+        (900, 700),
+    )
+    .with_context(|| format!("drawing {}", path.display()))
 }
 
 /// Draw the curves; Kalker's linear theory up to where it reaches saturation.

@@ -45,7 +45,7 @@
 //! Vollebregt, CONTACT user guide (reference outputs of its examples, used as test data
 //! in `tests/rolling_exact.rs`).
 
-use super::steady::{SteadyOptions, SteadySolver};
+use super::steady::{SteadyOptions, SteadySolution, SteadySolver};
 use crate::error::{Error, Result};
 use crate::geometry::Grid2;
 use crate::material::ElasticMaterial;
@@ -245,6 +245,19 @@ impl KalkerExact {
     /// [`Error::InvalidInput`] naming `creepage.longitudinal`, `creepage.lateral` or
     /// `creepage.spin` for a non-finite creepage, or the steady solver's options.
     pub fn solve(&self, creepage: &Creepage, warm_start: bool) -> Result<ExactPoint> {
+        self.solve_with_field(creepage, warm_start).map(|(p, _)| p)
+    }
+
+    /// As [`solve`](Self::solve), with the solver's full solution: the traction, slip and
+    /// stick/slip state of every cell of [`grid`](Self::grid) (for a stick/slip map).
+    ///
+    /// # Errors
+    /// As [`solve`](Self::solve).
+    pub fn solve_with_field(
+        &self,
+        creepage: &Creepage,
+        warm_start: bool,
+    ) -> Result<(ExactPoint, SteadySolution)> {
         creepage.validate()?;
         let mut solver = self
             .solver
@@ -261,7 +274,7 @@ impl KalkerExact {
         let bound = self.mu * self.ellipse.normal_force();
         let loaded = s.stick_cells + s.slip_cells;
         let t = -s.force[0] / bound;
-        Ok(ExactPoint {
+        let point = ExactPoint {
             creepage: *creepage,
             force: s.force,
             spin_moment: s.spin_moment,
@@ -269,7 +282,8 @@ impl KalkerExact {
             stick_fraction: s.stick_cells as f64 / loaded.max(1) as f64,
             fft_iterations: s.fft_iterations,
             status: s.status,
-        })
+        };
+        Ok((point, s))
     }
 
     /// A creep curve: every point of `creepages` in order, the first from zero traction,
