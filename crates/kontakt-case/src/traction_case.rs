@@ -622,14 +622,14 @@ pub fn run_traction_case_with_map(
             "a list with \"kalker_exact\" for --map (the stick/slip map of Kalker's exact theory)",
         ));
     }
-    if let Some(MapPoint::Creepage(xi)) = map {
-        if !xi.is_finite() {
-            return Err(Error::invalid(
-                "--map-creepage",
-                xi,
-                "a finite creepage [-]",
-            ));
-        }
+    if let Some(MapPoint::Creepage(xi)) = map
+        && !xi.is_finite()
+    {
+        return Err(Error::invalid(
+            "--map-creepage",
+            xi,
+            "a finite creepage [-]",
+        ));
     }
     let mut exact_map = None;
     if case.method != "traction" {

@@ -697,12 +697,17 @@ fn kalker_exact_stick_slip_map() {
     let (png, svg) = (dir.join("map.png"), dir.join("map.svg"));
     for (path, extra) in [(&png, None), (&svg, Some("0.001"))] {
         let mut cmd = kontakt();
-        cmd.args(["traction", case.to_str().unwrap(), "--map"]).arg(path);
+        cmd.args(["traction", case.to_str().unwrap(), "--map"])
+            .arg(path);
         if let Some(xi) = extra {
             cmd.args(["--map-creepage", xi]);
         }
         let out = cmd.output().unwrap();
-        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
         assert!(std::fs::metadata(path).unwrap().len() > 1000);
     }
     let drawn = std::fs::read_to_string(&svg).unwrap();
@@ -714,7 +719,10 @@ fn kalker_exact_stick_slip_map() {
         "--map",
         dir.join("no.png").to_str().unwrap(),
     ]);
-    assert!(l.contains("invalid models") && l.contains("kalker_exact"), "{l}");
+    assert!(
+        l.contains("invalid models") && l.contains("kalker_exact"),
+        "{l}"
+    );
     let l = bad(&[
         "traction",
         case.to_str().unwrap(),
