@@ -406,6 +406,9 @@ impl Default for KalkerExactSpec {
     }
 }
 
+/// Most creepage points of a `kalker_exact` curve (each is a steady-rolling solve).
+pub const KALKER_EXACT_MAX_POINTS: usize = 1001;
+
 /// Fewer cells across the contact than this gives a warning for `kalker_exact`.
 pub const KALKER_EXACT_WARN_ELEMENTS: usize = 16;
 
@@ -632,6 +635,7 @@ pub fn run_traction_case_with_map(
         ));
     }
     let mut exact_map = None;
+    let mut exact_slot = None;
     if case.method != "traction" {
         return Err(Error::invalid(
             "method",
@@ -798,11 +802,15 @@ pub fn run_traction_case_with_map(
                      contact ellipse: use kind = \"hertz\" or \"ellipse\")",
                 ));
             };
-            let (report, notes, field) =
-                exact_curve(case, e, &m1, &m2, &creepage, combined, map).map_err(map_common)?;
-            exact_map = field;
-            warnings.extend(notes);
-            curves.push(report);
+            // Solved after the other models (below), so that their input errors come
+            // first and cheaply; the slot keeps the case's order.
+            exact_slot = Some((curves.len(), e));
+            curves.push(CurveReport {
+                model: model.as_str(),
+                normalized_force: Vec::new(),
+                forces: None,
+                exact: None,
+            });
             continue;
         }
         let curve: &dyn TractionCurve = match model {
@@ -852,6 +860,13 @@ pub fn run_traction_case_with_map(
             exact: None,
         });
     }
+    if let Some((slot, e)) = exact_slot {
+        let (report, notes, field) =
+            exact_curve(case, e, &m1, &m2, &creepage, combined, map).map_err(map_common)?;
+        exact_map = field;
+        warnings.extend(notes);
+        curves[slot] = report;
+    }
     // Linear-theory data for every point contact, also when the model was not asked for.
     let linear = match (&kalker, ellipse) {
         (Some(k), _) => Some(*k),
@@ -898,6 +913,16 @@ fn exact_curve(
     combined: bool,
     map: Option<MapPoint>,
 ) -> Result<(CurveReport, Vec<String>, Option<ExactMap>)> {
+    if xis.len() > KALKER_EXACT_MAX_POINTS {
+        return Err(Error::invalid(
+            "creepage.points",
+            xis.len(),
+            format!(
+                "at most {KALKER_EXACT_MAX_POINTS} points with model kalker_exact (a steady \
+                 rolling solve each)"
+            ),
+        ));
+    }
     if case.kalker_exact.max_steps == 0 {
         return Err(Error::invalid(
             "kalker_exact.max_steps",

@@ -631,6 +631,16 @@ fn kalker_exact_bad_input_and_unconverged_points() {
     assert!(l.contains("invalid kalker_exact.max_steps = 0"), "{l}");
     let l = bad(&[
         "traction",
+        exact_case("elements = [16, 16]", "max = 0.002\npoints = 1002")
+            .to_str()
+            .unwrap(),
+    ]);
+    assert!(
+        l.contains("invalid creepage.points = 1002") && l.contains("kalker_exact"),
+        "{l}"
+    );
+    let l = bad(&[
+        "traction",
         exact_case("elements = [16, 16]", "max = 0.002\nlateral = nan")
             .to_str()
             .unwrap(),
