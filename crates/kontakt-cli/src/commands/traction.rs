@@ -130,7 +130,8 @@ pub fn print_report(out: &mut impl Write, r: &TractionReport, json: bool) -> Res
     if step > 1 {
         writeln!(
             out,
-            "  (every {step}th of {n} points; --csv writes all; Kalker linear is unclipped)"
+            "  (every {} of {n} points; --csv writes all; Kalker linear is unclipped)",
+            ordinal(step)
         )?;
     }
     print_forces(out, r, step)?;
@@ -138,6 +139,18 @@ pub fn print_report(out: &mut impl Write, r: &TractionReport, json: bool) -> Res
         writeln!(out, "  warning: {w}")?;
     }
     Ok(())
+}
+
+/// `2nd`, `3rd`, `5th`, `11th`, `21st`, ...
+fn ordinal(n: usize) -> String {
+    let suffix = match (n % 10, n % 100) {
+        (_, 11..=13) => "th",
+        (1, _) => "st",
+        (2, _) => "nd",
+        (3, _) => "rd",
+        _ => "th",
+    };
+    format!("{n}{suffix}")
 }
 
 /// With lateral or spin creepage: the creep forces and the spin moment of each model that
@@ -377,6 +390,20 @@ pub fn write_plot(path: &Path, r: &TractionReport) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::clip_to_saturation;
+
+    #[test]
+    fn ordinals() {
+        let got: Vec<String> = [2, 3, 5, 11, 12, 13, 21, 22, 101]
+            .iter()
+            .map(|n| super::ordinal(*n))
+            .collect();
+        assert_eq!(
+            got,
+            [
+                "2nd", "3rd", "5th", "11th", "12th", "13th", "21st", "22nd", "101st"
+            ]
+        );
+    }
 
     #[test]
     fn linear_curve_is_cut_at_saturation() {
