@@ -48,4 +48,6 @@ pub use mindlin_case::{MindlinCase, MindlinReport, run_mindlin_case};
 pub use pimp_case::{PimpCase, PimpOutcome, PimpReport, run_pimp_case};
 pub use rough_case::{RoughCase, RoughOutcome, RoughReport, run_rough_case};
 pub use sweep::{Sweep, SweepError};
-pub use traction_case::{TractionCase, TractionReport, run_traction_case};
+pub use traction_case::{
+    ExactMap, MapPoint, TractionCase, TractionReport, run_traction_case, run_traction_case_with_map,
+};

@@ -5,7 +5,8 @@
 //! ```toml
 //! name = "twin-disc, crowned disc on cylindrical disc"
 //! method = "traction"
-//! models = ["carter", "kalker_linear", "fastsim"]   # default: all three
+//! models = ["carter", "kalker_linear", "fastsim"]   # default: these three; also
+//!                                                   # "kalker_exact", "asperity"
 //!
 //! [geometry]
 //! kind = "hertz"             # principal radii -> Hertz ellipse; rolling along body 1's
@@ -36,11 +37,15 @@
 //! # min = 0.0                # optional, default 0
 //! # lateral = 0.0            # optional: a constant lateral creepage [-] at every point
 //! # spin_per_mm = 0.0        # optional: a constant spin creepage [1/mm] at every point
-//! #                          # (both: kalker_linear and fastsim only)
+//! #                          # (both: kalker_linear, fastsim, kalker_exact)
 //!
 //! [fastsim]                  # optional
 //! elements = [50, 50]
 //! pressure = "parabolic"     # or "elliptic"
+//!
+//! [kalker_exact]             # optional: Kalker's exact theory on the half-space grid
+//! elements = [32, 32]        # cells across the ellipse (along rolling, across), 8..=1024
+//! max_steps = 2000           # rolling steps per point before it counts as not converged
 //!
 //! # [asperity]               # for models = [..., "asperity"]: circular or line contacts
 //! # asperity_radii_mm = [0.02, 0.02]     # of identical bodies (kontakt::traction)
@@ -51,11 +56,20 @@
 //! into a [`TractionReport`]. Kalker's linear curve is reported *unclipped* (it is the
 //! linear theory; it exceeds 1 beyond its saturation creepage); `kontakt traction --plot`
 //! draws it up to where it reaches 1.
+//!
+//! `kalker_exact` ([`kontakt::rolling::KalkerExact`]) solves Kalker's exact steady-rolling
+//! problem at every point of the curve (warm-started along it) and reports each point's
+//! solver status, the stick fraction and the grid in the curve's `exact` record; a point
+//! that did not converge is named in the report's `warnings`. It costs a steady solve per
+//! point (milliseconds to seconds, growing with `elements`), where the other models cost
+//! microseconds.
 
 use crate::common::{MaterialSpec, SCHEMA_VERSION, material, parse_toml};
 use kontakt::hertz::line::LineContact;
 use kontakt::hertz::{HertzPointContact, PointGeometry};
 use kontakt::material::effective_modulus;
+use kontakt::rolling::{KalkerExact, KalkerExactOptions};
+use kontakt::solve::SolveStatus;
 use kontakt::tangential::{
     Carter, ContactEllipse, CreepCoefficients, Fastsim, FastsimOptions, KalkerLinear,
     KalkerMaterial, PressureShape, TractionCurve,
@@ -94,6 +108,9 @@ pub struct TractionCase {
     /// FASTSIM options.
     #[serde(default)]
     pub fastsim: FastsimSpec,
+    /// Options of the `kalker_exact` model.
+    #[serde(default)]
+    pub kalker_exact: KalkerExactSpec,
     /// The asperity lattice, needed by the `asperity` model.
     #[serde(default)]
     pub asperity: Option<AsperitySpec>,
@@ -146,6 +163,9 @@ pub enum TractionModel {
     /// The asperity micro-slip model ([`AsperityTraction`]) of a rough circular or line
     /// contact; needs `[asperity]`.
     Asperity,
+    /// Kalker's exact theory of steady rolling on the half-space grid
+    /// ([`KalkerExact`]), with a solver status per point.
+    KalkerExact,
 }
 
 impl TractionModel {
@@ -156,6 +176,7 @@ impl TractionModel {
             TractionModel::KalkerLinear => "kalker_linear",
             TractionModel::Fastsim => "fastsim",
             TractionModel::Asperity => "asperity",
+            TractionModel::KalkerExact => "kalker_exact",
         }
     }
 }
@@ -363,6 +384,34 @@ impl Default for FastsimSpec {
     }
 }
 
+/// `[kalker_exact]`: options of Kalker's exact theory.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct KalkerExactSpec {
+    /// Cells across the contact ellipse `[mx, my]` (along the rolling direction, across),
+    /// each 8..=1024; default `[32, 32]`. Below 16 the report warns: the creep force may
+    /// then be off by 5 % or more (grid convergence in docs/tangential.md §11).
+    pub elements: [usize; 2],
+    /// Most rolling steps of the steady solver per point, >= 1 (default 2000); a point
+    /// that needs more is reported as not converged.
+    pub max_steps: usize,
+}
+
+impl Default for KalkerExactSpec {
+    fn default() -> Self {
+        KalkerExactSpec {
+            elements: KalkerExactOptions::default().elements,
+            max_steps: KalkerExactOptions::default().steady.max_steps,
+        }
+    }
+}
+
+/// Most creepage points of a `kalker_exact` curve (each is a steady-rolling solve).
+pub const KALKER_EXACT_MAX_POINTS: usize = 1001;
+
+/// Fewer cells across the contact than this gives a warning for `kalker_exact`.
+pub const KALKER_EXACT_WARN_ELEMENTS: usize = 16;
+
 impl TractionCase {
     /// Parse a traction case from TOML text.
     ///
@@ -387,6 +436,29 @@ pub struct CurveReport {
     /// case gives `creepage.lateral` or `creepage.spin_per_mm`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub forces: Option<CreepForces>,
+    /// Kalker's exact theory only: the grid and the solver's record at each point.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub exact: Option<ExactCurveReport>,
+}
+
+/// The solver's record of a `kalker_exact` curve.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ExactCurveReport {
+    /// Cells across the contact `[mx, my]`.
+    pub elements: [usize; 2],
+    /// Cell size `[dx, dy]` \[mm\].
+    pub cell_mm: [f64; 2],
+    /// Whether every point converged.
+    pub converged: bool,
+    /// Indices of the points that did not converge (their values are not results).
+    pub not_converged: Vec<usize>,
+    /// Stick cells over loaded cells at each point \[-\].
+    pub stick_fraction: Vec<f64>,
+    /// FFT applications of the tangential operator over the whole curve.
+    pub fft_iterations: usize,
+    /// The steady solver's status at each point: termination, rolling steps and the last
+    /// traction change relative to `mu p_max`.
+    pub status: Vec<SolveStatus>,
 }
 
 /// Creep forces and spin moment on body 1 along a curve (Kalker's sign convention: the
@@ -455,6 +527,9 @@ pub struct TractionReport {
     pub spin_creepage_per_mm: Option<f64>,
     /// One curve per model, in the order of the case.
     pub curves: Vec<CurveReport>,
+    /// Results to treat with care: unconverged points of `kalker_exact`, a coarse grid.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub warnings: Vec<String>,
 }
 
 /// Run a traction case: build the contact, plan each model once and evaluate its curve.
@@ -491,6 +566,76 @@ pub struct TractionReport {
 /// # Ok::<(), kontakt::Error>(())
 /// ```
 pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
+    run_traction_case_with_map(case, None).map(|(r, _)| r)
+}
+
+/// Where `kontakt traction --map` draws the stick/slip map of `kalker_exact`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum MapPoint {
+    /// The first point of the curve where `F_T/(mu F_N)` reaches 0.5 (partial slip).
+    Auto,
+    /// This longitudinal creepage \[-\] (with the case's lateral and spin creepage).
+    Creepage(f64),
+}
+
+/// The tractions and the stick/slip state of one `kalker_exact` point on its grid.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ExactMap {
+    /// Longitudinal, lateral creepage \[-\] and spin \[1/mm\] of the point.
+    pub creepage: [f64; 3],
+    /// `F_T/(mu F_N)` \[-\] of the point.
+    pub normalized_force: f64,
+    /// Stick cells over loaded cells \[-\].
+    pub stick_fraction: f64,
+    /// The solver's status at the point.
+    pub status: SolveStatus,
+    /// Cells `[nx, ny]` of the grid (with the unloaded columns).
+    pub cells: [usize; 2],
+    /// Lower-left corner of the grid `[x_min, y_min]` \[mm\].
+    pub origin_mm: [f64; 2],
+    /// Cell size `[dx, dy]` \[mm\].
+    pub cell_mm: [f64; 2],
+    /// Semi-axes `[a, b]` of the contact ellipse \[mm\].
+    pub semi_axes_mm: [f64; 2],
+    /// Traction magnitude `|tau|` \[MPa\] per cell, row-major with x fastest.
+    pub traction_mpa: Vec<f64>,
+    /// 1 in stick cells, 0 elsewhere.
+    pub stick: Vec<f64>,
+    /// 1 in slip cells, 0 elsewhere.
+    pub slip: Vec<f64>,
+}
+
+/// [`run_traction_case`], and with `map` the stick/slip map of `kalker_exact` at that
+/// point (solved from zero traction on the model's grid).
+///
+/// # Errors
+/// As [`run_traction_case`]; [`Error::InvalidInput`] naming `models` when a map is asked
+/// for without `kalker_exact`, or `--map-creepage` when it is not finite.
+pub fn run_traction_case_with_map(
+    case: &TractionCase,
+    map: Option<MapPoint>,
+) -> Result<(TractionReport, Option<ExactMap>)> {
+    if map.is_some() && !case.models.contains(&TractionModel::KalkerExact) {
+        return Err(Error::invalid(
+            "models",
+            format!(
+                "{:?}",
+                case.models.iter().map(|m| m.as_str()).collect::<Vec<_>>()
+            ),
+            "a list with \"kalker_exact\" for --map (the stick/slip map of Kalker's exact theory)",
+        ));
+    }
+    if let Some(MapPoint::Creepage(xi)) = map
+        && !xi.is_finite()
+    {
+        return Err(Error::invalid(
+            "--map-creepage",
+            xi,
+            "a finite creepage [-]",
+        ));
+    }
+    let mut exact_map = None;
+    let mut exact_slot = None;
     if case.method != "traction" {
         return Err(Error::invalid(
             "method",
@@ -502,7 +647,7 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
         return Err(Error::invalid(
             "models",
             "[]",
-            "at least one of carter, kalker_linear, fastsim",
+            "at least one of carter, kalker_linear, fastsim, kalker_exact, asperity",
         ));
     }
     let m1 = material(&case.body1, "body1")?;
@@ -529,6 +674,7 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
             "poisson_ratio" => "body1.nu, body2.nu".into(),
             "elements[0]" => "fastsim.elements[0]".into(),
             "elements[1]" => "fastsim.elements[1]".into(),
+            "creepage.spin" => "creepage.spin_per_mm".into(),
             "semi_axes[0]" => "geometry.semi_axes_mm[0]".into(),
             "semi_axes[1]" => "geometry.semi_axes_mm[1]".into(),
             other => other.into(),
@@ -627,6 +773,7 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
     let mut fastsim = None;
     let mut asperity = None;
     let mut curves = Vec::with_capacity(case.models.len());
+    let mut warnings = Vec::new();
     let combined = case.creepage.lateral != 0.0 || case.creepage.spin_per_mm != 0.0;
     for &model in &case.models {
         if combined && matches!(model, TractionModel::Carter | TractionModel::Asperity) {
@@ -640,12 +787,34 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
                 value,
                 format!(
                     "0 with model {} (a theory of longitudinal creepage only); lateral and \
-                     spin creepage need models = [\"kalker_linear\", \"fastsim\"]",
+                     spin creepage need models = [\"kalker_linear\", \"fastsim\", \
+                     \"kalker_exact\"]",
                     model.as_str()
                 ),
             ));
         }
+        if model == TractionModel::KalkerExact {
+            let Some(e) = ellipse else {
+                return Err(Error::invalid(
+                    "models",
+                    model.as_str(),
+                    "carter or asperity for kind = \"line\" (Kalker's theories need a \
+                     contact ellipse: use kind = \"hertz\" or \"ellipse\")",
+                ));
+            };
+            // Solved after the other models (below), so that their input errors come
+            // first and cheaply; the slot keeps the case's order.
+            exact_slot = Some((curves.len(), e));
+            curves.push(CurveReport {
+                model: model.as_str(),
+                normalized_force: Vec::new(),
+                forces: None,
+                exact: None,
+            });
+            continue;
+        }
         let curve: &dyn TractionCurve = match model {
+            TractionModel::KalkerExact => unreachable!("handled above"),
             TractionModel::Carter => &carter,
             TractionModel::Asperity => {
                 asperity = Some(asperity_model(case, force, &carter, ellipse, m1, m2)?);
@@ -688,7 +857,15 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
             model: model.as_str(),
             normalized_force,
             forces,
+            exact: None,
         });
+    }
+    if let Some((slot, e)) = exact_slot {
+        let (report, notes, field) =
+            exact_curve(case, e, &m1, &m2, &creepage, combined, map).map_err(map_common)?;
+        exact_map = field;
+        warnings.extend(notes);
+        curves[slot] = report;
     }
     // Linear-theory data for every point contact, also when the model was not asked for.
     let linear = match (&kalker, ellipse) {
@@ -696,7 +873,7 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
         (None, Some(e)) => Some(KalkerLinear::new(e, &m1, &m2, mu).map_err(map_common)?),
         (None, None) => None,
     };
-    Ok(TractionReport {
+    let report = TractionReport {
         kontakt_version: kontakt::VERSION,
         schema_version: SCHEMA_VERSION,
         name: case.name.clone(),
@@ -719,7 +896,158 @@ pub fn run_traction_case(case: &TractionCase) -> Result<TractionReport> {
         lateral_creepage: combined.then_some(case.creepage.lateral),
         spin_creepage_per_mm: combined.then_some(case.creepage.spin_per_mm),
         curves,
-    })
+        warnings,
+    };
+    Ok((report, exact_map))
+}
+
+/// Kalker's exact theory along the case's creepages (longitudinal `xis` \[-\], with the
+/// constant lateral and spin creepage when `combined`): the curve, its solver record and
+/// the warnings (a coarse grid, unconverged points).
+fn exact_curve(
+    case: &TractionCase,
+    ellipse: ContactEllipse,
+    m1: &kontakt::material::ElasticMaterial,
+    m2: &kontakt::material::ElasticMaterial,
+    xis: &[f64],
+    combined: bool,
+    map: Option<MapPoint>,
+) -> Result<(CurveReport, Vec<String>, Option<ExactMap>)> {
+    if xis.len() > KALKER_EXACT_MAX_POINTS {
+        return Err(Error::invalid(
+            "creepage.points",
+            xis.len(),
+            format!(
+                "at most {KALKER_EXACT_MAX_POINTS} points with model kalker_exact (a steady \
+                 rolling solve each)"
+            ),
+        ));
+    }
+    if case.kalker_exact.max_steps == 0 {
+        return Err(Error::invalid(
+            "kalker_exact.max_steps",
+            0,
+            "at least 1 rolling step",
+        ));
+    }
+    let mut options = KalkerExactOptions {
+        elements: case.kalker_exact.elements,
+        ..KalkerExactOptions::default()
+    };
+    options.steady.max_steps = case.kalker_exact.max_steps;
+    let model = KalkerExact::new(ellipse, m1, m2, case.friction.mu, options).map_err(|e| {
+        e.map_field(|f| match f {
+            "elements[0]" => "kalker_exact.elements[0]".into(),
+            "elements[1]" => "kalker_exact.elements[1]".into(),
+            other => other.into(),
+        })
+    })?;
+    let creepages: Vec<kontakt::tangential::Creepage> = xis
+        .iter()
+        .map(|&xi| kontakt::tangential::Creepage {
+            longitudinal: xi,
+            lateral: case.creepage.lateral,
+            spin: case.creepage.spin_per_mm,
+        })
+        .collect();
+    let points = model.curve(&creepages)?;
+    let mut warnings = Vec::new();
+    let [mx, my] = case.kalker_exact.elements;
+    if mx.min(my) < KALKER_EXACT_WARN_ELEMENTS {
+        warnings.push(format!(
+            "kalker_exact: {mx} x {my} cells across the contact; below \
+             {KALKER_EXACT_WARN_ELEMENTS} the creep force may be off by 5 % or more (grid \
+             convergence: docs/tangential.md section 11); use kalker_exact.elements >= [32, 32] \
+             for results"
+        ));
+    }
+    let not_converged: Vec<usize> = points
+        .iter()
+        .enumerate()
+        .filter(|(_, p)| !p.status.converged())
+        .map(|(i, _)| i)
+        .collect();
+    if !not_converged.is_empty() {
+        let first = &points[not_converged[0]];
+        warnings.push(format!(
+            "kalker_exact: {} of {} points did not converge (first at creepage {:e}: {} after \
+             {} rolling steps, traction change {:.1e}); their values are not results",
+            not_converged.len(),
+            points.len(),
+            first.creepage.longitudinal,
+            first.status.termination.as_str(),
+            first.status.iterations,
+            first.status.residual
+        ));
+    }
+    let grid = model.grid();
+    let field = match map {
+        None => None,
+        Some(at) => {
+            let xi = match at {
+                MapPoint::Creepage(xi) => xi,
+                MapPoint::Auto => points
+                    .iter()
+                    .find(|p| p.normalized_force >= 0.5)
+                    .or(points.last())
+                    .map_or(0.0, |p| p.creepage.longitudinal),
+            };
+            let c = kontakt::tangential::Creepage {
+                longitudinal: xi,
+                lateral: case.creepage.lateral,
+                spin: case.creepage.spin_per_mm,
+            };
+            let (p, s) = model.solve_with_field(&c, false)?;
+            let flag = |want: kontakt::rolling::CellState| -> Vec<f64> {
+                s.state
+                    .iter()
+                    .map(|st| if *st == want { 1.0 } else { 0.0 })
+                    .collect()
+            };
+            Some(ExactMap {
+                creepage: [xi, c.lateral, c.spin],
+                normalized_force: p.normalized_force,
+                stick_fraction: p.stick_fraction,
+                status: p.status,
+                cells: [grid.nx(), grid.ny()],
+                origin_mm: [grid.x(0) - 0.5 * grid.dx(), grid.y(0) - 0.5 * grid.dy()],
+                cell_mm: [grid.dx(), grid.dy()],
+                semi_axes_mm: [ellipse.a(), ellipse.b()],
+                traction_mpa: s
+                    .traction_x
+                    .iter()
+                    .zip(&s.traction_y)
+                    .map(|(x, y)| x.hypot(*y))
+                    .collect(),
+                stick: flag(kontakt::rolling::CellState::Stick),
+                slip: flag(kontakt::rolling::CellState::Slip),
+            })
+        }
+    };
+    let exact = ExactCurveReport {
+        elements: [mx, my],
+        cell_mm: [grid.dx(), grid.dy()],
+        converged: not_converged.is_empty(),
+        not_converged,
+        stick_fraction: points.iter().map(|p| p.stick_fraction).collect(),
+        fft_iterations: points.iter().map(|p| p.fft_iterations).sum(),
+        status: points.iter().map(|p| p.status).collect(),
+    };
+    let forces = combined.then(|| CreepForces {
+        longitudinal_force_n: points.iter().map(|p| p.force[0]).collect(),
+        lateral_force_n: points.iter().map(|p| p.force[1]).collect(),
+        spin_moment_nmm: Some(points.iter().map(|p| p.spin_moment).collect()),
+    });
+    Ok((
+        CurveReport {
+            model: TractionModel::KalkerExact.as_str(),
+            normalized_force: points.iter().map(|p| p.normalized_force).collect(),
+            forces,
+            exact: Some(exact),
+        },
+        warnings,
+        field,
+    ))
 }
 
 /// Kalker's linear theory or FASTSIM along the longitudinal creepages `xis` \[-\] with the

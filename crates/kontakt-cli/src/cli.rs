@@ -213,6 +213,14 @@ pub struct TractionArgs {
     /// Draw the traction curves (.png or .svg); Kalker linear up to saturation.
     #[arg(long, value_name = "FILE.png|svg")]
     pub plot: Option<PathBuf>,
+    /// Draw kalker_exact's stick/slip map and traction magnitude at one creepage point
+    /// (.png or .svg); needs "kalker_exact" in the case's models.
+    #[arg(long, value_name = "FILE.png|svg")]
+    pub map: Option<PathBuf>,
+    /// Longitudinal creepage [-] of the --map point (default: the first curve point where
+    /// kalker_exact reaches F_T/(mu F_N) = 0.5).
+    #[arg(long, value_name = "XI", requires = "map", allow_hyphen_values = true)]
+    pub map_creepage: Option<f64>,
     /// Print one JSON document instead of the table.
     #[arg(long)]
     pub json: bool,

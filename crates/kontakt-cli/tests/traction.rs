@@ -501,3 +501,245 @@ fn line_contact_by_half_width_or_line_load() {
     let l = bad(&["traction", no_load.to_str().unwrap()]);
     assert!(l.contains("invalid load = neither"), "{l}");
 }
+
+/// A small `kalker_exact` case: a circle on a coarse grid (16 cells across) and few
+/// points, so that the test stays quick while the steady solver is slow.
+fn exact_case(extra: &str, creepage: &str) -> PathBuf {
+    let text = format!(
+        "method = \"traction\"\nmodels = [\"kalker_linear\", \"fastsim\", \"kalker_exact\"]\n\
+         [geometry]\nkind = \"ellipse\"\nsemi_axes_mm = [0.3, 0.3]\n\
+         [body1]\ne_mpa = 210000.0\nnu = 0.3\n[body2]\ne_mpa = 210000.0\nnu = 0.3\n\
+         [load]\nforce_n = 1000.0\n[friction]\nmu = 0.1\n[creepage]\n{creepage}\n\
+         [kalker_exact]\n{extra}\n"
+    );
+    let name = format!("exact-{:016x}.toml", fnv(&text));
+    let p = tempdir().join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+/// `kalker_exact` in the JSON report: its curve with the solver record (converged at
+/// every point, stick fraction from 1 down to 0), zero at zero creepage, below the linear
+/// theory, monotone, and 1 in full sliding (1e-3); in the table with its grid line; in
+/// the plot's legend.
+#[test]
+fn kalker_exact_curve_in_json_table_and_plot() {
+    let case = exact_case("elements = [16, 16]", "max = 0.018\npoints = 7");
+    let v = run_json(&["traction", case.to_str().unwrap()]);
+    let c = v["curves"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|c| c["model"] == "kalker_exact")
+        .expect("kalker_exact curve");
+    let f: Vec<f64> = c["normalized_force"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect();
+    let x = &c["exact"];
+    assert_eq!(x["converged"], true);
+    assert_eq!(x["elements"], serde_json::json!([16, 16]));
+    assert_eq!(x["not_converged"].as_array().unwrap().len(), 0);
+    let status = x["status"].as_array().unwrap();
+    assert_eq!(status.len(), 7);
+    assert!(status.iter().all(|s| s["termination"] == "converged"));
+    let stick: Vec<f64> = x["stick_fraction"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| s.as_f64().unwrap())
+        .collect();
+    assert_eq!(stick[0], 1.0);
+    assert_eq!(stick[6], 0.0);
+    assert_eq!(f[0], 0.0);
+    assert!(f.windows(2).all(|w| w[1] > w[0] - 1e-9), "{f:?}");
+    // Full sliding: 1 to 1e-3 (measured 0.99982: with nu > 0 the slip turns slightly
+    // out of x, so |F| = mu F_N but F_x is a little less; CONTACT's curves show the same).
+    assert!((f[6] - 1.0).abs() < 1e-3 && f[6] < 1.0, "{f:?}");
+    // Below its tangent (the linear theory), above half of it at u = 0.94.
+    let linear = v["curves"][0]["normalized_force"][1].as_f64().unwrap();
+    assert!(
+        f[1] < linear && f[1] > 0.5 * linear,
+        "{} vs linear {linear}",
+        f[1]
+    );
+    assert!(v.get("warnings").is_none(), "{v}");
+    // The table names the model and its grid; the plot carries it in the legend.
+    let dir = tempdir();
+    let svg = dir.join("exact.svg");
+    let out = kontakt()
+        .args(["traction", case.to_str().unwrap(), "--plot"])
+        .arg(&svg)
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("kalker_exact"), "{text}");
+    assert!(
+        text.contains(
+            "Kalker exact grid 16 x 16 cells across the contact; converged at all 7 points"
+        ),
+        "{text}"
+    );
+    let drawn = std::fs::read_to_string(&svg).unwrap();
+    assert!(drawn.contains("Kalker exact"), "legend");
+}
+
+/// With lateral creepage and spin the exact model reports forces and the spin moment;
+/// the lateral force opposes the lateral creepage.
+#[test]
+fn kalker_exact_with_lateral_creepage_and_spin() {
+    let case = exact_case(
+        "elements = [16, 16]",
+        "max = 0.001\npoints = 2\nlateral = 0.0005\nspin_per_mm = 0.001",
+    );
+    let v = run_json(&["traction", case.to_str().unwrap()]);
+    let [fx, fy, mz] = forces(&v, "kalker_exact");
+    assert_eq!((fx.len(), fy.len(), mz.len()), (2, 2, 2));
+    assert!(fy.iter().all(|f| *f < 0.0), "{fy:?}");
+    assert!(
+        fx[1] < 0.0 && fx[0].abs() < 1e-6 * fx[1].abs().max(1.0),
+        "{fx:?}"
+    );
+    // |F| <= mu F_N.
+    for i in 0..2 {
+        assert!(fx[i].hypot(fy[i]) <= 100.0 * (1.0 + 1e-6));
+    }
+}
+
+/// Bad input through the case: a grid too coarse to resolve the slip area, zero rolling
+/// steps, friction <= 0, a non-finite lateral creepage, a line contact: one line, exit 2,
+/// naming the key. A point that does not converge: reported (status, `not_converged`,
+/// a warning and `*` in the table), exit status 0.
+#[test]
+fn kalker_exact_bad_input_and_unconverged_points() {
+    let pts = "max = 0.002\npoints = 2";
+    let l = bad(&[
+        "traction",
+        exact_case("elements = [4, 16]", pts).to_str().unwrap(),
+    ]);
+    assert!(
+        l.contains("invalid kalker_exact.elements[0] = 4") && l.contains("slip area"),
+        "{l}"
+    );
+    let l = bad(&[
+        "traction",
+        exact_case("max_steps = 0", pts).to_str().unwrap(),
+    ]);
+    assert!(l.contains("invalid kalker_exact.max_steps = 0"), "{l}");
+    let l = bad(&[
+        "traction",
+        exact_case("elements = [16, 16]", "max = 0.002\npoints = 1002")
+            .to_str()
+            .unwrap(),
+    ]);
+    assert!(
+        l.contains("invalid creepage.points = 1002") && l.contains("kalker_exact"),
+        "{l}"
+    );
+    let l = bad(&[
+        "traction",
+        exact_case("elements = [16, 16]", "max = 0.002\nlateral = nan")
+            .to_str()
+            .unwrap(),
+    ]);
+    assert!(l.contains("invalid creepage.lateral = NaN"), "{l}");
+    let p = exact_case("elements = [16, 16]", pts);
+    let text = std::fs::read_to_string(&p)
+        .unwrap()
+        .replace("mu = 0.1", "mu = -0.1");
+    std::fs::write(&p, text).unwrap();
+    let l = bad(&["traction", p.to_str().unwrap()]);
+    assert!(l.contains("invalid friction.mu = -0.1"), "{l}");
+    let line = tempdir().join("exact-line.toml");
+    let text = "method = \"traction\"\nmodels = [\"kalker_exact\"]\n[geometry]\nkind = \"line\"\n\
+                half_width_mm = 0.2\nlength_mm = 10.0\n[body1]\ne_mpa = 210000.0\nnu = 0.3\n\
+                [body2]\ne_mpa = 210000.0\nnu = 0.3\n[load]\nforce_n = 1000.0\n\
+                [friction]\nmu = 0.1\n[creepage]\nmax = 0.002\n";
+    std::fs::write(&line, text).unwrap();
+    let l = bad(&["traction", line.to_str().unwrap()]);
+    assert!(l.contains("invalid models = kalker_exact"), "{l}");
+    // Two rolling steps: not converged, reported.
+    let case = exact_case(
+        "elements = [8, 8]\nmax_steps = 2",
+        "max = 0.002\npoints = 2",
+    );
+    let v = run_json(&["traction", case.to_str().unwrap()]);
+    let x = &v["curves"][2]["exact"];
+    assert_eq!(x["converged"], false);
+    assert_eq!(x["not_converged"], serde_json::json!([1]));
+    assert_eq!(x["status"][1]["termination"], "max_iterations");
+    let w = v["warnings"].as_array().unwrap();
+    assert!(
+        w.iter().any(|w| w
+            .as_str()
+            .unwrap()
+            .contains("1 of 2 points did not converge")),
+        "{w:?}"
+    );
+    assert!(
+        w.iter()
+            .any(|w| w.as_str().unwrap().contains("8 x 8 cells")),
+        "{w:?}"
+    );
+    let out = kontakt()
+        .args(["traction", case.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("NOT converged at 1 of 2 points"), "{text}");
+    assert!(
+        text.contains("*\n") && text.contains("warning: kalker_exact"),
+        "{text}"
+    );
+}
+
+/// `--map`: kalker_exact's stick/slip map at one point (PNG and SVG written; the SVG
+/// names the stick area and the ellipse); without kalker_exact in the models, or with a
+/// non-finite `--map-creepage`, one line and exit 2.
+#[test]
+fn kalker_exact_stick_slip_map() {
+    let case = exact_case("elements = [16, 16]", "max = 0.004\npoints = 3");
+    let dir = tempdir();
+    let (png, svg) = (dir.join("map.png"), dir.join("map.svg"));
+    for (path, extra) in [(&png, None), (&svg, Some("0.001"))] {
+        let mut cmd = kontakt();
+        cmd.args(["traction", case.to_str().unwrap(), "--map"])
+            .arg(path);
+        if let Some(xi) = extra {
+            cmd.args(["--map-creepage", xi]);
+        }
+        let out = cmd.output().unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        assert!(std::fs::metadata(path).unwrap().len() > 1000);
+    }
+    let drawn = std::fs::read_to_string(&svg).unwrap();
+    assert!(drawn.contains("stick (adhesion) area"), "legend");
+    assert!(drawn.contains("xi = 1.0000e-3"), "title names the creepage");
+    let l = bad(&[
+        "traction",
+        example().to_str().unwrap(),
+        "--map",
+        dir.join("no.png").to_str().unwrap(),
+    ]);
+    assert!(
+        l.contains("invalid models") && l.contains("kalker_exact"),
+        "{l}"
+    );
+    let l = bad(&[
+        "traction",
+        case.to_str().unwrap(),
+        "--map",
+        png.to_str().unwrap(),
+        "--map-creepage",
+        "nan",
+    ]);
+    assert!(l.contains("--map-creepage"), "{l}");
+}

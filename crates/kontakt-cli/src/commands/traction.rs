@@ -5,8 +5,8 @@
 use crate::cli::TractionArgs;
 use crate::commands::{InputError, cannot_write};
 use anyhow::{Context, Result};
-use kontakt_case::{TractionCase, TractionReport, run_traction_case};
-use kontakt_plot::{LinePlot, LineStyle, PALETTE, Series};
+use kontakt_case::{ExactMap, MapPoint, TractionCase, TractionReport, run_traction_case_with_map};
+use kontakt_plot::{Ellipse, FieldMap, LinePlot, LineStyle, Overlay, PALETTE, Series};
 use std::io::Write;
 use std::path::Path;
 
@@ -17,7 +17,14 @@ const MAX_ROWS: usize = 21;
 pub fn run(args: &TractionArgs, out: &mut impl Write) -> Result<()> {
     let (label, text) = crate::commands::read_case_for(&args.case, "traction", "traction")?;
     let case = TractionCase::from_toml_str(&text).with_context(|| label.clone())?;
-    let report = run_traction_case(&case).with_context(|| label.clone())?;
+    let map = args
+        .map
+        .as_ref()
+        .map(|_| args.map_creepage.map_or(MapPoint::Auto, MapPoint::Creepage));
+    let (report, field) = run_traction_case_with_map(&case, map).with_context(|| label.clone())?;
+    if let (Some(path), Some(field)) = (&args.map, &field) {
+        write_map(path, field)?;
+    }
     if let Some(path) = &args.csv {
         write_csv(path, &report)?;
     }
@@ -77,6 +84,24 @@ pub fn print_report(out: &mut impl Write, r: &TractionReport, json: bool) -> Res
     if let Some([nx, ny]) = r.fastsim_elements {
         writeln!(out, "  FASTSIM grid {nx} x {ny} elements")?;
     }
+    for c in &r.curves {
+        if let Some(x) = &c.exact {
+            let state = if x.converged {
+                format!("converged at all {} points", x.status.len())
+            } else {
+                format!(
+                    "NOT converged at {} of {} points (marked *)",
+                    x.not_converged.len(),
+                    x.status.len()
+                )
+            };
+            writeln!(
+                out,
+                "  Kalker exact grid {} x {} cells across the contact; {state}",
+                x.elements[0], x.elements[1]
+            )?;
+        }
+    }
     write!(out, "  {:>12}", "creepage")?;
     for c in &r.curves {
         write!(out, " {:>14}", c.model)?;
@@ -90,17 +115,42 @@ pub fn print_report(out: &mut impl Write, r: &TractionReport, json: bool) -> Res
     for i in rows {
         write!(out, "  {:>12.6}", r.creepage[i])?;
         for c in &r.curves {
-            write!(out, " {:>14.5}", c.normalized_force[i])?;
+            let bad = c
+                .exact
+                .as_ref()
+                .is_some_and(|x| x.not_converged.contains(&i));
+            if bad {
+                write!(out, " {:>13.5}*", c.normalized_force[i])?;
+            } else {
+                write!(out, " {:>14.5}", c.normalized_force[i])?;
+            }
         }
         writeln!(out)?;
     }
     if step > 1 {
         writeln!(
             out,
-            "  (every {step}th of {n} points; --csv writes all; Kalker linear is unclipped)"
+            "  (every {} of {n} points; --csv writes all; Kalker linear is unclipped)",
+            ordinal(step)
         )?;
     }
-    print_forces(out, r, step)
+    print_forces(out, r, step)?;
+    for w in &r.warnings {
+        writeln!(out, "  warning: {w}")?;
+    }
+    Ok(())
+}
+
+/// `2nd`, `3rd`, `5th`, `11th`, `21st`, ...
+fn ordinal(n: usize) -> String {
+    let suffix = match (n % 10, n % 100) {
+        (_, 11..=13) => "th",
+        (1, _) => "st",
+        (2, _) => "nd",
+        (3, _) => "rd",
+        _ => "th",
+    };
+    format!("{n}{suffix}")
 }
 
 /// With lateral or spin creepage: the creep forces and the spin moment of each model that
@@ -211,6 +261,57 @@ fn clip_to_saturation(xs: &[f64], ys: &[f64]) -> Vec<(f64, f64)> {
     pts
 }
 
+/// Draw kalker_exact's traction magnitude at one point with its stick area outlined
+/// over the Hertz ellipse.
+pub fn write_map(path: &Path, m: &ExactMap) -> Result<()> {
+    kontakt_plot::Format::from_path(path).map_err(|e| InputError(e.to_string()))?;
+    let [xi, eta, phi] = m.creepage;
+    let mut title = format!(
+        "Kalker exact: xi = {xi:.4e}, F_T/(mu F_N) = {:.4}, stick {:.0} %",
+        m.normalized_force,
+        100.0 * m.stick_fraction
+    );
+    if eta != 0.0 || phi != 0.0 {
+        title.push_str(&format!(", eta = {eta:.3e}, phi = {phi:.3e}/mm"));
+    }
+    if !m.status.converged() {
+        title.push_str(" (NOT converged)");
+    }
+    let overlays = [Overlay {
+        label: "stick (adhesion) area; slip elsewhere",
+        values: &m.stick,
+        color: (214, 39, 40),
+    }];
+    kontakt_plot::field_map(
+        path,
+        &FieldMap {
+            nx: m.cells[0],
+            ny: m.cells[1],
+            x_min: m.origin_mm[0],
+            y_min: m.origin_mm[1],
+            dx: m.cell_mm[0],
+            dy: m.cell_mm[1],
+            values: &m.traction_mpa,
+            title: &title,
+            x_label: "x [mm] (rolling direction, leading edge at +x)",
+            y_label: "y [mm]",
+            colorbar_label: "|traction| [MPa]",
+            outline: true,
+            overlays: &overlays,
+            ellipse: Some(Ellipse {
+                label: "Hertz contact ellipse",
+                centre: (0.0, 0.0),
+                semi_axes: (m.semi_axes_mm[0], m.semi_axes_mm[1]),
+                angle: 0.0,
+                color: (80, 80, 80),
+            }),
+            max_marker: None,
+        },
+        (900, 700),
+    )
+    .with_context(|| format!("drawing {}", path.display()))
+}
+
 /// Draw the curves; Kalker's linear theory up to where it reaches saturation.
 pub fn write_plot(path: &Path, r: &TractionReport) -> Result<()> {
     kontakt_plot::Format::from_path(path).map_err(|e| InputError(e.to_string()))?;
@@ -221,6 +322,7 @@ pub fn write_plot(path: &Path, r: &TractionReport) -> Result<()> {
             "carter" => "Carter".to_string(),
             "kalker_linear" => "Kalker linear (to saturation)".to_string(),
             "fastsim" => "FASTSIM".to_string(),
+            "kalker_exact" => "Kalker exact".to_string(),
             other => other.to_string(),
         })
         .collect();
@@ -230,6 +332,16 @@ pub fn write_plot(path: &Path, r: &TractionReport) -> Result<()> {
         .map(|c| {
             if c.model == "kalker_linear" {
                 clip_to_saturation(&r.creepage, &c.normalized_force)
+            } else if let Some(x) = &c.exact {
+                // Unconverged points are not results: leave them out of the plot.
+                r.creepage
+                    .iter()
+                    .copied()
+                    .zip(c.normalized_force.iter().copied())
+                    .enumerate()
+                    .filter(|(i, _)| !x.not_converged.contains(i))
+                    .map(|(_, p)| p)
+                    .collect()
             } else {
                 r.creepage
                     .iter()
@@ -278,6 +390,20 @@ pub fn write_plot(path: &Path, r: &TractionReport) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::clip_to_saturation;
+
+    #[test]
+    fn ordinals() {
+        let got: Vec<String> = [2, 3, 5, 11, 12, 13, 21, 22, 101]
+            .iter()
+            .map(|n| super::ordinal(*n))
+            .collect();
+        assert_eq!(
+            got,
+            [
+                "2nd", "3rd", "5th", "11th", "12th", "13th", "21st", "22nd", "101st"
+            ]
+        );
+    }
 
     #[test]
     fn linear_curve_is_cut_at_saturation() {

@@ -20,15 +20,18 @@
 //!   difference parameter `K ≠ 0`), the normal and tangential problems coupled through
 //!   [`CouplingOperator`] and solved by an outer loop along a loading history (Spence's
 //!   compression with friction is the special case without shift).
+//! - [`KalkerExact`]: the traction model `kalker_exact` — a steady solver planned on a
+//!   Hertz ellipse, evaluated along a creep curve with warm starts, each point with its
+//!   status (`kontakt traction`, docs/tangential.md §11).
 //!
-//! Not yet here: the coupling in steady rolling, Kalker's published creep curves as
-//! tests, and the `kontakt traction` model. Method and
+//! Not yet here: the coupling of dissimilar bodies in steady rolling. Method and
 //! validation: docs/rolling.md.
 //!
 //! Units: mm, N, MPa throughout.
 
 mod coupled;
 mod cross;
+mod curve;
 pub mod influence;
 mod newton;
 mod operator;
@@ -39,6 +42,7 @@ mod steady_fft;
 pub use crate::tangential::KalkerMaterial;
 pub use coupled::{CoupledOptions, CoupledShiftSolver, CoupledSolution};
 pub use cross::CouplingOperator;
+pub use curve::{ExactPoint, KalkerExact, KalkerExactOptions};
 pub use operator::{TangentialOperator, difference_parameter};
 pub use shift::{CellState, ShiftLoad, ShiftOptions, ShiftSolution, ShiftSolver};
 pub use steady::{SteadyMethod, SteadyOptions, SteadySolution, SteadySolver};
