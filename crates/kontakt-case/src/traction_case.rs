@@ -45,7 +45,7 @@
 //!
 //! [kalker_exact]             # optional: Kalker's exact theory on the half-space grid
 //! elements = [32, 32]        # cells across the ellipse (along rolling, across), 8..=1024
-//! max_steps = 2000           # rolling steps per point before it counts as not converged
+//! max_iterations = 100       # Newton iterations per point before it counts as not converged
 //!
 //! # [asperity]               # for models = [..., "asperity"]: circular or line contacts
 //! # asperity_radii_mm = [0.02, 0.02]     # of identical bodies (kontakt::traction)
@@ -392,16 +392,16 @@ pub struct KalkerExactSpec {
     /// each 8..=1024; default `[32, 32]`. Below 16 the report warns: the creep force may
     /// then be off by 5 % or more (grid convergence in docs/tangential.md §11).
     pub elements: [usize; 2],
-    /// Most rolling steps of the steady solver per point, >= 1 (default 2000); a point
-    /// that needs more is reported as not converged.
-    pub max_steps: usize,
+    /// Most Newton iterations of the steady solver per point, >= 1 (default 100); a
+    /// point that needs more is reported as not converged.
+    pub max_iterations: usize,
 }
 
 impl Default for KalkerExactSpec {
     fn default() -> Self {
         KalkerExactSpec {
             elements: KalkerExactOptions::default().elements,
-            max_steps: KalkerExactOptions::default().steady.max_steps,
+            max_iterations: KalkerExactOptions::default().steady.max_newton_iterations,
         }
     }
 }
@@ -456,8 +456,9 @@ pub struct ExactCurveReport {
     pub stick_fraction: Vec<f64>,
     /// FFT applications of the tangential operator over the whole curve.
     pub fft_iterations: usize,
-    /// The steady solver's status at each point: termination, rolling steps and the last
-    /// traction change relative to `mu p_max`.
+    /// The steady solver's status at each point: termination, Newton iterations and the
+    /// residual (the largest stick-cell slip or slip-law defect relative to the largest
+    /// rigid slip `max |ω| dx`).
     pub status: Vec<SolveStatus>,
 }
 
@@ -923,18 +924,18 @@ fn exact_curve(
             ),
         ));
     }
-    if case.kalker_exact.max_steps == 0 {
+    if case.kalker_exact.max_iterations == 0 {
         return Err(Error::invalid(
-            "kalker_exact.max_steps",
+            "kalker_exact.max_iterations",
             0,
-            "at least 1 rolling step",
+            "at least 1 Newton iteration",
         ));
     }
     let mut options = KalkerExactOptions {
         elements: case.kalker_exact.elements,
         ..KalkerExactOptions::default()
     };
-    options.steady.max_steps = case.kalker_exact.max_steps;
+    options.steady.max_newton_iterations = case.kalker_exact.max_iterations;
     let model = KalkerExact::new(ellipse, m1, m2, case.friction.mu, options).map_err(|e| {
         e.map_field(|f| match f {
             "elements[0]" => "kalker_exact.elements[0]".into(),
@@ -971,7 +972,7 @@ fn exact_curve(
         let first = &points[not_converged[0]];
         warnings.push(format!(
             "kalker_exact: {} of {} points did not converge (first at creepage {:e}: {} after \
-             {} rolling steps, traction change {:.1e}); their values are not results",
+             {} Newton iterations, residual {:.1e}); their values are not results",
             not_converged.len(),
             points.len(),
             first.creepage.longitudinal,

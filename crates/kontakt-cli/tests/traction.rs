@@ -626,9 +626,9 @@ fn kalker_exact_bad_input_and_unconverged_points() {
     );
     let l = bad(&[
         "traction",
-        exact_case("max_steps = 0", pts).to_str().unwrap(),
+        exact_case("max_iterations = 0", pts).to_str().unwrap(),
     ]);
-    assert!(l.contains("invalid kalker_exact.max_steps = 0"), "{l}");
+    assert!(l.contains("invalid kalker_exact.max_iterations = 0"), "{l}");
     let l = bad(&[
         "traction",
         exact_case("elements = [16, 16]", "max = 0.002\npoints = 1002")
@@ -661,9 +661,9 @@ fn kalker_exact_bad_input_and_unconverged_points() {
     std::fs::write(&line, text).unwrap();
     let l = bad(&["traction", line.to_str().unwrap()]);
     assert!(l.contains("invalid models = kalker_exact"), "{l}");
-    // Two rolling steps: not converged, reported.
+    // One Newton iteration: not converged, reported.
     let case = exact_case(
-        "elements = [8, 8]\nmax_steps = 2",
+        "elements = [8, 8]\nmax_iterations = 1",
         "max = 0.002\npoints = 2",
     );
     let v = run_json(&["traction", case.to_str().unwrap()]);

@@ -3,10 +3,10 @@
 //! of Vollebregt's CONTACT (its examples `tractcurv` and `fastsim`, numbers only), Kalker's
 //! linear theory at small creepage, saturation, and bad input.
 //!
-//! Grids are coarse here (16 cells across the contact) because the steady solver is still
-//! slow; the tolerances are set for that grid, each with the value measured when it was
-//! set. The `#[ignore]`d tests repeat the comparisons on finer grids with tighter
-//! tolerances and print the FASTSIM error table of docs/tangential.md §11
+//! The base tests use 16 cells across the contact, with tolerances set for that grid, each
+//! with the value measured when it was set; the `_fine` tests repeat the comparisons on 24² and 32² grids with tighter
+//! tolerances. The `#[ignore]`d tests print the grid-convergence and FASTSIM error tables
+//! of docs/tangential.md §11
 //! (`cargo test --release -p kontakt --test rolling_exact -- --ignored --nocapture`).
 //!
 //! Reference data (CONTACT, github.com/eve70a/CONTACT, Apache-2.0; numbers from its
@@ -96,7 +96,6 @@ fn contact_tractcurv_creep_curve_coarse() {
 /// The same on 32 × 32 cells: within 0.006 of μ F_N (measured 0.0040 max; 24 × 24:
 /// 0.0043).
 #[test]
-#[ignore = "slow until the fast steady solver lands; the 16 x 16 version runs"]
 fn contact_tractcurv_creep_curve_fine() {
     for cells in [[24, 24], [32, 32]] {
         let errors = tractcurv_errors(cells);
@@ -140,7 +139,6 @@ fn contact_lateral_spin_case_coarse() {
 /// The same refined: 24 × 24 and 32 × 32 cells; the errors fall (F_y -9.2 %, -5.6 %,
 /// -3.0 %; M_z +10.0 %, +4.2 %, +3.0 % at 16, 24, 32 cells) and are within 4 % at 32.
 #[test]
-#[ignore = "slow until the fast steady solver lands; the 16 x 16 version runs"]
 fn contact_lateral_spin_case_fine() {
     let mut last = (1.0f64, 1.0f64);
     for n in [24, 32] {
@@ -314,12 +312,12 @@ fn bad_input_and_unconverged_points() {
         assert_eq!(err.field(), Some(field));
         assert!(err.to_string().contains("slip area"), "{err}");
     }
-    // Two rolling steps are far too few: the status says so, the trait refuses.
+    // One Newton iteration is too few: the status says so, the trait refuses.
     let mut options = KalkerExactOptions {
         elements: [8, 8],
         ..KalkerExactOptions::default()
     };
-    options.steady.max_steps = 2;
+    options.steady.max_newton_iterations = 1;
     let m = KalkerExact::with_material(e, RAIL, 0.3, options).unwrap();
     let p = m.solve(&Creepage::longitudinal(3e-4), false).unwrap();
     assert_eq!(p.status.termination, Termination::MaxIterations);
