@@ -794,28 +794,27 @@ pub fn run_traction_case_with_map(
                 ),
             ));
         }
-        if model == TractionModel::KalkerExact {
-            let Some(e) = ellipse else {
-                return Err(Error::invalid(
-                    "models",
-                    model.as_str(),
-                    "carter or asperity for kind = \"line\" (Kalker's theories need a \
-                     contact ellipse: use kind = \"hertz\" or \"ellipse\")",
-                ));
-            };
-            // Solved after the other models (below), so that their input errors come
-            // first and cheaply; the slot keeps the case's order.
-            exact_slot = Some((curves.len(), e));
-            curves.push(CurveReport {
-                model: model.as_str(),
-                normalized_force: Vec::new(),
-                forces: None,
-                exact: None,
-            });
-            continue;
-        }
         let curve: &dyn TractionCurve = match model {
-            TractionModel::KalkerExact => unreachable!("handled above"),
+            TractionModel::KalkerExact => {
+                let Some(e) = ellipse else {
+                    return Err(Error::invalid(
+                        "models",
+                        model.as_str(),
+                        "carter or asperity for kind = \"line\" (Kalker's theories need a \
+                         contact ellipse: use kind = \"hertz\" or \"ellipse\")",
+                    ));
+                };
+                // Solved after the other models (below), so that their input errors come
+                // first and cheaply; the slot keeps the case's order.
+                exact_slot = Some((curves.len(), e));
+                curves.push(CurveReport {
+                    model: model.as_str(),
+                    normalized_force: Vec::new(),
+                    forces: None,
+                    exact: None,
+                });
+                continue;
+            }
             TractionModel::Carter => &carter,
             TractionModel::Asperity => {
                 asperity = Some(asperity_model(case, force, &carter, ellipse, m1, m2)?);
