@@ -82,16 +82,17 @@ fn small(mut t: toml::Table) -> Value {
     if let Some(Value::Table(s)) = t.get_mut("creepage") {
         s.insert("points".into(), Value::Integer(9));
     }
-    if let Some(Value::Table(s)) = t.get_mut("fastsim") {
-        s.insert("elements".into(), Value::Array(vec![Value::Integer(8); 2]));
+    for table in ["fastsim", "kalker_exact"] {
+        if let Some(Value::Table(s)) = t.get_mut(table) {
+            s.insert("elements".into(), Value::Array(vec![Value::Integer(8); 2]));
+        }
     }
     if let Some(Value::Table(s)) = t.get_mut("speed") {
         s.insert("points".into(), Value::Integer(2));
     }
     if let Some(Value::Array(m)) = t.get_mut("models") {
-        // the half-space model of the friction cases solves a grid per speed, and
-        // kalker_exact (traction cases) a steady-rolling problem per creepage point
-        m.retain(|x| x.as_str() != Some("halfspace") && x.as_str() != Some("kalker_exact"));
+        // the half-space model of the friction cases solves a grid per speed
+        m.retain(|x| x.as_str() != Some("halfspace"));
     }
     Value::Table(t)
 }
