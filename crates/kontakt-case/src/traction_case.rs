@@ -61,7 +61,7 @@
 //! problem at every point of the curve (warm-started along it) and reports each point's
 //! solver status, the stick fraction and the grid in the curve's `exact` record; a point
 //! that did not converge is named in the report's `warnings`. It costs a steady solve per
-//! point (about 1-10 ms at the default 32 × 32 cells, growing like `elements³`), where the
+//! point (about 1-10 ms at the default 32 × 32 cells, growing steeply with `elements`), where the
 //! other models cost microseconds.
 
 use crate::common::{MaterialSpec, SCHEMA_VERSION, material, parse_toml};
