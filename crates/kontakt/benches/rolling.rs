@@ -9,7 +9,7 @@
 use criterion::{Criterion, criterion_group, criterion_main};
 use kontakt::geometry::Grid2;
 use kontakt::rolling::{SteadyMethod, SteadyOptions, SteadySolution, SteadySolver};
-use kontakt::tangential::{Creepage, KalkerMaterial};
+use kontakt::tangential::{ContactEllipse, Creepage, KalkerMaterial};
 use std::hint::black_box;
 use std::time::Duration;
 
@@ -25,17 +25,10 @@ const MATERIAL: KalkerMaterial = KalkerMaterial {
 fn hertz(a: f64, b: f64, n: usize) -> (Grid2, Vec<f64>) {
     let f = 1.0 + 2.0 / n as f64;
     let grid = Grid2::centered(a * f, b * f, n, n).expect("valid grid");
-    let p = grid
-        .points()
-        .map(|(x, y)| {
-            let r2 = (x / a).powi(2) + (y / b).powi(2);
-            if r2 < 1.0 {
-                P0 * (1.0 - r2).sqrt()
-            } else {
-                0.0
-            }
-        })
-        .collect();
+    // The ellipse whose peak pressure is P0: P = 2π a b P0 / 3.
+    let e = ContactEllipse::new(a, b, 2.0 * std::f64::consts::PI * a * b * P0 / 3.0)
+        .expect("valid ellipse");
+    let p = grid.points().map(|(x, y)| e.pressure_at(x, y)).collect();
     (grid, p)
 }
 

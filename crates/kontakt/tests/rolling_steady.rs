@@ -14,7 +14,7 @@
 use kontakt::geometry::Grid2;
 use kontakt::rolling::{CellState, SteadyMethod, SteadyOptions, SteadySolution, SteadySolver};
 use kontakt::solve::Termination;
-use kontakt::tangential::{Creepage, KalkerMaterial};
+use kontakt::tangential::{ContactEllipse, Creepage, KalkerMaterial};
 
 #[path = "support/counting_alloc.rs"]
 mod counting_alloc;
@@ -32,17 +32,9 @@ const MATERIAL: KalkerMaterial = KalkerMaterial {
 fn hertz(a: f64, b: f64, nx: usize, ny: usize) -> (Grid2, Vec<f64>) {
     let (hx, hy) = (a * (1.0 + 2.0 / nx as f64), b * (1.0 + 2.0 / ny as f64));
     let grid = Grid2::centered(hx, hy, nx, ny).unwrap();
-    let p = grid
-        .points()
-        .map(|(x, y)| {
-            let r2 = (x / a).powi(2) + (y / b).powi(2);
-            if r2 < 1.0 {
-                P0 * (1.0 - r2).sqrt()
-            } else {
-                0.0
-            }
-        })
-        .collect();
+    // The ellipse whose peak pressure is P0: P = 2π a b P0 / 3.
+    let e = ContactEllipse::new(a, b, 2.0 * std::f64::consts::PI * a * b * P0 / 3.0).unwrap();
+    let p = grid.points().map(|(x, y)| e.pressure_at(x, y)).collect();
     (grid, p)
 }
 
