@@ -41,7 +41,7 @@ mod solver;
 pub use crate::field::domain::MIN_CELLS_ACROSS;
 pub use crate::gap::{GapMap, MapKind};
 pub use contact::{Bem, BemOptions, BemSolution, HalfSpaceDetail, ZoneEstimate};
-pub(crate) use operator::Parity;
 pub use operator::{Boundary, ElasticOperator, HalfSpacePlan, OperatorScratch};
+pub(crate) use operator::{PaddedFfts, Parity};
 pub use planner::HalfSpacePlanner;
 pub use solver::{Control, HalfSpaceSolver, Preconditioner, SolveReport, SolverOptions, Start};

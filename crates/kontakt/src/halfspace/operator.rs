@@ -342,17 +342,13 @@ impl HalfSpacePlan {
             Threads::Serial => 1,
             Threads::Pool(p) => p.current_num_threads(),
         };
-        let mut real = RealFftPlanner::<f64>::new();
-        let r2c = real.plan_fft_forward(mx);
-        let c2r = real.plan_fft_inverse(mx);
-        let mut planner = FftPlanner::<f64>::new();
-        let col_fwd = planner.plan_fft_forward(my);
-        let col_inv = planner.plan_fft_inverse(my);
-        let scratch_len = r2c
-            .get_scratch_len()
-            .max(c2r.get_scratch_len())
-            .max(col_fwd.get_inplace_scratch_len())
-            .max(col_inv.get_inplace_scratch_len());
+        let PaddedFfts {
+            r2c,
+            c2r,
+            col_fwd,
+            col_inv,
+            scratch_len,
+        } = PaddedFfts::plan(mx, my);
         // A few tasks per thread balance the load; one task when serial.
         let tasks = if n_threads == 1 { 1 } else { 4 * n_threads };
         let rows_per_task = ny.div_ceil(tasks).max(1);
@@ -875,6 +871,46 @@ impl ElasticOperator {
     /// [`Error::InvalidInput`] when a length differs from `nx·ny`.
     pub fn apply(&mut self, p: &[f64], u: &mut [f64]) -> Result<()> {
         self.plan.apply_with_scratch(p, u, &mut self.scratch)
+    }
+}
+
+/// The FFT plans of a 2-D transform on a padded `mx × my` array, real along `x` and
+/// complex along `y` (the layout of [`HalfSpacePlan`] and of the steady rolling operator),
+/// with the longest scratch any of them needs.
+pub(crate) struct PaddedFfts {
+    /// Real-to-complex transform of a row (length `mx`).
+    pub r2c: Arc<dyn RealToComplex<f64>>,
+    /// Its inverse.
+    pub c2r: Arc<dyn ComplexToReal<f64>>,
+    /// Complex transform of a column (length `my`).
+    pub col_fwd: Arc<dyn Fft<f64>>,
+    /// Its inverse.
+    pub col_inv: Arc<dyn Fft<f64>>,
+    /// The longest scratch of the four (complex values).
+    pub scratch_len: usize,
+}
+
+impl PaddedFfts {
+    /// Plan the four transforms for `mx × my`.
+    pub(crate) fn plan(mx: usize, my: usize) -> Self {
+        let mut real = RealFftPlanner::<f64>::new();
+        let r2c = real.plan_fft_forward(mx);
+        let c2r = real.plan_fft_inverse(mx);
+        let mut planner = FftPlanner::<f64>::new();
+        let col_fwd = planner.plan_fft_forward(my);
+        let col_inv = planner.plan_fft_inverse(my);
+        let scratch_len = r2c
+            .get_scratch_len()
+            .max(c2r.get_scratch_len())
+            .max(col_fwd.get_inplace_scratch_len())
+            .max(col_inv.get_inplace_scratch_len());
+        PaddedFfts {
+            r2c,
+            c2r,
+            col_fwd,
+            col_inv,
+            scratch_len,
+        }
     }
 }
 

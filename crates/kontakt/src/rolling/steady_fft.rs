@@ -22,9 +22,10 @@
 //! Kalker (1990) ch. 5 (influence numbers); the FFT convolution as in docs/halfspace.md.
 
 use super::influence::quadrant_tables;
-use realfft::{ComplexToReal, RealFftPlanner, RealToComplex};
+use crate::halfspace::PaddedFfts;
+use realfft::{ComplexToReal, RealToComplex};
+use rustfft::Fft;
 use rustfft::num_complex::Complex;
-use rustfft::{Fft, FftPlanner};
 use std::sync::Arc;
 
 /// The smallest `n >= m` with no prime factor above 5.
@@ -78,17 +79,13 @@ impl SteadyFft {
         let mx = smooth_at_least(2 * nx - 1).max(2);
         let my = smooth_at_least(2 * ny.max(1) - 1).max(2);
         let kx = mx / 2 + 1;
-        let mut real = RealFftPlanner::<f64>::new();
-        let r2c = real.plan_fft_forward(mx);
-        let c2r = real.plan_fft_inverse(mx);
-        let mut planner = FftPlanner::<f64>::new();
-        let col_fwd = planner.plan_fft_forward(my);
-        let col_inv = planner.plan_fft_inverse(my);
-        let scratch_len = r2c
-            .get_scratch_len()
-            .max(c2r.get_scratch_len())
-            .max(col_fwd.get_inplace_scratch_len())
-            .max(col_inv.get_inplace_scratch_len());
+        let PaddedFfts {
+            r2c,
+            c2r,
+            col_fwd,
+            col_inv,
+            scratch_len,
+        } = PaddedFfts::plan(mx, my);
         let [qxx, qyy, qxy] = quadrant_tables(nx, ny, dx, dy, g, nu);
         let q = |t: &[f64], m: isize, l: isize, odd: bool| {
             let (am, al) = (m.unsigned_abs(), l.unsigned_abs());
