@@ -374,21 +374,8 @@ impl Shape for Torus {
     }
 
     fn foot(&self, p: &Point3<f64>) -> (Point3<f64>, Vector3<f64>) {
-        let (er, rho) = radial(p);
-        if let Some(c) = self.cusp(rho, p.z) {
-            let v = c - p;
-            let len = v.norm();
-            let n = if len > 0.0 {
-                v / len
-            } else {
-                Vector3::z() * c.z.signum()
-            };
-            return (c, n);
-        }
-        let a = rho - self.major;
-        let dd = hypot(a, p.z);
-        let n = Self::tube_normal(&er, a, p.z, dd);
-        (Point3::from(er * self.major + n * self.minor), n)
+        let (c, n, _) = self.foot_distance(p);
+        (c, n)
     }
 
     fn foot_distance(&self, p: &Point3<f64>) -> (Point3<f64>, Vector3<f64>, f64) {
