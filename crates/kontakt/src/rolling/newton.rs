@@ -108,8 +108,13 @@ pub(super) struct SteadyNewton {
     row_start: Vec<usize>,
     /// Offset of each row's LU block (`ny + 1` entries).
     blk_off: Vec<usize>,
-    lu: Vec<f64>,
+    /// The row blocks' LU factors, in single precision (see [`Self::factor`]).
+    lu: Vec<f32>,
     piv: Vec<usize>,
+    /// One row block in double precision while it is built and factorised.
+    block: Vec<f64>,
+    /// One row's part of a vector in single precision (the preconditioner's solve).
+    row32: Vec<f32>,
     /// The slip flag of each cell when its row was last factorised, and whether that
     /// factorisation is valid for the current cells.
     factored_slip: Vec<bool>,
@@ -177,6 +182,8 @@ impl SteadyNewton {
             blk_off: vec![0; ny + 1],
             lu: Vec::new(),
             piv: Vec::new(),
+            block: Vec::new(),
+            row32: Vec::new(),
             factored_slip: Vec::with_capacity(n),
             row_valid: vec![false; ny],
             last_cells: Vec::with_capacity(n),
@@ -267,6 +274,17 @@ impl SteadyNewton {
         }
         if self.piv.len() < len {
             self.piv.resize(len, 0);
+        }
+        // The longest row's block and vector (grow only).
+        let widest = (0..ny)
+            .map(|j| 2 * (self.row_start[j + 1] - self.row_start[j]))
+            .max()
+            .unwrap_or(0);
+        if self.block.len() < widest * widest {
+            self.block.resize(widest * widest, 0.0);
+        }
+        if self.row32.len() < widest {
+            self.row32.resize(widest, 0.0);
         }
         for b in [&mut self.basis, &mut self.zbasis, &mut self.bzbasis] {
             if b.len() < (RESTART + 1) * len {
@@ -555,7 +573,7 @@ impl SteadyNewton {
                 self.factored_slip[k] = self.slip[k];
             }
             let m = 2 * nr;
-            let blk = &mut self.lu[self.blk_off[j]..self.blk_off[j] + m * m];
+            let blk = &mut self.block[..m * m];
             blk.fill(0.0);
             for p in 0..nr {
                 let cp = c0 + p;
@@ -588,11 +606,23 @@ impl SteadyNewton {
                 }
             }
             lu_factor(blk, m, &mut self.piv[2 * c0..2 * c1]);
+            // Stored in single precision, column by column, with the reciprocals of
+            // U's diagonal: the triangular solves, most of a GMRES iteration, then run
+            // as column updates on twice the lanes, without divisions. The solution is
+            // not affected: GMRES keeps the preconditioned vectors (flexible GMRES), so
+            // the preconditioner's round-off costs iterations at most, never accuracy.
+            let dst = &mut self.lu[self.blk_off[j]..self.blk_off[j] + m * m];
+            for c in 0..m {
+                for r in 0..m {
+                    let a = blk[r * m + c];
+                    dst[c * m + r] = if r == c { (1.0 / a) as f32 } else { a as f32 };
+                }
+            }
         }
     }
 
     /// `v ← M⁻¹ v` with the row blocks.
-    fn precondition(&self, v: &mut [f64]) {
+    fn precondition(&mut self, v: &mut [f64]) {
         let ny = self.row_start.len() - 1;
         for j in 0..ny {
             let (c0, c1) = (self.row_start[j], self.row_start[j + 1]);
@@ -601,7 +631,14 @@ impl SteadyNewton {
                 continue;
             }
             let blk = &self.lu[self.blk_off[j]..self.blk_off[j] + m * m];
-            lu_solve(blk, m, &self.piv[2 * c0..2 * c1], &mut v[2 * c0..2 * c1]);
+            let b = &mut self.row32[..m];
+            for (d, x) in b.iter_mut().zip(&v[2 * c0..2 * c1]) {
+                *d = *x as f32;
+            }
+            lu_solve(blk, m, &self.piv[2 * c0..2 * c1], b);
+            for (x, d) in v[2 * c0..2 * c1].iter_mut().zip(b.iter()) {
+                *x = f64::from(*d);
+            }
         }
     }
 
@@ -812,17 +849,30 @@ fn lu_factor(a: &mut [f64], m: usize, piv: &mut [usize]) {
     }
 }
 
-/// Solve with the factors of [`lu_factor`], in place.
-fn lu_solve(a: &[f64], m: usize, piv: &[usize], b: &mut [f64]) {
+/// Solve in place with the factors of [`lu_factor`] as the preconditioner stores them:
+/// single precision, column-major (`a[c * m + r]` = row `r`, column `c`), U's diagonal
+/// as its reciprocals. Column updates (`b -= column · b_c`), no reductions.
+fn lu_solve(a: &[f32], m: usize, piv: &[usize], b: &mut [f32]) {
     for (k, &p) in piv[..m].iter().enumerate() {
         b.swap(k, p);
     }
-    for i in 0..m {
-        let s = dot(&a[i * m..i * m + i], &b[..i]);
-        b[i] -= s;
+    // L y = b, unit diagonal.
+    for c in 0..m {
+        let bc = b[c];
+        if bc != 0.0 {
+            for (x, l) in b[c + 1..m].iter_mut().zip(&a[c * m + c + 1..(c + 1) * m]) {
+                *x -= l * bc;
+            }
+        }
     }
-    for i in (0..m).rev() {
-        let s = dot(&a[i * m + i + 1..(i + 1) * m], &b[i + 1..m]);
-        b[i] = (b[i] - s) / a[i * m + i];
+    // U x = y.
+    for c in (0..m).rev() {
+        let bc = b[c] * a[c * m + c];
+        b[c] = bc;
+        if bc != 0.0 {
+            for (x, u) in b[..c].iter_mut().zip(&a[c * m..c * m + c]) {
+                *x -= u * bc;
+            }
+        }
     }
 }

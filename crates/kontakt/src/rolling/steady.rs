@@ -174,6 +174,10 @@ pub struct SteadySolver {
     before: [Vec<f64>; 2],
     /// The creepage and `μ` of the stored tractions (`None` after a reset).
     warm: Option<(Creepage, f64)>,
+    /// The tractions \[MPa\] of the solve before the last, and its creepage, when both
+    /// lie on one ray of creepages with the last (the secant predictor's first point).
+    older: [Vec<f64>; 2],
+    older_creep: Option<Creepage>,
 }
 
 /// `λ > 0` with `new = λ old` (the three creepages parallel to 1e-9), else `None`.
@@ -222,6 +226,8 @@ impl SteadySolver {
             last: [vec![0.0; n], vec![0.0; n]],
             before: [vec![0.0; n], vec![0.0; n]],
             warm: None,
+            older: [vec![0.0; n], vec![0.0; n]],
+            older_creep: None,
         })
     }
 
@@ -229,6 +235,7 @@ impl SteadySolver {
     pub fn reset(&mut self) {
         self.core.reset();
         self.warm = None;
+        self.older_creep = None;
     }
 
     /// Solve for the cell pressures `pressure` \[MPa\] (row-major, x fastest, `>= 0`),
@@ -320,17 +327,36 @@ impl SteadySolver {
             }
         }
         if options.method == SteadyMethod::Newton {
-            // Warm start: along a creep curve (the creepage a positive multiple λ of the
-            // last one, same μ) the tractions are scaled by λ, exact while all cells
-            // stick (linear theory); the solver projects them onto the discs.
-            if let Some((c0, mu0)) = self.warm
-                && mu0 == mu
-                && let Some(lambda) = creep_ratio(c0, creepage)
+            // Warm start along a creep curve (the creepage a positive multiple λ of the
+            // last one, same μ): the secant through the last two solutions on that ray
+            // (creepages s₀ < s₁ -> s₂ = λ s₁: τ₁ + (s₂ − s₁)/(s₁ − s₀) (τ₁ − τ₀)), or,
+            // with one solution, the secant through zero traction (τ₁ scaled by λ, exact
+            // while all cells stick); the solver projects them onto the discs.
+            let mut older_creep = None;
+            if let Some((c1, mu1)) = self.warm
+                && mu1 == mu
+                && let Some(lambda) = creep_ratio(c1, creepage)
             {
-                for t in self.core.tau.iter_mut() {
-                    t.iter_mut().for_each(|v| *v *= lambda);
+                // c1 = l0 c0: the steps in units of s₀ are s₁ − s₀ = l0 − 1 and
+                // s₂ − s₁ = l0 (λ − 1).
+                let secant = self
+                    .older_creep
+                    .and_then(|c0| creep_ratio(c0, c1))
+                    .filter(|l0| (l0 - 1.0).abs() > 1e-9)
+                    .map(|l0| l0 * (lambda - 1.0) / (l0 - 1.0));
+                for (t, o) in self.core.tau.iter_mut().zip(self.older.iter_mut()) {
+                    for (t1, t0) in t.iter_mut().zip(o.iter_mut()) {
+                        let v = *t1;
+                        *t1 = match secant {
+                            Some(r) => v + r * (v - *t0),
+                            None => v * lambda,
+                        };
+                        *t0 = v;
+                    }
                 }
+                older_creep = Some(c1);
             }
+            self.older_creep = older_creep;
             self.warm = Some((creepage, mu));
             let grid = self.grid;
             let rigid = |c: usize| {
