@@ -30,6 +30,7 @@
 //! Units: mm, N, MPa throughout.
 
 mod coupled;
+mod coupled_steady;
 mod cross;
 mod curve;
 pub mod influence;
@@ -41,6 +42,9 @@ mod steady_fft;
 
 pub use crate::tangential::KalkerMaterial;
 pub use coupled::{CoupledOptions, CoupledShiftSolver, CoupledSolution};
+pub use coupled_steady::{
+    CoupledSteadyOptions, CoupledSteadySolution, CoupledSteadySolver, SteadyLoad,
+};
 pub use cross::CouplingOperator;
 pub use curve::{ExactPoint, KalkerExact, KalkerExactOptions};
 pub use operator::{TangentialOperator, difference_parameter};
