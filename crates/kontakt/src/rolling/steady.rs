@@ -55,7 +55,9 @@
 //! change.
 //!
 //! # Assumptions
-//! Quasi-identical bodies (`K = 0`), the pressure given and constant, constant `μ`,
+//! Quasi-identical bodies (`K = 0`; dissimilar bodies through the extra rigid slip of
+//! [`SteadySolver::solve_with_rigid_slip`], see [`super::CoupledSteadySolver`]), the
+//! pressure given and constant, constant `μ`,
 //! small creepages (linear kinematics), the column of cells at the leading edge unloaded
 //! (the upwind cell of every loaded cell is on the grid).
 //!
