@@ -588,6 +588,24 @@ fn bad_input_is_refused_and_failures_are_statuses() {
     assert_eq!(r.status.termination, Termination::MaxIterations);
     assert!(r.status.residual.is_finite());
     assert!(r.traction_x.iter().all(|t| t.is_finite()));
+    // A normal solve cut short: its status, the pressure, no steady solve.
+    let mut normal = CoupledSteadySolver::new(
+        &grid,
+        &al,
+        &st,
+        CoupledSteadyOptions {
+            normal: kontakt::halfspace::SolverOptions {
+                max_iterations: 1,
+                ..opts.normal
+            },
+            ..opts
+        },
+    )
+    .unwrap();
+    let r = normal.solve(&gap, f, 0.05, free).unwrap();
+    assert_ne!(r.status.termination, Termination::Converged);
+    assert!(r.steady_status.is_none() && r.status.residual.is_finite());
+    assert!(r.pressure.iter().all(|p| p.is_finite()));
     // A creepage search cut short: its status and force residual.
     let mut short = CoupledSteadySolver::new(
         &grid,

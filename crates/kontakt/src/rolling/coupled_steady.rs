@@ -196,6 +196,8 @@ pub struct CoupledSteadySolution {
     /// The pressure's tangential displacement difference `A_t p` \[mm\], x component
     /// (zero without coupling).
     pub pressure_displacement_x: Vec<f64>,
+    /// The pressure's tangential displacement difference, y component \[mm\].
+    pub pressure_displacement_y: Vec<f64>,
     /// The tractions' normal displacement sum `A_n τ` \[mm\] (positive: opens the gap;
     /// zero without coupling).
     pub coupling_gap: Vec<f64>,
@@ -238,6 +240,30 @@ pub struct CoupledSteadySolution {
 /// rolling direction (`+x`), the normal problem solved in the same loop (see the module
 /// docs). Keeps the last pressure, tractions, creepage and slope as the warm start of
 /// the next call; [`CoupledSteadySolver::reset`] forgets them.
+///
+/// # Example
+/// The free-rolling creepage of an aluminium roller on a steel one (CONTACT's example
+/// `bentall`: a strip of 216 cells, `a = 0.1` mm, `R = 25` mm) with almost no friction:
+/// Bentall & Johnson's `ξ = −(2K/G) p0 cos θ* = −5.263e-4` (docs/rolling.md §11).
+///
+/// ```
+/// use kontakt::geometry::Grid2;
+/// use kontakt::halfspace::Control;
+/// use kontakt::material::ElasticMaterial;
+/// use kontakt::rolling::{CoupledSteadyOptions, CoupledSteadySolver, SteadyLoad};
+///
+/// let aluminium = ElasticMaterial::new(60_260.0, 0.31)?; // E [MPa], ν (G = 23 000 MPa)
+/// let steel = ElasticMaterial::new(209_920.0, 0.28)?; // G = 82 000 MPa
+/// let grid = Grid2::new([-0.108, 0.108], [-500.0, 500.0], 216, 1)?;
+/// let gap: Vec<f64> = grid.points().map(|(x, _)| x * x / 50.0).collect();
+/// let mut solver =
+///     CoupledSteadySolver::new(&grid, &aluminium, &steel, CoupledSteadyOptions::default())?;
+/// let free = SteadyLoad::LongitudinalForce { force: 0.0, lateral: 0.0, spin: 0.0 };
+/// let s = solver.solve(&gap, Control::Force(16_201.9), 1e-4, free)?;
+/// assert!(s.status.converged());
+/// assert!((s.creepage.longitudinal / -5.263e-4 - 1.0).abs() < 3e-3);
+/// # Ok::<(), kontakt::Error>(())
+/// ```
 #[derive(Debug)]
 pub struct CoupledSteadySolver {
     grid: Grid2,
@@ -584,6 +610,7 @@ impl CoupledSteadySolver {
         let p = self.normal.pressure().to_vec();
         let mut coupling_gap = vec![0.0; n];
         let mut pressure_displacement_x = vec![0.0; n];
+        let mut pressure_displacement_y = vec![0.0; n];
         if let Some(cross) = &mut self.cross {
             let [tx, ty] = &self.tau;
             cross
@@ -594,6 +621,7 @@ impl CoupledSteadySolver {
                 .tangential(&p, ux, uy)
                 .expect("invariant: lengths match the grid");
             pressure_displacement_x.copy_from_slice(&self.up[0]);
+            pressure_displacement_y.copy_from_slice(&self.up[1]);
         }
         let creepage_of = |xi: f64| match load {
             SteadyLoad::Creepage(c) => c,
@@ -614,6 +642,7 @@ impl CoupledSteadySolver {
                 slip_y: s.slip_y,
                 state: s.state,
                 pressure_displacement_x,
+                pressure_displacement_y,
                 coupling_gap,
                 creepage: creepage_of(xi),
                 force: s.force,
@@ -650,6 +679,7 @@ impl CoupledSteadySolver {
                     slip_y: vec![0.0; n],
                     state,
                     pressure_displacement_x,
+                    pressure_displacement_y,
                     coupling_gap,
                     creepage: creepage_of(self.last_xi.unwrap_or(0.0)),
                     force: [
@@ -802,7 +832,11 @@ fn find_creepage(
             });
         }
         prev = (xi, g);
-        step *= 2.0;
+        // Doubling, but never to an infinite creepage (a target out of reach, e.g. with
+        // lateral creepage or spin, ends at `max_force_iterations`).
+        if step < 1e12 * scale {
+            step *= 2.0;
+        }
     }
     // The bracket: `lo` with g > 0, `hi` with g < 0 (ξ_lo < ξ_hi).
     let (mut lo, mut hi) = if dir > 0.0 {
