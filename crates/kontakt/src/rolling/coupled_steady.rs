@@ -713,8 +713,8 @@ fn check_force_target(force: f64, limit: f64) -> Result<()> {
             "force_x",
             force,
             format!(
-                "-mu F_N < F_x < mu F_N = {limit:e} N (at mu F_N the contact slides and the \
-                 creepage is undetermined)"
+                "-{limit:e} N < F_x < {limit:e} N (|F_x| < mu F_N: at mu F_N the contact \
+                 slides and the creepage is undetermined)"
             ),
         ))
     }
