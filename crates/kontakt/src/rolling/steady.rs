@@ -390,6 +390,7 @@ impl SteadySolver {
             // last one, same μ) the tractions are scaled by λ, exact while all cells
             // stick (linear theory); the solver projects them onto the discs.
             if let Some((c0, mu0)) = self.warm
+                && extra.is_none()
                 && mu0 == mu
                 && let Some(lambda) = creep_ratio(c0, creepage)
             {
