@@ -7,7 +7,8 @@
 //!   solution integrated over the cell), for quasi-identical bodies.
 //! - [`TangentialOperator`]: `u = A τ` by FFT on the free-boundary plans of
 //!   [`crate::halfspace`], for Kalker's combined `G`, `ν` ([`KalkerMaterial`]);
-//!   [`difference_parameter`]: Kalker's `K`, which is neglected.
+//!   [`difference_parameter`]: Kalker's `K` (neglected by the solvers of quasi-identical
+//!   bodies, coupled by [`CoupledShiftSolver`] and [`CoupledSteadySolver`]).
 //! - [`ShiftSolver`]: tractions, stick/slip map and slip for a given pressure and
 //!   friction coefficient under a prescribed rigid shift or total tangential force,
 //!   accelerated projected gradients with a stated residual and a
@@ -20,16 +21,23 @@
 //!   difference parameter `K ≠ 0`), the normal and tangential problems coupled through
 //!   [`CouplingOperator`] and solved by an outer loop along a loading history (Spence's
 //!   compression with friction is the special case without shift).
+//! - [`CoupledSteadySolver`]: steady rolling of dissimilar bodies, the normal problem and
+//!   steady rolling coupled by the same outer loop (the pressure's tangential
+//!   displacement an extra rigid slip of [`SteadySolver::solve_with_rigid_slip`]), under
+//!   prescribed creepages or a prescribed longitudinal force ([`SteadyLoad`]; `F_x = 0`:
+//!   the free-rolling creepage).
 //! - [`KalkerExact`]: the traction model `kalker_exact` — a steady solver planned on a
 //!   Hertz ellipse, evaluated along a creep curve with warm starts, each point with its
 //!   status (`kontakt traction`, docs/tangential.md §11).
 //!
-//! Not yet here: the coupling of dissimilar bodies in steady rolling. Method and
-//! validation: docs/rolling.md.
+//! Not yet here: dissimilar bodies in [`KalkerExact`] (the traction model takes
+//! quasi-identical bodies), non-Hertzian pressures as its input. Method and validation:
+//! docs/rolling.md (§11 for steady rolling of dissimilar bodies).
 //!
 //! Units: mm, N, MPa throughout.
 
 mod coupled;
+mod coupled_steady;
 mod cross;
 mod curve;
 pub mod influence;
@@ -41,6 +49,9 @@ mod steady_fft;
 
 pub use crate::tangential::KalkerMaterial;
 pub use coupled::{CoupledOptions, CoupledShiftSolver, CoupledSolution};
+pub use coupled_steady::{
+    CoupledSteadyOptions, CoupledSteadySolution, CoupledSteadySolver, SteadyLoad,
+};
 pub use cross::CouplingOperator;
 pub use curve::{ExactPoint, KalkerExact, KalkerExactOptions};
 pub use operator::{TangentialOperator, difference_parameter};

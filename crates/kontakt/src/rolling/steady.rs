@@ -55,7 +55,9 @@
 //! change.
 //!
 //! # Assumptions
-//! Quasi-identical bodies (`K = 0`), the pressure given and constant, constant `μ`,
+//! Quasi-identical bodies (`K = 0`; dissimilar bodies through the extra rigid slip of
+//! [`SteadySolver::solve_with_rigid_slip`], see [`super::CoupledSteadySolver`]), the
+//! pressure given and constant, constant `μ`,
 //! small creepages (linear kinematics), the column of cells at the leading edge unloaded
 //! (the upwind cell of every loaded cell is on the grid).
 //!
@@ -254,6 +256,66 @@ impl SteadySolver {
         creepage: Creepage,
         options: &SteadyOptions,
     ) -> Result<SteadySolution> {
+        self.solve_inner(pressure, mu, creepage, None, options)
+    }
+
+    /// As [`SteadySolver::solve`], with an extra rigid slip per cell: the slip distance
+    /// over one rolling step (one cell) becomes
+    ///
+    /// ```text
+    /// s_i = ω_i dx + e_i + u_i − u_{i+1}   [mm],
+    /// ```
+    ///
+    /// `e = [e_x, e_y]` \[mm\] (row-major, x fastest, `nx·ny` values each; values in
+    /// unloaded cells are ignored). For dissimilar bodies `e_i = (A_t p)_i − (A_t p)_{i+1}`,
+    /// the upwind difference of the pressure's tangential displacement (docs/rolling.md
+    /// §9.3, [`super::CoupledSteadySolver`]). Both methods take it. The rigid slip scale
+    /// of the convergence criterion is then `max_i |ω_i dx + e_i|` over the loaded cells;
+    /// along a creep curve the warm start is not scaled (the extra slip does not scale
+    /// with the creepage).
+    ///
+    /// Not converging is not an error: see the solution's `status`.
+    ///
+    /// # Errors
+    /// As [`SteadySolver::solve`], and [`Error::InvalidInput`] for an extra slip of the
+    /// wrong length or not finite.
+    pub fn solve_with_rigid_slip(
+        &mut self,
+        pressure: &[f64],
+        mu: f64,
+        creepage: Creepage,
+        extra_slip: [&[f64]; 2],
+        options: &SteadyOptions,
+    ) -> Result<SteadySolution> {
+        let n = self.grid.len();
+        for (field, e) in [
+            ("extra_slip[0]", extra_slip[0]),
+            ("extra_slip[1]", extra_slip[1]),
+        ] {
+            if e.len() != n {
+                return Err(Error::invalid(
+                    field,
+                    format!("{} values", e.len()),
+                    format!("{n} values ({} x {} grid)", self.grid.nx(), self.grid.ny()),
+                ));
+            }
+            if let Some(v) = e.iter().find(|v| !v.is_finite()) {
+                return Err(Error::invalid(field, v, "finite slip distances in mm"));
+            }
+        }
+        self.solve_inner(pressure, mu, creepage, Some(extra_slip), options)
+    }
+
+    /// The solve, with the optional extra rigid slip (`None`: exactly the operations of
+    /// the solver without it).
+    fn solve_inner(
+        &mut self,
+        pressure: &[f64],
+        mu: f64,
+        creepage: Creepage,
+        extra: Option<[&[f64]; 2]>,
+        options: &SteadyOptions,
+    ) -> Result<SteadySolution> {
         let (nx, ny) = (self.grid.nx(), self.grid.ny());
         let n = nx * ny;
         if pressure.len() != n {
@@ -320,20 +382,26 @@ impl SteadySolver {
         let mut scale: f64 = 0.0;
         for j in 0..ny {
             for i in 0..nx {
-                if pressure[j * nx + i] > 0.0 {
+                let c = j * nx + i;
+                if pressure[c] > 0.0 {
                     let w = omega(i, j, &self.grid);
-                    scale = scale.max(w[0].hypot(w[1]) * dx);
+                    scale = match extra {
+                        None => scale.max(w[0].hypot(w[1]) * dx),
+                        Some([ex, ey]) => scale.max((w[0] * dx + ex[c]).hypot(w[1] * dx + ey[c])),
+                    };
                 }
             }
         }
         if options.method == SteadyMethod::Newton {
             // Warm start along a creep curve (the creepage a positive multiple λ of the
-            // last one, same μ): the secant through the last two solutions on that ray
-            // (creepages s₀ < s₁ -> s₂ = λ s₁: τ₁ + (s₂ − s₁)/(s₁ − s₀) (τ₁ − τ₀)), or,
-            // with one solution, the secant through zero traction (τ₁ scaled by λ, exact
-            // while all cells stick); the solver projects them onto the discs.
+            // last one, same μ, no extra slip): the secant through the last two
+            // solutions on that ray (creepages s₀ < s₁ -> s₂ = λ s₁:
+            // τ₁ + (s₂ − s₁)/(s₁ − s₀) (τ₁ − τ₀)), or, with one solution, the secant
+            // through zero traction (τ₁ scaled by λ, exact while all cells stick); the
+            // solver projects them onto the discs.
             let mut older_creep = None;
             if let Some((c1, mu1)) = self.warm
+                && extra.is_none()
                 && mu1 == mu
                 && let Some(lambda) = creep_ratio(c1, creepage)
             {
@@ -356,12 +424,16 @@ impl SteadySolver {
                 }
                 older_creep = Some(c1);
             }
+            // With an extra slip the tractions are not proportional to the creepage.
             self.older_creep = older_creep;
-            self.warm = Some((creepage, mu));
+            self.warm = extra.is_none().then_some((creepage, mu));
             let grid = self.grid;
             let rigid = |c: usize| {
                 let w = omega(c % nx, c / nx, &grid);
-                [w[0] * dx, w[1] * dx]
+                match extra {
+                    None => [w[0] * dx, w[1] * dx],
+                    Some([ex, ey]) => [w[0] * dx + ex[c], w[1] * dx + ey[c]],
+                }
             };
             let (termination, iterations, residual, fft, linear) = if scale > 0.0 {
                 let settings = NewtonSettings {
@@ -424,6 +496,10 @@ impl SteadySolver {
                     let up = if i + 1 < nx { c + 1 } else { c };
                     self.core.rigid[0][c] = w[0] * dx - self.last[0][up];
                     self.core.rigid[1][c] = w[1] * dx - self.last[1][up];
+                    if let Some([ex, ey]) = extra {
+                        self.core.rigid[0][c] += ex[c];
+                        self.core.rigid[1][c] += ey[c];
+                    }
                 }
             }
             let inner = self
