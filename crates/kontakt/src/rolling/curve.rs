@@ -12,6 +12,18 @@
 //! full sliding then gives `|F| = μ F_N` to the solver's tolerance, and the curve is
 //! normalised by the true normal force.
 //!
+//! **Any pressure field.** [`KalkerExact::from_pressure`] and
+//! [`KalkerExact::from_solution`] plan the same solver on the pressure of a normal-contact
+//! solver instead (the half-space solver, PimP: non-Hertzian zones). The field, uniform
+//! per cell on its own grid, is resampled onto a grid aligned with the rolling
+//! direction: `elements = [mx, my]` cells across the loaded cells' extent along and
+//! across it, plus one unloaded column beyond each edge along `x`; each new cell takes
+//! the bilinear interpolation of the field's cell centres where it lies in a loaded
+//! cell of the field, and zero elsewhere (so the support is the field's own loaded
+//! cells, and the leading-edge column stays empty); the result is scaled to the
+//! field's normal force `Σ p ΔA`. The new grid's origin is the field's origin (the
+//! contact point of the gap), so the spin pole and the spin moment refer to it.
+//!
 //! Each creepage point (longitudinal `ξ` \[-\], lateral `η` \[-\], spin `φ` \[1/mm\]) is one
 //! steady solve; along a curve the solver starts from the previous point's tractions (a
 //! warm start). Every point carries the solver's [`SolveStatus`]: a point that did not
@@ -37,8 +49,9 @@
 //!
 //! # Assumptions
 //! Those of [`super::SteadySolver`]: quasi-identical bodies (Kalker's `K = 0`), the Hertz
-//! pressure unchanged by the tractions, constant Coulomb friction `μ`, steady rolling
-//! along `x` (an axis of the ellipse).
+//! pressure (or the given field) unchanged by the tractions, constant Coulomb friction
+//! `μ`, steady rolling along `x` (an axis of the ellipse, or the given direction), a
+//! plane contact (a field's curved zone is taken in its tangent plane).
 //!
 //! # References
 //! Kalker, *Three-dimensional elastic bodies in rolling contact* (1990), ch. 5;
@@ -47,6 +60,7 @@
 
 use super::steady::{SteadyOptions, SteadySolution, SteadySolver};
 use crate::error::{Error, Result};
+use crate::field::NormalSolution;
 use crate::geometry::Grid2;
 use crate::material::ElasticMaterial;
 use crate::solve::SolveStatus;
@@ -137,7 +151,10 @@ pub struct ExactPoint {
 /// at many creepages (see the module docs).
 #[derive(Debug)]
 pub struct KalkerExact {
-    ellipse: ContactEllipse,
+    /// The Hertz ellipse, when the model was planned on one.
+    ellipse: Option<ContactEllipse>,
+    /// Normal force `Σ p ΔA` \[N\].
+    normal_force: f64,
     mu: f64,
     material: KalkerMaterial,
     options: KalkerExactOptions,
@@ -203,7 +220,8 @@ impl KalkerExact {
         }
         let solver = SteadySolver::new(&grid, material, options.threads)?;
         Ok(KalkerExact {
-            ellipse,
+            ellipse: Some(ellipse),
+            normal_force: ellipse.normal_force(),
             mu,
             material,
             options,
@@ -213,9 +231,168 @@ impl KalkerExact {
         })
     }
 
-    /// The contact ellipse.
-    pub fn ellipse(&self) -> &ContactEllipse {
-        &self.ellipse
+    /// Plan the model on a pressure field: `pressure` \[MPa\] per cell of `grid` \[mm\]
+    /// (row-major, x fastest; uniform per cell, as the half-space solver and PimP give
+    /// it), rolling in the direction at `rolling_angle` \[rad\] from the grid's `x` axis
+    /// (counter-clockwise about the contact normal), Kalker's combined constants, the
+    /// friction coefficient `mu` \[-\] and `options` (`elements` now counts the cells
+    /// across the loaded cells' extent). See the module docs for the resampling.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] naming `pressure` (wrong length, a value not finite or
+    /// negative, no loaded cell), `rolling_angle` (not finite), `friction_coefficient`,
+    /// `elements[0]`/`elements[1]` or `threads`, as [`with_material`](Self::with_material).
+    pub fn from_pressure(
+        grid: &Grid2,
+        pressure: &[f64],
+        rolling_angle: f64,
+        material: KalkerMaterial,
+        mu: f64,
+        options: KalkerExactOptions,
+    ) -> Result<Self> {
+        let mu = check_friction(mu)?;
+        options.validate()?;
+        if pressure.len() != grid.len() {
+            return Err(Error::invalid(
+                "pressure",
+                format!("{} values", pressure.len()),
+                format!("{} values ({} x {} grid)", grid.len(), grid.nx(), grid.ny()),
+            ));
+        }
+        if let Some(p) = pressure.iter().find(|p| !(p.is_finite() && **p >= 0.0)) {
+            return Err(Error::invalid(
+                "pressure",
+                p,
+                "finite cell pressures >= 0 MPa",
+            ));
+        }
+        if !rolling_angle.is_finite() {
+            return Err(Error::invalid(
+                "rolling_angle",
+                rolling_angle,
+                "a finite angle in rad",
+            ));
+        }
+        let (dx, dy) = (grid.dx(), grid.dy());
+        let normal_force = pressure.iter().sum::<f64>() * grid.cell_area();
+        if !(normal_force > 0.0) {
+            return Err(Error::invalid(
+                "pressure",
+                "no cell with p > 0",
+                "a pressure field with contact (some cell p > 0 MPa)",
+            ));
+        }
+        // The loaded cells' extent in the rolling frame: x' = c x + s y, y' = −s x + c y.
+        let (c, s) = (rolling_angle.cos(), rolling_angle.sin());
+        let hx = 0.5 * (dx * c.abs() + dy * s.abs());
+        let hy = 0.5 * (dx * s.abs() + dy * c.abs());
+        let (mut x_range, mut y_range) = (
+            [f64::INFINITY, f64::NEG_INFINITY],
+            [f64::INFINITY, f64::NEG_INFINITY],
+        );
+        for ((x, y), p) in grid.points().zip(pressure) {
+            if *p > 0.0 {
+                let (xr, yr) = (c * x + s * y, -s * x + c * y);
+                x_range = [x_range[0].min(xr - hx), x_range[1].max(xr + hx)];
+                y_range = [y_range[0].min(yr - hy), y_range[1].max(yr + hy)];
+            }
+        }
+        let [mx, my] = options.elements;
+        let ddx = (x_range[1] - x_range[0]) / mx as f64;
+        // One empty column beyond each edge along x: the leading-edge column is unloaded.
+        let rolled = Grid2::new([x_range[0] - ddx, x_range[1] + ddx], y_range, mx + 2, my)?;
+        // The field at a point: bilinear between its cell centres inside a loaded cell,
+        // zero outside the loaded cells.
+        let (x0, y0) = (grid.x(0), grid.y(0));
+        let (nx, ny) = (grid.nx() as isize, grid.ny() as isize);
+        let at = |i: isize, j: isize| {
+            if (0..nx).contains(&i) && (0..ny).contains(&j) {
+                pressure[(j * nx + i) as usize]
+            } else {
+                0.0
+            }
+        };
+        let field = |x: f64, y: f64| {
+            let (u, v) = ((x - x0) / dx, (y - y0) / dy);
+            if at(u.round() as isize, v.round() as isize) <= 0.0 {
+                return 0.0;
+            }
+            let (i, j) = (u.floor(), v.floor());
+            let (fu, fv) = (u - i, v - j);
+            let (i, j) = (i as isize, j as isize);
+            (1.0 - fv) * ((1.0 - fu) * at(i, j) + fu * at(i + 1, j))
+                + fv * ((1.0 - fu) * at(i, j + 1) + fu * at(i + 1, j + 1))
+        };
+        let mut resampled: Vec<f64> = rolled
+            .points()
+            .map(|(xr, yr)| field(c * xr - s * yr, s * xr + c * yr))
+            .collect();
+        let sum = resampled.iter().sum::<f64>() * rolled.cell_area();
+        if !(sum > 0.0) {
+            return Err(Error::invalid(
+                "pressure",
+                "a field too narrow for the resampling",
+                "a pressure field whose loaded cells the rolling grid's cell centres reach",
+            ));
+        }
+        let scale = normal_force / sum;
+        for p in &mut resampled {
+            *p *= scale;
+        }
+        let solver = SteadySolver::new(&rolled, material, options.threads)?;
+        Ok(KalkerExact {
+            ellipse: None,
+            normal_force,
+            mu,
+            material,
+            options,
+            grid: rolled,
+            pressure: resampled,
+            solver: Mutex::new(solver),
+        })
+    }
+
+    /// Plan the model on the pressure of a normal-contact solution (the half-space
+    /// solver's or PimP's [`NormalSolution`]), rolling in the direction at
+    /// `rolling_direction` \[rad\] from the gap source's `x` axis (the solution's grid is
+    /// turned by its `orientation` from that axis). As [`from_pressure`](Self::from_pressure)
+    /// with `rolling_angle = rolling_direction − orientation`.
+    ///
+    /// # Errors
+    /// As [`from_pressure`](Self::from_pressure); `rolling_direction` not finite is
+    /// named as such.
+    pub fn from_solution<D>(
+        solution: &NormalSolution<D>,
+        rolling_direction: f64,
+        material: KalkerMaterial,
+        mu: f64,
+        options: KalkerExactOptions,
+    ) -> Result<Self> {
+        if !rolling_direction.is_finite() {
+            return Err(Error::invalid(
+                "rolling_direction",
+                rolling_direction,
+                "a finite angle in rad",
+            ));
+        }
+        Self::from_pressure(
+            &solution.grid,
+            &solution.pressure,
+            rolling_direction - solution.orientation,
+            material,
+            mu,
+            options,
+        )
+    }
+
+    /// The contact ellipse, when the model was planned on one ([`new`](Self::new),
+    /// [`with_material`](Self::with_material)); `None` for a pressure field.
+    pub fn ellipse(&self) -> Option<&ContactEllipse> {
+        self.ellipse.as_ref()
+    }
+    /// Normal force \[N\].
+    pub fn normal_force(&self) -> Newton {
+        self.normal_force
     }
     /// Friction coefficient `μ` \[-\].
     pub fn friction_coefficient(&self) -> f64 {
@@ -229,7 +406,7 @@ impl KalkerExact {
     pub fn options(&self) -> &KalkerExactOptions {
         &self.options
     }
-    /// The solver's grid \[mm\] (`mx + 2` by `my` cells).
+    /// The solver's grid \[mm\] (`mx + 2` by `my` cells; `x` the rolling direction).
     pub fn grid(&self) -> &Grid2 {
         &self.grid
     }
@@ -271,7 +448,7 @@ impl KalkerExact {
             // Do not warm-start the next point from an unconverged field.
             solver.reset();
         }
-        let bound = self.mu * self.ellipse.normal_force();
+        let bound = self.mu * self.normal_force;
         let loaded = s.stick_cells + s.slip_cells;
         let t = -s.force[0] / bound;
         let point = ExactPoint {

@@ -27,11 +27,12 @@
 //!   prescribed creepages or a prescribed longitudinal force ([`SteadyLoad`]; `F_x = 0`:
 //!   the free-rolling creepage).
 //! - [`KalkerExact`]: the traction model `kalker_exact` — a steady solver planned on a
-//!   Hertz ellipse, evaluated along a creep curve with warm starts, each point with its
-//!   status (`kontakt traction`, docs/tangential.md §11).
+//!   Hertz ellipse or on any pressure field (the half-space solver's, PimP's: resampled
+//!   onto a grid along the rolling direction), evaluated along a creep curve with warm
+//!   starts, each point with its status (`kontakt traction`, docs/tangential.md §11).
 //!
 //! Not yet here: dissimilar bodies in [`KalkerExact`] (the traction model takes
-//! quasi-identical bodies), non-Hertzian pressures as its input. Method and validation:
+//! quasi-identical bodies). Method and validation:
 //! docs/rolling.md (§11 for steady rolling of dissimilar bodies).
 //!
 //! Units: mm, N, MPa throughout.
