@@ -5,8 +5,8 @@
 //! References, each with its tolerance and the value measured when it was set:
 //! - a finely sampled Hertz field gives the model planned on the Hertz ellipse, in any
 //!   orientation of the field's grid (the resampling is the only difference);
-//! - the half-space solver's pressure of a ball on a flat gives the Hertz model (the
-//!   numerical pressure is Hertz's to the solver's grid error);
+//! - the half-space solver's and PimP's pressure of a ball on a flat give the Hertz model
+//!   (the numerical pressure is Hertz's to the solver's grid error);
 //! - two Hertz patches far apart (a non-Hertzian field: two zones) give twice the creep
 //!   force of one patch under half the load (their elastic interaction decays as the
 //!   inverse distance);
@@ -20,7 +20,7 @@ use kontakt::geometry::{Grid2, RelativeCurvature};
 use kontakt::halfspace::{Bem, BemOptions};
 use kontakt::hertz::{HertzPointContact, PointGeometry};
 use kontakt::material::ElasticMaterial;
-use kontakt::pimp::{FnGap, QuadraticGap};
+use kontakt::pimp::{FnGap, Pimp, PimpOptions, QuadraticGap};
 use kontakt::rolling::{KalkerExact, KalkerExactOptions};
 use kontakt::tangential::{ContactEllipse, Creepage, EllipseAxis, KalkerMaterial};
 use std::f64::consts::PI;
@@ -153,6 +153,40 @@ fn the_half_space_pressure_of_a_ball_gives_the_hertz_model() {
     let d = max_diff(&ours, &theirs);
     // Measured 2026-11-27: 6.0e-3 of μ F_N (the half-space solver's zone edge on its own
     // grid against Hertz's).
+    assert!(d < 1e-2, "{ours:?} against {theirs:?} ({d:.2e})");
+}
+
+/// The same ball as PimP solves it (corrected bedding, its own adaptive grid turned into
+/// the gap's principal frame), rolling at 30° from the gap's x axis: `from_solution`
+/// against the Hertz model (a circle: any rolling direction).
+#[test]
+fn the_pimp_pressure_of_a_ball_gives_the_hertz_model() {
+    let k = RelativeCurvature::from_tensor(0.1, 0.1, 0.0).unwrap();
+    let force = 200.0;
+    let hertz = HertzPointContact::new(PointGeometry::from_curvature(k), STEEL, STEEL)
+        .unwrap()
+        .solve_force(force)
+        .unwrap();
+    let e = ContactEllipse::from_hertz(&hertz, EllipseAxis::Major).unwrap();
+    let material = KalkerMaterial::new(&STEEL, &STEEL).unwrap();
+    let mu = 0.1;
+    let cells = [24, 24];
+    let reference = KalkerExact::with_material(e, material, mu, options(cells)).unwrap();
+    let pimp = Pimp::new(STEEL, STEEL, PimpOptions::default())
+        .unwrap()
+        .solve_force(&QuadraticGap::new(k), force)
+        .unwrap();
+    let m = KalkerExact::from_solution(&pimp, PI / 6.0, material, mu, options(cells)).unwrap();
+    assert!((m.normal_force() - force).abs() < 1e-6 * force);
+    let xi_lin = mu * force / (material.shear_modulus * e.a() * e.a() * 4.12);
+    let xis: Vec<f64> = [0.1, 0.3, 0.6, 1.0, 1.5, 3.0]
+        .iter()
+        .map(|f| f * xi_lin)
+        .collect();
+    let ours = curve(&m, &xis);
+    let theirs = curve(&reference, &xis);
+    let d = max_diff(&ours, &theirs);
+    // Measured 2026-11-27: 5.6e-3 of μ F_N.
     assert!(d < 1e-2, "{ours:?} against {theirs:?} ({d:.2e})");
 }
 
