@@ -411,9 +411,12 @@ pub fn block_error(grid: &Grid2, field: &VelocityField, shape: [usize; 2]) -> f6
     let yc = grid.y(0) - 0.5 * k + 0.5 * wy;
     let [vx, vy] = field.sliding_at(xc, yc);
     let l = (dx[0] * dx[0] + dx[1] * dx[1] + dy[0] * dy[0] + dy[1] * dy[1]).sqrt();
-    // |v| over the blocks >= |v(c)| − L × the half-diagonal.
-    let v_min = vx.hypot(vy) - l * 0.5 * wx.hypot(wy);
-    let rho = 0.5 * ((bx - 1) as f64 * h).hypot((by - 1) as f64 * k);
+    // |v| over the blocks >= |v(c)| − L × the half-diagonal. (Square roots of sums of
+    // squares, not `hypot`: this runs for every shape on every call; a speed whose square
+    // overflows gives an infinite `v_min`, blocks whose sums overflow, and so the cell sums.)
+    let v_min = (vx * vx + vy * vy).sqrt() - l * 0.5 * (wx * wx + wy * wy).sqrt();
+    let (rx, ry) = ((bx - 1) as f64 * h, (by - 1) as f64 * k);
+    let rho = 0.5 * (rx * rx + ry * ry).sqrt();
     if v_min > 0.0 && l.is_finite() {
         2.0 * (rho * l / v_min).powi(2)
     } else {
@@ -554,7 +557,9 @@ fn block_sums<const BX: usize, const BY: usize>(
             let last = xb + (blocks - 1) as f64 * pitch;
             for g in 0..groups.min(CHUNK_GROUPS) {
                 let xg = xb + (g * BLOCK_LANES) as f64 * pitch;
-                let [pp4, mx4, sxx4, my4, sxy4, syy4] = [0, 1, 2, 3, 4, 5].map(|q| mom[q][g]);
+                let [pp4, mx4, sxx4, my4, sxy4, syy4] = &mom;
+                let (pp4, mx4, sxx4) = (&pp4[g], &mx4[g], &sxx4[g]);
+                let (my4, sxy4, syy4) = (&my4[g], &sxy4[g], &syy4[g]);
                 for l in 0..BLOCK_LANES {
                     let pp = pp4[l];
                     let xc = (xg + lane_offsets[l]).min(last);
