@@ -122,11 +122,9 @@ struct Slot {
     rows: Vec<Row>,
     /// The stencil rays' warm-start data (`GapSource::sample_points`).
     warm: [[f64; 2]; NODES_X * NODES_Y],
-    /// Scratch rows (half a row each, outward from the centre): the gap of the right and
-    /// the left half, and their pressure.
-    gap_right: Vec<f64>,
+    /// Scratch rows (half a row each, outward from the centre): the gap and the pressure of
+    /// the left half.
     gap_left: Vec<f64>,
-    press_right: Vec<f64>,
     press_left: Vec<f64>,
     /// Calls since every row was evaluated in full.
     since_full: usize,
@@ -210,9 +208,7 @@ impl PimpTracker {
             coef: SMatrix::zeros(),
             rows: vec![Row::default(); ny],
             warm: [[f64::INFINITY; 2]; NODES_X * NODES_Y],
-            gap_right: vec![0.0; nx / 2],
             gap_left: vec![0.0; nx / 2],
-            press_right: vec![0.0; nx / 2],
             press_left: vec![0.0; nx / 2],
             since_full: usize::MAX,
             lambda: [0.0; 2],
@@ -817,12 +813,17 @@ fn row_pass(
     // loop (the square roots overlap the polynomial), then the row's two halves.
     let n = pairs - lo;
     let positive = &u[nx - pairs..nx - pairs + n];
-    let (rs, ls) = (&mut slot.gap_right[..n], &mut slot.gap_left[..n]);
-    let (rp, lp) = (&mut slot.press_right[..n], &mut slot.press_left[..n]);
-    for ((((g_r, g_l), p_r), p_l), &uk) in rs
+    // The right half straight into the row, the left half (outward = backwards) into the
+    // scratch rows first.
+    let (g_left, g_rest) = slot.sampled.effective[j * nx..(j + 1) * nx].split_at_mut(pairs);
+    let (g_middle, g_right) = g_rest.split_at_mut(nx - 2 * pairs);
+    let (p_left, p_rest) = slot.pressure[j * nx..(j + 1) * nx].split_at_mut(pairs);
+    let (p_middle, p_right) = p_rest.split_at_mut(nx - 2 * pairs);
+    let (ls, lp) = (&mut slot.gap_left[..n], &mut slot.press_left[..n]);
+    for ((((g_r, g_l), p_r), p_l), &uk) in g_right[..n]
         .iter_mut()
         .zip(ls.iter_mut())
-        .zip(rp.iter_mut())
+        .zip(p_right[..n].iter_mut())
         .zip(lp.iter_mut())
         .zip(positive)
     {
@@ -842,21 +843,13 @@ fn row_pass(
         *p_r = stiffness * (cut - gr).max(0.0).sqrt();
         *p_l = stiffness * (cut - gl).max(0.0).sqrt();
     }
-    let row = &mut slot.sampled.effective[j * nx..(j + 1) * nx];
-    let (left, rest) = row.split_at_mut(pairs);
-    let (middle, right) = rest.split_at_mut(nx - 2 * pairs);
-    right[..n].copy_from_slice(rs);
-    for (l, &g) in left[lo..].iter_mut().zip(ls.iter().rev()) {
+    for (l, &g) in g_left[lo..].iter_mut().zip(ls.iter().rev()) {
         *l = g;
     }
-    let prow = &mut slot.pressure[j * nx..(j + 1) * nx];
-    let (pleft, prest) = prow.split_at_mut(pairs);
-    let (pmiddle, pright) = prest.split_at_mut(nx - 2 * pairs);
-    pright[..n].copy_from_slice(rp);
-    for (l, &pv) in pleft[lo..].iter_mut().zip(lp.iter().rev()) {
+    for (l, &pv) in p_left[lo..].iter_mut().zip(lp.iter().rev()) {
         *l = pv;
     }
-    if let (Some(m), Some(pm)) = (middle.first_mut(), pmiddle.first_mut()) {
+    if let (Some(m), Some(pm)) = (g_middle.first_mut(), p_middle.first_mut()) {
         *m = a[0];
         *pm = stiffness * (cut - a[0]).max(0.0).sqrt();
     }
