@@ -526,29 +526,28 @@ fn block_sums<const BX: usize, const BY: usize>(
             if !s0[..width].iter().any(|&q| q > 0.0) {
                 continue;
             }
-            for (g, lanes_m) in (0..groups).zip(0..CHUNK_GROUPS) {
-                let mut m = [[0.0f64; BLOCK_LANES]; 6];
-                for l in 0..BLOCK_LANES {
-                    let first = (g * BLOCK_LANES + l) * BX;
-                    if first + BX > CHUNK {
-                        break;
+            // The groups' columns all lie below `used` (CHUNK is a multiple of a group).
+            let group = BLOCK_LANES * BX;
+            for g in 0..groups.min(CHUNK_GROUPS) {
+                let cols = g * group..(g + 1) * group;
+                for (l, ((c_0, c_1), c_2)) in s0[cols.clone()]
+                    .chunks_exact(BX)
+                    .zip(s1[cols.clone()].chunks_exact(BX))
+                    .zip(s2[cols].chunks_exact(BX))
+                    .enumerate()
+                {
+                    let mut m = [0.0f64; 6];
+                    for (((&a, &b1), &b2), &d) in c_0.iter().zip(c_1).zip(c_2).zip(&di) {
+                        m[0] += a;
+                        m[1] += a * d;
+                        m[2] += a * (d * d);
+                        m[3] += b1;
+                        m[4] += b1 * d;
+                        m[5] += b2;
                     }
-                    let (c_0, c_1, c_2) = (
-                        &s0[first..first + BX],
-                        &s1[first..first + BX],
-                        &s2[first..first + BX],
-                    );
-                    for (c, &d) in di.iter().enumerate() {
-                        m[0][l] += c_0[c];
-                        m[1][l] += c_0[c] * d;
-                        m[2][l] += c_0[c] * (d * d);
-                        m[3][l] += c_1[c];
-                        m[4][l] += c_1[c] * d;
-                        m[5][l] += c_2[c];
+                    for (dst, v) in mom.iter_mut().zip(m) {
+                        dst[g][l] = v;
                     }
-                }
-                for (dst, src) in mom.iter_mut().zip(&m) {
-                    dst[lanes_m] = *src;
                 }
             }
             let xb = x0 + c0 as f64 * h;
