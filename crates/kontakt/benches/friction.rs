@@ -82,6 +82,36 @@ fn bench_friction(c: &mut Criterion) {
             })
         });
     }
+    // The contact element's PimP friction (issue 12): the loaded box of the torus/torus
+    // roller end at about 250 N (50 × 52 cells of 28.3 × 6.37 µm), spinning at 9.43 rad/s
+    // about a pole 40 mm away, by the blocks of `grid_friction_binned` and cell by cell.
+    {
+        use kontakt::friction::{binning_blocks, grid_friction, grid_friction_binned};
+        use kontakt::geometry::{Grid2, VelocityField};
+        let (p0, a, b, omega) = (1500.0f64, 0.70f64, 0.164f64, 9.43f64);
+        let grid = Grid2::centered(25.0 * 0.02832, 26.0 * 0.00637, 50, 52).expect("grid");
+        let pressure: Vec<f64> = grid
+            .points()
+            .map(|(x, y)| p0 * (1.0 - (x / a).powi(2) - (y / b).powi(2)).max(0.0).sqrt())
+            .collect();
+        let spin = VelocityField {
+            sliding: [[-omega * 40.0, 0.0], [0.0, -omega], [omega, 0.0]],
+            entrainment: [[0.0; 2]; 3],
+        };
+        eprintln!("element box: blocks {:?}", binning_blocks(&grid, &spin));
+        group.bench_function("element_box_binned", |bn| {
+            bn.iter(|| {
+                grid_friction_binned(&grid, black_box(&pressure), black_box(&spin), &coulomb)
+                    .expect("friction")
+            })
+        });
+        group.bench_function("element_box_cells", |bn| {
+            bn.iter(|| {
+                grid_friction(&grid, black_box(&pressure), black_box(&spin), &coulomb)
+                    .expect("friction")
+            })
+        });
+    }
     // Houpert's closed form for one contact: the estimate a designer uses without a map.
     let (q, e, a, mu) = (220.0f64, 2.76f64, 1.2f64, 0.1f64);
     group.bench_function("houpert_closed_form", |b| {

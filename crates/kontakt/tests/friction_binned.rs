@@ -138,3 +138,66 @@ fn binned_friction_falls_back_where_the_blocks_do_not_hold() {
     bad[2000] = f64::NAN;
     assert!(grid_friction_binned(&grid, &bad, &far, &law).is_err());
 }
+
+/// Every block shape of `BLOCK_SHAPES` (2 × 2 to 4 × 4, 2 × 8 and 8 × 2 cells): the Hertz
+/// field above on grids of cells from square to 16:1 either way (even and odd counts, so the
+/// last blocks are padded), spin poles 10 to 2000 mm away. Wherever a shape is chosen, its
+/// bound `block_error` is at most `BINNED_TOLERANCE` (1e-6) and the error against the cell
+/// sums (force, moment, power, load, each relative to its scale) is at most that bound; every
+/// shape is chosen somewhere, and the largest one the bound allows.
+#[test]
+fn every_block_shape_matches_the_cell_sums_within_its_bound() {
+    use kontakt::friction::{BLOCK_SHAPES, binning_blocks, block_error};
+    let law = coulomb();
+    let mut seen = Vec::new();
+    let mut worst = 0.0f64;
+    for (nx, ny) in [
+        (64, 64),
+        (16, 128),
+        (128, 16),
+        (33, 97),
+        (97, 33),
+        (50, 52),
+        (24, 192),
+        (192, 24),
+        (48, 128),
+    ] {
+        let (grid, pressure) = hertz(nx, ny);
+        for dist in [10.0, 20.0, 37.8, 60.0, 100.0, 400.0, 2000.0] {
+            let f = pole(10.0, dist * 0.3f64.cos(), dist * 0.3f64.sin());
+            let shape = binning_blocks(&grid, &f);
+            let want = grid_friction(&grid, &pressure, &f, &law).unwrap();
+            let got = grid_friction_binned(&grid, &pressure, &f, &law).unwrap();
+            let e = errors(&got, &want, &f, &grid);
+            println!("{nx} x {ny}, pole {dist:6.1} mm: blocks {shape:?}, error {e:.2e}");
+            let Some(shape) = shape else {
+                assert_eq!(got, want, "{nx} x {ny}, {dist} mm: not the cell sums");
+                continue;
+            };
+            let bound = block_error(&grid, &f, shape);
+            assert!(bound <= BINNED_TOLERANCE, "{shape:?}: bound {bound}");
+            assert_eq!(bound, binning_error(&grid, &f));
+            assert!(
+                e <= bound,
+                "{nx} x {ny}, {dist} mm, {shape:?}: {e} > bound {bound}"
+            );
+            // No shape with more cells qualifies.
+            for other in BLOCK_SHAPES {
+                if other[0] * other[1] > shape[0] * shape[1] {
+                    assert!(
+                        block_error(&grid, &f, other) > BINNED_TOLERANCE,
+                        "{other:?}"
+                    );
+                }
+            }
+            worst = worst.max(e / bound);
+            if !seen.contains(&shape) {
+                seen.push(shape);
+            }
+        }
+    }
+    println!("shapes used: {seen:?}; largest error / bound {worst:.2e}");
+    for shape in BLOCK_SHAPES {
+        assert!(seen.contains(&shape), "{shape:?} never chosen");
+    }
+}

@@ -308,23 +308,27 @@ fn finish_sums(grid: &Grid2, [fx, fy, m, power, load, raw]: [f64; 6]) -> Result<
 pub const BINNED_TOLERANCE: f64 = 1e-6;
 
 /// The friction integral of [`grid_friction`] with the boundary (Coulomb) law evaluated
-/// once per block of 2 × 2 cells instead of once per cell, where the sliding field allows:
-/// the contact element's PimP back-end (docs/mbs.md). Same arguments, outputs and errors as
+/// once per block of cells instead of once per cell, where the sliding field allows: the
+/// contact element's PimP back-end (docs/mbs.md). Same arguments, outputs and errors as
 /// [`grid_friction`]; does not allocate.
 ///
 /// With `q` the pressure (≥ 0) and `g(x) = v/√(|v|² + v_ε²)` the stress direction of the
 /// boundary part, a block of centre `c` contributes
 /// `Σ q g(x_k) ≈ P g(c) + ∇g(c) · Σ q_k (x_k − c)`, `P = Σ q_k` (one square root and one
-/// division per four cells; the moment `x × g` and the power density `|v|² / d` likewise).
-/// The remainder is the second-order Taylor term: along a line, `|∂²g| ≤ 4 L² / |v|²`
-/// (`L` the Frobenius norm of the sliding field's gradient), so each cell's error is at most
-/// `2 (ρ L / v_min)²` of its `q`, with `ρ` half a block's cell diagonal and `v_min` a lower
-/// bound of the sliding speed over the grid. The blocks are used when that bound is at most
-/// [`BINNED_TOLERANCE`] (sliding that varies little over a cell: the roller-end/rib contact
-/// spinning about a far axis); otherwise, and for a law with a fluid part (not linear in
-/// the pressure), the cell-by-cell sums of [`grid_friction`]. Error against them in
-/// docs/VALIDATION.md. Where the blocks' sums do not stay finite (a sliding speed whose
-/// square overflows), the cell-by-cell sums are taken as well.
+/// division per block; the moment `x × g` with the block's exact second moments of `q`, and
+/// the power density `|v|² / d`, likewise). The remainder is the second-order Taylor term:
+/// along a line, `|∂²g| ≤ 4 L² / |v|²` (`L` the Frobenius norm of the sliding field's
+/// gradient), so each cell's error is at most `2 (ρ L / v_min)²` of its `q`, with `ρ` the
+/// largest distance from a block's centre to its cells' centres (half the diagonal between
+/// its corner cells' centres) and `v_min` a lower bound of the sliding speed over the blocks.
+/// The blocks are [`BLOCK_SHAPES`]: of those whose bound is at most [`BINNED_TOLERANCE`],
+/// the one with the most cells (of equal ones, the smallest bound), laid from the grid's
+/// first cell, the last blocks padded with empty cells ([`binning_blocks`]; the bound is
+/// [`binning_error`]). Sliding that varies little over a block (the roller-end/rib contact
+/// spinning about a far axis) takes 2 × 4 or larger blocks; otherwise, and for a law with a
+/// fluid part (not linear in the pressure), the cell-by-cell sums of [`grid_friction`].
+/// Error against them in docs/VALIDATION.md. Where the blocks' sums do not stay finite (a
+/// sliding speed whose square overflows), the cell-by-cell sums are taken as well.
 ///
 /// # Errors
 /// Those of [`grid_friction`].
@@ -335,10 +339,20 @@ pub fn grid_friction_binned(
     law: &CellLaw,
 ) -> Result<GridFriction> {
     check_field(grid, pressure, field)?;
-    if law.has_fluid() || binning_error(grid, field) > BINNED_TOLERANCE {
-        return grid_friction(grid, pressure, field, law);
-    }
-    let sums = binned_sums(grid, pressure, field, law);
+    let shape = if law.has_fluid() {
+        None
+    } else {
+        binning_blocks(grid, field)
+    };
+    let sums = match shape {
+        Some([2, 2]) => block_sums::<2, 2>(grid, pressure, field, law),
+        Some([2, 4]) => block_sums::<2, 4>(grid, pressure, field, law),
+        Some([4, 2]) => block_sums::<4, 2>(grid, pressure, field, law),
+        Some([4, 4]) => block_sums::<4, 4>(grid, pressure, field, law),
+        Some([2, 8]) => block_sums::<2, 8>(grid, pressure, field, law),
+        Some([8, 2]) => block_sums::<8, 2>(grid, pressure, field, law),
+        _ => return grid_friction(grid, pressure, field, law),
+    };
     if sums.iter().all(|v| v.is_finite()) {
         finish_sums(grid, sums)
     } else {
@@ -348,20 +362,61 @@ pub fn grid_friction_binned(
     }
 }
 
-/// The bound `2 (ρ L / v_min)²` of [`grid_friction_binned`] (infinite when the sliding
+/// The block shapes `[cells along x, cells along y]` of [`grid_friction_binned`], by cells
+/// per block (most first).
+pub const BLOCK_SHAPES: [[usize; 2]; 6] = [[4, 4], [2, 8], [8, 2], [2, 4], [4, 2], [2, 2]];
+
+/// The block shape [`grid_friction_binned`] uses on `grid` with the sliding `field` (for a
+/// law without a fluid part): of [`BLOCK_SHAPES`] with a bound [`block_error`] at most
+/// [`BINNED_TOLERANCE`], the one with the most cells, of equal ones the smallest bound;
+/// `None` when no shape qualifies (the cell-by-cell sums).
+pub fn binning_blocks(grid: &Grid2, field: &VelocityField) -> Option<[usize; 2]> {
+    let mut best: Option<([usize; 2], f64)> = None;
+    for shape in BLOCK_SHAPES {
+        let e = block_error(grid, field, shape);
+        if e > BINNED_TOLERANCE {
+            continue;
+        }
+        best = match best {
+            Some((b, be)) if b[0] * b[1] > shape[0] * shape[1] || be <= e => Some((b, be)),
+            _ => Some((shape, e)),
+        };
+    }
+    best.map(|(b, _)| b)
+}
+
+/// The bound of the error of [`grid_friction_binned`] relative to `Σ |τ| ΔA` on `grid`
+/// with `field`: [`block_error`] of the blocks it uses ([`binning_blocks`]), or of 2 × 2
+/// blocks when it uses none (then above [`BINNED_TOLERANCE`], or infinite when the sliding
 /// may vanish on the grid).
 pub fn binning_error(grid: &Grid2, field: &VelocityField) -> f64 {
+    block_error(grid, field, binning_blocks(grid, field).unwrap_or([2, 2]))
+}
+
+/// The Taylor bound `2 (ρ L / v_min)²` of blocks of `shape` (cells along x and y, each ≥ 1)
+/// laid from the first cell of `grid` (the last ones padded): `ρ` the largest distance from
+/// a block's centre to its cells' centres, `L` the Frobenius norm of the sliding gradient,
+/// `v_min` the least sliding speed over the padded blocks (`|v|` at their centre less `L`
+/// times their half-diagonal). Infinite when the sliding may vanish there.
+pub fn block_error(grid: &Grid2, field: &VelocityField, shape: [usize; 2]) -> f64 {
     let [_, dx, dy] = field.sliding;
-    let (nx, ny) = (grid.nx(), grid.ny());
+    let [bx, by] = shape.map(|b| b.max(1));
     let (h, k) = (grid.dx(), grid.dy());
-    let xc = 0.5 * (grid.x(0) + grid.x(nx - 1));
-    let yc = 0.5 * (grid.y(0) + grid.y(ny - 1));
+    // The padded blocks' extent and centre.
+    let (wx, wy) = (
+        grid.nx().div_ceil(bx) as f64 * bx as f64 * h,
+        grid.ny().div_ceil(by) as f64 * by as f64 * k,
+    );
+    let xc = grid.x(0) - 0.5 * h + 0.5 * wx;
+    let yc = grid.y(0) - 0.5 * k + 0.5 * wy;
     let [vx, vy] = field.sliding_at(xc, yc);
     let l = (dx[0] * dx[0] + dx[1] * dx[1] + dy[0] * dy[0] + dy[1] * dy[1]).sqrt();
-    // |v| over the grid >= |v(c)| − L × the half-diagonal.
-    let half = 0.5 * ((nx as f64 * h).powi(2) + (ny as f64 * k).powi(2)).sqrt();
-    let v_min = vx.hypot(vy) - l * half;
-    let rho = 0.5 * h.hypot(k);
+    // |v| over the blocks >= |v(c)| − L × the half-diagonal. (Square roots of sums of
+    // squares, not `hypot`: this runs for every shape on every call; a speed whose square
+    // overflows gives an infinite `v_min`, blocks whose sums overflow, and so the cell sums.)
+    let v_min = (vx * vx + vy * vy).sqrt() - l * 0.5 * (wx * wx + wy * wy).sqrt();
+    let (rx, ry) = ((bx - 1) as f64 * h, (by - 1) as f64 * k);
+    let rho = 0.5 * (rx * rx + ry * ry).sqrt();
     if v_min > 0.0 && l.is_finite() {
         2.0 * (rho * l / v_min).powi(2)
     } else {
@@ -369,114 +424,178 @@ pub fn binning_error(grid: &Grid2, field: &VelocityField) -> f64 {
     }
 }
 
-/// Blocks per lane group of [`binned_sums`].
+/// Columns per chunk of a strip in [`block_sums`] (a multiple of every block width).
+const CHUNK: usize = 64;
+/// Blocks per lane group of [`block_sums`].
 const BLOCK_LANES: usize = 4;
+/// Lane groups of blocks per chunk (blocks at least 2 cells wide).
+const CHUNK_GROUPS: usize = CHUNK / 2 / BLOCK_LANES;
 
-/// The sums of [`grid_friction_binned`]: `[fx, fy, m, power, load, raw]` as
-/// [`boundary_sums`], blocks of 2 × 2 cells by their Taylor expansion about the block's
-/// centre, a last odd row or column cell by cell.
-fn binned_sums(grid: &Grid2, pressure: &[f64], field: &VelocityField, law: &CellLaw) -> [f64; 6] {
+/// The sums of [`grid_friction_binned`] on blocks of `BX × BY` cells laid from the grid's
+/// first cell (the last ones padded with empty cells): `[fx, fy, m, power, load, raw]` as
+/// [`boundary_sums`], each block by the Taylor expansion about its centre with the block's
+/// exact moments of the pressure up to the second. Strips of `BY` rows, in chunks of
+/// [`CHUNK`] columns: the columns' sums over the strip's rows, the blocks' moments from
+/// them, then the blocks in lane groups (each pass a plain loop over arrays: vector code).
+fn block_sums<const BX: usize, const BY: usize>(
+    grid: &Grid2,
+    pressure: &[f64],
+    field: &VelocityField,
+    law: &CellLaw,
+) -> [f64; 6] {
     let [o, dx, dy] = field.sliding;
     let (b, eps2) = (law.boundary_coefficient(), law.regularisation_squared());
     let (nx, ny) = (grid.nx(), grid.ny());
     let (h, k) = (grid.dx(), grid.dy());
+    // Cell offsets from the block's centre, in cells.
+    let di: [f64; BX] = std::array::from_fn(|i| i as f64 - 0.5 * (BX - 1) as f64);
+    let dj: [f64; BY] = std::array::from_fn(|j| j as f64 - 0.5 * (BY - 1) as f64);
+    let (hk, hh, kk) = (h * k, h * h, k * k);
+    // The first block's centre and the blocks' pitch along x.
+    let (x0, pitch) = (grid.x(0) + 0.5 * (BX - 1) as f64 * h, BX as f64 * h);
+    let lane_offsets: [f64; BLOCK_LANES] = std::array::from_fn(|l| l as f64 * pitch);
+    // Per column of a chunk over a strip's rows: Σ p, Σ q, Σ q dj, Σ q dj² (q = p where
+    // p > 0, else 0; dj in cells).
+    let mut col = [[0.0f64; CHUNK]; 4];
+    // Per block of a chunk (lane groups): Σ q, and in cell units Σ q di, Σ q di², Σ q dj,
+    // Σ q di dj, Σ q dj².
+    let mut mom = [[[0.0f64; BLOCK_LANES]; CHUNK_GROUPS]; 6];
     // [Σ g_x q, Σ g_y q, Σ (x g_y − y g_x) q, Σ q |v|²/d, Σ q, Σ p]; the coefficient b at
     // the end.
     let mut t = [0.0; 6];
-    let cell = |t: &mut [f64; 6], x: f64, y: f64, p: f64| {
-        let q = if p > 0.0 { p } else { 0.0 };
-        let (vx, vy) = (o[0] + x * dx[0] + y * dy[0], o[1] + x * dx[1] + y * dy[1]);
-        let s2 = vx * vx + vy * vy;
-        let d = (s2 + eps2).sqrt();
-        let r = if d > 0.0 { q / d } else { 0.0 };
-        let (gx, gy) = (r * vx, r * vy);
-        t[0] += gx;
-        t[1] += gy;
-        t[2] += x * gy - y * gx;
-        t[3] += r * s2;
-        t[4] += q;
-        t[5] += p;
-    };
-    let nb = nx / 2;
-    let (hh, hk) = (0.5 * h, 0.5 * k);
-    let (sh, sk, shk) = (0.25 * h * h, 0.25 * k * k, 0.25 * h * k);
-    let xb = grid.x(0) + hh;
-    for jb in 0..ny / 2 {
-        let j = 2 * jb;
-        let yc = grid.y(j) + hk;
-        let r0 = &pressure[j * nx..(j + 1) * nx];
-        let r1 = &pressure[(j + 1) * nx..(j + 2) * nx];
-        // The row pair's velocity at x = 0.
+    for j0 in (0..ny).step_by(BY) {
+        let rows = BY.min(ny - j0);
+        let yc = grid.y(j0) + 0.5 * (BY - 1) as f64 * k;
+        // The strip's velocity at x = 0.
         let (ox, oy) = (o[0] + yc * dy[0], o[1] + yc * dy[1]);
-        // Lanes of BLOCK_LANES blocks (independent sums, vector code): Σ g_x q, Σ g_y q,
-        // Σ x g_y q − (y − y_c) g_x q, the power density, Σ q, Σ p.
-        let mut acc = [[0.0f64; BLOCK_LANES]; 6];
-        for g0 in (0..nb).step_by(BLOCK_LANES) {
-            // The cells q00, q01 (row j), q10, q11 (row j + 1) of each block.
-            let mut q = [[0.0f64; BLOCK_LANES]; 4];
-            let mut any = false;
-            for l in 0..BLOCK_LANES.min(nb - g0) {
-                let i = 2 * (g0 + l);
-                let ps = [r0[i], r0[i + 1], r1[i], r1[i + 1]];
-                acc[5][l] += (ps[0] + ps[1]) + (ps[2] + ps[3]);
-                for (c, &p) in ps.iter().enumerate() {
-                    q[c][l] = if p > 0.0 { p } else { 0.0 };
-                    any |= p > 0.0;
+        // Lanes: Σ g_x q, Σ g_y q, Σ x g_y q − (y − y_c) g_x q, the power density, Σ q.
+        let mut lanes = [[0.0f64; BLOCK_LANES]; 5];
+        for c0 in (0..nx).step_by(CHUNK) {
+            let width = CHUNK.min(nx - c0);
+            let blocks = width.div_ceil(BX);
+            let groups = blocks.div_ceil(BLOCK_LANES);
+            // Zero past the grid (padding): the columns of whole lane groups.
+            let used = (groups * BLOCK_LANES * BX).min(CHUNK);
+            let [raw, s0, s1, s2] = &mut col;
+            for c in [&mut *raw, &mut *s0, &mut *s1, &mut *s2] {
+                c[width..used].fill(0.0);
+            }
+            let row = |r: usize| {
+                let start = (j0 + r) * nx + c0;
+                &pressure[start..start + width]
+            };
+            if rows == BY {
+                // All the strip's rows at once: one store per column.
+                let strip: [&[f64]; BY] = std::array::from_fn(row);
+                for i in 0..width {
+                    let (mut w, mut a, mut b1, mut b2) = (0.0, 0.0, 0.0, 0.0);
+                    for (cells, &d) in strip.iter().zip(&dj) {
+                        let p = cells[i];
+                        let q = if p > 0.0 { p } else { 0.0 };
+                        w += p;
+                        a += q;
+                        b1 += q * d;
+                        b2 += q * (d * d);
+                    }
+                    raw[i] = w;
+                    s0[i] = a;
+                    s1[i] = b1;
+                    s2[i] = b2;
+                }
+            } else {
+                for c in [&mut *raw, &mut *s0, &mut *s1, &mut *s2] {
+                    c[..width].fill(0.0);
+                }
+                for (r, &d) in dj.iter().enumerate().take(rows) {
+                    for ((((&p, w), a), b1), b2) in row(r)
+                        .iter()
+                        .zip(raw.iter_mut())
+                        .zip(s0.iter_mut())
+                        .zip(s1.iter_mut())
+                        .zip(s2.iter_mut())
+                    {
+                        let q = if p > 0.0 { p } else { 0.0 };
+                        *w += p;
+                        *a += q;
+                        *b1 += q * d;
+                        *b2 += q * (d * d);
+                    }
                 }
             }
-            if !any {
+            t[5] += raw[..width].iter().sum::<f64>();
+            if !s0[..width].iter().any(|&q| q > 0.0) {
                 continue;
             }
-            for l in 0..BLOCK_LANES {
-                let (q00, q01, q10, q11) = (q[0][l], q[1][l], q[2][l], q[3][l]);
-                let pp = (q00 + q01) + (q10 + q11);
-                let xc = xb + (2 * (g0 + l)) as f64 * h;
-                // First moments about the block's centre.
-                let mx = hh * ((q01 + q11) - (q00 + q10));
-                let my = hk * ((q10 + q11) - (q00 + q01));
-                let (vx, vy) = (ox + xc * dx[0], oy + xc * dx[1]);
-                let s2 = vx * vx + vy * vy;
-                let r = 1.0 / (s2 + eps2).sqrt();
-                let r3 = r * r * r;
-                let (ax, ay) = (vx * dx[0] + vy * dx[1], vx * dy[0] + vy * dy[1]);
-                let (gx, gy) = (vx * r, vy * r);
-                // ∂g/∂x and ∂g/∂y.
-                let (vxr3, vyr3) = (vx * r3, vy * r3);
-                let (gxx, gyx) = (dx[0] * r - vxr3 * ax, dx[1] * r - vyr3 * ax);
-                let (gxy, gyy) = (dy[0] * r - vxr3 * ay, dy[1] * r - vyr3 * ay);
-                let sx = pp * gx + mx * gxx + my * gxy;
-                let sy = pp * gy + mx * gyx + my * gyy;
-                acc[0][l] += sx;
-                acc[1][l] += sy;
-                // Σ q (x g_y − y g_x) with g to first order and the exact moments of q:
-                // Σ q x g_y ≈ x_c Σ q g_y + g_y m_x + ∇g_y · Σ q δx δ (δ = x − c), likewise
-                // y; the y_c Σ q g_x part is added per row pair.
-                let sxy = shk * ((q00 + q11) - (q01 + q10));
-                acc[2][l] +=
-                    xc * sy + (mx * gy - my * gx) + pp * (sh * gyx - sk * gxy) + sxy * (gyy - gxx);
-                // |v|²/d: its gradient (v·∂v) (2 − |v|²/d²)/d.
-                acc[3][l] += r * (pp * s2 + (mx * ax + my * ay) * (2.0 - s2 * r * r));
-                acc[4][l] += pp;
+            // The groups' columns all lie below `used` (CHUNK is a multiple of a group).
+            let group = BLOCK_LANES * BX;
+            for g in 0..groups.min(CHUNK_GROUPS) {
+                let cols = g * group..(g + 1) * group;
+                for (l, ((c_0, c_1), c_2)) in s0[cols.clone()]
+                    .chunks_exact(BX)
+                    .zip(s1[cols.clone()].chunks_exact(BX))
+                    .zip(s2[cols].chunks_exact(BX))
+                    .enumerate()
+                {
+                    let mut m = [0.0f64; 6];
+                    for (((&a, &b1), &b2), &d) in c_0.iter().zip(c_1).zip(c_2).zip(&di) {
+                        m[0] += a;
+                        m[1] += a * d;
+                        m[2] += a * (d * d);
+                        m[3] += b1;
+                        m[4] += b1 * d;
+                        m[5] += b2;
+                    }
+                    for (dst, v) in mom.iter_mut().zip(m) {
+                        dst[g][l] = v;
+                    }
+                }
+            }
+            let xb = x0 + c0 as f64 * h;
+            // A lane past the last block carries nothing; its centre is kept on the last
+            // block (where the sliding does not vanish).
+            let last = xb + (blocks - 1) as f64 * pitch;
+            for g in 0..groups.min(CHUNK_GROUPS) {
+                let xg = xb + (g * BLOCK_LANES) as f64 * pitch;
+                let [pp4, mx4, sxx4, my4, sxy4, syy4] = &mom;
+                let (pp4, mx4, sxx4) = (&pp4[g], &mx4[g], &sxx4[g]);
+                let (my4, sxy4, syy4) = (&my4[g], &sxy4[g], &syy4[g]);
+                for l in 0..BLOCK_LANES {
+                    let pp = pp4[l];
+                    let xc = (xg + lane_offsets[l]).min(last);
+                    // First and second moments about the block's centre.
+                    let (mx, my) = (h * mx4[l], k * my4[l]);
+                    let (sxx, sxy, syy) = (hh * sxx4[l], hk * sxy4[l], kk * syy4[l]);
+                    let (vx, vy) = (ox + xc * dx[0], oy + xc * dx[1]);
+                    let s2 = vx * vx + vy * vy;
+                    let r = 1.0 / (s2 + eps2).sqrt();
+                    let r3 = r * r * r;
+                    let (ax, ay) = (vx * dx[0] + vy * dx[1], vx * dy[0] + vy * dy[1]);
+                    let (gx, gy) = (vx * r, vy * r);
+                    // ∂g/∂x and ∂g/∂y.
+                    let (vxr3, vyr3) = (vx * r3, vy * r3);
+                    let (gxx, gyx) = (dx[0] * r - vxr3 * ax, dx[1] * r - vyr3 * ax);
+                    let (gxy, gyy) = (dy[0] * r - vxr3 * ay, dy[1] * r - vyr3 * ay);
+                    let sx = pp * gx + mx * gxx + my * gxy;
+                    let sy = pp * gy + mx * gyx + my * gyy;
+                    lanes[0][l] += sx;
+                    lanes[1][l] += sy;
+                    // Σ q (x g_y − y g_x) with g to first order and the exact moments of q:
+                    // Σ q x g_y ≈ x_c Σ q g_y + g_y m_x + ∇g_y · Σ q δx δ (δ = x − c),
+                    // likewise y; the y_c Σ q g_x part is added per strip.
+                    lanes[2][l] +=
+                        xc * sy + (mx * gy - my * gx) + (sxx * gyx - syy * gxy) + sxy * (gyy - gxx);
+                    // |v|²/d: its gradient (v·∂v) (2 − |v|²/d²)/d.
+                    lanes[3][l] += r * (pp * s2 + (mx * ax + my * ay) * (2.0 - s2 * r * r));
+                    lanes[4][l] += pp;
+                }
             }
         }
-        let [sx, sy, m, w, load, raw] = acc.map(|a| (a[0] + a[1]) + (a[2] + a[3]));
+        let [sx, sy, m, w, load] = lanes.map(|a| (a[0] + a[1]) + (a[2] + a[3]));
         t[0] += sx;
         t[1] += sy;
         t[2] += m - yc * sx;
         t[3] += w;
         t[4] += load;
-        t[5] += raw;
-        if nx % 2 == 1 {
-            let x = grid.x(nx - 1);
-            cell(&mut t, x, grid.y(j), r0[nx - 1]);
-            cell(&mut t, x, grid.y(j + 1), r1[nx - 1]);
-        }
-    }
-    if ny % 2 == 1 {
-        let j = ny - 1;
-        for i in 0..nx {
-            cell(&mut t, grid.x(i), grid.y(j), pressure[j * nx + i]);
-        }
     }
     [-b * t[0], -b * t[1], -b * t[2], b * t[3], t[4], t[5]]
 }

@@ -30,7 +30,8 @@ pub mod law;
 
 pub use ellipse::{EllipseRule, HertzFrictionRules, ellipse_friction, sliding_pole_radius};
 pub use integral::{
-    BINNED_TOLERANCE, ContactFriction, GridFriction, binning_error, contact_friction,
-    grid_friction, grid_friction_binned, power_density, pressure_sliding,
+    BINNED_TOLERANCE, BLOCK_SHAPES, ContactFriction, GridFriction, binning_blocks, binning_error,
+    block_error, contact_friction, grid_friction, grid_friction_binned, power_density,
+    pressure_sliding,
 };
 pub use law::{CellLaw, FilmState, FluidShear, FrictionLaw, LoadSharing, REGULARISATION_SPEED};

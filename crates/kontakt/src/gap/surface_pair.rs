@@ -290,6 +290,12 @@ impl GapSource for SurfacePairGap {
         // As in `sample`: beyond the sag of either surface over the points.
         let reach = 2.0 * (fx.hypot(fy) + fx.max(fy)) + self.contact.separation.abs() + 1e-3;
         let mut row_start = (reach, reach);
+        // Every ray runs along ±n: its local directions once.
+        let n = self.contact.normal.into_inner();
+        let dirs = (
+            self.body1.dir_to_local(&Unit::new_unchecked(n)),
+            self.body2.dir_to_local(&Unit::new_unchecked(-n)),
+        );
         for (l, &yp) in ys.iter().enumerate() {
             let mut t = row_start;
             for (k, &xp) in xs.iter().enumerate() {
@@ -298,7 +304,7 @@ impl GapSource for SurfacePairGap {
                 if warm_ok && warm[idx][0].is_finite() && warm[idx][1].is_finite() {
                     t = (reach + warm[idx][0], reach - warm[idx][1]);
                 }
-                let g = self.cast(c * xp - s * yp, s * xp + c * yp, reach, &mut t)?;
+                let g = self.cast(c * xp - s * yp, s * xp + c * yp, reach, &dirs, &mut t)?;
                 out[idx] = g;
                 if warm_ok {
                     warm[idx] = if g.is_finite() {
@@ -318,21 +324,25 @@ impl GapSource for SurfacePairGap {
 
 impl SurfacePairGap {
     /// One gap value at the source-frame point `(x, y)` \[mm\], rays cast from `reach` on
-    /// either side of the plane with the guesses `t` (updated to the hits).
+    /// either side of the plane with the guesses `t` (updated to the hits); `dirs` the
+    /// local images of `n` in body 1 and of `−n` in body 2.
     #[inline]
-    fn cast(&self, x: f64, y: f64, reach: f64, t: &mut (f64, f64)) -> Result<f64> {
+    fn cast(
+        &self,
+        x: f64,
+        y: f64,
+        reach: f64,
+        dirs: &(Unit<Vector3<f64>>, Unit<Vector3<f64>>),
+        t: &mut (f64, f64),
+    ) -> Result<f64> {
         let n = self.contact.normal.into_inner();
         let q = self.contact.point + self.ex.into_inner() * x + self.ey.into_inner() * y;
-        let r1 = Ray {
-            origin: q - n * reach,
-            dir: Unit::new_unchecked(n),
-        };
-        let r2 = Ray {
-            origin: q + n * reach,
-            dir: Unit::new_unchecked(-n),
-        };
-        let h1 = self.body1.intersect_near(&r1, t.0, 0.0, 2.0 * reach);
-        let h2 = self.body2.intersect_near(&r2, t.1, 0.0, 2.0 * reach);
+        let h1 = self
+            .body1
+            .intersect_near_along(&(q - n * reach), &dirs.0, t.0, 0.0, 2.0 * reach);
+        let h2 = self
+            .body2
+            .intersect_near_along(&(q + n * reach), &dirs.1, t.1, 0.0, 2.0 * reach);
         let g = match (h1, h2) {
             (Some(a), Some(b)) => {
                 *t = (a, b);

@@ -122,9 +122,10 @@ struct Slot {
     rows: Vec<Row>,
     /// The stencil rays' warm-start data (`GapSource::sample_points`).
     warm: [[f64; 2]; NODES_X * NODES_Y],
-    /// Scratch rows: the even part and u times the odd part of the row polynomial.
-    even: Vec<f64>,
-    odd: Vec<f64>,
+    /// Scratch rows (half a row each, outward from the centre): the gap and the pressure of
+    /// the left half.
+    gap_left: Vec<f64>,
+    press_left: Vec<f64>,
     /// Calls since every row was evaluated in full.
     since_full: usize,
     /// The grid factor of the last evaluation.
@@ -207,8 +208,8 @@ impl PimpTracker {
             coef: SMatrix::zeros(),
             rows: vec![Row::default(); ny],
             warm: [[f64::INFINITY; 2]; NODES_X * NODES_Y],
-            even: vec![0.0; nx / 2],
-            odd: vec![0.0; nx / 2],
+            gap_left: vec![0.0; nx / 2],
+            press_left: vec![0.0; nx / 2],
             since_full: usize::MAX,
             lambda: [0.0; 2],
             complete: true,
@@ -636,7 +637,10 @@ impl PimpTracker {
         let cut = kappa * approach;
         let full = slot.since_full >= FULL_EVERY;
         slot.since_full = if full { 0 } else { slot.since_full + 1 };
-        slot.pressure.fill(0.0);
+        // No clearing of the pressure: a full pass writes every cell, and a windowed pass
+        // every cell that the last call loaded (each row's window holds its last loaded
+        // run; a row with no run in the last call, nor in the two rows either side, held
+        // none then and is zero). Cells outside this call's windows so stay zero.
         // This call's windows from the last call's loaded runs.
         let pairs = nx / 2;
         for j in 0..ny {
@@ -804,12 +808,25 @@ fn row_pass(
     }
     let even: [f64; EVEN] = std::array::from_fn(|m| a[2 * m]);
     let odd: [f64; ODD] = std::array::from_fn(|m| a[2 * m + 1]);
-    // Pairs k = 0 .. n outward from the centre: E(u²) and u O(u²) into the scratch rows
-    // (forward loops, so they vectorise), then the two halves.
+    // Pairs k = 0 .. n outward from the centre: E(u²) ± u O(u²) into the scratch rows of
+    // the gap (forward loops, so they vectorise) and the pressure of both cells in the same
+    // loop (the square roots overlap the polynomial), then the row's two halves.
     let n = pairs - lo;
     let positive = &u[nx - pairs..nx - pairs + n];
-    let (es, os) = (&mut slot.even[..n], &mut slot.odd[..n]);
-    for ((e_out, o_out), &uk) in es.iter_mut().zip(os.iter_mut()).zip(positive) {
+    // The right half straight into the row, the left half (outward = backwards) into the
+    // scratch rows first.
+    let (g_left, g_rest) = slot.sampled.effective[j * nx..(j + 1) * nx].split_at_mut(pairs);
+    let (g_middle, g_right) = g_rest.split_at_mut(nx - 2 * pairs);
+    let (p_left, p_rest) = slot.pressure[j * nx..(j + 1) * nx].split_at_mut(pairs);
+    let (p_middle, p_right) = p_rest.split_at_mut(nx - 2 * pairs);
+    let (ls, lp) = (&mut slot.gap_left[..n], &mut slot.press_left[..n]);
+    for ((((g_r, g_l), p_r), p_l), &uk) in g_right[..n]
+        .iter_mut()
+        .zip(ls.iter_mut())
+        .zip(p_right[..n].iter_mut())
+        .zip(lp.iter_mut())
+        .zip(positive)
+    {
         let w = uk * uk;
         let mut e = even[EVEN - 1];
         for &cc in even[..EVEN - 1].iter().rev() {
@@ -819,30 +836,24 @@ fn row_pass(
         for &cc in odd[..ODD - 1].iter().rev() {
             o = o * w + cc;
         }
-        *e_out = e;
-        *o_out = uk * o;
+        let uo = uk * o;
+        let (gr, gl) = (e + uo, e - uo);
+        *g_r = gr;
+        *g_l = gl;
+        *p_r = stiffness * (cut - gr).max(0.0).sqrt();
+        *p_l = stiffness * (cut - gl).max(0.0).sqrt();
     }
-    let row = &mut slot.sampled.effective[j * nx..(j + 1) * nx];
-    let (left, rest) = row.split_at_mut(pairs);
-    let (middle, right) = rest.split_at_mut(nx - 2 * pairs);
-    if let Some(m) = middle.first_mut() {
+    for (l, &g) in g_left[lo..].iter_mut().zip(ls.iter().rev()) {
+        *l = g;
+    }
+    for (l, &pv) in p_left[lo..].iter_mut().zip(lp.iter().rev()) {
+        *l = pv;
+    }
+    if let (Some(m), Some(pm)) = (g_middle.first_mut(), p_middle.first_mut()) {
         *m = a[0];
+        *pm = stiffness * (cut - a[0]).max(0.0).sqrt();
     }
-    for ((r, &e), &o) in right[..n].iter_mut().zip(es.iter()).zip(os.iter()) {
-        *r = e + o;
-    }
-    for ((l, &e), &o) in left[lo..]
-        .iter_mut()
-        .zip(es.iter().rev())
-        .zip(os.iter().rev())
-    {
-        *l = e - o;
-    }
-    let g = &slot.sampled.effective[j * nx + lo..(j + 1) * nx - lo];
-    let p = &mut slot.pressure[j * nx + lo..(j + 1) * nx - lo];
-    for (pv, &gv) in p.iter_mut().zip(g) {
-        *pv = stiffness * (cut - gv).max(0.0).sqrt();
-    }
+    let p = &slot.pressure[j * nx + lo..(j + 1) * nx - lo];
     let (Some(f), Some(e)) = (
         p.iter().position(|&x| x > 0.0),
         p.iter().rposition(|&x| x > 0.0),
@@ -855,8 +866,9 @@ fn row_pass(
     let (first, end) = (lo + f, lo + e + 1);
     let loaded = &p[f..=e];
     let ul = &u[first..end];
-    // Four independent lanes so the sums vectorise.
-    let (mut s4, mut u4, mut n4) = ([0.0f64; 4], [0.0f64; 4], [0.0f64; 4]);
+    // Four independent lanes so the sums and the maximum vectorise (p ≥ 0, no NaN: the
+    // square root of a non-negative number).
+    let (mut s4, mut u4, mut n4, mut m4) = ([0.0f64; 4], [0.0f64; 4], [0.0f64; 4], [0.0f64; 4]);
     let chunks = loaded.chunks_exact(4);
     let rest_p = chunks.remainder();
     for (pc, uc) in chunks.zip(ul.chunks_exact(4)) {
@@ -864,15 +876,17 @@ fn row_pass(
             s4[l] += pc[l];
             u4[l] += pc[l] * uc[l];
             n4[l] += f64::from(u8::from(pc[l] > 0.0));
+            m4[l] = if pc[l] > m4[l] { pc[l] } else { m4[l] };
         }
     }
     for (&pv, &uv) in rest_p.iter().zip(&ul[ul.len() - rest_p.len()..]) {
         s4[0] += pv;
         u4[0] += pv * uv;
         n4[0] += f64::from(u8::from(pv > 0.0));
+        m4[0] = if pv > m4[0] { pv } else { m4[0] };
     }
     let cells = (n4[0] + n4[1]) + (n4[2] + n4[3]);
-    let max = loaded.iter().fold(0.0f64, |m, &x| m.max(x));
+    let max = m4[0].max(m4[1]).max(m4[2].max(m4[3]));
     Row {
         lo,
         first,

@@ -115,6 +115,31 @@ impl PlacedSurface {
             .intersect_near(&self.ray_to_local(ray), t_guess, t_min, t_max)
     }
 
+    /// [`PlacedSurface::intersect_near`] of the ray from the world point `origin` along the
+    /// direction whose local image is `dir_local` (`pose⁻¹` applied to the world direction):
+    /// the same root, bit for bit, for rays that share a direction with one rotation fewer
+    /// each (the gap stencil's rays along the contact normal).
+    pub(crate) fn intersect_near_along(
+        &self,
+        origin: &Point3<f64>,
+        dir_local: &Unit<Vector3<f64>>,
+        t_guess: f64,
+        t_min: f64,
+        t_max: f64,
+    ) -> Option<f64> {
+        let local = Ray {
+            origin: self.pose.inverse_transform_point(origin),
+            dir: *dir_local,
+        };
+        self.surface.intersect_near(&local, t_guess, t_min, t_max)
+    }
+
+    /// The local image of the world direction `dir` (for
+    /// [`PlacedSurface::intersect_near_along`]).
+    pub(crate) fn dir_to_local(&self, dir: &Unit<Vector3<f64>>) -> Unit<Vector3<f64>> {
+        Unit::new_unchecked(self.pose.inverse_transform_vector(dir))
+    }
+
     /// The surface point nearest to the world point `p` and the outward normal there
     /// (world).
     pub fn closest_point(&self, p: &Point3<f64>) -> (Point3<f64>, Unit<Vector3<f64>>) {
