@@ -317,8 +317,8 @@ pub const BINNED_TOLERANCE: f64 = 1e-6;
 /// `Σ q g(x_k) ≈ P g(c) + ∇g(c) · Σ q_k (x_k − c)`, `P = Σ q_k` (one square root and one
 /// division per block; the moment `x × g` with the block's exact second moments of `q`, and
 /// the power density `|v|² / d`, likewise). The remainder is the second-order Taylor term:
-/// along a line, `|∂²g| ≤ 4 L² / |v|²` (`L` the Frobenius norm of the sliding field's
-/// gradient), so each cell's error is at most `2 (ρ L / v_min)²` of its `q`, with `ρ` the
+/// along a line, `|∂²g| ≤ 4 L² / |v|²` (`L` the spectral norm of the sliding field's
+/// gradient: `|∇v d| ≤ L |d|`), so each cell's error is at most `2 (ρ L / v_min)²` of its `q`, with `ρ` the
 /// largest distance from a block's centre to its cells' centres (half the diagonal between
 /// its corner cells' centres) and `v_min` a lower bound of the sliding speed over the blocks.
 /// The blocks are [`BLOCK_SHAPES`]: of those whose bound is at most [`BINNED_TOLERANCE`],
@@ -395,7 +395,7 @@ pub fn binning_error(grid: &Grid2, field: &VelocityField) -> f64 {
 
 /// The Taylor bound `2 (ρ L / v_min)²` of blocks of `shape` (cells along x and y, each ≥ 1)
 /// laid from the first cell of `grid` (the last ones padded): `ρ` the largest distance from
-/// a block's centre to its cells' centres, `L` the Frobenius norm of the sliding gradient,
+/// a block's centre to its cells' centres, `L` the spectral norm of the sliding gradient,
 /// `v_min` the least sliding speed over the padded blocks (`|v|` at their centre less `L`
 /// times their half-diagonal). Infinite when the sliding may vanish there.
 pub fn block_error(grid: &Grid2, field: &VelocityField, shape: [usize; 2]) -> f64 {
@@ -410,7 +410,11 @@ pub fn block_error(grid: &Grid2, field: &VelocityField, shape: [usize; 2]) -> f6
     let xc = grid.x(0) - 0.5 * h + 0.5 * wx;
     let yc = grid.y(0) - 0.5 * k + 0.5 * wy;
     let [vx, vy] = field.sliding_at(xc, yc);
-    let l = (dx[0] * dx[0] + dx[1] * dx[1] + dy[0] * dy[0] + dy[1] * dy[1]).sqrt();
+    // The spectral norm of the gradient [[∂v_x/∂x, ∂v_x/∂y], [∂v_y/∂x, ∂v_y/∂y]]:
+    // σ² = (F² + √(F⁴ − 4 det²))/2 with F the Frobenius norm (for a spin, F/√2).
+    let f2 = dx[0] * dx[0] + dx[1] * dx[1] + dy[0] * dy[0] + dy[1] * dy[1];
+    let det = dx[0] * dy[1] - dx[1] * dy[0];
+    let l = (0.5 * (f2 + (f2 * f2 - 4.0 * det * det).max(0.0).sqrt())).sqrt();
     // |v| over the blocks >= |v(c)| − L × the half-diagonal. (Square roots of sums of
     // squares, not `hypot`: this runs for every shape on every call; a speed whose square
     // overflows gives an infinite `v_min`, blocks whose sums overflow, and so the cell sums.)
