@@ -899,8 +899,8 @@ pub fn run_traction_case_with_map(
             warnings.push(format!(
                 "Kalker's difference parameter K = {k_difference:.4e} (dissimilar materials) is \
                  neglected by {}: quasi-identical bodies assumed, the normal and tangential \
-                 problems uncoupled (no free-rolling creepage); models = [\"kalker_exact\"] \
-                 with [kalker_exact] coupling = true includes it",
+                 problems uncoupled (no free-rolling creepage); model kalker_exact with \
+                 [kalker_exact] coupling = true includes it",
                 neglecting.join(", ")
             ));
         }
