@@ -65,6 +65,12 @@
 //! that did not converge is named in the report's `warnings`. It costs a steady solve per
 //! point (about 1-10 ms at the default 32 × 32 cells, growing steeply with `elements`), where the
 //! other models cost microseconds.
+//!
+//! Every model assumes quasi-identical bodies (Kalker's difference parameter `K = 0`)
+//! except `kalker_exact` with `[kalker_exact] coupling = true`, which couples the normal
+//! problem of the Hertz gap with steady rolling through `K` at every point and reports the
+//! free-rolling creepage. The report gives `K` (`difference_parameter`) and warns, naming
+//! its value and the models, when the materials differ and `K` is neglected.
 
 use crate::common::{MaterialSpec, SCHEMA_VERSION, material, parse_toml};
 use kontakt::hertz::line::LineContact;

@@ -60,7 +60,7 @@ mod gap_tests {
     /// principal relative radii, for a circle and for an ellipse (rounding only).
     #[test]
     fn ellipse_gap_curvatures_invert_hertz() {
-        let (r, e_star, f) = (10.0, 115_384.6, 200.0);
+        let (r, e_star, f): (f64, f64, f64) = (10.0, 115_384.6, 200.0);
         let a = (3.0 * f * r / (4.0 * e_star)).cbrt();
         let [ca, cb] = ellipse_gap_curvatures(a, a, f, e_star).unwrap();
         assert!((ca * 2.0 * r - 1.0).abs() < 1e-12 && (cb * 2.0 * r - 1.0).abs() < 1e-12);
