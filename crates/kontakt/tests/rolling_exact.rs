@@ -625,3 +625,33 @@ fn coupling_refused_without_materials_or_gap() {
     let err = KalkerExact::new(e, &st, &aluminium(), 0.3, bad).unwrap_err();
     assert!(err.to_string().contains("outer_tolerance"), "{err}");
 }
+
+/// The tractions' normal displacement shifts the coupled contact along the rolling
+/// direction (aluminium on steel, μ = 1, full sliding, 64 cells across: measured 0.047 a
+/// beyond the ellipse, 1.5 cells); the coupled grid's margin keeps the leading-edge
+/// column empty (two columns only were not enough), in both directions of sliding.
+#[test]
+fn the_coupled_contact_shifts_within_the_grid() {
+    let (al, st) = (aluminium(), steel());
+    let options = KalkerExactOptions {
+        elements: [64, 64],
+        coupling: true,
+        ..KalkerExactOptions::default()
+    };
+    let e = sphere(&al, &st, 300.0);
+    let m = KalkerExact::new(e, &al, &st, 1.0, options).unwrap();
+    for xi in [0.05, -0.05] {
+        let (p, s) = m
+            .solve_with_field(&Creepage::longitudinal(xi), false)
+            .unwrap();
+        assert!(p.status.converged(), "{:?}", p.status);
+        let g = m.grid();
+        let reach = g
+            .points()
+            .zip(&s.state)
+            .filter(|(_, st)| **st != kontakt::rolling::CellState::Exterior)
+            .fold(0.0f64, |r, ((x, _), _)| r.max(x.abs()));
+        println!("ξ = {xi}: contact to {:.4} a", reach / e.a());
+        assert!(reach > e.a(), "{reach}");
+    }
+}

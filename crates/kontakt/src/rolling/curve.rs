@@ -58,8 +58,11 @@
 //! `E* = G/(1 − ν)` \[MPa\] (Kalker's constants: Love's compliance of both bodies) is
 //! the ellipse (`A`, `B` \[1/mm\] from `a`, `b`, `F_N`, `E*` by Hertz's displacement
 //! of the elliptic pressure, Johnson 1985 eq. 3.63). Its grid has the same cell size,
-//! with two empty columns beyond each edge along `x` and one empty row beyond each edge
-//! along `y` (the normal solution may reach a little past the sampled ellipse).
+//! with `2 + ⌈max(0.1, |K| μ) mx/2⌉` empty columns beyond each edge along `x` (the
+//! tractions' normal displacement shifts the contact along `x`: by 0.03 `a` at `K = 0.1`,
+//! `μ = 0.5`, 0.05 `a` at `μ = 1` in full sliding, and the leading-edge column must stay
+//! empty) and one empty
+//! row beyond each edge along `y`.
 //! Points are warm-started along a curve (pressure, tractions); each carries the outer
 //! loop's status (its passes and last relative change, or the failing inner solve's).
 //! [`KalkerExact::free_rolling`] gives the creepage of free rolling (`F_x = 0`), by the
@@ -297,7 +300,10 @@ impl KalkerExact {
         // two columns beyond each edge along x and one row beyond each edge along y.
         let grid = match coupled_k {
             None => Grid2::centered(a + dx, b, mx + 2, my)?,
-            Some(_) => Grid2::centered(a + 2.0 * dx, b + dy, mx + 4, my + 2)?,
+            Some(k) => {
+                let ex = coupled_margin(mx, k, mu);
+                Grid2::centered(a + ex as f64 * dx, b + dy, mx + 2 * ex, my + 2)?
+            }
         };
         debug_assert!((grid.dx() - dx).abs() <= 1e-12 * dx && (grid.dy() - dy).abs() <= 1e-12 * dy);
         let mut pressure: Vec<f64> = grid
@@ -545,8 +551,8 @@ impl KalkerExact {
     pub fn options(&self) -> &KalkerExactOptions {
         &self.options
     }
-    /// The solver's grid \[mm\] (`mx + 2` by `my` cells, with the coupling `mx + 4` by
-    /// `my + 2`; `x` the rolling direction).
+    /// The solver's grid \[mm\] (`mx + 2` by `my` cells; with the coupling wider along
+    /// `x` and `my + 2` rows, see the module docs; `x` the rolling direction).
     pub fn grid(&self) -> &Grid2 {
         &self.grid
     }
@@ -726,6 +732,16 @@ impl KalkerExact {
             .map(|(i, c)| self.solve(c, i > 0))
             .collect()
     }
+}
+
+/// Empty columns beyond each edge of the ellipse along `x` on the coupled grid of `mx`
+/// cells across the ellipse: two, plus `max(0.1, |K| μ)` of the semi-axis. The
+/// tractions' normal displacement shifts the contact along `x` (measured on a sphere,
+/// `K = 0.1`, up to 32² and 64² cells: 0.03 `a` at `μ = 0.5`, 0.05 `a` at `μ = 1` in full
+/// sliding), and the leading-edge column must stay out of contact.
+fn coupled_margin(mx: usize, k: f64, mu: f64) -> usize {
+    let fraction = (k.abs() * mu).max(0.1);
+    2 + (fraction * 0.5 * mx as f64).ceil() as usize
 }
 
 impl TractionCurve for KalkerExact {
