@@ -482,7 +482,7 @@ fn coupling_with_equal_materials_is_the_uncoupled_model_exactly() {
 /// Aluminium sphere on a steel plane (`K = 0.100`), 16 cells across: the model's
 /// free-rolling creepage and creep curve against `CoupledSteadySolver` on the same grid
 /// with the sphere's gap `(x² + y²)/(2R)` (the model derives its gap from the ellipse:
-/// the same to rounding). Tolerances: the creepage 1e-9 relative (measured 1e-12:
+/// the same to rounding). Tolerances: the creepage 1e-9 relative (measured 2e-11:
 /// −1.4292795e-3 both), the forces 1e-7 of `μ F_N`, the steady solver's tolerance
 /// (measured up to 1e-9: the rounding of the gap moves the iterates).
 #[test]
