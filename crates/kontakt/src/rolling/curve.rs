@@ -218,7 +218,9 @@ pub struct KalkerExact {
     options: KalkerExactOptions,
     grid: Grid2,
     pressure: Vec<f64>,
-    solver: Mutex<SteadySolver>,
+    /// The steady solver on the fixed pressure (`None` with the coupling, whose solver
+    /// has its own).
+    solver: Option<Mutex<SteadySolver>>,
     /// Kalker's difference parameter of the two materials, when known ([`Self::new`]).
     difference: Option<f64>,
     /// The coupled solver and the undeformed gap \[mm\] of the Hertz contact, with the
@@ -322,7 +324,14 @@ impl KalkerExact {
         for p in &mut pressure {
             *p *= scale;
         }
-        let solver = SteadySolver::new(&grid, material, options.threads)?;
+        let solver = match coupled_k {
+            None => Some(Mutex::new(SteadySolver::new(
+                &grid,
+                material,
+                options.threads,
+            )?)),
+            Some(_) => None,
+        };
         let coupled = match coupled_k {
             None => None,
             Some(k) => {
@@ -357,7 +366,7 @@ impl KalkerExact {
             options,
             grid,
             pressure,
-            solver: Mutex::new(solver),
+            solver,
             difference: k,
             coupled,
         })
@@ -491,7 +500,7 @@ impl KalkerExact {
             options,
             grid: rolled,
             pressure: resampled,
-            solver: Mutex::new(solver),
+            solver: Some(Mutex::new(solver)),
             difference: None,
             coupled: None,
         })
@@ -590,6 +599,8 @@ impl KalkerExact {
         }
         let mut solver = self
             .solver
+            .as_ref()
+            .expect("invariant: planned without the coupling")
             .lock()
             .unwrap_or_else(std::sync::PoisonError::into_inner);
         if !warm_start {
