@@ -46,6 +46,8 @@
 //! [kalker_exact]             # optional: Kalker's exact theory on the half-space grid
 //! elements = [32, 32]        # cells across the ellipse (along rolling, across), 8..=1024
 //! max_iterations = 100       # Newton iterations per point before it counts as not converged
+//! coupling = false           # true: dissimilar bodies, normal and tangential problems coupled
+//!                            # through Kalker's K (and the free-rolling creepage)
 //!
 //! # [asperity]               # for models = [..., "asperity"]: circular or line contacts
 //! # asperity_radii_mm = [0.02, 0.02]     # of identical bodies (kontakt::traction)
@@ -63,12 +65,18 @@
 //! that did not converge is named in the report's `warnings`. It costs a steady solve per
 //! point (about 1-10 ms at the default 32 × 32 cells, growing steeply with `elements`), where the
 //! other models cost microseconds.
+//!
+//! Every model assumes quasi-identical bodies (Kalker's difference parameter `K = 0`)
+//! except `kalker_exact` with `[kalker_exact] coupling = true`, which couples the normal
+//! problem of the Hertz gap with steady rolling through `K` at every point and reports the
+//! free-rolling creepage. The report gives `K` (`difference_parameter`) and warns, naming
+//! its value and the models, when the materials differ and `K` is neglected.
 
 use crate::common::{MaterialSpec, SCHEMA_VERSION, material, parse_toml};
 use kontakt::hertz::line::LineContact;
 use kontakt::hertz::{HertzPointContact, PointGeometry};
 use kontakt::material::effective_modulus;
-use kontakt::rolling::{KalkerExact, KalkerExactOptions};
+use kontakt::rolling::{KalkerExact, KalkerExactOptions, difference_parameter};
 use kontakt::solve::SolveStatus;
 use kontakt::tangential::{
     Carter, ContactEllipse, CreepCoefficients, Fastsim, FastsimOptions, KalkerLinear,
@@ -395,6 +403,11 @@ pub struct KalkerExactSpec {
     /// Most Newton iterations of the steady solver per point, >= 1 (default 100); a
     /// point that needs more is reported as not converged.
     pub max_iterations: usize,
+    /// Couple the normal and the tangential problem through Kalker's difference
+    /// parameter `K` (dissimilar bodies: the pressure changes with the tractions, and
+    /// the report gives the free-rolling creepage); default `false` (quasi-identical
+    /// bodies, `K` neglected; the report warns when `K ≠ 0`).
+    pub coupling: bool,
 }
 
 impl Default for KalkerExactSpec {
@@ -402,6 +415,7 @@ impl Default for KalkerExactSpec {
         KalkerExactSpec {
             elements: KalkerExactOptions::default().elements,
             max_iterations: KalkerExactOptions::default().steady.max_newton_iterations,
+            coupling: false,
         }
     }
 }
@@ -452,6 +466,14 @@ pub struct ExactCurveReport {
     pub converged: bool,
     /// Indices of the points that did not converge (their values are not results).
     pub not_converged: Vec<usize>,
+    /// Whether the normal and tangential problems were coupled through Kalker's
+    /// difference parameter (`[kalker_exact] coupling = true` and `K ≠ 0`); only when so.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub coupling: bool,
+    /// With the coupling: the free-rolling creepage \[-\] (the longitudinal creepage at
+    /// which `Fx = 0`, with the case's lateral and spin creepage).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub free_rolling_creepage: Option<f64>,
     /// Stick cells over loaded cells at each point \[-\].
     pub stick_fraction: Vec<f64>,
     /// FFT applications of the tangential operator over the whole curve.
@@ -501,6 +523,9 @@ pub struct TractionReport {
     pub shear_modulus_mpa: f64,
     /// Kalker's combined Poisson's ratio \[-\].
     pub poisson_ratio: f64,
+    /// Kalker's difference parameter `K` \[-\] of the two materials (0 for equal ones);
+    /// neglected unless `kalker_exact` runs with `coupling = true`.
+    pub difference_parameter: f64,
     /// `[a, b]` \[mm\]: semi-axis along the rolling direction and across it (line: half-width
     /// and half-length).
     pub semi_axes_mm: [f64; 2],
@@ -685,6 +710,7 @@ pub fn run_traction_case_with_map(
     let creepage = case.creepage.values()?;
     let kalker_material = KalkerMaterial::new(&m1, &m2).map_err(map_common)?;
     let e_star = effective_modulus(&m1, &m2);
+    let k_difference = difference_parameter(&m1, &m2).map_err(map_common)?;
 
     // (label, ellipse, Carter, line load, [a, b] or [half-width, half-length], p0)
     let (label, ellipse, carter, line_load, semi_axes_mm, max_pressure_mpa) = match &case.geometry {
@@ -867,6 +893,24 @@ pub fn run_traction_case_with_map(
         warnings.extend(notes);
         curves[slot] = report;
     }
+    if k_difference != 0.0 {
+        let coupled = exact_slot.is_some() && case.kalker_exact.coupling;
+        let neglecting: Vec<&str> = case
+            .models
+            .iter()
+            .filter(|m| !(coupled && **m == TractionModel::KalkerExact))
+            .map(|m| m.as_str())
+            .collect();
+        if !neglecting.is_empty() {
+            warnings.push(format!(
+                "Kalker's difference parameter K = {k_difference:.4e} (dissimilar materials) is \
+                 neglected by {}: quasi-identical bodies assumed, the normal and tangential \
+                 problems uncoupled (no free-rolling creepage); model kalker_exact with \
+                 [kalker_exact] coupling = true includes it",
+                neglecting.join(", ")
+            ));
+        }
+    }
     // Linear-theory data for every point contact, also when the model was not asked for.
     let linear = match (&kalker, ellipse) {
         (Some(k), _) => Some(*k),
@@ -885,6 +929,7 @@ pub fn run_traction_case_with_map(
         e_star_mpa: e_star,
         shear_modulus_mpa: kalker_material.shear_modulus,
         poisson_ratio: kalker_material.poisson_ratio,
+        difference_parameter: k_difference,
         semi_axes_mm,
         max_pressure_mpa,
         creep_coefficients: linear.map(|k| k.coefficients()),
@@ -932,6 +977,7 @@ fn exact_curve(
     }
     let mut options = KalkerExactOptions {
         elements: case.kalker_exact.elements,
+        coupling: case.kalker_exact.coupling,
         ..KalkerExactOptions::default()
     };
     options.steady.max_newton_iterations = case.kalker_exact.max_iterations;
@@ -951,6 +997,12 @@ fn exact_curve(
         })
         .collect();
     let points = model.curve(&creepages)?;
+    let coupled = model.is_coupled();
+    let free = if coupled {
+        Some(model.free_rolling(case.creepage.lateral, case.creepage.spin_per_mm)?)
+    } else {
+        None
+    };
     let mut warnings = Vec::new();
     let [mx, my] = case.kalker_exact.elements;
     if mx.min(my) < KALKER_EXACT_WARN_ELEMENTS {
@@ -971,13 +1023,28 @@ fn exact_curve(
         let first = &points[not_converged[0]];
         warnings.push(format!(
             "kalker_exact: {} of {} points did not converge (first at creepage {:e}: {} after \
-             {} Newton iterations, residual {:.1e}); their values are not results",
+             {} {}, residual {:.1e}); their values are not results",
             not_converged.len(),
             points.len(),
             first.creepage.longitudinal,
             first.status.termination.as_str(),
             first.status.iterations,
+            if coupled {
+                "outer passes"
+            } else {
+                "Newton iterations"
+            },
             first.status.residual
+        ));
+    }
+    if let Some(f) = free.filter(|f| !f.status.converged()) {
+        warnings.push(format!(
+            "kalker_exact: the free-rolling creepage did not converge ({} after {} outer \
+             passes, residual {:.1e}); its value {:e} is not a result",
+            f.status.termination.as_str(),
+            f.status.iterations,
+            f.status.residual,
+            f.creepage.longitudinal
         ));
     }
     let grid = model.grid();
@@ -1029,6 +1096,8 @@ fn exact_curve(
         cell_mm: [grid.dx(), grid.dy()],
         converged: not_converged.is_empty(),
         not_converged,
+        coupling: coupled,
+        free_rolling_creepage: free.map(|f| f.creepage.longitudinal),
         stick_fraction: points.iter().map(|p| p.stick_fraction).collect(),
         fft_iterations: points.iter().map(|p| p.fft_iterations).sum(),
         status: points.iter().map(|p| p.status).collect(),

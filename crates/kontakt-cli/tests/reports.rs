@@ -15,7 +15,7 @@ use serde_json::Value;
 use std::path::{Path, PathBuf};
 
 /// Keys that a report may gain over its baseline (anywhere in the tree).
-const NEW_KEYS: &[&str] = &["status", "warnings"];
+const NEW_KEYS: &[&str] = &["status", "warnings", "difference_parameter"];
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..")

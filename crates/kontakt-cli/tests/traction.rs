@@ -743,3 +743,129 @@ fn kalker_exact_stick_slip_map() {
     ]);
     assert!(l.contains("--map-creepage"), "{l}");
 }
+
+/// A `kalker_exact` case of an aluminium sphere (R = 10 mm) on a steel plane, 300 N,
+/// mu = 0.3, 16 cells across (Kalker's K = 0.100).
+fn dissimilar_case(extra: &str, creepage: &str) -> PathBuf {
+    let text = format!(
+        "method = \"traction\"\nmodels = [\"kalker_linear\", \"kalker_exact\"]\n\
+         [geometry]\nkind = \"hertz\"\nradii1_mm = [10.0, 10.0]\nradii2_mm = [inf, inf]\n\
+         [body1]\ne_mpa = 60260.0\nnu = 0.31\n[body2]\ne_mpa = 209920.0\nnu = 0.28\n\
+         [load]\nforce_n = 300.0\n[friction]\nmu = 0.3\n[creepage]\n{creepage}\n\
+         [kalker_exact]\nelements = [16, 16]\n{extra}\n"
+    );
+    let name = format!("dissimilar-{:016x}.toml", fnv(&text));
+    let p = tempdir().join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+/// `[kalker_exact] coupling`: off, dissimilar materials give a warning naming K (JSON and
+/// table) and no free-rolling creepage; on, the JSON record says so and gives the
+/// free-rolling creepage (negative: body 1 the more compliant, K > 0), the table prints
+/// it, the curve converges and reaches mu F_N (1e-3); equal materials with the coupling
+/// on: no warning and no coupling record. A bad value: exit 2, one line naming the key.
+#[test]
+fn kalker_exact_coupling_for_dissimilar_materials() {
+    let pts = "max = 0.05\npoints = 3";
+    let off = run_json(&["traction", dissimilar_case("", pts).to_str().unwrap()]);
+    let k = off["difference_parameter"].as_f64().unwrap();
+    assert!((k - 0.1002).abs() < 1e-4, "K = {k}");
+    let w = off["warnings"].as_array().unwrap();
+    assert!(
+        w.iter().any(|w| {
+            let w = w.as_str().unwrap();
+            w.contains("K = 1.0019e-1") && w.contains("neglected by kalker_linear, kalker_exact")
+        }),
+        "{w:?}"
+    );
+    let x = &off["curves"][1]["exact"];
+    assert!(x.get("coupling").is_none() && x.get("free_rolling_creepage").is_none());
+    let text = String::from_utf8(
+        kontakt()
+            .args(["traction", dissimilar_case("", pts).to_str().unwrap()])
+            .output()
+            .unwrap()
+            .stdout,
+    )
+    .unwrap();
+    assert!(
+        text.contains("Kalker's difference parameter K = 1.0019e-1")
+            && text.contains("warning: Kalker's difference parameter K = 1.0019e-1"),
+        "{text}"
+    );
+
+    let case = dissimilar_case("coupling = true", pts);
+    let on = run_json(&["traction", case.to_str().unwrap()]);
+    let x = &on["curves"][1]["exact"];
+    assert_eq!(x["coupling"], true);
+    assert_eq!(x["converged"], true);
+    let free = x["free_rolling_creepage"].as_f64().unwrap();
+    // Measured: -1.4293e-3 (as CoupledSteadySolver on this contact).
+    assert!(free < -1e-3 && free > -2e-3, "{free}");
+    let f: Vec<f64> = on["curves"][1]["normalized_force"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_f64().unwrap())
+        .collect();
+    // At zero creepage the pressure's slip already pulls (F_T > 0 for xi_free < 0).
+    assert!(f[0] > 0.0 && (f[2] - 1.0).abs() < 1e-3, "{f:?}");
+    let w = on["warnings"].as_array().unwrap();
+    assert!(
+        w.iter()
+            .any(|w| w.as_str().unwrap().contains("neglected by kalker_linear:")),
+        "{w:?}"
+    );
+    let text = String::from_utf8(
+        kontakt()
+            .args(["traction", case.to_str().unwrap()])
+            .output()
+            .unwrap()
+            .stdout,
+    )
+    .unwrap();
+    assert!(
+        text.contains(
+            "Kalker exact coupled through K = 1.0019e-1: free-rolling creepage -1.4293e-3"
+        ),
+        "{text}"
+    );
+
+    // Equal materials, coupling on: the uncoupled model, no K in the table.
+    let same = exact_case(
+        "elements = [16, 16]\ncoupling = true",
+        "max = 0.002\npoints = 2",
+    );
+    let v = run_json(&["traction", same.to_str().unwrap()]);
+    assert_eq!(v["difference_parameter"], 0.0);
+    assert!(v.get("warnings").is_none(), "{v}");
+    assert!(v["curves"][2]["exact"].get("coupling").is_none());
+
+    let l = bad(&[
+        "traction",
+        dissimilar_case("coupling = 1", pts).to_str().unwrap(),
+    ]);
+    assert!(l.contains("kalker_exact.coupling"), "{l}");
+
+    // The hybrid bearing of examples/ceramic_ball.toml (silicon nitride ball, E = 310
+    // GPa, nu = 0.26, on steel): K = -2.56e-2, neglected by the default models.
+    let text = std::fs::read_to_string(dissimilar_case("", pts))
+        .unwrap()
+        .replace("models = [\"kalker_linear\", \"kalker_exact\"]\n", "")
+        .replace("e_mpa = 60260.0\nnu = 0.31", "e_mpa = 310000.0\nnu = 0.26")
+        .replace("e_mpa = 209920.0\nnu = 0.28", "e_mpa = 210000.0\nnu = 0.3");
+    let hybrid = tempdir().join("hybrid.toml");
+    std::fs::write(&hybrid, text).unwrap();
+    let v = run_json(&["traction", hybrid.to_str().unwrap()]);
+    let k = v["difference_parameter"].as_f64().unwrap();
+    assert!((k + 0.0256).abs() < 1e-3, "K = {k}");
+    let w = v["warnings"].as_array().unwrap();
+    assert!(
+        w.iter().any(|w| w
+            .as_str()
+            .unwrap()
+            .contains("neglected by carter, kalker_linear, fastsim")),
+        "{w:?}"
+    );
+}

@@ -421,3 +421,237 @@ fn fastsim_error_table() {
         }
     }
 }
+
+// ---- Dissimilar bodies: `KalkerExactOptions::coupling` ----------------------------------
+
+/// Aluminium (G = 23 000 MPa, ν = 0.31), as in CONTACT's `bentall`.
+fn aluminium() -> kontakt::material::ElasticMaterial {
+    kontakt::material::ElasticMaterial::new(2.0 * 23_000.0 * 1.31, 0.31).unwrap()
+}
+
+/// Steel (G = 82 000 MPa, ν = 0.28).
+fn steel() -> kontakt::material::ElasticMaterial {
+    kontakt::material::ElasticMaterial::new(2.0 * 82_000.0 * 1.28, 0.28).unwrap()
+}
+
+/// Sphere of radius `R` on a plane: the Hertz circle under `force` for the two bodies.
+const SPHERE_R: f64 = 10.0;
+
+fn sphere(
+    body1: &kontakt::material::ElasticMaterial,
+    body2: &kontakt::material::ElasticMaterial,
+    force: f64,
+) -> ContactEllipse {
+    let e_star = kontakt::material::effective_modulus(body1, body2);
+    let a = (3.0 * force * SPHERE_R / (4.0 * e_star)).cbrt();
+    ContactEllipse::new(a, a, force).unwrap()
+}
+
+fn coupled_model(
+    body1: &kontakt::material::ElasticMaterial,
+    body2: &kontakt::material::ElasticMaterial,
+    mu: f64,
+    coupling: bool,
+) -> KalkerExact {
+    let options = KalkerExactOptions {
+        elements: [16, 16],
+        coupling,
+        ..KalkerExactOptions::default()
+    };
+    KalkerExact::new(sphere(body1, body2, 300.0), body1, body2, mu, options).unwrap()
+}
+
+/// Equal materials (`K = 0`): the coupling changes nothing, bit for bit, and the
+/// free-rolling creepage is zero exactly.
+#[test]
+fn coupling_with_equal_materials_is_the_uncoupled_model_exactly() {
+    let st = steel();
+    let xis = [0.0, 1e-3, 3e-3, 2e-2].map(Creepage::longitudinal);
+    let off = coupled_model(&st, &st, 0.3, false);
+    let on = coupled_model(&st, &st, 0.3, true);
+    assert_eq!(on.difference_parameter(), Some(0.0));
+    assert!(!on.is_coupled());
+    assert_eq!(on.grid(), off.grid());
+    assert_eq!(on.curve(&xis).unwrap(), off.curve(&xis).unwrap());
+    let free = on.free_rolling(0.0, 0.0).unwrap();
+    assert!(free.status.converged());
+    assert_eq!(free.creepage.longitudinal, 0.0);
+    assert_eq!(free.force, [0.0, 0.0]);
+}
+
+/// Aluminium sphere on a steel plane (`K = 0.100`), 16 cells across: the model's
+/// free-rolling creepage and creep curve against `CoupledSteadySolver` on the same grid
+/// with the sphere's gap `(x² + y²)/(2R)` (the model derives its gap from the ellipse:
+/// the same to rounding). Tolerances: the creepage 1e-9 relative (measured 2e-11:
+/// −1.4292795e-3 both), the forces 1e-7 of `μ F_N`, the steady solver's tolerance
+/// (measured up to 1e-9: the rounding of the gap moves the iterates).
+#[test]
+fn coupled_model_is_the_coupled_solver_on_the_hertz_gap() {
+    use kontakt::halfspace::Control;
+    use kontakt::rolling::{CoupledSteadyOptions, CoupledSteadySolver, SteadyLoad};
+    let (al, st) = (aluminium(), steel());
+    let mu = 0.3;
+    let model = coupled_model(&al, &st, mu, true);
+    assert!(model.is_coupled());
+    let k = model.difference_parameter().unwrap();
+    assert!((k - 0.1002).abs() < 1e-4, "K = {k}");
+    let free = model.free_rolling(0.0, 0.0).unwrap();
+    assert!(free.status.converged(), "{:?}", free.status);
+    let grid = *model.grid();
+    let gap: Vec<f64> = grid
+        .points()
+        .map(|(x, y)| (x * x + y * y) / (2.0 * SPHERE_R))
+        .collect();
+    let options = CoupledSteadyOptions {
+        steady: KalkerExactOptions::default().steady,
+        ..CoupledSteadyOptions::default()
+    };
+    let mut solver = CoupledSteadySolver::new(&grid, &al, &st, options).unwrap();
+    let load = SteadyLoad::LongitudinalForce {
+        force: 0.0,
+        lateral: 0.0,
+        spin: 0.0,
+    };
+    let r = solver.solve(&gap, Control::Force(300.0), mu, load).unwrap();
+    assert!(r.status.converged());
+    let (xi, xr) = (free.creepage.longitudinal, r.creepage.longitudinal);
+    println!("free rolling: model {xi:e}, solver {xr:e}");
+    // K > 0 (body 1 the more compliant): body 1 creeps backwards, ξ < 0.
+    assert!(xi < 0.0);
+    assert!((xi - xr).abs() <= 1e-9 * xr.abs(), "{xi:e} vs {xr:e}");
+    // The curve with warm starts against the solver's sequence.
+    let xis = [-3e-3, 0.0, 2e-3, 5e-3];
+    let points = model.curve(&xis.map(Creepage::longitudinal)).unwrap();
+    solver.reset();
+    let bound = mu * 300.0;
+    for (p, x) in points.iter().zip(xis) {
+        let r = solver
+            .solve(
+                &gap,
+                Control::Force(300.0),
+                mu,
+                SteadyLoad::Creepage(Creepage::longitudinal(x)),
+            )
+            .unwrap();
+        assert!(p.status.converged() && r.status.converged());
+        let d = (p.force[0] - r.force[0]).abs() / bound;
+        println!(
+            "ξ = {x:e}: F_x/(μF_N) {:.6}, difference {d:.1e}",
+            p.normalized_force
+        );
+        assert!(d <= 1e-7, "ξ = {x}: {} vs {}", p.force[0], r.force[0]);
+        // The point's pressure is its normal solution's (1e-6 relative; measured 1e-9).
+        let p_max = r.pressure.iter().fold(0.0f64, |a, b| a.max(*b));
+        println!("  p_max {:.6} MPa", p.max_pressure);
+        assert!(
+            (p.max_pressure / p_max - 1.0).abs() < 1e-6,
+            "{} vs {p_max}",
+            p.max_pressure
+        );
+    }
+    // ... which changes with the tractions along the curve.
+    assert!(
+        points
+            .windows(2)
+            .all(|w| w[0].max_pressure != w[1].max_pressure)
+    );
+    // F_x falls with ξ and vanishes at ξ_free < 0: at ξ = 0 it is negative, at
+    // ξ = −3e-3 < ξ_free positive.
+    assert!(points[1].force[0] < 0.0, "{:?}", points[1].force);
+    assert!(
+        xis[0] < xi && points[0].force[0] > 0.0,
+        "{:?}",
+        points[0].force
+    );
+}
+
+/// Swapping the bodies flips `K` and the free-rolling creepage (same size, 1e-9); the
+/// coupled curve saturates at `μ F_N` in full sliding (1e-4).
+#[test]
+fn free_rolling_creepage_follows_k_and_the_curve_saturates() {
+    let (al, st) = (aluminium(), steel());
+    let mu = 0.3;
+    let m12 = coupled_model(&al, &st, mu, true);
+    let m21 = coupled_model(&st, &al, mu, true);
+    assert!(m21.difference_parameter().unwrap() < 0.0);
+    let x12 = m12.free_rolling(0.0, 0.0).unwrap();
+    let x21 = m21.free_rolling(0.0, 0.0).unwrap();
+    assert!(x12.status.converged() && x21.status.converged());
+    let (a, b) = (x12.creepage.longitudinal, x21.creepage.longitudinal);
+    println!("free rolling: K > 0 {a:e}, K < 0 {b:e}");
+    assert!(a < 0.0 && b > 0.0, "{a:e} {b:e}");
+    // Measured: −1.4292795e-3 and +1.4292795e-3, equal in size to the last bit.
+    assert!((a + b).abs() <= 1e-9 * a.abs(), "{a:e} {b:e}");
+    // Full sliding (ξ = 0.1, far beyond 2 μ p0/E* + (2K/G) p0 ≈ 0.02).
+    let p = m12.solve(&Creepage::longitudinal(0.1), false).unwrap();
+    assert!(p.status.converged());
+    let total = p.force[0].hypot(p.force[1]) / (mu * 300.0);
+    println!(
+        "full sliding: F_T/(μF_N) = {:.8}, |F|/(μF_N) = {total:.8}, stick {}",
+        p.normalized_force, p.stick_fraction
+    );
+    assert_eq!(p.stick_fraction, 0.0);
+    // Measured: 0.99998295 (the steady solver's tolerance, as without the coupling:
+    // `saturation_is_one`). Bound 1e-4.
+    assert!((total - 1.0).abs() < 1e-4, "{total}");
+    assert!(p.normalized_force > 0.999 && p.normalized_force <= 1.0 + 1e-9);
+    // Through the TractionCurve interface: the same, from zero traction.
+    let n = m12.normalized_force(0.1).unwrap();
+    assert!((n - p.normalized_force).abs() < 1e-9);
+}
+
+/// The coupling is refused where the model has no `K` or no gap; a bad outer tolerance
+/// is named.
+#[test]
+fn coupling_refused_without_materials_or_gap() {
+    let options = KalkerExactOptions {
+        elements: [16, 16],
+        coupling: true,
+        ..KalkerExactOptions::default()
+    };
+    let e = ContactEllipse::new(0.3, 0.3, 300.0).unwrap();
+    let err = KalkerExact::with_material(e, RAIL, 0.3, options).unwrap_err();
+    assert!(matches!(err, Error::InvalidInput { .. }));
+    assert!(err.to_string().contains("coupling"), "{err}");
+    let grid = kontakt::geometry::Grid2::centered(0.4, 0.4, 16, 16).unwrap();
+    let p = vec![100.0; grid.len()];
+    let err = KalkerExact::from_pressure(&grid, &p, 0.0, RAIL, 0.3, options).unwrap_err();
+    assert!(err.to_string().contains("coupling"), "{err}");
+    let bad = KalkerExactOptions {
+        outer_tolerance: 0.0,
+        ..options
+    };
+    let st = steel();
+    let err = KalkerExact::new(e, &st, &aluminium(), 0.3, bad).unwrap_err();
+    assert!(err.to_string().contains("outer_tolerance"), "{err}");
+}
+
+/// The tractions' normal displacement shifts the coupled contact along the rolling
+/// direction (aluminium on steel, μ = 1, full sliding, 64 cells across: measured 0.047 a
+/// beyond the ellipse, 1.5 cells); the coupled grid's margin keeps the leading-edge
+/// column empty (two columns only were not enough), in both directions of sliding.
+#[test]
+fn the_coupled_contact_shifts_within_the_grid() {
+    let (al, st) = (aluminium(), steel());
+    let options = KalkerExactOptions {
+        elements: [64, 64],
+        coupling: true,
+        ..KalkerExactOptions::default()
+    };
+    let e = sphere(&al, &st, 300.0);
+    let m = KalkerExact::new(e, &al, &st, 1.0, options).unwrap();
+    for xi in [0.05, -0.05] {
+        let (p, s) = m
+            .solve_with_field(&Creepage::longitudinal(xi), false)
+            .unwrap();
+        assert!(p.status.converged(), "{:?}", p.status);
+        let g = m.grid();
+        let reach = g
+            .points()
+            .zip(&s.state)
+            .filter(|(_, st)| **st != kontakt::rolling::CellState::Exterior)
+            .fold(0.0f64, |r, ((x, _), _)| r.max(x.abs()));
+        println!("ξ = {xi}: contact to {:.4} a", reach / e.a());
+        assert!(reach > e.a(), "{reach}");
+    }
+}

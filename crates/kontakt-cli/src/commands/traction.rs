@@ -66,6 +66,13 @@ pub fn print_report(out: &mut impl Write, r: &TractionReport, json: bool) -> Res
         "  E* = {:.1} MPa, Kalker G = {:.1} MPa, nu = {:.4}",
         r.e_star_mpa, r.shear_modulus_mpa, r.poisson_ratio
     )?;
+    if r.difference_parameter != 0.0 {
+        writeln!(
+            out,
+            "  Kalker's difference parameter K = {:.4e} (dissimilar materials)",
+            r.difference_parameter
+        )?;
+    }
     if let Some(c) = &r.creep_coefficients {
         writeln!(
             out,
@@ -100,6 +107,16 @@ pub fn print_report(out: &mut impl Write, r: &TractionReport, json: bool) -> Res
                 "  Kalker exact grid {} x {} cells across the contact; {state}",
                 x.elements[0], x.elements[1]
             )?;
+            if x.coupling {
+                let free = x
+                    .free_rolling_creepage
+                    .map_or_else(|| "-".to_string(), |f| format!("{f:.4e}"));
+                writeln!(
+                    out,
+                    "  Kalker exact coupled through K = {:.4e}: free-rolling creepage {free}",
+                    r.difference_parameter
+                )?;
+            }
         }
     }
     write!(out, "  {:>12}", "creepage")?;

@@ -47,21 +47,55 @@
 //! starts as a strip at the trailing edge); the default `[32, 32]` is a compromise of
 //! accuracy and speed.
 //!
+//! # Dissimilar bodies (the coupling)
+//! With [`KalkerExactOptions::coupling`] and bodies of different materials (Kalker's
+//! difference parameter `K ≠ 0`, known to [`KalkerExact::new`] from both materials), each
+//! point is solved by [`super::CoupledSteadySolver`]: the normal problem (half-space
+//! solver, force control `F_N`) and the steady tangential problem coupled through `K`
+//! by its outer loop, so the pressure changes with the tractions. The normal problem's
+//! undeformed gap is the quadratic gap of the ellipse's Hertz contact,
+//! `h = A x² + B y²` \[mm\], whose frictionless solution under `F_N` with
+//! `E* = G/(1 − ν)` \[MPa\] (Kalker's constants: Love's compliance of both bodies) is
+//! the ellipse (`A`, `B` \[1/mm\] from `a`, `b`, `F_N`, `E*` by Hertz's displacement
+//! of the elliptic pressure, Johnson 1985 eq. 3.63). Its grid has the same cell size,
+//! with `2 + ⌈max(0.1, |K| μ) mx/2⌉` empty columns beyond each edge along `x` (the
+//! tractions' normal displacement shifts the contact along `x`: by 0.03 `a` at `K = 0.1`,
+//! `μ = 0.5`, 0.05 `a` at `μ = 1` in full sliding, and the leading-edge column must stay
+//! empty) and one empty
+//! row beyond each edge along `y`.
+//! Points are warm-started along a curve (pressure, tractions); each carries the outer
+//! loop's status (its passes and last relative change, or the failing inner solve's).
+//! [`KalkerExact::free_rolling`] gives the creepage of free rolling (`F_x = 0`), by the
+//! coupled solver's force control; zero for `K = 0`. With `K = 0` (equal materials) or
+//! the option off, the model is the uncoupled one, bit for bit. The models on a pressure
+//! field ([`KalkerExact::from_pressure`], [`KalkerExact::from_solution`]) and from the
+//! combined constants alone ([`KalkerExact::with_material`]) refuse the coupling: the
+//! first have no gap, the second no `K`.
+//!
 //! # Assumptions
-//! Those of [`super::SteadySolver`]: quasi-identical bodies (Kalker's `K = 0`), the Hertz
-//! pressure (or the given field) unchanged by the tractions, constant Coulomb friction
-//! `μ`, steady rolling along `x` (an axis of the ellipse, or the given direction), a
-//! plane contact (a field's curved zone is taken in its tangent plane).
+//! Those of [`super::SteadySolver`]: quasi-identical bodies (Kalker's `K = 0`) unless the
+//! coupling is on, the Hertz pressure (or the given field) unchanged by the tractions
+//! (with the coupling: the normal solution of the Hertz gap, coupled), constant Coulomb
+//! friction `μ`, steady rolling along `x` (an axis of the ellipse, or the given
+//! direction), a plane contact (a field's curved zone is taken in its tangent plane).
 //!
 //! # References
-//! Kalker, *Three-dimensional elastic bodies in rolling contact* (1990), ch. 5;
-//! Vollebregt, CONTACT user guide (reference outputs of its examples, used as test data
-//! in `tests/rolling_exact.rs`).
+//! Kalker, *Three-dimensional elastic bodies in rolling contact* (1990), ch. 5 (and
+//! §1.6 for `K`); Vollebregt, CONTACT user guide (reference outputs of its examples,
+//! used as test data in `tests/rolling_exact.rs`, and its example `bentall`);
+//! Bentall & Johnson (1967), the free-rolling creepage of dissimilar rollers; Johnson,
+//! *Contact Mechanics* (1985), eq. 3.63.
 
+use super::coupled_steady::{
+    CoupledSteadyOptions, CoupledSteadySolution, CoupledSteadySolver, SteadyLoad,
+};
+use super::operator::difference_parameter;
 use super::steady::{SteadyOptions, SteadySolution, SteadySolver};
 use crate::error::{Error, Result};
 use crate::field::NormalSolution;
 use crate::geometry::Grid2;
+use crate::halfspace::{Control, SolverOptions};
+use crate::hertz::ellipse_gap_curvatures;
 use crate::material::ElasticMaterial;
 use crate::solve::SolveStatus;
 use crate::tangential::{
@@ -85,6 +119,15 @@ pub struct KalkerExactOptions {
     /// Threads of the FFT operator, as for [`crate::halfspace::HalfSpacePlan::new`]
     /// (grids below 96 × 96 run serially anyway). Default `None`.
     pub threads: Option<usize>,
+    /// Couple the normal and the tangential problem through Kalker's difference
+    /// parameter `K` (dissimilar bodies, [`super::CoupledSteadySolver`]; see the module
+    /// docs). Default `false`: quasi-identical bodies (`K` neglected). Only for a model
+    /// planned on a Hertz ellipse from both materials ([`KalkerExact::new`]); with
+    /// `K = 0` the coupled model is the uncoupled one exactly.
+    pub coupling: bool,
+    /// With the coupling: the outer loop's tolerance on the change of pressure and
+    /// tractions over one pass, relative to their norm. In (0, 1); default 1e-6.
+    pub outer_tolerance: f64,
 }
 
 impl Default for KalkerExactOptions {
@@ -97,6 +140,8 @@ impl Default for KalkerExactOptions {
                 ..Default::default()
             },
             threads: None,
+            coupling: false,
+            outer_tolerance: 1e-6,
         }
     }
 }
@@ -112,8 +157,16 @@ impl KalkerExactOptions {
     ///
     /// # Errors
     /// [`Error::InvalidInput`] naming `elements[0]` or `elements[1]` outside
-    /// 8..=1024 cells.
+    /// 8..=1024 cells, or `outer_tolerance` outside (0, 1).
     pub fn validate(&self) -> Result<()> {
+        let t = self.outer_tolerance;
+        if !(t.is_finite() && t > 0.0 && t < 1.0) {
+            return Err(Error::invalid(
+                "outer_tolerance",
+                t,
+                "0 < outer_tolerance < 1",
+            ));
+        }
         for (k, n) in self.elements.into_iter().enumerate() {
             if !(Self::MIN_ELEMENTS..=Self::MAX_ELEMENTS).contains(&n) {
                 return Err(Error::invalid(
@@ -140,10 +193,15 @@ pub struct ExactPoint {
     pub normalized_force: f64,
     /// Stick cells over loaded cells \[-\] (1 in full adhesion, 0 in full sliding).
     pub stick_fraction: f64,
+    /// Largest cell pressure \[MPa\]: the sampled pressure's without the coupling; with
+    /// it, that of the point's normal solution (which changes with the tractions).
+    pub max_pressure: f64,
     /// FFT applications of the tangential operator for this point.
     pub fft_iterations: usize,
     /// The steady solver's status: converged, the rolling steps and the last relative
-    /// traction change. A point that did not converge must not be used as a result.
+    /// traction change; with the coupling, the outer loop's (its passes and last
+    /// relative change of pressure and tractions, or the failing inner solve's). A point
+    /// that did not converge must not be used as a result.
     pub status: SolveStatus,
 }
 
@@ -160,18 +218,34 @@ pub struct KalkerExact {
     options: KalkerExactOptions,
     grid: Grid2,
     pressure: Vec<f64>,
-    solver: Mutex<SteadySolver>,
+    /// The steady solver on the fixed pressure (`None` with the coupling, whose solver
+    /// has its own).
+    solver: Option<Mutex<SteadySolver>>,
+    /// Kalker's difference parameter of the two materials, when known ([`Self::new`]).
+    difference: Option<f64>,
+    /// The coupled solver and the undeformed gap \[mm\] of the Hertz contact, with the
+    /// coupling on and `K ≠ 0`.
+    coupled: Option<Mutex<Coupled>>,
+}
+
+/// The coupled problem of [`KalkerExact`]: its solver and the undeformed gap.
+#[derive(Debug)]
+struct Coupled {
+    solver: CoupledSteadySolver,
+    gap: Vec<f64>,
 }
 
 impl KalkerExact {
     /// Plan the model for the `ellipse` (semi-axes \[mm\], normal force \[N\]), two
-    /// materials (Kalker's combined `G`, `ν`), friction coefficient `mu` \[-\] and
-    /// `options`.
+    /// materials (Kalker's combined `G`, `ν`, and the difference parameter `K`), friction
+    /// coefficient `mu` \[-\] and `options`. With `options.coupling` and `K ≠ 0` the
+    /// points are solved by the coupled solver on the Hertz contact's undeformed gap
+    /// (module docs).
     ///
     /// # Errors
     /// [`Error::InvalidInput`] naming `friction_coefficient` (not finite and > 0),
-    /// `materials` (two rigid bodies), `elements[0]`/`elements[1]` (see
-    /// [`KalkerExactOptions::validate`]) or `threads`.
+    /// `materials` (two rigid bodies), `elements[0]`/`elements[1]`, `outer_tolerance`
+    /// (see [`KalkerExactOptions::validate`]) or `threads`.
     pub fn new(
         ellipse: ContactEllipse,
         body1: &ElasticMaterial,
@@ -180,17 +254,40 @@ impl KalkerExact {
         options: KalkerExactOptions,
     ) -> Result<Self> {
         let material = KalkerMaterial::new(body1, body2)?;
-        Self::with_material(ellipse, material, mu, options)
+        let k = difference_parameter(body1, body2)?;
+        Self::plan(ellipse, material, Some(k), mu, options)
     }
 
-    /// As [`new`](Self::new), from Kalker's combined constants directly.
+    /// As [`new`](Self::new), from Kalker's combined constants directly (quasi-identical
+    /// bodies: `K` is not known from `G`, `ν`).
     ///
     /// # Errors
     /// As [`new`](Self::new); the constants must be a finite `G > 0` \[MPa\] and
-    /// `0 <= ν <= 0.5` (checked by the solver's operator).
+    /// `0 <= ν <= 0.5` (checked by the solver's operator); `coupling` when
+    /// `options.coupling` is set (the coupling needs both materials: use
+    /// [`new`](Self::new)).
     pub fn with_material(
         ellipse: ContactEllipse,
         material: KalkerMaterial,
+        mu: f64,
+        options: KalkerExactOptions,
+    ) -> Result<Self> {
+        if options.coupling {
+            return Err(Error::invalid(
+                "coupling",
+                true,
+                "false for Kalker's combined constants alone (K needs both materials: \
+                 KalkerExact::new)",
+            ));
+        }
+        Self::plan(ellipse, material, None, mu, options)
+    }
+
+    /// The planning on an ellipse, with the difference parameter `k` when known.
+    fn plan(
+        ellipse: ContactEllipse,
+        material: KalkerMaterial,
+        k: Option<f64>,
         mu: f64,
         options: KalkerExactOptions,
     ) -> Result<Self> {
@@ -199,8 +296,17 @@ impl KalkerExact {
         let [mx, my] = options.elements;
         let (a, b) = (ellipse.a(), ellipse.b());
         let (dx, dy) = (2.0 * a / mx as f64, 2.0 * b / my as f64);
+        let coupled_k = k.filter(|k| options.coupling && *k != 0.0);
         // One empty column beyond each edge along x: the leading-edge column is unloaded.
-        let grid = Grid2::centered(a + dx, b, mx + 2, my)?;
+        // With the coupling, whose normal solution may reach a little past the ellipse,
+        // two columns beyond each edge along x and one row beyond each edge along y.
+        let grid = match coupled_k {
+            None => Grid2::centered(a + dx, b, mx + 2, my)?,
+            Some(k) => {
+                let ex = coupled_margin(mx, k, mu);
+                Grid2::centered(a + ex as f64 * dx, b + dy, mx + 2 * ex, my + 2)?
+            }
+        };
         debug_assert!((grid.dx() - dx).abs() <= 1e-12 * dx && (grid.dy() - dy).abs() <= 1e-12 * dy);
         let mut pressure: Vec<f64> = grid
             .points()
@@ -218,7 +324,40 @@ impl KalkerExact {
         for p in &mut pressure {
             *p *= scale;
         }
-        let solver = SteadySolver::new(&grid, material, options.threads)?;
+        let solver = match coupled_k {
+            None => Some(Mutex::new(SteadySolver::new(
+                &grid,
+                material,
+                options.threads,
+            )?)),
+            Some(_) => None,
+        };
+        let coupled = match coupled_k {
+            None => None,
+            Some(k) => {
+                // The quadratic gap whose frictionless contact is the ellipse, for the
+                // bodies' E* = G/(1 − ν) (Kalker's constants give Love's compliance).
+                let e_star = material.shear_modulus / (1.0 - material.poisson_ratio);
+                let [ca, cb] = ellipse_gap_curvatures(a, b, ellipse.normal_force(), e_star)?;
+                let gap = grid
+                    .points()
+                    .map(|(x, y)| ca * x * x + cb * y * y)
+                    .collect();
+                let defaults = CoupledSteadyOptions::default();
+                let coupled_options = CoupledSteadyOptions {
+                    tolerance: options.outer_tolerance,
+                    steady: options.steady,
+                    normal: SolverOptions {
+                        threads: options.threads.or(defaults.normal.threads),
+                        ..defaults.normal
+                    },
+                    ..defaults
+                };
+                let solver =
+                    CoupledSteadySolver::from_constants(&grid, material, k, coupled_options)?;
+                Some(Mutex::new(Coupled { solver, gap }))
+            }
+        };
         Ok(KalkerExact {
             ellipse: Some(ellipse),
             normal_force: ellipse.normal_force(),
@@ -227,7 +366,9 @@ impl KalkerExact {
             options,
             grid,
             pressure,
-            solver: Mutex::new(solver),
+            solver,
+            difference: k,
+            coupled,
         })
     }
 
@@ -241,7 +382,10 @@ impl KalkerExact {
     /// # Errors
     /// [`Error::InvalidInput`] naming `pressure` (wrong length, a value not finite or
     /// negative, no loaded cell), `rolling_angle` (not finite), `friction_coefficient`,
-    /// `elements[0]`/`elements[1]` or `threads`, as [`with_material`](Self::with_material).
+    /// `elements[0]`/`elements[1]` or `threads`, as [`with_material`](Self::with_material);
+    /// `coupling` when `options.coupling` is set (a given pressure field stays as it is:
+    /// for dissimilar bodies solve the coupled problem on the gap with
+    /// [`super::CoupledSteadySolver`]).
     pub fn from_pressure(
         grid: &Grid2,
         pressure: &[f64],
@@ -250,6 +394,14 @@ impl KalkerExact {
         mu: f64,
         options: KalkerExactOptions,
     ) -> Result<Self> {
+        if options.coupling {
+            return Err(Error::invalid(
+                "coupling",
+                true,
+                "false for a given pressure field (quasi-identical bodies; the coupled \
+                 problem needs the undeformed gap: CoupledSteadySolver)",
+            ));
+        }
         let mu = check_friction(mu)?;
         options.validate()?;
         if pressure.len() != grid.len() {
@@ -348,7 +500,9 @@ impl KalkerExact {
             options,
             grid: rolled,
             pressure: resampled,
-            solver: Mutex::new(solver),
+            solver: Some(Mutex::new(solver)),
+            difference: None,
+            coupled: None,
         })
     }
 
@@ -406,11 +560,14 @@ impl KalkerExact {
     pub fn options(&self) -> &KalkerExactOptions {
         &self.options
     }
-    /// The solver's grid \[mm\] (`mx + 2` by `my` cells; `x` the rolling direction).
+    /// The solver's grid \[mm\] (`mx + 2` by `my` cells; with the coupling wider along
+    /// `x` and `my + 2` rows, see the module docs; `x` the rolling direction).
     pub fn grid(&self) -> &Grid2 {
         &self.grid
     }
-    /// The cell pressures \[MPa\], row-major with `x` fastest, summing to `F_N/ΔA`.
+    /// The cell pressures \[MPa\], row-major with `x` fastest, summing to `F_N/ΔA` (with
+    /// the coupling, the frictionless Hertz pressure sampled on the coupled grid; each
+    /// point's own pressure comes from the normal solve).
     pub fn pressure(&self) -> &[f64] {
         &self.pressure
     }
@@ -436,8 +593,14 @@ impl KalkerExact {
         warm_start: bool,
     ) -> Result<(ExactPoint, SteadySolution)> {
         creepage.validate()?;
+        if let Some(coupled) = &self.coupled {
+            let s = self.solve_coupled(coupled, SteadyLoad::Creepage(*creepage), warm_start)?;
+            return Ok(self.coupled_point(s));
+        }
         let mut solver = self
             .solver
+            .as_ref()
+            .expect("invariant: planned without the coupling")
             .lock()
             .unwrap_or_else(std::sync::PoisonError::into_inner);
         if !warm_start {
@@ -457,10 +620,112 @@ impl KalkerExact {
             spin_moment: s.spin_moment,
             normalized_force: if t == 0.0 { 0.0 } else { t },
             stick_fraction: s.stick_cells as f64 / loaded.max(1) as f64,
+            max_pressure: self.pressure.iter().fold(0.0, |m, p| p.max(m)),
             fft_iterations: s.fft_iterations,
             status: s.status,
         };
         Ok((point, s))
+    }
+
+    /// One coupled solve under force control `F_N`, warm-started from the last (if
+    /// `warm_start`); an unconverged solve is not kept as the next warm start.
+    fn solve_coupled(
+        &self,
+        coupled: &Mutex<Coupled>,
+        load: SteadyLoad,
+        warm_start: bool,
+    ) -> Result<CoupledSteadySolution> {
+        let mut guard = coupled
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        let Coupled { solver, gap } = &mut *guard;
+        if !warm_start {
+            solver.reset();
+        }
+        let s = solver.solve(gap, Control::Force(self.normal_force), self.mu, load)?;
+        if !s.status.converged() {
+            solver.reset();
+        }
+        Ok(s)
+    }
+
+    /// The point and the field of a coupled solution.
+    fn coupled_point(&self, s: CoupledSteadySolution) -> (ExactPoint, SteadySolution) {
+        let bound = self.mu * self.normal_force;
+        let loaded = s.stick_cells + s.slip_cells;
+        let t = -s.force[0] / bound;
+        let point = ExactPoint {
+            creepage: s.creepage,
+            force: s.force,
+            spin_moment: s.spin_moment,
+            normalized_force: if t == 0.0 { 0.0 } else { t },
+            stick_fraction: s.stick_cells as f64 / loaded.max(1) as f64,
+            max_pressure: s.pressure.iter().fold(0.0, |m, p| p.max(m)),
+            fft_iterations: s.fft_iterations,
+            status: s.status,
+        };
+        let field = SteadySolution {
+            traction_x: s.traction_x,
+            traction_y: s.traction_y,
+            slip_x: s.slip_x,
+            slip_y: s.slip_y,
+            state: s.state,
+            force: s.force,
+            spin_moment: s.spin_moment,
+            normal_force: s.normal_force,
+            stick_cells: s.stick_cells,
+            slip_cells: s.slip_cells,
+            fft_iterations: s.fft_iterations,
+            linear_iterations: 0,
+            status: s.status,
+        };
+        (point, field)
+    }
+
+    /// Kalker's difference parameter `K` \[-\] of the two materials, when the model was
+    /// planned from them ([`new`](Self::new)); `None` from the combined constants or a
+    /// pressure field.
+    pub fn difference_parameter(&self) -> Option<f64> {
+        self.difference
+    }
+
+    /// Whether the points are solved with the coupling (the option set and `K ≠ 0`).
+    pub fn is_coupled(&self) -> bool {
+        self.coupled.is_some()
+    }
+
+    /// The free-rolling point: the longitudinal creepage `ξ` \[-\] at which `F_x = 0`
+    /// for the lateral creepage `lateral` \[-\] and the spin `spin` \[1/mm\], solved from
+    /// zero traction. With the coupling (`K ≠ 0`) the pressure's tangential
+    /// displacement makes the bodies creep in free rolling (CONTACT's "F = 1" with
+    /// `F_x = 0`; Bentall & Johnson 1967): `ξ` is sought by the coupled solver's force
+    /// control, its sign that of `−K` (docs/rolling.md §11). Without
+    /// (`K = 0` or the option off) `F_x` is odd in `ξ` for any `η`, `φ` (the contact is
+    /// symmetric about the rolling axis), so `ξ = 0` exactly: the point is the solve at
+    /// `ξ = 0`.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] naming `creepage.lateral` or `creepage.spin` if not
+    /// finite; the solver's errors.
+    pub fn free_rolling(&self, lateral: f64, spin: f64) -> Result<ExactPoint> {
+        let c = Creepage {
+            longitudinal: 0.0,
+            lateral,
+            spin,
+        };
+        c.validate()?;
+        match &self.coupled {
+            None => self.solve(&c, false),
+            Some(coupled) => {
+                let load = SteadyLoad::LongitudinalForce {
+                    force: 0.0,
+                    lateral,
+                    spin,
+                };
+                let s = self.solve_coupled(coupled, load, false)?;
+                Ok(self.coupled_point(s).0)
+            }
+        }
     }
 
     /// A creep curve: every point of `creepages` in order, the first from zero traction,
@@ -478,6 +743,16 @@ impl KalkerExact {
             .map(|(i, c)| self.solve(c, i > 0))
             .collect()
     }
+}
+
+/// Empty columns beyond each edge of the ellipse along `x` on the coupled grid of `mx`
+/// cells across the ellipse: two, plus `max(0.1, |K| μ)` of the semi-axis. The
+/// tractions' normal displacement shifts the contact along `x` (measured on a sphere,
+/// `K = 0.1`, up to 32² and 64² cells: 0.03 `a` at `μ = 0.5`, 0.05 `a` at `μ = 1` in full
+/// sliding), and the leading-edge column must stay out of contact.
+fn coupled_margin(mx: usize, k: f64, mu: f64) -> usize {
+    let fraction = (k.abs() * mu).max(0.1);
+    2 + (fraction * 0.5 * mx as f64).ceil() as usize
 }
 
 impl TractionCurve for KalkerExact {

@@ -29,11 +29,13 @@
 //! - [`KalkerExact`]: the traction model `kalker_exact` — a steady solver planned on a
 //!   Hertz ellipse or on any pressure field (the half-space solver's, PimP's: resampled
 //!   onto a grid along the rolling direction), evaluated along a creep curve with warm
-//!   starts, each point with its status (`kontakt traction`, docs/tangential.md §11).
+//!   starts, each point with its status (`kontakt traction`, docs/tangential.md §11);
+//!   on a Hertz ellipse, dissimilar bodies as an option
+//!   ([`KalkerExactOptions::coupling`]: [`CoupledSteadySolver`] on the Hertz gap, and
+//!   the free-rolling creepage [`KalkerExact::free_rolling`]).
 //!
-//! Not yet here: dissimilar bodies in [`KalkerExact`] (the traction model takes
-//! quasi-identical bodies). Method and validation:
-//! docs/rolling.md (§11 for steady rolling of dissimilar bodies).
+//! Method and validation: docs/rolling.md (§10 for the traction model, §11 for steady
+//! rolling of dissimilar bodies).
 //!
 //! Units: mm, N, MPa throughout.
 
