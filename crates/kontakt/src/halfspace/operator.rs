@@ -141,9 +141,9 @@ pub struct HalfSpacePlan {
     /// solvers on this plan.
     preconditioner: std::sync::OnceLock<Arc<HalfSpacePlan>>,
     /// Whether the kernel is Love's influence coefficients on a free boundary (planned by
-    /// [`HalfSpacePlan::new`]), whose table [`HalfSpacePlan::influence_quadrant`] gives.
+    /// [`HalfSpacePlan::new`]), whose table [`HalfSpacePlan::influence_rows`] gives.
     love: bool,
-    /// Love's coefficients on one quadrant of offsets, made on first use.
+    /// Love's coefficients, rows mirrored, made on first use.
     quadrant: std::sync::OnceLock<Vec<f64>>,
 }
 
@@ -394,21 +394,26 @@ impl HalfSpacePlan {
         }
     }
 
-    /// The influence coefficients \[mm/MPa\] of a free-boundary plan of Love's kernel
-    /// on one quadrant of offsets, `[j * (nx + 1) + i]` at `(i dx, j dy)` (the table the
-    /// kernel spectrum was made from; even in both offsets), made on first use and
-    /// shared; `None` for other plans. For displacement updates from a few cells.
-    pub(super) fn influence_quadrant(&self) -> Option<&[f64]> {
+    /// The influence coefficients \[mm/MPa\] of a free-boundary plan of Love's kernel,
+    /// the table the kernel spectrum was made from, with each row mirrored: row `j`
+    /// (`2 nx − 1` values) holds the offsets `(i dx, j dy)` for `i = −(nx − 1)..nx`, so
+    /// that one cell's displacement along a grid row is one contiguous slice. Made on
+    /// first use and shared; `None` for other plans. For displacement updates from a few
+    /// cells.
+    pub(super) fn influence_rows(&self) -> Option<&[f64]> {
         self.love.then(|| {
             self.quadrant
                 .get_or_init(|| {
-                    quadrant_table(
-                        self.nx,
-                        self.ny,
-                        self.grid.dx(),
-                        self.grid.dy(),
-                        self.e_star,
-                    )
+                    let (nx, ny) = (self.nx, self.ny);
+                    let q = quadrant_table(nx, ny, self.grid.dx(), self.grid.dy(), self.e_star);
+                    let w = 2 * nx - 1;
+                    let mut rows = vec![0.0; w * ny];
+                    for (row, qj) in rows.chunks_exact_mut(w).zip(q.chunks_exact(nx + 1)) {
+                        for (k, v) in row.iter_mut().enumerate() {
+                            *v = qj[k.abs_diff(nx - 1)];
+                        }
+                    }
+                    rows
                 })
                 .as_slice()
         })
