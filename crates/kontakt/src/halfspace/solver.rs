@@ -655,31 +655,49 @@ impl HalfSpaceSolver {
                 since_refresh = 0;
             }
             // Gap of the current pressure and the approach that fits it.
+            // (Iterator passes without bounds checks; each sum runs in cell order, so the
+            // results are those of indexed loops bit for bit.)
             let mut n_c = 0usize;
             let mut sum_g = 0.0;
             let mut sum_u2 = 0.0;
-            for i in 0..p.len() {
-                g[i] = u[i] + gap[i];
-                if p[i] > 0.0 {
-                    n_c += 1;
-                    sum_g += g[i];
-                    sum_u2 += u[i] * u[i];
-                }
-            }
-            approach = match control {
-                Control::Force(_) if n_c > 0 => sum_g / n_c as f64,
-                Control::Force(_) => 0.0,
-                // (a line load was refused by `solve`)
-                Control::Approach(d) | Control::LineLoad(d) => d,
-            };
             let mut big_g = 0.0;
             let mut overlap2 = 0.0;
-            for i in 0..p.len() {
-                g[i] -= approach;
-                if p[i] > 0.0 {
-                    big_g += g[i] * g[i];
-                } else if g[i] < 0.0 {
-                    overlap2 += g[i] * g[i];
+            let cells = g.iter_mut().zip(u.iter()).zip(gap).zip(p.iter());
+            match control {
+                Control::Force(_) => {
+                    for (((gi, &ui), &hi), &pi) in cells {
+                        *gi = ui + hi;
+                        if pi > 0.0 {
+                            n_c += 1;
+                            sum_g += *gi;
+                            sum_u2 += ui * ui;
+                        }
+                    }
+                    approach = if n_c > 0 { sum_g / n_c as f64 } else { 0.0 };
+                    for (gi, &pi) in g.iter_mut().zip(p.iter()) {
+                        *gi -= approach;
+                        if pi > 0.0 {
+                            big_g += *gi * *gi;
+                        } else if *gi < 0.0 {
+                            overlap2 += *gi * *gi;
+                        }
+                    }
+                }
+                // (a line load was refused by `solve`)
+                Control::Approach(d) | Control::LineLoad(d) => {
+                    // The approach is known: one pass.
+                    approach = d;
+                    for (((gi, &ui), &hi), &pi) in cells {
+                        let v = (ui + hi) - d;
+                        *gi = v;
+                        if pi > 0.0 {
+                            n_c += 1;
+                            sum_u2 += ui * ui;
+                            big_g += v * v;
+                        } else if v < 0.0 {
+                            overlap2 += v * v;
+                        }
+                    }
                 }
             }
             if n_c == 0 && overlap2 > 0.0 && iterations < self.options.max_iterations {
@@ -746,8 +764,8 @@ impl HalfSpaceSolver {
                     Control::Force(_) => 0.0,
                     _ => sum_over_loaded(p, g) / cells,
                 };
-                for i in 0..p.len() {
-                    pc.w[i] = if p[i] > 0.0 { g[i] - g_mean } else { 0.0 };
+                for ((w, &pi), &gi) in pc.w.iter_mut().zip(p.iter()).zip(g.iter()) {
+                    *w = if pi > 0.0 { gi - g_mean } else { 0.0 };
                 }
                 pc.plan
                     .apply_with_scratch(&pc.w, &mut pc.z, &mut pc.scratch)?;
@@ -763,10 +781,10 @@ impl HalfSpaceSolver {
                 };
                 let shift = coarse - z_mean;
                 let mut gz = 0.0;
-                for i in 0..p.len() {
-                    if p[i] > 0.0 {
-                        pc.z[i] += shift;
-                        gz += g[i] * pc.z[i];
+                for ((z, &pi), &gi) in pc.z.iter_mut().zip(p.iter()).zip(g.iter()) {
+                    if pi > 0.0 {
+                        *z += shift;
+                        gz += gi * *z;
                     }
                 }
                 let beta = if conjugate && g_old > 0.0 {
@@ -775,12 +793,8 @@ impl HalfSpaceSolver {
                     0.0
                 };
                 g_old = gz;
-                for i in 0..p.len() {
-                    t[i] = if p[i] > 0.0 {
-                        pc.z[i] + beta * t[i]
-                    } else {
-                        0.0
-                    };
+                for ((ti, &pi), &z) in t.iter_mut().zip(p.iter()).zip(pc.z.iter()) {
+                    *ti = if pi > 0.0 { z + beta * *ti } else { 0.0 };
                 }
                 admit = pc.diagonal;
             } else {
@@ -800,12 +814,12 @@ impl HalfSpaceSolver {
             // One pass for the step length: τ = Σ g t / Σ (r - r̄) t over the loaded set,
             // with r̄ the mean of r there under load control.
             let (mut sum_r, mut sum_t, mut num, mut rt) = (0.0, 0.0, 0.0, 0.0);
-            for i in 0..p.len() {
-                if p[i] > 0.0 {
-                    sum_r += r[i];
-                    sum_t += t[i];
-                    num += g[i] * t[i];
-                    rt += r[i] * t[i];
+            for (((&pi, &ri), &ti), &gi) in p.iter().zip(r.iter()).zip(t.iter()).zip(g.iter()) {
+                if pi > 0.0 {
+                    sum_r += ri;
+                    sum_t += ti;
+                    num += gi * ti;
+                    rt += ri * ti;
                 }
             }
             let r_mean = match control {
@@ -821,12 +835,18 @@ impl HalfSpaceSolver {
             let mut total = 0.0;
             changes.clear();
             let mut overflow = quadrant.is_none();
-            for i in 0..p.len() {
-                if p[i] > 0.0 {
-                    let stepped = p[i] - tau * t[i];
-                    p[i] = stepped;
+            let step = p
+                .iter_mut()
+                .zip(u.iter_mut())
+                .zip(t.iter())
+                .zip(g.iter())
+                .zip(r.iter());
+            for (i, ((((pi, ui), &ti), &gi), &ri)) in step.enumerate() {
+                if *pi > 0.0 {
+                    let stepped = *pi - tau * ti;
+                    *pi = stepped;
                     if stepped <= 0.0 {
-                        p[i] = 0.0;
+                        *pi = 0.0;
                         changed_set = true;
                         // `u -= τ r` below moved u by the unclipped step.
                         if changes.len() < SPARSE_CELLS {
@@ -835,22 +855,22 @@ impl HalfSpaceSolver {
                             overflow = true;
                         }
                     }
-                } else if g[i] < 0.0 {
-                    p[i] = -tau * admit * g[i];
-                    if p[i] > 0.0 {
+                } else if gi < 0.0 {
+                    *pi = -tau * admit * gi;
+                    if *pi > 0.0 {
                         reset = true;
                         changed_set = true;
                         if changes.len() < SPARSE_CELLS {
-                            changes.push((i, p[i]));
+                            changes.push((i, *pi));
                         } else {
                             overflow = true;
                         }
                     } else {
-                        p[i] = 0.0;
+                        *pi = 0.0;
                     }
                 }
-                u[i] -= tau * r[i];
-                total += p[i];
+                *ui -= tau * ri;
+                total += *pi;
             }
             conjugate = !reset;
             if changed_set {
