@@ -129,9 +129,10 @@ fn from_full_contact_to_a_touch_and_back() {
 /// The steps of `benches/element.rs` (`evaluate_halfspace_64*`): warm after a pose step of
 /// 1.4 µm across the contact, and after a 1 % load step (the approach alternating between
 /// two values whose Hertz forces differ by 1 %). With the FFT preconditioner (Vollebregt
-/// 2014, the default) a pose step takes 13-16 iterations and a load step 9-14; the
+/// 2014, the default) a pose step took 13-16 iterations and a load step 9-14 at 1e-8; the
 /// unpreconditioned solver took 26-44 and 44-46 on these steps (2026-11-24), so the bounds
-/// fail it.
+/// fail it. With the secant start and the element's warm tolerance of 1e-6 (2026-11-27):
+/// [6, 5, 2, 3, 2, 2] and [9, 7, 0, 0, 0, 0].
 #[test]
 fn preconditioned_warm_steps_take_a_few_iterations() {
     let (spec, pose) = roller_rib();
