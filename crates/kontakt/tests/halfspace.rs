@@ -751,6 +751,71 @@ fn warm_start_far_from_the_last_zone_converges() {
     }
 }
 
+/// The contact element's warm path, `Start::Secant` with incremental displacement
+/// updates, against a cold solve of every step (tolerance 1e-10, 48 cells across the
+/// contact, approach control): the sphere moving steadily by 1 % of `a` per solve, then
+/// the approach alternating by 1 %, then rising by 1 % per solve. Pressure to 1e-6 of
+/// p_max, force to 1e-8 relative, as the plain warm start; the displacement of the
+/// converged field is the operator's (it is recomputed whole). Iterations of the plain
+/// warm start on the same steps are printed beside.
+#[test]
+fn secant_start_and_incremental_updates_give_the_cold_answer() {
+    let h = hertz(sphere(), LOAD);
+    let a = h.semi_axes[0];
+    let grid = grid_across(a, 48);
+    let d = h.approach;
+    let mut steps: Vec<(Vec<f64>, Control)> = Vec::new();
+    for k in 0..8 {
+        let gap = sphere_gap(&grid, [0.01 * a * k as f64, 0.0]);
+        steps.push((gap, Control::Approach(d)));
+    }
+    let shifted = sphere_gap(&grid, [0.07 * a, 0.0]);
+    for k in 0..8 {
+        let f = if k % 2 == 0 { 1.0 } else { 1.01 };
+        steps.push((shifted.clone(), Control::Approach(f * d)));
+    }
+    for k in 1..7 {
+        steps.push((shifted.clone(), Control::Approach(1.01f64.powi(k) * d)));
+    }
+    let mut secant = HalfSpaceSolver::new(grid, e_star(), options(1e-10)).unwrap();
+    secant.set_incremental_updates(true);
+    let mut warm = HalfSpaceSolver::new(grid, e_star(), options(1e-10)).unwrap();
+    let mut cold = HalfSpaceSolver::new(grid, e_star(), options(1e-10)).unwrap();
+    let (mut its_secant, mut its_warm) = (Vec::new(), Vec::new());
+    for (k, (gap, control)) in steps.iter().enumerate() {
+        let (start, plain) = if k == 0 {
+            (Start::Cold, Start::Cold)
+        } else {
+            (Start::Secant, Start::Warm)
+        };
+        let s = secant.solve(gap, *control, start).unwrap();
+        check_complementarity(&secant, &s, *control);
+        let w = warm.solve(gap, *control, plain).unwrap();
+        let c = cold.solve(gap, *control, Start::Cold).unwrap();
+        let (dp, _) = compare(
+            (secant.pressure(), s.approach),
+            (cold.pressure(), c.approach),
+        );
+        assert!(dp < 1e-6, "step {k}: pressure differs by {dp:e} of p_max");
+        let df = rel(s.force, c.force);
+        assert!(df.abs() < 1e-8, "step {k}: force differs by {df:e}");
+        let mut u = vec![0.0; grid.len()];
+        secant.plan().apply(secant.pressure(), &mut u).unwrap();
+        let umax = u.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let du = u
+            .iter()
+            .zip(secant.displacement())
+            .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
+        assert!(
+            du <= 1e-13 * umax,
+            "step {k}: displacement off by {du:e} mm"
+        );
+        its_secant.push(s.status.iterations);
+        its_warm.push(w.status.iterations);
+    }
+    println!("iterations: secant + incremental {its_secant:?}, plain warm {its_warm:?}");
+}
+
 // ---------------------------------------------------------------------------------------
 // 9. Displacement and load control agree.
 

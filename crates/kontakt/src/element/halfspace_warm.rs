@@ -179,12 +179,14 @@ impl WarmHalfSpace {
     }
 
     /// Solve `source` at the rigid approach `approach` \[mm\], warm when the kept grid
-    /// still holds the zone, else on a newly laid grid.
+    /// still holds the zone (stopping at the looser of `warm_tolerance` and the
+    /// back-end's tolerance), else on a newly laid grid (at the back-end's tolerance).
     pub(crate) fn solve(
         &mut self,
         bem: &Bem,
         source: &dyn GapSource,
         approach: f64,
+        warm_tolerance: f64,
     ) -> Result<WarmField<'_>> {
         let control = Control::Approach(approach);
         let mut iterations = 0;
@@ -205,7 +207,9 @@ impl WarmHalfSpace {
                     let st = self.state.as_ref().ok_or_else(no_state)?;
                     return Ok(unloaded(grid, &st.zeros, st.rotation));
                 }
-                let report = st.solver.solve(&st.gap, control, Start::Warm)?;
+                st.solver
+                    .set_tolerance(bem.options().tolerance.max(warm_tolerance))?;
+                let report = st.solver.solve(&st.gap, control, Start::Secant)?;
                 iterations += report.status.iterations;
                 // A warm solve that does not converge is not the answer: lay a grid and
                 // solve from cold (whose non-convergence is then an error).
@@ -271,6 +275,7 @@ impl WarmHalfSpace {
                 continue;
             }
             crate::field::domain::check_resolution(&grid, &zone)?;
+            solver.set_incremental_updates(true);
             self.state = Some(State {
                 solver,
                 rotation,
@@ -367,7 +372,7 @@ mod tests {
         .unwrap();
         let approach = 0.0042;
         let mut warm = WarmHalfSpace::default();
-        warm.solve(&bem, &source, approach).unwrap();
+        warm.solve(&bem, &source, approach, 0.0).unwrap();
         let st = warm.state.as_mut().unwrap();
         let grid = *st.solver.grid();
         let mut exact = vec![0.0; grid.len()];

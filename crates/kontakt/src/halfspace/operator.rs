@@ -140,6 +140,11 @@ pub struct HalfSpacePlan {
     /// The FFT preconditioner of this operator, planned on first use and shared by the
     /// solvers on this plan.
     preconditioner: std::sync::OnceLock<Arc<HalfSpacePlan>>,
+    /// Whether the kernel is Love's influence coefficients on a free boundary (planned by
+    /// [`HalfSpacePlan::new`]), whose table [`HalfSpacePlan::influence_rows`] gives.
+    love: bool,
+    /// Love's coefficients, rows mirrored, made on first use.
+    quadrant: std::sync::OnceLock<Vec<f64>>,
 }
 
 impl std::fmt::Debug for HalfSpacePlan {
@@ -254,6 +259,7 @@ impl HalfSpacePlan {
         let threads = Self::threads_for(nx, ny, wanted)?;
         let mut plan = Self::layout_on(grid, e_star, mx, my, boundary, wanted, threads);
         plan.plan_kernel(grid.dx(), grid.dy(), e_star);
+        plan.love = boundary == Boundary::Free;
         Ok(plan)
     }
 
@@ -383,7 +389,34 @@ impl HalfSpacePlan {
             threads_requested: wanted,
             threads,
             preconditioner: std::sync::OnceLock::new(),
+            love: false,
+            quadrant: std::sync::OnceLock::new(),
         }
+    }
+
+    /// The influence coefficients \[mm/MPa\] of a free-boundary plan of Love's kernel,
+    /// the table the kernel spectrum was made from, with each row mirrored: row `j`
+    /// (`2 nx − 1` values) holds the offsets `(i dx, j dy)` for `i = −(nx − 1)..nx`, so
+    /// that one cell's displacement along a grid row is one contiguous slice. Made on
+    /// first use and shared; `None` for other plans. For displacement updates from a few
+    /// cells.
+    pub(super) fn influence_rows(&self) -> Option<&[f64]> {
+        self.love.then(|| {
+            self.quadrant
+                .get_or_init(|| {
+                    let (nx, ny) = (self.nx, self.ny);
+                    let q = quadrant_table(nx, ny, self.grid.dx(), self.grid.dy(), self.e_star);
+                    let w = 2 * nx - 1;
+                    let mut rows = vec![0.0; w * ny];
+                    for (row, qj) in rows.chunks_exact_mut(w).zip(q.chunks_exact(nx + 1)) {
+                        for (k, v) in row.iter_mut().enumerate() {
+                            *v = qj[k.abs_diff(nx - 1)];
+                        }
+                    }
+                    rows
+                })
+                .as_slice()
+        })
     }
 
     /// The FFT preconditioner of the constrained conjugate gradients (Vollebregt 2014;
@@ -619,10 +652,11 @@ impl HalfSpacePlan {
         self.boundary
     }
 
-    /// Bytes held by the plan (the kernel spectrum; the FFT plans' twiddles are not
-    /// counted). The work arrays are in [`OperatorScratch::memory_bytes`].
+    /// Bytes held by the plan (the kernel spectrum, and the influence table once a
+    /// solver's incremental updates made it; the FFT plans' twiddles are not counted).
+    /// The work arrays are in [`OperatorScratch::memory_bytes`].
     pub fn memory_bytes(&self) -> usize {
-        self.kernel.len() * 8
+        self.kernel.len() * 8 + self.quadrant.get().map_or(0, |q| q.len() * 8)
     }
 
     /// `u = K p` with newly allocated work arrays: the displacement \[mm\] of the
