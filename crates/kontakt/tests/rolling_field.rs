@@ -120,10 +120,13 @@ fn a_sampled_hertz_field_gives_the_hertz_model_in_any_orientation() {
     }
 }
 
-/// A steel ball (R = 10 mm) on a steel flat, 200 N: the half-space solver's pressure
-/// through `from_solution` against the Hertz model.
-#[test]
-fn the_half_space_pressure_of_a_ball_gives_the_hertz_model() {
+/// A steel ball (R = 10 mm) on a steel flat, 200 N, μ = 0.1: the largest difference of
+/// `F_x/(μ F_N)` over 0.1-3 ξ_lin between the model that `plan` makes from a solver's
+/// field (given the gap's curvature, the force, the materials and the options) and the
+/// model on the Hertz ellipse (24²).
+fn ball_against_hertz(
+    plan: impl FnOnce(RelativeCurvature, f64, KalkerMaterial, f64, KalkerExactOptions) -> KalkerExact,
+) -> f64 {
     let k = RelativeCurvature::from_tensor(0.1, 0.1, 0.0).unwrap();
     let force = 200.0;
     let hertz = HertzPointContact::new(PointGeometry::from_curvature(k), STEEL, STEEL)
@@ -132,15 +135,9 @@ fn the_half_space_pressure_of_a_ball_gives_the_hertz_model() {
         .unwrap();
     let e = ContactEllipse::from_hertz(&hertz, EllipseAxis::Major).unwrap();
     let material = KalkerMaterial::new(&STEEL, &STEEL).unwrap();
-    let mu = 0.1;
-    let cells = [24, 24];
-    let reference = KalkerExact::with_material(e, material, mu, options(cells)).unwrap();
-    let bem = Bem::new(STEEL, STEEL, BemOptions::default())
-        .unwrap()
-        .solve_force(&QuadraticGap::new(k), force)
-        .unwrap();
-    assert!(bem.status.converged());
-    let m = KalkerExact::from_solution(&bem, 0.0, material, mu, options(cells)).unwrap();
+    let (mu, o) = (0.1, options([24, 24]));
+    let reference = KalkerExact::with_material(e, material, mu, o).unwrap();
+    let m = plan(k, force, material, mu, o);
     assert!((m.normal_force() - force).abs() < 1e-6 * force);
     // ξ_lin = μ P/(G a² C11) for the circle: the curve from 0.1 to 3 ξ_lin.
     let xi_lin = mu * force / (material.shear_modulus * e.a() * e.a() * 4.12);
@@ -148,46 +145,39 @@ fn the_half_space_pressure_of_a_ball_gives_the_hertz_model() {
         .iter()
         .map(|f| f * xi_lin)
         .collect();
-    let ours = curve(&m, &xis);
-    let theirs = curve(&reference, &xis);
-    let d = max_diff(&ours, &theirs);
+    max_diff(&curve(&m, &xis), &curve(&reference, &xis))
+}
+
+/// The ball's pressure from the half-space solver, through `from_solution`.
+#[test]
+fn the_half_space_pressure_of_a_ball_gives_the_hertz_model() {
+    let d = ball_against_hertz(|k, force, material, mu, o| {
+        let bem = Bem::new(STEEL, STEEL, BemOptions::default())
+            .unwrap()
+            .solve_force(&QuadraticGap::new(k), force)
+            .unwrap();
+        assert!(bem.status.converged());
+        KalkerExact::from_solution(&bem, 0.0, material, mu, o).unwrap()
+    });
     // Measured 2026-11-27: 6.0e-3 of μ F_N (the half-space solver's zone edge on its own
     // grid against Hertz's).
-    assert!(d < 1e-2, "{ours:?} against {theirs:?} ({d:.2e})");
+    assert!(d < 1e-2, "{d:.2e}");
 }
 
 /// The same ball as PimP solves it (corrected bedding, its own adaptive grid turned into
-/// the gap's principal frame), rolling at 30° from the gap's x axis: `from_solution`
-/// against the Hertz model (a circle: any rolling direction).
+/// the gap's principal frame), rolling at 30° from the gap's x axis (a circle: any
+/// rolling direction).
 #[test]
 fn the_pimp_pressure_of_a_ball_gives_the_hertz_model() {
-    let k = RelativeCurvature::from_tensor(0.1, 0.1, 0.0).unwrap();
-    let force = 200.0;
-    let hertz = HertzPointContact::new(PointGeometry::from_curvature(k), STEEL, STEEL)
-        .unwrap()
-        .solve_force(force)
-        .unwrap();
-    let e = ContactEllipse::from_hertz(&hertz, EllipseAxis::Major).unwrap();
-    let material = KalkerMaterial::new(&STEEL, &STEEL).unwrap();
-    let mu = 0.1;
-    let cells = [24, 24];
-    let reference = KalkerExact::with_material(e, material, mu, options(cells)).unwrap();
-    let pimp = Pimp::new(STEEL, STEEL, PimpOptions::default())
-        .unwrap()
-        .solve_force(&QuadraticGap::new(k), force)
-        .unwrap();
-    let m = KalkerExact::from_solution(&pimp, PI / 6.0, material, mu, options(cells)).unwrap();
-    assert!((m.normal_force() - force).abs() < 1e-6 * force);
-    let xi_lin = mu * force / (material.shear_modulus * e.a() * e.a() * 4.12);
-    let xis: Vec<f64> = [0.1, 0.3, 0.6, 1.0, 1.5, 3.0]
-        .iter()
-        .map(|f| f * xi_lin)
-        .collect();
-    let ours = curve(&m, &xis);
-    let theirs = curve(&reference, &xis);
-    let d = max_diff(&ours, &theirs);
+    let d = ball_against_hertz(|k, force, material, mu, o| {
+        let pimp = Pimp::new(STEEL, STEEL, PimpOptions::default())
+            .unwrap()
+            .solve_force(&QuadraticGap::new(k), force)
+            .unwrap();
+        KalkerExact::from_solution(&pimp, PI / 6.0, material, mu, o).unwrap()
+    });
     // Measured 2026-11-27: 5.6e-3 of μ F_N.
-    assert!(d < 1e-2, "{ours:?} against {theirs:?} ({d:.2e})");
+    assert!(d < 1e-2, "{d:.2e}");
 }
 
 /// Two paraboloidal valleys 2 mm apart across the rolling direction (a two-patch,
