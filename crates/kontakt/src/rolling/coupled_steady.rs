@@ -769,21 +769,25 @@ fn find_creepage(
         Ok((s.force[0] - target, s))
     };
     let failed = |s: &SteadySolution| s.status.termination != Termination::Converged;
-    let (g0, s0) = eval(xi0, &mut cnt)?;
-    if g0.abs() <= tol || failed(&s0) {
-        return Ok(Search {
-            termination: s0.status.termination,
-            residual: if failed(&s0) {
-                s0.status.residual
+    // The answer at a solve that met the force or failed: its status, and the force
+    // residual (or the failed solve's own); a slope only if it is a usable one.
+    let answer =
+        |s: SteadySolution, xi: f64, g: f64, slope: Option<f64>, cnt: (usize, usize)| Search {
+            termination: s.status.termination,
+            residual: if failed(&s) {
+                s.status.residual
             } else {
-                g0.abs() / limit
+                g.abs() / limit
             },
-            solution: s0,
-            xi: xi0,
-            slope: None,
+            solution: s,
+            xi,
+            slope: slope.filter(|v| *v < 0.0 && v.is_finite()),
             solves: cnt.0,
             fft: cnt.1,
-        });
+        };
+    let (g0, s0) = eval(xi0, &mut cnt)?;
+    if g0.abs() <= tol || failed(&s0) {
+        return Ok(answer(s0, xi0, g0, None, cnt));
     }
     // F_x falls with ξ: a positive residual asks for a larger ξ.
     let dir = g0.signum();
@@ -802,19 +806,7 @@ fn find_creepage(
         let (g, s) = eval(xi, &mut cnt)?;
         if failed(&s) || g.abs() <= tol {
             let slope = (g - prev.1) / (xi - prev.0);
-            return Ok(Search {
-                termination: s.status.termination,
-                residual: if failed(&s) {
-                    s.status.residual
-                } else {
-                    g.abs() / limit
-                },
-                solution: s,
-                xi,
-                slope: (slope < 0.0).then_some(slope),
-                solves: cnt.0,
-                fft: cnt.1,
-            });
+            return Ok(answer(s, xi, g, Some(slope), cnt));
         }
         if g.signum() != dir {
             cur = (xi, g, s);
@@ -873,19 +865,7 @@ fn find_creepage(
         let (g, s) = eval(xi, &mut cnt)?;
         if failed(&s) || g.abs() <= tol {
             let slope = (hi.1 - lo.1) / (hi.0 - lo.0);
-            return Ok(Search {
-                termination: s.status.termination,
-                residual: if failed(&s) {
-                    s.status.residual
-                } else {
-                    g.abs() / limit
-                },
-                solution: s,
-                xi,
-                slope: (slope < 0.0 && slope.is_finite()).then_some(slope),
-                solves: cnt.0,
-                fft: cnt.1,
-            });
+            return Ok(answer(s, xi, g, Some(slope), cnt));
         }
         if g > 0.0 {
             lo = (xi, g);
