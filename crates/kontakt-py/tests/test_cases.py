@@ -23,7 +23,7 @@ EXAMPLES = {
     "rough_self_affine": "solve_rough_self_affine",
 }
 # keys that may differ from the recorded baseline (as crates/kontakt-cli/tests/reports.rs)
-NEW_KEYS = {"status", "warnings"}
+NEW_KEYS = {"status", "warnings", "difference_parameter"}
 
 
 def same(new, old, path="report"):
