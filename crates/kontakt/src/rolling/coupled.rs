@@ -197,6 +197,46 @@ pub struct CoupledShiftSolver {
     inner_residual: f64,
 }
 
+/// Kalker's combined constants of two bodies and the difference parameter `K` in use
+/// (0 when `coupling` is off): the start of the coupled solvers' `new`.
+pub(super) fn combined_constants(
+    body1: &ElasticMaterial,
+    body2: &ElasticMaterial,
+    coupling: bool,
+) -> Result<(KalkerMaterial, f64)> {
+    let material = KalkerMaterial::new(body1, body2)?;
+    let k = if coupling {
+        difference_parameter(body1, body2)?
+    } else {
+        0.0
+    };
+    Ok((material, k))
+}
+
+/// The parts a coupled problem adds to its tangential solver, checked: `K` in use (0
+/// when `coupling` is off), the normal solver on `grid` with Love's compliance of the
+/// two bodies (`1/E* = (1 − ν)/G` with Kalker's constants), and the coupling operator
+/// when `K ≠ 0`.
+pub(super) fn normal_and_coupling(
+    grid: &Grid2,
+    material: KalkerMaterial,
+    k: f64,
+    coupling: bool,
+    normal: SolverOptions,
+) -> Result<(f64, HalfSpaceSolver, Option<CouplingOperator>)> {
+    super::operator::check_material(&material)?;
+    super::cross::check_difference(k)?;
+    let k = if coupling { k } else { 0.0 };
+    let e_star = material.shear_modulus / (1.0 - material.poisson_ratio);
+    let solver = HalfSpaceSolver::new(*grid, e_star, normal)?;
+    let cross = if k != 0.0 {
+        Some(CouplingOperator::new(grid, material, k)?)
+    } else {
+        None
+    };
+    Ok((k, solver, cross))
+}
+
 impl CoupledShiftSolver {
     /// A solver for `grid` \[mm\], body 1 and body 2 (body 1 carries the tractions
     /// `τ`; either may be rigid, not both) and `options`.
@@ -210,12 +250,7 @@ impl CoupledShiftSolver {
         options: CoupledOptions,
     ) -> Result<Self> {
         options.validate()?;
-        let material = KalkerMaterial::new(body1, body2)?;
-        let k = if options.coupling {
-            difference_parameter(body1, body2)?
-        } else {
-            0.0
-        };
+        let (material, k) = combined_constants(body1, body2, options.coupling)?;
         Self::from_constants(grid, material, k, options)
     }
 
@@ -231,18 +266,9 @@ impl CoupledShiftSolver {
         options: CoupledOptions,
     ) -> Result<Self> {
         options.validate()?;
-        super::operator::check_material(&material)?;
-        super::cross::check_difference(k)?;
-        let k = if options.coupling { k } else { 0.0 };
-        // Love's compliance of the two bodies: 1/E* = (1 - ν)/G with Kalker's constants.
-        let e_star = material.shear_modulus / (1.0 - material.poisson_ratio);
-        let normal = HalfSpaceSolver::new(*grid, e_star, options.normal)?;
+        let (k, normal, cross) =
+            normal_and_coupling(grid, material, k, options.coupling, options.normal)?;
         let tang = ShiftSolver::new(grid, material, options.normal.threads)?;
-        let cross = if k != 0.0 {
-            Some(CouplingOperator::new(grid, material, k)?)
-        } else {
-            None
-        };
         let n = grid.len();
         let z2 = || [vec![0.0; n], vec![0.0; n]];
         Ok(CoupledShiftSolver {

@@ -65,8 +65,8 @@
 //! - Vollebregt, CONTACT user guide (the Panagiotopoulos process, the force-controlled
 //!   creepage "F = 1", example `bentall`).
 
+use super::coupled::{combined_constants, normal_and_coupling};
 use super::cross::CouplingOperator;
-use super::operator::difference_parameter;
 use super::shift::CellState;
 use super::steady::{SteadyOptions, SteadySolution, SteadySolver};
 use crate::error::{Error, Result};
@@ -313,12 +313,7 @@ impl CoupledSteadySolver {
         options: CoupledSteadyOptions,
     ) -> Result<Self> {
         options.validate()?;
-        let material = KalkerMaterial::new(body1, body2)?;
-        let k = if options.coupling {
-            difference_parameter(body1, body2)?
-        } else {
-            0.0
-        };
+        let (material, k) = combined_constants(body1, body2, options.coupling)?;
         Self::from_constants(grid, material, k, options)
     }
 
@@ -335,18 +330,9 @@ impl CoupledSteadySolver {
         options: CoupledSteadyOptions,
     ) -> Result<Self> {
         options.validate()?;
-        super::operator::check_material(&material)?;
-        super::cross::check_difference(k)?;
-        let k = if options.coupling { k } else { 0.0 };
-        // Love's compliance of the two bodies: 1/E* = (1 - ν)/G with Kalker's constants.
-        let e_star = material.shear_modulus / (1.0 - material.poisson_ratio);
-        let normal = HalfSpaceSolver::new(*grid, e_star, options.normal)?;
+        let (k, normal, cross) =
+            normal_and_coupling(grid, material, k, options.coupling, options.normal)?;
         let steady = SteadySolver::new(grid, material, options.normal.threads)?;
-        let cross = if k != 0.0 {
-            Some(CouplingOperator::new(grid, material, k)?)
-        } else {
-            None
-        };
         let n = grid.len();
         let z2 = || [vec![0.0; n], vec![0.0; n]];
         Ok(CoupledSteadySolver {
