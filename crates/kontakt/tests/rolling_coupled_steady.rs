@@ -52,6 +52,20 @@ fn bentall_gap(grid: &Grid2) -> Vec<f64> {
     grid.points().map(|(x, _)| 0.02 * x * x).collect()
 }
 
+/// The gap of CONTACT's `bentall` strip and a solver for aluminium on steel on its grid
+/// (default options).
+fn bentall_solver() -> (Vec<f64>, CoupledSteadySolver) {
+    let grid = bentall_grid();
+    let solver = CoupledSteadySolver::new(
+        &grid,
+        &aluminium(),
+        &steel(),
+        CoupledSteadyOptions::default(),
+    )
+    .unwrap();
+    (bentall_gap(&grid), solver)
+}
+
 fn free_rolling(force: f64) -> SteadyLoad {
     SteadyLoad::LongitudinalForce {
         force,
@@ -82,9 +96,7 @@ fn complete_slip_free_rolling_creepage_is_bentall_and_johnsons_closed_form() {
     // CONTACT's user guide: K = 0.100, G = 35 924 MPa, ν = 0.3034.
     assert!((k - 0.1002).abs() < 1e-4, "K = {k}");
     assert!((m.shear_modulus - 35_924.0).abs() < 1.0);
-    let grid = bentall_grid();
-    let gap = bentall_gap(&grid);
-    let mut s = CoupledSteadySolver::new(&grid, &al, &st, CoupledSteadyOptions::default()).unwrap();
+    let (gap, mut s) = bentall_solver();
     let r = s
         .solve(&gap, Control::Force(FN), 1e-4, free_rolling(0.0))
         .unwrap();
@@ -113,7 +125,7 @@ fn complete_slip_free_rolling_creepage_is_bentall_and_johnsons_closed_form() {
     assert!(r.force[0].abs() <= 1e-8 * 1e-4 * FN, "F_x = {}", r.force[0]);
     // The traction is −μp sgn(S): negative in the middle (S > 0, where (2K/G) p > −ξ),
     // positive towards both edges. (CONTACT's frame: positive in the middle.)
-    let mid = grid.len() / 2;
+    let mid = gap.len() / 2;
     assert!(r.traction_x[mid] < 0.0 && r.traction_x[10] > 0.0 && r.traction_x[205] > 0.0);
 }
 
@@ -180,15 +192,7 @@ fn contact_example_bentall() {
             p_max: 103.3,
         },
     ];
-    let grid = bentall_grid();
-    let gap = bentall_gap(&grid);
-    let mut s = CoupledSteadySolver::new(
-        &grid,
-        &aluminium(),
-        &steel(),
-        CoupledSteadyOptions::default(),
-    )
-    .unwrap();
+    let (gap, mut s) = bentall_solver();
     let mut worst: f64 = 0.0;
     for c in &refs {
         // Each case from scratch, as CONTACT's (no initial estimate).
@@ -237,15 +241,7 @@ fn contact_example_bentall() {
 
 #[test]
 fn warm_start_repeats_the_solution_with_fewer_solves() {
-    let grid = bentall_grid();
-    let gap = bentall_gap(&grid);
-    let mut s = CoupledSteadySolver::new(
-        &grid,
-        &aluminium(),
-        &steel(),
-        CoupledSteadyOptions::default(),
-    )
-    .unwrap();
+    let (gap, mut s) = bentall_solver();
     let load = free_rolling(0.0);
     let cold = s.solve(&gap, Control::Force(FN), 0.05, load).unwrap();
     let warm = s.solve(&gap, Control::Force(FN), 0.05, load).unwrap();
@@ -265,15 +261,7 @@ fn warm_start_repeats_the_solution_with_fewer_solves() {
 
 #[test]
 fn a_warm_solve_allocates_only_its_solutions() {
-    let grid = bentall_grid();
-    let gap = bentall_gap(&grid);
-    let mut s = CoupledSteadySolver::new(
-        &grid,
-        &aluminium(),
-        &steel(),
-        CoupledSteadyOptions::default(),
-    )
-    .unwrap();
+    let (gap, mut s) = bentall_solver();
     let load = free_rolling(-0.3 * 0.05 * FN);
     s.solve(&gap, Control::Force(FN), 0.05, load).unwrap();
     let (r, count) =
