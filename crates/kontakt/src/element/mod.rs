@@ -196,6 +196,11 @@ pub struct ContactElement {
     bem: Option<Bem>,
     /// The last contact point in body 1's frame: the next search starts there.
     last_point: Option<Point3<f64>>,
+    /// The contact point before it (body 1's frame), for the secant start.
+    prev_point: Option<Point3<f64>>,
+    /// Size of the last contact, `√area` \[mm\] (0 when separated): the secant start is
+    /// taken when the last step of the contact point was below a tenth of it.
+    last_size: f64,
     /// The Hertz back-end's last contact: the next shape inversion starts from it.
     last_hertz: Option<HertzPointContact>,
     /// The Hertz back-end's quadrature rules over the contact ellipse (built once).
@@ -332,6 +337,8 @@ impl ContactElement {
             pimp,
             bem,
             last_point: None,
+            prev_point: None,
+            last_size: 0.0,
             last_hertz: None,
             hertz_rules: HertzFrictionRules::new()?,
             warm: Default::default(),
@@ -488,6 +495,8 @@ impl ContactElement {
     /// Forget the last contact point (the next search starts from scratch).
     pub fn reset(&mut self) {
         self.last_point = None;
+        self.prev_point = None;
+        self.last_size = 0.0;
         self.last_hertz = None;
         self.warm.reset();
         if let Some(t) = &mut self.tracker {
@@ -566,9 +575,19 @@ impl ContactElement {
         };
         let p1 = place("pose1", pose1, &self.spec.surface1)?;
         let p2 = place("pose2", pose2, &self.spec.surface2)?;
-        let guess = self.last_point.map(|p| pose1 * p);
+        // The search starts from the last contact point, extrapolated along its last step
+        // (the secant) when that step was small against the contact: along a smooth motion
+        // the start is then second-order close and the Newton search saves an iteration.
+        let guess = match (self.last_point, self.prev_point) {
+            (Some(p), Some(q)) if (p - q).norm() <= 0.1 * self.last_size => {
+                Some(pose1 * (p + (p - q)))
+            }
+            (p, _) => p.map(|p| pose1 * p),
+        };
         let contact = find_contact(&p1, &p2, guess)?;
+        self.prev_point = self.last_point;
         self.last_point = Some(pose1.inverse_transform_point(&contact.point));
+        self.last_size = 0.0;
         let zero = Vector3::zeros();
         let separated = ElementResult {
             status: ContactStatus::Separated,
@@ -682,6 +701,7 @@ impl ContactElement {
                 }
             }
         };
+        self.last_size = field.contact_area.sqrt();
         // The normal force of the back-end (Hertz: the closed form).
         let normal_force = field.force;
         let iterations = field.iterations;

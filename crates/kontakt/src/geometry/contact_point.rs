@@ -20,7 +20,7 @@
 //! minima of $\phi$ on a coarse grid of $S_a$'s parameters; the lowest converged minimum
 //! is returned (with two contact zones, the deeper/closer one).
 
-use super::surface::{PlacedSurface, Surface, tangent_basis};
+use super::surface::{PlacedSurface, Surface, hypot, tangent_basis};
 use crate::error::{Error, Result};
 use nalgebra::{Point3, Unit, Vector3};
 use std::f64::consts::{PI, TAU};
@@ -257,7 +257,7 @@ fn refine(a: &PlacedSurface, b: &PlacedSurface, start: Point3<f64>, scale: f64) 
     let mut polish = 0;
     for it in 1..=MAX_ITER {
         let (e1, e2, g1, g2) = grad(&na, &nb);
-        let gn = g1.hypot(g2);
+        let gn = hypot(g1, g2);
         if gn < best_g {
             best_g = gn;
             best = Solution {
@@ -297,7 +297,7 @@ fn refine(a: &PlacedSurface, b: &PlacedSurface, start: Point3<f64>, scale: f64) 
             let det = b11 * b22 - a12 * a12;
             let mut u1 = -(b22 * g1 - a12 * g2) / det;
             let mut u2 = -(b11 * g2 - a12 * g1) / det;
-            let len = u1.hypot(u2);
+            let len = hypot(u1, u2);
             if !len.is_finite() {
                 lambda = (4.0 * lambda).max(floor);
                 continue;
@@ -320,7 +320,7 @@ fn refine(a: &PlacedSurface, b: &PlacedSurface, start: Point3<f64>, scale: f64) 
                 }
                 radius = (2.0 * radius).min(scale);
                 accepted = true;
-                step_len = u1.hypot(u2);
+                step_len = hypot(u1, u2);
                 break;
             }
             lambda = (4.0 * lambda).max(floor);
@@ -329,8 +329,8 @@ fn refine(a: &PlacedSurface, b: &PlacedSurface, start: Point3<f64>, scale: f64) 
         if !accepted || step_len <= 4.0 * f64::EPSILON * scale {
             // No descent left, or a step below the resolution of the coordinates.
             let (_, _, g1, g2) = grad(&na, &nb);
-            if g1.hypot(g2) < best_g {
-                best_g = g1.hypot(g2);
+            if hypot(g1, g2) < best_g {
+                best_g = hypot(g1, g2);
                 best = Solution {
                     pa: p,
                     pb,

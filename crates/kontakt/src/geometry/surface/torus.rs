@@ -15,7 +15,7 @@
 //! the boundary of the union of the balls of radius r centred on the circle.
 
 use super::trace::{self, RayFunction, Sample};
-use super::{Material, Shape, hypot, outer, radial};
+use super::{Material, Shape, hypot, outer, radial, radial_fast};
 use crate::error::{Error, Result};
 use nalgebra::{Matrix3, Point3, Vector3};
 
@@ -402,7 +402,7 @@ impl Shape for Torus {
 
     fn curvature(&self, p: &Point3<f64>) -> [(f64, Vector3<f64>); 2] {
         let (q, n) = self.foot(p);
-        let (er, rho_f) = radial(&q);
+        let (er, rho_f) = radial_fast(&q);
         let around = Vector3::new(-er.y, er.x, 0.0);
         let cos_theta = n.dot(&er);
         let meridian = around.cross(&n);
@@ -419,7 +419,7 @@ impl Shape for Torus {
 
     fn sdf_hessian(&self, p: &Point3<f64>) -> Matrix3<f64> {
         let tiny = f64::MIN_POSITIVE.sqrt();
-        let (er, rho) = radial(p);
+        let (er, rho) = radial_fast(p);
         if let Some(c) = self.cusp(rho, p.z) {
             // sdf = -|p - c|.
             let v = p - c;
