@@ -113,6 +113,76 @@ impl EllipseRule {
         Ok(rule)
     }
 
+    /// A rule of `radial` × `angular` nodes with the pressure in the radial weight:
+    /// Gauss–Jacobi in `t = ρ²` for the weight `√(1 − t)` (`∫ p g dA = ½ p₀ a b ∫₀^{2π}
+    /// ∫₀¹ g √(1 − t) dt dθ`), exact for integrands polynomial of degree `2 radial − 1` in
+    /// `t`. An even number of angular nodes pairs each node with its opposite, so the
+    /// angular sums are even in `ρ`, i.e. functions of `t`: for a sliding field whose pole
+    /// is far from the ellipse the error falls like `ρ_p^(−4 radial)` (`ρ_p` the pole's
+    /// radius in the unit disc), against `ρ_p^(−1)` times the Legendre rule's error for
+    /// the weight `sin φ cos² φ` of [`EllipseRule::new`]. Nodes by the Golub–Welsch
+    /// eigenvalue method (Golub & Welsch 1969) on the Jacobi recurrence with α = ½, β = 0.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] (field `nodes`) for fewer than 1 radial or 2 angular nodes,
+    /// or an odd number of angular nodes.
+    pub fn pressure_weighted(radial: usize, angular: usize) -> Result<Self> {
+        if radial < 1 || angular < 2 || angular % 2 != 0 {
+            return Err(Error::invalid(
+                "nodes",
+                format!("{radial} × {angular}"),
+                "at least 1 radial and an even number >= 2 of angular nodes",
+            ));
+        }
+        // Monic Jacobi recurrence on x ∈ [−1, 1], weight (1 − x)^α (1 + x)^β.
+        let (al, be) = (0.5_f64, 0.0_f64);
+        let mut jac = nalgebra::DMatrix::<f64>::zeros(radial, radial);
+        for k in 0..radial {
+            let kf = k as f64;
+            let s = 2.0 * kf + al + be;
+            jac[(k, k)] = if k == 0 {
+                (be - al) / (al + be + 2.0)
+            } else {
+                (be * be - al * al) / (s * (s + 2.0))
+            };
+            if k + 1 < radial {
+                let m = kf + 1.0;
+                let s1 = 2.0 * m + al + be;
+                let b2 = 4.0 * m * (m + al) * (m + be) * (m + al + be)
+                    / (s1 * s1 * (s1 + 1.0) * (s1 - 1.0));
+                jac[(k, k + 1)] = b2.sqrt();
+                jac[(k + 1, k)] = b2.sqrt();
+            }
+        }
+        let eig = nalgebra::SymmetricEigen::new(jac);
+        let dtheta = std::f64::consts::TAU / angular as f64;
+        let n = radial * angular;
+        let mut rule = EllipseRule {
+            ux: Vec::with_capacity(n),
+            uy: Vec::with_capacity(n),
+            share: Vec::with_capacity(n),
+            weight: Vec::with_capacity(n),
+        };
+        for i in 0..radial {
+            // t = (1 + x)/2; the weight is the first eigenvector component squared (the
+            // total is scaled below).
+            let t = 0.5 * (1.0 + eig.eigenvalues[i]);
+            let v0 = eig.eigenvectors[(0, i)];
+            let (rho, share) = (t.sqrt(), (1.0 - t).sqrt());
+            for m in 0..angular {
+                let (st, ct) = ((m as f64 + 0.5) * dtheta).sin_cos();
+                rule.ux.push(rho * ct);
+                rule.uy.push(rho * st);
+                rule.share.push(share);
+                rule.weight.push(v0 * v0);
+            }
+        }
+        // Exact for constants: the weights sum to ∫∫ √(1 − ρ²) ρ dρ dθ = 2π/3.
+        let k = std::f64::consts::TAU / 3.0 / rule.weight.iter().sum::<f64>();
+        rule.weight.iter_mut().for_each(|w| *w *= k);
+        Ok(rule)
+    }
+
     /// Nodes of the rule.
     pub fn len(&self) -> usize {
         self.weight.len()
@@ -329,33 +399,65 @@ pub fn sliding_pole_radius(semi_axes: [f64; 2], orientation: f64, field: &Veloci
     if r.is_nan() { f64::INFINITY } else { r }
 }
 
-/// The contact element's three rules and the choice between them (accuracy in
-/// docs/VALIDATION.md, "Friction over a Hertz ellipse"):
+/// How smooth the sliding field is over the ellipse: `ρ_s = |v(0)| / ‖M‖₂`, the sliding
+/// speed at the centre over the largest change of the sliding velocity per unit radius of
+/// the unit disc (`M` the sliding gradient mapped onto the unit disc, `‖M‖₂` its spectral
+/// norm). The Coulomb direction `v/|v|` is analytic in the disc stretched by about `ρ_s`
+/// (the complex zeros of `|v|²` lie there), so the quadrature error falls geometrically
+/// in `ρ_s`. `ρ_s ≤ ρ_p` ([`sliding_pole_radius`]); unlike `ρ_p` it also sees a thin
+/// ellipse whose pole is far along the long axis's scale but near across it. Infinity
+/// for a uniform sliding (no gradient), 0 where the centre does not slide. Same arguments
+/// as [`ellipse_friction`].
+pub fn sliding_smoothness(semi_axes: [f64; 2], orientation: f64, field: &VelocityField) -> f64 {
+    let [a, b] = semi_axes;
+    let (s, c) = orientation.sin_cos();
+    let (xu, xw, yu, yw) = (c * a, -s * b, s * a, c * b);
+    let [o, dx, dy] = field.sliding;
+    let m = [
+        xu * dx[0] + yu * dy[0],
+        xw * dx[0] + yw * dy[0],
+        xu * dx[1] + yu * dy[1],
+        xw * dx[1] + yw * dy[1],
+    ];
+    // ‖M‖₂² = (|M|_F² + √(|M|_F⁴ − 4 det²)) / 2.
+    let fro2 = m.iter().map(|v| v * v).sum::<f64>();
+    let det = m[0] * m[3] - m[1] * m[2];
+    let norm = (0.5 * (fro2 + (fro2 * fro2 - 4.0 * det * det).max(0.0).sqrt())).sqrt();
+    let r = o[0].hypot(o[1]) / norm;
+    if r.is_nan() { f64::INFINITY } else { r }
+}
+
+/// The contact element's rules and the choice between them (accuracy in
+/// docs/VALIDATION.md, "Friction over a Hertz ellipse"), by the smoothness `ρ_s` of
+/// [`sliding_smoothness`]:
 ///
-/// - boundary (Coulomb) law, spin pole at `ρ_p ≥ 3`: 6 × 16 nodes (smooth integrand:
-///   errors below 3e-5 of `∫|τ| dA`);
-/// - a fluid part, pole at `ρ_p ≥ 3`: 16 × 16 (the fluid law's knee near the rim converges
+/// - boundary (Coulomb) law: the pressure-weighted rules of
+///   [`EllipseRule::pressure_weighted`], 3 × 8 nodes for `ρ_s ≥ 8`, 3 × 12 for
+///   `4 ≤ ρ_s < 8`, 4 × 16 for `2 ≤ ρ_s < 4` (errors below 1e-8, 3e-9 and 2e-7 of
+///   `∫|τ| dA` over random ellipses, axis ratios down to 0.03, and poles);
+/// - a fluid part, `ρ_s ≥ 3`: 16 × 16 (the fluid law's knee near the rim converges
 ///   algebraically: below 1.5e-3);
-/// - the pole nearer (or inside the ellipse, where the sliding direction turns round the
-///   pole): 16 × 32 (below 2e-3 outside, 5e-3 inside).
+/// - a rougher field (the pole near or inside the ellipse, where the sliding direction
+///   turns round the pole): 16 × 32 (below 2e-3 outside, 5e-3 inside).
 #[derive(Debug, Clone, PartialEq)]
 pub struct HertzFrictionRules {
-    fast: EllipseRule,
+    far: EllipseRule,
+    mid: EllipseRule,
+    near: EllipseRule,
     fluid: EllipseRule,
     careful: EllipseRule,
 }
 
-/// The pole radius beyond which the lighter rules are used.
-const FAR_POLE: f64 = 3.0;
-
 impl HertzFrictionRules {
-    /// Build the three rules (allocates; once per element).
+    /// Build the rules (allocates; once per element).
     ///
     /// # Errors
     /// None in practice (those of [`EllipseRule::new`]).
     pub fn new() -> Result<Self> {
         Ok(HertzFrictionRules {
-            fast: EllipseRule::new(6, 16)?,
+            far: EllipseRule::pressure_weighted(3, 8)?,
+            mid: EllipseRule::pressure_weighted(3, 12)?,
+            near: EllipseRule::pressure_weighted(4, 16)?,
             fluid: EllipseRule::new(16, 16)?,
             careful: EllipseRule::new(16, 32)?,
         })
@@ -369,14 +471,13 @@ impl HertzFrictionRules {
         field: &VelocityField,
         law: &CellLaw,
     ) -> &EllipseRule {
-        if sliding_pole_radius(semi_axes, orientation, field) >= FAR_POLE {
-            if law.has_fluid() {
-                &self.fluid
-            } else {
-                &self.fast
-            }
-        } else {
-            &self.careful
+        let rs = sliding_smoothness(semi_axes, orientation, field);
+        match (law.has_fluid(), rs) {
+            (true, r) if r >= 3.0 => &self.fluid,
+            (false, r) if r >= 8.0 => &self.far,
+            (false, r) if r >= 4.0 => &self.mid,
+            (false, r) if r >= 2.0 => &self.near,
+            _ => &self.careful,
         }
     }
 

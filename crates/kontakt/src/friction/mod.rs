@@ -28,7 +28,9 @@ pub mod ellipse;
 pub mod integral;
 pub mod law;
 
-pub use ellipse::{EllipseRule, HertzFrictionRules, ellipse_friction, sliding_pole_radius};
+pub use ellipse::{
+    EllipseRule, HertzFrictionRules, ellipse_friction, sliding_pole_radius, sliding_smoothness,
+};
 pub use integral::{
     BINNED_TOLERANCE, BLOCK_SHAPES, ContactFriction, GridFriction, binning_blocks, binning_error,
     block_error, contact_friction, grid_friction, grid_friction_binned, power_density,
