@@ -127,7 +127,7 @@ impl EllipseRule {
     /// [`Error::InvalidInput`] (field `nodes`) for fewer than 1 radial or 2 angular nodes,
     /// or an odd number of angular nodes.
     pub fn pressure_weighted(radial: usize, angular: usize) -> Result<Self> {
-        if radial < 1 || angular < 2 || angular % 2 != 0 {
+        if radial < 1 || angular < 2 || !angular.is_multiple_of(2) {
             return Err(Error::invalid(
                 "nodes",
                 format!("{radial} × {angular}"),
