@@ -168,6 +168,69 @@ pub(crate) fn invert_shape_ratio_near(
     })
 }
 
+/// The slopes $dR_F/dy$ and $dR_D/dy$ of $R_F(0, y, 1)$ and $R_D(0, y, 1)$ from their
+/// values, through Legendre's $K = R_F$, $E = R_F - \tfrac{m}{3}R_D$, $m = 1 - y$ and
+/// DLMF 19.4.1: $dK/dm = (E - yK)/(2my)$, $dE/dm = (E - K)/(2m) = -R_D/6$, and from
+/// $R_D = 3(K - E)/m$: $dR_D/dm = (3\,dK/dm - R_D/2)/m$. Both lose about
+/// $\epsilon/m^2$ relative to cancellation near the circle; [`invert_shape_ratio_newton`]
+/// uses them only for $m \ge 10^{-3}$ and only to move a root by $10^{-8}$ of itself.
+pub(crate) fn rf_rd_slopes(y: f64, rf: f64, rd: f64) -> (f64, f64) {
+    let m = 1.0 - y;
+    let e = rf - m * rd / 3.0;
+    let dk_dm = (e - y * rf) / (2.0 * m * y);
+    let drd_dm = (3.0 * dk_dm - 0.5 * rd) / m;
+    (-dk_dm, -drd_dm)
+}
+
+/// $d(B/A)/dy$ of the shape function $S(y) = (3R_F - R_D)/(y R_D) = 3R_F/(yR_D) - 1/y$
+/// at $y$ with $(R_F, R_D)$ there (NaN at the circle, where it is not needed).
+pub(crate) fn shape_slope(y: f64, rf: f64, rd: f64) -> f64 {
+    let (drf, drd) = rf_rd_slopes(y, rf, rd);
+    let q = y * rd;
+    3.0 * (drf * q - rf * (rd + y * drd)) / (q * q) + 1.0 / (y * y)
+}
+
+/// Largest $y = (b/a)^2$ of [`invert_shape_ratio_newton`]: nearer the circle the slopes
+/// of [`rf_rd_slopes`] cancel.
+const NEWTON_Y_MAX: f64 = 0.999;
+
+/// The root of the shape equation for `ratio` by one evaluation of the elliptic integrals,
+/// from the root `previous = (ratio, y, slope)` of a nearby ratio (a contact element's
+/// last call): the tangent predicts $y_1$, one evaluation there gives $S(y_1)$ and the
+/// exact slope, a Newton step moves to $y_2$, and $(R_F, R_D)$ follow to $y_2$ along their
+/// slopes. Accepted only where that is exact to rounding: the Newton step at most
+/// $10^{-8} y_1$ (the neglected terms are then of order $10^{-16}$ relative) and
+/// $y \le 0.999$; otherwise `None`, and the caller takes the safeguarded
+/// [`invert_shape_ratio_near`].
+pub(crate) fn invert_shape_ratio_newton(
+    ratio: f64,
+    previous: (f64, f64, f64),
+) -> Option<Inversion> {
+    let (r0, y0, slope0) = previous;
+    if !(ratio.is_finite() && ratio > 1.0 && y0 > 0.0 && y0 <= NEWTON_Y_MAX) {
+        return None;
+    }
+    let y1 = y0 + (ratio - r0) / slope0;
+    if !(y1 > 0.0 && y1 <= NEWTON_Y_MAX) {
+        return None;
+    }
+    let (rf, rd) = rf_rd(y1).ok()?;
+    let s1 = (3.0 * rf - rd) / (y1 * rd);
+    let (drf, drd) = rf_rd_slopes(y1, rf, rd);
+    let q = y1 * rd;
+    let slope = 3.0 * (drf * q - rf * (rd + y1 * drd)) / (q * q) + 1.0 / (y1 * y1);
+    let dy = -(s1 - ratio) / slope;
+    if !(dy.abs() <= 1e-8 * y1) {
+        return None;
+    }
+    let y = y1 + dy;
+    Some(Inversion {
+        axis_ratio: y.sqrt(),
+        evaluations: 1,
+        rf_rd: (rf + drf * dy, rd + drd * dy),
+    })
+}
+
 /// Result of [`invert_shape_ratio_near`].
 pub(crate) struct Inversion {
     /// b/a.
@@ -264,6 +327,74 @@ mod tests {
             10 * warm_sum < 8 * cold_sum,
             "warm {warm_sum}, cold {cold_sum}"
         );
+    }
+
+    /// The slopes of R_F and R_D against central differences (h = 1e-6 y), and the shape
+    /// function's slope likewise, over k' from 0.03 to 0.99: to 1e-8 relative.
+    #[test]
+    fn slopes_match_central_differences() {
+        for i in 0..=40 {
+            let kp: f64 = 0.03 + 0.96 * i as f64 / 40.0;
+            let y = kp * kp;
+            let h = 1e-6 * y;
+            let (rf, rd) = rf_rd(y).unwrap();
+            let (p, m) = (rf_rd(y + h).unwrap(), rf_rd(y - h).unwrap());
+            let (drf, drd) = rf_rd_slopes(y, rf, rd);
+            assert_relative_eq!(drf, (p.0 - m.0) / (2.0 * h), max_relative = 1e-8);
+            assert_relative_eq!(drd, (p.1 - m.1) / (2.0 * h), max_relative = 1e-8);
+            let ds = (shape_ratio(y + h).unwrap() - shape_ratio(y - h).unwrap()) / (2.0 * h);
+            assert_relative_eq!(shape_slope(y, rf, rd), ds, max_relative = 1e-7);
+        }
+    }
+
+    /// The one-evaluation Newton inversion against the cold inversion, from the root of a
+    /// ratio 1e-9 to 1e-5 away (a contact element's step), over k' from 3e-4 to 0.99: the
+    /// same b/a, R_F and R_D as the cold start to 1e-14 (the warm-start test's tolerance), a
+    /// residual of the shape equation no larger than the cold root's (or within S's own
+    /// rounding), and R_F, R_D those of the root to 1e-15, in one evaluation. Steps it
+    /// cannot take exactly (1e-2, or the near-circle y > 0.999) return None.
+    #[test]
+    fn newton_inversion_is_exact_in_one_evaluation_or_declines() {
+        let mut taken = 0;
+        for i in 0..=80 {
+            let kp = 10f64.powf(-3.5 + 3.5 * i as f64 / 80.0).min(0.99);
+            let r0 = shape_ratio(kp * kp).unwrap();
+            let prev = invert_shape_ratio(r0).unwrap();
+            let y0 = prev.axis_ratio * prev.axis_ratio;
+            let slope0 = shape_slope(y0, prev.rf_rd.0, prev.rf_rd.1);
+            for step in [1e-9, -1e-7, 1e-5, -1e-5] {
+                let r = r0 * (1.0 + step);
+                let cold = invert_shape_ratio(r).unwrap();
+                let Some(warm) = invert_shape_ratio_newton(r, (r0, y0, slope0)) else {
+                    panic!("k' {kp}, step {step}: declined");
+                };
+                taken += 1;
+                assert_eq!(warm.evaluations, 1);
+                assert_relative_eq!(warm.axis_ratio, cold.axis_ratio, max_relative = 1e-14);
+                assert_relative_eq!(warm.rf_rd.0, cold.rf_rd.0, max_relative = 1e-14);
+                assert_relative_eq!(warm.rf_rd.1, cold.rf_rd.1, max_relative = 1e-14);
+                // As good a root as the cold one (whose secant stops at 4 ulps of ln k'), or
+                // within the rounding of S itself (a few ulps; up to 14 at k' = 4e-4).
+                let residual = |kp: f64| (shape_ratio(kp * kp).unwrap() / r - 1.0).abs();
+                let (rw, rc) = (residual(warm.axis_ratio), residual(cold.axis_ratio));
+                assert!(
+                    rw <= rc.max(32.0 * f64::EPSILON),
+                    "k' {kp}: {rw:e} vs {rc:e}"
+                );
+                // R_F and R_D carried along their slopes: those of the root to rounding.
+                let (rf, rd) = rf_rd(warm.axis_ratio * warm.axis_ratio).unwrap();
+                assert_relative_eq!(warm.rf_rd.0, rf, max_relative = 1e-15);
+                assert_relative_eq!(warm.rf_rd.1, rd, max_relative = 1e-15);
+            }
+            assert!(invert_shape_ratio_newton(r0 * 1.01, (r0, y0, slope0)).is_none());
+        }
+        assert!(taken > 300);
+        // Near the circle the slopes cancel: declined.
+        let r0 = shape_ratio(0.9995).unwrap();
+        let prev = invert_shape_ratio(r0).unwrap();
+        let y0 = prev.axis_ratio * prev.axis_ratio;
+        let slope0 = shape_slope(y0, prev.rf_rd.0, prev.rf_rd.1);
+        assert!(invert_shape_ratio_newton(r0 * (1.0 + 1e-9), (r0, y0, slope0)).is_none());
     }
 
     #[test]

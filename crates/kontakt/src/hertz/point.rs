@@ -153,6 +153,10 @@ pub struct HertzPointContact {
     delta_unit: Millimetre,
     /// Evaluations the shape inversion took.
     shape_evaluations: usize,
+    /// $d(B/A)/dy$ at the root, $y = (b/a)^2$ (for the next warm inversion; NaN for a
+    /// circle).
+    #[cfg_attr(feature = "serde", serde(skip))]
+    shape_slope: f64,
 }
 
 /// The state of a Hertz point contact at one load.
@@ -193,8 +197,11 @@ impl HertzPointContact {
 
     /// [`HertzPointContact::new`] with the shape inversion warm-started from `previous`, a
     /// contact of nearby curvature (for example the last call of a contact element along a
-    /// trajectory): 3 evaluations of the elliptic integrals on average instead of 4.3, the same
-    /// ellipse to a few ulps (tested).
+    /// trajectory): one evaluation of the elliptic integrals when the ratio B/A moved by
+    /// less than about 1e-4 (a Newton step on the exact slope kept from `previous`, for
+    /// b/a below 0.9995), else the safeguarded secant from `previous` (3 evaluations on
+    /// average for changes up to 1 %, against 4.3 cold); the same ellipse to a few ulps
+    /// (tested).
     ///
     /// # Errors
     /// As [`HertzPointContact::new`].
@@ -206,10 +213,26 @@ impl HertzPointContact {
     ) -> Result<Self> {
         let k = geometry.curvature;
         let e_star = effective_modulus(&body1, &body2);
-        let start = previous.map(|h| (h.geometry.curvature.ratio(), h.axis_ratio));
-        let inversion = elliptic::invert_shape_ratio_near(k.ratio(), start)?;
+        let ratio = k.ratio();
+        // One evaluation when the last root is near (Newton on the exact slope), else the
+        // safeguarded secant.
+        let newton = previous.and_then(|h| {
+            let y = h.axis_ratio * h.axis_ratio;
+            elliptic::invert_shape_ratio_newton(
+                ratio,
+                (h.geometry.curvature.ratio(), y, h.shape_slope),
+            )
+        });
+        let inversion = match newton {
+            Some(i) => i,
+            None => {
+                let start = previous.map(|h| (h.geometry.curvature.ratio(), h.axis_ratio));
+                elliptic::invert_shape_ratio_near(ratio, start)?
+            }
+        };
         let (axis_ratio, shape_evaluations) = (inversion.axis_ratio, inversion.evaluations);
         let (rf, rd) = inversion.rf_rd;
+        let shape_slope = elliptic::shape_slope(axis_ratio * axis_ratio, rf, rd);
         let a_unit = (rd / (2.0 * PI * e_star * k.a_coef)).cbrt();
         let delta_unit = 3.0 * rf / (2.0 * PI * a_unit * e_star);
         Ok(HertzPointContact {
@@ -220,6 +243,7 @@ impl HertzPointContact {
             a_unit,
             delta_unit,
             shape_evaluations,
+            shape_slope,
         })
     }
 
