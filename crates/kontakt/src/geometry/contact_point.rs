@@ -280,8 +280,13 @@ fn refine(a: &PlacedSurface, b: &PlacedSurface, start: Point3<f64>, scale: f64) 
                 break;
             }
         }
-        let m = b.sdf_hessian(&p) - a.sdf_hessian(&p) * nb.dot(&na);
-        let (a11, a12, a22) = (e1.dot(&(m * e1)), e1.dot(&(m * e2)), e2.dot(&(m * e2)));
+        // Eᵀ(∇²d_b − (n_b·n_a) K_a)E from each surface's quadratic form.
+        let (hb, ha, c) = (
+            b.sdf_hessian_form(&p, &e1, &e2),
+            a.sdf_hessian_form(&p, &e1, &e2),
+            nb.dot(&na),
+        );
+        let (a11, a12, a22) = (hb[0] - ha[0] * c, hb[1] - ha[1] * c, hb[2] - ha[2] * c);
         if !(a11.is_finite() && a12.is_finite() && a22.is_finite()) {
             break;
         }

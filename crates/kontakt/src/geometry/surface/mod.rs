@@ -208,8 +208,19 @@ pub(crate) trait Shape {
     }
     /// Principal curvatures (convex positive) and directions, unsorted.
     fn curvature(&self, p: &Point3<f64>) -> [(f64, Vector3<f64>); 2];
+    /// [`Shape::curvature`] and [`Shape::normal`] at once (a shape that finds the foot
+    /// for both overrides it to find it once).
+    fn curvature_normal(&self, p: &Point3<f64>) -> ([(f64, Vector3<f64>); 2], Vector3<f64>) {
+        (self.curvature(p), self.normal(p))
+    }
     /// Hessian of the signed distance at `p` (on the surface: the shape operator).
     fn sdf_hessian(&self, p: &Point3<f64>) -> Matrix3<f64>;
+    /// The Hessian's quadratic form on two directions: `[e1ᵀHe1, e1ᵀHe2, e2ᵀHe2]` (a
+    /// shape with a closed-form Hessian overrides it to skip the 3 × 3 matrix).
+    fn sdf_hessian_form(&self, p: &Point3<f64>, e1: &Vector3<f64>, e2: &Vector3<f64>) -> [f64; 3] {
+        let h = self.sdf_hessian(p);
+        [e1.dot(&(h * e1)), e1.dot(&(h * e2)), e2.dot(&(h * e2))]
+    }
     /// First crossing in `[t_min, t_max]`: `(t, point)`.
     fn intersect(
         &self,
@@ -351,7 +362,7 @@ impl Surface {
     /// $-\rho''/(1+\rho'^2)^{3/2}$ along the meridian, $1/(\rho\sqrt{1+\rho'^2})$ around.
     pub fn curvature(&self, p: &Point3<f64>) -> Curvature {
         let sign = self.sign();
-        let [(ka, da), (kb, db)] = dispatch!(self, s => s.curvature(p));
+        let ([(ka, da), (kb, db)], normal) = dispatch!(self, s => s.curvature_normal(p));
         let (ka, kb) = (sign * ka, sign * kb);
         let ((k1, d1), (k2, d2)) = if ka <= kb || kb.is_nan() {
             ((ka, da), (kb, db))
@@ -359,7 +370,7 @@ impl Surface {
             ((kb, db), (ka, da))
         };
         // Right-handed: d1 × d2 = outward normal.
-        let d2 = if d1.cross(&d2).dot(&self.normal(p)) < 0.0 {
+        let d2 = if d1.cross(&d2).dot(&(sign * normal)) < 0.0 {
             -d2
         } else {
             d2
@@ -435,11 +446,18 @@ impl Surface {
         (q, Unit::new_unchecked(sign * n), sign * d)
     }
 
-    /// Hessian \[1/mm\] of the signed distance at `p` (local frame). On the surface it is
-    /// the shape operator $\sum_i k_i\,\mathbf d_i \mathbf d_i^\mathsf T$; off the surface
-    /// the curvature of the parallel surface through `p`.
-    pub(crate) fn sdf_hessian(&self, p: &Point3<f64>) -> Matrix3<f64> {
-        self.sign() * dispatch!(self, s => s.sdf_hessian(p))
+    /// The quadratic form of the signed distance's Hessian \[1/mm\] at `p` (local frame) on
+    /// the directions `e1`, `e2`: `[e1ᵀHe1, e1ᵀHe2, e2ᵀHe2]`. On the surface the Hessian
+    /// is the shape operator $\sum_i k_i\,\mathbf d_i \mathbf d_i^\mathsf T$; off the
+    /// surface the curvature of the parallel surface through `p`.
+    pub(crate) fn sdf_hessian_form(
+        &self,
+        p: &Point3<f64>,
+        e1: &Vector3<f64>,
+        e2: &Vector3<f64>,
+    ) -> [f64; 3] {
+        let sign = self.sign();
+        dispatch!(self, s => s.sdf_hessian_form(p, e1, e2)).map(|h| sign * h)
     }
 }
 

@@ -2,7 +2,7 @@
 
 use super::{Curvature, Hit, Material, Ray, Surface};
 use crate::error::{Error, Result};
-use nalgebra::{Isometry3, Matrix3, Point3, Unit, Vector3};
+use nalgebra::{Isometry3, Point3, Unit, Vector3};
 
 /// A surface placed in the world: `pose` maps local coordinates to world coordinates
 /// (the body's frame in the global frame of a multi-body simulation, Wirsching et al. (2020) step
@@ -158,10 +158,20 @@ impl PlacedSurface {
         (self.pose.transform_point(&q), self.unit_to_world(&n), d)
     }
 
-    /// Hessian of the signed distance at the world point `p`, in world coordinates.
-    pub(crate) fn sdf_hessian(&self, p: &Point3<f64>) -> Matrix3<f64> {
-        let r = self.pose.rotation.to_rotation_matrix();
-        let h = self.surface.sdf_hessian(&self.to_local(p));
-        r.matrix() * h * r.matrix().transpose()
+    /// The quadratic form of the signed distance's Hessian at the world point `p` on the
+    /// world directions `e1`, `e2`: `[e1ᵀHe1, e1ᵀHe2, e2ᵀHe2]` \[1/mm\] (the directions
+    /// turned into the local frame instead of the Hessian into the world).
+    pub(crate) fn sdf_hessian_form(
+        &self,
+        p: &Point3<f64>,
+        e1: &Vector3<f64>,
+        e2: &Vector3<f64>,
+    ) -> [f64; 3] {
+        let r = &self.pose.rotation;
+        self.surface.sdf_hessian_form(
+            &self.to_local(p),
+            &r.inverse_transform_vector(e1),
+            &r.inverse_transform_vector(e2),
+        )
     }
 }
