@@ -38,8 +38,9 @@ impl SurfacePairGap {
     /// point of first contact).
     pub fn new(body1: PlacedSurface, body2: PlacedSurface, contact: ContactPoint) -> Result<Self> {
         let n = contact.normal;
-        let k1 = body1.curvature(&contact.point1);
-        let k2 = body2.curvature(&contact.point2);
+        // At the contact's feet, whose outward normals are -n (body 1) and n (body 2).
+        let k1 = body1.curvature_on(&contact.point1, &-n);
+        let k2 = body2.curvature_on(&contact.point2, &n);
         // x along body 1's first principal direction, projected into the plane.
         let ex = Unit::try_new(k1.d1.into_inner() - n.into_inner() * k1.d1.dot(&n), 1e-9)
             .or_else(|| any_perpendicular(&n))

@@ -213,6 +213,12 @@ pub(crate) trait Shape {
     fn curvature_normal(&self, p: &Point3<f64>) -> ([(f64, Vector3<f64>); 2], Vector3<f64>) {
         (self.curvature(p), self.normal(p))
     }
+    /// [`Shape::curvature`] at the surface point `q` whose outward normal `n` is known
+    /// (a contact search's foot): a shape whose curvature needs only the point and normal
+    /// overrides it to skip the foot search.
+    fn curvature_on(&self, q: &Point3<f64>, _n: &Vector3<f64>) -> [(f64, Vector3<f64>); 2] {
+        self.curvature(q)
+    }
     /// Hessian of the signed distance at `p` (on the surface: the shape operator).
     fn sdf_hessian(&self, p: &Point3<f64>) -> Matrix3<f64>;
     /// The Hessian's quadratic form on two directions: `[e1ᵀHe1, e1ᵀHe2, e2ᵀHe2]` (a
@@ -362,7 +368,25 @@ impl Surface {
     /// $-\rho''/(1+\rho'^2)^{3/2}$ along the meridian, $1/(\rho\sqrt{1+\rho'^2})$ around.
     pub fn curvature(&self, p: &Point3<f64>) -> Curvature {
         let sign = self.sign();
-        let ([(ka, da), (kb, db)], normal) = dispatch!(self, s => s.curvature_normal(p));
+        let (raw, normal) = dispatch!(self, s => s.curvature_normal(p));
+        Self::principal(raw, sign, &(sign * normal))
+    }
+
+    /// [`Surface::curvature`] at the point `q` on the surface whose outward normal is `n`
+    /// (local frame; the foot and normal of a contact search), without searching the foot
+    /// again where the shape allows (the torus).
+    pub(crate) fn curvature_on(&self, q: &Point3<f64>, n: &Unit<Vector3<f64>>) -> Curvature {
+        let sign = self.sign();
+        let raw = dispatch!(self, s => s.curvature_on(q, &(sign * n.into_inner())));
+        Self::principal(raw, sign, n)
+    }
+
+    /// Sorted, signed and right-handed about the outward normal `normal`.
+    fn principal(
+        [(ka, da), (kb, db)]: [(f64, Vector3<f64>); 2],
+        sign: f64,
+        normal: &Vector3<f64>,
+    ) -> Curvature {
         let (ka, kb) = (sign * ka, sign * kb);
         let ((k1, d1), (k2, d2)) = if ka <= kb || kb.is_nan() {
             ((ka, da), (kb, db))
@@ -370,7 +394,7 @@ impl Surface {
             ((kb, db), (ka, da))
         };
         // Right-handed: d1 × d2 = outward normal.
-        let d2 = if d1.cross(&d2).dot(&(sign * normal)) < 0.0 {
+        let d2 = if d1.cross(&d2).dot(normal) < 0.0 {
             -d2
         } else {
             d2

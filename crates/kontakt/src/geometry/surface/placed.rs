@@ -95,6 +95,18 @@ impl PlacedSurface {
         }
     }
 
+    /// [`PlacedSurface::curvature`] at the world point `q` on the surface whose outward
+    /// normal (world) is `n`: a contact search's foot, whose foot is not searched again.
+    pub(crate) fn curvature_on(&self, q: &Point3<f64>, n: &Unit<Vector3<f64>>) -> Curvature {
+        let local = Unit::new_unchecked(self.pose.inverse_transform_vector(n));
+        let c = self.surface.curvature_on(&self.to_local(q), &local);
+        Curvature {
+            d1: self.unit_to_world(&c.d1),
+            d2: self.unit_to_world(&c.d2),
+            ..c
+        }
+    }
+
     /// The nearest crossing of the world ray with the surface for `t` in `[t_min, t_max]`
     /// (see [`Surface::intersect`]); point and normal in world coordinates.
     pub fn intersect(&self, ray: &Ray, t_min: f64, t_max: f64) -> Option<Hit> {
