@@ -175,6 +175,9 @@ pub struct PimpTracker {
     v: Vec<f64>,
     stencil: SMatrix<f64, NODES_X, NODES_Y>,
     resizes: usize,
+    /// The last call's Hertz contact: the next shape inversion starts from it
+    /// ([`HertzPointContact::new_near`]: one evaluation of the elliptic integrals).
+    hertz: Option<HertzPointContact>,
 }
 
 impl PimpTracker {
@@ -238,6 +241,7 @@ impl PimpTracker {
             v: (0..ny).map(|j| grid.y(j)).collect(),
             stencil: SMatrix::zeros(),
             resizes: 0,
+            hertz: None,
         })
     }
 
@@ -291,6 +295,7 @@ impl PimpTracker {
     pub fn reset(&mut self) {
         self.lambda = None;
         self.fade = None;
+        self.hertz = None;
         for slot in &mut self.slots {
             slot.since_full = usize::MAX;
         }
@@ -309,11 +314,13 @@ impl PimpTracker {
     ) -> Result<TrackedField<'_>> {
         positive_as("approach", approach, "a finite approach > 0 mm")?;
         let curvature = source.curvature();
-        let hertz = HertzPointContact::new(
+        let hertz = HertzPointContact::new_near(
             PointGeometry::from_curvature(curvature),
             self.pimp.body1,
             self.pimp.body2,
+            self.hertz.as_ref(),
         )?;
+        self.hertz = Some(hertz);
         let bedding = Bedding::from_hertz(self.pimp.options.mode, curvature, &hertz)?;
         let start_unit = hertz.approach_from_force(1.0)?
             * match bedding.mode() {
