@@ -435,7 +435,7 @@ pub fn sliding_smoothness(semi_axes: [f64; 2], orientation: f64, field: &Velocit
 ///   [`EllipseRule::pressure_weighted`], 3 × 8 nodes for `ρ_s ≥ 8`, 3 × 12 for
 ///   `4 ≤ ρ_s < 8`, 4 × 16 for `2 ≤ ρ_s < 4` (errors below 1e-8, 3e-9 and 2e-7 of
 ///   `∫|τ| dA` over random ellipses, axis ratios down to 0.03, and poles);
-/// - a fluid part, `ρ_s ≥ 3`: 16 × 16 (the fluid law's knee near the rim converges
+/// - a fluid part, `ρ_s ≥ 2`: 16 × 16 (the fluid law's knee near the rim converges
 ///   algebraically: below 1.5e-3);
 /// - a rougher field (the pole near or inside the ellipse, where the sliding direction
 ///   turns round the pole): 16 × 32 (below 2e-3 outside, 5e-3 inside).
@@ -473,7 +473,7 @@ impl HertzFrictionRules {
     ) -> &EllipseRule {
         let rs = sliding_smoothness(semi_axes, orientation, field);
         match (law.has_fluid(), rs) {
-            (true, r) if r >= 3.0 => &self.fluid,
+            (true, r) if r >= 2.0 => &self.fluid,
             (false, r) if r >= 8.0 => &self.far,
             (false, r) if r >= 4.0 => &self.mid,
             (false, r) if r >= 2.0 => &self.near,
