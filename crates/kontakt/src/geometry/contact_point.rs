@@ -22,7 +22,7 @@
 
 use super::surface::{PlacedSurface, Surface, hypot, tangent_basis};
 use crate::error::{Error, Result};
-use nalgebra::{Point3, Unit, Vector3};
+use nalgebra::{Matrix3, Point3, Unit, Vector3};
 use std::f64::consts::{PI, TAU};
 
 /// The contact point of two placed surfaces, in world coordinates.
@@ -226,21 +226,72 @@ impl Solution {
     }
 }
 
+/// A placed surface with its rotation as a matrix (one conversion per search instead of a
+/// quaternion rotation for every point and direction: a Newton step turns about a dozen).
+struct Placed<'a> {
+    surface: &'a Surface,
+    /// Local → world rotation.
+    r: Matrix3<f64>,
+    /// Its transpose, world → local.
+    rt: Matrix3<f64>,
+    /// Local origin in the world \[mm\].
+    t: Vector3<f64>,
+}
+
+impl<'a> Placed<'a> {
+    fn new(s: &'a PlacedSurface) -> Self {
+        let r = *s.pose.rotation.to_rotation_matrix().matrix();
+        Placed {
+            surface: &s.surface,
+            r,
+            rt: r.transpose(),
+            t: s.pose.translation.vector,
+        }
+    }
+
+    fn to_local(&self, p: &Point3<f64>) -> Point3<f64> {
+        Point3::from(self.rt * (p.coords - self.t))
+    }
+
+    fn to_world(&self, q: &Point3<f64>) -> Point3<f64> {
+        Point3::from(self.r * q.coords + self.t)
+    }
+
+    /// [`PlacedSurface::closest_point`].
+    fn closest_point(&self, p: &Point3<f64>) -> (Point3<f64>, Vector3<f64>) {
+        let (q, n) = self.surface.closest_point(&self.to_local(p));
+        (self.to_world(&q), self.r * n.into_inner())
+    }
+
+    /// [`PlacedSurface::closest_point_distance`].
+    fn closest_point_distance(&self, p: &Point3<f64>) -> (Point3<f64>, Vector3<f64>, f64) {
+        let (q, n, d) = self.surface.closest_point_distance(&self.to_local(p));
+        (self.to_world(&q), self.r * n.into_inner(), d)
+    }
+
+    /// The quadratic form of the distance Hessian on two world directions
+    /// (`Surface::sdf_hessian_form` on the directions turned into the local frame).
+    fn sdf_hessian_form(&self, p: &Point3<f64>, e1: &Vector3<f64>, e2: &Vector3<f64>) -> [f64; 3] {
+        self.surface
+            .sdf_hessian_form(&self.to_local(p), &(self.rt * e1), &(self.rt * e2))
+    }
+}
+
 /// Newton / Levenberg–Marquardt minimisation of `b`'s signed distance over surface `a`.
 /// Iterates until the tangential gradient reaches [`GRAD_TARGET`] or stops decreasing
 /// after reaching [`GRAD_TOL`]; returns the best iterate.
 fn refine(a: &PlacedSurface, b: &PlacedSurface, start: Point3<f64>, scale: f64) -> Solution {
+    let (a, b) = (Placed::new(a), Placed::new(b));
     let eval = |p: Point3<f64>| {
         let (pb, nb, sd) = b.closest_point_distance(&p);
-        (sd, pb, nb.into_inner())
+        (sd, pb, nb)
     };
     let grad = |na: &Vector3<f64>, nb: &Vector3<f64>| {
         let (e1, e2) = tangent_basis(na);
         (e1, e2, nb.dot(&e1), nb.dot(&e2))
     };
     // The foot's normal is the normal at the foot (the same direction): no second foot.
-    let (mut p, na0) = a.closest_point(&start);
-    let mut na = na0.into_inner();
+    let (mut p, mut na) = a.closest_point(&start);
     let (mut sd, mut pb, mut nb) = eval(p);
     let mut best = Solution {
         pa: p,
@@ -318,7 +369,7 @@ fn refine(a: &PlacedSurface, b: &PlacedSurface, start: Point3<f64>, scale: f64) 
                 sd = sd_try;
                 pb = pb_try;
                 nb = nb_try;
-                na = na_try.into_inner();
+                na = na_try;
                 lambda *= 0.25;
                 if lambda < floor {
                     lambda = 0.0;

@@ -169,21 +169,4 @@ impl PlacedSurface {
         let (q, n, d) = self.surface.closest_point_distance(&self.to_local(p));
         (self.pose.transform_point(&q), self.unit_to_world(&n), d)
     }
-
-    /// The quadratic form of the signed distance's Hessian at the world point `p` on the
-    /// world directions `e1`, `e2`: `[e1ᵀHe1, e1ᵀHe2, e2ᵀHe2]` \[1/mm\] (the directions
-    /// turned into the local frame instead of the Hessian into the world).
-    pub(crate) fn sdf_hessian_form(
-        &self,
-        p: &Point3<f64>,
-        e1: &Vector3<f64>,
-        e2: &Vector3<f64>,
-    ) -> [f64; 3] {
-        let r = &self.pose.rotation;
-        self.surface.sdf_hessian_form(
-            &self.to_local(p),
-            &r.inverse_transform_vector(e1),
-            &r.inverse_transform_vector(e2),
-        )
-    }
 }
