@@ -311,8 +311,11 @@ impl HertzPointContact {
     /// # Errors
     /// Non-positive or non-finite approach; a result that over- or underflows f64.
     pub fn solve_approach(&self, approach: Millimetre) -> Result<HertzPointSolution> {
-        let force = self.force_from_approach(approach)?;
-        let mut s = self.solution(force);
+        crate::error::positive("approach", approach)?;
+        // F^(1/3) = (δ/δ₁)^(1/2): the square root of the force law's ratio, no cube root.
+        let r = approach / self.delta_unit;
+        let c = r.sqrt();
+        let mut s = self.solution_at(r * c, c);
         s.approach = approach;
         s.representable("approach", approach)
     }
@@ -323,7 +326,11 @@ impl HertzPointContact {
     }
 
     fn solution(&self, force: Newton) -> HertzPointSolution {
-        let c = force.cbrt();
+        self.solution_at(force, force.cbrt())
+    }
+
+    /// The solution at `force` whose cube root is `c`.
+    fn solution_at(&self, force: Newton, c: f64) -> HertzPointSolution {
         let a = self.a_unit * c;
         let b = self.axis_ratio * a;
         let area = PI * a * b;
