@@ -267,8 +267,8 @@ fn roller_rib_from_poses() {
     assert!((r.force1.normalize() - n).norm() < 1e-9);
 }
 
-/// Bad input: NaN pose, non-unit rotation, NaN twist, bad damping and validity; each error
-/// names its field.
+/// Bad input: NaN pose, non-unit rotation (of a pose or of a placement), NaN twist, bad
+/// damping and validity; each error names its field.
 #[test]
 fn bad_input_names_the_field() {
     let mut e = ContactElement::new(ball_on_flat()).unwrap();
@@ -313,6 +313,13 @@ fn bad_input_names_the_field() {
         Some("max_approach_ratio")
     );
     spec.max_approach_ratio = 0.01;
+    // A placement made as a struct literal, past PlacedSurface::new's check.
+    let mut placed = spec.clone();
+    placed.surface2.pose = skew;
+    assert_eq!(
+        ContactElement::new(placed).unwrap_err().field(),
+        Some("surface2.pose")
+    );
     spec.friction = FrictionLaw {
         boundary_coefficient: 2.0,
         ..FrictionLaw::coulomb(0.1).unwrap()

@@ -50,6 +50,7 @@ use crate::friction::{
     grid_friction_binned,
 };
 use crate::gap::{GapSource, SurfacePairGap};
+use crate::geometry::surface::check_pose;
 use crate::geometry::{
     BodyState, ContactFrame, ContactPair, Grid2, PlacedSurface, Twist, find_contact,
 };
@@ -264,7 +265,8 @@ impl ContactElement {
     /// Plan an element.
     ///
     /// # Errors
-    /// [`Error::InvalidInput`] naming the field: the friction law and film
+    /// [`Error::InvalidInput`] naming the field: `surface1.pose` / `surface2.pose` (the
+    /// placements: finite, unit quaternion), the friction law and film
     /// ([`FrictionLaw::with_film`]), `damping.coefficient` (finite, ≥ 0), `damping.ramp`
     /// (finite, > 0), `max_approach_ratio` (finite, > 0), and the back-end's options.
     pub fn new(spec: ElementSpec) -> Result<Self> {
@@ -281,6 +283,13 @@ impl ContactElement {
     /// As [`ContactElement::new`].
     pub fn with_planner(spec: ElementSpec, planner: Arc<Mutex<HalfSpacePlanner>>) -> Result<Self> {
         let law = spec.friction.with_film(&spec.film)?;
+        // A placement built as a struct literal bypasses PlacedSurface::new's check.
+        for (name, s) in [
+            ("surface1.pose", &spec.surface1),
+            ("surface2.pose", &spec.surface2),
+        ] {
+            check_pose(&s.pose).map_err(|e| e.map_field(|_| name.to_string()))?;
+        }
         if let Some(d) = spec.damping {
             if !(d.coefficient.is_finite() && d.coefficient >= 0.0) {
                 return Err(Error::invalid(
@@ -570,9 +579,14 @@ impl ContactElement {
     ) -> Result<ElementResult> {
         check_twist("twist1", twist1)?;
         check_twist("twist2", twist2)?;
+        // The poses are checked as given; a checked pose composed with a placement (itself
+        // checked when it was made) is a rigid transform.
         let place = |name: &'static str, pose: &Isometry3<f64>, s: &PlacedSurface| {
-            PlacedSurface::new(s.surface.clone(), pose * s.pose)
-                .map_err(|e| e.map_field(|_| name.to_string()))
+            check_pose(pose).map_err(|e| e.map_field(|_| name.to_string()))?;
+            Ok::<_, Error>(PlacedSurface {
+                surface: s.surface.clone(),
+                pose: pose * s.pose,
+            })
         };
         let p1 = place("pose1", pose1, &self.spec.surface1)?;
         let p2 = place("pose2", pose2, &self.spec.surface2)?;

@@ -39,6 +39,7 @@ mod trace;
 
 pub use cone::Cone;
 pub use placed::PlacedSurface;
+pub(crate) use placed::check_pose;
 pub use plane::Plane;
 pub use revolution::{Profile, Revolution};
 pub use sphere::Sphere;

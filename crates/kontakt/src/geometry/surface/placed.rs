@@ -26,19 +26,7 @@ impl PlacedSurface {
     /// [`Error::InvalidInput`] (field `pose`) when the translation or the rotation
     /// quaternion has a non-finite entry, or the quaternion is not of unit length (to 1e-9).
     pub fn new(surface: Surface, pose: Isometry3<f64>) -> Result<Self> {
-        let t = &pose.translation.vector;
-        let q = pose.rotation.quaternion().coords;
-        let finite = t.iter().chain(q.iter()).all(|c| c.is_finite());
-        if !finite || (q.norm() - 1.0).abs() > 1e-9 {
-            return Err(Error::invalid(
-                "pose",
-                format!(
-                    "translation [{}, {}, {}], rotation quaternion [w {}, i {}, j {}, k {}]",
-                    t.x, t.y, t.z, q.w, q.x, q.y, q.z
-                ),
-                "a rigid transform with a finite translation in mm and a finite unit quaternion",
-            ));
-        }
+        check_pose(&pose)?;
         Ok(PlacedSurface { surface, pose })
     }
 
@@ -169,4 +157,23 @@ impl PlacedSurface {
         let (q, n, d) = self.surface.closest_point_distance(&self.to_local(p));
         (self.pose.transform_point(&q), self.unit_to_world(&n), d)
     }
+}
+
+/// The check of [`PlacedSurface::new`]: a finite translation and a finite unit quaternion
+/// (to 1e-9); else [`Error::InvalidInput`] for the field `pose`.
+pub(crate) fn check_pose(pose: &Isometry3<f64>) -> Result<()> {
+    let t = &pose.translation.vector;
+    let q = pose.rotation.quaternion().coords;
+    let finite = t.iter().chain(q.iter()).all(|c| c.is_finite());
+    if !finite || (q.norm() - 1.0).abs() > 1e-9 {
+        return Err(Error::invalid(
+            "pose",
+            format!(
+                "translation [{}, {}, {}], rotation quaternion [w {}, i {}, j {}, k {}]",
+                t.x, t.y, t.z, q.w, q.x, q.y, q.z
+            ),
+            "a rigid transform with a finite translation in mm and a finite unit quaternion",
+        ));
+    }
+    Ok(())
 }
