@@ -211,6 +211,21 @@ pub fn ellipse_friction(
     law: &CellLaw,
     rule: &EllipseRule,
 ) -> Result<GridFriction> {
+    match checked(semi_axes, orientation, max_pressure, field)? {
+        Some(map) => mapped_friction(&map, semi_axes, max_pressure, law, rule),
+        None => Ok(GridFriction::default()),
+    }
+}
+
+/// The inputs of [`ellipse_friction`] checked, and the map of the unit disc onto the
+/// ellipse with the sliding field on it; `None` where the friction is zero (no pressure,
+/// a degenerate ellipse).
+fn checked(
+    semi_axes: [f64; 2],
+    orientation: f64,
+    max_pressure: f64,
+    field: &VelocityField,
+) -> Result<Option<DiscMap>> {
     let [a, b] = semi_axes;
     if !(a.is_finite() && b.is_finite() && a >= 0.0 && b >= 0.0 && orientation.is_finite()) {
         return Err(Error::invalid(
@@ -234,15 +249,75 @@ pub fn ellipse_friction(
         ));
     }
     if max_pressure == 0.0 || a == 0.0 || b == 0.0 {
-        return Ok(GridFriction::default());
+        return Ok(None);
     }
-    let (s, c) = orientation.sin_cos();
-    // Grid-frame point of the unit-disc node (u, w): x = c a u − s b w, y = s a u + c b w.
-    let (xu, xw, yu, yw) = (c * a, -s * b, s * a, c * b);
-    let [o, dx, dy] = field.sliding;
-    // The sliding velocity as an affine function of the unit-disc node.
-    let (vxu, vxw) = (xu * dx[0] + yu * dy[0], xw * dx[0] + yw * dy[0]);
-    let (vyu, vyw) = (xu * dx[1] + yu * dy[1], xw * dx[1] + yw * dy[1]);
+    Ok(Some(DiscMap::new(semi_axes, orientation, field)))
+}
+
+/// The unit disc mapped onto the ellipse (turned by `orientation` in the grid frame) and
+/// the sliding field as an affine function on it.
+#[derive(Debug, Clone, Copy)]
+struct DiscMap {
+    /// Grid-frame point of the unit-disc node (u, w): x = xu u + xw w, y = yu u + yw w
+    /// \[mm\]: `[xu, xw, yu, yw]`.
+    x: [f64; 4],
+    /// Sliding velocity at the centre \[mm/s\].
+    o: [f64; 2],
+    /// Its change per unit of u and w: `[∂v_x/∂u, ∂v_x/∂w, ∂v_y/∂u, ∂v_y/∂w]` \[mm/s\].
+    m: [f64; 4],
+}
+
+impl DiscMap {
+    fn new([a, b]: [f64; 2], orientation: f64, field: &VelocityField) -> Self {
+        let (s, c) = orientation.sin_cos();
+        // x = c a u − s b w, y = s a u + c b w.
+        let (xu, xw, yu, yw) = (c * a, -s * b, s * a, c * b);
+        let [o, dx, dy] = field.sliding;
+        DiscMap {
+            x: [xu, xw, yu, yw],
+            o,
+            m: [
+                xu * dx[0] + yu * dy[0],
+                xw * dx[0] + yw * dy[0],
+                xu * dx[1] + yu * dy[1],
+                xw * dx[1] + yw * dy[1],
+            ],
+        }
+    }
+
+    /// [`sliding_pole_radius`].
+    fn pole_radius(&self) -> f64 {
+        let ([vxu, vxw, vyu, vyw], o) = (self.m, self.o);
+        // M (u, w) = −o: (u, w) = −adj(M) o / det M.
+        let det = vxu * vyw - vxw * vyu;
+        let (nu, nw) = (vyw * o[0] - vxw * o[1], -vyu * o[0] + vxu * o[1]);
+        let r = nu.hypot(nw) / det.abs();
+        if r.is_nan() { f64::INFINITY } else { r }
+    }
+
+    /// [`sliding_smoothness`].
+    fn smoothness(&self) -> f64 {
+        let m = self.m;
+        // ‖M‖₂² = (|M|_F² + √(|M|_F⁴ − 4 det²)) / 2.
+        let fro2 = m.iter().map(|v| v * v).sum::<f64>();
+        let det = m[0] * m[3] - m[1] * m[2];
+        let norm = (0.5 * (fro2 + (fro2 * fro2 - 4.0 * det * det).max(0.0).sqrt())).sqrt();
+        let r = self.o[0].hypot(self.o[1]) / norm;
+        if r.is_nan() { f64::INFINITY } else { r }
+    }
+}
+
+/// The friction sums over the ellipse of `map` by `rule` (inputs checked).
+fn mapped_friction(
+    map: &DiscMap,
+    [a, b]: [f64; 2],
+    max_pressure: f64,
+    law: &CellLaw,
+    rule: &EllipseRule,
+) -> Result<GridFriction> {
+    let [xu, xw, yu, yw] = map.x;
+    let o = map.o;
+    let [vxu, vxw, vyu, vyw] = map.m;
     let (mb, eps2) = (law.boundary_coefficient(), law.regularisation_squared());
     let fluid = law.has_fluid();
     // Sums over the nodes of w·k̂·(v_x, v_y, u v_y − … , |v|²) with k = p₀ k̂ for the boundary
@@ -386,17 +461,7 @@ fn boundary_sums(
 /// disc that maps onto the ellipse (`ρ_p < 1`: inside the ellipse; infinity for a field
 /// without spin). Same arguments as [`ellipse_friction`].
 pub fn sliding_pole_radius(semi_axes: [f64; 2], orientation: f64, field: &VelocityField) -> f64 {
-    let [a, b] = semi_axes;
-    let (s, c) = orientation.sin_cos();
-    let (xu, xw, yu, yw) = (c * a, -s * b, s * a, c * b);
-    let [o, dx, dy] = field.sliding;
-    let (vxu, vxw) = (xu * dx[0] + yu * dy[0], xw * dx[0] + yw * dy[0]);
-    let (vyu, vyw) = (xu * dx[1] + yu * dy[1], xw * dx[1] + yw * dy[1]);
-    // M (u, w) = −o with M = [[vxu, vxw], [vyu, vyw]]: (u, w) = −adj(M) o / det M.
-    let det = vxu * vyw - vxw * vyu;
-    let (nu, nw) = (vyw * o[0] - vxw * o[1], -vyu * o[0] + vxu * o[1]);
-    let r = nu.hypot(nw) / det.abs();
-    if r.is_nan() { f64::INFINITY } else { r }
+    DiscMap::new(semi_axes, orientation, field).pole_radius()
 }
 
 /// How smooth the sliding field is over the ellipse: `ρ_s = |v(0)| / ‖M‖₂`, the sliding
@@ -409,22 +474,7 @@ pub fn sliding_pole_radius(semi_axes: [f64; 2], orientation: f64, field: &Veloci
 /// for a uniform sliding (no gradient), 0 where the centre does not slide. Same arguments
 /// as [`ellipse_friction`].
 pub fn sliding_smoothness(semi_axes: [f64; 2], orientation: f64, field: &VelocityField) -> f64 {
-    let [a, b] = semi_axes;
-    let (s, c) = orientation.sin_cos();
-    let (xu, xw, yu, yw) = (c * a, -s * b, s * a, c * b);
-    let [o, dx, dy] = field.sliding;
-    let m = [
-        xu * dx[0] + yu * dy[0],
-        xw * dx[0] + yw * dy[0],
-        xu * dx[1] + yu * dy[1],
-        xw * dx[1] + yw * dy[1],
-    ];
-    // ‖M‖₂² = (|M|_F² + √(|M|_F⁴ − 4 det²)) / 2.
-    let fro2 = m.iter().map(|v| v * v).sum::<f64>();
-    let det = m[0] * m[3] - m[1] * m[2];
-    let norm = (0.5 * (fro2 + (fro2 * fro2 - 4.0 * det * det).max(0.0).sqrt())).sqrt();
-    let r = o[0].hypot(o[1]) / norm;
-    if r.is_nan() { f64::INFINITY } else { r }
+    DiscMap::new(semi_axes, orientation, field).smoothness()
 }
 
 /// The contact element's rules and the choice between them (accuracy in
@@ -471,8 +521,11 @@ impl HertzFrictionRules {
         field: &VelocityField,
         law: &CellLaw,
     ) -> &EllipseRule {
-        let rs = sliding_smoothness(semi_axes, orientation, field);
-        match (law.has_fluid(), rs) {
+        self.select_on(&DiscMap::new(semi_axes, orientation, field), law)
+    }
+
+    fn select_on(&self, map: &DiscMap, law: &CellLaw) -> &EllipseRule {
+        match (law.has_fluid(), map.smoothness()) {
             (true, r) if r >= 2.0 => &self.fluid,
             (false, r) if r >= 8.0 => &self.far,
             (false, r) if r >= 4.0 => &self.mid,
@@ -493,7 +546,16 @@ impl HertzFrictionRules {
         field: &VelocityField,
         law: &CellLaw,
     ) -> Result<GridFriction> {
-        let rule = self.select(semi_axes, orientation, field, law);
-        ellipse_friction(semi_axes, orientation, max_pressure, field, law, rule)
+        // One map for the choice and the sums.
+        match checked(semi_axes, orientation, max_pressure, field)? {
+            Some(map) => mapped_friction(
+                &map,
+                semi_axes,
+                max_pressure,
+                law,
+                self.select_on(&map, law),
+            ),
+            None => Ok(GridFriction::default()),
+        }
     }
 }
