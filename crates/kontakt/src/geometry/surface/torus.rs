@@ -446,18 +446,21 @@ impl Shape for Torus {
 
     fn sdf_hessian_form(&self, p: &Point3<f64>, e1: &Vector3<f64>, e2: &Vector3<f64>) -> [f64; 3] {
         let tiny = f64::MIN_POSITIVE.sqrt();
-        let (er, rho) = radial_fast(p);
-        if self.cusp(rho, p.z).is_some() {
+        let rho = hypot(p.x, p.y);
+        if self.cusp(rho, p.z).is_some() || !(rho > 0.0) {
             let h = self.sdf_hessian(p);
             return [e1.dot(&(h * e1)), e1.dot(&(h * e2)), e2.dot(&(h * e2))];
         }
-        // H = m mᵀ / D + t tᵀ (a/D)/ρ (see sdf_hessian): the form from the projections.
+        // H = m mᵀ / D + t tᵀ (a/D)/ρ (see sdf_hessian): the form from the projections,
+        // with two divisions (1/ρ, 1/D) instead of six.
+        let inv_rho = 1.0 / rho;
+        let er = Vector3::new(p.x * inv_rho, p.y * inv_rho, 0.0);
         let a = rho - self.major;
-        let dd = hypot(a, p.z).max(tiny);
-        let n = Self::tube_normal(&er, a, p.z, dd);
+        let inv_dd = 1.0 / hypot(a, p.z).max(tiny);
+        let n = er * (a * inv_dd) + Vector3::z() * (p.z * inv_dd);
         let around = Vector3::new(-er.y, er.x, 0.0);
         let meridian = around.cross(&n);
-        let (km, kt) = (1.0 / dd, (a / dd) / rho.max(tiny));
+        let (km, kt) = (inv_dd, a * inv_dd * inv_rho);
         let (m1, m2, t1, t2) = (
             meridian.dot(e1),
             meridian.dot(e2),
