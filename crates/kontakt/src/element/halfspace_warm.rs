@@ -18,7 +18,7 @@
 //! it beyond the discretisation.
 
 use crate::error::{Error, Result};
-use crate::field::{ContactZone, ZoneScratch};
+use crate::field::ContactZone;
 use crate::gap::GapSource;
 use crate::geometry::Grid2;
 use crate::halfspace::{Bem, Control, HalfSpaceSolver, Start};
@@ -54,10 +54,9 @@ struct State {
     gap: Vec<f64>,
     /// Zeros of the grid's size: the field when the approach reaches no cell centre.
     zeros: Vec<f64>,
-    /// The zone of the solver's last pressure field.
+    /// The zone of the solver's last pressure field (on warm calls its one-pass
+    /// summary, [`ContactZone::summarise`]: the element needs no patch count or shape).
     zone: ContactZone,
-    /// Work arrays of the zone analysis, kept so that a warm call allocates nothing.
-    zone_scratch: ZoneScratch,
     /// The interpolated gap of the warm calls (`None`: ray-cast every cell).
     stencil: Option<Stencil>,
 }
@@ -214,8 +213,7 @@ impl WarmHalfSpace {
                 // A warm solve that does not converge is not the answer: lay a grid and
                 // solve from cold (whose non-convergence is then an error).
                 report.status.converged() && {
-                    st.zone =
-                        ContactZone::analyse_in(&grid, st.solver.pressure(), &mut st.zone_scratch)?;
+                    st.zone = ContactZone::summarise(&grid, st.solver.pressure())?;
                     fits(&grid, &st.zone)
                 }
             }
@@ -282,7 +280,6 @@ impl WarmHalfSpace {
                 zeros: vec![0.0; gap.len()],
                 gap,
                 zone,
-                zone_scratch: ZoneScratch::default(),
                 stencil: Stencil::new(&grid),
             });
             return Ok(iterations);

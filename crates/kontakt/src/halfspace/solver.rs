@@ -662,6 +662,9 @@ impl HalfSpaceSolver {
             let mut sum_u2 = 0.0;
             let mut big_g = 0.0;
             let mut overlap2 = 0.0;
+            // Σ g over the loaded cells under approach control, for the preconditioner's
+            // mean (from -0.0 in cell order, as `Iterator::sum`: the same bits).
+            let mut loaded_g = -0.0f64;
             let cells = g.iter_mut().zip(u.iter()).zip(gap).zip(p.iter());
             match control {
                 Control::Force(_) => {
@@ -694,6 +697,7 @@ impl HalfSpaceSolver {
                             n_c += 1;
                             sum_u2 += ui * ui;
                             big_g += v * v;
+                            loaded_g += v;
                         } else if v < 0.0 {
                             overlap2 += v * v;
                         }
@@ -762,7 +766,7 @@ impl HalfSpaceSolver {
                 let cells = n_c.max(1) as f64;
                 let g_mean = match control {
                     Control::Force(_) => 0.0,
-                    _ => sum_over_loaded(p, g) / cells,
+                    _ => loaded_g / cells,
                 };
                 for ((w, &pi), &gi) in pc.w.iter_mut().zip(p.iter()).zip(g.iter()) {
                     *w = if pi > 0.0 { gi - g_mean } else { 0.0 };
