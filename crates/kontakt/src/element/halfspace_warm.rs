@@ -274,6 +274,7 @@ impl WarmHalfSpace {
             }
             crate::field::domain::check_resolution(&grid, &zone)?;
             solver.set_incremental_updates(true);
+            solver.set_secant_only(true);
             self.state = Some(State {
                 solver,
                 rotation,
