@@ -178,9 +178,10 @@ pub struct HalfSpaceSolver {
     /// Whether [`Start::Secant`] leaves out the Hertz-like estimate once two solves are
     /// recorded ([`HalfSpaceSolver::set_secant_only`]).
     secant_only: bool,
-    /// Hertz-like estimates in a row in `guess` (and the secant's `guess_before`) that
-    /// belong to the solves before: a start that skips the estimate sets it to 0, and a
-    /// start uses the estimate's change only over fresh ones.
+    /// Hertz-like estimates made since a start last skipped it (from the first solve
+    /// on when none did): with 1 or more `guess` is the last solve's, with 2 or more the
+    /// secant's `guess_before` the one before's. A start uses the estimate's change only
+    /// over fresh ones.
     fresh_guesses: usize,
     /// A bound on the round-off of `u` in units of one update's (a step's `u -= τ r`, an
     /// influence correction): the updates since `u` was last computed by a convolution,
@@ -536,7 +537,7 @@ impl HalfSpaceSolver {
                 }
             }
             std::mem::swap(&mut self.t, &mut self.guess);
-            self.fresh_guesses += 1;
+            self.fresh_guesses = self.fresh_guesses.saturating_add(1);
             if !self.p.iter().any(|&v| v > 0.0) {
                 // The previous zone and the new one do not overlap (or the last solve
                 // loaded nothing): no loaded cell to iterate on, so start cold.
@@ -544,7 +545,7 @@ impl HalfSpaceSolver {
             }
         } else {
             hertz_guess(gap, control, h_min, self.e_star, da, &mut self.guess);
-            self.fresh_guesses = 1;
+            self.fresh_guesses = self.fresh_guesses.saturating_add(1);
             self.p.copy_from_slice(&self.guess);
         }
         if let Control::Force(f) = control {
@@ -731,13 +732,13 @@ impl HalfSpaceSolver {
                 .filter(|v| **v < floor)
                 .for_each(|v| *v = 0.0);
             std::mem::swap(&mut self.t, &mut self.guess);
-            self.fresh_guesses += 1;
+            self.fresh_guesses = self.fresh_guesses.saturating_add(1);
             if !self.p.iter().any(|&v| v > 0.0) {
                 self.p.copy_from_slice(&self.guess);
             }
         } else {
             hertz_guess(gap, control, h_min, self.e_star, da, &mut self.guess);
-            self.fresh_guesses = 1;
+            self.fresh_guesses = self.fresh_guesses.saturating_add(1);
             self.p.copy_from_slice(&self.guess);
         }
         std::mem::swap(&mut sec.s_last, &mut sec.s_before);
