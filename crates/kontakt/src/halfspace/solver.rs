@@ -991,6 +991,9 @@ impl HalfSpaceSolver {
             let mut changed_set = false;
             let mut reset = false;
             let mut total = 0.0;
+            // (The total pressure only rescales the field under load control: a serial
+            // sum over every cell saved under approach control.)
+            let load_control = matches!(control, Control::Force(_));
             changes.clear();
             let mut overflow = quadrant.is_none();
             let step = p
@@ -1028,7 +1031,9 @@ impl HalfSpaceSolver {
                     }
                 }
                 *ui -= tau * ri;
-                total += *pi;
+                if load_control {
+                    total += *pi;
+                }
             }
             conjugate = !reset;
             if changed_set {
