@@ -72,9 +72,11 @@ const NODES: usize = 9;
 struct Stencil {
     xs: [f64; NODES],
     ys: [f64; NODES],
-    /// Lagrange weights of the nodes at each cell centre: `wx[i]` along x, `wy[j]` along y.
+    /// Lagrange weights of the nodes at each cell centre: `wx[i]` along x, `wy[j]` along y,
+    /// and `wx` node-major, `wx_t[k * nx + i] = wx[i][k]`.
     wx: Vec<[f64; NODES]>,
     wy: Vec<[f64; NODES]>,
+    wx_t: Vec<f64>,
     /// Exact gaps at the nodes, `values[l * NODES + k]` at `(xs[k], ys[l])`.
     values: [f64; NODES * NODES],
     /// The rays' warm-start data (`GapSource::sample_points`).
@@ -95,10 +97,15 @@ impl Stencil {
         };
         let xs = nodes(grid.x(0), grid.x(nx - 1));
         let ys = nodes(grid.y(0), grid.y(ny - 1));
+        let wx: Vec<[f64; NODES]> = (0..nx).map(|i| lagrange(grid.x(i), &xs)).collect();
+        let wx_t = (0..NODES)
+            .flat_map(|k| wx.iter().map(move |w| w[k]))
+            .collect();
         Some(Stencil {
             xs,
             ys,
-            wx: (0..nx).map(|i| lagrange(grid.x(i), &xs)).collect(),
+            wx,
+            wx_t,
             wy: (0..ny).map(|j| lagrange(grid.y(j), &ys)).collect(),
             values: [0.0; NODES * NODES],
             warm: vec![[f64::INFINITY; 2]; NODES * NODES],
@@ -128,8 +135,13 @@ impl Stencil {
                     *ak += w * fk;
                 }
             }
-            for (o, wx) in row.iter_mut().zip(&self.wx) {
-                *o = wx.iter().zip(&a).map(|(w, ak)| w * ak).sum();
+            // Then along x, node by node over the row (vectorisable across the cells;
+            // each cell's sum from -0.0 in node order, as `Iterator::sum`: same bits).
+            row.fill(-0.0);
+            for (wk, &ak) in self.wx_t.chunks_exact(nx).zip(&a) {
+                for (o, &w) in row.iter_mut().zip(wk) {
+                    *o += w * ak;
+                }
             }
         }
         Ok(true)
@@ -199,7 +211,7 @@ impl WarmHalfSpace {
                 if !interpolated {
                     source.sample(&grid, st.rotation, &mut st.gap)?;
                 }
-                let h_min = st.gap.iter().copied().fold(f64::INFINITY, f64::min);
+                let h_min = crate::halfspace::smallest(&st.gap);
                 if approach <= h_min {
                     // The bodies overlap by less than the gap at any cell centre: no
                     // cell is loaded; the grid is kept for the next call.

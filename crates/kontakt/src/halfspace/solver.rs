@@ -502,7 +502,7 @@ impl HalfSpaceSolver {
                 "finite values in mm, or +inf where the bodies cannot meet",
             ));
         }
-        let h_min = gap.iter().copied().fold(f64::INFINITY, f64::min);
+        let h_min = smallest(gap);
         if !h_min.is_finite() {
             return Err(Error::Geometry {
                 field: "gap".into(),
@@ -1104,13 +1104,35 @@ fn add_influence(rows: &[f64], nx: usize, cell: usize, dp: f64, u: &mut [f64]) {
     }
 }
 
-/// `Σ v` over the loaded cells (`p > 0`).
+/// The smallest of `values` (no NaN; `+inf` when empty): the minimum of four interleaved
+/// running minima, so that the comparisons do not wait on each other. A minimum does not
+/// round, so it is `fold(f64::INFINITY, f64::min)`'s value in any order.
+pub(crate) fn smallest(values: &[f64]) -> f64 {
+    let mut m = [f64::INFINITY; 4];
+    let mut chunks = values.chunks_exact(4);
+    for c in &mut chunks {
+        for (mk, &v) in m.iter_mut().zip(c) {
+            *mk = if v < *mk { v } else { *mk };
+        }
+    }
+    let rest = chunks
+        .remainder()
+        .iter()
+        .copied()
+        .fold(f64::INFINITY, f64::min);
+    m.into_iter().fold(rest, f64::min)
+}
+
+/// `Σ v` over the loaded cells (`p > 0`), in cell order from -0.0 as `Iterator::sum`
+/// over the filtered cells: an unloaded cell adds -0.0, which leaves every sum as it is
+/// (also ±0), so the bits are the filtered sum's, and the sum's dependency chain holds the
+/// additions only (the select between `v` and -0.0 is off it).
 fn sum_over_loaded(p: &[f64], v: &[f64]) -> f64 {
-    p.iter()
-        .zip(v)
-        .filter(|(pi, _)| **pi > 0.0)
-        .map(|(_, vi)| *vi)
-        .sum()
+    let mut sum = -0.0f64;
+    for (&pi, &vi) in p.iter().zip(v) {
+        sum += if pi > 0.0 { vi } else { -0.0 };
+    }
+    sum
 }
 
 /// The Hertz-like start `p ∝ sqrt(d - h)` on `{h < d}` into `out` \[MPa\]. Under load
