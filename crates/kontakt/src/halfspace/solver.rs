@@ -1199,6 +1199,64 @@ fn hertz_guess(gap: &[f64], control: Control, h_min: f64, e_star: f64, da: f64, 
 mod tests {
     use super::*;
 
+    /// The secant start without the estimate and with the extrapolated displacement
+    /// ([`HalfSpaceSolver::set_secant_only`] with incremental updates): along 300 solves of
+    /// a sphere's gap (R = 10 mm, 64 × 64 cells) moving back and forth across the grid by
+    /// 0.1 % of the zone's width per solve, and alternating in approach by 1 %, the
+    /// displacement the solver ends on stays within 1e-12 of `C p` recomputed by the
+    /// operator, and most starts need no convolution.
+    #[test]
+    fn extrapolated_displacement_stays_the_operators() {
+        let grid = Grid2::centered(0.4, 0.4, 64, 64).unwrap();
+        let mut solver = HalfSpaceSolver::new(
+            grid,
+            115_000.0,
+            SolverOptions {
+                tolerance: 1e-6,
+                threads: Some(1),
+                ..SolverOptions::default()
+            },
+        )
+        .unwrap();
+        solver.set_incremental_updates(true);
+        solver.set_secant_only(true);
+        let mut gap = vec![0.0; grid.len()];
+        let mut check = vec![0.0; grid.len()];
+        let (mut worst, mut free_starts) = (0.0f64, 0);
+        for k in 0..300usize {
+            let m = k % 100;
+            let tri = if m < 50 { m } else { 100 - m } as f64 - 25.0;
+            let (x0, delta) = if k < 150 {
+                (tri * 5e-4, 0.004)
+            } else {
+                (0.0, 0.004 * if k % 2 == 0 { 1.0 } else { 1.0067 })
+            };
+            for ((x, y), h) in grid.points().zip(gap.iter_mut()) {
+                *h = ((x - x0) * (x - x0) + y * y) / 20.0;
+            }
+            let report = solver
+                .solve(&gap, Control::Approach(delta), Start::Secant)
+                .unwrap()
+                .require_converged()
+                .unwrap();
+            if report.applications == 2 * report.status.iterations {
+                free_starts += 1;
+            }
+            solver.plan().apply(solver.pressure(), &mut check).unwrap();
+            let u_max = check.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+            let err = check
+                .iter()
+                .zip(solver.displacement())
+                .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+            worst = worst.max(err / u_max);
+        }
+        eprintln!(
+            "extrapolated displacement: error {worst:.1e} of u, {free_starts} of 300 starts without a convolution"
+        );
+        assert!(worst < 1e-12, "{worst:e}");
+        assert!(free_starts > 150, "{free_starts}");
+    }
+
     /// The displacement of a few cells' pressures by their influence coefficients equals
     /// the FFT operator's to round-off (a 20 × 13 grid of oblong cells, cells at the
     /// corners, the edges and inside).
