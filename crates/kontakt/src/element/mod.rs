@@ -24,7 +24,8 @@
 //!    placed surfaces.
 //! 4. Friction: the law over the pressure with the sliding field of the two twists, scaled
 //!    to the back-end's normal force: [`crate::friction::grid_friction`] over the field
-//!    solvers' grids (PimP's tracked grid: [`crate::friction::grid_friction_binned`], blocks
+//!    solvers' grids (PimP's tracked grid and the half-space back-end's warm grid:
+//!    [`crate::friction::grid_friction_binned`], blocks
 //!    of 4 to 16 cells per evaluation of the law where the sliding varies little); for
 //!    Hertz, [`crate::friction::HertzFrictionRules`], a polar quadrature of the
 //!    semi-ellipsoid (24 to 512 nodes by the law and the sliding field's smoothness; no
@@ -220,7 +221,8 @@ pub const PRESS_STEPS: usize = 100;
 enum Samples<'a> {
     /// A field on a grid (PimP, the half-space solver).
     Grid(Grid2, &'a [f64]),
-    /// PimP's field on its grid: the friction by [`grid_friction_binned`].
+    /// PimP's tracked field or the half-space back-end's kept grid: the friction by
+    /// [`grid_friction_binned`].
     Binned(Grid2, &'a [f64]),
     /// Hertz's semi-ellipsoid, integrated by the element's [`HertzFrictionRules`].
     Ellipse {
@@ -666,7 +668,7 @@ impl ContactElement {
                     .warm
                     .solve(bem, &gap, approach, self.spec.warm_tolerance)?;
                 FieldView {
-                    samples: Samples::Grid(w.grid, w.pressure),
+                    samples: Samples::Binned(w.grid, w.pressure),
                     orientation: w.rotation,
                     centroid: w.zone.centroid,
                     force: w.force,

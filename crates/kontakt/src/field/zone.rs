@@ -65,6 +65,24 @@ impl ContactZone {
     /// # Errors
     /// [`crate::Error::InvalidInput`] when the lengths disagree.
     pub fn analyse_in(grid: &Grid2, pressure: &[f64], scratch: &mut ZoneScratch) -> Result<Self> {
+        let mut zone = Self::summarise(grid, pressure)?;
+        if zone.patches > 0 {
+            let (nx, ny) = (grid.nx(), grid.ny());
+            zone.patches = count_patches(nx, ny, pressure, scratch);
+            zone.centre_line_curvature = centre_line_curvature(grid, pressure, zone.centroid[0]);
+        }
+        Ok(zone)
+    }
+
+    /// The one-pass part of [`ContactZone::analyse`]: area, force, largest pressure and
+    /// where it acts, extents, centre of pressure and border contact, the same values bit
+    /// for bit; the patches are not counted (`patches` is 1 when a cell is loaded, 0
+    /// otherwise) and the centre line's curvature is `None`. For callers that need no
+    /// shape (the contact element's warm half-space calls); allocates nothing.
+    ///
+    /// # Errors
+    /// [`crate::Error::InvalidInput`] when the lengths disagree.
+    pub(crate) fn summarise(grid: &Grid2, pressure: &[f64]) -> Result<Self> {
         check_len(grid, pressure)?;
         let (nx, ny) = (grid.nx(), grid.ny());
         let da = grid.cell_area();
@@ -110,8 +128,8 @@ impl ContactZone {
                 [grid.y(j0) - 0.5 * dy, grid.y(j1) + 0.5 * dy],
             ],
             centroid,
-            patches: count_patches(nx, ny, pressure, scratch),
-            centre_line_curvature: centre_line_curvature(grid, pressure, centroid[0]),
+            patches: 1,
+            centre_line_curvature: None,
             touches_border: border,
         })
     }

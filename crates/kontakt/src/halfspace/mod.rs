@@ -44,4 +44,5 @@ pub use contact::{Bem, BemOptions, BemSolution, HalfSpaceDetail, ZoneEstimate};
 pub use operator::{Boundary, ElasticOperator, HalfSpacePlan, OperatorScratch};
 pub(crate) use operator::{PaddedFfts, Parity};
 pub use planner::HalfSpacePlanner;
+pub(crate) use solver::smallest;
 pub use solver::{Control, HalfSpaceSolver, Preconditioner, SolveReport, SolverOptions, Start};
