@@ -31,6 +31,33 @@ fn roller_rib() -> (ElementSpec, impl Fn(f64, f64) -> Isometry3<f64>) {
     (spec, pose)
 }
 
+/// The element of `spec` with the half-space solver's tolerance `bem_tolerance` and the
+/// warm tolerance `warm_tolerance`, one thread.
+fn tolerances(spec: &ElementSpec, bem_tolerance: f64, warm_tolerance: f64) -> ContactElement {
+    let mut s = spec.clone();
+    s.backend = Backend::HalfSpace(BemOptions {
+        threads: Some(1),
+        tolerance: bem_tolerance,
+        ..BemOptions::default()
+    });
+    s.warm_tolerance = warm_tolerance;
+    ContactElement::new(s).unwrap()
+}
+
+/// Step `k` of `benches/element.rs`: a 1 % load step (the approach alternates between two
+/// values whose Hertz forces differ by 1 %) or a pose step of 1.4 µm across the contact,
+/// back and forth over ±70 µm.
+fn bench_step(pose: &impl Fn(f64, f64) -> Isometry3<f64>, k: usize, load: bool) -> Isometry3<f64> {
+    if load {
+        let depth = [0.0042, 0.0042 * 1.01f64.powf(2.0 / 3.0)];
+        pose(depth[k % 2], 0.0)
+    } else {
+        let m = k % 200;
+        let tri = if m < 100 { m } else { 200 - m } as f64 - 50.0;
+        pose(0.0042, tri * 1.4e-3)
+    }
+}
+
 fn force(e: &mut ContactElement, pose: &Isometry3<f64>) -> (f64, usize) {
     let r = e
         .evaluate(pose, &Isometry3::identity(), &Twist::zero(), &Twist::zero())
@@ -143,11 +170,10 @@ fn preconditioned_warm_steps_take_a_few_iterations() {
         pose_its.push(force(&mut e, &pose(0.0042, 1.4e-3 * k as f64)).1);
     }
     let mut e = ContactElement::new(spec).unwrap();
-    let depth = [0.0042, 0.0042 * 1.01f64.powf(2.0 / 3.0)];
-    force(&mut e, &pose(depth[0], 0.0));
+    force(&mut e, &bench_step(&pose, 0, true));
     let mut load_its = Vec::new();
     for k in 1..=6 {
-        load_its.push(force(&mut e, &pose(depth[k % 2], 0.0)).1);
+        load_its.push(force(&mut e, &bench_step(&pose, k, true)).1);
     }
     eprintln!("warm iterations: pose steps {pose_its:?}, load steps {load_its:?}");
     assert!(pose_its.iter().all(|&n| n <= 20), "{pose_its:?}");
@@ -164,25 +190,9 @@ fn preconditioned_warm_steps_take_a_few_iterations() {
 #[test]
 fn warm_tolerance_costs_at_most_2e_6_of_the_force() {
     let (spec, pose) = roller_rib();
-    let depth = [0.0042, 0.0042 * 1.01f64.powf(2.0 / 3.0)];
     let run = |bem_tolerance: f64, warm_tolerance: f64, load: bool| {
-        let mut s = spec.clone();
-        s.backend = Backend::HalfSpace(BemOptions {
-            threads: Some(1),
-            tolerance: bem_tolerance,
-            ..BemOptions::default()
-        });
-        s.warm_tolerance = warm_tolerance;
-        let mut e = ContactElement::new(s).unwrap();
-        let at = |k: usize| {
-            if load {
-                pose(depth[k % 2], 0.0)
-            } else {
-                let m = k % 200;
-                let tri = if m < 100 { m } else { 200 - m } as f64 - 50.0;
-                pose(0.0042, tri * 1.4e-3)
-            }
-        };
+        let mut e = tolerances(&spec, bem_tolerance, warm_tolerance);
+        let at = |k: usize| bench_step(&pose, k, load);
         force(&mut e, &at(0));
         let steps: Vec<(f64, usize)> = (1..=40).map(|k| force(&mut e, &at(k))).collect();
         assert_eq!(e.grids_laid(), 1);
@@ -220,26 +230,10 @@ fn warm_tolerance_costs_at_most_2e_6_of_the_force() {
 #[test]
 fn warm_moments_and_friction_match_tight_solves() {
     let (spec, pose) = roller_rib();
-    let depth = [0.0042, 0.0042 * 1.01f64.powf(2.0 / 3.0)];
     let spin = Twist::new(Vector3::zeros(), Vector3::new(0.0, 0.0, 10.0));
     let run = |bem_tolerance: f64, warm_tolerance: f64, load: bool| {
-        let mut s = spec.clone();
-        s.backend = Backend::HalfSpace(BemOptions {
-            threads: Some(1),
-            tolerance: bem_tolerance,
-            ..BemOptions::default()
-        });
-        s.warm_tolerance = warm_tolerance;
-        let mut e = ContactElement::new(s).unwrap();
-        let at = |k: usize| {
-            if load {
-                pose(depth[k % 2], 0.0)
-            } else {
-                let m = k % 200;
-                let tri = if m < 100 { m } else { 200 - m } as f64 - 50.0;
-                pose(0.0042, tri * 1.4e-3)
-            }
-        };
+        let mut e = tolerances(&spec, bem_tolerance, warm_tolerance);
+        let at = |k: usize| bench_step(&pose, k, load);
         (0..=40)
             .map(|k| {
                 e.evaluate(&at(k), &Isometry3::identity(), &spin, &Twist::zero())

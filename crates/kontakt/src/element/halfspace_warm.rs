@@ -360,6 +360,19 @@ fn ladder_grid(centre: [f64; 2], half: [f64; 2], cells: [usize; 2]) -> Result<Gr
 mod tests {
     use super::*;
 
+    /// The half-space solver for steel on steel, one thread.
+    fn steel_bem() -> Bem {
+        Bem::new(
+            crate::material::ElasticMaterial::STEEL,
+            crate::material::ElasticMaterial::STEEL,
+            crate::halfspace::BemOptions {
+                threads: Some(1),
+                ..crate::halfspace::BemOptions::default()
+            },
+        )
+        .unwrap()
+    }
+
     /// The interpolated gap against the ray cast of every cell on the warm grid of the
     /// torus/torus roller-end/rib pairing at 4.2 µm, and the force of a warm solve on each
     /// (docs/PERFORMANCE.md, issue 12).
@@ -367,19 +380,9 @@ mod tests {
     fn interpolated_gap_matches_the_ray_cast() {
         use crate::bearing::{RollerRib, RollerRibSpec};
         use crate::gap::SurfacePairGap;
-        use crate::halfspace::BemOptions;
-        use crate::material::ElasticMaterial;
         let rr = RollerRib::new(RollerRibSpec::builtin("torus-torus-14").unwrap()).unwrap();
         let source = SurfacePairGap::new(rr.face.clone(), rr.rib.clone(), rr.contact).unwrap();
-        let bem = Bem::new(
-            ElasticMaterial::STEEL,
-            ElasticMaterial::STEEL,
-            BemOptions {
-                threads: Some(1),
-                ..BemOptions::default()
-            },
-        )
-        .unwrap();
+        let bem = steel_bem();
         let approach = 0.0042;
         let mut warm = WarmHalfSpace::default();
         warm.solve(&bem, &source, approach, 0.0).unwrap();
@@ -435,19 +438,9 @@ mod tests {
         use crate::friction::{FilmState, FrictionLaw, binning_blocks, grid_friction};
         use crate::gap::SurfacePairGap;
         use crate::geometry::{BodyState, ContactFrame, ContactPair, Twist};
-        use crate::halfspace::BemOptions;
-        use crate::material::ElasticMaterial;
         use nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
         let rr = RollerRib::new(RollerRibSpec::builtin("torus-torus-14").unwrap()).unwrap();
-        let bem = Bem::new(
-            ElasticMaterial::STEEL,
-            ElasticMaterial::STEEL,
-            BemOptions {
-                threads: Some(1),
-                ..BemOptions::default()
-            },
-        )
-        .unwrap();
+        let bem = steel_bem();
         let law = FrictionLaw::coulomb(0.1)
             .unwrap()
             .with_film(&FilmState::dry())

@@ -85,6 +85,26 @@ impl EllipseRule {
         }
         let half = std::f64::consts::FRAC_PI_4;
         let dtheta = std::f64::consts::TAU / angular as f64;
+        let rings = gauss_legendre(radial).into_iter().map(|(t, w)| {
+            // φ = π/4 (t + 1) on [0, π/2].
+            let (sp, cp) = (half * (t + 1.0)).sin_cos();
+            (sp, cp, w * half * sp * cp * cp * dtheta)
+        });
+        // The radial rule integrates sin φ cos² φ to 1e-8 (6 nodes) or better; the weights
+        // are scaled to sum to 2π/3 exactly, so that a uniform Coulomb stress (any sliding
+        // without spin) gives μ F to round-off.
+        Ok(Self::of_rings(rings, radial, angular))
+    }
+
+    /// The product rule of `rings` (radius ρ, pressure share √(1 − ρ²), ring weight) with
+    /// `angular` trapezoid nodes each, half a step off the axes (no node on a symmetry line
+    /// of the ellipse), the weights scaled to sum to 2π/3 (exact for constants).
+    fn of_rings(
+        rings: impl Iterator<Item = (f64, f64, f64)>,
+        radial: usize,
+        angular: usize,
+    ) -> Self {
+        let dtheta = std::f64::consts::TAU / angular as f64;
         let n = radial * angular;
         let mut rule = EllipseRule {
             ux: Vec::with_capacity(n),
@@ -92,25 +112,18 @@ impl EllipseRule {
             share: Vec::with_capacity(n),
             weight: Vec::with_capacity(n),
         };
-        for (t, w) in gauss_legendre(radial) {
-            // φ = π/4 (t + 1) on [0, π/2].
-            let (sp, cp) = (half * (t + 1.0)).sin_cos();
-            let wr = w * half * sp * cp * cp * dtheta;
+        for (rho, share, weight) in rings {
             for m in 0..angular {
-                // Half a step off the axes: no node on a symmetry line of the ellipse.
                 let (st, ct) = ((m as f64 + 0.5) * dtheta).sin_cos();
-                rule.ux.push(sp * ct);
-                rule.uy.push(sp * st);
-                rule.share.push(cp);
-                rule.weight.push(wr);
+                rule.ux.push(rho * ct);
+                rule.uy.push(rho * st);
+                rule.share.push(share);
+                rule.weight.push(weight);
             }
         }
-        // The radial rule integrates sin φ cos² φ to 1e-8 (6 nodes) or better; scale the
-        // weights to sum to 2π/3 exactly, so that a uniform Coulomb stress (any sliding
-        // without spin) gives μ F to round-off.
         let k = std::f64::consts::TAU / 3.0 / rule.weight.iter().sum::<f64>();
         rule.weight.iter_mut().for_each(|w| *w *= k);
-        Ok(rule)
+        rule
     }
 
     /// A rule of `radial` × `angular` nodes with the pressure in the radial weight:
@@ -155,32 +168,14 @@ impl EllipseRule {
             }
         }
         let eig = nalgebra::SymmetricEigen::new(jac);
-        let dtheta = std::f64::consts::TAU / angular as f64;
-        let n = radial * angular;
-        let mut rule = EllipseRule {
-            ux: Vec::with_capacity(n),
-            uy: Vec::with_capacity(n),
-            share: Vec::with_capacity(n),
-            weight: Vec::with_capacity(n),
-        };
-        for i in 0..radial {
+        let rings = (0..radial).map(|i| {
             // t = (1 + x)/2; the weight is the first eigenvector component squared (the
-            // total is scaled below).
+            // total is scaled to 2π/3).
             let t = 0.5 * (1.0 + eig.eigenvalues[i]);
             let v0 = eig.eigenvectors[(0, i)];
-            let (rho, share) = (t.sqrt(), (1.0 - t).sqrt());
-            for m in 0..angular {
-                let (st, ct) = ((m as f64 + 0.5) * dtheta).sin_cos();
-                rule.ux.push(rho * ct);
-                rule.uy.push(rho * st);
-                rule.share.push(share);
-                rule.weight.push(v0 * v0);
-            }
-        }
-        // Exact for constants: the weights sum to ∫∫ √(1 − ρ²) ρ dρ dθ = 2π/3.
-        let k = std::f64::consts::TAU / 3.0 / rule.weight.iter().sum::<f64>();
-        rule.weight.iter_mut().for_each(|w| *w *= k);
-        Ok(rule)
+            (t.sqrt(), (1.0 - t).sqrt(), v0 * v0)
+        });
+        Ok(Self::of_rings(rings, radial, angular))
     }
 
     /// Nodes of the rule.
