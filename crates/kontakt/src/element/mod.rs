@@ -25,11 +25,11 @@
 //! 4. Friction: the law over the pressure with the sliding field of the two twists, scaled
 //!    to the back-end's normal force: [`crate::friction::grid_friction`] over the field
 //!    solvers' grids (PimP's tracked grid and the half-space back-end's warm grid:
-//!    [`crate::friction::grid_friction_binned`], blocks
-//!    of 4 to 16 cells per evaluation of the law where the sliding varies little); for
-//!    Hertz, [`crate::friction::HertzFrictionRules`], a polar quadrature of the
-//!    semi-ellipsoid (24 to 512 nodes by the law and the sliding field's smoothness; no
-//!    sampled field; accuracy in docs/VALIDATION.md).
+//!    [`crate::friction::grid_friction_binned`], blocks of 4 to 16 cells per evaluation of
+//!    the law where the sliding varies little); for Hertz,
+//!    [`crate::friction::HertzFrictionRules`], a polar quadrature of the semi-ellipsoid
+//!    (16 to 512 nodes by the law and the sliding field's smoothness; no sampled field;
+//!    accuracy in docs/VALIDATION.md).
 //! 5. Damping (optional): `F_d = c(δ) δ̇`, `δ̇ = −n · (v_1 − v_2)` at the contact point,
 //!    `c(δ) = c_max s(δ / δ_c)`, `s(t) = 3t² − 2t³` on `[0, 1]`, 1 beyond: zero with zero slope
 //!    at first touch, so the force has no jump. The total normal force `F_n + F_d` is not
