@@ -212,6 +212,10 @@ pub struct ContactElement {
     warm: halfspace_warm::WarmHalfSpace,
     /// The PimP back-end's grid and buffers, kept between calls (`pimp::PimpTracker`).
     tracker: Option<PimpTracker>,
+    /// The two surfaces at the last call's poses (the contact search's bodies), and their
+    /// gap at the last contact: both moved in place each call, the surfaces never copied.
+    placed: [PlacedSurface; 2],
+    gap: Option<SurfacePairGap>,
 }
 
 /// Most steps of [`ContactElement::press_to_force`].
@@ -344,6 +348,8 @@ impl ContactElement {
             _ => None,
         };
         Ok(ContactElement {
+            placed: [spec.surface1.clone(), spec.surface2.clone()],
+            gap: None,
             spec,
             law,
             pimp,
@@ -583,15 +589,11 @@ impl ContactElement {
         check_twist("twist2", twist2)?;
         // The poses are checked as given; a checked pose composed with a placement (itself
         // checked when it was made) is a rigid transform.
-        let place = |name: &'static str, pose: &Isometry3<f64>, s: &PlacedSurface| {
-            check_pose(pose).map_err(|e| e.map_field(|_| name.to_string()))?;
-            Ok::<_, Error>(PlacedSurface {
-                surface: s.surface.clone(),
-                pose: pose * s.pose,
-            })
-        };
-        let p1 = place("pose1", pose1, &self.spec.surface1)?;
-        let p2 = place("pose2", pose2, &self.spec.surface2)?;
+        check_pose(pose1).map_err(|e| e.map_field(|_| "pose1".to_string()))?;
+        check_pose(pose2).map_err(|e| e.map_field(|_| "pose2".to_string()))?;
+        self.placed[0].pose = pose1 * self.spec.surface1.pose;
+        self.placed[1].pose = pose2 * self.spec.surface2.pose;
+        let [p1, p2] = &self.placed;
         // The search starts from the last contact point, extrapolated along its last step
         // (the secant) when that step was small against the contact: along a smooth motion
         // the start is then second-order close and the Newton search saves an iteration.
@@ -601,7 +603,7 @@ impl ContactElement {
             }
             (p, _) => p.map(|p| pose1 * p),
         };
-        let contact = find_contact(&p1, &p2, guess)?;
+        let contact = find_contact(p1, p2, guess)?;
         self.prev_point = self.last_point;
         self.last_point = Some(pose1.inverse_transform_point(&contact.point));
         self.last_size = 0.0;
@@ -628,8 +630,15 @@ impl ContactElement {
             return Ok(separated);
         }
         let approach = -contact.separation;
-        let gap = SurfacePairGap::new(p1, p2, contact)?;
-        let frame = ContactFrame::of_gap(&gap);
+        let gap = match &mut self.gap {
+            Some(g) => {
+                g.move_to(&p1.pose, &p2.pose, contact)?;
+                g
+            }
+            gap @ None => gap.insert(SurfacePairGap::new(p1.clone(), p2.clone(), contact)?),
+        };
+        let gap = &*gap;
+        let frame = ContactFrame::of_gap(gap);
         let curvature = gap.curvature();
         // The field solvers' results live here while the view borrows them.
         let solved: NormalSolution<()>;
@@ -666,7 +675,7 @@ impl ContactElement {
                 })?;
                 let w = self
                     .warm
-                    .solve(bem, &gap, approach, self.spec.warm_tolerance)?;
+                    .solve(bem, gap, approach, self.spec.warm_tolerance)?;
                 FieldView {
                     samples: Samples::Binned(w.grid, w.pressure),
                     orientation: w.rotation,
@@ -684,7 +693,7 @@ impl ContactElement {
                     .tracker
                     .as_mut()
                     .ok_or_else(|| Error::invalid("backend", "pimp", "a planned element"))?
-                    .evaluate(&gap, approach)?;
+                    .evaluate(gap, approach)?;
                 FieldView {
                     samples: Samples::Binned(t.grid, t.pressure),
                     orientation: t.orientation,
@@ -697,8 +706,8 @@ impl ContactElement {
             }
             Backend::Pimp(_) | Backend::HalfSpace(_) => {
                 solved = match (&self.pimp, &self.bem) {
-                    (Some(pimp), _) => pimp.solve_approach(&gap, approach)?.map_detail(|_| ()),
-                    (None, Some(bem)) => bem.solve_approach(&gap, approach)?.map_detail(|_| ()),
+                    (Some(pimp), _) => pimp.solve_approach(gap, approach)?.map_detail(|_| ()),
+                    (None, Some(bem)) => bem.solve_approach(gap, approach)?.map_detail(|_| ()),
                     (None, None) => {
                         return Err(Error::invalid(
                             "backend",
@@ -747,7 +756,7 @@ impl ContactElement {
             damping_force = -normal_force;
         }
         // The friction integral over the sampled field, in the grid frame.
-        let (s, c) = field.orientation.sin_cos();
+        let (s, c) = crate::geometry::sin_cos(field.orientation);
         let (ex, ey) = (frame.ex.into_inner(), frame.ey.into_inner());
         let gx = ex * c + ey * s;
         let gy = -ex * s + ey * c;

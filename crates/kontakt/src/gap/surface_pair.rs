@@ -7,7 +7,7 @@ use crate::geometry::contact_point::{ContactPoint, find_contact};
 use crate::geometry::surface::{Curvature, PlacedSurface, Profile, Ray, Surface};
 use crate::geometry::{ContactFrame, Grid2, RelativeCurvature};
 use crate::units::Millimetre;
-use nalgebra::{Point3, Unit, Vector3};
+use nalgebra::{Isometry3, Point3, Unit, Vector3};
 
 /// The gap between two placed surfaces, measured along the common normal from the
 /// contact plane at their contact point.
@@ -37,6 +37,66 @@ impl SurfacePairGap {
     /// positive in every direction (conformal surfaces or a line contact: PimP needs a
     /// point of first contact).
     pub fn new(body1: PlacedSurface, body2: PlacedSurface, contact: ContactPoint) -> Result<Self> {
+        let (ex, ey, curvature, bodies) = Self::at_contact(&body1, &body2, &contact)?;
+        let mut gap = SurfacePairGap {
+            body1,
+            body2,
+            contact,
+            ex,
+            ey,
+            curvature,
+            bodies,
+        };
+        gap.add_profile_ends();
+        Ok(gap)
+    }
+
+    /// The same two surfaces at new poses (world, as [`PlacedSurface::pose`]) and their
+    /// contact point there: equal to [`SurfacePairGap::new`] with the surfaces so placed,
+    /// without copying the surfaces (a contact element moves its gap every call).
+    ///
+    /// # Errors
+    /// As [`SurfacePairGap::new`]; the gap is then left unchanged.
+    pub fn move_to(
+        &mut self,
+        pose1: &Isometry3<f64>,
+        pose2: &Isometry3<f64>,
+        contact: ContactPoint,
+    ) -> Result<()> {
+        let (old1, old2) = (self.body1.pose, self.body2.pose);
+        self.body1.pose = *pose1;
+        self.body2.pose = *pose2;
+        match Self::at_contact(&self.body1, &self.body2, &contact) {
+            Ok((ex, ey, curvature, bodies)) => {
+                self.contact = contact;
+                self.ex = ex;
+                self.ey = ey;
+                self.curvature = curvature;
+                self.bodies = bodies;
+                self.add_profile_ends();
+                Ok(())
+            }
+            Err(e) => {
+                self.body1.pose = old1;
+                self.body2.pose = old2;
+                Err(e)
+            }
+        }
+    }
+
+    /// The frame, relative curvature and bodies' curvature tensors of the two placed
+    /// surfaces at their contact point (the edges of their faces not yet marked).
+    #[allow(clippy::type_complexity)]
+    fn at_contact(
+        body1: &PlacedSurface,
+        body2: &PlacedSurface,
+        contact: &ContactPoint,
+    ) -> Result<(
+        Unit<Vector3<f64>>,
+        Unit<Vector3<f64>>,
+        RelativeCurvature,
+        [BodyAtContact; 2],
+    )> {
         let n = contact.normal;
         // At the contact's feet, whose outward normals are -n (body 1) and n (body 2).
         let k1 = body1.curvature_on(&contact.point1, &-n);
@@ -65,17 +125,7 @@ impl SurfacePairGap {
             },
             other => other,
         })?;
-        let mut gap = SurfacePairGap {
-            body1,
-            body2,
-            contact,
-            ex,
-            ey,
-            curvature,
-            bodies,
-        };
-        gap.add_profile_ends();
-        Ok(gap)
+        Ok((ex, ey, curvature, bodies))
     }
 
     /// A surface of revolution (a crowned roller) ends at its profile's `z` range: both
@@ -371,5 +421,103 @@ impl ContactFrame {
             ey,
             normal,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)]
+    use super::*;
+    use crate::bearing::{RollerRib, RollerRibSpec, TABLE1};
+    use crate::geometry::{Material, Surface};
+    use nalgebra::{Translation3, UnitQuaternion};
+
+    /// `move_to` is `new` at the new poses, bit for bit (frame, curvature, the faces' edges),
+    /// for every built-in roller/rib pairing and a crowned roller (whose profile ends are
+    /// edges), moved by a shift along the normal, a slide and a tilt.
+    #[test]
+    fn moving_a_gap_equals_building_it_anew() {
+        let roller = PlacedSurface::new(
+            Surface::revolution(
+                Profile::Crowned {
+                    radius: 5.0,
+                    crown_radius: 300.0,
+                    half_length: 6.0,
+                },
+                Material::Inside,
+            )
+            .unwrap(),
+            // Axis along x, 5 mm above the plane z = 0, its end 1 mm from the origin.
+            Isometry3::from_parts(
+                Translation3::new(5.0, 0.0, 5.0),
+                UnitQuaternion::from_axis_angle(&Vector3::y_axis(), std::f64::consts::FRAC_PI_2),
+            ),
+        )
+        .unwrap();
+        let plane = PlacedSurface::new(
+            Surface::plane(Material::Inside),
+            Isometry3::from_parts(
+                Translation3::new(0.0, 0.0, 0.0),
+                UnitQuaternion::from_axis_angle(&Vector3::y_axis(), 1e-3),
+            ),
+        )
+        .unwrap();
+        let mut pairs: Vec<(PlacedSurface, PlacedSurface, Point3<f64>)> = TABLE1
+            .iter()
+            .map(|(name, ..)| {
+                let rr = RollerRib::new(RollerRibSpec::builtin(name).unwrap()).unwrap();
+                (rr.face, rr.rib, rr.contact.point)
+            })
+            .collect();
+        pairs.push((roller, plane, Point3::new(5.0, 0.0, 0.0)));
+        for (face, other, guess) in pairs {
+            let n = find_contact(&face, &other, Some(guess)).unwrap().normal;
+            let at = |motion: Isometry3<f64>| {
+                let moved = PlacedSurface::new(face.surface.clone(), motion * face.pose).unwrap();
+                let contact = find_contact(&moved, &other, Some(guess)).unwrap();
+                (moved, contact)
+            };
+            let (f0, c0) = at(Isometry3::translation(
+                -n.x * 4e-3,
+                -n.y * 4e-3,
+                -n.z * 4e-3,
+            ));
+            let (f1, c1) = at(Isometry3::from_parts(
+                Translation3::from(-n.into_inner() * 5e-3 + n.cross(&Vector3::z()) * 0.02),
+                UnitQuaternion::from_axis_angle(&Vector3::x_axis(), 2e-3),
+            ));
+            let mut gap = SurfacePairGap::new(f0, other.clone(), c0).unwrap();
+            gap.move_to(&f1.pose, &other.pose, c1).unwrap();
+            assert_eq!(gap, SurfacePairGap::new(f1, other.clone(), c1).unwrap());
+        }
+    }
+
+    /// A move that `new` refuses (here a contact whose normal is not finite, so the
+    /// curvature is not) is refused alike, and leaves the gap as it was.
+    #[test]
+    fn a_refused_move_leaves_the_gap_unchanged() {
+        let ball = |r: f64, m, z: f64| {
+            PlacedSurface::new(
+                Surface::sphere(r, m).unwrap(),
+                Isometry3::translation(0.0, 0.0, z),
+            )
+            .unwrap()
+        };
+        let (b1, socket) = (
+            ball(4.0, Material::Inside, 0.0),
+            ball(5.0, Material::Outside, 0.0),
+        );
+        let c = find_contact(&b1, &socket, None).unwrap();
+        let mut gap = SurfacePairGap::new(b1.clone(), socket.clone(), c).unwrap();
+        let before = gap.clone();
+        let moved = ball(4.0, Material::Inside, 1e-4);
+        let bad = ContactPoint {
+            normal: Unit::new_unchecked(Vector3::new(f64::NAN, 0.0, 1.0)),
+            ..find_contact(&moved, &socket, None).unwrap()
+        };
+        let fresh = SurfacePairGap::new(moved.clone(), socket.clone(), bad);
+        let result = gap.move_to(&moved.pose, &socket.pose, bad);
+        assert!(fresh.is_err() && result.is_err(), "{fresh:?} {result:?}");
+        assert_eq!(gap, before);
     }
 }

@@ -29,3 +29,15 @@ pub use grid::Grid2;
 pub use motion::{BodyState, ContactFrame, ContactPair, ContactVelocities, VelocityField};
 pub use surface::{Curvature, Hit, Material, PlacedSurface, Profile, Ray, Surface};
 pub use twist::Twist;
+
+/// `(sin θ, cos θ)` of an angle \[rad\], exactly `(0, 1)` at θ = 0 without the library call:
+/// the grid frames of the Hertz path are not turned (θ = 0), and a per-call `sin_cos` there
+/// costs as much as a dozen multiplications. Bit for bit `f64::sin_cos` everywhere.
+#[inline]
+pub(crate) fn sin_cos(angle: f64) -> (f64, f64) {
+    if angle == 0.0 {
+        (0.0, 1.0)
+    } else {
+        angle.sin_cos()
+    }
+}

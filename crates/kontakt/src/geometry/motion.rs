@@ -286,7 +286,7 @@ fn grid_axes(frame: &ContactFrame, orientation: f64) -> Result<(Vector3<f64>, Ve
             "a finite angle in rad",
         ));
     }
-    let (s, c) = orientation.sin_cos();
+    let (s, c) = super::sin_cos(orientation);
     let (ex, ey) = (frame.ex.into_inner(), frame.ey.into_inner());
     Ok((ex * c + ey * s, -ex * s + ey * c))
 }

@@ -165,7 +165,11 @@ pub(crate) fn check_pose(pose: &Isometry3<f64>) -> Result<()> {
     let t = &pose.translation.vector;
     let q = pose.rotation.quaternion().coords;
     let finite = t.iter().chain(q.iter()).all(|c| c.is_finite());
-    if !finite || (q.norm() - 1.0).abs() > 1e-9 {
+    // |‖q‖ − 1| ≤ 1e-9 on the squared norm (no square root per call).
+    const LO: f64 = (1.0 - 1e-9) * (1.0 - 1e-9);
+    const HI: f64 = (1.0 + 1e-9) * (1.0 + 1e-9);
+    let n2 = q.norm_squared();
+    if !finite || !(LO..=HI).contains(&n2) {
         return Err(Error::invalid(
             "pose",
             format!(

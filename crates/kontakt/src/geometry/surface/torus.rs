@@ -15,7 +15,7 @@
 //! the boundary of the union of the balls of radius r centred on the circle.
 
 use super::trace::{self, RayFunction, Sample};
-use super::{Material, Shape, hypot, outer, radial, radial_fast};
+use super::{Material, Shape, hypot, outer, radial_fast};
 use crate::error::{Error, Result};
 use nalgebra::{Matrix3, Point3, Vector3};
 
@@ -379,7 +379,7 @@ impl Shape for Torus {
     }
 
     fn foot_distance(&self, p: &Point3<f64>) -> (Point3<f64>, Vector3<f64>, f64) {
-        let (er, rho) = radial(p);
+        let (er, rho) = radial_fast(p);
         if let Some(c) = self.cusp(rho, p.z) {
             let v = c - p;
             let len = v.norm();
