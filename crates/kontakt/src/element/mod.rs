@@ -201,9 +201,9 @@ pub struct ContactElement {
     last_point: Option<Point3<f64>>,
     /// The contact point before it (body 1's frame), for the secant start.
     prev_point: Option<Point3<f64>>,
-    /// Size of the last contact, `√area` \[mm\] (0 when separated): the secant start is
-    /// taken when the last step of the contact point was below a tenth of it.
-    last_size: f64,
+    /// Area of the last contact \[mm²\] (0 when separated): the secant start is taken when
+    /// the last step of the contact point was below a tenth of its size `√area`.
+    last_area: f64,
     /// The Hertz back-end's last contact: the next shape inversion starts from it.
     last_hertz: Option<HertzPointContact>,
     /// The Hertz back-end's quadrature rules over the contact ellipse (built once).
@@ -356,7 +356,7 @@ impl ContactElement {
             bem,
             last_point: None,
             prev_point: None,
-            last_size: 0.0,
+            last_area: 0.0,
             last_hertz: None,
             hertz_rules: HertzFrictionRules::new()?,
             warm: Default::default(),
@@ -514,7 +514,7 @@ impl ContactElement {
     pub fn reset(&mut self) {
         self.last_point = None;
         self.prev_point = None;
-        self.last_size = 0.0;
+        self.last_area = 0.0;
         self.last_hertz = None;
         self.warm.reset();
         if let Some(t) = &mut self.tracker {
@@ -598,7 +598,8 @@ impl ContactElement {
         // (the secant) when that step was small against the contact: along a smooth motion
         // the start is then second-order close and the Newton search saves an iteration.
         let guess = match (self.last_point, self.prev_point) {
-            (Some(p), Some(q)) if (p - q).norm() <= 0.1 * self.last_size => {
+            // |p − q| ≤ 0.1 √area, on the squares.
+            (Some(p), Some(q)) if (p - q).norm_squared() <= 0.01 * self.last_area => {
                 Some(pose1 * (p + (p - q)))
             }
             (p, _) => p.map(|p| pose1 * p),
@@ -606,7 +607,7 @@ impl ContactElement {
         let contact = find_contact(p1, p2, guess)?;
         self.prev_point = self.last_point;
         self.last_point = Some(pose1.inverse_transform_point(&contact.point));
-        self.last_size = 0.0;
+        self.last_area = 0.0;
         let zero = Vector3::zeros();
         let separated = ElementResult {
             status: ContactStatus::Separated,
@@ -727,7 +728,7 @@ impl ContactElement {
                 }
             }
         };
-        self.last_size = field.contact_area.sqrt();
+        self.last_area = field.contact_area;
         // The normal force of the back-end (Hertz: the closed form).
         let normal_force = field.force;
         let iterations = field.iterations;

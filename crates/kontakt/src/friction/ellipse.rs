@@ -292,13 +292,19 @@ impl DiscMap {
 
     /// [`sliding_smoothness`].
     fn smoothness(&self) -> f64 {
-        let m = self.m;
+        let (o2, norm2) = self.smoothness_squared();
+        let r = (o2 / norm2).sqrt();
+        if r.is_nan() { f64::INFINITY } else { r }
+    }
+
+    /// `(|v(0)|², ‖M‖₂²)` of [`sliding_smoothness`] \[mm²/s²\].
+    fn smoothness_squared(&self) -> (f64, f64) {
+        let (m, o) = (self.m, self.o);
         // ‖M‖₂² = (|M|_F² + √(|M|_F⁴ − 4 det²)) / 2.
         let fro2 = m.iter().map(|v| v * v).sum::<f64>();
         let det = m[0] * m[3] - m[1] * m[2];
-        let norm = (0.5 * (fro2 + (fro2 * fro2 - 4.0 * det * det).max(0.0).sqrt())).sqrt();
-        let r = self.o[0].hypot(self.o[1]) / norm;
-        if r.is_nan() { f64::INFINITY } else { r }
+        let norm2 = 0.5 * (fro2 + (fro2 * fro2 - 4.0 * det * det).max(0.0).sqrt());
+        (o[0] * o[0] + o[1] * o[1], norm2)
     }
 }
 
@@ -521,11 +527,15 @@ impl HertzFrictionRules {
     }
 
     fn select_on(&self, map: &DiscMap, law: &CellLaw) -> &EllipseRule {
-        match (law.has_fluid(), map.smoothness()) {
-            (true, r) if r >= 2.0 => &self.fluid,
-            (false, r) if r >= 8.0 => &self.far,
-            (false, r) if r >= 4.0 => &self.mid,
-            (false, r) if r >= 2.0 => &self.near,
+        let (o2, norm2) = map.smoothness_squared();
+        // ρ_s ≥ t on the squares (no square root or division); 0 ≥ 0 where nothing slides
+        // nor varies (ρ_s = ∞ in `smoothness`).
+        let at_least = |t: f64| o2 >= t * t * norm2;
+        match law.has_fluid() {
+            true if at_least(2.0) => &self.fluid,
+            false if at_least(8.0) => &self.far,
+            false if at_least(4.0) => &self.mid,
+            false if at_least(2.0) => &self.near,
             _ => &self.careful,
         }
     }

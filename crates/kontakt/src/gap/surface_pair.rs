@@ -37,7 +37,7 @@ impl SurfacePairGap {
     /// positive in every direction (conformal surfaces or a line contact: PimP needs a
     /// point of first contact).
     pub fn new(body1: PlacedSurface, body2: PlacedSurface, contact: ContactPoint) -> Result<Self> {
-        let (ex, ey, curvature, bodies) = Self::at_contact(&body1, &body2, &contact)?;
+        let (ex, ey, curvature, tensors) = Self::at_contact(&body1, &body2, &contact)?;
         let mut gap = SurfacePairGap {
             body1,
             body2,
@@ -45,7 +45,10 @@ impl SurfacePairGap {
             ex,
             ey,
             curvature,
-            bodies,
+            bodies: tensors.map(|curvature| BodyAtContact {
+                curvature,
+                edges: [None, None],
+            }),
         };
         gap.add_profile_ends();
         Ok(gap)
@@ -67,12 +70,15 @@ impl SurfacePairGap {
         self.body1.pose = *pose1;
         self.body2.pose = *pose2;
         match Self::at_contact(&self.body1, &self.body2, &contact) {
-            Ok((ex, ey, curvature, bodies)) => {
+            Ok((ex, ey, curvature, tensors)) => {
                 self.contact = contact;
                 self.ex = ex;
                 self.ey = ey;
                 self.curvature = curvature;
-                self.bodies = bodies;
+                self.bodies = tensors.map(|curvature| BodyAtContact {
+                    curvature,
+                    edges: [None, None],
+                });
                 self.add_profile_ends();
                 Ok(())
             }
@@ -84,8 +90,8 @@ impl SurfacePairGap {
         }
     }
 
-    /// The frame, relative curvature and bodies' curvature tensors of the two placed
-    /// surfaces at their contact point (the edges of their faces not yet marked).
+    /// The frame, relative curvature and bodies' curvature tensors `[k_xx, k_yy, k_xy]`
+    /// \[1/mm\] of the two placed surfaces at their contact point.
     #[allow(clippy::type_complexity)]
     fn at_contact(
         body1: &PlacedSurface,
@@ -95,7 +101,7 @@ impl SurfacePairGap {
         Unit<Vector3<f64>>,
         Unit<Vector3<f64>>,
         RelativeCurvature,
-        [BodyAtContact; 2],
+        [[f64; 3]; 2],
     )> {
         let n = contact.normal;
         // At the contact's feet, whose outward normals are -n (body 1) and n (body 2).
@@ -110,13 +116,13 @@ impl SurfacePairGap {
             })?;
         let ey = Unit::new_normalize(n.cross(&ex));
         let (mut kxx, mut kyy, mut kxy) = (0.0, 0.0, 0.0);
-        let mut bodies = [BodyAtContact::from_radii([f64::INFINITY; 2], 0.0); 2];
-        for (b, k) in bodies.iter_mut().zip([&k1, &k2]) {
+        let mut tensors = [[0.0; 3]; 2];
+        for (t, k) in tensors.iter_mut().zip([&k1, &k2]) {
             let (xx, yy, xy) = tensor(k, &ex, &ey);
             kxx += xx;
             kyy += yy;
             kxy += xy;
-            b.curvature = [xx, yy, xy];
+            *t = [xx, yy, xy];
         }
         let curvature = RelativeCurvature::from_tensor(kxx, kyy, kxy).map_err(|e| match e {
             Error::Geometry { reason, .. } => Error::Geometry {
@@ -125,7 +131,7 @@ impl SurfacePairGap {
             },
             other => other,
         })?;
-        Ok((ex, ey, curvature, bodies))
+        Ok((ex, ey, curvature, tensors))
     }
 
     /// A surface of revolution (a crowned roller) ends at its profile's `z` range: both

@@ -68,6 +68,7 @@ pub(crate) fn invert_shape_ratio_near(
             axis_ratio: 1.0,
             evaluations: 0,
             rf_rd: rf_rd(1.0)?,
+            slope: None,
         });
     }
     let target = ratio.ln();
@@ -228,6 +229,8 @@ pub(crate) fn invert_shape_ratio_newton(
         axis_ratio: y.sqrt(),
         evaluations: 1,
         rf_rd: (rf + drf * dy, rd + drd * dy),
+        // At y1, within 1e-8 of the slope at y: a predictor's slope for the next call.
+        slope: Some(slope),
     })
 }
 
@@ -239,6 +242,9 @@ pub(crate) struct Inversion {
     pub evaluations: usize,
     /// $(R_F, R_D)$ at $y = (b/a)^2$.
     pub rf_rd: (f64, f64),
+    /// $d(B/A)/dy$ near the root (relative 1e-8) when the inversion took it, for the next
+    /// inversion's predictor ([`invert_shape_ratio_newton`]); else `None`.
+    pub slope: Option<f64>,
 }
 
 /// Package the root; reuse the last evaluation when it was taken at the root itself
@@ -254,6 +260,7 @@ fn finish(u: f64, evaluations: usize, last: (f64, f64, f64)) -> Result<Inversion
         axis_ratio: u.exp(),
         evaluations,
         rf_rd,
+        slope: None,
     })
 }
 
