@@ -158,6 +158,9 @@ pub struct HertzPointContact {
     /// point; NaN for a circle).
     #[cfg_attr(feature = "serde", serde(skip))]
     shape_slope: f64,
+    /// $R_F$, $R_D$ about the last exact evaluation, for the next warm inversion.
+    #[cfg_attr(feature = "serde", serde(skip))]
+    series: Option<elliptic::ShapeSeries>,
 }
 
 /// `∛v` from a nearby cube root `x0`: with `ε = v/x0³ − 1`, `|ε| ≤ 1e-4`, the binomial
@@ -235,6 +238,7 @@ impl HertzPointContact {
             elliptic::invert_shape_ratio_newton(
                 ratio,
                 (h.geometry.curvature.ratio(), y, h.shape_slope),
+                h.series.as_ref(),
             )
         });
         let inversion = match newton {
@@ -249,6 +253,10 @@ impl HertzPointContact {
         let shape_slope = inversion
             .slope
             .unwrap_or_else(|| elliptic::shape_slope(axis_ratio * axis_ratio, rf, rd));
+        // The next warm inversion's series: kept, or about this root.
+        let series = inversion
+            .series
+            .or_else(|| elliptic::ShapeSeries::new(axis_ratio * axis_ratio, rf, rd));
         let cube = rd / (2.0 * PI * e_star * k.a_coef);
         let a_unit = match previous {
             Some(h) => cbrt_near(cube, h.a_unit),
@@ -264,6 +272,7 @@ impl HertzPointContact {
             delta_unit,
             shape_evaluations,
             shape_slope,
+            series,
         })
     }
 
