@@ -610,11 +610,11 @@ pub(crate) fn radial(p: &Point3<f64>) -> (Vector3<f64>, f64) {
     }
 }
 
-/// [`radial`] with the cheaper [`hypot`] (one rounding more in `rho`): for the curvature
-/// and the distance Hessian, whose directions and radii a rounding of `rho` does not move
-/// measurably. Points and distances (feet, ray crossings) keep [`radial`]: at approaches
-/// near the rounding of the coordinates (1e-14 mm at 40 mm) the contact search and the ray
-/// casts must round alike.
+/// [`radial`] with the cheaper [`hypot`] (one rounding more in `rho`): the torus' foot,
+/// curvature and distance Hessian. Its ray casts take `rho` as the same square root of the
+/// sum of squares, so that at approaches near the rounding of the coordinates (1e-14 mm at
+/// 40 mm) the contact search and the ray casts round alike (the PimP tracker's round-off
+/// touch test). The cone and the surface of revolution keep [`radial`].
 pub(crate) fn radial_fast(p: &Point3<f64>) -> (Vector3<f64>, f64) {
     let rho = hypot(p.x, p.y);
     if rho > 0.0 {
