@@ -3,17 +3,20 @@
 //! (force, direction, moments about both reference points), separation, Coulomb friction of
 //! a sliding sphere, smooth damping, PimP and half-space back-ends against Hertz, the
 //! validity flag, continuity of the force along a fine approach sweep, a roller/rib pair
-//! from poses, bad input, and `Send`. Units: mm, N, N·mm, mm/s, rad/s, W.
+//! from poses, bad input, `Send`, and the gap moved in place (`SurfacePairGap::move_to`).
+//! Units: mm, N, N·mm, mm/s, rad/s, W.
 
-use kontakt::bearing::{RollerRib, RollerRibSpec};
+use kontakt::bearing::{RollerRib, RollerRibSpec, TABLE1};
 use kontakt::element::{Backend, ContactElement, ContactStatus, Damping, ElementSpec};
 use kontakt::friction::FrictionLaw;
-use kontakt::geometry::{Material, PlacedSurface, Surface, Twist};
+use kontakt::geometry::{
+    ContactPoint, Material, PlacedSurface, Profile, Surface, Twist, find_contact,
+};
 use kontakt::halfspace::BemOptions;
 use kontakt::hertz::{HertzPointContact, PointGeometry};
 use kontakt::material::ElasticMaterial;
-use kontakt::pimp::PimpOptions;
-use nalgebra::{Isometry3, Quaternion, Translation3, UnitQuaternion, Vector3};
+use kontakt::pimp::{PimpOptions, SurfacePairGap};
+use nalgebra::{Isometry3, Point3, Quaternion, Translation3, Unit, UnitQuaternion, Vector3};
 
 const R: f64 = 10.0;
 
@@ -508,4 +511,95 @@ fn press_to_force_reaches_the_hertz_approach() {
         )
         .unwrap_err();
     assert_eq!(err.field(), Some("direction"));
+}
+
+// `SurfacePairGap::move_to`, the element's gap moved in place each call (2026-11-27).
+
+/// `move_to` is `new` at the new poses, bit for bit (frame, curvature, the faces' edges),
+/// for every built-in roller/rib pairing and a crowned roller (whose profile ends are
+/// edges), moved by a shift along the normal, a slide and a tilt.
+#[test]
+fn moving_a_gap_equals_building_it_anew() {
+    let roller = PlacedSurface::new(
+        Surface::revolution(
+            Profile::Crowned {
+                radius: 5.0,
+                crown_radius: 300.0,
+                half_length: 6.0,
+            },
+            Material::Inside,
+        )
+        .unwrap(),
+        // Axis along x, 5 mm above the plane z = 0, its end 1 mm from the origin.
+        Isometry3::from_parts(
+            Translation3::new(5.0, 0.0, 5.0),
+            UnitQuaternion::from_axis_angle(&Vector3::y_axis(), std::f64::consts::FRAC_PI_2),
+        ),
+    )
+    .unwrap();
+    let plane = PlacedSurface::new(
+        Surface::plane(Material::Inside),
+        Isometry3::from_parts(
+            Translation3::new(0.0, 0.0, 0.0),
+            UnitQuaternion::from_axis_angle(&Vector3::y_axis(), 1e-3),
+        ),
+    )
+    .unwrap();
+    let mut pairs: Vec<(PlacedSurface, PlacedSurface, Point3<f64>)> = TABLE1
+        .iter()
+        .map(|(name, ..)| {
+            let rr = RollerRib::new(RollerRibSpec::builtin(name).unwrap()).unwrap();
+            (rr.face, rr.rib, rr.contact.point)
+        })
+        .collect();
+    pairs.push((roller, plane, Point3::new(5.0, 0.0, 0.0)));
+    for (face, other, guess) in pairs {
+        let n = find_contact(&face, &other, Some(guess)).unwrap().normal;
+        let at = |motion: Isometry3<f64>| {
+            let moved = PlacedSurface::new(face.surface.clone(), motion * face.pose).unwrap();
+            let contact = find_contact(&moved, &other, Some(guess)).unwrap();
+            (moved, contact)
+        };
+        let (f0, c0) = at(Isometry3::translation(
+            -n.x * 4e-3,
+            -n.y * 4e-3,
+            -n.z * 4e-3,
+        ));
+        let (f1, c1) = at(Isometry3::from_parts(
+            Translation3::from(-n.into_inner() * 5e-3 + n.cross(&Vector3::z()) * 0.02),
+            UnitQuaternion::from_axis_angle(&Vector3::x_axis(), 2e-3),
+        ));
+        let mut gap = SurfacePairGap::new(f0, other.clone(), c0).unwrap();
+        gap.move_to(&f1.pose, &other.pose, c1).unwrap();
+        assert_eq!(gap, SurfacePairGap::new(f1, other.clone(), c1).unwrap());
+    }
+}
+
+/// A move that `new` refuses (here a contact whose normal is not finite, so the
+/// curvature is not) is refused alike, and leaves the gap as it was.
+#[test]
+fn a_refused_move_leaves_the_gap_unchanged() {
+    let ball = |r: f64, m, z: f64| {
+        PlacedSurface::new(
+            Surface::sphere(r, m).unwrap(),
+            Isometry3::translation(0.0, 0.0, z),
+        )
+        .unwrap()
+    };
+    let (b1, socket) = (
+        ball(4.0, Material::Inside, 0.0),
+        ball(5.0, Material::Outside, 0.0),
+    );
+    let c = find_contact(&b1, &socket, None).unwrap();
+    let mut gap = SurfacePairGap::new(b1.clone(), socket.clone(), c).unwrap();
+    let before = gap.clone();
+    let moved = ball(4.0, Material::Inside, 1e-4);
+    let bad = ContactPoint {
+        normal: Unit::new_unchecked(Vector3::new(f64::NAN, 0.0, 1.0)),
+        ..find_contact(&moved, &socket, None).unwrap()
+    };
+    let fresh = SurfacePairGap::new(moved.clone(), socket.clone(), bad);
+    let result = gap.move_to(&moved.pose, &socket.pose, bad);
+    assert!(fresh.is_err() && result.is_err(), "{fresh:?} {result:?}");
+    assert_eq!(gap, before);
 }
