@@ -67,6 +67,9 @@ typedef struct KontaktResult {
   double damping_force;
   // Friction force on body 1 \[N\].
   double friction_force[3];
+  // Moment of the friction stresses on body 1 about the contact point \[N·mm\], along
+  // the normal (the spin friction torque).
+  double friction_moment[3];
   // Friction power \[W\], ≥ 0.
   double friction_power;
   // Total force on body 1 \[N\]; body 2 gets minus this.

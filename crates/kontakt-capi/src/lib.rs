@@ -97,6 +97,9 @@ pub struct KontaktResult {
     pub damping_force: f64,
     /// Friction force on body 1 \[N\].
     pub friction_force: [f64; 3],
+    /// Moment of the friction stresses on body 1 about the contact point \[N·mm\], along
+    /// the normal (the spin friction torque).
+    pub friction_moment: [f64; 3],
     /// Friction power \[W\], ≥ 0.
     pub friction_power: f64,
     /// Total force on body 1 \[N\]; body 2 gets minus this.
@@ -141,6 +144,7 @@ impl KontaktResult {
             normal_force: r.normal_force,
             damping_force: r.damping_force,
             friction_force: v(&r.friction_force),
+            friction_moment: v(&r.friction_moment),
             friction_power: r.friction_power,
             force1: v(&r.force1),
             moment1: v(&r.moment1),
@@ -448,6 +452,7 @@ mod tests {
             normal_force: 0.0,
             damping_force: 0.0,
             friction_force: Vector3::zeros(),
+            friction_moment: Vector3::zeros(),
             friction_power: 0.0,
             force1: Vector3::zeros(),
             moment1: Vector3::zeros(),

@@ -122,6 +122,7 @@ fn assert_same(label: &str, s: &Section, r: &ElementResult) {
         ("normal_force", vec![r.normal_force]),
         ("damping_force", vec![r.damping_force]),
         ("friction_force", v3(&r.friction_force)),
+        ("friction_moment", v3(&r.friction_moment)),
         ("friction_power", vec![r.friction_power]),
         ("force1", v3(&r.force1)),
         ("moment1", v3(&r.moment1)),

@@ -88,6 +88,7 @@ fn check_result(r: &KontaktResult) {
         r.point,
         r.normal,
         r.friction_force,
+        r.friction_moment,
         r.force1,
         r.moment1,
         r.moment2,

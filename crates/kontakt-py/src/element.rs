@@ -207,6 +207,12 @@ impl ElementResult {
     fn friction_force<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
         v3(py, &self.inner.friction_force)
     }
+    /// Moment of the friction stresses on body 1 about the contact point [N·mm], shape
+    /// (3,), along the normal (the spin friction torque).
+    #[getter]
+    fn friction_moment<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        v3(py, &self.inner.friction_moment)
+    }
     /// Friction power [W].
     #[getter]
     fn friction_power(&self) -> f64 {
@@ -260,6 +266,7 @@ impl ElementResult {
         d.set_item("normal_force_n", r.normal_force)?;
         d.set_item("damping_force_n", r.damping_force)?;
         d.set_item("friction_force_n", v(&r.friction_force))?;
+        d.set_item("friction_moment_nmm", v(&r.friction_moment))?;
         d.set_item("friction_power_w", r.friction_power)?;
         d.set_item("force1_n", v(&r.force1))?;
         d.set_item("moment1_nmm", v(&r.moment1))?;

@@ -51,3 +51,19 @@ def test_separated_and_bad_poses(element):
     with pytest.raises(kt.InputError) as e:
         element.evaluate(np.eye(4), np.eye(4), twist1=np.zeros(5))
     assert e.value.field == "twist1.shape"
+
+
+def test_spin_friction_moment(element):
+    """A ball spinning about the normal: the friction moment about the contact point is the
+    spin torque -(3 pi / 16) mu F a (Coulomb over the Hertz circle; the regularisation speed
+    of 1 mm/s softens the centre, r < 0.02 mm here, by about 0.1 %), it is all of moment1
+    (the normal force passes through the centre, the friction force vanishes), and to_dict
+    carries it."""
+    delta = 0.005
+    r = element.evaluate(((0.0, 0.0, 10.0 - delta), (1.0, 0.0, 0.0, 0.0)), np.eye(4), ((0, 0, 0), (0, 0, 50.0)))
+    a = math.sqrt(10.0 * delta)
+    exact = -3.0 * math.pi / 16.0 * 0.1 * r.normal_force * a
+    assert r.friction_moment[2] == pytest.approx(exact, rel=3e-3)
+    np.testing.assert_allclose(r.friction_moment[:2], [0.0, 0.0], atol=1e-12 * abs(exact))
+    np.testing.assert_allclose(r.moment1, r.friction_moment, atol=1e-9 * abs(exact))
+    assert r.to_dict()["friction_moment_nmm"] == list(r.friction_moment)

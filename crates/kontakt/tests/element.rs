@@ -430,6 +430,8 @@ fn spinning_ball_friction_moment() {
     );
     assert!((r.moment1.z / exact - 1.0).abs() < 1e-9);
     assert!(r.friction_force.norm() < 1e-9 * r.normal_force);
+    // The friction's own moment about the contact point: all of it, along the normal.
+    assert!((r.friction_moment - Vector3::new(0.0, 0.0, exact)).norm() < 1e-9 * exact.abs());
 }
 
 /// The stiffness matrix by central differences against the ball's closed forms (δ = 5 µm,

@@ -52,6 +52,7 @@ static int32_t evaluate(KontaktElement *e, const char *label, const double pose1
     printf("normal_force %.17g\n", r->normal_force);
     printf("damping_force %.17g\n", r->damping_force);
     print_vec("friction_force", r->friction_force);
+    print_vec("friction_moment", r->friction_moment);
     printf("friction_power %.17g\n", r->friction_power);
     print_vec("force1", r->force1);
     print_vec("moment1", r->moment1);

@@ -171,6 +171,11 @@ pub struct ElementResult {
     pub damping_force: f64,
     /// Friction force on body 1 \[N\].
     pub friction_force: Vector3<f64>,
+    /// Moment of the friction stresses on body 1 about the contact point \[N·mm\], along
+    /// the normal: the spin (drilling) friction torque of the contact. With the friction
+    /// force acting at the contact point it makes up the friction's share of `moment1`;
+    /// body 2 gets minus both.
+    pub friction_moment: Vector3<f64>,
     /// Friction power \[W\], ≥ 0.
     pub friction_power: f64,
     /// Total force on body 1 \[N\] (normal, damping, friction); body 2 gets minus this.
@@ -553,6 +558,7 @@ impl ContactElement {
             ("point", v(&r.point.coords)),
             ("normal", v(&r.normal)),
             ("friction_force", v(&r.friction_force)),
+            ("friction_moment", v(&r.friction_moment)),
             ("force1", v(&r.force1)),
             ("moment1", v(&r.moment1)),
             ("moment2", v(&r.moment2)),
@@ -618,6 +624,7 @@ impl ContactElement {
             normal_force: 0.0,
             damping_force: 0.0,
             friction_force: zero,
+            friction_moment: zero,
             friction_power: 0.0,
             force1: zero,
             moment1: zero,
@@ -826,6 +833,7 @@ impl ContactElement {
             normal_force,
             damping_force,
             friction_force,
+            friction_moment,
             friction_power: sums.power,
             force1,
             moment1,
