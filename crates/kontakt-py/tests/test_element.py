@@ -53,17 +53,19 @@ def test_separated_and_bad_poses(element):
     assert e.value.field == "twist1.shape"
 
 
-def test_spin_friction_moment(element):
-    """A ball spinning about the normal: the friction moment about the contact point is the
-    spin torque -(3 pi / 16) mu F a (Coulomb over the Hertz circle; the regularisation speed
-    of 1 mm/s softens the centre, r < 0.02 mm here, by about 0.1 %), it is all of moment1
-    (the normal force passes through the centre, the friction force vanishes), and to_dict
-    carries it."""
+def test_spin_friction_moment(repo):
+    """A ball spinning about the normal, exact Coulomb (no regularisation speed): the
+    friction moment about the contact point is the spin torque -(3 pi / 16) mu F a over the
+    Hertz circle, it is all of moment1 (the normal force passes through the centre, the
+    friction force vanishes), and to_dict carries it."""
+    text = (repo / "crates/kontakt-capi/examples/element_ball_on_flat.toml").read_text()
+    assert "mu = 0.1\n" in text
+    element = kt.ContactElement.from_toml(text.replace("mu = 0.1\n", "mu = 0.1\nregularisation_speed_mm_s = 0.0\n"))
     delta = 0.005
     r = element.evaluate(((0.0, 0.0, 10.0 - delta), (1.0, 0.0, 0.0, 0.0)), np.eye(4), ((0, 0, 0), (0, 0, 50.0)))
     a = math.sqrt(10.0 * delta)
     exact = -3.0 * math.pi / 16.0 * 0.1 * r.normal_force * a
-    assert r.friction_moment[2] == pytest.approx(exact, rel=3e-3)
+    assert r.friction_moment[2] == pytest.approx(exact, rel=1e-9)
     np.testing.assert_allclose(r.friction_moment[:2], [0.0, 0.0], atol=1e-12 * abs(exact))
     np.testing.assert_allclose(r.moment1, r.friction_moment, atol=1e-9 * abs(exact))
     assert r.to_dict()["friction_moment_nmm"] == list(r.friction_moment)
