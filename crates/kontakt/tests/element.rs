@@ -270,6 +270,46 @@ fn roller_rib_from_poses() {
     assert!((r.force1.normalize() - n).norm() < 1e-9);
 }
 
+/// `stiffness` evaluates every difference from the element's state at the call and leaves
+/// that state as it was: along an approach ramp of the torus/torus pairing through a PimP
+/// grid resize (and its fade), at every 10th of 2000 steps, two calls give the same matrix
+/// bit for bit, and the next evaluation equals that of a copy that took no stiffness. (With
+/// the differences run from the state each left behind, the warm starts and the fade's
+/// weight moved between them.)
+#[test]
+fn stiffness_leaves_the_element_as_it_was() {
+    let rr = RollerRib::new(RollerRibSpec::builtin("torus-torus-28").unwrap()).unwrap();
+    let mut spec = ElementSpec::new(rr.face.clone(), rr.rib.clone()).unwrap();
+    spec.backend = Backend::Pimp(PimpOptions::default());
+    let mut e = ContactElement::new(spec).unwrap();
+    let n = rr.contact.normal.into_inner();
+    let at = |delta: f64| {
+        Isometry3::from_parts(Translation3::from(-n * delta), UnitQuaternion::identity())
+    };
+    let (id, z) = (Isometry3::identity(), Twist::zero());
+    let steps = 2000;
+    for i in 0..steps {
+        let delta = 0.0005 + 0.0042 * i as f64 / steps as f64;
+        if i % 10 == 5 {
+            let mut twin = e.clone();
+            let k1 = e.stiffness(&at(delta), &id, &z, &z, 4e-6, 1e-6).unwrap();
+            let k2 = e.stiffness(&at(delta), &id, &z, &z, 4e-6, 1e-6).unwrap();
+            assert_eq!(k1, k2, "step {i}");
+            let (r, r_twin) = (
+                e.evaluate(&at(delta), &id, &z, &z).unwrap(),
+                twin.evaluate(&at(delta), &id, &z, &z).unwrap(),
+            );
+            assert_eq!(
+                (r.force1, r.moment1),
+                (r_twin.force1, r_twin.moment1),
+                "step {i}"
+            );
+        } else {
+            e.evaluate(&at(delta), &id, &z, &z).unwrap();
+        }
+    }
+}
+
 /// Bad input: NaN pose, non-unit rotation (of a pose or of a placement), NaN twist, bad
 /// damping and validity; each error names its field.
 #[test]

@@ -392,6 +392,12 @@ impl ContactElement {
     /// Steps of 1e-3 of the approach (translation) and of the approach over the contact width
     /// (rotation) are a good start.
     ///
+    /// Every difference is evaluated from the element's state at the call (warm starts, the
+    /// PimP grid and a fade between grids under way), and the element is left in that state:
+    /// a Jacobian taken between two time steps does not move the trajectory's warm starts,
+    /// and two calls give the same matrix bit for bit. (This copies the element's buffers
+    /// once per difference.)
+    ///
     /// # Errors
     /// [`Error::InvalidInput`] (fields `step_translation`, `step_rotation`) for non-finite or
     /// non-positive steps; those of [`ContactElement::evaluate`].
@@ -412,6 +418,30 @@ impl ContactElement {
                 return Err(Error::invalid(name, h, "a finite step > 0"));
             }
         }
+        let start = self.clone();
+        let k = self.differences(
+            &start,
+            pose1,
+            pose2,
+            twist1,
+            twist2,
+            [step_translation, step_rotation],
+        );
+        *self = start;
+        k
+    }
+
+    /// The central differences of [`ContactElement::stiffness`], each evaluated from the
+    /// state `start`.
+    fn differences(
+        &mut self,
+        start: &ContactElement,
+        pose1: &Isometry3<f64>,
+        pose2: &Isometry3<f64>,
+        twist1: &Twist,
+        twist2: &Twist,
+        [step_translation, step_rotation]: [f64; 2],
+    ) -> Result<Matrix6<f64>> {
         let mut k = Matrix6::zeros();
         for j in 0..6 {
             let mut column = [[0.0; 6]; 2];
@@ -424,6 +454,7 @@ impl ContactElement {
                     axis[j - 3] = sign * step_rotation;
                     p.rotation = UnitQuaternion::from_scaled_axis(axis) * p.rotation;
                 }
+                self.clone_from(start);
                 let r = self.evaluate(&p, pose2, twist1, twist2)?;
                 for i in 0..3 {
                     column[side][i] = r.force1[i];
