@@ -122,7 +122,7 @@ fn interpolated_gap_matches_exact_ray_casting_on_all_pairings() {
 /// poses is the tracker at the new approach on the gap of the first pose (evaluated so to
 /// keep the debug build at a few seconds; `roller_rib_from_poses` and the element sweeps
 /// cover the pose-to-gap step). The zone's curved, non-Hertzian shape makes the grid shrink
-/// along its long axis on the way (checked: one resize, faded over `FADE_CALLS` calls). The
+/// along its long axis on the way (checked: one resize, faded over `FADE_TRAVEL` of motion). The
 /// second difference of the force stays below 1e-4 of the force at every step (a jump of
 /// 1e-4 F would show as one of that size; a cell entering the zone gives a kink of a few
 /// 1e-5), and the fade's own contribution is measured against the steps before it.
@@ -159,6 +159,48 @@ fn force_is_smooth_through_a_grid_resize_over_10000_steps() {
     );
     assert_eq!(t.resizes(), 1);
     assert!(worst < 1e-4, "{worst}");
+}
+
+/// The fade between grids moves with the contact, not with the calls: on the load ramp
+/// above, inside the fade, a call repeated at the same approach returns the same weight bit
+/// for bit and the same force to 2e-11 (a fade counted in calls moved the weight on by up to
+/// 1/20 and the force by about 1e-7), a call
+/// with travel moves the weight on, and a negative travel is refused naming `travel`.
+#[test]
+fn a_repeated_call_inside_a_fade_gives_the_same_result() {
+    let rr = roller_rib("torus-torus-28");
+    let gap = pressed_gap(&rr, 0.0);
+    let mut t = PimpTracker::new(pimp(), GapSampling::Interpolated).unwrap();
+    let steps = 10_000;
+    let mut checked = 0;
+    for i in 0..steps {
+        let delta = 0.0005 + 0.0042 * i as f64 / steps as f64;
+        t.evaluate(&gap, delta).unwrap();
+        if t.fading() && i % 50 == 0 {
+            let first = t.evaluate(&gap, delta).unwrap();
+            let (f1, w1) = (first.force, first.fade_weight);
+            let again = t.evaluate(&gap, delta).unwrap();
+            // The weight bit for bit; the force to the warm starts' rounding (the row
+            // windows and the stencil's rays start from the last call: 2e-11, as above).
+            assert_eq!(again.fade_weight, w1, "step {i}");
+            assert!(
+                (again.force / f1 - 1.0).abs() < 2e-11,
+                "step {i}: {} vs {f1}",
+                again.force
+            );
+            assert!(w1 > 0.0 && w1 < 1.0, "step {i}: weight {w1}");
+            let moved = t.evaluate_moved(&gap, delta, 1e-3).unwrap();
+            assert!(
+                moved.fade_weight > w1,
+                "step {i}: {} vs {w1}",
+                moved.fade_weight
+            );
+            checked += 1;
+        }
+    }
+    assert!(checked >= 5, "{checked} checks inside the fade");
+    let err = t.evaluate_moved(&gap, 0.004, -1e-3).unwrap_err();
+    assert!(err.to_string().contains("travel"), "{err}");
 }
 
 /// Along a trajectory (the roller sliding 0.1 mm across the contact and tilting ±0.05°,

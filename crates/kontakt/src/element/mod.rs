@@ -478,9 +478,9 @@ impl ContactElement {
     /// is `force` \[N\] to 1e-9 relative; returns the pose and the result there. Each step
     /// moves to the approach `δ (F_target/F)^(2/3)` of the point-contact power law (exact for
     /// Hertz, fast for the field back-ends), starting from contact if the bodies are apart,
-    /// at most [`PRESS_STEPS`] steps. (The PimP back-end fades between grids over 32 calls
-    /// after a resize, during which its force at a pose moves by up to about 1e-5; the step
-    /// budget lets a fade finish.)
+    /// at most [`PRESS_STEPS`] steps. (After a grid resize the PimP back-end fades between
+    /// its two grids as the contact moves, `pimp::FADE_TRAVEL`; the force is then a blend of
+    /// the two, which differ by about 1e-5, and the steps converge on the blend.)
     ///
     /// # Errors
     /// [`Error::InvalidInput`] (field `force`) for a non-finite or non-positive force, (field
@@ -642,8 +642,15 @@ impl ContactElement {
             (p, _) => p.map(|p| pose1 * p),
         };
         let contact = find_contact(p1, p2, guess)?;
+        let here = pose1.inverse_transform_point(&contact.point);
+        // The contact point's step over the last contact's size (0 after a separation): the
+        // motion that moves a PimP fade between grids on.
+        let travel = match self.last_point {
+            Some(p) if self.last_area > 0.0 => (here - p).norm() / self.last_area.sqrt(),
+            _ => 0.0,
+        };
         self.prev_point = self.last_point;
-        self.last_point = Some(pose1.inverse_transform_point(&contact.point));
+        self.last_point = Some(here);
         self.last_area = 0.0;
         let zero = Vector3::zeros();
         let separated = ElementResult {
@@ -732,7 +739,7 @@ impl ContactElement {
                     .tracker
                     .as_mut()
                     .ok_or_else(|| Error::invalid("backend", "pimp", "a planned element"))?
-                    .evaluate(gap, approach)?;
+                    .evaluate_moved(gap, approach, travel)?;
                 FieldView {
                     samples: Samples::Binned(t.grid, t.pressure),
                     orientation: t.orientation,

@@ -44,7 +44,7 @@ pub use crate::field::ContactZone;
 pub use crate::field::domain::MIN_CELLS_ACROSS;
 pub use crate::gap::{FnGap, GapSource, QuadraticGap, SurfacePairGap};
 pub use bedding::{Mode, SampledGap};
-pub use tracker::{FADE_CALLS, GapSampling, NODES_X, NODES_Y, PimpTracker, TrackedField};
+pub use tracker::{FADE_TRAVEL, GapSampling, NODES_X, NODES_Y, PimpTracker, TrackedField};
 
 use crate::error::{Error, Result, positive_as};
 use crate::field::NormalSolution;

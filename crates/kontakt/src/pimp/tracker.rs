@@ -10,8 +10,11 @@
 //!   continuously, and `λ` itself changes only when the zone reaches more than 90 % or
 //!   less than 50 % of the grid (a non-Hertzian zone);
 //! - the buffers of the gap and the pressure (no allocation per call);
-//! - while `λ` changes, both grids: the outputs fade from the old to the new grid over
-//!   [`FADE_CALLS`] calls with the cubic smooth step, so a resize does not jump the force.
+//! - while `λ` changes, both grids: the outputs fade from the old to the new grid with the
+//!   cubic smooth step as the contact moves (over [`FADE_TRAVEL`] of motion: the relative
+//!   change of the footprint plus the caller's travel, [`PimpTracker::evaluate_moved`]), so
+//!   a resize does not jump the force, and a call repeated at the same pose gives the same
+//!   result (a fade counted in calls would move on).
 //!
 //! The gap is not ray-cast on every cell: [`GapSampling::Interpolated`] casts a stencil of
 //! `NODES_X × NODES_Y` Chebyshev-Lobatto points spanning the grid (exact rays through the source) and
@@ -41,8 +44,12 @@ const ODD: usize = NODES_X / 2;
 /// Stencil points along the grid's y axis (polynomial degree `NODES_Y − 1`).
 pub const NODES_Y: usize = 5;
 
-/// Calls over which the outputs fade from the old grid to the new one after a resize.
-pub const FADE_CALLS: usize = 32;
+/// Motion over which the outputs fade from the old grid to the new one after a resize: the
+/// sum over calls of the largest relative change of the footprint's two half-widths and the
+/// caller's travel relative to the contact's size ([`PimpTracker::evaluate_moved`]). 0.03
+/// is about 12 calls of the element's benchmark (the contact moving 0.1 % of its width per
+/// call) and 300 of a load ramp in steps of 2e-4 of the approach.
+pub const FADE_TRAVEL: f64 = 0.03;
 
 /// The grid's half-extent over the footprint of the quadratic gap at the start (PimP's
 /// first grid, [`Pimp::solve`]).
@@ -164,8 +171,10 @@ pub struct PimpTracker {
     sampling: GapSampling,
     /// Grid extent over the footprint, per axis; `None` before the first call.
     lambda: Option<[f64; 2]>,
-    /// The old grid's `λ` and the calls done in a fade.
-    fade: Option<([f64; 2], usize)>,
+    /// The old grid's `λ` and the fade's progress (motion so far over [`FADE_TRAVEL`]).
+    fade: Option<([f64; 2], f64)>,
+    /// The last call's footprint \[mm\], for the motion that drives a fade.
+    last_footprint: Option<[f64; 2]>,
     slots: [Slot; 2],
     /// Inverses of the stencil's Vandermonde matrices, `V[k][i] = u_k^i`, along x and y.
     vinv_x: SMatrix<f64, NODES_X, NODES_X>,
@@ -234,6 +243,7 @@ impl PimpTracker {
             sampling,
             lambda: None,
             fade: None,
+            last_footprint: None,
             slots: [slot.clone(), slot],
             vinv_x,
             vinv_y,
@@ -295,6 +305,7 @@ impl PimpTracker {
     pub fn reset(&mut self) {
         self.lambda = None;
         self.fade = None;
+        self.last_footprint = None;
         self.hertz = None;
         for slot in &mut self.slots {
             slot.since_full = usize::MAX;
@@ -312,7 +323,28 @@ impl PimpTracker {
         source: &dyn GapSource,
         approach: Millimetre,
     ) -> Result<TrackedField<'_>> {
+        self.evaluate_moved(source, approach, 0.0)
+    }
+
+    /// [`PimpTracker::evaluate`] after the contact has travelled `travel` (≥ 0,
+    /// dimensionless: for example the contact point's step over the contact's size `√area`)
+    /// since the last call, beyond what the footprint's change shows: a fade between grids
+    /// moves on by both ([`FADE_TRAVEL`]). The contact element passes its contact point's
+    /// step.
+    ///
+    /// # Errors
+    /// As [`PimpTracker::evaluate`]; [`Error::InvalidInput`] (field `travel`) for a negative
+    /// or non-finite travel.
+    pub fn evaluate_moved(
+        &mut self,
+        source: &dyn GapSource,
+        approach: Millimetre,
+        travel: f64,
+    ) -> Result<TrackedField<'_>> {
         positive_as("approach", approach, "a finite approach > 0 mm")?;
+        if !(travel.is_finite() && travel >= 0.0) {
+            return Err(Error::invalid("travel", travel, "a finite travel >= 0"));
+        }
         let curvature = source.curvature();
         let hertz = HertzPointContact::new_near(
             PointGeometry::from_curvature(curvature),
@@ -334,6 +366,15 @@ impl PimpTracker {
             Bedding::Published { .. } => curvature.a_coef,
         };
         let footprint = [(cut / a_eff).sqrt(), (cut / curvature.b_coef).sqrt()];
+        // How far the contact moved since the last call: the footprint's relative change
+        // and the caller's travel.
+        let motion = travel
+            + self.last_footprint.map_or(0.0, |last| {
+                (footprint[0] / last[0] - 1.0)
+                    .abs()
+                    .max((footprint[1] / last[1] - 1.0).abs())
+            });
+        self.last_footprint = Some(footprint);
         let fresh = self.lambda.is_none();
         let mut lambda = self.lambda.unwrap_or([LAMBDA_START; 2]);
         let mut immediate = 0;
@@ -379,7 +420,7 @@ impl PimpTracker {
         self.resizes += usize::from(!fresh) * immediate;
         // The old grid during a fade.
         let mut weight = 1.0;
-        if let Some((old, calls)) = self.fade {
+        if let Some((old, progress)) = self.fade {
             self.fill(
                 1,
                 source,
@@ -390,11 +431,11 @@ impl PimpTracker {
                 footprint,
             )?;
             self.press(1, approach)?;
-            if self.slots[1].stats.touches.iter().any(|&t| t) || calls + 1 >= FADE_CALLS {
+            let t = progress + motion / FADE_TRAVEL;
+            if self.slots[1].stats.touches.iter().any(|&t| t) || !(t < 1.0) {
                 self.fade = None;
             } else {
-                self.fade = Some((old, calls + 1));
-                let t = (calls + 1) as f64 / FADE_CALLS as f64;
+                self.fade = Some((old, t));
                 weight = t * t * (3.0 - 2.0 * t);
             }
         }
@@ -408,7 +449,7 @@ impl PimpTracker {
                 }
             }
             if target != lambda {
-                self.fade = Some((lambda, 0));
+                self.fade = Some((lambda, 0.0));
                 lambda = target;
                 self.resizes += 1;
             }
