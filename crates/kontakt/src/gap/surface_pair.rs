@@ -9,6 +9,15 @@ use crate::geometry::{ContactFrame, Grid2, RelativeCurvature};
 use crate::units::Millimetre;
 use nalgebra::{Isometry3, Point3, Unit, Vector3};
 
+/// The two bodies at the contact with their curvature tensors and no edges yet (the faces'
+/// edges are marked after, `add_profile_ends`).
+fn edgeless(tensors: [[f64; 3]; 2]) -> [BodyAtContact; 2] {
+    tensors.map(|curvature| BodyAtContact {
+        curvature,
+        edges: [None, None],
+    })
+}
+
 /// The gap between two placed surfaces, measured along the common normal from the
 /// contact plane at their contact point.
 ///
@@ -45,10 +54,7 @@ impl SurfacePairGap {
             ex,
             ey,
             curvature,
-            bodies: tensors.map(|curvature| BodyAtContact {
-                curvature,
-                edges: [None, None],
-            }),
+            bodies: edgeless(tensors),
         };
         gap.add_profile_ends();
         Ok(gap)
@@ -75,10 +81,7 @@ impl SurfacePairGap {
                 self.ex = ex;
                 self.ey = ey;
                 self.curvature = curvature;
-                self.bodies = tensors.map(|curvature| BodyAtContact {
-                    curvature,
-                    edges: [None, None],
-                });
+                self.bodies = edgeless(tensors);
                 self.add_profile_ends();
                 Ok(())
             }
