@@ -61,6 +61,13 @@ pub struct BemOutcome {
 /// Invalid input (named by its case-file key), bodies that do not touch, a contact that
 /// reaches the border of a map or a fixed extent, and non-convergence.
 pub fn run_bem_case(case: &PimpCase, base_dir: &Path) -> Result<BemOutcome> {
+    crate::validity::checked(run_bem_case_unchecked(case, base_dir)?)
+}
+
+crate::validity::checked_report!(BemOutcome, report);
+
+/// [`run_bem_case`] before the validity check of [`crate::validity::checked`].
+pub(crate) fn run_bem_case_unchecked(case: &PimpCase, base_dir: &Path) -> Result<BemOutcome> {
     run(case, base_dir, None)
 }
 
@@ -78,7 +85,7 @@ pub fn run_bem_case_on_map(case: &PimpCase, map: GapMap) -> Result<BemOutcome> {
             "\"map\" for a case solved on a map in memory",
         ));
     }
-    run(case, Path::new("."), Some(map))
+    crate::validity::checked(run(case, Path::new("."), Some(map))?)
 }
 
 fn run(case: &PimpCase, base_dir: &Path, given: Option<GapMap>) -> Result<BemOutcome> {
@@ -133,7 +140,7 @@ fn run(case: &PimpCase, base_dir: &Path, given: Option<GapMap>) -> Result<BemOut
             "exactly one of force_n or approach_mm (or neither for surfaces placed in contact)",
         )
     };
-    let (label, solution, separation, rib_angle, curvature, boundary, warnings) = match &case
+    let (label, solution, separation, rib_angle, curvature, boundary, (warnings, contacts)) = match &case
         .geometry
     {
         GeometrySpec::Map {
@@ -169,7 +176,7 @@ fn run(case: &PimpCase, base_dir: &Path, given: Option<GapMap>) -> Result<BemOut
                 None,
                 None,
                 *boundary,
-                Vec::new(),
+                (Vec::new(), Vec::new()),
             )
         }
         g => {
@@ -230,6 +237,7 @@ fn run(case: &PimpCase, base_dir: &Path, given: Option<GapMap>) -> Result<BemOut
             hertz: curvature.and_then(|k| hertz_echo(k, m1, m2, solution.force)),
             grid_rounds: solution.domains,
             warnings,
+            contacts,
         },
         &solution,
     );

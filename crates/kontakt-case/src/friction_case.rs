@@ -46,6 +46,8 @@
 
 use crate::common::SCHEMA_VERSION;
 use crate::pimp_case::{GeometrySpec, roller_rib_from_spec};
+use crate::validity::{ContactSize, Size, checked, checked_report};
+use kontakt::hertz::{HertzPointContact, PointGeometry};
 use kontakt::bearing::{
     Operating, PressureModel, RibFriction, RibFrictionModel, RibLubrication, RollerSet,
 };
@@ -567,9 +569,17 @@ pub struct FrictionReport {
     pub rows: Vec<FrictionRow>,
     /// Torque of each model relative to Hertz (when Hertz is among the models).
     pub model_difference: Vec<ModelDifference>,
-    /// Every distinct warning of the film formula and the models.
+    /// Every distinct warning of the film formula and the models, and of the rib
+    /// contact's size against the roller end and the rib.
     pub warnings: Vec<String>,
+    /// The rib contact's size against the bodies at the largest rib load, for the
+    /// validity check ([`crate::validity`]); not in the JSON.
+    #[serde(skip)]
+    pub contacts: Vec<ContactSize>,
 }
+
+checked_report!(FrictionReport);
+checked_report!(FrictionOutcome, report);
 
 /// A friction case's report and the fields of its maps.
 #[derive(Debug, Clone, PartialEq)]
@@ -636,6 +646,78 @@ impl FrictionMap {
 /// # Errors
 /// Invalid input named by its case-file key, and the solvers' failures.
 pub fn run_friction_case(case: &FrictionCase) -> Result<FrictionOutcome> {
+    checked(run_friction_case_unchecked(case)?)
+}
+
+/// The rib contact's size against the roller end face and the rib at the largest rib
+/// load of the speeds `speeds` \[r/min\]: the Hertz ellipse of the contact point's
+/// curvature, as PimP and the half-space solver check before a solve
+/// (`kontakt::field::validity::ellipse_size_check`). Refused here, before any solve, when
+/// the contact would be as large as a body's radius of curvature or run over the face's
+/// edge; otherwise the contact for the validity check and the warnings about the edge.
+fn rib_contact_size(
+    case: &FrictionCase,
+    model: &RibFrictionModel,
+    gap: &kontakt::gap::SurfacePairGap,
+    speeds: &[f64],
+) -> Result<(Vec<ContactSize>, Vec<String>)> {
+    // A speed the loads cannot be computed at is reported by the sweep, with its key.
+    let Some(rib_load) = speeds
+        .iter()
+        .filter_map(|&rpm| model.loads(&operating(case.load.axial_n, rpm)).ok())
+        .map(|(_, loads)| loads.rib)
+        .reduce(f64::max)
+    else {
+        return Ok((Vec::new(), Vec::new()));
+    };
+    let material = model.material();
+    let sol = HertzPointContact::new(
+        PointGeometry::from_curvature(kontakt::gap::GapSource::curvature(gap)),
+        material,
+        material,
+    )
+    .and_then(|h| h.solve_force(rib_load))?;
+    let at = format!("rib contact at the largest rib load, {rib_load:.6} N");
+    let key = |f: &str| crate::pimp_case::size_field(&case.geometry, f);
+    let check =
+        kontakt::field::validity::ellipse_size_check(gap, sol.semi_axes, sol.orientation)
+            .map_err(|e| match e {
+                Error::Geometry { field, reason } => Error::Geometry {
+                    field: key(&field).into(),
+                    reason: format!("{at}: {reason}"),
+                },
+                other => other,
+            })?;
+    let edge = kontakt::field::validity::ZoneCheck {
+        curvature: None,
+        ..check
+    };
+    let contacts = check
+        .curvature
+        .map(|c| ContactSize {
+            at: Some(at.clone()),
+            // The message of the first model's theory.
+            size: if case.models.first() == Some(&PressureModel::Hertz) {
+                Size::Hertz(kontakt::hertz::validity::SizeCheck {
+                    ratio: c.ratio,
+                    body: c.body,
+                    extent: c.extent,
+                    radius: c.radius,
+                    direction: 0.0,
+                })
+            } else {
+                Size::HalfSpace(c)
+            },
+            keys: [key("body1.radii"), key("body2.radii")],
+        })
+        .into_iter()
+        .collect();
+    let edge = edge.warnings().into_iter().map(|w| format!("{at}: {w}"));
+    Ok((contacts, edge.collect()))
+}
+
+/// [`run_friction_case`] before the validity check of [`crate::validity::checked`].
+pub(crate) fn run_friction_case_unchecked(case: &FrictionCase) -> Result<FrictionOutcome> {
     if case.method != "friction" {
         return Err(Error::invalid(
             "method",
@@ -671,6 +753,8 @@ pub fn run_friction_case(case: &FrictionCase) -> Result<FrictionOutcome> {
         .map(|l| l.lubrication())
         .transpose()?;
     let law = case.friction.law(lubrication.is_some())?;
+    // The gap with the face's edge, for the size check (the model's own has no edges).
+    let gap = pair.gap()?;
     let model = RibFrictionModel::new(
         pair.spec,
         case.rollers,
@@ -693,6 +777,7 @@ pub fn run_friction_case(case: &FrictionCase) -> Result<FrictionOutcome> {
             other => other.to_string(),
         })
     })?;
+    let (contacts, edge_warnings) = rib_contact_size(case, &model, &gap, &speeds)?;
     let mut rows = Vec::new();
     let mut warnings = BTreeSet::new();
     let middle = speeds[speeds.len() / 2];
@@ -752,7 +837,8 @@ pub fn run_friction_case(case: &FrictionCase) -> Result<FrictionOutcome> {
         law,
         rows,
         model_difference,
-        warnings: warnings.into_iter().collect(),
+        warnings: edge_warnings.into_iter().chain(warnings).collect(),
+        contacts,
     };
     let map = FrictionMap::new(&model, case.models[0], case.load.axial_n, middle)?;
     Ok(FrictionOutcome { report, map })

@@ -39,6 +39,7 @@
 
 use crate::common::{MaterialSpec, SCHEMA_VERSION, material, parse_toml};
 use crate::traction_case::{FrictionSpec, TractionGeometry, TractionLoad};
+use crate::validity::{ContactSize, checked, checked_report};
 use kontakt::tangential::{ContactEllipse, EllipseAxis, Mindlin};
 use kontakt::{Error, Result};
 use serde::{Deserialize, Serialize};
@@ -142,7 +143,17 @@ pub struct MindlinReport {
     pub loop_force_n: Vec<f64>,
     /// The tangential displacement \[mm\] at each point of `loop_force_n`.
     pub loop_displacement_mm: Vec<f64>,
+    /// Results to treat with care: a contact large against the bodies' radii of
+    /// curvature. Absent when none applies.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub warnings: Vec<String>,
+    /// The contact's size against the bodies (`kind = "hertz"`), for the validity check
+    /// ([`crate::validity`]); not in the JSON.
+    #[serde(skip)]
+    pub contacts: Vec<ContactSize>,
 }
+
+checked_report!(MindlinReport);
 
 impl MindlinCase {
     /// Parse a Cattaneo-Mindlin case from TOML text.
@@ -162,6 +173,11 @@ impl MindlinCase {
 /// (`tangential.amplitude_n` outside `0 < Q* <= mu P`, `tangential.cycles`,
 /// `tangential.points`, `friction.mu`, `load.force_n`, `geometry.radii1_mm`, ...).
 pub fn run_mindlin_case(case: &MindlinCase) -> Result<MindlinReport> {
+    checked(run_mindlin_case_unchecked(case)?)
+}
+
+/// [`run_mindlin_case`] before the validity check of [`crate::validity::checked`].
+pub(crate) fn run_mindlin_case_unchecked(case: &MindlinCase) -> Result<MindlinReport> {
     if case.method != "mindlin" {
         return Err(Error::invalid(
             "method",
@@ -206,16 +222,18 @@ pub fn run_mindlin_case(case: &MindlinCase) -> Result<MindlinReport> {
             other => other.into(),
         })
     };
+    let mut contacts = Vec::new();
     let (label, ellipse) = match &case.geometry {
         TractionGeometry::Hertz {
             radii1_mm,
             radii2_mm,
             angle_deg,
         } => {
-            let sol = crate::traction_case::hertz_of_geometry(
+            let (sol, size) = crate::traction_case::hertz_of_geometry(
                 *radii1_mm, *radii2_mm, *angle_deg, m1, m2, force,
             )
             .map_err(map)?;
+            contacts.push(size);
             (
                 "hertz",
                 ContactEllipse::from_hertz(&sol, EllipseAxis::Major)?,
@@ -297,5 +315,7 @@ pub fn run_mindlin_case(case: &MindlinCase) -> Result<MindlinReport> {
         loop_energy_nmm: loop_energy,
         loop_force_n: forces,
         loop_displacement_mm: shifts,
+        warnings: Vec::new(),
+        contacts,
     })
 }

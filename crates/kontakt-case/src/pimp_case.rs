@@ -43,6 +43,7 @@
 
 pub use crate::common::MaterialSpec;
 use crate::common::SCHEMA_VERSION;
+use crate::validity::{ContactSize, Size, checked_report};
 pub(crate) use crate::common::material;
 use kontakt::bearing::{FaceShape, RibShape, RollerRib, RollerRibSpec, TaperedRollerBearing};
 use kontakt::field::NormalSolution;
@@ -412,7 +413,13 @@ pub struct PimpReport {
     /// (`kontakt::field::validity`). Empty when none applies (always for a gap map, whose
     /// bodies are unknown).
     pub warnings: Vec<String>,
+    /// The zone's size against the bodies, for the validity check ([`crate::validity`]);
+    /// not in the JSON.
+    #[serde(skip)]
+    pub contacts: Vec<ContactSize>,
 }
+
+checked_report!(PimpReport);
 
 /// The grid of a PimP result.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -502,6 +509,13 @@ pub fn roller_rib_from_spec(geometry: &GeometrySpec) -> Result<Option<(String, R
 /// Invalid input (named by its case-file key), bodies that do not touch under pose
 /// control (the error states the separation), grid and convergence failures.
 pub fn run_pimp_case(case: &PimpCase) -> Result<PimpOutcome> {
+    crate::validity::checked(run_pimp_case_unchecked(case)?)
+}
+
+checked_report!(PimpOutcome, report);
+
+/// [`run_pimp_case`] before the validity check of [`crate::validity::checked`].
+pub(crate) fn run_pimp_case_unchecked(case: &PimpCase) -> Result<PimpOutcome> {
     if case.method != "pimp" {
         return Err(Error::invalid(
             "method",
@@ -580,7 +594,7 @@ pub fn run_pimp_case(case: &PimpCase) -> Result<PimpOutcome> {
             ));
         }
     };
-    let warnings = zone_warnings(&case.geometry, source.as_ref(), &solution)?;
+    let (warnings, contacts) = zone_warnings(&case.geometry, source.as_ref(), &solution)?;
     let k = source.curvature();
     let hertz = hertz_echo(k, m1, m2, solution.force);
     let report = PimpReport::assemble(
@@ -597,6 +611,7 @@ pub fn run_pimp_case(case: &PimpCase) -> Result<PimpOutcome> {
             hertz,
             grid_rounds: solution.domains - 1,
             warnings,
+            contacts,
         },
         &solution,
     );
@@ -637,7 +652,7 @@ pub(crate) fn precheck(
 }
 
 /// The case-file key of a size check's field (`body1.radii`, an edge's quantity).
-fn size_field(geometry: &GeometrySpec, f: &str) -> String {
+pub(crate) fn size_field(geometry: &GeometrySpec, f: &str) -> String {
     let body = if f.starts_with("body2") { 2 } else { 1 };
     match (geometry, f) {
         (GeometrySpec::RollerRib { .. }, "bearing.roller_large_end_radius") => {
@@ -660,16 +675,34 @@ fn size_field(geometry: &GeometrySpec, f: &str) -> String {
 }
 
 /// The size check of a solution against the bodies of its geometry
-/// (`kontakt::field::validity`): the report's warnings, or the error naming the case-file
-/// key of the body's radii or the face's edge.
+/// (`kontakt::field::validity`): the report's warnings about a face's edge and the zone's
+/// size against the bodies' curvature (warned about by [`crate::validity::checked`]), or
+/// the error naming the case-file key of the body's radii or the face's edge.
 pub(crate) fn zone_warnings<D>(
     geometry: &GeometrySpec,
     source: &dyn GapSource,
     solution: &NormalSolution<D>,
-) -> Result<Vec<String>> {
+) -> Result<(Vec<String>, Vec<ContactSize>)> {
     let check = kontakt::field::validity::zone_size_check(source, solution)
         .map_err(|e| e.map_field(|f| size_field(geometry, f)))?;
-    Ok(check.warnings())
+    let edge = kontakt::field::validity::ZoneCheck {
+        curvature: None,
+        ..check
+    };
+    let keys = [
+        size_field(geometry, "body1.radii"),
+        size_field(geometry, "body2.radii"),
+    ];
+    let contacts = check
+        .curvature
+        .map(|c| ContactSize {
+            at: None,
+            size: Size::HalfSpace(c),
+            keys,
+        })
+        .into_iter()
+        .collect();
+    Ok((edge.warnings(), contacts))
 }
 
 /// The substitute geometry of a case and what the report echoes about it.
@@ -805,8 +838,10 @@ pub(crate) struct ReportMeta {
     pub hertz: Option<HertzEcho>,
     /// The report's `grid_rounds`: PimP counts grid resizes, bem the domains tried.
     pub grid_rounds: usize,
-    /// The size check's warnings.
+    /// The size check's warnings (a face's edge).
     pub warnings: Vec<String>,
+    /// The zone's size against the bodies.
+    pub contacts: Vec<ContactSize>,
 }
 
 impl PimpReport {
@@ -842,6 +877,7 @@ impl PimpReport {
             rib_angle_deg: meta.rib_angle_deg,
             hertz: meta.hertz,
             warnings: meta.warnings,
+            contacts: meta.contacts,
         }
     }
 }

@@ -73,7 +73,9 @@
 //! its value and the models, when the materials differ and `K` is neglected.
 
 use crate::common::{MaterialSpec, SCHEMA_VERSION, material, parse_toml};
+use crate::validity::{ContactSize, Size, checked, checked_report};
 use kontakt::hertz::line::LineContact;
+use kontakt::hertz::validity::{line_size, point_size};
 use kontakt::hertz::{HertzPointContact, PointGeometry};
 use kontakt::material::effective_modulus;
 use kontakt::rolling::{KalkerExact, KalkerExactOptions, difference_parameter};
@@ -553,10 +555,17 @@ pub struct TractionReport {
     pub spin_creepage_per_mm: Option<f64>,
     /// One curve per model, in the order of the case.
     pub curves: Vec<CurveReport>,
-    /// Results to treat with care: unconverged points of `kalker_exact`, a coarse grid.
+    /// Results to treat with care: a contact large against the bodies, unconverged points
+    /// of `kalker_exact`, a coarse grid.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<String>,
+    /// The contact's size against the bodies (`kind = "hertz"`, and `"line"` with radii),
+    /// for the validity check ([`crate::validity`]); not in the JSON.
+    #[serde(skip)]
+    pub contacts: Vec<ContactSize>,
 }
+
+checked_report!(TractionReport);
 
 /// Run a traction case: build the contact, plan each model once and evaluate its curve.
 ///
@@ -641,6 +650,16 @@ pub fn run_traction_case_with_map(
     case: &TractionCase,
     map: Option<MapPoint>,
 ) -> Result<(TractionReport, Option<ExactMap>)> {
+    let (report, map) = run_traction_case_with_map_unchecked(case, map)?;
+    Ok((checked(report)?, map))
+}
+
+/// [`run_traction_case_with_map`] before the validity check of
+/// [`crate::validity::checked`].
+pub(crate) fn run_traction_case_with_map_unchecked(
+    case: &TractionCase,
+    map: Option<MapPoint>,
+) -> Result<(TractionReport, Option<ExactMap>)> {
     if map.is_some() && !case.models.contains(&TractionModel::KalkerExact) {
         return Err(Error::invalid(
             "models",
@@ -713,14 +732,16 @@ pub fn run_traction_case_with_map(
     let k_difference = difference_parameter(&m1, &m2).map_err(map_common)?;
 
     // (label, ellipse, Carter, line load, [a, b] or [half-width, half-length], p0)
+    let mut contacts = Vec::new();
     let (label, ellipse, carter, line_load, semi_axes_mm, max_pressure_mpa) = match &case.geometry {
         TractionGeometry::Hertz {
             radii1_mm,
             radii2_mm,
             angle_deg,
         } => {
-            let sol = hertz_of_geometry(*radii1_mm, *radii2_mm, *angle_deg, m1, m2, force)
+            let (sol, size) = hertz_of_geometry(*radii1_mm, *radii2_mm, *angle_deg, m1, m2, force)
                 .map_err(map_common)?;
+            contacts.push(size);
             let Some(axis) = rolling_axis(&sol) else {
                 return Err(Error::Geometry {
                     field: "geometry.angle_deg".into(),
@@ -760,6 +781,13 @@ pub fn run_traction_case_with_map(
                                 _ => "geometry.radii_mm".into(),
                             })
                         })?;
+                    let sol = contact.solve(line_load).map_err(map_common)?;
+                    let size = ContactSize::new(
+                        Size::Hertz(line_size(contact.radii(), &sol)),
+                        ["geometry.radii_mm[0]", "geometry.radii_mm[1]"],
+                    );
+                    size.verdict()?;
+                    contacts.push(size);
                     Carter::from_line_contact(&contact, line_load, mu).map_err(map_common)?
                 }
                 (None, Some(a)) => {
@@ -942,6 +970,7 @@ pub fn run_traction_case_with_map(
         spin_creepage_per_mm: combined.then_some(case.creepage.spin_per_mm),
         curves,
         warnings,
+        contacts,
     };
     Ok((report, exact_map))
 }
@@ -1183,8 +1212,9 @@ fn combined_curve(
 
 /// The Hertz solution of a `kind = "hertz"` geometry (principal radii \[mm\], the angle
 /// between the principal planes \[deg\]) under the normal force `force` \[N\]; errors name
-/// the case keys (`geometry.angle_deg`, `geometry.radii1_mm`, ...). Shared with the
-/// Cattaneo-Mindlin cases.
+/// the case keys (`geometry.angle_deg`, `geometry.radii1_mm`, ...), and its size against
+/// the bodies (keys `geometry.radii1_mm`, `geometry.radii2_mm`; refused here already when
+/// as large as a body's radius of curvature). Shared with the Cattaneo-Mindlin cases.
 pub(crate) fn hertz_of_geometry(
     radii1_mm: [f64; 2],
     radii2_mm: [f64; 2],
@@ -1192,7 +1222,7 @@ pub(crate) fn hertz_of_geometry(
     m1: kontakt::material::ElasticMaterial,
     m2: kontakt::material::ElasticMaterial,
     force: f64,
-) -> Result<kontakt::hertz::HertzPointSolution> {
+) -> Result<(kontakt::hertz::HertzPointSolution, ContactSize)> {
     if !angle_deg.is_finite() {
         return Err(Error::invalid(
             "geometry.angle_deg",
@@ -1208,7 +1238,13 @@ pub(crate) fn hertz_of_geometry(
                 .replace("body2.radii", "geometry.radii2_mm"),
         })
     })?;
-    HertzPointContact::new(g, m1, m2)?.solve_force(force)
+    let sol = HertzPointContact::new(g, m1, m2)?.solve_force(force)?;
+    let size = ContactSize::new(
+        Size::Hertz(point_size(&g, &sol)),
+        ["geometry.radii1_mm", "geometry.radii2_mm"],
+    );
+    size.verdict()?;
+    Ok((sol, size))
 }
 
 /// Plan the asperity model on the case's nominal contact.

@@ -158,7 +158,12 @@ pub fn print_report(out: &mut impl Write, r: &ContactReport, json: bool) -> Resu
     for (k, val, unit) in rows {
         writeln!(out, "  {k:<w$}  {val:>v$}  {unit}")?;
     }
-    for warning in &r.warnings {
+    print_warnings(out, &r.warnings)
+}
+
+/// A report's warnings, one `  warning: ...` line each.
+pub fn print_warnings(out: &mut impl Write, warnings: &[String]) -> Result<()> {
+    for warning in warnings {
         writeln!(out, "  warning: {warning}")?;
     }
     Ok(())

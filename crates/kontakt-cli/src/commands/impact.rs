@@ -77,5 +77,5 @@ pub fn print_report(out: &mut impl Write, r: &ImpactReport, json: bool) -> Resul
             el.energy_loss_nmm
         )?;
     }
-    Ok(())
+    crate::output::print_warnings(out, &r.warnings)
 }

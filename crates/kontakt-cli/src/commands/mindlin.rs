@@ -63,7 +63,7 @@ pub fn print_report(out: &mut impl Write, r: &MindlinReport, json: bool) -> Resu
         "  energy dissipated per cycle: {:.6e} N mm (closed form), {:.6e} N mm (loop area)",
         r.dissipated_energy_per_cycle_nmm, r.loop_energy_nmm
     )?;
-    Ok(())
+    crate::output::print_warnings(out, &r.warnings)
 }
 
 /// Every point of the loading history: `force_n`, `displacement_mm`.
