@@ -237,10 +237,14 @@ impl HertzPoint {
                 ));
             }
         };
+        let solution = solution.map_err(to_py)?;
+        let size = kontakt::hertz::validity::point_size(self.inner.geometry(), &solution);
+        let warnings = size_verdict(size, ["radii1", "radii2"])?;
         Ok(HertzPointResult {
             contact: self.inner,
-            solution: solution.map_err(to_py)?,
+            solution,
             by_approach,
+            warnings,
         })
     }
 }
@@ -251,6 +255,7 @@ pub struct HertzPointResult {
     contact: HertzPointContact,
     solution: HertzPointSolution,
     by_approach: bool,
+    warnings: Vec<String>,
 }
 
 #[pymethods]
@@ -299,6 +304,12 @@ impl HertzPointResult {
     #[getter]
     fn orientation(&self) -> f64 {
         self.solution.orientation
+    }
+    /// Where the result is outside Hertz theory's comfortable range (a contact above 0.4
+    /// of a body's radius of curvature), as in the case reports; empty when none applies.
+    #[getter]
+    fn warnings(&self) -> Vec<String> {
+        self.warnings.clone()
     }
 
     /// Hertz pressure [MPa] at the points (x, y) [mm] of the contact frame (x along body
@@ -376,6 +387,14 @@ impl HertzPointResult {
             self.approach()
         )
     }
+}
+
+/// The case layer's validity check of a contact's size, with the arguments named as the
+/// Python signature does: the warnings, or `InputError` naming the radius argument.
+fn size_verdict(size: kontakt::hertz::validity::SizeCheck, keys: [&str; 2]) -> PyResult<Vec<String>> {
+    use kontakt_case::validity::{ContactSize, Size};
+    let verdict = ContactSize::new(Size::Hertz(size), keys).verdict();
+    Ok(verdict.map_err(to_py)?.into_iter().collect())
 }
 
 fn yield_criterion(yield_stress: Option<f64>, name: &str) -> PyResult<Option<YieldSpec>> {
@@ -471,12 +490,15 @@ impl HertzLine {
             Some(l) => Some(self.inner.lundberg_approach(q * l, l).map_err(to_py)?),
             None => None,
         };
+        let size = kontakt::hertz::validity::line_size(self.inner.radii(), &solution);
+        let warnings = size_verdict(size, ["radius1", "radius2"])?;
         Ok(HertzLineResult {
             contact: self.inner,
             solution,
             length: self.length,
             approach,
             by_force,
+            warnings,
         })
     }
 }
@@ -489,6 +511,7 @@ pub struct HertzLineResult {
     length: Option<f64>,
     approach: Option<f64>,
     by_force: bool,
+    warnings: Vec<String>,
 }
 
 #[pymethods]
@@ -497,6 +520,12 @@ impl HertzLineResult {
     #[getter]
     fn b(&self) -> f64 {
         self.solution.half_width
+    }
+    /// Where the result is outside Hertz theory's comfortable range (a half-width above
+    /// 0.4 of a cylinder's radius), as in the case reports; empty when none applies.
+    #[getter]
+    fn warnings(&self) -> Vec<String> {
+        self.warnings.clone()
     }
     /// Maximum pressure p0 [MPa].
     #[getter]
