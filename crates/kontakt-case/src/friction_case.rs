@@ -193,11 +193,36 @@ impl SpeedSpec {
                     })
                     .collect())
             }
-            _ => Err(Error::invalid(
-                "speed",
-                "neither a list nor a complete range",
-                "either rpm = [...] or min_rpm, max_rpm (and optionally points, spacing)",
-            )),
+            (rpm, lo, hi) => {
+                // Say what was given: a list and (part of) a range (a sweep parameter on
+                // `speed.rpm` of a case with a range, issue 30 item 13), a list with
+                // `points`, half a range, or nothing.
+                let mut given: Vec<&str> = Vec::new();
+                if rpm.is_some() {
+                    given.push("rpm");
+                }
+                if lo.is_some() {
+                    given.push("min_rpm");
+                }
+                if hi.is_some() {
+                    given.push("max_rpm");
+                }
+                if self.points.is_some() {
+                    given.push("points");
+                }
+                let value = if given.is_empty() {
+                    "no speeds".to_string()
+                } else {
+                    given.join(", ")
+                };
+                Err(Error::invalid(
+                    "speed",
+                    value,
+                    "either a list rpm = [...] or a range min_rpm, max_rpm (with optional \
+                     points, spacing), not both (a sweep over speed.rpm needs a base case \
+                     with rpm; over a range, sweep speed.min_rpm or speed.max_rpm)",
+                ))
+            }
         }
     }
 }

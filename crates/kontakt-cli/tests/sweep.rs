@@ -482,3 +482,74 @@ fn fields_npy_stores_each_case_pressure_consistent_with_its_row() {
         "{msg}"
     );
 }
+
+/// Issue 30 items 3 and 13: a case with a contact large against the ball (1e6 N on a
+/// 6.35 mm ball, a = 0.54 R) has status `warning` and counts as solved; one beyond it
+/// (1e8 N) is `invalid` naming the key; a sweep in which every case fails writes its table
+/// and exits with status 1.
+#[test]
+fn warning_rows_and_a_sweep_whose_every_case_fails() {
+    let dir = tempdir("all-fail");
+    let sweep = |name: &str, values: &str| {
+        let p = dir.join(format!("{name}.toml"));
+        std::fs::write(
+            &p,
+            format!("[[parameter]]\nkey = \"load.force_n\"\nvalues = {values}\n{HERTZ_BASE}"),
+        )
+        .unwrap();
+        let out = dir.join(name);
+        let o = kontakt()
+            .args(["sweep", p.to_str().unwrap(), "--out"])
+            .arg(&out)
+            .args(["--format", "csv", "--json"])
+            .output()
+            .unwrap();
+        (o, read_csv(&out.join("results.csv")))
+    };
+    let (o, rows) = sweep("mixed", "[100.0, 1e6, 1e8]");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["cases_not_ok"], 1);
+    let status: Vec<&str> = rows.iter().map(|r| r["status"].as_str()).collect();
+    assert_eq!(status, ["ok", "warning", "invalid"]);
+    assert!(rows[1]["warnings[0]"].contains("contact size"), "{:?}", rows[1]);
+    assert!(rows[2]["error"].contains("body1.radii_mm"), "{:?}", rows[2]);
+    let (o, rows) = sweep("all-fail", "[-1.0, 1e8]");
+    assert_eq!(o.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("every case of the sweep failed (2 of 2)"), "{err}");
+    assert_eq!(err.trim().lines().count(), 1, "{err}");
+    assert_eq!(rows.len(), 2);
+}
+
+/// Issue 30 item 13: a sweep over `speed.rpm` of a friction case with a speed range says
+/// that both were given (it said "neither a list nor a complete range").
+#[test]
+fn a_sweep_over_rpm_of_a_range_names_both() {
+    let dir = tempdir("rpm");
+    let p = dir.join("s.toml");
+    std::fs::write(
+        &p,
+        format!(
+            "base = {:?}\n[[parameter]]\nkey = \"speed.rpm\"\nvalues = [[500.0], [1000.0]]\n",
+            examples().join("rib_friction.toml")
+        ),
+    )
+    .unwrap();
+    let out = dir.join("out");
+    let o = kontakt()
+        .args(["sweep", p.to_str().unwrap(), "--out"])
+        .arg(&out)
+        .args(["--format", "csv"])
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(1));
+    let rows = read_csv(&out.join("results.csv"));
+    for r in rows {
+        assert!(
+            r["error"].contains("speed = rpm, min_rpm, max_rpm, points")
+                && r["error"].contains("not both"),
+            "{r:?}"
+        );
+    }
+}

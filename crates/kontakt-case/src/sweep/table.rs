@@ -1,7 +1,8 @@
 //! One row per case and the Arrow tables of a chunk.
 //!
 //! A row is: `case` (the case index), the swept parameters (one column each, named as in
-//! the sweep file), `status` (`ok`, `invalid`: the case reader or the method refused an
+//! the sweep file), `status` (`ok`, `warning`: solved with warnings in the report's
+//! `warnings`, `invalid`: the case reader or the method refused an
 //! input, `failed`: a solver did not converge, `panic`: a bug), `error` (the one-line
 //! message, null when ok), then the case's report flattened:
 //! - nested objects give dotted names (`status.residual`, `hertz.max_pressure_mpa`);
@@ -29,7 +30,7 @@ const SKIPPED: [&str; 3] = ["kontakt_version", "schema_version", "inputs"];
 
 /// Names of the fixed columns.
 pub const CASE_COLUMN: &str = "case";
-/// Status column: `ok`, `invalid`, `failed` or `panic`.
+/// Status column: `ok`, `warning`, `invalid`, `failed` or `panic`.
 pub const STATUS_COLUMN: &str = "status";
 /// Error message column (null when ok).
 pub const ERROR_COLUMN: &str = "error";
@@ -39,6 +40,9 @@ pub const ERROR_COLUMN: &str = "error";
 pub enum Status {
     /// Solved.
     Ok,
+    /// Solved, with warnings (the report's `warnings`: a result outside the model's
+    /// comfortable range, such as a contact large against the bodies).
+    Warning,
     /// The case reader or the method refused an input (the message names the key).
     Invalid,
     /// A computation failed at run time (did not converge).
@@ -48,10 +52,16 @@ pub enum Status {
 }
 
 impl Status {
+    /// Whether the case was solved (`ok` or `warning`).
+    pub fn solved(self) -> bool {
+        matches!(self, Status::Ok | Status::Warning)
+    }
+
     /// The status column's text.
     pub fn as_str(self) -> &'static str {
         match self {
             Status::Ok => "ok",
+            Status::Warning => "warning",
             Status::Invalid => "invalid",
             Status::Failed => "failed",
             Status::Panic => "panic",
