@@ -130,6 +130,9 @@ fn run(case: &PimpCase, base_dir: &Path, given: Option<GapMap>) -> Result<BemOut
             "approach" => "load.approach_mm".into(),
             "cells" => "bem.cells".into(),
             "extent" => "bem.extent_mm".into(),
+            "e_star" => "body1.e_mpa, body2.e_mpa".into(),
+            "spacing[0]" => "geometry.spacing_mm[0]".into(),
+            "spacing[1]" => "geometry.spacing_mm[1]".into(),
             other => other.into(),
         })
     };

@@ -618,6 +618,11 @@ pub(crate) fn run_pimp_case_unchecked(case: &PimpCase) -> Result<PimpOutcome> {
     Ok(PimpOutcome { report, solution })
 }
 
+/// Smallest Hertz approach of a PimP or half-space case over the radius of relative
+/// curvature: the gap of surfaces placed at coordinates of the bodies' size is resolved to
+/// about 1e-16 of that size, so an approach of 1e-12 of it keeps four digits.
+pub const MIN_RELATIVE_APPROACH: f64 = 1e-12;
+
 /// Before a solve: the size check on the Hertz ellipse of the local curvature under the
 /// case's load (`kontakt::field::validity::ellipse_size_check`), so that a contact far
 /// larger than the bodies (a groove conforming to within micrometres) is refused naming
@@ -646,6 +651,29 @@ pub(crate) fn precheck(
     };
     // An invalid load is reported by the solver with its key.
     let Ok(sol) = sol else { return Ok(()) };
+    // The approach must be resolved by the gap, which is computed from surfaces placed at
+    // coordinates of the bodies' size: below MIN_RELATIVE_APPROACH of the radius of
+    // relative curvature the solvers iterated on rounding noise and ended as "did not
+    // converge" (a hostile probe: 1e-30 N on the example sphere/torus).
+    let k = source.curvature();
+    let radius = 0.5 / k.a_coef.max(k.b_coef);
+    if sol.approach < MIN_RELATIVE_APPROACH * radius {
+        let (key, value) = match (load.force_n, approach) {
+            (Some(f), _) => ("load.force_n", format!("{f:e} N")),
+            (None, Some(d)) if load.approach_mm.is_some() => ("load.approach_mm", format!("{d:e} mm")),
+            (None, _) => ("geometry", format!("a separation of {:e} mm", -approach.unwrap_or(0.0))),
+        };
+        return Err(Error::invalid(
+            key,
+            value,
+            format!(
+                "a load whose Hertz approach ({:e} mm) is at least {MIN_RELATIVE_APPROACH:e} of \
+                 the radius of relative curvature {radius:e} mm (below it the gap is not \
+                 resolved in double precision)",
+                sol.approach
+            ),
+        ));
+    }
     kontakt::field::validity::ellipse_size_check(source, sol.semi_axes, sol.orientation)
         .map_err(|e| e.map_field(|f| size_field(geometry, f)))?;
     Ok(())

@@ -275,3 +275,36 @@ fn mindlin_report_is_finite_and_its_loop_area_matches_the_closed_form() {
     assert_eq!(e.field(), Some("tangential.amplitude_n"), "{e}");
     assert!(e.to_string().contains("1e-8 mu P"), "{e}");
 }
+
+/// Issue 30 item 12: finite but absurd inputs that the field solvers iterated on until
+/// "did not converge (residual NaN/inf)" (exit status 1) are input errors naming the key
+/// and the range (exit status 2): the half-space solver's scales (modulus, cell size,
+/// pressure and displacement scale within 1e-100..1e100) and a PimP or half-space load
+/// whose Hertz approach the gap of the placed surfaces cannot resolve.
+#[test]
+fn absurd_inputs_of_the_field_solvers_are_input_errors() {
+    for (file, key, value, named) in [
+        ("bem_wavy_map.toml", "body1.e_mpa", 1e-300, "body1.e_mpa, body2.e_mpa"),
+        ("bem_wavy_map.toml", "load.force_n", 1e300, "load.force_n"),
+        ("bem_wavy_map.toml", "geometry.spacing_mm", 1e-300, "geometry.spacing_mm[0]"),
+        ("pimp_sphere_on_torus.toml", "load.force_n", 1e-30, "load.force_n"),
+        ("roller_rib_torus_torus.toml", "load.force_n", 1e-150, "load.force_n"),
+        ("bem_torus_torus.toml", "load.force_n", 1e-150, "load.force_n"),
+        ("rough_self_affine.toml", "surface.size_mm", 1e-300, ""),
+    ] {
+        let v = if key.ends_with("spacing_mm") || key.ends_with("size_mm") {
+            Value::Array(vec![Value::Float(value), Value::Float(value)])
+        } else {
+            Value::Float(value)
+        };
+        let case = Case::from_toml_table(edited(file, &[(key, v)])).unwrap();
+        let e = case.run(&examples()).map(|_| ()).unwrap_err();
+        assert!(
+            matches!(e, kontakt::Error::InvalidInput { .. }),
+            "{file} {key} = {value:e}: {e}"
+        );
+        if !named.is_empty() {
+            assert_eq!(e.field(), Some(named), "{e}");
+        }
+    }
+}

@@ -5,6 +5,35 @@ use kontakt_case::ContactReport;
 use kontakt_case::case::ContactKind;
 use std::io::Write;
 
+/// A number in the text tables: `{:.N}` gives `N` decimals for `1e-3 <= |x| < 1e7` (and
+/// 0), and exponent form with `max(N, 3)` decimals of the mantissa outside that range, so
+/// that a value of 1e300 prints as `1.000e300` and not as 301 digits that break the
+/// table's columns (`{}` without a precision: Rust's shortest form inside the range,
+/// `{:e}` outside). Width and alignment are honoured (numbers right-aligned by default).
+/// Every command's tables format their numbers through it.
+#[derive(Debug, Clone, Copy)]
+pub struct Num(pub f64);
+
+impl std::fmt::Display for Num {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let x = self.0;
+        let plain = x == 0.0 || !x.is_finite() || (1e-3..1e7).contains(&x.abs());
+        let s = match (plain, f.precision()) {
+            (true, Some(p)) => format!("{x:.p$}"),
+            (true, None) => format!("{x}"),
+            (false, Some(p)) => format!("{x:.*e}", p.max(3)),
+            (false, None) => format!("{x:e}"),
+        };
+        let pad = f.width().unwrap_or(0).saturating_sub(s.chars().count());
+        let (left, right) = match f.align() {
+            Some(std::fmt::Alignment::Left) => (0, pad),
+            Some(std::fmt::Alignment::Center) => (pad / 2, pad - pad / 2),
+            _ => (pad, 0),
+        };
+        write!(f, "{:left$}{s}{:right$}", "", "")
+    }
+}
+
 fn opt(v: Option<f64>, prec: usize) -> String {
     v.map_or_else(|| "-".to_string(), |x| fmt_num(x, prec))
 }
@@ -56,15 +85,15 @@ pub fn print_report(out: &mut impl Write, r: &ContactReport, json: bool) -> Resu
     let mut rows: Vec<(&str, String, &str)> = vec![
         ("body 1 radii", radii(&i.body1_radii_mm), "mm"),
         ("body 2 radii", radii(&i.body2_radii_mm), "mm"),
-        ("E1, nu1", format!("{}, {}", i.e1_mpa, i.nu1), "MPa, -"),
-        ("E2, nu2", format!("{}, {}", i.e2_mpa, i.nu2), "MPa, -"),
+        ("E1, nu1", format!("{}, {}", Num(i.e1_mpa), Num(i.nu1)), "MPa, -"),
+        ("E2, nu2", format!("{}, {}", Num(i.e2_mpa), Num(i.nu2)), "MPa, -"),
         ("contact modulus E*", fmt_num(r.e_star_mpa, 7), "MPa"),
     ];
     match r.kind {
         ContactKind::Point => {
             rows.push((
                 "angle between principal planes",
-                format!("{}", i.angle_deg),
+                format!("{}", Num(i.angle_deg)),
                 "deg",
             ));
             rows.push((

@@ -36,22 +36,29 @@ pub fn print_report(out: &mut impl Write, r: &MindlinReport, json: bool) -> Resu
         "kontakt {} — Cattaneo-Mindlin partial slip{name}",
         r.kontakt_version
     )?;
-    let [a, b] = r.semi_axes_mm;
+    let n = crate::output::Num;
+    let [a, b] = r.semi_axes_mm.map(n);
     writeln!(
         out,
         "  contact ({}): a = {a:.5} mm, b = {b:.5} mm, p0 = {:.1} MPa, F_N = {} N, mu = {}",
-        r.geometry, r.max_pressure_mpa, r.force_n, r.mu
+        r.geometry,
+        n(r.max_pressure_mpa),
+        n(r.force_n),
+        n(r.mu)
     )?;
     writeln!(
         out,
         "  tangential force Q* = {} N at {} deg from a: Q*/(mu F_N) = {:.4} (slides at {:.4} N)",
-        r.amplitude_n, r.load_angle_deg, r.load_fraction, r.limit_force_n
+        n(r.amplitude_n),
+        n(r.load_angle_deg),
+        n(r.load_fraction),
+        n(r.limit_force_n)
     )?;
-    let [sa, sb] = r.stick_semi_axes_mm;
+    let [sa, sb] = r.stick_semi_axes_mm.map(n);
     writeln!(
         out,
         "  stick zone: a' = {sa:.5} mm, b' = {sb:.5} mm (c/a = {:.4})",
-        r.stick_ratio
+        n(r.stick_ratio)
     )?;
     writeln!(
         out,
