@@ -4,7 +4,7 @@
 //! velocity and the friction-power density. The physics is `kontakt_case::run_friction_case`.
 
 use crate::cli::FrictionArgs;
-use crate::commands::{InputError, cannot_write};
+use crate::commands::InputError;
 use anyhow::{Context, Result};
 use kontakt_case::friction_case::{FrictionMap, FrictionReport};
 use kontakt_case::{Case, Outcome};
@@ -153,11 +153,11 @@ pub fn print_report(out: &mut impl Write, r: &FrictionReport, json: bool) -> Res
 
 /// Every row, one line per model and speed, with unit-suffixed columns.
 pub fn write_csv(path: &Path, r: &FrictionReport) -> Result<()> {
-    let mut w = csv::Writer::from_path(path).map_err(|e| cannot_write("write", path, e))?;
+    let mut w = crate::commands::CsvFile::create(path)?;
     for row in &r.rows {
         w.serialize(row)?;
     }
-    w.flush()?;
+    w.finish()?;
     Ok(())
 }
 
@@ -379,8 +379,7 @@ pub fn demo_study(
             }
         };
     let csv_path = out_dir.join("friction.csv");
-    let mut w =
-        csv::Writer::from_path(&csv_path).map_err(|e| cannot_write("write", &csv_path, e))?;
+    let mut w = crate::commands::CsvFile::create(&csv_path)?;
     let mut summary = Vec::new();
     let mut torque_curves: Vec<(String, Vec<(f64, f64)>)> = Vec::new();
     let mut mu_curves: Vec<(String, Vec<(f64, f64)>)> = Vec::new();
@@ -448,7 +447,7 @@ pub fn demo_study(
         }
         last = Some(outcome.report);
     }
-    w.flush()?;
+    w.finish()?;
     written.tables.push("friction.csv".into());
     let mut plot =
         |file: &str, title: &str, y_label: &str, curves: &[(String, Vec<(f64, f64)>)]| {

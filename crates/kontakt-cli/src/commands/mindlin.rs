@@ -4,7 +4,6 @@
 //! loop, as a table, JSON, CSV and a plot. The physics is `kontakt_case::run_mindlin_case`.
 
 use crate::cli::MindlinArgs;
-use crate::commands::cannot_write;
 use anyhow::{Context, Result};
 use kontakt_case::{MindlinCase, MindlinReport, run_mindlin_case};
 use kontakt_plot::{LinePlot, LineStyle, PALETTE, Series};
@@ -75,12 +74,12 @@ pub fn print_report(out: &mut impl Write, r: &MindlinReport, json: bool) -> Resu
 
 /// Every point of the loading history: `force_n`, `displacement_mm`.
 pub fn write_csv(path: &Path, r: &MindlinReport) -> Result<()> {
-    let mut w = csv::Writer::from_path(path).map_err(|e| cannot_write("write", path, e))?;
-    w.write_record(["force_n", "displacement_mm"])?;
+    let mut w = crate::commands::CsvFile::create(path)?;
+    w.record(["force_n", "displacement_mm"])?;
     for (q, d) in r.loop_force_n.iter().zip(&r.loop_displacement_mm) {
-        w.write_record([format!("{q:.8e}"), format!("{d:.8e}")])?;
+        w.record([format!("{q:.8e}"), format!("{d:.8e}")])?;
     }
-    w.flush()?;
+    w.finish()?;
     Ok(())
 }
 

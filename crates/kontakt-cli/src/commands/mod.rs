@@ -54,6 +54,48 @@ pub fn cannot_write(
     anyhow::anyhow!("cannot {what} {}: {e}", path.display())
 }
 
+/// A CSV output file of any command: every failure (creating it, a record, the final
+/// flush, a full disk) is an error naming the file (exit status 1), never an anonymous
+/// "No space left on device". [`CsvFile::finish`] flushes it; a file dropped without it
+/// may be incomplete.
+pub struct CsvFile<'a> {
+    path: &'a std::path::Path,
+    w: csv::Writer<std::fs::File>,
+}
+
+impl<'a> CsvFile<'a> {
+    /// Create (or truncate) `path`.
+    pub fn create(path: &'a std::path::Path) -> Result<Self> {
+        let w = csv::Writer::from_path(path).map_err(|e| cannot_write("write", path, e))?;
+        Ok(CsvFile { path, w })
+    }
+
+    /// One record of fields.
+    pub fn record<I, T>(&mut self, record: I) -> Result<()>
+    where
+        I: IntoIterator<Item = T>,
+        T: AsRef<[u8]>,
+    {
+        self.w
+            .write_record(record)
+            .map_err(|e| cannot_write("write", self.path, e))
+    }
+
+    /// One record of a serializable row (a header first, from its field names).
+    pub fn serialize(&mut self, row: impl serde::Serialize) -> Result<()> {
+        self.w
+            .serialize(row)
+            .map_err(|e| cannot_write("write", self.path, e))
+    }
+
+    /// Flush the file: where a full disk shows.
+    pub fn finish(mut self) -> Result<()> {
+        self.w
+            .flush()
+            .map_err(|e| cannot_write("write", self.path, e))
+    }
+}
+
 pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
     match &cli.command {
         Command::Hertz(args) => {

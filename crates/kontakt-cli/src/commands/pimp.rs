@@ -107,16 +107,16 @@ pub fn print_report(out: &mut impl Write, r: &PimpReport, json: bool) -> Result<
 
 /// Write fields as CSV: one row per cell, `x_mm, y_mm` and one column per named field.
 pub fn write_csv(path: &Path, grid: &Grid2, fields: &[(&str, &[f64])]) -> Result<()> {
-    let mut w = csv::Writer::from_path(path).map_err(|e| cannot_write("write", path, e))?;
+    let mut w = crate::commands::CsvFile::create(path)?;
     let mut header = vec!["x_mm", "y_mm"];
     header.extend(fields.iter().map(|(name, _)| *name));
-    w.write_record(&header)?;
+    w.record(&header)?;
     for (k, (x, y)) in grid.points().enumerate() {
         let mut row = vec![format!("{x:.6e}"), format!("{y:.6e}")];
         row.extend(fields.iter().map(|(_, v)| format!("{:.6e}", v[k])));
-        w.write_record(&row)?;
+        w.record(&row)?;
     }
-    w.flush()?;
+    w.finish()?;
     Ok(())
 }
 
@@ -328,12 +328,11 @@ pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
     written.maps.extend(maps.iter().map(|(_, f)| f.clone()));
     // CSV of every row.
     let csv_path = out_dir.join("results.csv");
-    let mut w =
-        csv::Writer::from_path(&csv_path).map_err(|e| cannot_write("write", &csv_path, e))?;
+    let mut w = crate::commands::CsvFile::create(&csv_path)?;
     for r in &rows {
         w.serialize(r)?;
     }
-    w.flush()?;
+    w.finish()?;
     written.tables.push("results.csv".into());
     // Maximum pressure and area against force, corrected mode.
     let series_of = |f: &dyn Fn(&DemoRow) -> f64| -> Vec<(&'static str, Vec<(f64, f64)>)> {

@@ -4,7 +4,6 @@
 //! pressure map at the highest load. The physics is `kontakt_case::run_rough_case`.
 
 use crate::cli::RoughArgs;
-use crate::commands::cannot_write;
 use crate::commands::pimp::{MapNotes, write_map};
 use anyhow::{Context, Result};
 use kontakt_case::rough_case::{RoughCase, RoughReport, run_rough_case};
@@ -101,11 +100,11 @@ pub fn print_report(out: &mut impl Write, r: &RoughReport, json: bool) -> Result
 
 /// One line per load.
 pub fn write_csv(path: &Path, r: &RoughReport) -> Result<()> {
-    let mut w = csv::Writer::from_path(path).map_err(|e| cannot_write("write", path, e))?;
+    let mut w = crate::commands::CsvFile::create(path)?;
     for row in &r.rows {
         w.serialize(row)?;
     }
-    w.flush()?;
+    w.finish()?;
     Ok(())
 }
 

@@ -3,7 +3,7 @@
 //! JSON, CSV and a plot. The physics is `kontakt_case::run_traction_case`.
 
 use crate::cli::TractionArgs;
-use crate::commands::{InputError, cannot_write};
+use crate::commands::InputError;
 use anyhow::{Context, Result};
 use kontakt_case::{ExactMap, MapPoint, TractionCase, TractionReport, run_traction_case_with_map};
 use kontakt_plot::{Ellipse, FieldMap, LinePlot, LineStyle, Overlay, PALETTE, Series};
@@ -226,7 +226,7 @@ fn print_forces(out: &mut impl Write, r: &TractionReport, step: usize) -> Result
 
 /// Every point: `creepage` and one column `<model>_ft_over_mu_fn` per model.
 pub fn write_csv(path: &Path, r: &TractionReport) -> Result<()> {
-    let mut w = csv::Writer::from_path(path).map_err(|e| cannot_write("write", path, e))?;
+    let mut w = crate::commands::CsvFile::create(path)?;
     let mut header = vec!["creepage".to_string()];
     header.extend(
         r.curves
@@ -243,7 +243,7 @@ pub fn write_csv(path: &Path, r: &TractionReport) -> Result<()> {
             }
         }
     }
-    w.write_record(&header)?;
+    w.record(&header)?;
     for (i, xi) in r.creepage.iter().enumerate() {
         let mut row = vec![format!("{xi:.8e}")];
         row.extend(
@@ -258,9 +258,9 @@ pub fn write_csv(path: &Path, r: &TractionReport) -> Result<()> {
                 row.push(format!("{:.8e}", m[i]));
             }
         }
-        w.write_record(&row)?;
+        w.record(&row)?;
     }
-    w.flush()?;
+    w.finish()?;
     Ok(())
 }
 

@@ -142,7 +142,7 @@ pub fn validate(out_dir: &Path, cells: usize, out: &mut impl Write, json: bool) 
 }
 
 fn write_csv(path: &Path, studies: &[PairingStudy]) -> Result<()> {
-    let mut w = csv::Writer::from_path(path).map_err(|e| cannot_write("write", path, e))?;
+    let mut w = crate::commands::CsvFile::create(path)?;
     for s in studies {
         for r in &s.rows {
             w.serialize(CsvRow {
@@ -161,7 +161,7 @@ fn write_csv(path: &Path, studies: &[PairingStudy]) -> Result<()> {
             })?;
         }
     }
-    w.flush()?;
+    w.finish()?;
     Ok(())
 }
 
