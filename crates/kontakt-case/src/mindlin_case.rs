@@ -90,6 +90,16 @@ pub struct TangentialSpec {
 /// points per branch (measured: 4e-4 at 6.7e-12 with 41 points, 1.4 % at 6.7e-14).
 pub const MIN_LOAD_FRACTION: f64 = 1e-8;
 
+/// `x` as Rust prints it within 1e-3..1e7, in exponent form outside (a limit of 1e302 N
+/// in one line, not 303 digits).
+fn short(x: f64) -> String {
+    if (1e-3..1e7).contains(&x.abs()) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
+}
+
 fn default_cycles() -> usize {
     1
 }
@@ -270,9 +280,11 @@ pub(crate) fn run_mindlin_case_unchecked(case: &MindlinCase) -> Result<MindlinRe
             "tangential.amplitude_n",
             q,
             format!(
-                "{least:e} N <= Q* <= mu P = {limit:e} N (beyond mu P the contact slides; below \
+                "{} N <= Q* <= mu P = {} N (beyond mu P the contact slides; below \
                  {MIN_LOAD_FRACTION:e} mu P it practically sticks, and its hysteresis loop is \
-                 narrower than double precision resolves)"
+                 narrower than double precision resolves)",
+                short(least),
+                short(limit)
             ),
         ));
     }

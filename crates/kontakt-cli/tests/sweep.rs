@@ -105,7 +105,10 @@ fn hertz_sweep_matches_the_closed_form_in_every_row() {
     let mut per_radius: HashMap<String, Vec<(f64, f64)>> = HashMap::new();
     for (i, row) in rows.iter().enumerate() {
         assert_eq!(row["case"], i.to_string(), "case order");
-        assert_eq!(row["status"], "ok");
+        // Above first yield (the base case's [yield]) the row is solved with a warning.
+        let warned = row.get("warnings[0]").is_some_and(|w| !w.is_empty());
+        assert_eq!(row["status"], if warned { "warning" } else { "ok" }, "row {i}");
+        assert!(!warned || row["warnings[0]"].starts_with("first yield"), "{row:?}");
         let r = num(row, "ball_radius_mm");
         let f = num(row, "load.force_n");
         assert_eq!(
