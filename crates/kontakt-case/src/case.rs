@@ -123,26 +123,30 @@ impl Case {
 
     fn run_unchecked(&self, base_dir: &Path) -> Result<Outcome> {
         Ok(match self {
-            Case::Hertz(case) => Outcome::Hertz(Box::new(crate::hertz_case::run_case_unchecked(case)?)),
-            Case::Pimp(case) => Outcome::Pimp(Box::new(crate::pimp_case::run_pimp_case_unchecked(case)?)),
-            Case::Bem(case) => {
-                Outcome::Bem(Box::new(crate::bem_case::run_bem_case_unchecked(case, base_dir)?))
+            Case::Hertz(case) => {
+                Outcome::Hertz(Box::new(crate::hertz_case::run_case_unchecked(case)?))
             }
-            Case::Traction(case) => {
-                Outcome::Traction(Box::new(crate::traction_case::run_traction_case_with_map_unchecked(case, None)?.0))
+            Case::Pimp(case) => {
+                Outcome::Pimp(Box::new(crate::pimp_case::run_pimp_case_unchecked(case)?))
             }
-            Case::Friction(case) => {
-                Outcome::Friction(Box::new(crate::friction_case::run_friction_case_unchecked(case)?))
-            }
-            Case::Mindlin(case) => {
-                Outcome::Mindlin(Box::new(crate::mindlin_case::run_mindlin_case_unchecked(case)?))
-            }
-            Case::Impact(case) => {
-                Outcome::Impact(Box::new(crate::impact_case::run_impact_case_unchecked(case)?))
-            }
-            Case::Rough(case) => {
-                Outcome::Rough(Box::new(crate::rough_case::run_rough_case_unchecked(case, base_dir)?))
-            }
+            Case::Bem(case) => Outcome::Bem(Box::new(crate::bem_case::run_bem_case_unchecked(
+                case, base_dir,
+            )?)),
+            Case::Traction(case) => Outcome::Traction(Box::new(
+                crate::traction_case::run_traction_case_with_map_unchecked(case, None)?.0,
+            )),
+            Case::Friction(case) => Outcome::Friction(Box::new(
+                crate::friction_case::run_friction_case_unchecked(case)?,
+            )),
+            Case::Mindlin(case) => Outcome::Mindlin(Box::new(
+                crate::mindlin_case::run_mindlin_case_unchecked(case)?,
+            )),
+            Case::Impact(case) => Outcome::Impact(Box::new(
+                crate::impact_case::run_impact_case_unchecked(case)?,
+            )),
+            Case::Rough(case) => Outcome::Rough(Box::new(
+                crate::rough_case::run_rough_case_unchecked(case, base_dir)?,
+            )),
         })
     }
 }
@@ -362,7 +366,10 @@ mod tests {
         .filter(|l| !l.starts_with("radii") && !l.starts_with("angle_deg"))
         .collect::<Vec<_>>()
         .join("\n")
-        .replace("kind = \"hertz\"", "kind = \"ellipse\"\nsemi_axes_mm = [0.3, 0.9]")
+        .replace(
+            "kind = \"hertz\"",
+            "kind = \"ellipse\"\nsemi_axes_mm = [0.3, 0.9]",
+        )
         .replace("mu = 0.1", "mu = 1e300")
         .replace("e_mpa = 210000.0", "e_mpa = 1e-300");
         let case = Case::from_toml_str(&text);

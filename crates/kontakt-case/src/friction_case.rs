@@ -47,7 +47,6 @@
 use crate::common::SCHEMA_VERSION;
 use crate::pimp_case::{GeometrySpec, roller_rib_from_spec};
 use crate::validity::{ContactSize, Size, checked, checked_report};
-use kontakt::hertz::{HertzPointContact, PointGeometry};
 use kontakt::bearing::{
     Operating, PressureModel, RibFriction, RibFrictionModel, RibLubrication, RollerSet,
 };
@@ -56,6 +55,7 @@ use kontakt::friction::{
     FluidShear, FrictionLaw, LoadSharing, power_density as power_density_into,
 };
 use kontakt::geometry::VelocityField;
+use kontakt::hertz::{HertzPointContact, PointGeometry};
 use kontakt::lubrication::{FilmFormula, Lubricant};
 use kontakt::{Error, Result};
 use serde::{Deserialize, Serialize};
@@ -704,15 +704,14 @@ fn rib_contact_size(
     .and_then(|h| h.solve_force(rib_load))?;
     let at = format!("rib contact at the largest rib load, {rib_load:.6} N");
     let key = |f: &str| crate::pimp_case::size_field(&case.geometry, f);
-    let check =
-        kontakt::field::validity::ellipse_size_check(gap, sol.semi_axes, sol.orientation)
-            .map_err(|e| match e {
-                Error::Geometry { field, reason } => Error::Geometry {
-                    field: key(&field).into(),
-                    reason: format!("{at}: {reason}"),
-                },
-                other => other,
-            })?;
+    let check = kontakt::field::validity::ellipse_size_check(gap, sol.semi_axes, sol.orientation)
+        .map_err(|e| match e {
+        Error::Geometry { field, reason } => Error::Geometry {
+            field: key(&field).into(),
+            reason: format!("{at}: {reason}"),
+        },
+        other => other,
+    })?;
     let edge = kontakt::field::validity::ZoneCheck {
         curvature: None,
         ..check

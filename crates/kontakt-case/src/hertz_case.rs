@@ -32,10 +32,10 @@
 //! Keys are never renamed without bumping the schema version; new keys may be added.
 
 use crate::common::{SCHEMA_VERSION, material_keys, parse_toml};
+use crate::validity::{ContactSize, Size, checked, checked_report};
 use kontakt::hertz::line::LineContact;
 use kontakt::hertz::point_stress::FirstYield;
 use kontakt::hertz::subsurface::YieldCriterion;
-use crate::validity::{ContactSize, Size, checked, checked_report};
 use kontakt::hertz::validity::{line_size, point_size};
 use kontakt::hertz::{HertzPointContact, PointGeometry};
 use kontakt::material::{ElasticMaterial, dundurs_beta};

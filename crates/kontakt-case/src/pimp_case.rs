@@ -43,8 +43,8 @@
 
 pub use crate::common::MaterialSpec;
 use crate::common::SCHEMA_VERSION;
-use crate::validity::{ContactSize, Size, checked_report};
 pub(crate) use crate::common::material;
+use crate::validity::{ContactSize, Size, checked_report};
 use kontakt::bearing::{FaceShape, RibShape, RollerRib, RollerRibSpec, TaperedRollerBearing};
 use kontakt::field::NormalSolution;
 use kontakt::geometry::RelativeCurvature;
@@ -660,8 +660,13 @@ pub(crate) fn precheck(
     if sol.approach < MIN_RELATIVE_APPROACH * radius {
         let (key, value) = match (load.force_n, approach) {
             (Some(f), _) => ("load.force_n", format!("{f:e} N")),
-            (None, Some(d)) if load.approach_mm.is_some() => ("load.approach_mm", format!("{d:e} mm")),
-            (None, _) => ("geometry", format!("a separation of {:e} mm", -approach.unwrap_or(0.0))),
+            (None, Some(d)) if load.approach_mm.is_some() => {
+                ("load.approach_mm", format!("{d:e} mm"))
+            }
+            (None, _) => (
+                "geometry",
+                format!("a separation of {:e} mm", -approach.unwrap_or(0.0)),
+            ),
         };
         return Err(Error::invalid(
             key,

@@ -73,7 +73,11 @@ impl ContactSize {
     /// # Errors
     /// [`Error::Geometry`] with that key.
     pub fn verdict(&self) -> Result<Option<String>> {
-        let prefix = self.at.as_ref().map(|a| format!("{a}: ")).unwrap_or_default();
+        let prefix = self
+            .at
+            .as_ref()
+            .map(|a| format!("{a}: "))
+            .unwrap_or_default();
         let (refusal, warning) = match self.size {
             Size::Hertz(c) => (c.refuse_too_large().err(), c.warning()),
             Size::HalfSpace(c) => (c.refuse_too_large().err(), c.warning()),

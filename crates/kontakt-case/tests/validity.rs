@@ -106,10 +106,8 @@ fn rows() -> Vec<Row> {
                 (
                     "geometry",
                     Value::Table(
-                        toml::from_str(
-                            "kind = \"line\"\nradii_mm = [10.0, inf]\nlength_mm = 10.0",
-                        )
-                        .unwrap(),
+                        toml::from_str("kind = \"line\"\nradii_mm = [10.0, inf]\nlength_mm = 10.0")
+                            .unwrap(),
                     ),
                 ),
             ],
@@ -155,7 +153,10 @@ fn run(row: &Row, load: f64) -> kontakt::Result<Outcome> {
     let by_case = case.run(&examples());
     let by_runner = public_runner(&case);
     assert_eq!(
-        by_case.as_ref().map(|o| o.warnings().to_vec()).map_err(|e| e.to_string()),
+        by_case
+            .as_ref()
+            .map(|o| o.warnings().to_vec())
+            .map_err(|e| e.to_string()),
         by_runner.map_err(|e| e.to_string()),
         "{} at {load}: Case::run and the public runner differ",
         row.method
@@ -231,13 +232,19 @@ fn every_outcome_variant_records_its_contacts() {
             file.display()
         );
         for c in outcome.contacts() {
-            assert!(c.ratio() > 0.0 && c.ratio() < 0.4, "{}: {c:?}", file.display());
+            assert!(
+                c.ratio() > 0.0 && c.ratio() < 0.4,
+                "{}: {c:?}",
+                file.display()
+            );
         }
     }
     // Every method has an example, so every Outcome variant was run through the check.
     assert_eq!(
         seen.into_iter().collect::<Vec<_>>(),
-        ["bem", "friction", "hertz", "impact", "mindlin", "pimp", "rough", "traction"]
+        [
+            "bem", "friction", "hertz", "impact", "mindlin", "pimp", "rough", "traction"
+        ]
     );
 }
 
@@ -266,7 +273,12 @@ fn mindlin_report_is_finite_and_its_loop_area_matches_the_closed_form() {
     let e = case(1e300, 1e301).unwrap_err();
     assert!(e.to_string().contains("inf"), "{e}");
     assert_eq!(e.field(), Some("dissipated_energy_per_cycle_nmm"), "{e}");
-    for (mu, q) in [(0.3, 20.0), (0.3, 30.0 * 1e-8), (1e150, 1e151), (1e150, 1e144)] {
+    for (mu, q) in [
+        (0.3, 20.0),
+        (0.3, 30.0 * 1e-8),
+        (1e150, 1e151),
+        (1e150, 1e144),
+    ] {
         let r = case(mu, q).unwrap();
         let rel = r.loop_energy_nmm / r.dissipated_energy_per_cycle_nmm - 1.0;
         assert!(rel.abs() < 7e-4, "mu {mu}, Q* {q}: {rel:e}");
@@ -284,12 +296,37 @@ fn mindlin_report_is_finite_and_its_loop_area_matches_the_closed_form() {
 #[test]
 fn absurd_inputs_of_the_field_solvers_are_input_errors() {
     for (file, key, value, named) in [
-        ("bem_wavy_map.toml", "body1.e_mpa", 1e-300, "body1.e_mpa, body2.e_mpa"),
+        (
+            "bem_wavy_map.toml",
+            "body1.e_mpa",
+            1e-300,
+            "body1.e_mpa, body2.e_mpa",
+        ),
         ("bem_wavy_map.toml", "load.force_n", 1e300, "load.force_n"),
-        ("bem_wavy_map.toml", "geometry.spacing_mm", 1e-300, "geometry.spacing_mm[0]"),
-        ("pimp_sphere_on_torus.toml", "load.force_n", 1e-30, "load.force_n"),
-        ("roller_rib_torus_torus.toml", "load.force_n", 1e-150, "load.force_n"),
-        ("bem_torus_torus.toml", "load.force_n", 1e-150, "load.force_n"),
+        (
+            "bem_wavy_map.toml",
+            "geometry.spacing_mm",
+            1e-300,
+            "geometry.spacing_mm[0]",
+        ),
+        (
+            "pimp_sphere_on_torus.toml",
+            "load.force_n",
+            1e-30,
+            "load.force_n",
+        ),
+        (
+            "roller_rib_torus_torus.toml",
+            "load.force_n",
+            1e-150,
+            "load.force_n",
+        ),
+        (
+            "bem_torus_torus.toml",
+            "load.force_n",
+            1e-150,
+            "load.force_n",
+        ),
         ("rough_self_affine.toml", "surface.size_mm", 1e-300, ""),
     ] {
         let v = if key.ends_with("spacing_mm") || key.ends_with("size_mm") {

@@ -19,7 +19,9 @@ impl std::fmt::Display for Num {
         let x = self.0;
         // Fixed point while the number has a significant digit among the decimals asked
         // for (at least 1e-5 without a precision) and is below 1e7.
-        let smallest = f.precision().map_or(1e-5, |p| 10f64.powi(-(p.min(300) as i32)));
+        let smallest = f
+            .precision()
+            .map_or(1e-5, |p| 10f64.powi(-(p.min(300) as i32)));
         let plain = x == 0.0 || !x.is_finite() || (smallest..1e7).contains(&x.abs());
         let s = match (plain, f.precision()) {
             (true, Some(p)) => format!("{x:.p$}"),
@@ -88,8 +90,16 @@ pub fn print_report(out: &mut impl Write, r: &ContactReport, json: bool) -> Resu
     let mut rows: Vec<(&str, String, &str)> = vec![
         ("body 1 radii", radii(&i.body1_radii_mm), "mm"),
         ("body 2 radii", radii(&i.body2_radii_mm), "mm"),
-        ("E1, nu1", format!("{}, {}", Num(i.e1_mpa), Num(i.nu1)), "MPa, -"),
-        ("E2, nu2", format!("{}, {}", Num(i.e2_mpa), Num(i.nu2)), "MPa, -"),
+        (
+            "E1, nu1",
+            format!("{}, {}", Num(i.e1_mpa), Num(i.nu1)),
+            "MPa, -",
+        ),
+        (
+            "E2, nu2",
+            format!("{}, {}", Num(i.e2_mpa), Num(i.nu2)),
+            "MPa, -",
+        ),
         ("contact modulus E*", fmt_num(r.e_star_mpa, 7), "MPa"),
     ];
     match r.kind {

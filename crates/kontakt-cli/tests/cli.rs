@@ -698,18 +698,51 @@ fn edited_example(file: &str, from: &str, to: &str, tag: &str) -> PathBuf {
 #[test]
 fn every_subcommand_warns_and_refuses_an_oversize_contact() {
     for (command, file, from, warn, refuse, key) in [
-        ("mindlin", "mindlin_fretting.toml", "force_n = 100.0", "force_n = 1e6", "force_n = 1e8", "geometry.radii1_mm"),
-        ("traction", "traction_twin_disc.toml", "force_n = 1000.0", "force_n = 1e8", "force_n = 1e9", "geometry.radii1_mm"),
-        ("impact", "impact_oblique.toml", "speed_mm_per_s = 1000.0", "speed_mm_per_s = 1e6", "speed_mm_per_s = 1e7", "sphere.radius_mm"),
-        ("friction", "rib_friction.toml", "axial_n = 15000.0", "axial_n = 6e6", "axial_n = 1e8", "geometry.bearing.roller_large_end_radius_mm"),
+        (
+            "mindlin",
+            "mindlin_fretting.toml",
+            "force_n = 100.0",
+            "force_n = 1e6",
+            "force_n = 1e8",
+            "geometry.radii1_mm",
+        ),
+        (
+            "traction",
+            "traction_twin_disc.toml",
+            "force_n = 1000.0",
+            "force_n = 1e8",
+            "force_n = 1e9",
+            "geometry.radii1_mm",
+        ),
+        (
+            "impact",
+            "impact_oblique.toml",
+            "speed_mm_per_s = 1000.0",
+            "speed_mm_per_s = 1e6",
+            "speed_mm_per_s = 1e7",
+            "sphere.radius_mm",
+        ),
+        (
+            "friction",
+            "rib_friction.toml",
+            "axial_n = 15000.0",
+            "axial_n = 6e6",
+            "axial_n = 1e8",
+            "geometry.bearing.roller_large_end_radius_mm",
+        ),
     ] {
         let p = edited_example(file, from, warn, command);
         for sub in [command, "solve"] {
             let out = kontakt().arg(sub).arg(&p).output().unwrap();
-            assert!(out.status.success(), "{sub} {file}: {}", String::from_utf8_lossy(&out.stderr));
+            assert!(
+                out.status.success(),
+                "{sub} {file}: {}",
+                String::from_utf8_lossy(&out.stderr)
+            );
             let text = String::from_utf8(out.stdout).unwrap();
             assert!(
-                text.lines().any(|l| l.starts_with("  warning: ") && (l.contains("contact size") || l.contains("face edge"))),
+                text.lines().any(|l| l.starts_with("  warning: ")
+                    && (l.contains("contact size") || l.contains("face edge"))),
                 "{sub} {file}: {text}"
             );
         }
@@ -742,7 +775,10 @@ fn mindlin_refuses_an_overflowing_report() {
             args.push("--json");
         }
         let line = bad(&args);
-        assert!(line.contains("dissipated_energy_per_cycle_nmm: the result is inf"), "{line}");
+        assert!(
+            line.contains("dissipated_energy_per_cycle_nmm: the result is inf"),
+            "{line}"
+        );
     }
 }
 
@@ -762,7 +798,11 @@ fn extreme_numbers_and_full_disks() {
     std::fs::write(&p, text).unwrap();
     let out = kontakt().arg("mindlin").arg(&p).output().unwrap();
     let text = String::from_utf8(out.stdout).unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     assert!(text.contains("mu = 1e150"), "{text}");
     assert!(text.lines().all(|l| l.chars().count() < 200), "{text}");
     if !std::path::Path::new("/dev/full").exists() {
@@ -778,7 +818,10 @@ fn extreme_numbers_and_full_disks() {
     assert_eq!(out.status.code(), Some(1));
     let err = String::from_utf8(out.stderr).unwrap();
     assert!(err.contains("cannot write /dev/full: "), "{err}");
-    let full = std::fs::OpenOptions::new().write(true).open("/dev/full").unwrap();
+    let full = std::fs::OpenOptions::new()
+        .write(true)
+        .open("/dev/full")
+        .unwrap();
     let out = std::process::Command::new(assert_cmd::cargo::cargo_bin("kontakt"))
         .arg("mindlin")
         .arg(&mindlin)

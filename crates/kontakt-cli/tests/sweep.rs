@@ -107,8 +107,15 @@ fn hertz_sweep_matches_the_closed_form_in_every_row() {
         assert_eq!(row["case"], i.to_string(), "case order");
         // Above first yield (the base case's [yield]) the row is solved with a warning.
         let warned = row.get("warnings[0]").is_some_and(|w| !w.is_empty());
-        assert_eq!(row["status"], if warned { "warning" } else { "ok" }, "row {i}");
-        assert!(!warned || row["warnings[0]"].starts_with("first yield"), "{row:?}");
+        assert_eq!(
+            row["status"],
+            if warned { "warning" } else { "ok" },
+            "row {i}"
+        );
+        assert!(
+            !warned || row["warnings[0]"].starts_with("first yield"),
+            "{row:?}"
+        );
         let r = num(row, "ball_radius_mm");
         let f = num(row, "load.force_n");
         assert_eq!(
@@ -515,12 +522,19 @@ fn warning_rows_and_a_sweep_whose_every_case_fails() {
     assert_eq!(v["cases_not_ok"], 1);
     let status: Vec<&str> = rows.iter().map(|r| r["status"].as_str()).collect();
     assert_eq!(status, ["ok", "warning", "invalid"]);
-    assert!(rows[1]["warnings[0]"].contains("contact size"), "{:?}", rows[1]);
+    assert!(
+        rows[1]["warnings[0]"].contains("contact size"),
+        "{:?}",
+        rows[1]
+    );
     assert!(rows[2]["error"].contains("body1.radii_mm"), "{:?}", rows[2]);
     let (o, rows) = sweep("all-fail", "[-1.0, 1e8]");
     assert_eq!(o.status.code(), Some(1));
     let err = String::from_utf8_lossy(&o.stderr);
-    assert!(err.contains("every case of the sweep failed (2 of 2)"), "{err}");
+    assert!(
+        err.contains("every case of the sweep failed (2 of 2)"),
+        "{err}"
+    );
     assert_eq!(err.trim().lines().count(), 1, "{err}");
     assert_eq!(rows.len(), 2);
 }

@@ -391,7 +391,10 @@ impl HertzPointResult {
 
 /// The case layer's validity check of a contact's size, with the arguments named as the
 /// Python signature does: the warnings, or `InputError` naming the radius argument.
-fn size_verdict(size: kontakt::hertz::validity::SizeCheck, keys: [&str; 2]) -> PyResult<Vec<String>> {
+fn size_verdict(
+    size: kontakt::hertz::validity::SizeCheck,
+    keys: [&str; 2],
+) -> PyResult<Vec<String>> {
     use kontakt_case::validity::{ContactSize, Size};
     let verdict = ContactSize::new(Size::Hertz(size), keys).verdict();
     Ok(verdict.map_err(to_py)?.into_iter().collect())
