@@ -93,7 +93,13 @@ fn criterion(name: &str) -> PyResult<YieldCriterion> {
     }
 }
 
-fn peaks_dict<'py>(py: Python<'py>, p: &StressPeaks, body: usize) -> PyResult<Bound<'py, PyDict>> {
+/// The peak subsurface stresses of a solved contact (or the library's error) as the dict
+/// both result classes return.
+fn peaks_dict<'py>(
+    py: Python<'py>,
+    peaks: Result<(StressPeaks, usize), kontakt::Error>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let (p, body) = peaks.map_err(to_py)?;
     let d = PyDict::new(py);
     d.set_item("max_shear_stress_mpa", p.max_shear)?;
     d.set_item("max_shear_depth_mm", p.max_shear_depth)?;
@@ -101,6 +107,39 @@ fn peaks_dict<'py>(py: Python<'py>, p: &StressPeaks, body: usize) -> PyResult<Bo
     d.set_item("max_von_mises_depth_mm", p.max_von_mises_depth)?;
     d.set_item("body", body)?;
     Ok(d)
+}
+
+/// A body of a Hertz case: its radii [mm] and material.
+fn body_spec(radii: &[f64], m: ElasticMaterial) -> BodySpec {
+    BodySpec {
+        radii_mm: radii.to_vec(),
+        e_mpa: m.youngs_modulus(),
+        nu: m.poisson_ratio(),
+    }
+}
+
+/// The CLI's JSON record (`kontakt hertz ... --json`) of the Hertz case `contact` between
+/// `bodies` under `load`, with first yield when `yield_stress` [MPa] is given: `to_dict()`
+/// of both result classes, through the case layer's one Hertz report.
+fn hertz_record<'py>(
+    py: Python<'py>,
+    contact: ContactSpec,
+    [body1, body2]: [BodySpec; 2],
+    load: LoadSpec,
+    yield_stress: Option<f64>,
+    criterion: &str,
+) -> PyResult<Bound<'py, PyAny>> {
+    let case = CaseFile {
+        name: None,
+        method: Method::Hertz,
+        contact,
+        body1,
+        body2,
+        load,
+        yield_check: yield_criterion(yield_stress, criterion)?,
+    };
+    let report = kontakt_case::run_case(&case).map_err(to_py)?;
+    json_to_py(py, &report)
 }
 
 /// Evaluate `f` over `x` and `y` broadcast against each other (NumPy rules for two
@@ -245,6 +284,43 @@ impl HertzPoint {
     }
 }
 
+/// The methods both solved Hertz contacts share (`p0`, `mean_pressure`,
+/// `subsurface_peaks`, `to_dict`), written once; `$ty` says how it is a Hertz case
+/// (`HertzCase`), and `$($own)*` are its own methods (one `#[pymethods]` block per class).
+macro_rules! hertz_result {
+    ($ty:ident, mean_pressure = $mean_doc:literal, peaks = $peaks_doc:literal, to_dict = $dict_doc:literal, { $($own:tt)* }) => {
+        #[pymethods]
+        impl $ty {
+            /// Maximum (central) pressure p0 [MPa].
+            #[getter]
+            fn p0(&self) -> f64 {
+                self.solution.max_pressure
+            }
+            #[doc = $mean_doc]
+            #[getter]
+            fn mean_pressure(&self) -> f64 {
+                self.solution.mean_pressure
+            }
+            #[doc = $peaks_doc]
+            fn subsurface_peaks<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+                peaks_dict(py, self.contact.subsurface_peaks(&self.solution))
+            }
+            #[doc = $dict_doc]
+            #[pyo3(signature = (yield_stress = None, criterion = "von_mises"))]
+            fn to_dict<'py>(
+                &self,
+                py: Python<'py>,
+                yield_stress: Option<f64>,
+                criterion: &str,
+            ) -> PyResult<Bound<'py, PyAny>> {
+                let (contact, bodies, load) = self.case();
+                hertz_record(py, contact, bodies, load, yield_stress, criterion)
+            }
+            $($own)*
+        }
+    };
+}
+
 /// A solved Hertz point contact. Lengths mm, force N, pressure MPa, angle rad.
 #[pyclass(frozen, module = "kontakt._kontakt")]
 pub struct HertzPointResult {
@@ -253,130 +329,103 @@ pub struct HertzPointResult {
     by_approach: bool,
 }
 
-#[pymethods]
 impl HertzPointResult {
-    /// Semi-major axis a [mm].
-    #[getter]
-    fn a(&self) -> f64 {
-        self.solution.semi_axes[0]
-    }
-    /// Semi-minor axis b [mm].
-    #[getter]
-    fn b(&self) -> f64 {
-        self.solution.semi_axes[1]
-    }
-    /// Maximum (central) pressure p0 [MPa].
-    #[getter]
-    fn p0(&self) -> f64 {
-        self.solution.max_pressure
-    }
-    /// Mean pressure F / (pi a b) [MPa].
-    #[getter]
-    fn mean_pressure(&self) -> f64 {
-        self.solution.mean_pressure
-    }
-    /// Normal force F [N].
-    #[getter]
-    fn force(&self) -> f64 {
-        self.solution.force
-    }
-    /// Approach of distant points [mm].
-    #[getter]
-    fn approach(&self) -> f64 {
-        self.solution.approach
-    }
-    /// Contact area pi a b [mm²].
-    #[getter]
-    fn contact_area(&self) -> f64 {
-        self.solution.contact_area
-    }
-    /// Contact stiffness dF/d(approach) [N/mm].
-    #[getter]
-    fn stiffness(&self) -> f64 {
-        self.solution.stiffness
-    }
-    /// Angle from body 1's first principal direction to the major axis [rad].
-    #[getter]
-    fn orientation(&self) -> f64 {
-        self.solution.orientation
-    }
-
-    /// Hertz pressure [MPa] at the points (x, y) [mm] of the contact frame (x along body
-    /// 1's first principal direction); x and y broadcast as in NumPy.
-    fn pressure<'py>(
-        &self,
-        py: Python<'py>,
-        x: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
-        y: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
-    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        let s = self.solution;
-        broadcast2(py, x, y, |x, y| s.pressure_at(x, y))
-    }
-
-    /// Peak subsurface stresses on the load axis (MPa, mm; tension positive, so the
-    /// von Mises and shear peaks are magnitudes) and the body (1 or 2) they belong to.
-    fn subsurface_peaks<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let (p, body) = self
-            .contact
-            .subsurface_peaks(&self.solution)
-            .map_err(to_py)?;
-        peaks_dict(py, &p, body)
-    }
-
-    /// The CLI's JSON record of this contact (`kontakt hertz ... --json`), as a dict; with
-    /// `yield_stress` [MPa] it includes first yield by `criterion`.
-    #[pyo3(signature = (yield_stress = None, criterion = "von_mises"))]
-    fn to_dict<'py>(
-        &self,
-        py: Python<'py>,
-        yield_stress: Option<f64>,
-        criterion: &str,
-    ) -> PyResult<Bound<'py, PyAny>> {
+    /// This contact as a Hertz case: contact, bodies, and the load it was solved for.
+    fn case(&self) -> (ContactSpec, [BodySpec; 2], LoadSpec) {
         let g = self.contact.geometry();
         let [m1, m2] = self.contact.materials();
-        let body = |radii: [f64; 2], m: ElasticMaterial| BodySpec {
-            radii_mm: radii.to_vec(),
-            e_mpa: m.youngs_modulus(),
-            nu: m.poisson_ratio(),
+        let load = if self.by_approach {
+            LoadSpec {
+                approach_mm: Some(self.solution.approach),
+                ..LoadSpec::default()
+            }
+        } else {
+            LoadSpec {
+                force_n: Some(self.solution.force),
+                ..LoadSpec::default()
+            }
         };
-        let case = CaseFile {
-            name: None,
-            method: Method::Hertz,
-            contact: ContactSpec {
-                kind: ContactKind::Point,
-                angle_deg: g.angle().to_degrees(),
-                length_mm: None,
-            },
-            body1: body(g.body1_radii(), m1),
-            body2: body(g.body2_radii(), m2),
-            load: if self.by_approach {
-                LoadSpec {
-                    approach_mm: Some(self.solution.approach),
-                    ..LoadSpec::default()
-                }
-            } else {
-                LoadSpec {
-                    force_n: Some(self.solution.force),
-                    ..LoadSpec::default()
-                }
-            },
-            yield_check: yield_criterion(yield_stress, criterion)?,
+        let contact = ContactSpec {
+            kind: ContactKind::Point,
+            angle_deg: g.angle().to_degrees(),
+            length_mm: None,
         };
-        let report = kontakt_case::run_case(&case).map_err(to_py)?;
-        json_to_py(py, &report)
-    }
-
-    fn __repr__(&self) -> String {
-        format!(
-            "HertzPointResult(force={:?} N, a={:.6e} mm, b={:.6e} mm, p0={:.6} MPa, approach={:.6e} mm)",
-            self.solution.force,
-            self.a(),
-            self.b(),
-            self.p0(),
-            self.approach()
-        )
+        let bodies = [
+            body_spec(&g.body1_radii(), m1),
+            body_spec(&g.body2_radii(), m2),
+        ];
+        (contact, bodies, load)
     }
 }
+
+hertz_result!(
+    HertzPointResult,
+    mean_pressure = "Mean pressure F / (pi a b) [MPa].",
+    peaks = "Peak subsurface stresses on the load axis (MPa, mm; tension positive, so the \
+             von Mises and shear peaks are magnitudes) and the body (1 or 2) they belong to.",
+    to_dict = "The CLI's JSON record of this contact (`kontakt hertz ... --json`), as a \
+               dict; with `yield_stress` [MPa] it includes first yield by `criterion`.",
+    {
+        /// Semi-major axis a [mm].
+        #[getter]
+        fn a(&self) -> f64 {
+            self.solution.semi_axes[0]
+        }
+        /// Semi-minor axis b [mm].
+        #[getter]
+        fn b(&self) -> f64 {
+            self.solution.semi_axes[1]
+        }
+        /// Normal force F [N].
+        #[getter]
+        fn force(&self) -> f64 {
+            self.solution.force
+        }
+        /// Approach of distant points [mm].
+        #[getter]
+        fn approach(&self) -> f64 {
+            self.solution.approach
+        }
+        /// Contact area pi a b [mm²].
+        #[getter]
+        fn contact_area(&self) -> f64 {
+            self.solution.contact_area
+        }
+        /// Contact stiffness dF/d(approach) [N/mm].
+        #[getter]
+        fn stiffness(&self) -> f64 {
+            self.solution.stiffness
+        }
+        /// Angle from body 1's first principal direction to the major axis [rad].
+        #[getter]
+        fn orientation(&self) -> f64 {
+            self.solution.orientation
+        }
+
+        /// Hertz pressure [MPa] at the points (x, y) [mm] of the contact frame (x along body
+        /// 1's first principal direction); x and y broadcast as in NumPy.
+        fn pressure<'py>(
+            &self,
+            py: Python<'py>,
+            x: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
+            y: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
+        ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+            let s = self.solution;
+            broadcast2(py, x, y, |x, y| s.pressure_at(x, y))
+        }
+
+        fn __repr__(&self) -> String {
+            format!(
+                "HertzPointResult(force={:?} N, a={:.6e} mm, b={:.6e} mm, p0={:.6} MPa, approach={:.6e} mm)",
+                self.solution.force,
+                self.a(),
+                self.b(),
+                self.p0(),
+                self.approach()
+            )
+        }
+    }
+);
 
 fn yield_criterion(yield_stress: Option<f64>, name: &str) -> PyResult<Option<YieldSpec>> {
     let criterion = criterion(name)?;
@@ -491,68 +540,11 @@ pub struct HertzLineResult {
     by_force: bool,
 }
 
-#[pymethods]
 impl HertzLineResult {
-    /// Half-width b of the contact strip [mm].
-    #[getter]
-    fn b(&self) -> f64 {
-        self.solution.half_width
-    }
-    /// Maximum pressure p0 [MPa].
-    #[getter]
-    fn p0(&self) -> f64 {
-        self.solution.max_pressure
-    }
-    /// Mean pressure P'/(2b) [MPa].
-    #[getter]
-    fn mean_pressure(&self) -> f64 {
-        self.solution.mean_pressure
-    }
-    /// Line load P' [N/mm].
-    #[getter]
-    fn line_load(&self) -> f64 {
-        self.solution.line_load
-    }
-    /// Approach [mm] by Lundberg's formula (None without a length).
-    #[getter]
-    fn approach(&self) -> Option<f64> {
-        self.approach
-    }
-
-    /// Pressure [MPa] at distances `x` [mm] from the centre line (any array shape).
-    fn pressure<'py>(
-        &self,
-        py: Python<'py>,
-        x: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
-    ) -> Bound<'py, PyArrayDyn<f64>> {
-        let s = self.solution;
-        x.as_array().mapv(|x| s.pressure_at(x)).into_pyarray(py)
-    }
-
-    /// Peak subsurface stresses on the load axis (plane strain; MPa, mm) and the body.
-    fn subsurface_peaks<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let (p, body) = self
-            .contact
-            .subsurface_peaks(&self.solution)
-            .map_err(to_py)?;
-        peaks_dict(py, &p, body)
-    }
-
-    /// The CLI's JSON record of this contact, as a dict (first yield with `yield_stress`).
-    #[pyo3(signature = (yield_stress = None, criterion = "von_mises"))]
-    fn to_dict<'py>(
-        &self,
-        py: Python<'py>,
-        yield_stress: Option<f64>,
-        criterion: &str,
-    ) -> PyResult<Bound<'py, PyAny>> {
+    /// This contact as a Hertz case: contact, bodies, and the load it was solved for.
+    fn case(&self) -> (ContactSpec, [BodySpec; 2], LoadSpec) {
         let [m1, m2] = self.contact.materials();
         let [r1, r2] = self.contact.radii();
-        let body = |r: f64, m: ElasticMaterial| BodySpec {
-            radii_mm: vec![r],
-            e_mpa: m.youngs_modulus(),
-            nu: m.poisson_ratio(),
-        };
         let load = match (self.by_force, self.length) {
             (true, Some(l)) => LoadSpec {
                 force_n: Some(self.solution.line_load * l),
@@ -563,29 +555,54 @@ impl HertzLineResult {
                 ..LoadSpec::default()
             },
         };
-        let case = CaseFile {
-            name: None,
-            method: Method::Hertz,
-            contact: ContactSpec {
-                kind: ContactKind::Line,
-                angle_deg: 0.0,
-                length_mm: self.length,
-            },
-            body1: body(r1, m1),
-            body2: body(r2, m2),
-            load,
-            yield_check: yield_criterion(yield_stress, criterion)?,
+        let contact = ContactSpec {
+            kind: ContactKind::Line,
+            angle_deg: 0.0,
+            length_mm: self.length,
         };
-        let report = kontakt_case::run_case(&case).map_err(to_py)?;
-        json_to_py(py, &report)
-    }
-
-    fn __repr__(&self) -> String {
-        format!(
-            "HertzLineResult(line_load={:?} N/mm, b={:.6e} mm, p0={:.6} MPa)",
-            self.solution.line_load,
-            self.b(),
-            self.p0()
-        )
+        (contact, [body_spec(&[r1], m1), body_spec(&[r2], m2)], load)
     }
 }
+
+hertz_result!(
+    HertzLineResult,
+    mean_pressure = "Mean pressure P'/(2b) [MPa].",
+    peaks = "Peak subsurface stresses on the load axis (plane strain; MPa, mm) and the body.",
+    to_dict = "The CLI's JSON record of this contact, as a dict (first yield with `yield_stress`).",
+    {
+        /// Half-width b of the contact strip [mm].
+        #[getter]
+        fn b(&self) -> f64 {
+            self.solution.half_width
+        }
+        /// Line load P' [N/mm].
+        #[getter]
+        fn line_load(&self) -> f64 {
+            self.solution.line_load
+        }
+        /// Approach [mm] by Lundberg's formula (None without a length).
+        #[getter]
+        fn approach(&self) -> Option<f64> {
+            self.approach
+        }
+
+        /// Pressure [MPa] at distances `x` [mm] from the centre line (any array shape).
+        fn pressure<'py>(
+            &self,
+            py: Python<'py>,
+            x: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
+        ) -> Bound<'py, PyArrayDyn<f64>> {
+            let s = self.solution;
+            x.as_array().mapv(|x| s.pressure_at(x)).into_pyarray(py)
+        }
+
+        fn __repr__(&self) -> String {
+            format!(
+                "HertzLineResult(line_load={:?} N/mm, b={:.6e} mm, p0={:.6} MPa)",
+                self.solution.line_load,
+                self.b(),
+                self.p0()
+            )
+        }
+    }
+);
