@@ -1,5 +1,6 @@
 //! Materials and closed-form Hertz contacts (point and line).
 
+use crate::args;
 use crate::case::json_to_py;
 use crate::errors::{invalid, to_py, to_py_with};
 use kontakt::hertz::line::{LineContact, LineSolution};
@@ -34,7 +35,9 @@ fn material_field(f: &str) -> Option<String> {
 impl Material {
     #[new]
     #[pyo3(signature = (e, nu))]
-    fn new(e: f64, nu: f64) -> PyResult<Self> {
+    fn new(e: &Bound<'_, PyAny>, nu: &Bound<'_, PyAny>) -> PyResult<Self> {
+        let e = args::real(e, "e", "a finite modulus > 0 MPa")?;
+        let nu = args::real(nu, "nu", "-1 < nu <= 0.5")?;
         ElasticMaterial::new(e, nu)
             .map(|inner| Material { inner })
             .map_err(|err| to_py_with(err, material_field))
@@ -68,8 +71,10 @@ impl Material {
 
     /// Contact modulus E* [MPa] of this material against `other`:
     /// 1/E* = (1 - nu1²)/E1 + (1 - nu2²)/E2.
-    fn e_star(&self, other: &Material) -> f64 {
-        effective_modulus(&self.inner, &other.inner)
+    fn e_star(&self, other: &Bound<'_, PyAny>) -> PyResult<f64> {
+        let other = args::material(Some(other), "other")?
+            .ok_or_else(|| args::wrong_type("other", other, "a kontakt.Material"))?;
+        Ok(effective_modulus(&self.inner, &other.inner))
     }
 
     fn __repr__(&self) -> String {
@@ -81,6 +86,11 @@ impl Material {
     }
 }
 
+const FORCE: &str = "a finite force > 0 N";
+const APPROACH: &str = "a finite approach > 0 mm";
+const RADIUS: &str = "a radius in mm (> 0 convex, < 0 concave, inf flat)";
+const CRITERIA: &str = "\"von_mises\" or \"tresca\"";
+
 fn material_or_steel(m: Option<Material>) -> ElasticMaterial {
     m.map_or(ElasticMaterial::STEEL, |m| m.inner)
 }
@@ -89,7 +99,7 @@ fn criterion(name: &str) -> PyResult<YieldCriterion> {
     match name {
         "von_mises" => Ok(YieldCriterion::VonMises),
         "tresca" => Ok(YieldCriterion::Tresca),
-        other => Err(invalid("criterion", other, "\"von_mises\" or \"tresca\"")),
+        other => Err(invalid("criterion", other, CRITERIA)),
     }
 }
 
@@ -214,14 +224,22 @@ pub struct HertzPoint {
 #[pymethods]
 impl HertzPoint {
     #[new]
-    #[pyo3(signature = (radii1, radii2, material1 = None, material2 = None, angle = 0.0))]
+    #[pyo3(
+        signature = (radii1, radii2, material1 = None, material2 = None, angle = None),
+        text_signature = "(radii1, radii2, material1=None, material2=None, angle=0.0)"
+    )]
     fn new(
-        radii1: [f64; 2],
-        radii2: [f64; 2],
-        material1: Option<Material>,
-        material2: Option<Material>,
-        angle: f64,
+        radii1: &Bound<'_, PyAny>,
+        radii2: &Bound<'_, PyAny>,
+        material1: Option<&Bound<'_, PyAny>>,
+        material2: Option<&Bound<'_, PyAny>>,
+        angle: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
+        let radii1 = args::reals::<2>(radii1, "radii1", RADIUS)?;
+        let radii2 = args::reals::<2>(radii2, "radii2", RADIUS)?;
+        let material1 = args::material(material1, "material1")?;
+        let material2 = args::material(material2, "material2")?;
+        let angle = args::opt_real(angle, "angle", "a finite angle in rad")?.unwrap_or(0.0);
         let g =
             PointGeometry::new(radii1, radii2, angle).map_err(|e| to_py_with(e, point_field))?;
         let inner = HertzPointContact::new(
@@ -253,18 +271,26 @@ impl HertzPoint {
     }
 
     /// Approach [mm] for a normal force `force` [N] (> 0).
-    fn approach_from_force(&self, force: f64) -> PyResult<f64> {
+    fn approach_from_force(&self, force: &Bound<'_, PyAny>) -> PyResult<f64> {
+        let force = args::real(force, "force", FORCE)?;
         self.inner.approach_from_force(force).map_err(to_py)
     }
 
     /// Normal force [N] for an approach `approach` [mm] (> 0).
-    fn force_from_approach(&self, approach: f64) -> PyResult<f64> {
+    fn force_from_approach(&self, approach: &Bound<'_, PyAny>) -> PyResult<f64> {
+        let approach = args::real(approach, "approach", APPROACH)?;
         self.inner.force_from_approach(approach).map_err(to_py)
     }
 
     /// Solve for a normal force `force` [N] or an approach `approach` [mm] (exactly one).
     #[pyo3(signature = (force = None, approach = None))]
-    fn solve(&self, force: Option<f64>, approach: Option<f64>) -> PyResult<HertzPointResult> {
+    fn solve(
+        &self,
+        force: Option<&Bound<'_, PyAny>>,
+        approach: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<HertzPointResult> {
+        let force = args::opt_real(force, "force", FORCE)?;
+        let approach = args::opt_real(approach, "approach", APPROACH)?;
         let (solution, by_approach) = match (force, approach) {
             (Some(f), None) => (self.inner.solve_force(f), false),
             (None, Some(d)) => (self.inner.solve_approach(d), true),
@@ -306,15 +332,21 @@ macro_rules! hertz_result {
                 peaks_dict(py, self.contact.subsurface_peaks(&self.solution))
             }
             #[doc = $dict_doc]
-            #[pyo3(signature = (yield_stress = None, criterion = "von_mises"))]
+            #[pyo3(
+                signature = (yield_stress = None, criterion = None),
+                text_signature = "($self, yield_stress=None, criterion='von_mises')"
+            )]
             fn to_dict<'py>(
                 &self,
                 py: Python<'py>,
-                yield_stress: Option<f64>,
-                criterion: &str,
+                yield_stress: Option<&Bound<'py, PyAny>>,
+                criterion: Option<&Bound<'py, PyAny>>,
             ) -> PyResult<Bound<'py, PyAny>> {
+                let yield_stress =
+                    args::opt_real(yield_stress, "yield_stress", "a finite stress > 0 MPa")?;
+                let criterion = args::text_or(criterion, "criterion", CRITERIA, "von_mises")?;
                 let (contact, bodies, load) = self.case();
-                hertz_record(py, contact, bodies, load, yield_stress, criterion)
+                hertz_record(py, contact, bodies, load, yield_stress, &criterion)
             }
             $($own)*
         }
@@ -407,9 +439,11 @@ hertz_result!(
         fn pressure<'py>(
             &self,
             py: Python<'py>,
-            x: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
-            y: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
+            x: &Bound<'py, PyAny>,
+            y: &Bound<'py, PyAny>,
         ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+            let x = args::array(x, "x", "positions in mm")?;
+            let y = args::array(y, "y", "positions in mm")?;
             let s = self.solution;
             broadcast2(py, x, y, |x, y| s.pressure_at(x, y))
         }
@@ -449,12 +483,17 @@ impl HertzLine {
     #[new]
     #[pyo3(signature = (radius1, radius2, material1 = None, material2 = None, length = None))]
     fn new(
-        radius1: f64,
-        radius2: f64,
-        material1: Option<Material>,
-        material2: Option<Material>,
-        length: Option<f64>,
+        radius1: &Bound<'_, PyAny>,
+        radius2: &Bound<'_, PyAny>,
+        material1: Option<&Bound<'_, PyAny>>,
+        material2: Option<&Bound<'_, PyAny>>,
+        length: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
+        let radius1 = args::real(radius1, "radius1", RADIUS)?;
+        let radius2 = args::real(radius2, "radius2", RADIUS)?;
+        let material1 = args::material(material1, "material1")?;
+        let material2 = args::material(material2, "material2")?;
+        let length = args::opt_real(length, "length", "a finite length > 0 mm")?;
         if let Some(l) = length {
             kontakt::error::positive_as("length", l, "a finite length > 0 mm").map_err(to_py)?;
         }
@@ -489,7 +528,13 @@ impl HertzLine {
     /// Solve for a line load `line_load` [N/mm] or a force `force` [N] over the length
     /// (exactly one).
     #[pyo3(signature = (line_load = None, force = None))]
-    fn solve(&self, line_load: Option<f64>, force: Option<f64>) -> PyResult<HertzLineResult> {
+    fn solve(
+        &self,
+        line_load: Option<&Bound<'_, PyAny>>,
+        force: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<HertzLineResult> {
+        let line_load = args::opt_real(line_load, "line_load", "a finite line load > 0 N/mm")?;
+        let force = args::opt_real(force, "force", FORCE)?;
         let (q, by_force) = match (line_load, force, self.length) {
             (Some(q), None, _) => (q, false),
             (None, Some(f), Some(l)) => {
@@ -590,10 +635,11 @@ hertz_result!(
         fn pressure<'py>(
             &self,
             py: Python<'py>,
-            x: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
-        ) -> Bound<'py, PyArrayDyn<f64>> {
+            x: &Bound<'py, PyAny>,
+        ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+            let x = args::array(x, "x", "distances in mm")?;
             let s = self.solution;
-            x.as_array().mapv(|x| s.pressure_at(x)).into_pyarray(py)
+            Ok(x.as_array().mapv(|x| s.pressure_at(x)).into_pyarray(py))
         }
 
         fn __repr__(&self) -> String {

@@ -28,6 +28,7 @@ from ._kontakt import (
     run_case,
     run_file,
     run_toml,
+    to_toml,
 )
 
 __all__ = [
@@ -50,6 +51,7 @@ __all__ = [
     "run_file",
     "run_toml",
     "sweep",
+    "to_toml",
 ]
 
 
