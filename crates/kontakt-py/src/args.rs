@@ -255,3 +255,14 @@ pub fn array<'py>(
         }
     })
 }
+
+/// An array's shape as Python writes it: `(5,)`, `(16, 16)`.
+pub fn shape(dims: &[usize]) -> String {
+    match dims {
+        [n] => format!("({n},)"),
+        _ => {
+            let d: Vec<String> = dims.iter().map(ToString::to_string).collect();
+            format!("({})", d.join(", "))
+        }
+    }
+}

@@ -41,7 +41,7 @@ fn pose(v: &Bound<'_, PyAny>, name: &str) -> PyResult<Isometry3<f64>> {
     if m.shape() != [4, 4] {
         return Err(invalid(
             &format!("{name}.shape"),
-            format!("{:?}", m.shape()),
+            args::shape(m.shape()),
             "(4, 4)",
         ));
     }
@@ -71,7 +71,7 @@ fn vector<const N: usize>(v: &Bound<'_, PyAny>, name: &str) -> PyResult<[f64; N]
     if a.ndim() != 1 || a.len() != N {
         return Err(invalid(
             &format!("{name}.shape"),
-            format!("{:?}", a.shape()),
+            args::shape(a.shape()),
             &format!("({N},)"),
         ));
     }

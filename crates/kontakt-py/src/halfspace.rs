@@ -156,12 +156,7 @@ impl HalfSpace {
         let gap = args::array(gap, "gap", &format!("a map of shape {shape} in mm"))?;
         let a = gap.as_array();
         if a.shape() != [ny, nx] {
-            let found: Vec<String> = a.shape().iter().map(ToString::to_string).collect();
-            return Err(invalid(
-                "gap.shape",
-                format!("({})", found.join(", ")),
-                &shape,
-            ));
+            return Err(invalid("gap.shape", args::shape(a.shape()), &shape));
         }
         let external_force =
             args::opt_real(external_force, "external_force", "a finite force > 0 N")?;

@@ -164,7 +164,11 @@ fn broadcast2<'py>(
     let shape = broadcast_shape(x.shape(), y.shape()).ok_or_else(|| {
         invalid(
             "x, y",
-            format!("shapes {:?} and {:?}", x.shape(), y.shape()),
+            format!(
+                "shapes {} and {}",
+                args::shape(x.shape()),
+                args::shape(y.shape())
+            ),
             "arrays of shapes that broadcast against each other",
         )
     })?;

@@ -26,8 +26,7 @@ fn sweep_err(e: SweepError) -> PyErr {
 }
 
 /// `sweep` storing `fields` (`None`: the sweep file's choice).
-fn with_fields(sweep: CaseSweep, fields: Option<&Bound<'_, PyAny>>) -> PyResult<Sweep> {
-    let fields = args::opt_text(fields, "fields", FIELDS)?;
+fn with_fields(sweep: CaseSweep, fields: Option<String>) -> PyResult<Sweep> {
     let fields = match fields.as_deref() {
         None => return Ok(Sweep { inner: sweep }),
         Some("none") => Fields::None,
@@ -65,6 +64,7 @@ impl Sweep {
     ) -> PyResult<Self> {
         let path = args::path(path, "path")?;
         let max_cases = args::opt_count(max_cases, "max_cases", MAX_CASES)?;
+        let fields = args::opt_text(fields, "fields", FIELDS)?;
         let inner = CaseSweep::from_path_with_limit(&path, max_cases).map_err(sweep_err)?;
         with_fields(inner, fields)
     }
@@ -84,6 +84,7 @@ impl Sweep {
         let text = args::text(text, "text", "a sweep as TOML text")?;
         let base_dir = args::opt_path(base_dir, "base_dir")?.unwrap_or_else(|| PathBuf::from("."));
         let max_cases = args::opt_count(max_cases, "max_cases", MAX_CASES)?;
+        let fields = args::opt_text(fields, "fields", FIELDS)?;
         let inner =
             CaseSweep::from_toml_str_with_limit(&text, &base_dir, max_cases).map_err(sweep_err)?;
         with_fields(inner, fields)
