@@ -57,6 +57,11 @@ fn is_complex(v: &Bound<'_, PyAny>) -> bool {
             .is_ok_and(|n| n.to_string().starts_with("complex"))
 }
 
+/// `v` unless it is omitted or Python's `None`.
+fn given<'a, 'py>(v: Option<&'a Bound<'py, PyAny>>) -> Option<&'a Bound<'py, PyAny>> {
+    v.filter(|v| !v.is_none())
+}
+
 /// A real number (int, float, NumPy's real scalars); not a bool, not a complex, not a str.
 pub fn real(v: &Bound<'_, PyAny>, name: &str, valid: &str) -> PyResult<f64> {
     let what = format!("a real number (int or float): {valid}");
@@ -79,9 +84,7 @@ pub fn real(v: &Bound<'_, PyAny>, name: &str, valid: &str) -> PyResult<f64> {
 
 /// An optional real number: `None` (Python's or omitted) is `None`.
 pub fn opt_real(v: Option<&Bound<'_, PyAny>>, name: &str, valid: &str) -> PyResult<Option<f64>> {
-    v.filter(|v| !v.is_none())
-        .map(|v| real(v, name, valid))
-        .transpose()
+    given(v).map(|v| real(v, name, valid)).transpose()
 }
 
 /// The items of a sequence (list, tuple, 1-d array; not a str, bytes or dict), exactly `N`.
@@ -137,9 +140,7 @@ pub fn count(v: &Bound<'_, PyAny>, name: &str, valid: &str) -> PyResult<u64> {
 
 /// An optional count: `None` is `None`.
 pub fn opt_count(v: Option<&Bound<'_, PyAny>>, name: &str, valid: &str) -> PyResult<Option<u64>> {
-    v.filter(|v| !v.is_none())
-        .map(|v| count(v, name, valid))
-        .transpose()
+    given(v).map(|v| count(v, name, valid)).transpose()
 }
 
 /// A count that must fit a `usize` (a grid size, a thread count).
@@ -150,9 +151,7 @@ pub fn size(v: &Bound<'_, PyAny>, name: &str, valid: &str) -> PyResult<usize> {
 
 /// An optional `size`.
 pub fn opt_size(v: Option<&Bound<'_, PyAny>>, name: &str, valid: &str) -> PyResult<Option<usize>> {
-    v.filter(|v| !v.is_none())
-        .map(|v| size(v, name, valid))
-        .transpose()
+    given(v).map(|v| size(v, name, valid)).transpose()
 }
 
 /// `N` sizes (a tuple, list or array); items are named `name[i]`.
@@ -175,7 +174,7 @@ pub fn text_or(
     valid: &str,
     default: &str,
 ) -> PyResult<String> {
-    match v.filter(|v| !v.is_none()) {
+    match given(v) {
         None => Ok(default.to_string()),
         Some(v) => text(v, name, valid),
     }
@@ -191,9 +190,7 @@ pub fn text(v: &Bound<'_, PyAny>, name: &str, valid: &str) -> PyResult<String> {
 
 /// An optional str.
 pub fn opt_text(v: Option<&Bound<'_, PyAny>>, name: &str, valid: &str) -> PyResult<Option<String>> {
-    v.filter(|v| !v.is_none())
-        .map(|v| text(v, name, valid))
-        .transpose()
+    given(v).map(|v| text(v, name, valid)).transpose()
 }
 
 /// A file system path: a str or an `os.PathLike`.
@@ -207,14 +204,12 @@ pub fn path(v: &Bound<'_, PyAny>, name: &str) -> PyResult<PathBuf> {
 
 /// An optional path.
 pub fn opt_path(v: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<Option<PathBuf>> {
-    v.filter(|v| !v.is_none())
-        .map(|v| path(v, name))
-        .transpose()
+    given(v).map(|v| path(v, name)).transpose()
 }
 
 /// An optional `kontakt.Material`.
 pub fn material(v: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<Option<Material>> {
-    v.filter(|v| !v.is_none())
+    given(v)
         .map(|v| {
             v.extract::<Material>()
                 .map_err(|_| wrong_type(name, v, "a kontakt.Material or None"))
