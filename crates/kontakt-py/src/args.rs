@@ -18,7 +18,7 @@ use crate::hertz::Material;
 use numpy::{AllowTypeChange, PyArrayLikeDyn};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
-use pyo3::types::{PyBool, PyBytes, PyComplex, PyDict, PyInt, PyString};
+use pyo3::types::{PyBool, PyBytes, PyComplex, PyDict, PyList, PyString, PyTuple};
 use std::path::PathBuf;
 
 /// `repr(v)` shortened to 60 characters, with its type: `True (bool)`.
@@ -127,14 +127,16 @@ pub fn reals<const N: usize>(v: &Bound<'_, PyAny>, name: &str, valid: &str) -> P
 /// A whole number >= 0 (int or NumPy integer; not a bool, not a float).
 pub fn count(v: &Bound<'_, PyAny>, name: &str, valid: &str) -> PyResult<u64> {
     let what = format!("an int: {valid}");
-    let int_like = v.is_instance_of::<PyInt>()
-        || v.get_type()
-            .name()
-            .is_ok_and(|n| n.to_string().starts_with("int") || n.to_string().starts_with("uint"));
-    if is_bool(v) || !int_like {
+    if is_bool(v) {
         return Err(wrong_type(name, v, &what));
     }
-    v.extract::<u64>()
+    // `operator.index`: ints and NumPy's integers, not floats
+    let int = v
+        .py()
+        .import("operator")?
+        .call_method1("index", (v,))
+        .map_err(|_| wrong_type(name, v, &what))?;
+    int.extract::<u64>()
         .map_err(|_| invalid(name, shown(v), valid))
 }
 
@@ -217,6 +219,23 @@ pub fn material(v: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<Option<Mat
         .transpose()
 }
 
+/// A bool among the items of nested lists and tuples (NumPy would make it 0.0 or 1.0 in an
+/// array of floats) is a `TypeError` naming the item; deeper than NumPy's 64 dimensions
+/// (a list that contains itself) is left to NumPy, which refuses it.
+fn no_bool_items(v: &Bound<'_, PyAny>, name: &str, what: &str, depth: usize) -> PyResult<()> {
+    if depth > 64 || !(v.is_instance_of::<PyList>() || v.is_instance_of::<PyTuple>()) {
+        return Ok(());
+    }
+    for (i, item) in v.try_iter()?.enumerate() {
+        let item = item?;
+        if is_bool(&item) {
+            return Err(wrong_type(&format!("{name}[{i}]"), &item, what));
+        }
+        no_bool_items(&item, &format!("{name}[{i}]"), what, depth + 1)?;
+    }
+    Ok(())
+}
+
 /// An array of real numbers of any shape (an ndarray, a nested list, a scalar), as float64.
 /// A bool, complex, string, date or record dtype is a `TypeError` (NumPy would turn True into
 /// 1.0, drop an imaginary part, or parse the strings); what NumPy cannot make an array of
@@ -228,6 +247,7 @@ pub fn array<'py>(
 ) -> PyResult<PyArrayLikeDyn<'py, f64, AllowTypeChange>> {
     let py = v.py();
     let what = format!("an array of real numbers (float or int dtype): {valid}");
+    no_bool_items(v, name, &what, 0)?;
     let a = py
         .import("numpy")?
         .call_method1("asarray", (v,))

@@ -238,7 +238,25 @@ fn result(case: &Case, outcome: Outcome) -> PyResult<CaseResult> {
 
 /// Parse and run `text` with the GIL released.
 fn run_text(py: Python<'_>, text: &str, base_dir: PathBuf) -> PyResult<CaseResult> {
-    let case = Case::from_toml_str(text).map_err(to_py)?;
+    run_parsed(py, Case::from_toml_str(text).map_err(to_py)?, base_dir)
+}
+
+/// Run a case parsed from a dict's TOML text: a schema error names the key, not a line of
+/// a text the user never saw.
+fn run_dict_text(py: Python<'_>, text: &str, base_dir: PathBuf) -> PyResult<CaseResult> {
+    let case = Case::from_toml_str(text).map_err(|e| match e {
+        kontakt::Error::CaseFile { key, message, .. } => to_py(kontakt::Error::CaseFile {
+            line: None,
+            key,
+            message,
+        }),
+        other => to_py(other),
+    })?;
+    run_parsed(py, case, base_dir)
+}
+
+/// Run a parsed case with the GIL released.
+fn run_parsed(py: Python<'_>, case: Case, base_dir: PathBuf) -> PyResult<CaseResult> {
     let outcome = py.detach(|| case.run(&base_dir)).map_err(to_py)?;
     result(&case, outcome)
 }
@@ -279,7 +297,7 @@ pub fn run_case(
 ) -> PyResult<CaseResult> {
     let text = dict_toml(case, "case")?;
     let base_dir = args::opt_path(base_dir, "base_dir")?;
-    run_text(py, &text, base_dir.unwrap_or_else(|| PathBuf::from(".")))
+    run_dict_text(py, &text, base_dir.unwrap_or_else(|| PathBuf::from(".")))
 }
 
 /// The TOML text of a case or sweep given as a dict (nested dicts for tables, lists of

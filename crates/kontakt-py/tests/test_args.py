@@ -112,6 +112,35 @@ def test_a_bool_is_not_a_number(call, name):
     one_line(e.value, f"invalid {name} = ", "(bool)", "expected ")
 
 
+def test_bools_inside_lists_and_numpy_integers():
+    r = ball().solve(force=100.0)
+    with pytest.raises(TypeError) as e:
+        r.pressure([0.0, [True, 0.0]], 0.0)
+    one_line(e.value, "invalid x[1][0] = True (bool)")
+    loop: list = [0.0]
+    loop.append(loop)
+    with pytest.raises(kt.InputError) as e:
+        r.pressure(loop, 0.0)
+    one_line(e.value, "invalid x = ")
+    # NumPy's integers count; floats do not
+    hs = kt.HalfSpace((np.int64(16), np.uint16(16)), (np.float32(2.0), 2))
+    assert hs.nb_grid_pts == (16, 16) and hs.physical_sizes == (2.0, 2.0)
+    with pytest.raises(TypeError) as e:
+        kt.HalfSpace((16.0, 16), (2.0, 2.0))
+    one_line(e.value, "invalid nb_grid_pts[0] = 16.0 (float): expected an int: 8 <= n <= 4096")
+
+
+def test_case_dict_schema_errors_name_the_key_not_a_line_of_generated_text():
+    with pytest.raises(kt.InputError) as e:
+        kt.run({**HERTZ_CASE, "load": {"force_n": True}})
+    msg = one_line(e.value, "load.force_n")
+    assert "line " not in msg
+    # TOML text keeps its line numbers
+    with pytest.raises(kt.InputError) as e:
+        kt.run(kt.to_toml({**HERTZ_CASE, "load": {"force_n": True}}))
+    one_line(e.value, "line ", "load.force_n")
+
+
 def test_complex_values_are_refused_not_truncated():
     r = ball().solve(force=100.0)
     with pytest.raises(TypeError) as e:
