@@ -218,6 +218,58 @@ def test_hertz_line(r1, r2, m1, m2, length, load, which, xs, yield_stress):
     finite(call(r.to_dict, yield_stress))
 
 
+_BALL = kt.HertzPoint((6.35, 6.35), (math.inf, math.inf))
+_ROLLER = kt.HertzLine(5.0, math.inf, length=10.0)
+_HS = kt.HalfSpace((16, 16), (2.0, 2.0))
+_GAP = np.zeros((16, 16))
+# every number argument of the API: (call with v in its place, the argument's name)
+NUMBER_ARGS = [
+    (lambda v: kt.Material(v, 0.3), "e"),
+    (lambda v: kt.Material(210_000.0, v), "nu"),
+    (lambda v: kt.HertzPoint((v, 6.0), (math.inf, math.inf)), "radii1[0]"),
+    (lambda v: kt.HertzPoint((6.0, 6.0), (math.inf, v)), "radii2[1]"),
+    (lambda v: kt.HertzPoint((6.0, 6.0), (math.inf, math.inf), angle=v), "angle"),
+    (lambda v: _BALL.solve(force=v), "force"),
+    (lambda v: _BALL.solve(approach=v), "approach"),
+    (lambda v: _BALL.approach_from_force(v), "force"),
+    (lambda v: _BALL.force_from_approach(v), "approach"),
+    (lambda v: _BALL.solve(force=1.0).to_dict(yield_stress=v), "yield_stress"),
+    (lambda v: kt.HertzLine(v, math.inf), "radius1"),
+    (lambda v: kt.HertzLine(5.0, v), "radius2"),
+    (lambda v: kt.HertzLine(5.0, math.inf, length=v), "length"),
+    (lambda v: _ROLLER.solve(line_load=v), "line_load"),
+    (lambda v: _ROLLER.solve(force=v), "force"),
+    (lambda v: kt.HalfSpace((16, 16), (2.0, 2.0), e_star=v), "e_star"),
+    (lambda v: kt.HalfSpace((16, 16), (2.0, v)), "physical_sizes[1]"),
+    (lambda v: kt.HalfSpace((16, v), (2.0, 2.0)), "nb_grid_pts[1]"),
+    (lambda v: _HS.solve(_GAP, external_force=v), "external_force"),
+    (lambda v: _HS.solve(_GAP, mean_pressure=v), "mean_pressure"),
+    (lambda v: _HS.solve(_GAP, offset=v), "offset"),
+    (lambda v: _HS.solve(_GAP, offset=1.0, tolerance=v), "tolerance"),
+    (lambda v: _HS.solve(_GAP, offset=1.0, max_iterations=v), "max_iterations"),
+    (lambda v: _HS.solve(_GAP, offset=1.0, threads=v), "threads"),
+    (lambda v: _BALL.solve(force=1.0).pressure(v, 0.0), "x"),
+    (lambda v: _ROLLER.solve(line_load=1.0).pressure(v), "x"),
+    (lambda v: _HS.solve(np.full((16, 16), v), offset=1.0), "gap"),
+]
+not_a_number = st.one_of(
+    st.sampled_from([True, False, np.bool_(True), 1 + 0j, np.complex128(2.0), "1.0", b"1", object()]),
+    st.complex_numbers(allow_nan=False),
+)
+
+
+@FUZZ
+@given(which=st.integers(0, len(NUMBER_ARGS) - 1), v=not_a_number)
+def test_no_bool_complex_or_string_is_taken_as_a_number(which, v):
+    """Issue 30 item 11: ``force=True`` was 1 N and a complex array lost its imaginary part.
+    A bool, a complex or a string for any number argument (or filling an array) is a
+    ``TypeError`` of one line naming that argument."""
+    fn, name = NUMBER_ARGS[which]
+    with pytest.raises(TypeError) as e:
+        fn(v)
+    assert check_error(e.value) == name, str(e.value)
+
+
 # --- HalfSpace ----------------------------------------------------------------------------
 
 small_n = mostly(st.integers(min_value=8, max_value=16),
