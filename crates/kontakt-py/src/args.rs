@@ -100,17 +100,21 @@ fn items<'py, const N: usize>(
     {
         return Err(wrong_type(name, v, &what));
     }
+    let before = shown(v); // an iterator's repr changes as it is read
+    // at most N + 1 items: an endless iterator is refused, not read forever
     let items: Vec<_> = v
         .try_iter()
         .map_err(|_| wrong_type(name, v, &what))?
+        .take(N + 1)
         .collect::<PyResult<_>>()
         .map_err(|_| wrong_type(name, v, &what))?;
     if items.len() != N {
-        return Err(invalid(
-            name,
-            format!("{} of {} items", shown(v), items.len()),
-            &what,
-        ));
+        let count = if items.len() > N {
+            format!("more than {N}")
+        } else {
+            items.len().to_string()
+        };
+        return Err(invalid(name, format!("{before} of {count} items"), &what));
     }
     Ok(items)
 }

@@ -5,6 +5,7 @@ takes a dict as `run` does and a `CaseResult` shows its numbers (item 16)."""
 from __future__ import annotations
 
 import csv
+import itertools
 import math
 import pathlib
 import subprocess
@@ -198,6 +199,9 @@ def test_shape_errors_are_one_line_with_the_shapes_expected_and_found():
     with pytest.raises(kt.InputError) as e:
         kt.HertzPoint((6.0,), (math.inf, math.inf))
     one_line(e.value, "invalid radii1 = (6.0,) (tuple) of 1 items: expected a sequence of 2")
+    with pytest.raises(kt.InputError) as e:
+        kt.HertzPoint(itertools.count(1), (math.inf, math.inf))
+    one_line(e.value, "invalid radii1 = count(1) (count) of more than 2 items")
     with pytest.raises(kt.InputError) as e:
         ball().solve(force=100.0).pressure(np.zeros(3), np.zeros(4))
     one_line(e.value, "invalid x, y = shapes (3,) and (4,)")
