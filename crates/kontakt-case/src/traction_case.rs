@@ -1017,9 +1017,9 @@ fn exact_curve(
     if mx.min(my) >= KALKER_EXACT_WARN_ELEMENTS && options.coarse_for(&creepages) {
         warnings.push(format!(
             "kalker_exact: {mx} x {my} cells across the contact with spin; the creep force \
-             converges slowly there (CONTACT's lateral-plus-spin case: 5.9 % low at 32 cells, \
-             3.0 % at 64; docs/rolling.md section 6.1): use kalker_exact.elements >= [{n}, {n}] \
-             for results within 3 %",
+             converges slowly there (first order; CONTACT's lateral-plus-spin case: 5.9 % low \
+             at 32 cells, 3.0 % at 64, 1.5 % at 128; docs/rolling.md section 6.1): use \
+             kalker_exact.elements >= [{n}, {n}] for results",
             n = KalkerExactOptions::SPIN_ELEMENTS
         ));
     }

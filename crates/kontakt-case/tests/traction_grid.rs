@@ -21,7 +21,8 @@ fn warnings(exact: &str, creepage: &str) -> Vec<String> {
 }
 
 fn spin_warning(w: &[String]) -> bool {
-    w.iter().any(|l| l.contains("with spin") && l.contains("[64, 64]"))
+    w.iter()
+        .any(|l| l.contains("with spin") && l.contains("[64, 64]"))
 }
 
 #[test]
@@ -37,5 +38,8 @@ fn spin_on_a_coarse_grid_warns() {
     assert!(w.is_empty(), "{w:?}");
     // Below 16 cells the coarse-grid warning of every case is the one that speaks.
     let w = warnings("elements = [12, 12]", spin);
-    assert!(!spin_warning(&w) && w.iter().any(|l| l.contains("below 16")), "{w:?}");
+    assert!(
+        !spin_warning(&w) && w.iter().any(|l| l.contains("below 16")),
+        "{w:?}"
+    );
 }

@@ -45,7 +45,11 @@
 //! vanishes. Grids with fewer than [`KalkerExactOptions::MIN_ELEMENTS`] cells across the
 //! contact in either direction are refused (they cannot resolve the slip area, which
 //! starts as a strip at the trailing edge); the default `[32, 32]` is a compromise of
-//! accuracy and speed.
+//! accuracy and speed for pure creepages (1-2 % in the knee). With spin the force converges
+//! more slowly (CONTACT's lateral-plus-spin case on `a/b = 2`: 5.9 % low at 32 cells, 3.0 %
+//! at 64, 1.5 % at 128, first order; docs/rolling.md §6.1), and
+//! [`KalkerExactOptions::coarse_for`] flags such grids below
+//! [`KalkerExactOptions::SPIN_ELEMENTS`] cells.
 //!
 //! # Dissimilar bodies (the coupling)
 //! With [`KalkerExactOptions::coupling`] and bodies of different materials (Kalker's
