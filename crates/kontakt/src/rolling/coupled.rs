@@ -43,7 +43,7 @@
 //! - Vollebregt, CONTACT user guide (the Panagiotopoulos process, example
 //!   `spence35`).
 
-use super::outer::{OuterLimits, OuterLoop, combined_constants};
+use super::outer::{CoupledParts, OuterLimits, OuterLoop, combined_constants, run_outer};
 use super::shift::{CellState, ShiftLoad, ShiftOptions, ShiftSolver};
 use crate::error::{Error, Result};
 use crate::geometry::Grid2;
@@ -191,6 +191,13 @@ pub struct CoupledShiftSolver {
     inner_residual: f64,
 }
 
+impl CoupledParts for CoupledShiftSolver {
+    fn parts(&mut self) -> (&mut OuterLoop, [&[f64]; 2]) {
+        let [tx, ty] = &self.tang.tau;
+        (&mut self.outer, [tx, ty])
+    }
+}
+
 impl CoupledShiftSolver {
     /// A solver for `grid` \[mm\], body 1 and body 2 (body 1 carries the tractions
     /// `τ`; either may be rigid, not both) and `options`.
@@ -298,42 +305,24 @@ impl CoupledShiftSolver {
         let area = self.grid.cell_area();
         let mut shift = self.prev_shift;
         let mut tang_iters = 0;
-        let mut change;
-        let mut passes = 0;
-        let termination;
-        let mut report;
-        self.outer.start();
-        loop {
-            passes += 1;
-            // (1) The normal problem with the tractions' normal displacement.
-            let [tx, ty] = &self.tang.tau;
-            report = self.outer.solve_normal(gap, [tx, ty], control)?;
-            if report.status.termination != Termination::Converged {
-                termination = report.status.termination;
-                change = report.status.residual;
-                break;
-            }
+        let (report, status) = run_outer(self, gap, control, limits, |s| {
             // (2) The tangential problem for this pressure.
-            self.outer.pressure_displacement()?;
-            let p = self.outer.normal.pressure();
+            s.outer.pressure_displacement()?;
+            let p = s.outer.normal.pressure();
             let normal_force = p.iter().sum::<f64>() * area;
-            for (b, pv) in self.tang.bound.iter_mut().zip(p) {
+            for (b, pv) in s.tang.bound.iter_mut().zip(p) {
                 *b = mu * pv;
             }
             for k in 0..2 {
-                for ((b, up), u0) in self.base[k]
-                    .iter_mut()
-                    .zip(&self.outer.up[k])
-                    .zip(&self.prev_u[k])
-                {
+                for ((b, up), u0) in s.base[k].iter_mut().zip(&s.outer.up[k]).zip(&s.prev_u[k]) {
                     *b = up - u0;
                 }
             }
             let inner = match load {
                 ShiftLoad::Shift(d) => {
                     shift = d;
-                    let dd = [d[0] - self.prev_shift[0], d[1] - self.prev_shift[1]];
-                    self.tangential(dd)
+                    let dd = [d[0] - s.prev_shift[0], d[1] - s.prev_shift[1]];
+                    s.tangential(dd)
                 }
                 ShiftLoad::Force(f) => {
                     let limit = mu * normal_force;
@@ -348,32 +337,14 @@ impl CoupledShiftSolver {
                             ),
                         ));
                     }
-                    let (dd, inner) = self.force_control(f, limit);
-                    shift = [self.prev_shift[0] + dd[0], self.prev_shift[1] + dd[1]];
+                    let (dd, inner) = s.force_control(f, limit);
+                    shift = [s.prev_shift[0] + dd[0], s.prev_shift[1] + dd[1]];
                     inner
                 }
             };
             tang_iters += inner.1;
-            if inner.0 != Termination::Converged {
-                termination = inner.0;
-                change = self.inner_residual;
-                break;
-            }
-            if self.outer.cross.is_none() {
-                termination = Termination::Converged;
-                change = 0.0;
-                break;
-            }
-            // (3) The change over the pass.
-            let [tx, ty] = &self.tang.tau;
-            let end;
-            (change, end) = self.outer.after_pass([tx, ty], passes, limits);
-            if let Some(t) = end {
-                termination = t;
-                break;
-            }
-        }
-        let status = SolveStatus::new(termination, passes, change);
+            Ok((inner.0 != Termination::Converged).then_some((inner.0, s.inner_residual)))
+        })?;
         Ok(self.finish(shift, mu, tang_iters, report, status))
     }
 

@@ -65,7 +65,7 @@
 //! - Vollebregt, CONTACT user guide (the Panagiotopoulos process, the force-controlled
 //!   creepage "F = 1", example `bentall`).
 
-use super::outer::{OuterLimits, OuterLoop, combined_constants};
+use super::outer::{CoupledParts, OuterLimits, OuterLoop, combined_constants, run_outer};
 use super::shift::CellState;
 use super::steady::{SteadyOptions, SteadySolution, SteadySolver};
 use crate::error::{Error, Result};
@@ -292,6 +292,13 @@ struct Search {
     residual: f64,
 }
 
+impl CoupledParts for CoupledSteadySolver {
+    fn parts(&mut self) -> (&mut OuterLoop, [&[f64]; 2]) {
+        let [tx, ty] = &self.tau;
+        (&mut self.outer, [tx, ty])
+    }
+}
+
 impl CoupledSteadySolver {
     /// A solver for `grid` \[mm\] (rolling along `+x`), body 1 and body 2 (body 1
     /// carries the tractions `τ`; either may be rigid, not both) and `options`.
@@ -418,26 +425,12 @@ impl CoupledSteadySolver {
         let g_mod = self.material.shear_modulus;
         let mut solves = 0;
         let mut fft = 0;
-        let mut change;
-        let mut passes = 0;
-        let termination;
-        let mut report;
         let mut last: Option<(SteadySolution, f64)> = None;
-        self.outer.start();
-        loop {
-            passes += 1;
-            // (1) The normal problem with the tractions' normal displacement.
-            let [tx, ty] = &self.tau;
-            report = self.outer.solve_normal(gap, [tx, ty], control)?;
-            if report.status.termination != Termination::Converged {
-                termination = report.status.termination;
-                change = report.status.residual;
-                break;
-            }
+        let (report, status) = run_outer(self, gap, control, limits, |s| {
             // (2) The pressure's tangential displacement as an extra rigid slip.
-            let extra = match self.outer.pressure_displacement()? {
+            let extra = match s.outer.pressure_displacement()? {
                 true => {
-                    for (e, u) in self.extra.iter_mut().zip(&self.outer.up) {
+                    for (e, u) in s.extra.iter_mut().zip(&s.outer.up) {
                         for (row_e, row_u) in e.chunks_exact_mut(nx).zip(u.chunks_exact(nx)) {
                             for i in 0..nx - 1 {
                                 row_e[i] = row_u[i] - row_u[i + 1];
@@ -445,21 +438,21 @@ impl CoupledSteadySolver {
                             row_e[nx - 1] = 0.0;
                         }
                     }
-                    Some([&self.extra[0][..], &self.extra[1][..]])
+                    Some([&s.extra[0][..], &s.extra[1][..]])
                 }
                 false => None,
             };
-            let p = self.outer.normal.pressure();
+            let p = s.outer.normal.pressure();
             // (3) The steady tangential problem for this pressure.
             let (solution, xi, inner) = match load {
                 SteadyLoad::Creepage(c) => {
-                    let s = steady_solve(&mut self.steady, p, mu, c, extra, &opts.steady)?;
-                    self.last_xi = Some(c.longitudinal);
+                    let sol = steady_solve(&mut s.steady, p, mu, c, extra, &opts.steady)?;
+                    s.last_xi = Some(c.longitudinal);
                     solves += 1;
-                    fft += s.fft_iterations;
-                    let t = s.status.termination;
-                    let r = s.status.residual;
-                    (s, c.longitudinal, (t, r))
+                    fft += sol.fft_iterations;
+                    let t = sol.status.termination;
+                    let r = sol.status.residual;
+                    (sol, c.longitudinal, (t, r))
                 }
                 SteadyLoad::LongitudinalForce {
                     force,
@@ -470,23 +463,23 @@ impl CoupledSteadySolver {
                     let limit = mu * normal_force;
                     check_force_target(force, limit)?;
                     let p_max = p.iter().fold(0.0f64, |a, v| a.max(*v));
-                    let scale = (mu + 2.0 * self.k.abs()) * p_max / g_mod;
+                    let scale = (mu + 2.0 * s.k.abs()) * p_max / g_mod;
                     let search = find_creepage(
-                        &mut self.steady,
+                        &mut s.steady,
                         p,
                         mu,
                         extra,
                         [lateral, spin],
                         force,
                         limit,
-                        (self.last_xi.unwrap_or(0.0), self.last_slope, scale),
+                        (s.last_xi.unwrap_or(0.0), s.last_slope, scale),
                         &opts,
                     )?;
                     solves += search.solves;
                     fft += search.fft;
-                    self.last_xi = Some(search.xi);
+                    s.last_xi = Some(search.xi);
                     if search.slope.is_some() {
-                        self.last_slope = search.slope;
+                        s.last_slope = search.slope;
                     }
                     let inner = if search.termination == Termination::Converged {
                         let st = search.solution.status;
@@ -497,29 +490,11 @@ impl CoupledSteadySolver {
                     (search.solution, search.xi, inner)
                 }
             };
-            self.tau[0].copy_from_slice(&solution.traction_x);
-            self.tau[1].copy_from_slice(&solution.traction_y);
+            s.tau[0].copy_from_slice(&solution.traction_x);
+            s.tau[1].copy_from_slice(&solution.traction_y);
             last = Some((solution, xi));
-            if inner.0 != Termination::Converged {
-                termination = inner.0;
-                change = inner.1;
-                break;
-            }
-            if self.outer.cross.is_none() {
-                termination = Termination::Converged;
-                change = 0.0;
-                break;
-            }
-            // (4) The change over the pass.
-            let [tx, ty] = &self.tau;
-            let end;
-            (change, end) = self.outer.after_pass([tx, ty], passes, limits);
-            if let Some(t) = end {
-                termination = t;
-                break;
-            }
-        }
-        let status = SolveStatus::new(termination, passes, change);
+            Ok((inner.0 != Termination::Converged).then_some(inner))
+        })?;
         Ok(self.finish(last, load, solves, fft, report, status))
     }
 

@@ -29,7 +29,7 @@ use crate::error::{Error, Result};
 use crate::geometry::Grid2;
 use crate::halfspace::{Control, HalfSpaceSolver, SolveReport, SolverOptions, Start};
 use crate::material::ElasticMaterial;
-use crate::solve::Termination;
+use crate::solve::{SolveStatus, Termination};
 use crate::tangential::KalkerMaterial;
 
 /// Kalker's combined constants of two bodies and the difference parameter `K` in use
@@ -57,6 +57,61 @@ pub(super) struct OuterLimits {
     pub(super) patience: usize,
     /// Most passes.
     pub(super) max_outer: usize,
+}
+
+/// A coupled solver as the outer loop sees it.
+pub(super) trait CoupledParts {
+    /// Its outer loop and its current tractions `[τ_x, τ_y]` on body 1 \[MPa\].
+    fn parts(&mut self) -> (&mut OuterLoop, [&[f64]; 2]);
+}
+
+/// The outer loop of the module docs for `solver`, on the undeformed gap `gap` \[mm\]
+/// under the normal `control`: passes of (1) the normal problem, (2) `tangential`, the
+/// solver's tangential problem for the pressure of (1) (in [`OuterLoop::normal`]), which
+/// returns the termination and residual of a failed inner solve or `None`, (3) the change
+/// and the end of the loop (one pass without coupling). Returns the last normal solve's
+/// report and the loop's status: its termination, passes and last change (0 after the
+/// single pass without coupling; a failed solve's own residual).
+///
+/// # Errors
+/// The normal solver's, the coupling operator's and `tangential`'s.
+pub(super) fn run_outer<S: CoupledParts>(
+    solver: &mut S,
+    gap: &[f64],
+    control: Control,
+    limits: OuterLimits,
+    mut tangential: impl FnMut(&mut S) -> Result<Option<(Termination, f64)>>,
+) -> Result<(SolveReport, SolveStatus)> {
+    solver.parts().0.start();
+    let mut passes = 0;
+    loop {
+        passes += 1;
+        // (1) The normal problem with the tractions' normal displacement.
+        let (outer, tau) = solver.parts();
+        let report = outer.solve_normal(gap, tau, control)?;
+        let st = report.status;
+        if st.termination != Termination::Converged {
+            return Ok((
+                report,
+                SolveStatus::new(st.termination, passes, st.residual),
+            ));
+        }
+        // (2) The tangential problem for this pressure.
+        if let Some((termination, residual)) = tangential(solver)? {
+            return Ok((report, SolveStatus::new(termination, passes, residual)));
+        }
+        let (outer, tau) = solver.parts();
+        if outer.cross.is_none() {
+            return Ok((
+                report,
+                SolveStatus::new(Termination::Converged, passes, 0.0),
+            ));
+        }
+        // (3) The change over the pass.
+        if let (change, Some(termination)) = outer.after_pass(tau, passes, limits) {
+            return Ok((report, SolveStatus::new(termination, passes, change)));
+        }
+    }
 }
 
 /// The normal solver, the coupling operator and the work arrays of the outer loop
@@ -142,7 +197,7 @@ impl OuterLoop {
     }
 
     /// Start a solve: no lowest change yet.
-    pub(super) fn start(&mut self) {
+    fn start(&mut self) {
         self.best = f64::INFINITY;
         self.since_best = 0;
     }
@@ -161,7 +216,7 @@ impl OuterLoop {
     ///
     /// # Errors
     /// The normal solver's ([`HalfSpaceSolver::solve`]).
-    pub(super) fn solve_normal(
+    fn solve_normal(
         &mut self,
         gap: &[f64],
         tau: [&[f64]; 2],
@@ -199,7 +254,7 @@ impl OuterLoop {
 
     /// Step (3): the relative change of `(p, τ)` over the pass, which becomes the last
     /// pass; and the loop's end after `passes` passes, if it ends (module docs).
-    pub(super) fn after_pass(
+    fn after_pass(
         &mut self,
         tau: [&[f64]; 2],
         passes: usize,
