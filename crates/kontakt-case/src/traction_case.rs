@@ -398,7 +398,8 @@ impl Default for FastsimSpec {
 pub struct KalkerExactSpec {
     /// Cells across the contact ellipse `[mx, my]` (along the rolling direction, across),
     /// each 8..=1024; default `[32, 32]`. Below 16 the report warns: the creep force may
-    /// then be off by 5 % or more (grid convergence in docs/tangential.md §11).
+    /// then be off by 5 % or more (grid convergence in docs/tangential.md §11); with spin
+    /// below 64 (`KalkerExactOptions::SPIN_ELEMENTS`; docs/rolling.md §6.1).
     pub elements: [usize; 2],
     /// Most Newton iterations of the steady solver per point, >= 1 (default 100); a
     /// point that needs more is reported as not converged.
@@ -1011,6 +1012,15 @@ fn exact_curve(
              {KALKER_EXACT_WARN_ELEMENTS} the creep force may be off by 5 % or more (grid \
              convergence: docs/tangential.md section 11); use kalker_exact.elements >= [32, 32] \
              for results"
+        ));
+    }
+    if mx.min(my) >= KALKER_EXACT_WARN_ELEMENTS && options.coarse_for(&creepages) {
+        warnings.push(format!(
+            "kalker_exact: {mx} x {my} cells across the contact with spin; the creep force \
+             converges slowly there (first order; CONTACT's lateral-plus-spin case: 5.9 % low \
+             at 32 cells, 3.0 % at 64, 1.5 % at 128; docs/rolling.md section 6.1): use \
+             kalker_exact.elements >= [{n}, {n}] for results",
+            n = KalkerExactOptions::SPIN_ELEMENTS
         ));
     }
     let not_converged: Vec<usize> = points
