@@ -466,7 +466,7 @@ impl Sweep {
         max_cases: Option<u64>,
     ) -> SweepResult<Self> {
         let spec: SweepSpec = toml::from_str(text)
-            .map_err(|e| input(format!("sweep file: {}", case_file_error(text, &e))))?;
+            .map_err(|e| input(format!("sweep file: {}", case_file_error::<SweepSpec>(text, &e))))?;
         Self::from_spec(spec, base_dir, max_cases)
     }
 
@@ -501,7 +501,7 @@ impl Sweep {
                     input(format!(
                         "invalid base = \"{p}\": {}: {}",
                         path.display(),
-                        case_file_error(&text, &e)
+                        case_file_error::<toml::Table>(&text, &e)
                     ))
                 })?;
                 let parent = path.parent().unwrap_or(Path::new(".")).to_path_buf();
