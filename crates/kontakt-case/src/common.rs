@@ -208,7 +208,8 @@ impl<'t> SpanIndex<'t> {
 
     /// The deepest key path whose key or value holds `offset`.
     fn path_at(&self, offset: usize) -> Option<Vec<Seg>> {
-        let holds = |r: &std::ops::Range<usize>| r.start <= offset && offset < r.end.max(r.start + 1);
+        let holds =
+            |r: &std::ops::Range<usize>| r.start <= offset && offset < r.end.max(r.start + 1);
         self.entries
             .iter()
             .filter(|(_, k, v)| holds(k) || holds(v))
@@ -417,7 +418,12 @@ fn below(doc: &toml::Table, at: &[Seg]) -> (Vec<Vec<Seg>>, Vec<(Vec<Seg>, toml::
     if let Some(v) = node_mut(&mut doc, at) {
         walk(v, &mut at.to_vec(), &mut tables, &mut leaves);
     } else {
-        walk(&toml::Value::Table(doc), &mut Vec::new(), &mut tables, &mut leaves);
+        walk(
+            &toml::Value::Table(doc),
+            &mut Vec::new(),
+            &mut tables,
+            &mut leaves,
+        );
     }
     tables.sort_by_key(|p| std::cmp::Reverse(p.len()));
     leaves.sort_by_key(|(p, _)| std::cmp::Reverse(p.len()));
@@ -436,9 +442,7 @@ fn find_unknown(
     let (tables, _) = below(doc, at);
     let holding: Vec<_> = tables
         .into_iter()
-        .filter(|t| {
-            table_mut(&mut doc.clone(), t).is_some_and(|t| t.contains_key(name))
-        })
+        .filter(|t| table_mut(&mut doc.clone(), t).is_some_and(|t| t.contains_key(name)))
         .collect();
     let found = if holding.len() == 1 {
         holding.into_iter().next()

@@ -465,8 +465,12 @@ impl Sweep {
         base_dir: &Path,
         max_cases: Option<u64>,
     ) -> SweepResult<Self> {
-        let spec: SweepSpec = toml::from_str(text)
-            .map_err(|e| input(format!("sweep file: {}", case_file_error::<SweepSpec>(text, &e))))?;
+        let spec: SweepSpec = toml::from_str(text).map_err(|e| {
+            input(format!(
+                "sweep file: {}",
+                case_file_error::<SweepSpec>(text, &e)
+            ))
+        })?;
         Self::from_spec(spec, base_dir, max_cases)
     }
 
