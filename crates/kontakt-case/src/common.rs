@@ -624,3 +624,35 @@ fn one_line(path: &Path) -> String {
         shown
     }
 }
+
+/// An error about the library's angle `field` \[rad\], said as the case file's key `key` in
+/// degrees: the value the file gives and the range in degrees. (`half_angle_deg = 90` was
+/// reported as `1.5707963267948966` against a range in radians, found by probing.)
+pub(crate) fn in_degrees(e: Error, field: &str, key: &str, typed_deg: f64) -> Error {
+    match e {
+        Error::InvalidInput {
+            field: f, expected, ..
+        } if f == field => Error::invalid(key.to_string(), typed_deg, degrees_text(&expected)),
+        other => other,
+    }
+}
+
+/// A range in radians (`(0, pi/2) rad`, `a finite angle [rad]`) in degrees.
+fn degrees_text(text: &str) -> String {
+    let mut out = text
+        .replace("pi/2", "90")
+        .replace("2 pi", "360")
+        .replace("pi", "180")
+        .replace("[rad]", "[deg]");
+    // " rad" as a word ("rad," "rad)" or at the end), not the start of "radius".
+    let mut i = 0;
+    while let Some(j) = out[i..].find(" rad") {
+        let at = i + j;
+        let after = out[at + 4..].chars().next();
+        if after.is_none_or(|c| !c.is_alphabetic()) {
+            out.replace_range(at..at + 4, " deg");
+        }
+        i = at + 4;
+    }
+    out
+}
