@@ -356,9 +356,43 @@ impl CreepageRange {
             }
         }
         let n = self.points - 1;
+        // min (1 - t) + max t: no difference max - min to overflow (min = -1e308, max =
+        // 1e308 made inf - inf, a NaN creepage nobody typed; found by probing).
         Ok((0..=n)
-            .map(|i| self.min + (self.max - self.min) * i as f64 / n as f64)
+            .map(|i| {
+                let t = i as f64 / n as f64;
+                self.min * (1.0 - t) + self.max * t
+            })
             .collect())
+    }
+}
+
+/// A library error about one point of the creepage range (`creepage = 1e306`, a value the
+/// case does not give), said as the bound of `[creepage]` nearer to it (`creepage.max` or
+/// `creepage.min`), with the point in the message.
+fn range_point(e: Error, range: &CreepageRange) -> Error {
+    match e {
+        Error::InvalidInput {
+            field,
+            value,
+            expected,
+        } if field == "creepage" || field == "creepage.longitudinal" => {
+            // The bound nearer the point (the larger in magnitude when it does not parse).
+            let max_side = value.parse::<f64>().map_or(range.max.abs() >= range.min.abs(), |x| {
+                (x - range.max).abs() <= (x - range.min).abs()
+            });
+            let (key, bound) = if max_side {
+                ("creepage.max", range.max)
+            } else {
+                ("creepage.min", range.min)
+            };
+            Error::invalid(
+                key,
+                bound,
+                format!("{expected} (the range reaches the creepage {value})"),
+            )
+        }
+        other => other,
     }
 }
 
@@ -694,7 +728,7 @@ pub fn run_traction_case_with_map(
     };
     let (force, load_key) = case.load.force(length)?;
     let map_common = |e: Error| {
-        e.map_field(|f| match f {
+        range_point(e, &case.creepage).map_field(|f| match f {
             "friction_coefficient" => "friction.mu".into(),
             "normal_force" | "force" | "line_load" => load_key.into(),
             "poisson_ratio" => "body1.nu, body2.nu".into(),

@@ -445,6 +445,26 @@ impl RibFrictionModel {
         }
         let pair = RollerRib::new(spec)?;
         let mass = rollers.mass(&pair)?;
+        // The rollers must fit side by side around the ring: neighbours' centres a chord
+        // 2 R sin(pi/Z) >= 2 r_L apart. (A billion rollers, found by probing, carried
+        // nothing each, and the error blamed the speed.)
+        let r_l = pair.spec.bearing.roller_large_end_radius;
+        let fit = if r_l < mass.radius {
+            (std::f64::consts::PI / (r_l / mass.radius).asin()).floor()
+        } else {
+            0.0
+        };
+        if rollers.count as f64 > fit {
+            return Err(Error::invalid(
+                "count",
+                rollers.count,
+                format!(
+                    "at most {fit} rollers: no more of large-end radius {r_l} mm fit side by \
+                     side around the ring at {:.4} mm from its axis",
+                    mass.radius
+                ),
+            ));
+        }
         let gap = SurfacePairGap::new(pair.face.clone(), pair.rib.clone(), pair.contact)?;
         let frame = ContactFrame::of_gap(&gap);
         let material = ElasticMaterial::STEEL;
