@@ -42,8 +42,8 @@
 //! ```
 
 pub use crate::common::MaterialSpec;
-use crate::common::{SCHEMA_VERSION, in_degrees};
 pub(crate) use crate::common::material;
+use crate::common::{SCHEMA_VERSION, in_degrees};
 use kontakt::bearing::{FaceShape, RibShape, RollerRib, RollerRibSpec, TaperedRollerBearing};
 use kontakt::field::NormalSolution;
 use kontakt::geometry::RelativeCurvature;

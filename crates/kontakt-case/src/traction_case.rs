@@ -368,7 +368,7 @@ impl CreepageRange {
 }
 
 /// A library error about one point of the creepage range (`creepage = 1e306`, a value the
-/// case does not give), said as the bound of `[creepage]` nearer to it (`creepage.max` or
+/// case does not give), said as the bound of `[creepage]` on its side (`creepage.max` or
 /// `creepage.min`), with the point in the message.
 fn range_point(e: Error, range: &CreepageRange) -> Error {
     match e {
@@ -377,10 +377,13 @@ fn range_point(e: Error, range: &CreepageRange) -> Error {
             value,
             expected,
         } if field == "creepage" || field == "creepage.longitudinal" => {
-            // The bound nearer the point (the larger in magnitude when it does not parse).
-            let max_side = value.parse::<f64>().map_or(range.max.abs() >= range.min.abs(), |x| {
-                (x - range.max).abs() <= (x - range.min).abs()
-            });
+            // The bound on the point's side: max for a point of max's sign within it (the
+            // larger bound in magnitude when the point does not parse).
+            let max_side = value
+                .parse::<f64>()
+                .map_or(range.max.abs() >= range.min.abs(), |x| {
+                    x.signum() == range.max.signum() && x.abs() <= range.max.abs()
+                });
             let (key, bound) = if max_side {
                 ("creepage.max", range.max)
             } else {

@@ -1,0 +1,185 @@
+//! Every error names what the user typed (issue 30, item 10): the flag or the case-file
+//! key with the value as given, never a library field, a derived quantity or a value in
+//! other units.
+
+#![allow(clippy::unwrap_used)] // tests: a panic is a failure with its message
+
+use assert_cmd::Command;
+use std::path::{Path, PathBuf};
+
+fn kontakt() -> Command {
+    Command::cargo_bin("kontakt").unwrap()
+}
+
+fn examples() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples")
+}
+
+/// Run, expect exit status 2 and one stderr line; return it.
+fn bad(args: &[&str]) -> String {
+    let out = kontakt().args(args).output().unwrap();
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(out.status.code(), Some(2), "args {args:?}: {err}");
+    let lines: Vec<_> = err.lines().filter(|l| !l.trim().is_empty()).collect();
+    assert_eq!(lines.len(), 1, "not one line: {err}");
+    lines[0].to_string()
+}
+
+/// A copy of the example `name` with `edit` applied, in a fresh folder.
+fn edited(name: &str, from: &str, to: &str) -> PathBuf {
+    let text = std::fs::read_to_string(examples().join(name)).unwrap();
+    assert!(text.contains(from), "{name} has no {from}");
+    let dir = std::env::temp_dir().join(format!(
+        "kontakt-input-names-{}-{}-{}",
+        std::process::id(),
+        name.trim_end_matches(".toml"),
+        to.len()
+    ));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(name);
+    std::fs::write(&path, text.replacen(from, to, 1)).unwrap();
+    path
+}
+
+fn path(p: &Path) -> &str {
+    p.to_str().unwrap()
+}
+
+const HERTZ: [&str; 5] = [
+    "hertz",
+    "--body1-radii",
+    "10,10",
+    "--body2-radii",
+    "inf,inf",
+];
+
+/// `--e1 5e-324` (a subnormal modulus) overflowed the contact and was blamed on `--force`.
+#[test]
+fn a_subnormal_modulus_is_the_modulus() {
+    for flag in ["--e1", "--e2"] {
+        let mut args = HERTZ.to_vec();
+        args.extend([flag, "5e-324", "--force", "500"]);
+        let l = bad(&args);
+        assert!(
+            l.starts_with(&format!("error: invalid {flag} = 5e-324: ")),
+            "{l}"
+        );
+    }
+}
+
+/// Every numeric flag of `kontakt hertz`, set to values at and beyond its range, fails
+/// naming a flag of the command (the CLI's counterpart of kontakt-case's tests/keys.rs).
+#[test]
+fn hertz_errors_name_a_flag() {
+    let flags = [
+        "--angle-deg",
+        "--e1",
+        "--nu1",
+        "--e2",
+        "--nu2",
+        "--force",
+        "--approach",
+        "--yield-stress",
+    ];
+    let mut tried = 0;
+    for flag in flags {
+        for value in ["-1", "0", "nan", "inf", "5e-324", "1e308", "-1e308"] {
+            let mut args = HERTZ.to_vec();
+            args.extend([flag, value]);
+            if flag != "--force" && flag != "--approach" {
+                args.extend(["--force", "500"]);
+            }
+            let out = kontakt().args(&args).output().unwrap();
+            if out.status.success() {
+                continue;
+            }
+            tried += 1;
+            let err = String::from_utf8(out.stderr).unwrap();
+            assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+            let named = err
+                .trim()
+                .strip_prefix("error: invalid ")
+                .or_else(|| err.trim().strip_prefix("error: "))
+                .unwrap();
+            let name = named.split([' ', ':']).next().unwrap();
+            assert!(
+                name.starts_with("--")
+                    && name
+                        .split('/')
+                        .all(|f| HERTZ.contains(&f) || flags.contains(&f)),
+                "{args:?}: names `{name}`: {err}"
+            );
+        }
+    }
+    assert!(tried > 30, "{tried}");
+}
+
+/// `half_angle_deg = 90` was reported as 1.5707963267948966 against a range in radians.
+#[test]
+fn a_cone_half_angle_in_degrees() {
+    let case = edited(
+        "pimp_sphere_on_torus.toml",
+        "shape = \"torus\"\nmajor_mm = 30.0\nminor_mm = 20.0",
+        "shape = \"cone\"\nhalf_angle_deg = 90.0",
+    );
+    let l = bad(&["solve", path(&case)]);
+    assert!(
+        l.contains("invalid geometry.body2.half_angle_deg = 90: expected")
+            && l.contains("(0, 90) deg"),
+        "{l}"
+    );
+    assert!(!l.contains("1.57") && !l.contains("rad"), "{l}");
+}
+
+/// `rollers.count = 1e9` ended as "invalid speed": the rollers do not fit the ring.
+#[test]
+fn a_roller_count_that_cannot_fit_is_the_count() {
+    for count in ["1000000000", "22"] {
+        let case = edited(
+            "rib_friction.toml",
+            "count = 17",
+            &format!("count = {count}"),
+        );
+        let l = bad(&["friction", path(&case)]);
+        assert!(
+            l.contains(&format!(
+                "invalid rollers.count = {count}: expected at most 21 rollers"
+            )),
+            "{l}"
+        );
+    }
+}
+
+/// `kontakt mbs --force 1e9` answered with the element's internals (`bodies: ...`, "use
+/// GapSampling::Exact"): it names `--force`.
+#[test]
+fn mbs_names_the_force() {
+    let out = std::env::temp_dir().join(format!("kontakt-input-names-mbs-{}", std::process::id()));
+    let l = bad(&["mbs", "--force", "1e9", "--out", path(&out)]);
+    assert!(
+        l.starts_with("error: invalid --force = 1000000000: expected a rib load"),
+        "{l}"
+    );
+    assert!(!l.contains("GapSampling"), "{l}");
+}
+
+/// A creepage range of -1e308 to 1e308 made a NaN creepage (max - min overflowed) and
+/// errors named points of the range; they name the bound.
+#[test]
+fn a_creepage_range_names_its_bound() {
+    let case = edited(
+        "traction_ball_all_models.toml",
+        "max = 0.008",
+        "max = 1e308\nmin = -1e308",
+    );
+    let l = bad(&["traction", path(&case)]);
+    assert!(l.contains("invalid creepage.min = -1e308: expected"), "{l}");
+    assert!(!l.contains("NaN"), "{l}");
+    let case = edited(
+        "traction_ball_all_models.toml",
+        "max = 0.008",
+        "max = 1e308",
+    );
+    let l = bad(&["traction", path(&case)]);
+    assert!(l.contains("invalid creepage.max = 1e308: expected"), "{l}");
+}
