@@ -177,6 +177,15 @@ pub enum TractionModel {
 }
 
 impl TractionModel {
+    /// Every model, in the order of the schema's documentation.
+    pub const ALL: [TractionModel; 5] = [
+        TractionModel::Carter,
+        TractionModel::KalkerLinear,
+        TractionModel::Fastsim,
+        TractionModel::KalkerExact,
+        TractionModel::Asperity,
+    ];
+
     /// The model's name as in the case file and the report.
     pub fn as_str(self) -> &'static str {
         match self {
@@ -706,13 +715,8 @@ pub fn run_traction_case_with_map(
             "\"traction\" for this schema",
         ));
     }
-    if case.models.is_empty() {
-        return Err(Error::invalid(
-            "models",
-            "[]",
-            "at least one of carter, kalker_linear, fastsim, kalker_exact, asperity",
-        ));
-    }
+    let names: Vec<&str> = case.models.iter().map(|m| m.as_str()).collect();
+    kontakt::error::choices("models", &names, &TractionModel::ALL.map(TractionModel::as_str))?;
     let m1 = material(&case.body1, "body1")?;
     let m2 = material(&case.body2, "body2")?;
     let mu = case.friction.mu;

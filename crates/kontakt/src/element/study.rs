@@ -84,8 +84,8 @@ pub const BACKENDS: [&str; 3] = ["hertz", "pimp", "halfspace"];
 ///
 /// # Errors
 /// [`Error::InvalidInput`] naming `force` (> 0), `angle_deg` (0 < a ≤ 2), `rpm`
-/// (0..=100 000), `steps` (3..=1000), `backends` (unknown or none), `pairing`; the
-/// element's errors.
+/// (0..=100 000), `steps` (3..=1000), `backends` (unknown, none or one twice), `pairing`;
+/// the element's errors at a load, named `force`.
 pub fn roller_rib_motion(
     pairing: &str,
     force: f64,
@@ -94,13 +94,7 @@ pub fn roller_rib_motion(
     steps: usize,
     backends: &[&str],
 ) -> Result<MotionStudy> {
-    if backends.is_empty() || backends.iter().any(|b| !BACKENDS.contains(b)) {
-        return Err(Error::invalid(
-            "backends",
-            backends.join(","),
-            "one or more of hertz, pimp, halfspace",
-        ));
-    }
+    crate::error::choices("backends", backends, &BACKENDS)?;
     if !(force.is_finite() && force > 0.0) {
         return Err(Error::invalid("force", force, "a finite force > 0 N"));
     }
