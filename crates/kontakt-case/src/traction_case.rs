@@ -716,7 +716,11 @@ pub fn run_traction_case_with_map(
         ));
     }
     let names: Vec<&str> = case.models.iter().map(|m| m.as_str()).collect();
-    kontakt::error::choices("models", &names, &TractionModel::ALL.map(TractionModel::as_str))?;
+    kontakt::error::choices(
+        "models",
+        &names,
+        &TractionModel::ALL.map(TractionModel::as_str),
+    )?;
     let m1 = material(&case.body1, "body1")?;
     let m2 = material(&case.body2, "body2")?;
     let mu = case.friction.mu;

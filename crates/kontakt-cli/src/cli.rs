@@ -194,7 +194,7 @@ pub struct ValidateArgs {
     /// Folder for the report (created if missing; files in it are overwritten).
     #[arg(long, value_name = "DIR", default_value = "kontakt-validate")]
     pub out: PathBuf,
-    /// Cells a side of the half-space grid, 8..=4096.
+    /// Cells a side of the half-space grid, 12..=4096 (each contact spans at least 8).
     #[arg(long, value_name = "N", default_value_t = 64)]
     pub cells: usize,
     /// Print the results as JSON instead of the summary table.

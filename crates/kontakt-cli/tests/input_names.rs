@@ -183,3 +183,73 @@ fn a_creepage_range_names_its_bound() {
     let l = bad(&["traction", path(&case)]);
     assert!(l.contains("invalid creepage.max = 1e308: expected"), "{l}");
 }
+
+/// A list of choices given twice (`models = ["fastsim", "fastsim"]`, `--backends
+/// hertz,hertz`) gave duplicate columns; every list goes through one check that names the
+/// key or flag (issue 30, item 12).
+#[test]
+fn a_choice_given_twice_is_refused() {
+    let case = edited(
+        "traction_ball_all_models.toml",
+        "models = [\"carter\", \"kalker_linear\", \"fastsim\", \"kalker_exact\", \"asperity\"]",
+        "models = [\"fastsim\", \"carter\", \"fastsim\"]",
+    );
+    let l = bad(&["traction", path(&case)]);
+    assert!(
+        l.ends_with("invalid models = fastsim,carter,fastsim: expected each of carter, kalker_linear, fastsim, kalker_exact, asperity at most once (fastsim is given twice)"),
+        "{l}"
+    );
+    let case = edited(
+        "rib_friction.toml",
+        "models = [\"hertz\", \"pimp\", \"halfspace\"]",
+        "models = [\"pimp\", \"pimp\"]",
+    );
+    let l = bad(&["friction", path(&case)]);
+    assert!(
+        l.contains(
+            "invalid models = pimp,pimp: expected each of hertz, pimp, halfspace at most once"
+        ),
+        "{l}"
+    );
+    let out = std::env::temp_dir().join(format!("kontakt-input-names-mbs2-{}", std::process::id()));
+    let l = bad(&["mbs", "--backends", "hertz,hertz", "--out", path(&out)]);
+    assert!(
+        l.starts_with("error: invalid --backends = hertz,hertz: expected each of"),
+        "{l}"
+    );
+}
+
+/// `kontakt validate --cells 8` failed at its first pairing although the help said
+/// 8..=4096: the range is what runs, 12..=4096, and 12 runs.
+#[test]
+fn validate_runs_at_its_documented_minimum() {
+    let help = kontakt().args(["validate", "--help"]).output().unwrap();
+    assert!(
+        String::from_utf8(help.stdout)
+            .unwrap()
+            .contains("12..=4096")
+    );
+    for cells in ["8", "11"] {
+        let l = bad(&["validate", "--cells", cells]);
+        assert!(
+            l.starts_with(&format!(
+                "error: invalid --cells = {cells}: expected 12..=4096"
+            )),
+            "{l}"
+        );
+    }
+    let out = std::env::temp_dir().join(format!(
+        "kontakt-input-names-validate-{}",
+        std::process::id()
+    ));
+    let run = kontakt()
+        .args(["validate", "--cells", "12", "--out", path(&out)])
+        .output()
+        .unwrap();
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    std::fs::remove_dir_all(&out).unwrap();
+}
