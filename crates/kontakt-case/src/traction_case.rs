@@ -365,12 +365,22 @@ impl CreepageRange {
             }
         }
         let n = self.points - 1;
-        // min (1 - t) + max t: no difference max - min to overflow (min = -1e308, max =
-        // 1e308 made inf - inf, a NaN creepage nobody typed; found by probing).
+        // Where (max - min) i overflows (min = -1e308, max = 1e308 made inf * 0, a NaN
+        // creepage nobody typed; found by probing), min (1 - t) + max t instead.
+        let span = self.max - self.min;
+        let span = if (span * n as f64).is_finite() {
+            span
+        } else {
+            f64::INFINITY
+        };
         Ok((0..=n)
             .map(|i| {
-                let t = i as f64 / n as f64;
-                self.min * (1.0 - t) + self.max * t
+                if span.is_finite() {
+                    self.min + span * i as f64 / n as f64
+                } else {
+                    let t = i as f64 / n as f64;
+                    self.min * (1.0 - t) + self.max * t
+                }
             })
             .collect())
     }
