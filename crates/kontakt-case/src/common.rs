@@ -239,7 +239,8 @@ fn index_table(
             toml::de::DeValue::Array(a) => {
                 for (i, e) in a.iter().enumerate() {
                     path.push(Seg::Index(i));
-                    out.push((path.clone(), k.span(), e.span()));
+                    // An element has no key of its own: only its value's span is its.
+                    out.push((path.clone(), e.span(), e.span()));
                     if let toml::de::DeValue::Table(t) = e.get_ref() {
                         index_table(t, path, out);
                     }

@@ -318,3 +318,27 @@ fn errors_inside_tagged_tables_name_the_full_path() {
         assert!(!m.contains("enum") && !m.contains("struct"), "{m}");
     }
 }
+
+/// A misspelt key holding an array, in an array of tables, is named by its own path (not
+/// `parameter[1].valus[0].valus`), and an untagged value says what it takes.
+#[test]
+fn keys_in_arrays_of_tables_and_untagged_values() {
+    let dir = root().join("examples");
+    let sweep = |text: &str| Sweep::from_toml_str(text, &dir).unwrap_err().to_string();
+    let base =
+        "base = \"ball_on_flat.toml\"\n[[parameter]]\nkey = \"load.force_n\"\nvalues = [1.0]\n";
+    let m = sweep(&format!(
+        "{base}[[parameter]]\nkey = \"load.force_n\"\nvalus = [1.0]\n"
+    ));
+    assert!(
+        m.contains("line 7: unknown key `parameter[1].valus`; [parameter[1]] takes `key`, "),
+        "{m}"
+    );
+    let m = sweep("base = 5\n");
+    assert!(
+        m.contains("`base`: expected a case file's path (a string) or an inline table"),
+        "{m}"
+    );
+    let m = sweep(&base.replace("key = \"load.force_n\"", "key = 5"));
+    assert!(m.contains("`parameter[0].key`: expected a key path"), "{m}");
+}

@@ -181,14 +181,20 @@ struct SweepSpec {
 }
 
 #[derive(Debug, Deserialize)]
-#[serde(untagged)]
+#[serde(
+    untagged,
+    expecting = "expected a case file's path (a string) or an inline table of the base case"
+)]
 enum BaseSpec {
     Path(String),
     Inline(toml::Table),
 }
 
 #[derive(Debug, Deserialize)]
-#[serde(untagged)]
+#[serde(
+    untagged,
+    expecting = "expected a key path (a string) or an array of key paths"
+)]
 enum KeySpec {
     One(String),
     Many(Vec<String>),
