@@ -386,15 +386,13 @@ fn table_mut<'a>(doc: &'a mut toml::Table, path: &[Seg]) -> Option<&'a mut toml:
     node_mut(doc, path)?.as_table_mut()
 }
 
+/// The values of a document that are not tables, with their paths.
+type Leaves = Vec<(Vec<Seg>, toml::Value)>;
+
 /// Every table path in `doc` at or below `at`, and every other value's path (leaves),
 /// deepest first (then in the document's order).
-fn below(doc: &toml::Table, at: &[Seg]) -> (Vec<Vec<Seg>>, Vec<(Vec<Seg>, toml::Value)>) {
-    fn walk(
-        v: &toml::Value,
-        path: &mut Vec<Seg>,
-        tables: &mut Vec<Vec<Seg>>,
-        leaves: &mut Vec<(Vec<Seg>, toml::Value)>,
-    ) {
+fn below(doc: &toml::Table, at: &[Seg]) -> (Vec<Vec<Seg>>, Leaves) {
+    fn walk(v: &toml::Value, path: &mut Vec<Seg>, tables: &mut Vec<Vec<Seg>>, leaves: &mut Leaves) {
         match v {
             toml::Value::Table(t) => {
                 tables.push(path.clone());
