@@ -429,32 +429,34 @@ fn below(doc: &toml::Table, at: &[Seg]) -> (Vec<Vec<Seg>>, Leaves) {
     (tables, leaves)
 }
 
-/// The path of the unknown key `name` at or below `at`: the one table holding it whose
-/// removal changes the error.
+/// The path of the unknown key `name` at or below `at`: the one table holding it, or the
+/// one whose removal of it changes the error.
 fn find_unknown(
     doc: &toml::Table,
     at: &[Seg],
     name: &str,
     trial: &dyn Fn(&toml::Table) -> Option<String>,
 ) -> Vec<Seg> {
-    let before = trial(doc);
     let (tables, _) = below(doc, at);
     let holding: Vec<_> = tables
         .into_iter()
         .filter(|t| table_mut(&mut doc.clone(), t).is_some_and(|t| t.contains_key(name)))
         .collect();
-    let found = if holding.len() == 1 {
-        holding.into_iter().next()
-    } else {
-        holding.into_iter().find(|t| {
-            let mut d = doc.clone();
-            table_mut(&mut d, t).map(|t| t.remove(name));
-            trial(&d) != before
-        })
-    };
-    let mut path = found.unwrap_or_else(|| at.to_vec());
-    path.push(Seg::Key(name.to_string()));
-    path
+    if let [only] = holding.as_slice() {
+        let mut path = only.clone();
+        path.push(Seg::Key(name.to_string()));
+        return path;
+    }
+    let before = trial(doc);
+    let changed = |after: &Option<String>| after != &before;
+    find_table(
+        doc,
+        at,
+        name,
+        &|t| t.remove(name).is_some(),
+        &changed,
+        trial,
+    )
 }
 
 /// The path of the missing key `name` at or below `at`: the table lacking it where adding
@@ -466,18 +468,31 @@ fn find_missing(
     trial: &dyn Fn(&toml::Table) -> Option<String>,
 ) -> Vec<Seg> {
     let before = trial(doc);
-    let (tables, _) = below(doc, at);
     let refused = format!("unknown field `{name}`");
+    let add = |t: &mut toml::Table| {
+        t.insert(name.to_string(), toml::Value::String(String::new()))
+            .is_none()
+    };
+    let changed = |after: &Option<String>| {
+        after != &before && !after.as_ref().is_some_and(|m| m.starts_with(&refused))
+    };
+    find_table(doc, at, name, &add, &changed, trial)
+}
+
+/// `name`'s path in the first table at or below `at` (deepest first) where `edit` applies
+/// and the error of the edited document passes `changed`; at `at` when there is none.
+fn find_table(
+    doc: &toml::Table,
+    at: &[Seg],
+    name: &str,
+    edit: &dyn Fn(&mut toml::Table) -> bool,
+    changed: &dyn Fn(&Option<String>) -> bool,
+    trial: &dyn Fn(&toml::Table) -> Option<String>,
+) -> Vec<Seg> {
+    let (tables, _) = below(doc, at);
     let found = tables.into_iter().find(|t| {
         let mut d = doc.clone();
-        match table_mut(&mut d, t) {
-            Some(t) if !t.contains_key(name) => {
-                t.insert(name.to_string(), toml::Value::String(String::new()));
-            }
-            _ => return false,
-        }
-        let after = trial(&d);
-        after != before && !after.is_some_and(|m| m.starts_with(&refused))
+        table_mut(&mut d, t).is_some_and(|t| edit(t)) && changed(&trial(&d))
     });
     let mut path = found.unwrap_or_else(|| at.to_vec());
     path.push(Seg::Key(name.to_string()));

@@ -297,6 +297,26 @@ fn errors_inside_tagged_tables_name_the_full_path() {
             "geometry.face",
             "`geometry.face`: integer `5`, expected a table",
         ),
+        // A key valid in one table and unknown in its neighbour; a missing key where
+        // several tables lack it: the one the schema asks for.
+        (
+            "[geometry.bearing]\nradius_mm = 3.0\n[geometry.face]\nshape = \"sphere\"\n\
+             radius_mm = 14.0\n[geometry.rib]\nshape = \"cone\"\n"
+                .to_string(),
+            Some(13),
+            "geometry.bearing.radius_mm",
+            "unknown key `geometry.bearing.radius_mm`; [geometry.bearing] takes `bore_mm`, ",
+        ),
+        (
+            "[geometry.bearing]\nbore_mm = 60.0\noutside_diameter_mm = 110.0\n\
+             roller_half_angle_deg = 3.0\nroller_large_end_radius_mm = 5.5\n\
+             inner_raceway_radius_mm = 35.0\n[geometry.face]\nradius_mm = 14.0\n\
+             [geometry.rib]\nshape = \"cone\"\n"
+                .to_string(),
+            Some(18),
+            "geometry.face.shape",
+            "missing key `geometry.face.shape`",
+        ),
         // Inline tables and dotted keys are tables too.
         (
             "face = { shape = \"torus\", radius_mm = 14.0, eccentricity_mm = \"2\" }\nrib.shape = \"cone\"\n".to_string(),

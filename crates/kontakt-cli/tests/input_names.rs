@@ -4,38 +4,18 @@
 
 #![allow(clippy::unwrap_used)] // tests: a panic is a failure with its message
 
-use assert_cmd::Command;
+mod support;
 use std::path::{Path, PathBuf};
+use support::{bad, example, kontakt, tempdir};
 
-fn kontakt() -> Command {
-    Command::cargo_bin("kontakt").unwrap()
-}
-
-fn examples() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples")
-}
-
-/// Run, expect exit status 2 and one stderr line; return it.
-fn bad(args: &[&str]) -> String {
-    let out = kontakt().args(args).output().unwrap();
-    let err = String::from_utf8(out.stderr).unwrap();
-    assert_eq!(out.status.code(), Some(2), "args {args:?}: {err}");
-    let lines: Vec<_> = err.lines().filter(|l| !l.trim().is_empty()).collect();
-    assert_eq!(lines.len(), 1, "not one line: {err}");
-    lines[0].to_string()
-}
-
-/// A copy of the example `name` with `edit` applied, in a fresh folder.
+/// A copy of the example `name` with `from` replaced by `to`, in a fresh folder.
 fn edited(name: &str, from: &str, to: &str) -> PathBuf {
-    let text = std::fs::read_to_string(examples().join(name)).unwrap();
+    let text = std::fs::read_to_string(example(name)).unwrap();
     assert!(text.contains(from), "{name} has no {from}");
-    let dir = std::env::temp_dir().join(format!(
-        "kontakt-input-names-{}-{}-{}",
-        std::process::id(),
-        name.trim_end_matches(".toml"),
-        to.len()
-    ));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = tempdir(
+        "input-names",
+        &format!("{}-{}", name.trim_end_matches(".toml"), to.len()),
+    );
     let path = dir.join(name);
     std::fs::write(&path, text.replacen(from, to, 1)).unwrap();
     path
@@ -67,25 +47,38 @@ fn a_subnormal_modulus_is_the_modulus() {
     }
 }
 
-/// Every numeric flag of `kontakt hertz`, set to values at and beyond its range, fails
-/// naming a flag of the command (the CLI's counterpart of kontakt-case's tests/keys.rs).
+/// Every numeric flag of `kontakt hertz` (read from its help), set to values at and
+/// beyond its range, fails naming a flag of the command (the CLI's counterpart of
+/// kontakt-case's tests/keys.rs).
 #[test]
 fn hertz_errors_name_a_flag() {
-    let flags = [
-        "--angle-deg",
-        "--e1",
-        "--nu1",
-        "--e2",
-        "--nu2",
-        "--force",
-        "--approach",
-        "--yield-stress",
-    ];
+    let help = kontakt().args(["hertz", "--help"]).output().unwrap();
+    let help = String::from_utf8(help.stdout).unwrap();
+    // `      --e1 <MPA>   Young's modulus ...`: the flags, and those that take a number.
+    let options: Vec<(&str, bool)> = help
+        .lines()
+        .filter_map(|l| l.trim_start().strip_prefix("--"))
+        .map(|l| {
+            let mut words = l.split_whitespace();
+            let flag = words.next().unwrap();
+            let numeric = words.next().is_some_and(|v| v.starts_with('<'))
+                && !l.contains("possible values")
+                && !flag.ends_with("radii");
+            (flag, numeric)
+        })
+        .collect();
+    let flags: Vec<String> = options.iter().map(|(f, _)| format!("--{f}")).collect();
+    let numeric: Vec<&String> = options
+        .iter()
+        .zip(&flags)
+        .filter_map(|((_, n), f)| n.then_some(f))
+        .collect();
+    assert!(numeric.len() >= 8, "{numeric:?}");
     let mut tried = 0;
-    for flag in flags {
+    for flag in numeric {
         for value in ["-1", "0", "nan", "inf", "5e-324", "1e308", "-1e308"] {
             let mut args = HERTZ.to_vec();
-            args.extend([flag, value]);
+            args.extend([flag.as_str(), value]);
             if flag != "--force" && flag != "--approach" {
                 args.extend(["--force", "500"]);
             }
@@ -103,10 +96,7 @@ fn hertz_errors_name_a_flag() {
                 .unwrap();
             let name = named.split([' ', ':']).next().unwrap();
             assert!(
-                name.starts_with("--")
-                    && name
-                        .split('/')
-                        .all(|f| HERTZ.contains(&f) || flags.contains(&f)),
+                name.split('/').all(|f| flags.iter().any(|g| g == f)),
                 "{args:?}: names `{name}`: {err}"
             );
         }
@@ -154,7 +144,7 @@ fn a_roller_count_that_cannot_fit_is_the_count() {
 /// GapSampling::Exact"): it names `--force`.
 #[test]
 fn mbs_names_the_force() {
-    let out = std::env::temp_dir().join(format!("kontakt-input-names-mbs-{}", std::process::id()));
+    let out = tempdir("input-names", "mbs");
     let l = bad(&["mbs", "--force", "1e9", "--out", path(&out)]);
     assert!(
         l.starts_with("error: invalid --force = 1000000000: expected a rib load"),
@@ -211,7 +201,7 @@ fn a_choice_given_twice_is_refused() {
         ),
         "{l}"
     );
-    let out = std::env::temp_dir().join(format!("kontakt-input-names-mbs2-{}", std::process::id()));
+    let out = tempdir("input-names", "mbs2");
     let l = bad(&["mbs", "--backends", "hertz,hertz", "--out", path(&out)]);
     assert!(
         l.starts_with("error: invalid --backends = hertz,hertz: expected each of"),
@@ -238,10 +228,7 @@ fn validate_runs_at_its_documented_minimum() {
             "{l}"
         );
     }
-    let out = std::env::temp_dir().join(format!(
-        "kontakt-input-names-validate-{}",
-        std::process::id()
-    ));
+    let out = tempdir("input-names", "validate");
     let run = kontakt()
         .args(["validate", "--cells", "12", "--out", path(&out)])
         .output()
