@@ -431,7 +431,8 @@ impl RibFrictionModel {
     /// # Errors
     /// Those of [`RollerRib::new`], [`RollerSet::mass`], [`FrictionLaw::check`], of the
     /// lubricant at its temperature, field `roughness` (negative, non-finite or both zero),
-    /// and of the solvers' set-up.
+    /// field `count` (more rollers than fit side by side around the ring,
+    /// `Z > π / asin(r_L / R)`), and of the solvers' set-up.
     pub fn new(
         spec: RollerRibSpec,
         rollers: RollerSet,
