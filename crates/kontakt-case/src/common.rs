@@ -492,7 +492,7 @@ fn find_table(
     let (tables, _) = below(doc, at);
     let found = tables.into_iter().find(|t| {
         let mut d = doc.clone();
-        table_mut(&mut d, t).is_some_and(|t| edit(t)) && changed(&trial(&d))
+        table_mut(&mut d, t).is_some_and(edit) && changed(&trial(&d))
     });
     let mut path = found.unwrap_or_else(|| at.to_vec());
     path.push(Seg::Key(name.to_string()));
