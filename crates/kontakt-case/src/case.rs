@@ -5,7 +5,7 @@ pub use crate::hertz_case::{
     BodySpec, CaseFile, ContactKind, ContactSpec, LoadControl, LoadSpec, Method, YieldSpec,
 };
 
-use crate::common::{case_file_error, parse_toml};
+use crate::common::parse_toml;
 use crate::validity::Checked;
 use kontakt::{Error, Result};
 use serde::Serialize;
@@ -69,11 +69,7 @@ impl Case {
     /// # Errors
     /// [`Error::CaseFile`] with the reader's message for unknown keys or wrong types; an unknown `method` names the valid ones.
     pub fn from_toml_table(table: toml::Table) -> Result<Self> {
-        fn read<T: serde::de::DeserializeOwned>(table: toml::Table) -> Result<T> {
-            table
-                .try_into()
-                .map_err(|e: toml::de::Error| case_file_error("", &e))
-        }
+        use crate::common::parse_table as read;
         let method = match table.get("method") {
             None => "hertz".to_string(),
             Some(toml::Value::String(m)) => m.clone(),

@@ -749,13 +749,9 @@ pub(crate) fn run_friction_case_unchecked(case: &FrictionCase) -> Result<Frictio
             "\"friction\" for this schema",
         ));
     }
-    if case.models.is_empty() {
-        return Err(Error::invalid(
-            "models",
-            "an empty list",
-            "one or more of \"hertz\", \"pimp\", \"halfspace\"",
-        ));
-    }
+    let names: Vec<&str> = case.models.iter().map(PressureModel::as_str).collect();
+    let valid = PressureModel::ALL.map(|m| m.as_str());
+    kontakt::error::choices("models", &names, &valid)?;
     let (pairing, pair) = roller_rib_from_spec(&case.geometry)?.ok_or_else(|| {
         Error::invalid(
             "geometry.kind",

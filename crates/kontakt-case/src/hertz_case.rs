@@ -629,8 +629,14 @@ impl ContactReport {
             .chain((!line_without_length).then_some(("semi_axes_mm[0]", self.semi_axes_mm[0])))
         {
             if !value.is_finite() {
+                // The first-yield results scale with the yield stress alone: name it.
+                let field = if key.contains("yield") {
+                    "yield.stress_mpa"
+                } else {
+                    "case"
+                };
                 return Err(Error::Geometry {
-                    field: "case".into(),
+                    field: field.into(),
                     reason: format!(
                         "the result {key} = {value} is beyond the range of double precision \
                          numbers; the inputs are too extreme to give a meaningful result \

@@ -37,7 +37,7 @@
 //! With `kind = "hertz"` the first axis `x` is the major semi-axis of the contact ellipse;
 //! with `kind = "ellipse"` it is the semi-axis `a` as given.
 
-use crate::common::{MaterialSpec, SCHEMA_VERSION, material, parse_toml};
+use crate::common::{MaterialSpec, SCHEMA_VERSION, in_degrees, material, parse_toml};
 use crate::traction_case::{FrictionSpec, TractionGeometry, TractionLoad};
 use crate::validity::{ContactSize, checked, checked_report};
 use kontakt::tangential::{ContactEllipse, EllipseAxis, Mindlin};
@@ -267,7 +267,10 @@ pub(crate) fn run_mindlin_case_unchecked(case: &MindlinCase) -> Result<MindlinRe
         }
     };
     let contact = Mindlin::new(ellipse, m1, m2, mu)
-        .and_then(|c| c.with_load_direction(t.angle_deg.to_radians()))
+        .and_then(|c| {
+            c.with_load_direction(t.angle_deg.to_radians())
+                .map_err(|e| in_degrees(e, "load_direction", "tangential.angle_deg", t.angle_deg))
+        })
         .map_err(map)?;
     let limit = contact.limit_force();
     let q = t.amplitude_n;

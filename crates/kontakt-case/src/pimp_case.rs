@@ -42,8 +42,8 @@
 //! ```
 
 pub use crate::common::MaterialSpec;
-use crate::common::SCHEMA_VERSION;
 pub(crate) use crate::common::material;
+use crate::common::{SCHEMA_VERSION, in_degrees};
 use crate::validity::{ContactSize, Size, checked_report};
 use kontakt::bearing::{FaceShape, RibShape, RollerRib, RollerRibSpec, TaperedRollerBearing};
 use kontakt::field::NormalSolution;
@@ -283,10 +283,11 @@ impl SurfaceSpec {
         let surface = match s {
             "plane" => Ok(Surface::plane(self.material)),
             "sphere" => Surface::sphere(need(f("radius_mm"), self.radius_mm, s)?, self.material),
-            "cone" => Surface::cone(
-                need(f("half_angle_deg"), self.half_angle_deg, s)?.to_radians(),
-                self.material,
-            ),
+            "cone" => {
+                let deg = need(f("half_angle_deg"), self.half_angle_deg, s)?;
+                Surface::cone(deg.to_radians(), self.material)
+                    .map_err(|e| in_degrees(e, "half_angle", "half_angle_deg", deg))
+            }
             "torus" => Surface::torus(
                 need(f("major_mm"), self.major_mm, s)?,
                 need(f("minor_mm"), self.minor_mm, s)?,

@@ -179,6 +179,15 @@ pub enum TractionModel {
 }
 
 impl TractionModel {
+    /// Every model, in the order of the schema's documentation.
+    pub const ALL: [TractionModel; 5] = [
+        TractionModel::Carter,
+        TractionModel::KalkerLinear,
+        TractionModel::Fastsim,
+        TractionModel::KalkerExact,
+        TractionModel::Asperity,
+    ];
+
     /// The model's name as in the case file and the report.
     pub fn as_str(self) -> &'static str {
         match self {
@@ -358,9 +367,56 @@ impl CreepageRange {
             }
         }
         let n = self.points - 1;
+        // Where (max - min) i overflows (min = -1e308, max = 1e308 made inf * 0, a NaN
+        // creepage nobody typed; found by probing), min (1 - t) + max t instead.
+        let span = self.max - self.min;
+        let span = if (span * n as f64).is_finite() {
+            span
+        } else {
+            f64::INFINITY
+        };
         Ok((0..=n)
-            .map(|i| self.min + (self.max - self.min) * i as f64 / n as f64)
+            .map(|i| {
+                if span.is_finite() {
+                    self.min + span * i as f64 / n as f64
+                } else {
+                    let t = i as f64 / n as f64;
+                    self.min * (1.0 - t) + self.max * t
+                }
+            })
             .collect())
+    }
+}
+
+/// A library error about one point of the creepage range (`creepage = 1e306`, a value the
+/// case does not give), said as the bound of `[creepage]` on its side (`creepage.max` or
+/// `creepage.min`), with the point in the message.
+fn range_point(e: Error, range: &CreepageRange) -> Error {
+    match e {
+        Error::InvalidInput {
+            field,
+            value,
+            expected,
+        } if field == "creepage" || field == "creepage.longitudinal" => {
+            // The bound on the point's side: max for a point of max's sign within it (the
+            // larger bound in magnitude when the point does not parse).
+            let max_side = value
+                .parse::<f64>()
+                .map_or(range.max.abs() >= range.min.abs(), |x| {
+                    x.signum() == range.max.signum() && x.abs() <= range.max.abs()
+                });
+            let (key, bound) = if max_side {
+                ("creepage.max", range.max)
+            } else {
+                ("creepage.min", range.min)
+            };
+            Error::invalid(
+                key,
+                bound,
+                format!("{expected} (the range reaches the creepage {value})"),
+            )
+        }
+        other => other,
     }
 }
 
@@ -400,7 +456,8 @@ impl Default for FastsimSpec {
 pub struct KalkerExactSpec {
     /// Cells across the contact ellipse `[mx, my]` (along the rolling direction, across),
     /// each 8..=1024; default `[32, 32]`. Below 16 the report warns: the creep force may
-    /// then be off by 5 % or more (grid convergence in docs/tangential.md §11).
+    /// then be off by 5 % or more (grid convergence in docs/tangential.md §11); with spin
+    /// below 64 (`KalkerExactOptions::SPIN_ELEMENTS`; docs/rolling.md §6.1).
     pub elements: [usize; 2],
     /// Most Newton iterations of the steady solver per point, >= 1 (default 100); a
     /// point that needs more is reported as not converged.
@@ -688,13 +745,12 @@ pub(crate) fn run_traction_case_with_map_unchecked(
             "\"traction\" for this schema",
         ));
     }
-    if case.models.is_empty() {
-        return Err(Error::invalid(
-            "models",
-            "[]",
-            "at least one of carter, kalker_linear, fastsim, kalker_exact, asperity",
-        ));
-    }
+    let names: Vec<&str> = case.models.iter().map(|m| m.as_str()).collect();
+    kontakt::error::choices(
+        "models",
+        &names,
+        &TractionModel::ALL.map(TractionModel::as_str),
+    )?;
     let m1 = material(&case.body1, "body1")?;
     let m2 = material(&case.body2, "body2")?;
     let mu = case.friction.mu;
@@ -713,7 +769,7 @@ pub(crate) fn run_traction_case_with_map_unchecked(
     };
     let (force, load_key) = case.load.force(length)?;
     let map_common = |e: Error| {
-        e.map_field(|f| match f {
+        range_point(e, &case.creepage).map_field(|f| match f {
             "friction_coefficient" => "friction.mu".into(),
             "normal_force" | "force" | "line_load" => load_key.into(),
             "poisson_ratio" => "body1.nu, body2.nu".into(),
@@ -1040,6 +1096,15 @@ fn exact_curve(
              {KALKER_EXACT_WARN_ELEMENTS} the creep force may be off by 5 % or more (grid \
              convergence: docs/tangential.md section 11); use kalker_exact.elements >= [32, 32] \
              for results"
+        ));
+    }
+    if mx.min(my) >= KALKER_EXACT_WARN_ELEMENTS && options.coarse_for(&creepages) {
+        warnings.push(format!(
+            "kalker_exact: {mx} x {my} cells across the contact with spin; the creep force \
+             converges slowly there (first order; CONTACT's lateral-plus-spin case: 5.9 % low \
+             at 32 cells, 3.0 % at 64, 1.5 % at 128; docs/rolling.md section 6.1): use \
+             kalker_exact.elements >= [{n}, {n}] for results",
+            n = KalkerExactOptions::SPIN_ELEMENTS
         ));
     }
     let not_converged: Vec<usize> = points

@@ -1,11 +1,12 @@
 //! The contact element for multi-body codes (`kontakt::element::ContactElement`), planned
 //! from an element case (`method = "element"`, docs/mbs.md), as the C API does.
 
+use crate::args;
 use crate::errors::{invalid, to_py};
 use kontakt::element::{ContactStatus, ElementResult as Result_};
 use kontakt::geometry::Twist;
 use nalgebra::{Isometry3, Matrix3, Quaternion, Rotation3, Translation3, UnitQuaternion, Vector3};
-use numpy::{AllowTypeChange, PyArray1, PyArrayLike1, PyArrayLike2};
+use numpy::PyArray1;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
@@ -31,20 +32,16 @@ fn pose(v: &Bound<'_, PyAny>, name: &str) -> PyResult<Isometry3<f64>> {
             UnitQuaternion::new_unchecked(Quaternion::new(q[0], q[1], q[2], q[3])),
         ));
     }
-    let m: PyArrayLike2<'_, f64, AllowTypeChange> = v.extract().map_err(|_| {
-        invalid(
-            name,
-            v.get_type()
-                .name()
-                .map_or_else(|_| "?".into(), |n| n.to_string()),
-            "a 4x4 homogeneous matrix or a tuple (translation (3,), quaternion (w, x, y, z))",
-        )
-    })?;
+    let m = args::array(
+        v,
+        name,
+        "a 4x4 homogeneous matrix or a tuple (translation (3,), quaternion (w, x, y, z))",
+    )?;
     let m = m.as_array();
     if m.shape() != [4, 4] {
         return Err(invalid(
             &format!("{name}.shape"),
-            format!("{:?}", m.shape()),
+            args::shape(m.shape()),
             "(4, 4)",
         ));
     }
@@ -69,14 +66,12 @@ fn pose(v: &Bound<'_, PyAny>, name: &str) -> PyResult<Isometry3<f64>> {
 }
 
 fn vector<const N: usize>(v: &Bound<'_, PyAny>, name: &str) -> PyResult<[f64; N]> {
-    let a: PyArrayLike1<'_, f64, AllowTypeChange> = v
-        .extract()
-        .map_err(|_| invalid(name, v, &format!("{N} numbers")))?;
+    let a = args::array(v, name, &format!("{N} numbers"))?;
     let a = a.as_array();
-    if a.len() != N {
+    if a.ndim() != 1 || a.len() != N {
         return Err(invalid(
             &format!("{name}.shape"),
-            format!("{:?}", a.shape()),
+            args::shape(a.shape()),
             &format!("({N},)"),
         ));
     }
@@ -106,21 +101,27 @@ fn twist(v: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<Twist> {
     ))
 }
 
+/// Plan an element from an element case's TOML text.
+fn plan(text: &str) -> PyResult<ContactElement> {
+    kontakt_case::element_from_toml(text)
+        .map(|inner| ContactElement { inner })
+        .map_err(to_py)
+}
+
 #[pymethods]
 impl ContactElement {
     /// Plan an element from an element case as TOML text (`method = "element"`).
     #[staticmethod]
-    fn from_toml(text: &str) -> PyResult<Self> {
-        kontakt_case::element_from_toml(text)
-            .map(|inner| ContactElement { inner })
-            .map_err(to_py)
+    fn from_toml(text: &Bound<'_, PyAny>) -> PyResult<Self> {
+        plan(&args::text(text, "text", "an element case as TOML text")?)
     }
 
     /// Plan an element from an element case file.
     #[staticmethod]
-    fn from_file(path: std::path::PathBuf) -> PyResult<Self> {
+    fn from_file(path: &Bound<'_, PyAny>) -> PyResult<Self> {
+        let path = args::path(path, "path")?;
         let text = kontakt_case::read_case_file(&path).map_err(to_py)?;
-        Self::from_toml(&text)
+        plan(&text)
     }
 
     /// Evaluate at the poses `pose1`, `pose2` (4×4 matrices, or (translation [mm],

@@ -2,15 +2,17 @@
 //! in the vocabulary of ContactMechanics / tamaas (`nb_grid_pts`, `physical_sizes`,
 //! `external_force`, `mean_pressure`, `offset`).
 
+use crate::args;
 use crate::case::Fields;
 use crate::errors::{invalid, to_py_with};
-use crate::hertz::Material;
 use kontakt::gap::{GapMap, MapKind};
 use kontakt::halfspace::Boundary;
 use kontakt::material::ElasticMaterial;
 use kontakt_case::pimp_case::{BemSpec, GeometrySpec, MaterialSpec, PimpCase, PimpLoad};
-use numpy::{AllowTypeChange, IntoPyArray, PyArray1, PyArray2, PyArrayLike2};
+use numpy::{IntoPyArray, PyArray1, PyArray2};
 use pyo3::prelude::*;
+
+const BOUNDARIES: &str = "\"free\" or \"periodic\"";
 
 /// An elastic half-space problem on a uniform grid: `nb_grid_pts = (nx, ny)` cells over
 /// `physical_sizes = (sx, sy)` [mm] (cell size sx/nx by sy/ny), `boundary` "free" (an
@@ -27,15 +29,25 @@ pub struct HalfSpace {
 #[pymethods]
 impl HalfSpace {
     #[new]
-    #[pyo3(signature = (nb_grid_pts, physical_sizes, e_star = None, material1 = None, material2 = None, boundary = "free"))]
+    #[pyo3(
+        signature = (nb_grid_pts, physical_sizes, e_star = None, material1 = None, material2 = None, boundary = None),
+        text_signature = "(nb_grid_pts, physical_sizes, e_star=None, material1=None, material2=None, boundary='free')"
+    )]
     fn new(
-        nb_grid_pts: [usize; 2],
-        physical_sizes: [f64; 2],
-        e_star: Option<f64>,
-        material1: Option<Material>,
-        material2: Option<Material>,
-        boundary: &str,
+        nb_grid_pts: &Bound<'_, PyAny>,
+        physical_sizes: &Bound<'_, PyAny>,
+        e_star: Option<&Bound<'_, PyAny>>,
+        material1: Option<&Bound<'_, PyAny>>,
+        material2: Option<&Bound<'_, PyAny>>,
+        boundary: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
+        let nb_grid_pts = args::sizes::<2>(nb_grid_pts, "nb_grid_pts", "8 <= n <= 4096")?;
+        let physical_sizes =
+            args::reals::<2>(physical_sizes, "physical_sizes", "a finite size > 0 mm")?;
+        let e_star = args::opt_real(e_star, "e_star", "a finite contact modulus > 0 MPa")?;
+        let material1 = args::material(material1, "material1")?;
+        let material2 = args::material(material2, "material2")?;
+        let boundary = args::text_or(boundary, "boundary", BOUNDARIES, "free")?;
         for (i, &n) in nb_grid_pts.iter().enumerate() {
             if !(8..=4096).contains(&n) {
                 return Err(invalid(&format!("nb_grid_pts[{i}]"), n, "8 <= n <= 4096"));
@@ -50,10 +62,10 @@ impl HalfSpace {
                 ));
             }
         }
-        let boundary = match boundary {
+        let boundary = match boundary.as_str() {
             "free" => Boundary::Free,
             "periodic" => Boundary::Periodic,
-            other => return Err(invalid("boundary", other, "\"free\" or \"periodic\"")),
+            other => return Err(invalid("boundary", other, BOUNDARIES)),
         };
         let materials = match (e_star, material1, material2) {
             (Some(e), None, None) => {
@@ -122,30 +134,43 @@ impl HalfSpace {
     /// approach from the gap's zero level). The solver stops at the relative residual
     /// `tolerance` (1e-14..=1e-2) or after `max_iterations`; `threads` FFT threads (all
     /// cores when None). The GIL is released during the solve.
-    #[pyo3(signature = (gap, *, external_force = None, mean_pressure = None, offset = None, values = "gap", tolerance = 1e-8, max_iterations = 1000, threads = None))]
+    #[pyo3(
+        signature = (gap, *, external_force = None, mean_pressure = None, offset = None, values = None, tolerance = None, max_iterations = None, threads = None),
+        text_signature = "($self, gap, *, external_force=None, mean_pressure=None, offset=None, values='gap', tolerance=1e-08, max_iterations=1000, threads=None)"
+    )]
     #[allow(clippy::too_many_arguments)] // the keyword arguments of a Python method
     fn solve(
         &self,
         py: Python<'_>,
-        gap: PyArrayLike2<'_, f64, AllowTypeChange>,
-        external_force: Option<f64>,
-        mean_pressure: Option<f64>,
-        offset: Option<f64>,
-        values: &str,
-        tolerance: f64,
-        max_iterations: usize,
-        threads: Option<usize>,
+        gap: &Bound<'_, PyAny>,
+        external_force: Option<&Bound<'_, PyAny>>,
+        mean_pressure: Option<&Bound<'_, PyAny>>,
+        offset: Option<&Bound<'_, PyAny>>,
+        values: Option<&Bound<'_, PyAny>>,
+        tolerance: Option<&Bound<'_, PyAny>>,
+        max_iterations: Option<&Bound<'_, PyAny>>,
+        threads: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<HalfSpaceResult> {
         let [nx, ny] = self.nb_grid_pts;
+        let shape = format!("({ny}, {nx}), i.e. (ny, nx) for nb_grid_pts = ({nx}, {ny})");
+        let gap = args::array(gap, "gap", &format!("a map of shape {shape} in mm"))?;
         let a = gap.as_array();
         if a.shape() != [ny, nx] {
-            return Err(invalid(
-                "gap.shape",
-                format!("{:?}", a.shape()),
-                &format!("({ny}, {nx}), i.e. (ny, nx) for nb_grid_pts = ({nx}, {ny})"),
-            ));
+            return Err(invalid("gap.shape", args::shape(a.shape()), &shape));
         }
-        let kind = match values {
+        let external_force =
+            args::opt_real(external_force, "external_force", "a finite force > 0 N")?;
+        let mean_pressure =
+            args::opt_real(mean_pressure, "mean_pressure", "a finite pressure > 0 MPa")?;
+        let offset = args::opt_real(offset, "offset", "a finite approach in mm")?;
+        let values = args::text_or(values, "values", "\"gap\" or \"height\"", "gap")?;
+        let tolerance =
+            args::opt_real(tolerance, "tolerance", "1e-14 <= tolerance <= 1e-2")?.unwrap_or(1e-8);
+        let max_iterations =
+            args::opt_size(max_iterations, "max_iterations", "an iteration limit >= 1")?
+                .unwrap_or(1000);
+        let threads = args::opt_size(threads, "threads", &format!("1..={}", kontakt::MAX_THREADS))?;
+        let kind = match values.as_str() {
             "gap" => MapKind::Gap,
             "height" => MapKind::Height,
             other => return Err(invalid("values", other, "\"gap\" or \"height\"")),

@@ -1,5 +1,6 @@
 //! Materials and closed-form Hertz contacts (point and line).
 
+use crate::args;
 use crate::case::json_to_py;
 use crate::errors::{invalid, to_py, to_py_with};
 use kontakt::hertz::line::{LineContact, LineSolution};
@@ -34,7 +35,9 @@ fn material_field(f: &str) -> Option<String> {
 impl Material {
     #[new]
     #[pyo3(signature = (e, nu))]
-    fn new(e: f64, nu: f64) -> PyResult<Self> {
+    fn new(e: &Bound<'_, PyAny>, nu: &Bound<'_, PyAny>) -> PyResult<Self> {
+        let e = args::real(e, "e", "a finite modulus > 0 MPa")?;
+        let nu = args::real(nu, "nu", "-1 < nu <= 0.5")?;
         ElasticMaterial::new(e, nu)
             .map(|inner| Material { inner })
             .map_err(|err| to_py_with(err, material_field))
@@ -68,8 +71,10 @@ impl Material {
 
     /// Contact modulus E* [MPa] of this material against `other`:
     /// 1/E* = (1 - nu1²)/E1 + (1 - nu2²)/E2.
-    fn e_star(&self, other: &Material) -> f64 {
-        effective_modulus(&self.inner, &other.inner)
+    fn e_star(&self, other: &Bound<'_, PyAny>) -> PyResult<f64> {
+        let other = args::material(Some(other), "other")?
+            .ok_or_else(|| args::wrong_type("other", other, "a kontakt.Material"))?;
+        Ok(effective_modulus(&self.inner, &other.inner))
     }
 
     fn __repr__(&self) -> String {
@@ -81,6 +86,11 @@ impl Material {
     }
 }
 
+const FORCE: &str = "a finite force > 0 N";
+const APPROACH: &str = "a finite approach > 0 mm";
+const RADIUS: &str = "a radius in mm (> 0 convex, < 0 concave, inf flat)";
+const CRITERIA: &str = "\"von_mises\" or \"tresca\"";
+
 fn material_or_steel(m: Option<Material>) -> ElasticMaterial {
     m.map_or(ElasticMaterial::STEEL, |m| m.inner)
 }
@@ -89,11 +99,17 @@ fn criterion(name: &str) -> PyResult<YieldCriterion> {
     match name {
         "von_mises" => Ok(YieldCriterion::VonMises),
         "tresca" => Ok(YieldCriterion::Tresca),
-        other => Err(invalid("criterion", other, "\"von_mises\" or \"tresca\"")),
+        other => Err(invalid("criterion", other, CRITERIA)),
     }
 }
 
-fn peaks_dict<'py>(py: Python<'py>, p: &StressPeaks, body: usize) -> PyResult<Bound<'py, PyDict>> {
+/// The peak subsurface stresses of a solved contact (or the library's error) as the dict
+/// both result classes return.
+fn peaks_dict<'py>(
+    py: Python<'py>,
+    peaks: Result<(StressPeaks, usize), kontakt::Error>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let (p, body) = peaks.map_err(to_py)?;
     let d = PyDict::new(py);
     d.set_item("max_shear_stress_mpa", p.max_shear)?;
     d.set_item("max_shear_depth_mm", p.max_shear_depth)?;
@@ -101,6 +117,39 @@ fn peaks_dict<'py>(py: Python<'py>, p: &StressPeaks, body: usize) -> PyResult<Bo
     d.set_item("max_von_mises_depth_mm", p.max_von_mises_depth)?;
     d.set_item("body", body)?;
     Ok(d)
+}
+
+/// A body of a Hertz case: its radii [mm] and material.
+fn body_spec(radii: &[f64], m: ElasticMaterial) -> BodySpec {
+    BodySpec {
+        radii_mm: radii.to_vec(),
+        e_mpa: m.youngs_modulus(),
+        nu: m.poisson_ratio(),
+    }
+}
+
+/// The CLI's JSON record (`kontakt hertz ... --json`) of the Hertz case `contact` between
+/// `bodies` under `load`, with first yield when `yield_stress` [MPa] is given: `to_dict()`
+/// of both result classes, through the case layer's one Hertz report.
+fn hertz_record<'py>(
+    py: Python<'py>,
+    contact: ContactSpec,
+    [body1, body2]: [BodySpec; 2],
+    load: LoadSpec,
+    yield_stress: Option<f64>,
+    criterion: &str,
+) -> PyResult<Bound<'py, PyAny>> {
+    let case = CaseFile {
+        name: None,
+        method: Method::Hertz,
+        contact,
+        body1,
+        body2,
+        load,
+        yield_check: yield_criterion(yield_stress, criterion)?,
+    };
+    let report = kontakt_case::run_case(&case).map_err(to_py)?;
+    json_to_py(py, &report)
 }
 
 /// Evaluate `f` over `x` and `y` broadcast against each other (NumPy rules for two
@@ -115,7 +164,11 @@ fn broadcast2<'py>(
     let shape = broadcast_shape(x.shape(), y.shape()).ok_or_else(|| {
         invalid(
             "x, y",
-            format!("shapes {:?} and {:?}", x.shape(), y.shape()),
+            format!(
+                "shapes {} and {}",
+                args::shape(x.shape()),
+                args::shape(y.shape())
+            ),
             "arrays of shapes that broadcast against each other",
         )
     })?;
@@ -175,14 +228,22 @@ pub struct HertzPoint {
 #[pymethods]
 impl HertzPoint {
     #[new]
-    #[pyo3(signature = (radii1, radii2, material1 = None, material2 = None, angle = 0.0))]
+    #[pyo3(
+        signature = (radii1, radii2, material1 = None, material2 = None, angle = None),
+        text_signature = "(radii1, radii2, material1=None, material2=None, angle=0.0)"
+    )]
     fn new(
-        radii1: [f64; 2],
-        radii2: [f64; 2],
-        material1: Option<Material>,
-        material2: Option<Material>,
-        angle: f64,
+        radii1: &Bound<'_, PyAny>,
+        radii2: &Bound<'_, PyAny>,
+        material1: Option<&Bound<'_, PyAny>>,
+        material2: Option<&Bound<'_, PyAny>>,
+        angle: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
+        let radii1 = args::reals::<2>(radii1, "radii1", RADIUS)?;
+        let radii2 = args::reals::<2>(radii2, "radii2", RADIUS)?;
+        let material1 = args::material(material1, "material1")?;
+        let material2 = args::material(material2, "material2")?;
+        let angle = args::opt_real(angle, "angle", "a finite angle in rad")?.unwrap_or(0.0);
         let g =
             PointGeometry::new(radii1, radii2, angle).map_err(|e| to_py_with(e, point_field))?;
         let inner = HertzPointContact::new(
@@ -214,18 +275,26 @@ impl HertzPoint {
     }
 
     /// Approach [mm] for a normal force `force` [N] (> 0).
-    fn approach_from_force(&self, force: f64) -> PyResult<f64> {
+    fn approach_from_force(&self, force: &Bound<'_, PyAny>) -> PyResult<f64> {
+        let force = args::real(force, "force", FORCE)?;
         self.inner.approach_from_force(force).map_err(to_py)
     }
 
     /// Normal force [N] for an approach `approach` [mm] (> 0).
-    fn force_from_approach(&self, approach: f64) -> PyResult<f64> {
+    fn force_from_approach(&self, approach: &Bound<'_, PyAny>) -> PyResult<f64> {
+        let approach = args::real(approach, "approach", APPROACH)?;
         self.inner.force_from_approach(approach).map_err(to_py)
     }
 
     /// Solve for a normal force `force` [N] or an approach `approach` [mm] (exactly one).
     #[pyo3(signature = (force = None, approach = None))]
-    fn solve(&self, force: Option<f64>, approach: Option<f64>) -> PyResult<HertzPointResult> {
+    fn solve(
+        &self,
+        force: Option<&Bound<'_, PyAny>>,
+        approach: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<HertzPointResult> {
+        let force = args::opt_real(force, "force", FORCE)?;
+        let approach = args::opt_real(approach, "approach", APPROACH)?;
         let (solution, by_approach) = match (force, approach) {
             (Some(f), None) => (self.inner.solve_force(f), false),
             (None, Some(d)) => (self.inner.solve_approach(d), true),
@@ -249,6 +318,56 @@ impl HertzPoint {
     }
 }
 
+/// The methods both solved Hertz contacts share (`p0`, `mean_pressure`, `warnings`,
+/// `subsurface_peaks`, `to_dict`), written once; `$ty` says how it is a Hertz case
+/// (`HertzCase`), and `$($own)*` are its own methods (one `#[pymethods]` block per class).
+macro_rules! hertz_result {
+    ($ty:ident, mean_pressure = $mean_doc:literal, peaks = $peaks_doc:literal, to_dict = $dict_doc:literal, { $($own:tt)* }) => {
+        #[pymethods]
+        impl $ty {
+            /// Maximum (central) pressure p0 [MPa].
+            #[getter]
+            fn p0(&self) -> f64 {
+                self.solution.max_pressure
+            }
+            #[doc = $mean_doc]
+            #[getter]
+            fn mean_pressure(&self) -> f64 {
+                self.solution.mean_pressure
+            }
+            /// Where the result is outside Hertz theory's comfortable range (a contact
+            /// above 0.4 of a body's radius of curvature), as the case reports' `warnings`;
+            /// empty when none applies (at 1 or more `solve` raises `InputError`).
+            #[getter]
+            fn warnings(&self) -> Vec<String> {
+                self.warnings.clone()
+            }
+            #[doc = $peaks_doc]
+            fn subsurface_peaks<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+                peaks_dict(py, self.contact.subsurface_peaks(&self.solution))
+            }
+            #[doc = $dict_doc]
+            #[pyo3(
+                signature = (yield_stress = None, criterion = None),
+                text_signature = "($self, yield_stress=None, criterion='von_mises')"
+            )]
+            fn to_dict<'py>(
+                &self,
+                py: Python<'py>,
+                yield_stress: Option<&Bound<'py, PyAny>>,
+                criterion: Option<&Bound<'py, PyAny>>,
+            ) -> PyResult<Bound<'py, PyAny>> {
+                let yield_stress =
+                    args::opt_real(yield_stress, "yield_stress", "a finite stress > 0 MPa")?;
+                let criterion = args::text_or(criterion, "criterion", CRITERIA, "von_mises")?;
+                let (contact, bodies, load) = self.case();
+                hertz_record(py, contact, bodies, load, yield_stress, &criterion)
+            }
+            $($own)*
+        }
+    };
+}
+
 /// A solved Hertz point contact. Lengths mm, force N, pressure MPa, angle rad.
 #[pyclass(frozen, module = "kontakt._kontakt")]
 pub struct HertzPointResult {
@@ -258,134 +377,32 @@ pub struct HertzPointResult {
     warnings: Vec<String>,
 }
 
-#[pymethods]
 impl HertzPointResult {
-    /// Semi-major axis a [mm].
-    #[getter]
-    fn a(&self) -> f64 {
-        self.solution.semi_axes[0]
-    }
-    /// Semi-minor axis b [mm].
-    #[getter]
-    fn b(&self) -> f64 {
-        self.solution.semi_axes[1]
-    }
-    /// Maximum (central) pressure p0 [MPa].
-    #[getter]
-    fn p0(&self) -> f64 {
-        self.solution.max_pressure
-    }
-    /// Mean pressure F / (pi a b) [MPa].
-    #[getter]
-    fn mean_pressure(&self) -> f64 {
-        self.solution.mean_pressure
-    }
-    /// Normal force F [N].
-    #[getter]
-    fn force(&self) -> f64 {
-        self.solution.force
-    }
-    /// Approach of distant points [mm].
-    #[getter]
-    fn approach(&self) -> f64 {
-        self.solution.approach
-    }
-    /// Contact area pi a b [mm²].
-    #[getter]
-    fn contact_area(&self) -> f64 {
-        self.solution.contact_area
-    }
-    /// Contact stiffness dF/d(approach) [N/mm].
-    #[getter]
-    fn stiffness(&self) -> f64 {
-        self.solution.stiffness
-    }
-    /// Angle from body 1's first principal direction to the major axis [rad].
-    #[getter]
-    fn orientation(&self) -> f64 {
-        self.solution.orientation
-    }
-    /// Where the result is outside Hertz theory's comfortable range (a contact above 0.4
-    /// of a body's radius of curvature), as in the case reports; empty when none applies.
-    #[getter]
-    fn warnings(&self) -> Vec<String> {
-        self.warnings.clone()
-    }
-
-    /// Hertz pressure [MPa] at the points (x, y) [mm] of the contact frame (x along body
-    /// 1's first principal direction); x and y broadcast as in NumPy.
-    fn pressure<'py>(
-        &self,
-        py: Python<'py>,
-        x: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
-        y: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
-    ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
-        let s = self.solution;
-        broadcast2(py, x, y, |x, y| s.pressure_at(x, y))
-    }
-
-    /// Peak subsurface stresses on the load axis (MPa, mm; tension positive, so the
-    /// von Mises and shear peaks are magnitudes) and the body (1 or 2) they belong to.
-    fn subsurface_peaks<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let (p, body) = self
-            .contact
-            .subsurface_peaks(&self.solution)
-            .map_err(to_py)?;
-        peaks_dict(py, &p, body)
-    }
-
-    /// The CLI's JSON record of this contact (`kontakt hertz ... --json`), as a dict; with
-    /// `yield_stress` [MPa] it includes first yield by `criterion`.
-    #[pyo3(signature = (yield_stress = None, criterion = "von_mises"))]
-    fn to_dict<'py>(
-        &self,
-        py: Python<'py>,
-        yield_stress: Option<f64>,
-        criterion: &str,
-    ) -> PyResult<Bound<'py, PyAny>> {
+    /// This contact as a Hertz case: contact, bodies, and the load it was solved for.
+    fn case(&self) -> (ContactSpec, [BodySpec; 2], LoadSpec) {
         let g = self.contact.geometry();
         let [m1, m2] = self.contact.materials();
-        let body = |radii: [f64; 2], m: ElasticMaterial| BodySpec {
-            radii_mm: radii.to_vec(),
-            e_mpa: m.youngs_modulus(),
-            nu: m.poisson_ratio(),
+        let load = if self.by_approach {
+            LoadSpec {
+                approach_mm: Some(self.solution.approach),
+                ..LoadSpec::default()
+            }
+        } else {
+            LoadSpec {
+                force_n: Some(self.solution.force),
+                ..LoadSpec::default()
+            }
         };
-        let case = CaseFile {
-            name: None,
-            method: Method::Hertz,
-            contact: ContactSpec {
-                kind: ContactKind::Point,
-                angle_deg: g.angle().to_degrees(),
-                length_mm: None,
-            },
-            body1: body(g.body1_radii(), m1),
-            body2: body(g.body2_radii(), m2),
-            load: if self.by_approach {
-                LoadSpec {
-                    approach_mm: Some(self.solution.approach),
-                    ..LoadSpec::default()
-                }
-            } else {
-                LoadSpec {
-                    force_n: Some(self.solution.force),
-                    ..LoadSpec::default()
-                }
-            },
-            yield_check: yield_criterion(yield_stress, criterion)?,
+        let contact = ContactSpec {
+            kind: ContactKind::Point,
+            angle_deg: g.angle().to_degrees(),
+            length_mm: None,
         };
-        let report = kontakt_case::run_case(&case).map_err(to_py)?;
-        json_to_py(py, &report)
-    }
-
-    fn __repr__(&self) -> String {
-        format!(
-            "HertzPointResult(force={:?} N, a={:.6e} mm, b={:.6e} mm, p0={:.6} MPa, approach={:.6e} mm)",
-            self.solution.force,
-            self.a(),
-            self.b(),
-            self.p0(),
-            self.approach()
-        )
+        let bodies = [
+            body_spec(&g.body1_radii(), m1),
+            body_spec(&g.body2_radii(), m2),
+        ];
+        (contact, bodies, load)
     }
 }
 
@@ -399,6 +416,77 @@ fn size_verdict(
     let verdict = ContactSize::new(Size::Hertz(size), keys).verdict();
     Ok(verdict.map_err(to_py)?.into_iter().collect())
 }
+
+hertz_result!(
+    HertzPointResult,
+    mean_pressure = "Mean pressure F / (pi a b) [MPa].",
+    peaks = "Peak subsurface stresses on the load axis (MPa, mm; tension positive, so the \
+             von Mises and shear peaks are magnitudes) and the body (1 or 2) they belong to.",
+    to_dict = "The CLI's JSON record of this contact (`kontakt hertz ... --json`), as a \
+               dict; with `yield_stress` [MPa] it includes first yield by `criterion`.",
+    {
+        /// Semi-major axis a [mm].
+        #[getter]
+        fn a(&self) -> f64 {
+            self.solution.semi_axes[0]
+        }
+        /// Semi-minor axis b [mm].
+        #[getter]
+        fn b(&self) -> f64 {
+            self.solution.semi_axes[1]
+        }
+        /// Normal force F [N].
+        #[getter]
+        fn force(&self) -> f64 {
+            self.solution.force
+        }
+        /// Approach of distant points [mm].
+        #[getter]
+        fn approach(&self) -> f64 {
+            self.solution.approach
+        }
+        /// Contact area pi a b [mm²].
+        #[getter]
+        fn contact_area(&self) -> f64 {
+            self.solution.contact_area
+        }
+        /// Contact stiffness dF/d(approach) [N/mm].
+        #[getter]
+        fn stiffness(&self) -> f64 {
+            self.solution.stiffness
+        }
+        /// Angle from body 1's first principal direction to the major axis [rad].
+        #[getter]
+        fn orientation(&self) -> f64 {
+            self.solution.orientation
+        }
+
+        /// Hertz pressure [MPa] at the points (x, y) [mm] of the contact frame (x along body
+        /// 1's first principal direction); x and y broadcast as in NumPy.
+        fn pressure<'py>(
+            &self,
+            py: Python<'py>,
+            x: &Bound<'py, PyAny>,
+            y: &Bound<'py, PyAny>,
+        ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+            let x = args::array(x, "x", "positions in mm")?;
+            let y = args::array(y, "y", "positions in mm")?;
+            let s = self.solution;
+            broadcast2(py, x, y, |x, y| s.pressure_at(x, y))
+        }
+
+        fn __repr__(&self) -> String {
+            format!(
+                "HertzPointResult(force={:?} N, a={:.6e} mm, b={:.6e} mm, p0={:.6} MPa, approach={:.6e} mm)",
+                self.solution.force,
+                self.a(),
+                self.b(),
+                self.p0(),
+                self.approach()
+            )
+        }
+    }
+);
 
 fn yield_criterion(yield_stress: Option<f64>, name: &str) -> PyResult<Option<YieldSpec>> {
     let criterion = criterion(name)?;
@@ -422,12 +510,17 @@ impl HertzLine {
     #[new]
     #[pyo3(signature = (radius1, radius2, material1 = None, material2 = None, length = None))]
     fn new(
-        radius1: f64,
-        radius2: f64,
-        material1: Option<Material>,
-        material2: Option<Material>,
-        length: Option<f64>,
+        radius1: &Bound<'_, PyAny>,
+        radius2: &Bound<'_, PyAny>,
+        material1: Option<&Bound<'_, PyAny>>,
+        material2: Option<&Bound<'_, PyAny>>,
+        length: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
+        let radius1 = args::real(radius1, "radius1", RADIUS)?;
+        let radius2 = args::real(radius2, "radius2", RADIUS)?;
+        let material1 = args::material(material1, "material1")?;
+        let material2 = args::material(material2, "material2")?;
+        let length = args::opt_real(length, "length", "a finite length > 0 mm")?;
         if let Some(l) = length {
             kontakt::error::positive_as("length", l, "a finite length > 0 mm").map_err(to_py)?;
         }
@@ -462,7 +555,13 @@ impl HertzLine {
     /// Solve for a line load `line_load` [N/mm] or a force `force` [N] over the length
     /// (exactly one).
     #[pyo3(signature = (line_load = None, force = None))]
-    fn solve(&self, line_load: Option<f64>, force: Option<f64>) -> PyResult<HertzLineResult> {
+    fn solve(
+        &self,
+        line_load: Option<&Bound<'_, PyAny>>,
+        force: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<HertzLineResult> {
+        let line_load = args::opt_real(line_load, "line_load", "a finite line load > 0 N/mm")?;
+        let force = args::opt_real(force, "force", FORCE)?;
         let (q, by_force) = match (line_load, force, self.length) {
             (Some(q), None, _) => (q, false),
             (None, Some(f), Some(l)) => {
@@ -517,74 +616,11 @@ pub struct HertzLineResult {
     warnings: Vec<String>,
 }
 
-#[pymethods]
 impl HertzLineResult {
-    /// Half-width b of the contact strip [mm].
-    #[getter]
-    fn b(&self) -> f64 {
-        self.solution.half_width
-    }
-    /// Where the result is outside Hertz theory's comfortable range (a half-width above
-    /// 0.4 of a cylinder's radius), as in the case reports; empty when none applies.
-    #[getter]
-    fn warnings(&self) -> Vec<String> {
-        self.warnings.clone()
-    }
-    /// Maximum pressure p0 [MPa].
-    #[getter]
-    fn p0(&self) -> f64 {
-        self.solution.max_pressure
-    }
-    /// Mean pressure P'/(2b) [MPa].
-    #[getter]
-    fn mean_pressure(&self) -> f64 {
-        self.solution.mean_pressure
-    }
-    /// Line load P' [N/mm].
-    #[getter]
-    fn line_load(&self) -> f64 {
-        self.solution.line_load
-    }
-    /// Approach [mm] by Lundberg's formula (None without a length).
-    #[getter]
-    fn approach(&self) -> Option<f64> {
-        self.approach
-    }
-
-    /// Pressure [MPa] at distances `x` [mm] from the centre line (any array shape).
-    fn pressure<'py>(
-        &self,
-        py: Python<'py>,
-        x: PyArrayLikeDyn<'py, f64, AllowTypeChange>,
-    ) -> Bound<'py, PyArrayDyn<f64>> {
-        let s = self.solution;
-        x.as_array().mapv(|x| s.pressure_at(x)).into_pyarray(py)
-    }
-
-    /// Peak subsurface stresses on the load axis (plane strain; MPa, mm) and the body.
-    fn subsurface_peaks<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let (p, body) = self
-            .contact
-            .subsurface_peaks(&self.solution)
-            .map_err(to_py)?;
-        peaks_dict(py, &p, body)
-    }
-
-    /// The CLI's JSON record of this contact, as a dict (first yield with `yield_stress`).
-    #[pyo3(signature = (yield_stress = None, criterion = "von_mises"))]
-    fn to_dict<'py>(
-        &self,
-        py: Python<'py>,
-        yield_stress: Option<f64>,
-        criterion: &str,
-    ) -> PyResult<Bound<'py, PyAny>> {
+    /// This contact as a Hertz case: contact, bodies, and the load it was solved for.
+    fn case(&self) -> (ContactSpec, [BodySpec; 2], LoadSpec) {
         let [m1, m2] = self.contact.materials();
         let [r1, r2] = self.contact.radii();
-        let body = |r: f64, m: ElasticMaterial| BodySpec {
-            radii_mm: vec![r],
-            e_mpa: m.youngs_modulus(),
-            nu: m.poisson_ratio(),
-        };
         let load = match (self.by_force, self.length) {
             (true, Some(l)) => LoadSpec {
                 force_n: Some(self.solution.line_load * l),
@@ -595,29 +631,55 @@ impl HertzLineResult {
                 ..LoadSpec::default()
             },
         };
-        let case = CaseFile {
-            name: None,
-            method: Method::Hertz,
-            contact: ContactSpec {
-                kind: ContactKind::Line,
-                angle_deg: 0.0,
-                length_mm: self.length,
-            },
-            body1: body(r1, m1),
-            body2: body(r2, m2),
-            load,
-            yield_check: yield_criterion(yield_stress, criterion)?,
+        let contact = ContactSpec {
+            kind: ContactKind::Line,
+            angle_deg: 0.0,
+            length_mm: self.length,
         };
-        let report = kontakt_case::run_case(&case).map_err(to_py)?;
-        json_to_py(py, &report)
-    }
-
-    fn __repr__(&self) -> String {
-        format!(
-            "HertzLineResult(line_load={:?} N/mm, b={:.6e} mm, p0={:.6} MPa)",
-            self.solution.line_load,
-            self.b(),
-            self.p0()
-        )
+        (contact, [body_spec(&[r1], m1), body_spec(&[r2], m2)], load)
     }
 }
+
+hertz_result!(
+    HertzLineResult,
+    mean_pressure = "Mean pressure P'/(2b) [MPa].",
+    peaks = "Peak subsurface stresses on the load axis (plane strain; MPa, mm) and the body.",
+    to_dict = "The CLI's JSON record of this contact, as a dict (first yield with `yield_stress`).",
+    {
+        /// Half-width b of the contact strip [mm].
+        #[getter]
+        fn b(&self) -> f64 {
+            self.solution.half_width
+        }
+        /// Line load P' [N/mm].
+        #[getter]
+        fn line_load(&self) -> f64 {
+            self.solution.line_load
+        }
+        /// Approach [mm] by Lundberg's formula (None without a length).
+        #[getter]
+        fn approach(&self) -> Option<f64> {
+            self.approach
+        }
+
+        /// Pressure [MPa] at distances `x` [mm] from the centre line (any array shape).
+        fn pressure<'py>(
+            &self,
+            py: Python<'py>,
+            x: &Bound<'py, PyAny>,
+        ) -> PyResult<Bound<'py, PyArrayDyn<f64>>> {
+            let x = args::array(x, "x", "distances in mm")?;
+            let s = self.solution;
+            Ok(x.as_array().mapv(|x| s.pressure_at(x)).into_pyarray(py))
+        }
+
+        fn __repr__(&self) -> String {
+            format!(
+                "HertzLineResult(line_load={:?} N/mm, b={:.6e} mm, p0={:.6} MPa)",
+                self.solution.line_load,
+                self.b(),
+                self.p0()
+            )
+        }
+    }
+);

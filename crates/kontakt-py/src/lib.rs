@@ -16,6 +16,7 @@
 // code written here contains no `unsafe` block of its own.
 #![allow(unsafe_code)]
 
+mod args;
 mod case;
 mod element;
 mod errors;
@@ -46,6 +47,7 @@ fn _kontakt(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(case::run_toml, m)?)?;
     m.add_function(wrap_pyfunction!(case::run_file, m)?)?;
     m.add_function(wrap_pyfunction!(case::run_case, m)?)?;
+    m.add_function(wrap_pyfunction!(case::to_toml, m)?)?;
     m.add_class::<element::ContactElement>()?;
     m.add_class::<element::ElementResult>()?;
     m.add_class::<sweep::Sweep>()?;

@@ -3,6 +3,7 @@
 //! table are the CLI's (`kontakt sweep`, docs/sweep.md): a sweep started from either side
 //! resumes from the other.
 
+use crate::args;
 use crate::errors::input_error;
 use kontakt_case::sweep::{Fields, OutputFormat};
 use kontakt_case::{Sweep as CaseSweep, SweepError};
@@ -25,22 +26,21 @@ fn sweep_err(e: SweepError) -> PyErr {
 }
 
 /// `sweep` storing `fields` (`None`: the sweep file's choice).
-fn with_fields(sweep: CaseSweep, fields: Option<&str>) -> PyResult<Sweep> {
-    let fields = match fields {
+fn with_fields(sweep: CaseSweep, fields: Option<String>) -> PyResult<Sweep> {
+    let fields = match fields.as_deref() {
         None => return Ok(Sweep { inner: sweep }),
         Some("none") => Fields::None,
         Some("npy") => Fields::Npy,
         Some(other) => {
-            return Err(crate::errors::invalid(
-                "fields",
-                other,
-                "\"none\" or \"npy\"",
-            ));
+            return Err(crate::errors::invalid("fields", other, FIELDS));
         }
     };
     let inner = sweep.with_fields(fields).map_err(sweep_err)?;
     Ok(Sweep { inner })
 }
+
+const FIELDS: &str = "\"none\" or \"npy\"";
+const MAX_CASES: &str = "a case count >= 1";
 
 /// A parameter sweep (docs/sweep.md): a base case and parameters by their case keys, a full
 /// grid or given points, split into chunks of `chunk_size` cases. Units are the case
@@ -57,22 +57,36 @@ impl Sweep {
     /// (`"none"` or `"npy"`) replaces the file's `fields`.
     #[staticmethod]
     #[pyo3(signature = (path, max_cases = None, fields = None))]
-    fn from_file(path: PathBuf, max_cases: Option<u64>, fields: Option<&str>) -> PyResult<Self> {
+    fn from_file(
+        path: &Bound<'_, PyAny>,
+        max_cases: Option<&Bound<'_, PyAny>>,
+        fields: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Self> {
+        let path = args::path(path, "path")?;
+        let max_cases = args::opt_count(max_cases, "max_cases", MAX_CASES)?;
+        let fields = args::opt_text(fields, "fields", FIELDS)?;
         let inner = CaseSweep::from_path_with_limit(&path, max_cases).map_err(sweep_err)?;
         with_fields(inner, fields)
     }
 
     /// A sweep from TOML text; relative paths in it are relative to `base_dir`.
     #[staticmethod]
-    #[pyo3(signature = (text, base_dir = PathBuf::from("."), max_cases = None, fields = None))]
+    #[pyo3(
+        signature = (text, base_dir = None, max_cases = None, fields = None),
+        text_signature = "(text, base_dir='.', max_cases=None, fields=None)"
+    )]
     fn from_toml(
-        text: &str,
-        base_dir: PathBuf,
-        max_cases: Option<u64>,
-        fields: Option<&str>,
+        text: &Bound<'_, PyAny>,
+        base_dir: Option<&Bound<'_, PyAny>>,
+        max_cases: Option<&Bound<'_, PyAny>>,
+        fields: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
+        let text = args::text(text, "text", "a sweep as TOML text")?;
+        let base_dir = args::opt_path(base_dir, "base_dir")?.unwrap_or_else(|| PathBuf::from("."));
+        let max_cases = args::opt_count(max_cases, "max_cases", MAX_CASES)?;
+        let fields = args::opt_text(fields, "fields", FIELDS)?;
         let inner =
-            CaseSweep::from_toml_str_with_limit(text, &base_dir, max_cases).map_err(sweep_err)?;
+            CaseSweep::from_toml_str_with_limit(&text, &base_dir, max_cases).map_err(sweep_err)?;
         with_fields(inner, fields)
     }
 
@@ -106,7 +120,9 @@ impl Sweep {
     }
 
     /// Case indices `[start, stop)` of chunk `index`.
-    fn chunk_range(&self, index: u64) -> PyResult<(u64, u64)> {
+    fn chunk_range(&self, index: &Bound<'_, PyAny>) -> PyResult<(u64, u64)> {
+        let valid = format!("0 <= index < {}", self.inner.chunk_count());
+        let index = args::count(index, "index", &valid)?;
         if index >= self.inner.chunk_count() {
             return Err(crate::errors::invalid(
                 "index",
@@ -120,12 +136,14 @@ impl Sweep {
 
     /// Create `out_dir` for this sweep (its manifest and `chunks/`), or check that the
     /// directory holds this sweep; a directory holding another sweep is an `InputError`.
-    fn prepare(&self, out_dir: PathBuf) -> PyResult<()> {
+    fn prepare(&self, out_dir: &Bound<'_, PyAny>) -> PyResult<()> {
+        let out_dir = args::path(out_dir, "out_dir")?;
         self.inner.prepare(&out_dir).map_err(sweep_err)
     }
 
     /// Indices of the chunks not yet in `out_dir`, ascending.
-    fn missing_chunks(&self, out_dir: PathBuf) -> PyResult<Vec<u64>> {
+    fn missing_chunks(&self, out_dir: &Bound<'_, PyAny>) -> PyResult<Vec<u64>> {
+        let out_dir = args::path(out_dir, "out_dir")?;
         self.inner.missing_chunks(&out_dir).map_err(sweep_err)
     }
 
@@ -137,10 +155,14 @@ impl Sweep {
     fn run_chunk<'py>(
         &self,
         py: Python<'py>,
-        index: u64,
-        out_dir: PathBuf,
-        threads: Option<usize>,
+        index: &Bound<'py, PyAny>,
+        out_dir: &Bound<'py, PyAny>,
+        threads: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyDict>> {
+        let valid = format!("0 <= index < {}", self.inner.chunk_count());
+        let index = args::count(index, "index", &valid)?;
+        let out_dir = args::path(out_dir, "out_dir")?;
+        let threads = args::opt_size(threads, "threads", &format!("1..={}", kontakt::MAX_THREADS))?;
         if let Some(t) = threads.filter(|&t| t == 0 || t > kontakt::MAX_THREADS) {
             return Err(crate::errors::invalid(
                 "threads",
@@ -166,9 +188,19 @@ impl Sweep {
     /// Combine all chunks of `out_dir` into `results.parquet` (`format="parquet"`) or
     /// `results.csv` (`format="csv"`), each case once, in case order; returns the path. A
     /// missing chunk is an `InputError` naming it.
-    #[pyo3(signature = (out_dir, format = "parquet"))]
-    fn combine(&self, py: Python<'_>, out_dir: PathBuf, format: &str) -> PyResult<String> {
-        let format = match format {
+    #[pyo3(
+        signature = (out_dir, format = None),
+        text_signature = "($self, out_dir, format='parquet')"
+    )]
+    fn combine(
+        &self,
+        py: Python<'_>,
+        out_dir: &Bound<'_, PyAny>,
+        format: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<String> {
+        let out_dir = args::path(out_dir, "out_dir")?;
+        let format = args::text_or(format, "format", "\"parquet\" or \"csv\"", "parquet")?;
+        let format = match format.as_str() {
             "parquet" => OutputFormat::Parquet,
             "csv" => OutputFormat::Csv,
             other => {

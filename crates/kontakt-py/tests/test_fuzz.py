@@ -7,10 +7,12 @@ one of the documented exceptions:
 
 - ``kontakt.InputError`` with a non-empty ``field`` and a one-line message;
 - ``kontakt.ConvergenceError`` (a solver that did not converge);
-- ``TypeError``, ``OverflowError`` or ``ValueError`` from the conversion of an argument to
-  its type (a string for a number, an int beyond the parameter's range, a list of the
-  wrong length, a string NumPy cannot read as a float): Python's and NumPy's own errors,
-  naming the argument (``while processing 'force'``).
+- ``TypeError`` for an argument of the wrong Python type (a string, bool or complex for a
+  number, a complex or bool array), one line naming the argument, the value and what is
+  valid (``invalid force = True (bool): expected ...``); a value of the right type that the
+  argument cannot hold (a negative count, an int beyond 64 bits, a list of the wrong
+  length, an array of the wrong shape) is an ``InputError``. Python's bare
+  ``OverflowError`` or ``ValueError`` fails the test (they did not name the argument).
 
 Anything else fails the test: a crash, a Rust panic (``pyo3_runtime.PanicException``, a
 ``BaseException`` that no ``except Exception`` swallows), another exception, NaN or inf in a
@@ -23,6 +25,7 @@ from __future__ import annotations
 import math
 import os
 import pathlib
+import re
 
 import numpy as np
 import pytest
@@ -82,30 +85,36 @@ pair = mostly(st.tuples(radius, radius), st.one_of(st.lists(value, max_size=4), 
 material = st.one_of(st.none(), st.builds(lambda: kt.Material.steel()), mostly(st.none()))
 
 
-def check_error(e: BaseException) -> None:
-    """A documented exception with its field; anything else propagates."""
+CONVERSION = re.compile(r"^invalid (?P<field>[A-Za-z_][\w.\[\], ]*) = .*: expected .+$")
+
+
+def check_error(e: BaseException) -> str | None:
+    """A documented exception with its field, which it returns; anything else propagates."""
     if isinstance(e, kt.InputError):
         assert e.field, f"InputError without a field: {e}"
         assert "\n" not in str(e), f"not one line: {e!r}"
-    elif isinstance(e, kt.ConvergenceError):
+        return e.field
+    if isinstance(e, kt.ConvergenceError):
         assert str(e)
-    elif isinstance(e, (TypeError, OverflowError, ValueError)):
-        # pyo3 names the argument in the message or a note ("while processing 'e'")
-        msg = " ".join([str(e), *getattr(e, "__notes__", [])])
-        assert "'" in msg, f"conversion error without a name: {msg}"
-    else:
-        raise e
+        return None
+    if isinstance(e, TypeError):
+        # the conversion of an argument (crates/kontakt-py/src/args.rs): one line naming
+        # the argument, the value and what is valid (issue 30 item 11)
+        m = CONVERSION.match(str(e))
+        assert m and "\n" not in str(e), f"conversion error not of one line naming the argument: {e!r}"
+        return m["field"]
+    raise e
 
 
 def call(fn, *args, _fields: set[str] | None = None, **kwargs):
-    """``fn(*args, **kwargs)``, or None after a documented exception; an InputError's field
-    must start with one of ``_fields`` (the function's own arguments) when given."""
+    """``fn(*args, **kwargs)``, or None after a documented exception; the field an error
+    names must start with one of ``_fields`` (the function's own arguments) when given."""
     try:
         return fn(*args, **kwargs)
     except Exception as e:  # noqa: BLE001 - a panic is a BaseException and propagates
-        check_error(e)
-        if _fields is not None and isinstance(e, kt.InputError):
-            assert e.field.split(".")[0].split("[")[0] in _fields, f"field {e.field!r}: {e}"
+        field = check_error(e)
+        if _fields is not None and field is not None:
+            assert field.split(".")[0].split("[")[0] in _fields, f"field {field!r}: {e}"
         return None
 
 
@@ -207,6 +216,58 @@ def test_hertz_line(r1, r2, m1, m2, length, load, which, xs, yield_stress):
     finite(call(r.pressure, np.array(xs)))
     finite(call(r.subsurface_peaks))
     finite(call(r.to_dict, yield_stress))
+
+
+_BALL = kt.HertzPoint((6.35, 6.35), (math.inf, math.inf))
+_ROLLER = kt.HertzLine(5.0, math.inf, length=10.0)
+_HS = kt.HalfSpace((16, 16), (2.0, 2.0))
+_GAP = np.zeros((16, 16))
+# every number argument of the API: (call with v in its place, the argument's name)
+NUMBER_ARGS = [
+    (lambda v: kt.Material(v, 0.3), "e"),
+    (lambda v: kt.Material(210_000.0, v), "nu"),
+    (lambda v: kt.HertzPoint((v, 6.0), (math.inf, math.inf)), "radii1[0]"),
+    (lambda v: kt.HertzPoint((6.0, 6.0), (math.inf, v)), "radii2[1]"),
+    (lambda v: kt.HertzPoint((6.0, 6.0), (math.inf, math.inf), angle=v), "angle"),
+    (lambda v: _BALL.solve(force=v), "force"),
+    (lambda v: _BALL.solve(approach=v), "approach"),
+    (lambda v: _BALL.approach_from_force(v), "force"),
+    (lambda v: _BALL.force_from_approach(v), "approach"),
+    (lambda v: _BALL.solve(force=1.0).to_dict(yield_stress=v), "yield_stress"),
+    (lambda v: kt.HertzLine(v, math.inf), "radius1"),
+    (lambda v: kt.HertzLine(5.0, v), "radius2"),
+    (lambda v: kt.HertzLine(5.0, math.inf, length=v), "length"),
+    (lambda v: _ROLLER.solve(line_load=v), "line_load"),
+    (lambda v: _ROLLER.solve(force=v), "force"),
+    (lambda v: kt.HalfSpace((16, 16), (2.0, 2.0), e_star=v), "e_star"),
+    (lambda v: kt.HalfSpace((16, 16), (2.0, v)), "physical_sizes[1]"),
+    (lambda v: kt.HalfSpace((16, v), (2.0, 2.0)), "nb_grid_pts[1]"),
+    (lambda v: _HS.solve(_GAP, external_force=v), "external_force"),
+    (lambda v: _HS.solve(_GAP, mean_pressure=v), "mean_pressure"),
+    (lambda v: _HS.solve(_GAP, offset=v), "offset"),
+    (lambda v: _HS.solve(_GAP, offset=1.0, tolerance=v), "tolerance"),
+    (lambda v: _HS.solve(_GAP, offset=1.0, max_iterations=v), "max_iterations"),
+    (lambda v: _HS.solve(_GAP, offset=1.0, threads=v), "threads"),
+    (lambda v: _BALL.solve(force=1.0).pressure(v, 0.0), "x"),
+    (lambda v: _ROLLER.solve(line_load=1.0).pressure(v), "x"),
+    (lambda v: _HS.solve(np.full((16, 16), v), offset=1.0), "gap"),
+]
+not_a_number = st.one_of(
+    st.sampled_from([True, False, np.bool_(True), 1 + 0j, np.complex128(2.0), "1.0", b"1", object()]),
+    st.complex_numbers(allow_nan=False),
+)
+
+
+@FUZZ
+@given(which=st.integers(0, len(NUMBER_ARGS) - 1), v=not_a_number)
+def test_no_bool_complex_or_string_is_taken_as_a_number(which, v):
+    """Issue 30 item 11: ``force=True`` was 1 N and a complex array lost its imaginary part.
+    A bool, a complex or a string for any number argument (or filling an array) is a
+    ``TypeError`` of one line naming that argument."""
+    fn, name = NUMBER_ARGS[which]
+    with pytest.raises(TypeError) as e:
+        fn(v)
+    assert check_error(e.value) == name, str(e.value)
 
 
 # --- HalfSpace ----------------------------------------------------------------------------

@@ -181,14 +181,20 @@ struct SweepSpec {
 }
 
 #[derive(Debug, Deserialize)]
-#[serde(untagged)]
+#[serde(
+    untagged,
+    expecting = "expected a case file's path (a string) or an inline table of the base case"
+)]
 enum BaseSpec {
     Path(String),
     Inline(toml::Table),
 }
 
 #[derive(Debug, Deserialize)]
-#[serde(untagged)]
+#[serde(
+    untagged,
+    expecting = "expected a key path (a string) or an array of key paths"
+)]
 enum KeySpec {
     One(String),
     Many(Vec<String>),
@@ -465,8 +471,12 @@ impl Sweep {
         base_dir: &Path,
         max_cases: Option<u64>,
     ) -> SweepResult<Self> {
-        let spec: SweepSpec = toml::from_str(text)
-            .map_err(|e| input(format!("sweep file: {}", case_file_error(text, &e))))?;
+        let spec: SweepSpec = toml::from_str(text).map_err(|e| {
+            input(format!(
+                "sweep file: {}",
+                case_file_error::<SweepSpec>(text, &e)
+            ))
+        })?;
         Self::from_spec(spec, base_dir, max_cases)
     }
 
@@ -501,7 +511,7 @@ impl Sweep {
                     input(format!(
                         "invalid base = \"{p}\": {}: {}",
                         path.display(),
-                        case_file_error(&text, &e)
+                        case_file_error::<toml::Table>(&text, &e)
                     ))
                 })?;
                 let parent = path.parent().unwrap_or(Path::new(".")).to_path_buf();

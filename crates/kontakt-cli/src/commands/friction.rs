@@ -14,7 +14,7 @@ use std::path::Path;
 
 /// Run the subcommand.
 pub fn run(args: &FrictionArgs, out: &mut impl Write) -> Result<()> {
-    let (label, text) = crate::commands::read_case_for(&args.case, "friction", "friction")?;
+    let (label, text) = args.input.read("friction")?;
     let case = Case::from_toml_str(&text).with_context(|| label.clone())?;
     let Outcome::Friction(outcome) = case.run(Path::new(".")).with_context(|| label.clone())?
     else {
@@ -36,7 +36,7 @@ pub fn run(args: &FrictionArgs, out: &mut impl Write) -> Result<()> {
     if let Some(path) = &args.density {
         write_density_map(path, &outcome.map, r)?;
     }
-    print_report(out, r, args.json)
+    print_report(out, r, args.input.json)
 }
 
 /// The report as a table per model, or as pretty JSON.

@@ -10,10 +10,10 @@ use std::io::Write;
 
 /// Run the subcommand.
 pub fn run(args: &ImpactArgs, out: &mut impl Write) -> Result<()> {
-    let (label, text) = crate::commands::read_case_for(&args.case, "impact", "impact")?;
+    let (label, text) = args.input.read("impact")?;
     let case = ImpactCase::from_toml_str(&text).with_context(|| label.clone())?;
     let report = run_impact_case(&case).with_context(|| label.clone())?;
-    print_report(out, &report, args.json)
+    print_report(out, &report, args.input.json)
 }
 
 /// The report as text or as pretty JSON.

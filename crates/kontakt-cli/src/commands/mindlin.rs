@@ -12,7 +12,7 @@ use std::path::Path;
 
 /// Run the subcommand.
 pub fn run(args: &MindlinArgs, out: &mut impl Write) -> Result<()> {
-    let (label, text) = crate::commands::read_case_for(&args.case, "mindlin", "mindlin")?;
+    let (label, text) = args.input.read("mindlin")?;
     let case = MindlinCase::from_toml_str(&text).with_context(|| label.clone())?;
     let report = run_mindlin_case(&case).with_context(|| label.clone())?;
     if let Some(path) = &args.csv {
@@ -21,7 +21,7 @@ pub fn run(args: &MindlinArgs, out: &mut impl Write) -> Result<()> {
     if let Some(path) = &args.plot {
         write_plot(path, &report)?;
     }
-    print_report(out, &report, args.json)
+    print_report(out, &report, args.input.json)
 }
 
 /// The report as text or as pretty JSON.

@@ -104,7 +104,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
             output::print_report(out, &report, args.json)
         }
         Command::Solve(args) => {
-            let (label, text) = read_case(&args.case)?;
+            let (label, text) = read_case(&args.input.case)?;
             let case = Case::from_toml_str(&text).with_context(|| label.clone())?;
             let wants_field = args.csv.is_some() || args.map.is_some();
             match case.method() {
@@ -147,17 +147,13 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                 _ => {}
             }
             // Relative paths in the case (gap maps) are relative to the case file.
-            let base = args
-                .case
-                .parent()
-                .filter(|_| args.case.as_os_str() != "-")
-                .unwrap_or(std::path::Path::new("."));
+            let base = args.input.base_dir();
             let name = match &case {
                 Case::Pimp(c) | Case::Bem(c) => c.name.clone(),
                 _ => None,
             };
             match case.run(base).with_context(|| label.clone())? {
-                Outcome::Hertz(report) => output::print_report(out, &report, args.json),
+                Outcome::Hertz(report) => output::print_report(out, &report, args.input.json),
                 Outcome::Pimp(outcome) => {
                     let s = &outcome.solution;
                     if let Some(path) = &args.csv {
@@ -168,7 +164,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                         let what = format!("PimP {mode}");
                         write_case_map(path, &outcome.report, s, name.as_deref(), &what)?;
                     }
-                    pimp::print_report(out, &outcome.report, args.json)
+                    pimp::print_report(out, &outcome.report, args.input.json)
                 }
                 Outcome::Bem(outcome) => {
                     let s = &outcome.solution;
@@ -192,15 +188,17 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                             "coupled half-space",
                         )?;
                     }
-                    pimp::print_report(out, &outcome.report, args.json)
+                    pimp::print_report(out, &outcome.report, args.input.json)
                 }
-                Outcome::Traction(report) => traction::print_report(out, &report, args.json),
+                Outcome::Traction(report) => traction::print_report(out, &report, args.input.json),
                 Outcome::Friction(outcome) => {
-                    friction::print_report(out, &outcome.report, args.json)
+                    friction::print_report(out, &outcome.report, args.input.json)
                 }
-                Outcome::Mindlin(report) => mindlin::print_report(out, &report, args.json),
-                Outcome::Impact(report) => impact::print_report(out, &report, args.json),
-                Outcome::Rough(outcome) => rough::print_report(out, &outcome.report, args.json),
+                Outcome::Mindlin(report) => mindlin::print_report(out, &report, args.input.json),
+                Outcome::Impact(report) => impact::print_report(out, &report, args.input.json),
+                Outcome::Rough(outcome) => {
+                    rough::print_report(out, &outcome.report, args.input.json)
+                }
             }
         }
         Command::Demo(args) => pimp::demo(&args.out, out, args.json),
@@ -272,6 +270,26 @@ fn write_case_map<D>(
         &[],
         &pimp::MapNotes::principal(hertz),
     )
+}
+
+impl crate::cli::CaseInput {
+    /// The case file (or standard input) of a command that runs `method` cases, named
+    /// like the command: its label and text (see [`read_case_for`]).
+    ///
+    /// # Errors
+    /// As [`read_case_for`].
+    pub fn read(&self, method: &str) -> Result<(String, String)> {
+        read_case_for(&self.case, method, method)
+    }
+
+    /// The folder that relative paths in the case (gap and height maps) are resolved
+    /// against: the case file's, the working folder for standard input.
+    pub fn base_dir(&self) -> &std::path::Path {
+        self.case
+            .parent()
+            .filter(|_| self.case.as_os_str() != "-")
+            .unwrap_or(std::path::Path::new("."))
+    }
 }
 
 /// Read a case file (or standard input for `-`): its label for messages and its text.

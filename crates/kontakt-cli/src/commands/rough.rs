@@ -13,13 +13,9 @@ use std::path::Path;
 
 /// Run the subcommand.
 pub fn run(args: &RoughArgs, out: &mut impl Write) -> Result<()> {
-    let (label, text) = crate::commands::read_case_for(&args.case, "rough", "rough")?;
+    let (label, text) = args.input.read("rough")?;
     let case = RoughCase::from_toml_str(&text).with_context(|| label.clone())?;
-    let base = args
-        .case
-        .parent()
-        .filter(|_| args.case.as_os_str() != "-")
-        .unwrap_or(Path::new("."));
+    let base = args.input.base_dir();
     let outcome = run_rough_case(&case, base).with_context(|| label.clone())?;
     let r = &outcome.report;
     if let Some(path) = &args.csv {
@@ -41,7 +37,7 @@ pub fn run(args: &RoughArgs, out: &mut impl Write) -> Result<()> {
         };
         write_map(path, &outcome.grid, &outcome.pressure, &title, &[], &notes)?;
     }
-    print_report(out, r, args.json)
+    print_report(out, r, args.input.json)
 }
 
 /// The report as a table or as pretty JSON.

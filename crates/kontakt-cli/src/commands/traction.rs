@@ -15,7 +15,7 @@ const MAX_ROWS: usize = 21;
 
 /// Run the subcommand.
 pub fn run(args: &TractionArgs, out: &mut impl Write) -> Result<()> {
-    let (label, text) = crate::commands::read_case_for(&args.case, "traction", "traction")?;
+    let (label, text) = args.input.read("traction")?;
     let case = TractionCase::from_toml_str(&text).with_context(|| label.clone())?;
     let map = args
         .map
@@ -31,7 +31,7 @@ pub fn run(args: &TractionArgs, out: &mut impl Write) -> Result<()> {
     if let Some(path) = &args.plot {
         write_plot(path, &report)?;
     }
-    print_report(out, &report, args.json)
+    print_report(out, &report, args.input.json)
 }
 
 /// The report as a table (a subsample of the points) or as pretty JSON.

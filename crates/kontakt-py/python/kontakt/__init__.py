@@ -28,6 +28,7 @@ from ._kontakt import (
     run_case,
     run_file,
     run_toml,
+    to_toml,
 )
 
 __all__ = [
@@ -50,6 +51,7 @@ __all__ = [
     "run_file",
     "run_toml",
     "sweep",
+    "to_toml",
 ]
 
 
@@ -61,7 +63,9 @@ def run(case: Mapping[str, Any] | str | os.PathLike[str]) -> CaseResult:
     ``kontakt solve CASE --json``.
     """
     if isinstance(case, Mapping):
-        return run_case(dict(case))
+        # the dict itself, not a copy: an error names the path from it (a dict that contains
+        # itself is refused at the first repeat, `case.geometry.self`)
+        return run_case(case if isinstance(case, dict) else dict(case))
     if isinstance(case, str) and "\n" in case:
         return run_toml(case)
     return run_file(os.fspath(case))

@@ -13,9 +13,9 @@ from __future__ import annotations
 
 import os
 from pathlib import Path
-from typing import Any, Callable, Sequence
+from typing import Any, Callable, Mapping, Sequence
 
-from ._kontakt import Sweep
+from ._kontakt import Sweep, to_toml
 
 __all__ = ["sweep"]
 
@@ -45,7 +45,7 @@ def _run_chunk(source: _Source, index: int, out: str) -> dict[str, Any]:
 
 
 def sweep(
-    definition: str | os.PathLike[str],
+    definition: Mapping[str, Any] | str | os.PathLike[str],
     out: str | os.PathLike[str],
     *,
     client: Any = None,
@@ -58,9 +58,10 @@ def sweep(
 ) -> str:
     """Run a sweep into the folder ``out`` and return the path of the combined table.
 
-    ``definition`` is a sweep file (TOML, docs/sweep.md) or TOML text (a string with a
-    newline; its relative paths are taken from ``base_dir``). Without ``client`` the missing
-    chunks run here, one after the other, each on all local cores. With a
+    ``definition`` is a sweep file (TOML, docs/sweep.md), TOML text (a string with a
+    newline) or a dict with the keys of a sweep file (as ``kontakt.run`` takes a case dict);
+    the relative paths of text and dicts are taken from ``base_dir``. Without ``client``
+    the missing chunks run here, one after the other, each on all local cores. With a
     ``dask.distributed.Client`` each missing chunk is one task on the cluster (``retries``
     more tries on an error; a task on a worker that dies is rescheduled by Dask); the
     workers need the ``kontakt`` package and access to ``out``. ``on_chunk`` is called with
@@ -74,11 +75,20 @@ def sweep(
     Raises ``kontakt.InputError`` for a bad sweep file or an ``out`` that holds another
     sweep, ``OSError`` when a file cannot be written.
     """
-    text = os.fspath(definition) if isinstance(definition, (str, os.PathLike)) else None
-    if text is not None and "\n" in text:
-        source: _Source = ("toml", text, os.fspath(base_dir), max_cases, fields)
+    source: _Source
+    if isinstance(definition, Mapping):
+        source = ("toml", to_toml(dict(definition)), os.fspath(base_dir), max_cases, fields)
+    elif isinstance(definition, (str, os.PathLike)):
+        text = os.fspath(definition)
+        if "\n" in text:
+            source = ("toml", text, os.fspath(base_dir), max_cases, fields)
+        else:
+            source = ("file", text, max_cases, fields)
     else:
-        source = ("file", os.fspath(definition), max_cases, fields)
+        raise TypeError(
+            f"invalid definition = {definition!r} ({type(definition).__name__}): "
+            "expected a sweep file path, TOML text or a dict"
+        )
     s = _load(source)
     out_dir = os.fspath(Path(out))
     s.prepare(out_dir)
