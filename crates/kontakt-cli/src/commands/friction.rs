@@ -249,7 +249,7 @@ fn field_map<'a>(
 
 /// The map axes' names by their direction in the bearing.
 fn axis_names(m: &FrictionMap) -> (String, String) {
-    use crate::commands::pimp::axis_name;
+    use crate::render::axis_name;
     (axis_name(m.axes[0]), axis_name(m.axes[1]))
 }
 
@@ -285,7 +285,7 @@ fn write_sliding_map(path: &Path, m: &FrictionMap, r: &FrictionReport) -> Result
         m.speed_rpm
     );
     let (arrows, label) = sliding_arrows(m);
-    let max = crate::commands::pimp::max_label(&m.field.pressure);
+    let max = crate::render::max_label(&m.field.pressure);
     let axes = axis_names(m);
     kontakt_plot::field_map_with_arrows(
         path,
@@ -366,7 +366,7 @@ pub struct DemoSummary {
 pub fn demo_study(
     out_dir: &Path,
     md: &mut String,
-    written: &mut crate::commands::pimp::Written,
+    written: &mut crate::render::Written,
 ) -> Result<Vec<DemoSummary>> {
     use kontakt_case::friction_case::{FrictionCase, run_friction_case};
     let base: FrictionCase =
@@ -452,7 +452,7 @@ pub fn demo_study(
     written.tables.push("friction.csv".into());
     let mut plot =
         |file: &str, title: &str, y_label: &str, curves: &[(String, Vec<(f64, f64)>)]| {
-            crate::commands::pimp::pairing_plot(
+            crate::render::pairing_plot(
                 &out_dir.join(file),
                 title,
                 "inner ring speed [r/min] (log scale)",

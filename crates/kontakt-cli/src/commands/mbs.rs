@@ -62,7 +62,7 @@ pub fn run(args: &MbsArgs, out: &mut impl Write) -> Result<()> {
                 })
                 .collect()
         };
-    let plot = crate::commands::pimp::pairing_plot;
+    let plot = crate::render::pairing_plot;
     let dir = &args.out;
     plot(
         &dir.join("mbs_load.png"),

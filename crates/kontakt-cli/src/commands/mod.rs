@@ -20,10 +20,7 @@ pub mod traction;
 pub mod validate;
 use std::io::Write;
 
-/// Bad input detected by the CLI itself (unreadable file).
-#[derive(Debug, thiserror::Error)]
-#[error("{0}")]
-pub struct InputError(pub String);
+pub use crate::error::{InputError, cannot_write};
 
 /// A progress indicator on standard error, shown only when standard error is a terminal
 /// and the output is not JSON (`quiet`): a bar of `len` steps, or a spinner for `None`.
@@ -42,16 +39,6 @@ pub fn progress(len: Option<u64>, template: &str, quiet: bool) -> Option<indicat
         bar.enable_steady_tick(std::time::Duration::from_millis(120));
     }
     Some(bar)
-}
-
-/// An output file or folder that cannot be written: a runtime failure (exit status 1),
-/// whichever flag named it (`--csv`, `--map`, `--plot`, `--out`).
-pub fn cannot_write(
-    what: &str,
-    path: &std::path::Path,
-    e: impl std::fmt::Display,
-) -> anyhow::Error {
-    anyhow::anyhow!("cannot {what} {}: {e}", path.display())
 }
 
 pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
@@ -222,13 +209,13 @@ fn write_case_map<D>(
         report.force_n,
     );
     let hertz = report.hertz.as_ref().map(|h| h.semi_axes_mm);
-    pimp::write_map(
+    crate::render::write_map(
         path,
         &s.grid,
         &s.pressure,
         &title,
         &[],
-        &pimp::MapNotes::principal(hertz),
+        &crate::render::MapNotes::principal(hertz),
     )
 }
 

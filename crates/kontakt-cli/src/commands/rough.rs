@@ -5,7 +5,7 @@
 
 use crate::cli::RoughArgs;
 use crate::commands::cannot_write;
-use crate::commands::pimp::{MapNotes, write_map};
+use crate::render::{MapNotes, write_map};
 use anyhow::{Context, Result};
 use kontakt_case::rough_case::{RoughCase, RoughReport, run_rough_case};
 use kontakt_plot::{LinePlot, LineStyle, PALETTE, Series};
