@@ -111,9 +111,14 @@ pub fn print_report(out: &mut impl Write, r: &FrictionReport, json: bool) -> Res
             row.coefficient,
             row.power_w,
             row.bearing_power_w,
-            row.bearing_torque_nmm
+            row.bearing_drag_torque_nmm
         )?;
     }
+    writeln!(
+        out,
+        "\n  M: the rib friction's share of the bearing's drag torque, Z·P_1/|ω_i − ω_o| \
+         (bearing_drag_torque_nmm; docs/friction.md §5.2)"
+    )?;
     if !r.model_difference.is_empty() {
         writeln!(out, "\n  rib torque relative to Hertz:")?;
         let models: Vec<&str> = {
@@ -179,7 +184,7 @@ fn write_curves(path: &Path, r: &FrictionReport, curve: Curve) -> Result<()> {
                 .filter(|row| row.model == *m)
                 .map(|row| {
                     let y = match curve {
-                        Curve::Torque => row.bearing_torque_nmm,
+                        Curve::Torque => row.bearing_drag_torque_nmm,
                         Curve::Coefficient => row.coefficient,
                     };
                     (row.speed_rpm, y)
@@ -412,7 +417,7 @@ pub fn demo_study(
                 .map(|x| (x.speed_rpm, f(x)))
                 .collect::<Vec<_>>()
         };
-        torque_curves.push((name.to_string(), of("pimp", &|x| x.bearing_torque_nmm)));
+        torque_curves.push((name.to_string(), of("pimp", &|x| x.bearing_drag_torque_nmm)));
         mu_curves.push((name.to_string(), of("pimp", &|x| x.coefficient)));
         ratio_curves.push((
             name.to_string(),
@@ -432,7 +437,7 @@ pub fn demo_study(
             r.rows
                 .iter()
                 .filter(|x| x.model == m)
-                .map(|x| x.bearing_torque_nmm)
+                .map(|x| x.bearing_drag_torque_nmm)
                 .collect()
         });
         summary.push(DemoSummary {

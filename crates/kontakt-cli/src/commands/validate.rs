@@ -1,8 +1,8 @@
 //! `kontakt validate`: PimP against the coupled half-space solver for the roller-end/rib
 //! pairings of Wirsching et al. (2020) (its Figures 7-10 with the half-space solver in the place of FEM).
 
-use crate::render::{MapNotes, write_map};
 use crate::commands::{cannot_write, progress};
+use crate::render::{MapNotes, write_map};
 use anyhow::{Context, Result};
 use kontakt::bearing::validation::{PairingStudy, ValidationRow, validate_pairing};
 use kontakt::bearing::{STUDY_FORCES, TABLE1};

@@ -1,3 +1,6 @@
+//! Friction cases: the speeds of a range are exact (issue 30, item 16), and the maps lie
+//! in the bearing frame whichever pressure model drew them.
+//!
 //! The maps of a friction case (`FrictionOutcome::map`) lie in the bearing frame whichever
 //! pressure model drew them (issue 30, item 1): the Hertz field used to be sampled on a grid
 //! of the contact frame while its axes were named as the gap's principal frame, so the
@@ -15,7 +18,7 @@
 
 use kontakt::bearing::PressureModel;
 use kontakt_case::Case;
-use kontakt_case::friction_case::{FrictionCase, FrictionMap, run_friction_case};
+use kontakt_case::friction_case::{FrictionCase, FrictionMap, SpeedSpec, run_friction_case};
 
 fn map_of(model: PressureModel) -> FrictionMap {
     let text = include_str!("../../../examples/rib_friction.toml");
@@ -103,4 +106,34 @@ fn the_three_models_draw_their_maps_in_the_same_orientation() {
     assert_eq!(maps[0].axes, maps[1].axes);
     assert_eq!(maps[0].field.orientation, maps[1].field.orientation);
     assert_eq!(maps[0].field.orientation, maps[2].field.orientation);
+}
+
+/// A linear range's speeds are exact multiples of its step, its ends as given, and the
+/// report's `speed_rpm` is the case's speed (not converted back from rad/s).
+#[test]
+fn speeds_of_a_range_and_in_the_rows_are_exact() {
+    let linear: SpeedSpec =
+        toml::from_str("min_rpm = 100.0\nmax_rpm = 3000.0\npoints = 30\nspacing = \"linear\"")
+            .unwrap();
+    let speeds = linear.speeds().unwrap();
+    let want: Vec<f64> = (0..30).map(|i| 100.0 + 100.0 * f64::from(i)).collect();
+    // (lo + (hi - lo) * (i / (n - 1)) gave 1799.9999999999998 for 1800)
+    assert_eq!(speeds, want);
+    let log: SpeedSpec = toml::from_str("min_rpm = 50.0\nmax_rpm = 6000.0\npoints = 7").unwrap();
+    let speeds = log.speeds().unwrap();
+    assert_eq!((speeds[0], speeds[6]), (50.0, 6000.0));
+    let one: SpeedSpec = toml::from_str("rpm = 1500.0").unwrap();
+    assert_eq!(one.speeds().unwrap(), [1500.0]);
+
+    let text = include_str!("../../../examples/rib_friction.toml");
+    let Case::Friction(case) = Case::from_toml_str(text).unwrap() else {
+        panic!("not a friction case")
+    };
+    let mut case: FrictionCase = *case;
+    case.models = vec![PressureModel::Hertz];
+    case.speed = toml::from_str("rpm = [1500.0, 2100.0]").unwrap();
+    let report = run_friction_case(&case).unwrap().report;
+    let got: Vec<f64> = report.rows.iter().map(|r| r.speed_rpm).collect();
+    // 1500 r/min through rad/s and back is 1500.0000000000002
+    assert_eq!(got, [1500.0, 2100.0]);
 }
