@@ -36,6 +36,12 @@ pub struct MapNotes {
     pub axes: (String, String),
     /// Hertz semi-axes, if the ellipse is to be drawn.
     pub hertz_semi_axes_mm: Option<[f64; 2]>,
+    /// The top of the colour scale \[MPa\] shared with other maps (`None`: this map's
+    /// maximum).
+    pub color_max: Option<f64>,
+    /// The stretch of the short axis shared with other maps of the same contact (`None`:
+    /// the map's own, see [`kontakt_plot::map_stretch`]).
+    pub stretch: Option<f64>,
 }
 
 impl MapNotes {
@@ -44,6 +50,28 @@ impl MapNotes {
         MapNotes {
             axes: (axis_name(axes[0]), axis_name(axes[1])),
             hertz_semi_axes_mm,
+            color_max: None,
+            stretch: None,
+        }
+    }
+
+    /// Axes named as `x`, `y` in mm, no ellipse (a rough surface's periodic cell).
+    pub fn plain() -> Self {
+        MapNotes {
+            axes: ("x [mm]".into(), "y [mm]".into()),
+            hertz_semi_axes_mm: None,
+            color_max: None,
+            stretch: None,
+        }
+    }
+
+    /// The same notes with a colour scale shared with other maps (top `color_max` MPa) and
+    /// the short axis stretched `stretch` times, as on the other maps of the contact.
+    pub fn shared(self, color_max: Option<f64>, stretch: Option<f64>) -> Self {
+        MapNotes {
+            color_max,
+            stretch,
+            ..self
         }
     }
 
@@ -61,6 +89,8 @@ impl MapNotes {
         MapNotes {
             axes,
             hertz_semi_axes_mm,
+            color_max: None,
+            stretch: None,
         }
     }
 }
@@ -68,23 +98,45 @@ impl MapNotes {
 /// The legend entry of the maximum-pressure marker.
 pub fn max_label(pressure: &[f64]) -> String {
     let max = pressure.iter().copied().fold(0.0f64, f64::max);
-    format!("p_max = {max:.0} MPa")
+    format!("maximum pressure {max:.0} MPa")
 }
 
-/// Draw a pressure map with the contact outline, optional overlays, the Hertz ellipse at
-/// the contact point and the maximum marked, its axes named as `notes` says.
-pub fn write_map(
-    path: &Path,
+/// The unit of a power density \[W/mm²\] whose largest value is `max`: the factor to
+/// multiply by and the name, chosen so that the maximum reads between 1 and 1000 (34.5
+/// W/mm², not 34457 mW/mm²).
+pub fn power_density_unit(max: f64) -> (f64, &'static str) {
+    if max >= 1.0 {
+        (1.0, "W/mm²")
+    } else if max >= 1e-3 {
+        (1e3, "mW/mm²")
+    } else {
+        (1e6, "µW/mm²")
+    }
+}
+
+/// The stretch of the short axis that a pressure map of `pressure` on `grid` with the Hertz
+/// ellipse `hertz_semi_axes_mm` gets by itself: the demo and `kontakt validate` draw every
+/// map of a pairing with the factor of its PimP-corrected field at 400 N, so that the maps
+/// of one pairing compare.
+pub fn map_stretch(grid: &Grid2, pressure: &[f64], hertz_semi_axes_mm: Option<[f64; 2]>) -> f64 {
+    let notes = MapNotes {
+        hertz_semi_axes_mm,
+        ..MapNotes::plain()
+    };
+    kontakt_plot::map_stretch(&pressure_map(grid, pressure, "", &[], &notes, ""))
+}
+
+/// The [`FieldMap`] of a pressure map (see [`write_map`]).
+fn pressure_map<'a>(
     grid: &Grid2,
-    pressure: &[f64],
-    title: &str,
-    overlays: &[kontakt_plot::Overlay<'_>],
-    notes: &MapNotes,
-) -> Result<()> {
-    kontakt_plot::Format::from_path(path).map_err(|e| InputError(e.to_string()))?;
+    pressure: &'a [f64],
+    title: &'a str,
+    overlays: &'a [kontakt_plot::Overlay<'a>],
+    notes: &'a MapNotes,
+    max: &'a str,
+) -> FieldMap<'a> {
     let g = grid;
-    let max = max_label(pressure);
-    let map = FieldMap {
+    FieldMap {
         nx: g.nx(),
         ny: g.ny(),
         x_min: g.x(0) - 0.5 * g.dx(),
@@ -107,8 +159,25 @@ pub fn write_map(
                 angle: 0.0,
                 color: HERTZ_COLOR,
             }),
-        max_marker: Some(&max),
-    };
+        max_marker: (!max.is_empty()).then_some(max),
+        color_max: notes.color_max,
+        stretch: notes.stretch,
+    }
+}
+
+/// Draw a pressure map with the contact outline, optional overlays, the Hertz ellipse at
+/// the contact point and the maximum marked, its axes named as `notes` says.
+pub fn write_map(
+    path: &Path,
+    grid: &Grid2,
+    pressure: &[f64],
+    title: &str,
+    overlays: &[kontakt_plot::Overlay<'_>],
+    notes: &MapNotes,
+) -> Result<()> {
+    kontakt_plot::Format::from_path(path).map_err(|e| InputError(e.to_string()))?;
+    let max = max_label(pressure);
+    let map = pressure_map(grid, pressure, title, overlays, notes, &max);
     kontakt_plot::field_map(path, &map, (900, 640))
         .with_context(|| format!("drawing {}", path.display()))
 }
@@ -117,7 +186,8 @@ pub fn write_map(
 /// outline and the overlays' red and orange).
 pub const HERTZ_COLOR: (u8, u8, u8) = (220, 0, 220);
 
-/// One curve per pairing (solid and dashed in turn, the palette's colours) on one plot.
+/// One curve per pairing (solid and dashed in turn, the palette's colours) on one plot;
+/// with `y_from_zero` the y axis starts at 0.
 pub fn pairing_plot<S: AsRef<str>>(
     path: &Path,
     title: &str,
@@ -125,6 +195,7 @@ pub fn pairing_plot<S: AsRef<str>>(
     y_label: &str,
     curves: &[(S, Vec<(f64, f64)>)],
     x_log: bool,
+    y_from_zero: bool,
 ) -> Result<()> {
     let series: Vec<Series> = curves
         .iter()
@@ -148,6 +219,7 @@ pub fn pairing_plot<S: AsRef<str>>(
             y_label,
             series: &series,
             x_log,
+            y_from_zero,
         },
         (900, 600),
     )
@@ -187,6 +259,7 @@ impl Written {
 
 #[cfg(test)]
 mod tests {
+    #![allow(clippy::unwrap_used)] // tests: a panic is a failure with its message
     use super::axis_name;
 
     #[test]
@@ -203,5 +276,45 @@ mod tests {
         );
         let (s, c) = 45f64.to_radians().sin_cos();
         assert_eq!(axis_name([c, s, 0.0]), "45° from circumferential [mm]");
+    }
+
+    /// Issue 30, item 18: a roller/rib case's map (`kontakt solve --map`; a built-in pairing
+    /// or a custom face and rib, which build the same gap) names its axes on the rib, as the
+    /// demo's maps do, not by the Hertz ellipse's axes.
+    #[test]
+    fn a_roller_rib_case_map_names_its_axes_on_the_rib() {
+        let case = kontakt_case::Case::from_toml_str(include_str!(
+            "../../../examples/roller_rib_torus_torus.toml"
+        ))
+        .unwrap();
+        let kontakt_case::Case::Pimp(c) = case else {
+            panic!("not a pimp case")
+        };
+        let axes = kontakt_case::pimp_case::bearing_axes(&c.geometry)
+            .unwrap()
+            .unwrap();
+        let notes = super::MapNotes::in_bearing(axes, None);
+        assert_eq!(notes.axes.0, "along the rib (circumferential) [mm]");
+        assert!(
+            notes.axes.1.starts_with("across the rib"),
+            "{}",
+            notes.axes.1
+        );
+        // and the demo's map of the same pairing has the same axes
+        let study = kontakt::bearing::demo_study(&[250.0]).unwrap();
+        let demo = study
+            .maps
+            .iter()
+            .find(|m| m.pairing == "torus-torus-14")
+            .unwrap();
+        assert_eq!(demo.axes, axes);
+    }
+
+    #[test]
+    fn power_densities_read_between_1_and_1000() {
+        use super::power_density_unit as unit;
+        assert_eq!(unit(34.457), (1.0, "W/mm²"));
+        assert_eq!(unit(0.5), (1e3, "mW/mm²"));
+        assert_eq!(unit(2e-4), (1e6, "µW/mm²"));
     }
 }

@@ -195,16 +195,22 @@ fn write_curves(path: &Path, r: &FrictionReport, curve: Curve) -> Result<()> {
     let series: Vec<Series> = models
         .iter()
         .enumerate()
-        .map(|(i, m)| Series {
-            label: m,
-            points: &points[i],
-            color: PALETTE[i % PALETTE.len()],
-            style: LineStyle::Solid,
+        .map(|(i, m)| {
+            let (color, style) = model_style(m);
+            Series {
+                label: m,
+                points: &points[i],
+                color,
+                style,
+            }
         })
         .collect();
     let (what, y_label) = match curve {
-        Curve::Torque => ("rib friction torque", "rib torque of the bearing [N·mm]"),
-        Curve::Coefficient => ("friction coefficient", "μ = |Fₜ| / Q_f [-]"),
+        Curve::Torque => (
+            "rib friction torque",
+            "rib drag torque of the bearing [N·mm]",
+        ),
+        Curve::Coefficient => ("friction coefficient", COEFFICIENT_LABEL),
     };
     let title = format!(
         "{}: {what}, Fₐ = {} N",
@@ -219,10 +225,26 @@ fn write_curves(path: &Path, r: &FrictionReport, curve: Curve) -> Result<()> {
             y_label,
             series: &series,
             x_log: true,
+            y_from_zero: true,
         },
         (900, 600),
     )
     .with_context(|| format!("drawing {}", path.display()))
+}
+
+/// The y label of the friction coefficient (plain words: no `Q_f` with a literal
+/// underscore).
+const COEFFICIENT_LABEL: &str = "μ = friction force / rib load [-]";
+
+/// Colour and line style of a pressure model's curve, the same on every plot; the styles
+/// differ so that curves that lie on each other (the models agree to 0.03 % on a Hertzian
+/// pairing) stay visible: a solid line, dashes over it and dots at the speeds.
+fn model_style(model: &str) -> ((u8, u8, u8), LineStyle) {
+    match model {
+        "hertz" => (PALETTE[0], LineStyle::Solid),
+        "pimp" => (PALETTE[1], LineStyle::Dashed),
+        _ => (PALETTE[2], LineStyle::Markers),
+    }
 }
 
 fn field_map<'a>(
@@ -249,6 +271,8 @@ fn field_map<'a>(
         overlays: &[],
         ellipse: None,
         max_marker: Some(max_marker),
+        color_max: None,
+        stretch: None,
     }
 }
 
@@ -268,16 +292,30 @@ fn write_density_map(path: &Path, m: &FrictionMap, r: &FrictionReport) -> Result
         m.speed_rpm,
         m.result.power
     );
-    let values: Vec<f64> = m.power_density.iter().map(|d| d * 1e3).collect();
-    let max = values.iter().copied().fold(0.0f64, f64::max);
-    let max = format!("maximum {max:.0} mW/mm²");
+    let max = m.power_density.iter().copied().fold(0.0f64, f64::max);
+    let (factor, unit) = crate::render::power_density_unit(max);
+    let values: Vec<f64> = m.power_density.iter().map(|d| d * factor).collect();
+    let max = format!("maximum {} {unit}", three_digits(max * factor));
+    let label = format!("shear stress × sliding speed [{unit}]");
     let axes = axis_names(m);
     kontakt_plot::field_map(
         path,
-        &field_map(m, &values, &title, "τ · v_s [mW/mm²]", (&axes, &max)),
+        &field_map(m, &values, &title, &label, (&axes, &max)),
         (900, 640),
     )
     .with_context(|| format!("drawing {}", path.display()))
+}
+
+/// `x` with three significant digits (34.5, 345, 3.45).
+fn three_digits(x: f64) -> String {
+    let decimals = if x >= 100.0 {
+        0
+    } else if x >= 10.0 {
+        1
+    } else {
+        2
+    };
+    format!("{x:.decimals$}")
 }
 
 /// The sliding velocity as arrows over the pressure map.
@@ -455,37 +493,44 @@ pub fn demo_study(
     }
     w.flush()?;
     written.tables.push("friction.csv".into());
-    let mut plot =
-        |file: &str, title: &str, y_label: &str, curves: &[(String, Vec<(f64, f64)>)]| {
-            crate::render::pairing_plot(
-                &out_dir.join(file),
-                title,
-                "inner ring speed [r/min] (log scale)",
-                y_label,
-                curves,
-                true,
-            )?;
-            written.plots.push(file.to_string());
-            Ok::<(), anyhow::Error>(())
-        };
+    let mut plot = |file: &str,
+                    title: &str,
+                    y_label: &str,
+                    curves: &[(String, Vec<(f64, f64)>)],
+                    from_zero: bool| {
+        crate::render::pairing_plot(
+            &out_dir.join(file),
+            title,
+            "inner ring speed [r/min] (log scale)",
+            y_label,
+            curves,
+            true,
+            from_zero,
+        )?;
+        written.plots.push(file.to_string());
+        Ok::<(), anyhow::Error>(())
+    };
     let fa = base.load.axial_n;
     plot(
         "friction_torque.png",
         &format!("Rib friction torque of the bearing, PimP, Fₐ = {fa} N"),
-        "rib torque [N·mm]",
+        "rib drag torque [N·mm]",
         &torque_curves,
+        true,
     )?;
     plot(
         "friction_coefficient.png",
         &format!("Rib friction coefficient (Stribeck), PimP, Fₐ = {fa} N"),
-        "μ = |Fₜ| / Q_f [-]",
+        COEFFICIENT_LABEL,
         &mu_curves,
+        true,
     )?;
     plot(
         "friction_model_ratio.png",
         "Rib torque, PimP over Hertz",
         "torque ratio PimP / Hertz [-]",
         &ratio_curves,
+        false,
     )?;
     let law = last.map(|r| r.law);
     md.push_str(&format!(
@@ -513,7 +558,7 @@ pub fn demo_study(
     }
     md.push_str(&format!(
         "\nSliding velocity of the roller on the rib over the PimP pressure of {map_pairing} \
-         (a curved zone) and the friction-power density tau · v_s:\n\n\
+         (a curved zone) and the friction-power density (shear stress times sliding speed):\n\n\
          ![sliding velocity](friction_sliding.png)\n\n![power density](friction_density.png)\n"
     ));
     Ok(summary)

@@ -101,6 +101,14 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                 Case::Pimp(c) | Case::Bem(c) => c.name.clone(),
                 _ => None,
             };
+            // A roller/rib map names its axes along and across the rib, as the demo's do.
+            let axes = match &case {
+                Case::Pimp(c) | Case::Bem(c) if args.map.is_some() => {
+                    kontakt_case::pimp_case::bearing_axes(&c.geometry)
+                        .with_context(|| label.clone())?
+                }
+                _ => None,
+            };
             match case.run(base).with_context(|| label.clone())? {
                 Outcome::Hertz(report) => output::print_report(out, &report, args.json),
                 Outcome::Pimp(outcome) => {
@@ -111,7 +119,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                     if let Some(path) = &args.map {
                         let mode = outcome.report.mode.map_or("", |m| m.as_str());
                         let what = format!("PimP {mode}");
-                        write_case_map(path, &outcome.report, s, name.as_deref(), &what)?;
+                        write_case_map(path, &outcome.report, s, (name.as_deref(), axes), &what)?;
                     }
                     pimp::print_report(out, &outcome.report, args.json)
                 }
@@ -133,7 +141,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                             path,
                             &outcome.report,
                             s,
-                            name.as_deref(),
+                            (name.as_deref(), axes),
                             "coupled half-space",
                         )?;
                     }
@@ -195,12 +203,13 @@ pub fn read_case_for(
 }
 
 /// `--map` of a PimP or half-space case: the pressure map titled by the case's name (or
-/// geometry), force and method, with the local Hertz ellipse.
+/// geometry), force and method, with the local Hertz ellipse; its axes named in the bearing
+/// when `axes` gives them (a roller/rib geometry), else by the gap's principal frame.
 fn write_case_map<D>(
     path: &std::path::Path,
     report: &kontakt_case::PimpReport,
     s: &kontakt::field::NormalSolution<D>,
-    name: Option<&str>,
+    (name, axes): (Option<&str>, Option<[[f64; 3]; 2]>),
     what: &str,
 ) -> Result<()> {
     let title = format!(
@@ -215,7 +224,10 @@ fn write_case_map<D>(
         &s.pressure,
         &title,
         &[],
-        &crate::render::MapNotes::principal(hertz),
+        &match axes {
+            Some(axes) => crate::render::MapNotes::in_bearing(axes, hertz),
+            None => crate::render::MapNotes::principal(hertz),
+        },
     )
 }
 

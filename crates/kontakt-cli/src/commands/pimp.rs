@@ -2,9 +2,9 @@
 //! report of the roller-end/rib study.
 
 use crate::commands::{cannot_write, progress};
-use crate::render::{MapNotes, Written, pairing_plot, write_map};
+use crate::render::{MapNotes, Written, map_stretch, pairing_plot, write_map};
 use anyhow::{Context, Result};
-use kontakt::bearing::{DemoRow, DemoStudy, STUDY_FORCES, TABLE1, demo_study};
+use kontakt::bearing::{DemoMap, DemoRow, DemoStudy, STUDY_FORCES, TABLE1, demo_study};
 use kontakt::geometry::Grid2;
 use kontakt_case::PimpReport;
 use std::io::Write;
@@ -120,6 +120,25 @@ pub fn write_csv(path: &Path, grid: &Grid2, fields: &[(&str, &[f64])]) -> Result
     Ok(())
 }
 
+/// The notes of the demo's pressure maps: axes on the rib, the Hertz ellipse, one colour
+/// scale for all pairings (a colour is one pressure on each map) and each pairing's
+/// stretch as `kontakt validate` draws it (see [`map_stretch`]).
+fn demo_map_notes(maps: &[DemoMap]) -> Vec<MapNotes> {
+    let color_max = maps
+        .iter()
+        .flat_map(|m| m.pressure.iter().copied())
+        .fold(0.0f64, f64::max);
+    maps.iter()
+        .map(|m| {
+            let hertz = Some(m.hertz_semi_axes_mm);
+            MapNotes::in_bearing(m.axes, hertz).shared(
+                (color_max > 0.0).then_some(color_max),
+                Some(map_stretch(&m.grid, &m.pressure, hertz)),
+            )
+        })
+        .collect()
+}
+
 /// Run the roller-end/rib study (`kontakt::bearing::demo_study`) and write the report
 /// folder: the computation is the library's, this renders it.
 pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
@@ -135,7 +154,7 @@ pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
     }
     let DemoStudy { rows, maps: fields } = study?;
     let mut maps = Vec::with_capacity(fields.len());
-    for m in &fields {
+    for (m, notes) in fields.iter().zip(demo_map_notes(&fields)) {
         let file = format!("{}_{:.0}N.png", m.pairing, m.force_n);
         write_map(
             &out_dir.join(&file),
@@ -143,7 +162,7 @@ pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
             &m.pressure,
             &format!("{}, {:.0} N, PimP corrected", m.pairing, m.force_n),
             &[],
-            &MapNotes::in_bearing(m.axes, Some(m.hertz_semi_axes_mm)),
+            &notes,
         )?;
         maps.push((m.pairing, file));
     }
@@ -193,6 +212,7 @@ pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
             ylabel,
             &series_of(f),
             false,
+            false,
         )?;
         written.plots.push(file.into());
     }
@@ -228,7 +248,8 @@ pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
     md.push_str(
         "\n## Pressure maps at 400 N (corrected)\n\nEach map shows the PimP pressure inside \
          the contact outline (black), the Hertz ellipse at the contact point's curvature \
-         (magenta, dotted) and the maximum (ringed dot, value in the legend). The axes are \
+         (magenta, dotted) and the maximum (ringed dot, value in the legend), all on one \
+         colour scale. The axes are \
          directions on the rib: along it (circumferential) and across it (in the axial \
          section, with the lean from radial), in mm. A zone more slender than 2.5:1 is drawn \
          with its short axis stretched by a whole factor, as the note under the title says.\n\n",
@@ -323,4 +344,37 @@ pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
         writeln!(out, "{}", written.summary(&md_path, rows.len()))?;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)]
+
+    /// Issue 30, item 18: the demo's pressure maps share one colour scale (the largest
+    /// pressure of them all) and each has its pairing's stretch.
+    #[test]
+    fn demo_maps_share_one_colour_scale() {
+        let study = kontakt::bearing::demo_study(&[400.0]).unwrap();
+        let notes = super::demo_map_notes(&study.maps);
+        let top = study
+            .maps
+            .iter()
+            .flat_map(|m| m.pressure.iter().copied())
+            .fold(0.0f64, f64::max);
+        assert_eq!(notes.len(), 8);
+        for (m, n) in study.maps.iter().zip(&notes) {
+            assert_eq!(n.color_max, Some(top), "{}", m.pairing);
+            let own = m.pressure.iter().copied().fold(0.0f64, f64::max);
+            assert!(own <= top);
+            let k = n.stretch.unwrap();
+            assert!(k >= 1.0 && k.fract() == 0.0, "{}: {k}", m.pairing);
+        }
+        // the pairings' own maxima differ, so a scale per map would differ
+        assert!(
+            study
+                .maps
+                .iter()
+                .any(|m| m.pressure.iter().copied().fold(0.0, f64::max) < 0.8 * top)
+        );
+    }
 }
