@@ -371,8 +371,11 @@ pub(crate) fn legend_place(
 mod tests {
     #[test]
     fn y_from_zero_starts_the_axis_at_zero() {
-        assert_eq!(super::from_zero(3000.0, 4600.0), (0.0, 4664.0));
-        assert_eq!(super::from_zero(-10.0, -5.0), (-10.4, 0.0));
+        // the data's range is [0, 4600] padded by 4 % above, not [3000, 4600]
+        let (a, b) = super::from_zero(3000.0, 4600.0);
+        assert!(a == 0.0 && (b - 4784.0).abs() < 1e-9, "{a} {b}");
+        let (a, b) = super::from_zero(-10.0, -5.0);
+        assert!((a + 10.4).abs() < 1e-12 && b == 0.0, "{a} {b}");
         let (a, b) = super::from_zero(-1.0, 1.0);
         assert!(a < -1.0 && b > 1.0);
     }

@@ -222,7 +222,7 @@ const CORRECTED_COLOR: (u8, u8, u8) = (255, 150, 0);
 fn curve_style(method: usize, pairing: usize) -> ((u8, u8, u8), LineStyle) {
     let style = if method == 2 {
         LineStyle::Markers
-    } else if pairing % 2 == 0 {
+    } else if pairing.is_multiple_of(2) {
         LineStyle::Solid
     } else {
         LineStyle::Dashed
