@@ -126,14 +126,15 @@ pub fn map_stretch(grid: &Grid2, pressure: &[f64], hertz_semi_axes_mm: Option<[f
     kontakt_plot::map_stretch(&pressure_map(grid, pressure, "", &[], &notes, ""))
 }
 
-/// The [`FieldMap`] of a pressure map (see [`write_map`]).
-fn pressure_map<'a>(
+/// A [`FieldMap`] of `values` on the cells of `grid` with the contact outline, the axes
+/// labelled `axes`; no overlays, ellipse, marker, shared scale or fixed stretch (callers add
+/// them by struct update).
+pub fn grid_map<'a>(
     grid: &Grid2,
-    pressure: &'a [f64],
+    values: &'a [f64],
     title: &'a str,
-    overlays: &'a [kontakt_plot::Overlay<'a>],
-    notes: &'a MapNotes,
-    max: &'a str,
+    axes: &'a (String, String),
+    colorbar_label: &'a str,
 ) -> FieldMap<'a> {
     let g = grid;
     FieldMap {
@@ -143,12 +144,30 @@ fn pressure_map<'a>(
         y_min: g.y(0) - 0.5 * g.dy(),
         dx: g.dx(),
         dy: g.dy(),
-        values: pressure,
+        values,
         title,
-        x_label: &notes.axes.0,
-        y_label: &notes.axes.1,
-        colorbar_label: "pressure [MPa]",
+        x_label: &axes.0,
+        y_label: &axes.1,
+        colorbar_label,
         outline: true,
+        overlays: &[],
+        ellipse: None,
+        max_marker: None,
+        color_max: None,
+        stretch: None,
+    }
+}
+
+/// The [`FieldMap`] of a pressure map (see [`write_map`]).
+fn pressure_map<'a>(
+    grid: &Grid2,
+    pressure: &'a [f64],
+    title: &'a str,
+    overlays: &'a [kontakt_plot::Overlay<'a>],
+    notes: &'a MapNotes,
+    max: &'a str,
+) -> FieldMap<'a> {
+    FieldMap {
         overlays,
         ellipse: notes
             .hertz_semi_axes_mm
@@ -162,6 +181,7 @@ fn pressure_map<'a>(
         max_marker: (!max.is_empty()).then_some(max),
         color_max: notes.color_max,
         stretch: notes.stretch,
+        ..grid_map(grid, pressure, title, &notes.axes, "pressure [MPa]")
     }
 }
 

@@ -50,6 +50,19 @@ fn read_csv(path: &Path) -> Vec<HashMap<String, String>> {
         .collect()
 }
 
+/// Run the sweep `file` into `out` as CSV: the JSON summary and the rows.
+fn sweep_csv(file: &Path, out: &Path) -> (Value, Vec<HashMap<String, String>>) {
+    let v = run_json(&[
+        "sweep",
+        file.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--format",
+        "csv",
+    ]);
+    (v, read_csv(&out.join("results.csv")))
+}
+
 fn num(row: &HashMap<String, String>, key: &str) -> f64 {
     row[key]
         .parse()
@@ -341,16 +354,8 @@ fn failing_cases_are_rows_not_crashes() {
         ),
     )
     .unwrap();
-    let v = run_json(&[
-        "sweep",
-        p.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-        "--format",
-        "csv",
-    ]);
+    let (v, rows) = sweep_csv(&p, &out);
     assert_eq!(v["cases_not_ok"], 1);
-    let rows = read_csv(&out.join("results.csv"));
     assert_eq!(rows[0]["status"], "ok");
     assert_eq!(rows[1]["status"], "invalid");
     assert!(rows[1]["error"].contains("load.force_n"), "{:?}", rows[1]);
@@ -512,16 +517,8 @@ rpm = [1000.0]
 "#,
     )
     .unwrap();
-    let v = run_json(&[
-        "sweep",
-        p.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-        "--format",
-        "csv",
-    ]);
+    let (v, rows) = sweep_csv(&p, &out);
     assert_eq!(v["cases_not_ok"], 1, "{v}");
-    let rows = read_csv(&out.join("results.csv"));
     let cases: Vec<&str> = rows.iter().map(|r| r["case"].as_str()).collect();
     assert_eq!(cases, ["0", "0", "1", "2", "2"]);
     let columns = v["columns"].as_array().unwrap();

@@ -254,25 +254,9 @@ fn field_map<'a>(
     colorbar_label: &'a str,
     (axes, max_marker): (&'a (String, String), &'a str),
 ) -> FieldMap<'a> {
-    let g = &m.field.grid;
     FieldMap {
-        nx: g.nx(),
-        ny: g.ny(),
-        x_min: g.x(0) - 0.5 * g.dx(),
-        y_min: g.y(0) - 0.5 * g.dy(),
-        dx: g.dx(),
-        dy: g.dy(),
-        values,
-        title,
-        x_label: &axes.0,
-        y_label: &axes.1,
-        colorbar_label,
-        outline: true,
-        overlays: &[],
-        ellipse: None,
         max_marker: Some(max_marker),
-        color_max: None,
-        stretch: None,
+        ..crate::render::grid_map(&m.field.grid, values, title, axes, colorbar_label)
     }
 }
 
