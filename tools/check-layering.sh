@@ -90,9 +90,9 @@ modules=$(for f in $files; do module_of "$f"; done | LC_ALL=C sort -u)
 raw_edges=$(
   for f in $files; do
     mod=$(module_of "$f")
-    parent=$mod
-    [[ $GRAIN == file && $f != */mod.rs ]] && parent=${mod%/*} && [[ $parent == "$mod" ]] && parent=""
-    [[ $GRAIN == file && $f == */mod.rs ]] && parent=${mod%/*} && [[ $parent == "$mod" ]] && parent=""
+    # `super` of module a/b (a/b.rs or a/b/mod.rs) is a; of a top-level module, the root
+    parent=${mod%/*}
+    [[ $parent == "$mod" ]] && parent=""
     awk -v mod="$mod" -v file="$f" -v grain="$GRAIN" -v parent="$parent" '
       function path(s,   m) {          # the leading module path of s, as a/b/c
         if (match(s, /^[ \t\n]*[a-z_][a-z0-9_]*([ \t\n]*::[ \t\n]*[a-z_][a-z0-9_]*)*/)) {
