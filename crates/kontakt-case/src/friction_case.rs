@@ -116,8 +116,9 @@ fn yes() -> bool {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
 #[serde(deny_unknown_fields)]
 pub struct SpeedSpec {
-    /// The speeds \[r/min\].
-    #[serde(default)]
+    /// The speeds \[r/min\]: a list, or one number (`rpm = 1500.0`, as a sweep's
+    /// parameter on `speed.rpm` sets it).
+    #[serde(default, deserialize_with = "one_or_many")]
     pub rpm: Option<Vec<f64>>,
     /// Lowest speed of a range \[r/min\].
     #[serde(default)]
@@ -131,6 +132,22 @@ pub struct SpeedSpec {
     /// Spacing of a range (default log).
     #[serde(default)]
     pub spacing: Spacing,
+}
+
+/// `rpm = 1500.0` or `rpm = [500.0, 1500.0]`.
+fn one_or_many<'de, D: serde::Deserializer<'de>>(
+    d: D,
+) -> std::result::Result<Option<Vec<f64>>, D::Error> {
+    #[derive(Deserialize)]
+    #[serde(untagged, expecting = "a speed in r/min or a list of them")]
+    enum OneOrMany {
+        One(f64),
+        Many(Vec<f64>),
+    }
+    Ok(Some(match OneOrMany::deserialize(d)? {
+        OneOrMany::One(v) => vec![v],
+        OneOrMany::Many(v) => v,
+    }))
 }
 
 /// Spacing of a speed range.
@@ -183,12 +200,19 @@ impl SpeedSpec {
                 if !(2..=1000).contains(&n) {
                     return Err(Error::invalid("speed.points", n, "2 to 1000 points"));
                 }
+                // The ends exactly as given; a linear step as (hi - lo) * i / (n - 1), so
+                // 500..2500 in 5 points is 500, 1000, 1500, 2000, 2500 to the last bit.
                 Ok((0..n)
                     .map(|i| {
-                        let t = i as f64 / (n - 1) as f64;
+                        if i == 0 {
+                            return lo;
+                        }
+                        if i == n - 1 {
+                            return hi;
+                        }
                         match self.spacing {
-                            Spacing::Log => lo * (hi / lo).powf(t),
-                            Spacing::Linear => lo + (hi - lo) * t,
+                            Spacing::Log => lo * (hi / lo).powf(i as f64 / (n - 1) as f64),
+                            Spacing::Linear => lo + (hi - lo) * i as f64 / (n - 1) as f64,
                         }
                     })
                     .collect())
@@ -513,21 +537,28 @@ pub struct FrictionRow {
     pub power_w: f64,
     /// Friction power of all rib contacts \[W\].
     pub bearing_power_w: f64,
-    /// The rib's share of the bearing friction torque \[N·mm\].
-    pub bearing_torque_nmm: f64,
-    /// Friction moment on a roller about its axis \[N·mm\].
+    /// The rib friction's share of the bearing's drag torque \[N·mm\]: the torque the shaft
+    /// must supply to it, from the power balance `Z P / |ω_i − ω_o|` (docs/friction.md §5.2).
+    /// This is the rib's friction torque of the bearing (the plots' "rib torque").
+    pub bearing_drag_torque_nmm: f64,
+    /// Moment of the rib friction on one roller about the roller's axis \[N·mm\].
     pub roller_axis_moment_nmm: f64,
-    /// Friction moment on the inner ring about its axis, all rollers \[N·mm\].
-    pub ring_axis_moment_nmm: f64,
+    /// Moment of the rib friction forces on the inner ring alone about the ring axis, all
+    /// rollers \[N·mm\]. Not the drag torque: the same forces turn the rollers back about
+    /// their axes, and that moment returns to the rings through the raceway contacts; the
+    /// net that the shaft feels is `bearing_drag_torque_nmm`.
+    pub inner_ring_rib_moment_nmm: f64,
 }
 
 impl FrictionRow {
-    fn of(pairing: &str, r: &RibFriction) -> Self {
+    /// The row of `r`, computed at the case's speed `rpm` (reported as given, not
+    /// converted back from rad/s: 1500, not 1500.0000000000002).
+    fn of(pairing: &str, rpm: f64, r: &RibFriction) -> Self {
         let film = r.film_thickness;
         FrictionRow {
             pairing: pairing.to_string(),
             model: r.model.as_str(),
-            speed_rpm: r.operating.inner_speed / RAD_S_PER_RPM,
+            speed_rpm: rpm,
             cage_speed_rpm: r.cage_speed / RAD_S_PER_RPM,
             relative_speed_rad_s: r.relative_speed,
             rib_load_n: r.loads.rib,
@@ -546,9 +577,9 @@ impl FrictionRow {
             coefficient: r.coefficient,
             power_w: r.power,
             bearing_power_w: r.bearing_power,
-            bearing_torque_nmm: r.bearing_torque,
+            bearing_drag_torque_nmm: r.bearing_torque,
             roller_axis_moment_nmm: r.roller_axis_moment,
-            ring_axis_moment_nmm: r.ring_axis_moment,
+            inner_ring_rib_moment_nmm: r.ring_axis_moment,
         }
     }
 }
@@ -815,11 +846,11 @@ pub(crate) fn run_friction_case_unchecked(case: &FrictionCase) -> Result<Frictio
                     other => other.to_string(),
                 })
             })?;
-        for r in &sweep {
+        for (r, &rpm) in sweep.iter().zip(&speeds) {
             if let Some(h) = &r.film_thickness {
                 warnings.extend(h.warning_lines());
             }
-            rows.push(FrictionRow::of(&pairing, r));
+            rows.push(FrictionRow::of(&pairing, rpm, r));
         }
     }
     let mut model_difference = Vec::new();
@@ -827,13 +858,13 @@ pub(crate) fn run_friction_case_unchecked(case: &FrictionCase) -> Result<Frictio
         let n = speeds.len();
         let at = |k: usize| &rows[k * n + i];
         if let Some(h) = case.models.iter().position(|m| *m == PressureModel::Hertz) {
-            let base = at(h).bearing_torque_nmm;
+            let base = at(h).bearing_drag_torque_nmm;
             for (k, m) in case.models.iter().enumerate() {
                 if *m != PressureModel::Hertz && base > 0.0 {
                     model_difference.push(ModelDifference {
                         speed_rpm: at(k).speed_rpm,
                         model: m.as_str(),
-                        torque_vs_hertz: at(k).bearing_torque_nmm / base,
+                        torque_vs_hertz: at(k).bearing_drag_torque_nmm / base,
                     });
                 }
             }

@@ -739,6 +739,20 @@ pub(crate) fn zone_warnings<D>(
     Ok((edge.warnings(), contacts))
 }
 
+/// The axes `[x, y]` of a case's field grid as unit vectors in the bearing frame (`X`
+/// radial, `Y` circumferential at the contact point, `Z` the ring axis) for a roller/rib
+/// geometry, built-in pairing or custom face and rib alike, so that its maps name their
+/// axes along and across the rib as the demo's do; `None` for the other kinds (no bearing).
+///
+/// # Errors
+/// Those of [`roller_rib_from_spec`] and of the pair's gap.
+pub fn bearing_axes(geometry: &GeometrySpec) -> Result<Option<[[f64; 3]; 2]>> {
+    let Some((_, pair)) = roller_rib_from_spec(geometry)? else {
+        return Ok(None);
+    };
+    Ok(Some(pair.gap()?.principal_axes()))
+}
+
 /// The substitute geometry of a case and what the report echoes about it.
 pub(crate) struct GapSetup {
     pub label: String,

@@ -9,7 +9,9 @@
 
 mod cli;
 mod commands;
+mod error;
 mod output;
+mod render;
 
 #[cfg(test)]
 mod fuzz;

@@ -50,6 +50,19 @@ fn read_csv(path: &Path) -> Vec<HashMap<String, String>> {
         .collect()
 }
 
+/// Run the sweep `file` into `out` as CSV: the JSON summary and the rows.
+fn sweep_csv(file: &Path, out: &Path) -> (Value, Vec<HashMap<String, String>>) {
+    let v = run_json(&[
+        "sweep",
+        file.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--format",
+        "csv",
+    ]);
+    (v, read_csv(&out.join("results.csv")))
+}
+
 fn num(row: &HashMap<String, String>, key: &str) -> f64 {
     row[key]
         .parse()
@@ -351,16 +364,8 @@ fn failing_cases_are_rows_not_crashes() {
         ),
     )
     .unwrap();
-    let v = run_json(&[
-        "sweep",
-        p.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-        "--format",
-        "csv",
-    ]);
+    let (v, rows) = sweep_csv(&p, &out);
     assert_eq!(v["cases_not_ok"], 1);
-    let rows = read_csv(&out.join("results.csv"));
     assert_eq!(rows[0]["status"], "ok");
     assert_eq!(rows[1]["status"], "invalid");
     assert!(rows[1]["error"].contains("load.force_n"), "{:?}", rows[1]);
@@ -491,6 +496,76 @@ fn fields_npy_stores_each_case_pressure_consistent_with_its_row() {
         msg.contains("invalid fields = \"npy\"") && msg.contains("hertz"),
         "{msg}"
     );
+}
+
+/// A friction sweep is long and numeric (issue 30, item 16): one row per case × model ×
+/// speed, the speed a number (a parameter on `speed.rpm` takes plain numbers), reported
+/// exactly as given (1500, not 1500.0000000000002 from a round trip through rad/s), each
+/// model's torque over Hertz's on its own row, and a failing case one row in its place.
+#[test]
+fn friction_sweep_has_one_numeric_row_per_case_model_and_speed() {
+    let dir = tempdir("friction");
+    let out = dir.join("out");
+    let p = dir.join("s.toml");
+    std::fs::write(
+        &p,
+        r#"
+[[parameter]]
+key = "speed.rpm"
+values = [500.0, -1.0, 1500.0]
+
+[base]
+method = "friction"
+models = ["hertz", "pimp"]
+[base.geometry]
+kind = "roller_rib"
+pairing = "sphere-torus-57"
+[base.load]
+axial_n = 15000.0
+[base.speed]
+rpm = [1000.0]
+"#,
+    )
+    .unwrap();
+    let (v, rows) = sweep_csv(&p, &out);
+    assert_eq!(v["cases_not_ok"], 1, "{v}");
+    let cases: Vec<&str> = rows.iter().map(|r| r["case"].as_str()).collect();
+    assert_eq!(cases, ["0", "0", "1", "2", "2"]);
+    let columns = v["columns"].as_array().unwrap();
+    assert!(
+        columns.len() < 50
+            && columns
+                .iter()
+                .all(|c| !c.as_str().unwrap().starts_with("rows[")),
+        "wide columns: {columns:?}"
+    );
+    for (row, (case_speed, model)) in rows.iter().zip([
+        ("500.0", "hertz"),
+        ("500.0", "pimp"),
+        ("-1.0", ""),
+        ("1500.0", "hertz"),
+        ("1500.0", "pimp"),
+    ]) {
+        assert_eq!(row["speed.rpm"], case_speed, "{row:?}");
+        assert_eq!(row["model"], model, "{row:?}");
+        if model.is_empty() {
+            assert_eq!(row["status"], "invalid");
+            assert!(row["error"].contains("speed.rpm"), "{row:?}");
+            assert_eq!(row["bearing_drag_torque_nmm"], "");
+            continue;
+        }
+        assert_eq!(row["status"], "ok");
+        assert_eq!(row["speed_rpm"], case_speed, "exact speed: {row:?}");
+        assert_eq!(row["pairing"], "sphere-torus-57");
+        assert!(num(row, "bearing_drag_torque_nmm") > 0.0);
+        assert!(num(row, "rib_load_n") > 0.0);
+        if model == "pimp" {
+            let ratio = num(row, "torque_vs_hertz");
+            assert!((ratio - 1.0).abs() < 0.01, "{row:?}");
+        } else {
+            assert_eq!(row["torque_vs_hertz"], "", "{row:?}");
+        }
+    }
 }
 
 /// Issue 30 items 3 and 13: a case with a contact large against the ball (1e6 N on a

@@ -581,6 +581,11 @@ impl Sweep {
                         .and_then(|c| c.as_any().downcast_ref::<UInt64Array>())
                         .ok_or_else(|| format!("{}: no `case` column", path.display()))?;
                     for c in cases.values().iter() {
+                        // A case with a list of rows (friction, rough) has several table
+                        // rows in a run: a repeat of the case just seen.
+                        if *c + 1 == next && next > expected.start {
+                            continue;
+                        }
                         if *c != next || next >= expected.end {
                             return Err(format!(
                                 "{}: case {c} where case {next} was expected (chunk {i} holds cases {}..{}): delete the file and run the sweep again",

@@ -111,9 +111,14 @@ pub fn print_report(out: &mut impl Write, r: &FrictionReport, json: bool) -> Res
             row.coefficient,
             row.power_w,
             row.bearing_power_w,
-            row.bearing_torque_nmm
+            row.bearing_drag_torque_nmm
         )?;
     }
+    writeln!(
+        out,
+        "\n  M: the rib friction's share of the bearing's drag torque, Z·P_1/|ω_i − ω_o| \
+         (bearing_drag_torque_nmm; docs/friction.md §5.2)"
+    )?;
     if !r.model_difference.is_empty() {
         writeln!(out, "\n  rib torque relative to Hertz:")?;
         let models: Vec<&str> = {
@@ -179,7 +184,7 @@ fn write_curves(path: &Path, r: &FrictionReport, curve: Curve) -> Result<()> {
                 .filter(|row| row.model == *m)
                 .map(|row| {
                     let y = match curve {
-                        Curve::Torque => row.bearing_torque_nmm,
+                        Curve::Torque => row.bearing_drag_torque_nmm,
                         Curve::Coefficient => row.coefficient,
                     };
                     (row.speed_rpm, y)
@@ -190,16 +195,22 @@ fn write_curves(path: &Path, r: &FrictionReport, curve: Curve) -> Result<()> {
     let series: Vec<Series> = models
         .iter()
         .enumerate()
-        .map(|(i, m)| Series {
-            label: m,
-            points: &points[i],
-            color: PALETTE[i % PALETTE.len()],
-            style: LineStyle::Solid,
+        .map(|(i, m)| {
+            let (color, style) = model_style(m);
+            Series {
+                label: m,
+                points: &points[i],
+                color,
+                style,
+            }
         })
         .collect();
     let (what, y_label) = match curve {
-        Curve::Torque => ("rib friction torque", "rib torque of the bearing [N·mm]"),
-        Curve::Coefficient => ("friction coefficient", "μ = |Fₜ| / Q_f [-]"),
+        Curve::Torque => (
+            "rib friction torque",
+            "rib drag torque of the bearing [N·mm]",
+        ),
+        Curve::Coefficient => ("friction coefficient", COEFFICIENT_LABEL),
     };
     let title = format!(
         "{}: {what}, Fₐ = {} N",
@@ -214,10 +225,26 @@ fn write_curves(path: &Path, r: &FrictionReport, curve: Curve) -> Result<()> {
             y_label,
             series: &series,
             x_log: true,
+            y_from_zero: true,
         },
         (900, 600),
     )
     .with_context(|| format!("drawing {}", path.display()))
+}
+
+/// The y label of the friction coefficient (plain words: no `Q_f` with a literal
+/// underscore).
+const COEFFICIENT_LABEL: &str = "μ = friction force / rib load [-]";
+
+/// Colour and line style of a pressure model's curve, the same on every plot; the styles
+/// differ so that curves that lie on each other (the models agree to 0.03 % on a Hertzian
+/// pairing) stay visible: a solid line, dashes over it and dots at the speeds.
+fn model_style(model: &str) -> ((u8, u8, u8), LineStyle) {
+    match model {
+        "hertz" => (PALETTE[0], LineStyle::Solid),
+        "pimp" => (PALETTE[1], LineStyle::Dashed),
+        _ => (PALETTE[2], LineStyle::Markers),
+    }
 }
 
 fn field_map<'a>(
@@ -227,29 +254,15 @@ fn field_map<'a>(
     colorbar_label: &'a str,
     (axes, max_marker): (&'a (String, String), &'a str),
 ) -> FieldMap<'a> {
-    let g = &m.field.grid;
     FieldMap {
-        nx: g.nx(),
-        ny: g.ny(),
-        x_min: g.x(0) - 0.5 * g.dx(),
-        y_min: g.y(0) - 0.5 * g.dy(),
-        dx: g.dx(),
-        dy: g.dy(),
-        values,
-        title,
-        x_label: &axes.0,
-        y_label: &axes.1,
-        colorbar_label,
-        outline: true,
-        overlays: &[],
-        ellipse: None,
         max_marker: Some(max_marker),
+        ..crate::render::grid_map(&m.field.grid, values, title, axes, colorbar_label)
     }
 }
 
 /// The map axes' names by their direction in the bearing.
 fn axis_names(m: &FrictionMap) -> (String, String) {
-    use crate::commands::pimp::axis_name;
+    use crate::render::axis_name;
     (axis_name(m.axes[0]), axis_name(m.axes[1]))
 }
 
@@ -263,16 +276,30 @@ fn write_density_map(path: &Path, m: &FrictionMap, r: &FrictionReport) -> Result
         m.speed_rpm,
         m.result.power
     );
-    let values: Vec<f64> = m.power_density.iter().map(|d| d * 1e3).collect();
-    let max = values.iter().copied().fold(0.0f64, f64::max);
-    let max = format!("maximum {max:.0} mW/mm²");
+    let max = m.power_density.iter().copied().fold(0.0f64, f64::max);
+    let (factor, unit) = crate::render::power_density_unit(max);
+    let values: Vec<f64> = m.power_density.iter().map(|d| d * factor).collect();
+    let max = format!("maximum {} {unit}", three_digits(max * factor));
+    let label = format!("shear stress × sliding speed [{unit}]");
     let axes = axis_names(m);
     kontakt_plot::field_map(
         path,
-        &field_map(m, &values, &title, "τ · v_s [mW/mm²]", (&axes, &max)),
+        &field_map(m, &values, &title, &label, (&axes, &max)),
         (900, 640),
     )
     .with_context(|| format!("drawing {}", path.display()))
+}
+
+/// `x` with three significant digits (34.5, 345, 3.45).
+fn three_digits(x: f64) -> String {
+    let decimals = if x >= 100.0 {
+        0
+    } else if x >= 10.0 {
+        1
+    } else {
+        2
+    };
+    format!("{x:.decimals$}")
 }
 
 /// The sliding velocity as arrows over the pressure map.
@@ -285,7 +312,7 @@ fn write_sliding_map(path: &Path, m: &FrictionMap, r: &FrictionReport) -> Result
         m.speed_rpm
     );
     let (arrows, label) = sliding_arrows(m);
-    let max = crate::commands::pimp::max_label(&m.field.pressure);
+    let max = crate::render::max_label(&m.field.pressure);
     let axes = axis_names(m);
     kontakt_plot::field_map_with_arrows(
         path,
@@ -366,7 +393,7 @@ pub struct DemoSummary {
 pub fn demo_study(
     out_dir: &Path,
     md: &mut String,
-    written: &mut crate::commands::pimp::Written,
+    written: &mut crate::render::Written,
 ) -> Result<Vec<DemoSummary>> {
     use kontakt_case::friction_case::{FrictionCase, run_friction_case};
     let base: FrictionCase =
@@ -411,7 +438,7 @@ pub fn demo_study(
                 .map(|x| (x.speed_rpm, f(x)))
                 .collect::<Vec<_>>()
         };
-        torque_curves.push((name.to_string(), of("pimp", &|x| x.bearing_torque_nmm)));
+        torque_curves.push((name.to_string(), of("pimp", &|x| x.bearing_drag_torque_nmm)));
         mu_curves.push((name.to_string(), of("pimp", &|x| x.coefficient)));
         ratio_curves.push((
             name.to_string(),
@@ -431,7 +458,7 @@ pub fn demo_study(
             r.rows
                 .iter()
                 .filter(|x| x.model == m)
-                .map(|x| x.bearing_torque_nmm)
+                .map(|x| x.bearing_drag_torque_nmm)
                 .collect()
         });
         summary.push(DemoSummary {
@@ -449,37 +476,44 @@ pub fn demo_study(
     }
     w.finish()?;
     written.tables.push("friction.csv".into());
-    let mut plot =
-        |file: &str, title: &str, y_label: &str, curves: &[(String, Vec<(f64, f64)>)]| {
-            crate::commands::pimp::pairing_plot(
-                &out_dir.join(file),
-                title,
-                "inner ring speed [r/min] (log scale)",
-                y_label,
-                curves,
-                true,
-            )?;
-            written.plots.push(file.to_string());
-            Ok::<(), anyhow::Error>(())
-        };
+    let mut plot = |file: &str,
+                    title: &str,
+                    y_label: &str,
+                    curves: &[(String, Vec<(f64, f64)>)],
+                    from_zero: bool| {
+        crate::render::pairing_plot(
+            &out_dir.join(file),
+            title,
+            "inner ring speed [r/min] (log scale)",
+            y_label,
+            curves,
+            true,
+            from_zero,
+        )?;
+        written.plots.push(file.to_string());
+        Ok::<(), anyhow::Error>(())
+    };
     let fa = base.load.axial_n;
     plot(
         "friction_torque.png",
         &format!("Rib friction torque of the bearing, PimP, Fₐ = {fa} N"),
-        "rib torque [N·mm]",
+        "rib drag torque [N·mm]",
         &torque_curves,
+        true,
     )?;
     plot(
         "friction_coefficient.png",
         &format!("Rib friction coefficient (Stribeck), PimP, Fₐ = {fa} N"),
-        "μ = |Fₜ| / Q_f [-]",
+        COEFFICIENT_LABEL,
         &mu_curves,
+        true,
     )?;
     plot(
         "friction_model_ratio.png",
         "Rib torque, PimP over Hertz",
         "torque ratio PimP / Hertz [-]",
         &ratio_curves,
+        false,
     )?;
     let law = last.map(|r| r.law);
     md.push_str(&format!(
@@ -507,7 +541,7 @@ pub fn demo_study(
     }
     md.push_str(&format!(
         "\nSliding velocity of the roller on the rib over the PimP pressure of {map_pairing} \
-         (a curved zone) and the friction-power density tau · v_s:\n\n\
+         (a curved zone) and the friction-power density (shear stress times sliding speed):\n\n\
          ![sliding velocity](friction_sliding.png)\n\n![power density](friction_density.png)\n"
     ));
     Ok(summary)

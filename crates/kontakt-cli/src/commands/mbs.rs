@@ -61,7 +61,13 @@ pub fn run(args: &MbsArgs, out: &mut impl Write) -> Result<()> {
                 })
                 .collect()
         };
-    let plot = crate::commands::pimp::pairing_plot;
+    let plot =
+        |path: &std::path::Path,
+         title: &str,
+         x: &str,
+         y: &str,
+         c: &[(String, Vec<(f64, f64)>)],
+         log: bool| { crate::render::pairing_plot(path, title, x, y, c, log, false) };
     let dir = &args.out;
     plot(
         &dir.join("mbs_load.png"),

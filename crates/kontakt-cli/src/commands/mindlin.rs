@@ -115,6 +115,7 @@ pub fn write_plot(path: &Path, r: &MindlinReport) -> Result<()> {
             y_label: "tangential force Q [N]",
             series: &series,
             x_log: false,
+            y_from_zero: false,
         },
         (900, 600),
     )

@@ -20,10 +20,7 @@ pub mod traction;
 pub mod validate;
 use std::io::Write;
 
-/// Bad input detected by the CLI itself (unreadable file).
-#[derive(Debug, thiserror::Error)]
-#[error("{0}")]
-pub struct InputError(pub String);
+pub use crate::error::{InputError, cannot_write};
 
 /// A progress indicator on standard error, shown only when standard error is a terminal
 /// and the output is not JSON (`quiet`): a bar of `len` steps, or a spinner for `None`.
@@ -42,16 +39,6 @@ pub fn progress(len: Option<u64>, template: &str, quiet: bool) -> Option<indicat
         bar.enable_steady_tick(std::time::Duration::from_millis(120));
     }
     Some(bar)
-}
-
-/// An output file or folder that cannot be written: a runtime failure (exit status 1),
-/// whichever flag named it (`--csv`, `--map`, `--plot`, `--out`).
-pub fn cannot_write(
-    what: &str,
-    path: &std::path::Path,
-    e: impl std::fmt::Display,
-) -> anyhow::Error {
-    anyhow::anyhow!("cannot {what} {}: {e}", path.display())
 }
 
 /// A CSV output file of any command: every failure (creating it, a record, the final
@@ -152,6 +139,14 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                 Case::Pimp(c) | Case::Bem(c) => c.name.clone(),
                 _ => None,
             };
+            // A roller/rib map names its axes along and across the rib, as the demo's do.
+            let axes = match &case {
+                Case::Pimp(c) | Case::Bem(c) if args.map.is_some() => {
+                    kontakt_case::pimp_case::bearing_axes(&c.geometry)
+                        .with_context(|| label.clone())?
+                }
+                _ => None,
+            };
             match case.run(base).with_context(|| label.clone())? {
                 Outcome::Hertz(report) => output::print_report(out, &report, args.input.json),
                 Outcome::Pimp(outcome) => {
@@ -162,7 +157,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                     if let Some(path) = &args.map {
                         let mode = outcome.report.mode.map_or("", |m| m.as_str());
                         let what = format!("PimP {mode}");
-                        write_case_map(path, &outcome.report, s, name.as_deref(), &what)?;
+                        write_case_map(path, &outcome.report, s, (name.as_deref(), axes), &what)?;
                     }
                     pimp::print_report(out, &outcome.report, args.input.json)
                 }
@@ -184,7 +179,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                             path,
                             &outcome.report,
                             s,
-                            name.as_deref(),
+                            (name.as_deref(), axes),
                             "coupled half-space",
                         )?;
                     }
@@ -248,12 +243,13 @@ pub fn read_case_for(
 }
 
 /// `--map` of a PimP or half-space case: the pressure map titled by the case's name (or
-/// geometry), force and method, with the local Hertz ellipse.
+/// geometry), force and method, with the local Hertz ellipse; its axes named in the bearing
+/// when `axes` gives them (a roller/rib geometry), else by the gap's principal frame.
 fn write_case_map<D>(
     path: &std::path::Path,
     report: &kontakt_case::PimpReport,
     s: &kontakt::field::NormalSolution<D>,
-    name: Option<&str>,
+    (name, axes): (Option<&str>, Option<[[f64; 3]; 2]>),
     what: &str,
 ) -> Result<()> {
     let title = format!(
@@ -262,13 +258,16 @@ fn write_case_map<D>(
         report.force_n,
     );
     let hertz = report.hertz.as_ref().map(|h| h.semi_axes_mm);
-    pimp::write_map(
+    crate::render::write_map(
         path,
         &s.grid,
         &s.pressure,
         &title,
         &[],
-        &pimp::MapNotes::principal(hertz),
+        &match axes {
+            Some(axes) => crate::render::MapNotes::in_bearing(axes, hertz),
+            None => crate::render::MapNotes::principal(hertz),
+        },
     )
 }
 

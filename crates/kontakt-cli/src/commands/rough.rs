@@ -4,7 +4,7 @@
 //! pressure map at the highest load. The physics is `kontakt_case::run_rough_case`.
 
 use crate::cli::RoughArgs;
-use crate::commands::pimp::{MapNotes, write_map};
+use crate::render::{MapNotes, write_map};
 use anyhow::{Context, Result};
 use kontakt_case::rough_case::{RoughCase, RoughReport, run_rough_case};
 use kontakt_plot::{LinePlot, LineStyle, PALETTE, Series};
@@ -31,10 +31,7 @@ pub fn run(args: &RoughArgs, out: &mut impl Write) -> Result<()> {
             r.name.as_deref().unwrap_or("rough contact"),
             100.0 * r.rows.last().map_or(0.0, |row| row.area_fraction)
         );
-        let notes = MapNotes {
-            axes: ("x [mm]".into(), "y [mm]".into()),
-            hertz_semi_axes_mm: None,
-        };
+        let notes = MapNotes::plain();
         write_map(path, &outcome.grid, &outcome.pressure, &title, &[], &notes)?;
     }
     print_report(out, r, args.input.json)
@@ -153,6 +150,7 @@ pub fn write_plot(path: &Path, r: &RoughReport) -> Result<()> {
             y_label: "A / A0 [-]",
             series: &series,
             x_log: false,
+            y_from_zero: false,
         },
         (900, 600),
     )

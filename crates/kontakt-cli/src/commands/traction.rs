@@ -331,6 +331,8 @@ pub fn write_map(path: &Path, m: &ExactMap) -> Result<()> {
                 color: (80, 80, 80),
             }),
             max_marker: None,
+            color_max: None,
+            stretch: None,
         },
         (900, 700),
     )
@@ -406,6 +408,7 @@ pub fn write_plot(path: &Path, r: &TractionReport) -> Result<()> {
             y_label: "Fₜ / (μ Fₙ) [-]",
             series: &series,
             x_log: false,
+            y_from_zero: false,
         },
         (900, 600),
     )

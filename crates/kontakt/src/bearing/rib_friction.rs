@@ -541,16 +541,18 @@ impl RibFrictionModel {
     }
 
     /// The pressure field of the rib contact at the rib load `rib_load` \[N\] by `model`.
-    /// Hertz is sampled on a 64 × 64 grid over the ellipse's bounding box (5 % margin).
+    /// Hertz is sampled on a 64 × 64 grid over the ellipse (5 % margin) in its principal
+    /// frame, where PimP and the half-space solver lay their grids (x along the major axis).
     ///
     /// # Errors
     /// Those of the solvers.
     pub fn solve(&self, model: PressureModel, rib_load: f64) -> Result<NormalSolution<()>> {
         Ok(match model {
             PressureModel::Hertz => {
+                // On the gap's principal frame, as PimP and the half-space solver: the
+                // maps and the friction integral see the three models' grids alike.
                 let h = self.hertz.solve_force(rib_load)?;
-                h.on_grid(h.covering_grid(64, 64, 0.05)?)?
-                    .map_detail(|_| ())
+                h.on_principal_grid(64, 64, 0.05)?.map_detail(|_| ())
             }
             PressureModel::Pimp => self
                 .pimp
