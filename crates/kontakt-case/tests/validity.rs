@@ -11,6 +11,11 @@ use kontakt_case::{Case, Outcome};
 use std::path::{Path, PathBuf};
 use toml::Value;
 
+#[path = "support/toml_keys.rs"]
+#[allow(dead_code)] // only the examples' listing is used here
+mod toml_keys;
+use toml_keys::example_files;
+
 fn examples() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples")
 }
@@ -212,12 +217,7 @@ fn every_method_warns_and_refuses_an_oversize_contact() {
 #[test]
 fn every_outcome_variant_records_its_contacts() {
     let mut seen = std::collections::BTreeSet::new();
-    let mut files: Vec<PathBuf> = std::fs::read_dir(examples())
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-        .collect();
-    files.sort();
+    let files = example_files();
     for file in files {
         let text = std::fs::read_to_string(&file).unwrap();
         let case = Case::from_toml_str(&text).unwrap();

@@ -683,12 +683,15 @@ fn pimp_and_bem_results_outside_the_model_warn_or_are_refused() {
     );
 }
 
-/// A temporary copy of example `file` with `from` replaced by `to`.
-fn edited_example(file: &str, from: &str, to: &str, tag: &str) -> PathBuf {
-    let text = std::fs::read_to_string(examples().join(file)).unwrap();
-    assert!(text.contains(from), "{from}");
+/// A temporary copy of example `file` with each `(from, to)` of `edits` replaced.
+fn edited_example(file: &str, edits: &[(&str, &str)], tag: &str) -> PathBuf {
+    let mut text = std::fs::read_to_string(examples().join(file)).unwrap();
+    for (from, to) in edits {
+        assert!(text.contains(from), "{from}");
+        text = text.replace(from, to);
+    }
     let p = std::env::temp_dir().join(format!("kontakt-cli-{}-{tag}.toml", std::process::id()));
-    std::fs::write(&p, text.replace(from, to)).unwrap();
+    std::fs::write(&p, text).unwrap();
     p
 }
 
@@ -731,7 +734,7 @@ fn every_subcommand_warns_and_refuses_an_oversize_contact() {
             "geometry.bearing.roller_large_end_radius_mm",
         ),
     ] {
-        let p = edited_example(file, from, warn, command);
+        let p = edited_example(file, &[(from, warn)], command);
         for sub in [command, "solve"] {
             let out = kontakt().arg(sub).arg(&p).output().unwrap();
             assert!(
@@ -746,7 +749,7 @@ fn every_subcommand_warns_and_refuses_an_oversize_contact() {
                 "{sub} {file}: {text}"
             );
         }
-        let p = edited_example(file, from, refuse, command);
+        let p = edited_example(file, &[(from, refuse)], command);
         for sub in [command, "solve"] {
             let line = bad(&[sub, p.to_str().unwrap()]);
             assert!(line.contains(&format!(": {key}: ")), "{sub} {file}: {line}");
@@ -761,14 +764,12 @@ fn every_subcommand_warns_and_refuses_an_oversize_contact() {
 fn mindlin_refuses_an_overflowing_report() {
     let p = edited_example(
         "mindlin_fretting.toml",
-        "mu = 0.3",
-        "mu = 1e300",
+        &[
+            ("mu = 0.3", "mu = 1e300"),
+            ("amplitude_n = 20.0", "amplitude_n = 1e301"),
+        ],
         "mindlin-inf",
     );
-    let text = std::fs::read_to_string(&p)
-        .unwrap()
-        .replace("amplitude_n = 20.0", "amplitude_n = 1e301");
-    std::fs::write(&p, text).unwrap();
     for json in [false, true] {
         let mut args = vec!["mindlin", p.to_str().unwrap()];
         if json {
@@ -788,14 +789,12 @@ fn mindlin_refuses_an_overflowing_report() {
 fn extreme_numbers_and_full_disks() {
     let p = edited_example(
         "mindlin_fretting.toml",
-        "mu = 0.3",
-        "mu = 1e150",
+        &[
+            ("mu = 0.3", "mu = 1e150"),
+            ("amplitude_n = 20.0", "amplitude_n = 1e151"),
+        ],
         "mindlin-big",
     );
-    let text = std::fs::read_to_string(&p)
-        .unwrap()
-        .replace("amplitude_n = 20.0", "amplitude_n = 1e151");
-    std::fs::write(&p, text).unwrap();
     let out = kontakt().arg("mindlin").arg(&p).output().unwrap();
     let text = String::from_utf8(out.stdout).unwrap();
     assert!(
