@@ -131,3 +131,21 @@ def test_results_carry_the_size_warning_and_refuse_an_oversize_contact():
     assert "0.47 of body 1" in roller.solve(line_load=2e5).warnings[0]  # b = 4.7 mm
     with pytest.raises(kt.InputError, match="radius1"):
         roller.solve(line_load=1e7)
+
+
+def test_every_method_carries_the_size_warning_through_run(repo):
+    """Issue 30 item 3: kt.run goes through the same check as the CLI, for the models that
+    had none (mindlin, impact)."""
+    tomllib = pytest.importorskip("tomllib")  # Python >= 3.11
+    for example, key, value in [
+        ("mindlin_fretting", ("load", "force_n"), 1e6),
+        ("impact_oblique", ("impact", "speed_mm_per_s"), 1e6),
+    ]:
+        case = tomllib.loads((repo / "examples" / f"{example}.toml").read_text())
+        case[key[0]][key[1]] = value
+        r = kt.run(case)
+        assert r.warnings and "contact size" in r.warnings[-1], r.warnings
+        assert r.warnings == r.to_dict()["warnings"]
+        case[key[0]][key[1]] = value * 100
+        with pytest.raises(kt.InputError):
+            kt.run(case)
