@@ -45,6 +45,7 @@ pub fn print_report(out: &mut impl Write, r: &FrictionReport, json: bool) -> Res
         return crate::output::print_json(out, r);
     }
     let name = crate::output::name_suffix(r.name.as_deref());
+    let num = crate::output::Num;
     writeln!(
         out,
         "kontakt {} — roller-end/rib friction{name}",
@@ -55,8 +56,8 @@ pub fn print_report(out: &mut impl Write, r: &FrictionReport, json: bool) -> Res
         "  pairing {}, {} rollers of {:.1} g, F_a = {} N{}",
         r.pairing,
         r.rollers,
-        r.roller_mass_kg * 1e3,
-        r.axial_load_n,
+        num(r.roller_mass_kg * 1e3),
+        num(r.axial_load_n),
         if r.centrifugal {
             ", centrifugal force included"
         } else {
@@ -67,13 +68,13 @@ pub fn print_report(out: &mut impl Write, r: &FrictionReport, json: bool) -> Res
         Some(eta) => writeln!(
             out,
             "  lubricated: eta = {:.2} mPa·s at the inlet; mu_b = {}",
-            eta * 1e9,
-            r.law.boundary_coefficient
+            num(eta * 1e9),
+            num(r.law.boundary_coefficient)
         )?,
         None => writeln!(
             out,
             "  dry: Coulomb friction, mu = {}",
-            r.law.boundary_coefficient
+            num(r.law.boundary_coefficient)
         )?,
     }
     let mut model = "";
@@ -98,20 +99,20 @@ pub fn print_report(out: &mut impl Write, r: &FrictionReport, json: bool) -> Res
         }
         let h = row
             .film_central_mm
-            .map_or_else(|| "-".to_string(), |h| format!("{:.4}", h * 1e3));
+            .map_or_else(|| "-".to_string(), |h| format!("{:.4}", num(h * 1e3)));
         writeln!(
             out,
             "  {:>8.0} {:>9.3} {:>8.1} {:>9.1} {:>9} {:>7.3} {:>8.5} {:>9.4} {:>10.3} {:>10.2}",
-            row.speed_rpm,
-            row.rib_load_n,
-            row.max_pressure_mpa,
-            row.sliding_speed_mm_s,
+            num(row.speed_rpm),
+            num(row.rib_load_n),
+            num(row.max_pressure_mpa),
+            num(row.sliding_speed_mm_s),
             h,
-            row.lambda,
-            row.coefficient,
-            row.power_w,
-            row.bearing_power_w,
-            row.bearing_drag_torque_nmm
+            num(row.lambda),
+            num(row.coefficient),
+            num(row.power_w),
+            num(row.bearing_power_w),
+            num(row.bearing_drag_torque_nmm)
         )?;
     }
     writeln!(
@@ -136,14 +137,14 @@ pub fn print_report(out: &mut impl Write, r: &FrictionReport, json: bool) -> Res
         let mut speeds: Vec<f64> = r.model_difference.iter().map(|d| d.speed_rpm).collect();
         speeds.dedup();
         for s in speeds {
-            write!(out, "  {s:>8.0}")?;
+            write!(out, "  {:>8.0}", num(s))?;
             for m in &models {
                 let d = r
                     .model_difference
                     .iter()
                     .find(|d| d.speed_rpm == s && d.model == *m);
                 match d {
-                    Some(d) => write!(out, " {:>11.4}", d.torque_vs_hertz)?,
+                    Some(d) => write!(out, " {:>11.4}", num(d.torque_vs_hertz))?,
                     None => write!(out, " {:>11}", "-")?,
                 }
             }

@@ -22,41 +22,42 @@ pub fn print_report(out: &mut impl Write, r: &PimpReport, json: bool) -> Result<
     };
     let column = if r.mode.is_some() { "PimP" } else { "BEM" };
     writeln!(out, "{name}: {method}, {}", r.geometry)?;
+    let num = crate::output::Num;
     let hz = |f: &dyn Fn(&kontakt_case::pimp_case::HertzEcho) -> f64, prec: usize| {
         r.hertz
             .as_ref()
-            .map_or(String::from("-"), |h| format!("{:.*}", prec, f(h)))
+            .map_or(String::from("-"), |h| format!("{:.*}", prec, num(f(h))))
     };
     writeln!(out, "  {:<26} {:>14} {:>14}", "", column, "Hertz (local)")?;
     let rows: [(&str, String, String); 6] = [
         (
             "force [N]",
-            format!("{:.2}", r.force_n),
-            format!("{:.2}", r.force_n),
+            format!("{:.2}", num(r.force_n)),
+            format!("{:.2}", num(r.force_n)),
         ),
         (
             "max pressure [MPa]",
-            format!("{:.1}", r.max_pressure_mpa),
+            format!("{:.1}", num(r.max_pressure_mpa)),
             hz(&|h| h.max_pressure_mpa, 1),
         ),
         (
             "contact area [mm²]",
-            format!("{:.5}", r.contact_area_mm2),
+            format!("{:.5}", num(r.contact_area_mm2)),
             hz(&|h| h.contact_area_mm2, 5),
         ),
         (
             "approach [mm]",
-            format!("{:.6}", r.approach_mm),
+            format!("{:.6}", num(r.approach_mm)),
             hz(&|h| h.approach_mm, 6),
         ),
         (
             "semi-axis a [mm]",
-            format!("{:.4}", r.semi_axes_mm[0]),
+            format!("{:.4}", num(r.semi_axes_mm[0])),
             hz(&|h| h.semi_axes_mm[0], 4),
         ),
         (
             "semi-axis b [mm]",
-            format!("{:.4}", r.semi_axes_mm[1]),
+            format!("{:.4}", num(r.semi_axes_mm[1])),
             hz(&|h| h.semi_axes_mm[1], 4),
         ),
     ];
@@ -66,17 +67,17 @@ pub fn print_report(out: &mut impl Write, r: &PimpReport, json: bool) -> Result<
     writeln!(out, "  {:<26} {:>14}", "patches", r.patches)?;
     let curvature = r
         .centre_line_curvature_per_mm
-        .map_or("-".to_string(), |k| format!("{k:.4}"));
+        .map_or("-".to_string(), |k| format!("{:.4}", num(k)));
     writeln!(
         out,
         "  {:<26} {:>14}",
         "centre-line curv. [1/mm]", curvature
     )?;
     if let Some(a) = r.rib_angle_deg {
-        writeln!(out, "  {:<26} {:>14.3}", "rib angle [deg]", a)?;
+        writeln!(out, "  {:<26} {:>14.3}", "rib angle [deg]", num(a))?;
     }
     if let Some(s) = r.separation_mm {
-        writeln!(out, "  {:<26} {:>14.6}", "pose separation [mm]", s)?;
+        writeln!(out, "  {:<26} {:>14.6}", "pose separation [mm]", num(s))?;
     }
     // `grid_rounds` counts PimP's grid resizes and the half-space solver's domains.
     let work = match &r.solver {
