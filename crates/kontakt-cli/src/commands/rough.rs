@@ -53,8 +53,8 @@ pub fn print_report(out: &mut impl Write, r: &RoughReport, json: bool) -> Result
         r.spacing_mm[0],
         r.spacing_mm[1],
         r.rms_height_mm,
-        r.rms_slope,
-        r.e_star_mpa
+        crate::output::Num(r.rms_slope),
+        crate::output::Num(r.e_star_mpa)
     )?;
     writeln!(
         out,
@@ -69,16 +69,17 @@ pub fn print_report(out: &mut impl Write, r: &RoughReport, json: bool) -> Result
         "gap [mm]",
         "iter"
     )?;
+    let num = crate::output::Num;
     for row in &r.rows {
         writeln!(
             out,
             "  {:>12.4} {:>12.5} {:>10.5} {:>8.4} {:>10.5} {:>12.1} {:>8} {:>12.4e} {:>6}",
-            row.mean_pressure_mpa,
-            row.reduced_pressure,
-            row.area_fraction,
-            row.kappa,
-            row.persson_area_fraction,
-            row.max_pressure_mpa,
+            num(row.mean_pressure_mpa),
+            num(row.reduced_pressure),
+            num(row.area_fraction),
+            num(row.kappa),
+            num(row.persson_area_fraction),
+            num(row.max_pressure_mpa),
             row.patches,
             row.mean_gap_mm,
             row.iterations
