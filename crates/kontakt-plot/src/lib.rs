@@ -491,6 +491,13 @@ fn validate_field(map: &FieldMap) -> Result<(), PlotError> {
         .checked_mul(map.ny)
         .ok_or_else(|| PlotError::invalid("nx*ny", "overflow", "a grid that fits in memory"))?;
     check_values("values", map.values, n)?;
+    for (k, overlay) in map.overlays.iter().enumerate() {
+        check_values(
+            &format!("overlays[{k}] ({:?}).values", overlay.label),
+            overlay.values,
+            n,
+        )?;
+    }
     if let Some(c) = map.color_max
         && !(c.is_finite() && c > 0.0)
     {
