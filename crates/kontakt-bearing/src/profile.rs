@@ -331,8 +331,8 @@ impl Profile {
                 length_mm,
                 flat_length_mm,
             } => {
-                let u = ((ax - 0.5 * flat_length_mm) / (0.5 * (length_mm - flat_length_mm)))
-                    .max(0.0);
+                let u =
+                    ((ax - 0.5 * flat_length_mm) / (0.5 * (length_mm - flat_length_mm))).max(0.0);
                 log_drop(drop_scale_mm, 1.0, u)
             }
             Profile::Lundberg {
@@ -493,7 +493,11 @@ impl Profile {
                     return Err(Error::invalid("k2", k2, "0 < k2 <= 1"));
                 }
                 if let Some(zm) = edge_drop_mm {
-                    pos("edge_drop_mm", zm, "a finite drop > 0 mm (omit it for no cap)")?;
+                    pos(
+                        "edge_drop_mm",
+                        zm,
+                        "a finite drop > 0 mm (omit it for no cap)",
+                    )?;
                 }
             }
             Profile::Circular {
@@ -597,7 +601,10 @@ mod tests {
                 let x = 9.99 * f64::from(i) / 99.0;
                 let d = p.drop(x);
                 assert_eq!(d, p.drop(-x), "{p:?} at {x}");
-                assert!(d.is_finite() && d >= last - 1e-15, "{p:?} at {x}: {d} < {last}");
+                assert!(
+                    d.is_finite() && d >= last - 1e-15,
+                    "{p:?} at {x}: {d} < {last}"
+                );
                 last = d;
             }
         }
