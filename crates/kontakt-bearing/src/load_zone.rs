@@ -54,7 +54,7 @@ fn check(eps: f64, n: f64) -> Result<()> {
             "a finite load-zone parameter > 0",
         ));
     }
-    if !(n.is_finite() && n >= 1.0 && n <= 3.0) {
+    if !(n.is_finite() && (1.0..=3.0).contains(&n)) {
         return Err(Error::invalid(
             "exponent",
             n,

@@ -155,11 +155,39 @@ pub enum Profile {
 /// is the last node's value.
 #[derive(Debug, Clone, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(try_from = "TableData", into = "TableData"))]
 pub struct TabulatedProfile {
     x_mm: Vec<f64>,
     drop_mm: Vec<f64>,
-    #[cfg_attr(feature = "serde", serde(skip))]
     slopes: Vec<f64>,
+}
+
+/// The serialized form of a [`TabulatedProfile`]: the table alone, validated and its
+/// slopes recomputed when read.
+#[cfg(feature = "serde")]
+#[derive(serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct TableData {
+    x_mm: Vec<f64>,
+    drop_mm: Vec<f64>,
+}
+
+#[cfg(feature = "serde")]
+impl TryFrom<TableData> for TabulatedProfile {
+    type Error = Error;
+    fn try_from(t: TableData) -> Result<Self> {
+        TabulatedProfile::new(t.x_mm, t.drop_mm)
+    }
+}
+
+#[cfg(feature = "serde")]
+impl From<TabulatedProfile> for TableData {
+    fn from(t: TabulatedProfile) -> Self {
+        TableData {
+            x_mm: t.x_mm,
+            drop_mm: t.drop_mm,
+        }
+    }
 }
 
 impl TabulatedProfile {

@@ -210,7 +210,7 @@ impl RollerBearing {
                 "3 <= rollers <= 10000",
             ));
         }
-        if self.slices % 2 == 0 || !(1..=10_001).contains(&self.slices) {
+        if self.slices.is_multiple_of(2) || !(1..=10_001).contains(&self.slices) {
             return Err(Error::invalid(
                 "slices",
                 self.slices,
