@@ -178,7 +178,6 @@ fn equilibrium_residual_and_round_trip() {
         let tol = if i < 3 { 1e-11 } else { 1e-13 };
         assert!((got - want).abs() < tol, "{i}: {:?}", sol.displacement);
     }
-    eprintln!("round trip: {sol:?}");
     // a warm start from the solution takes at most one iteration
     let again = s
         .solve_from(&RingLoad::forces(f), sol.displacement)
@@ -238,7 +237,6 @@ fn slice_count_convergence() {
     let (q_ref, z_ref) = out[3];
     let err: Vec<f64> = out[..3].iter().map(|(q, _)| rel(*q, q_ref)).collect();
     let errz: Vec<f64> = out[..3].iter().map(|(_, z)| rel(*z, z_ref)).collect();
-    eprintln!("slice convergence: {out:?} {err:?} {errz:?}");
     assert!(
         err[0] < 5e-3 && err[1] < err[0] && err[2] < err[1],
         "{err:?} {out:?}"
@@ -315,7 +313,6 @@ fn loads_the_bearing_cannot_carry_are_named() {
     let sol = t
         .solve(&RingLoad::forces([1e3, 0.0, 1e3, 0.0, 0.0]))
         .unwrap();
-    eprintln!("free tilts: {sol:?}");
     if sol.status.converged() {
         let (g, _) = t.load_at(sol.displacement);
         assert!(
