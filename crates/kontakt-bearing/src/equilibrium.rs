@@ -113,6 +113,7 @@ pub struct RollerLoad {
 
 /// The result of a solve.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct RollerSolution {
     /// Inner-ring displacement `(δx, δy, δz, θx, θy)`, mm and rad.
     pub displacement: [f64; 5],
@@ -352,8 +353,8 @@ impl RollerBearingSolver {
             Dof::Displacement(_) => None,
         };
         let kind = self.bearing.kind;
+        // with the axial displacement free, a preload does not help: the ring moves out
         if matches!(kind, RollerBearingKind::Tapered | RollerBearingKind::Thrust)
-            && self.bearing.clearance_mm >= 0.0
             && let Some(fz) = f(2)
         {
             if fz < 0.0 {
@@ -388,7 +389,7 @@ impl RollerBearingSolver {
     /// [`Error::InvalidInput`] naming the load component (`load.fz_n`, ...) for a
     /// non-finite value, a force in a direction the bearing cannot carry (an axial force on
     /// a cylindrical, a radial one on a thrust bearing), a negative axial force on a single
-    /// row, or a radial force on a tapered bearing with too little axial force. Loads that
+    /// row (also when preloaded: with the axial displacement free the ring moves out), or a radial force on a tapered bearing with too little axial force. Loads that
     /// cannot be carried for other reasons end with [`Termination::Diverged`] and a note.
     pub fn solve(&mut self, load: &RingLoad) -> Result<RollerSolution> {
         self.check_load(load)?;
@@ -459,7 +460,13 @@ impl RollerBearingSolver {
                     let l = b.effective_length_mm;
                     approach(8.0 * m.abs() / (z * l)) / (0.5 * l)
                 };
-                u[i] = theta * m.signum();
+                // plus the tilt that closes the play at the farthest slice
+                let arm = if sa > 1e-3 {
+                    r * sa
+                } else {
+                    0.5 * b.effective_length_mm
+                };
+                u[i] = (theta + play.max(0.0) / arm) * m.signum();
             }
         }
         for (i, d) in load.dofs.iter().enumerate() {
@@ -563,7 +570,26 @@ impl RollerBearingSolver {
                 note = Some("the Newton system is singular: the load cannot be carried");
                 break;
             };
-            let step = chol.solve(&rhs);
+            let mut step = chol.solve(&rhs);
+            if weak {
+                // free flight (a direction without contact): stretch the step until the
+                // first slice it closes reaches the reference approach
+                let d_ref = (f_ref / (b.rollers * b.roller_stiffness)).powf(0.9);
+                let mut t_touch = f64::INFINITY;
+                for (j, fr) in self.frames.iter().enumerate() {
+                    let (s0, s1) = (fr.g0.dot(&step), fr.g1.dot(&step));
+                    for (kk, &xk) in self.x.iter().enumerate() {
+                        let gd = s0 + s1 * xk;
+                        if gd > 0.0 {
+                            let need = d_ref - self.approach[j * self.x.len() + kk];
+                            t_touch = t_touch.min(need / gd);
+                        }
+                    }
+                }
+                if t_touch.is_finite() && t_touch > 1.0 {
+                    step *= t_touch;
+                }
+            }
             // Armijo backtracking on Φ(u) − F·u (convex), whose gradient is −rhs
             let merit = phi - target.dot(&u);
             let slope = -rhs.dot(&step);

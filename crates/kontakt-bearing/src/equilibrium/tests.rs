@@ -368,3 +368,45 @@ fn thrust_bearing_under_axial_load_and_moment() {
     let (g, _) = s.load_at(sol.displacement);
     assert!((g[3] - 5e4).abs() < 1e-9 * 8_000.0 * 30.0);
 }
+
+#[test]
+fn converges_over_five_decades_of_load_with_small_load_zones_and_moments() {
+    // large clearance and small loads (one or two rollers in contact), preload, moments
+    let mut worst = 0;
+    for clearance in [-0.01, 0.0, 0.02, 0.1] {
+        for f in [1.0, 1e2, 1e4, 1e5] {
+            let mut b = crb();
+            b.roller_profile = Profile::iso(12.0, 10.0);
+            b.clearance_mm = clearance;
+            b.first_roller_azimuth_rad = 0.3;
+            let mut s = RollerBearingSolver::new(b).unwrap();
+            for load in [
+                [f, 0.3 * f, 0.0, 0.0, 0.0],
+                [f, -f, 0.0, 2.0 * f, 1.0 * f],
+                [0.0, 0.0, 0.0, 0.0, 5.0 * f],
+            ] {
+                let sol = s.solve(&RingLoad::forces(load)).unwrap();
+                assert!(sol.status.converged(), "s {clearance} {load:?}: {sol:?}");
+                let (g, _) = s.load_at(sol.displacement);
+                let f_ref = load[..3].iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+                let f_ref = f_ref.max(load[3].hypot(load[4]) / 30.0);
+                for i in 0..5 {
+                    let scale = if i < 3 { f_ref } else { 30.0 * f_ref };
+                    assert!((g[i] - load[i]).abs() <= 1e-9 * scale, "{load:?}: {g:?}");
+                }
+                worst = worst.max(sol.status.iterations);
+            }
+        }
+    }
+    assert!(worst <= 40, "{worst} iterations");
+    // a tapered bearing, tilts free, combined load with a moment, over the decades
+    for f in [1.0, 1e2, 1e4, 1e5] {
+        let mut b = trb();
+        b.roller_profile = Profile::iso(b.effective_length_mm, b.roller_diameter_mm);
+        b.clearance_mm = 0.01;
+        let mut s = RollerBearingSolver::new(b).unwrap();
+        let load = [0.3 * f, 0.1 * f, f, 0.0, 2.0 * f];
+        let sol = s.solve(&RingLoad::forces(load)).unwrap();
+        assert!(sol.status.converged(), "{load:?}: {sol:?}");
+    }
+}
