@@ -436,6 +436,16 @@ impl Profile {
     pub fn validate(&self) -> Result<()> {
         use kontakt::error::positive_as as pos;
         const LEN: &str = "a finite length > 0 mm";
+        // the design contact of Lundberg, Johns-Gohar and Fujiwara
+        let design_load = |load_n: f64, length_mm: f64, contact_modulus_mpa: f64| {
+            pos("load_n", load_n, "a finite load > 0 N")?;
+            pos("length_mm", length_mm, LEN)?;
+            pos(
+                "contact_modulus_mpa",
+                contact_modulus_mpa,
+                "a finite modulus > 0 MPa",
+            )
+        };
         match *self {
             Profile::Straight | Profile::Tabulated(_) => {}
             Profile::IsoLogarithmic {
@@ -465,13 +475,7 @@ impl Profile {
                 length_mm,
                 contact_modulus_mpa,
             } => {
-                pos("load_n", load_n, "a finite load > 0 N")?;
-                pos("length_mm", length_mm, LEN)?;
-                pos(
-                    "contact_modulus_mpa",
-                    contact_modulus_mpa,
-                    "a finite modulus > 0 MPa",
-                )?;
+                design_load(load_n, length_mm, contact_modulus_mpa)?;
             }
             Profile::JohnsGohar {
                 load_n,
@@ -479,13 +483,7 @@ impl Profile {
                 contact_modulus_mpa,
                 reduced_radius_mm,
             } => {
-                pos("load_n", load_n, "a finite load > 0 N")?;
-                pos("length_mm", length_mm, LEN)?;
-                pos(
-                    "contact_modulus_mpa",
-                    contact_modulus_mpa,
-                    "a finite modulus > 0 MPa",
-                )?;
+                design_load(load_n, length_mm, contact_modulus_mpa)?;
                 pos("reduced_radius_mm", reduced_radius_mm, LEN)?;
                 let b = Self::johns_gohar_half_width(
                     load_n,
@@ -509,13 +507,7 @@ impl Profile {
                 k2,
                 edge_drop_mm,
             } => {
-                pos("load_n", load_n, "a finite load > 0 N")?;
-                pos("length_mm", length_mm, LEN)?;
-                pos(
-                    "contact_modulus_mpa",
-                    contact_modulus_mpa,
-                    "a finite modulus > 0 MPa",
-                )?;
+                design_load(load_n, length_mm, contact_modulus_mpa)?;
                 pos("k1", k1, "a finite load coefficient > 0")?;
                 if !(k2 > 0.0 && k2 <= 1.0) {
                     return Err(Error::invalid("k2", k2, "0 < k2 <= 1"));
