@@ -410,3 +410,43 @@ fn converges_over_five_decades_of_load_with_small_load_zones_and_moments() {
         assert!(sol.status.converged(), "{load:?}: {sol:?}");
     }
 }
+
+#[test]
+fn pure_axial_roller_loads_match_todays_two_dimensional_roller_loads() {
+    // kontakt::bearing::roller_loads (issue 11): the 2-D force balance of one representative
+    // roller under pure axial load, in its own frame (z toward the apex, n_i = (cos α_i,
+    // −sin α_i)); here z is mirrored, so its rib normal (d_x, d_z) is β = atan2(−d_z, d_x)
+    use kontakt::bearing::{TaperedKinematics, roller_loads};
+    use nalgebra::{Point3, Vector3};
+    let (alpha_i, half) = (11.17_f64.to_radians(), 1.5_f64.to_radians());
+    let k = TaperedKinematics::new(alpha_i, half, Point3::origin(), 40.0, 100.0, 0.0).unwrap();
+    let e_r = k.directions(0.0).roller_axis;
+    let (fa, z) = (9_000.0, 23usize);
+    for tilt_deg in [0.0_f64, 2.0, -2.0, 5.0] {
+        // the rib normal: back along the roller axis, turned in the section plane
+        let (s, c) = tilt_deg.to_radians().sin_cos();
+        let d = Vector3::new(-e_r.x * c - e_r.z * s, 0.0, e_r.x * s - e_r.z * c);
+        let old = roller_loads(&k, &d, fa, z, 0.0).unwrap();
+        let mut b = trb();
+        b.rollers = z;
+        b.cone_angle_rad = alpha_i;
+        b.contact_angle_rad = k.outer_raceway_angle();
+        b.rib_angle_rad = Some((-d.z).atan2(d.x));
+        let mut solver = RollerBearingSolver::new(b).unwrap();
+        let sol = solver
+            .solve(&RingLoad::forces([0.0, 0.0, fa, 0.0, 0.0]))
+            .unwrap();
+        assert!(sol.status.converged());
+        for r in solver.roller_loads() {
+            assert!(
+                rel(r.outer_n, old.outer_raceway) < 1e-9,
+                "{tilt_deg}: {r:?} {old:?}"
+            );
+            assert!(
+                rel(r.inner_n, old.inner_raceway) < 1e-9,
+                "{tilt_deg}: {r:?} {old:?}"
+            );
+            assert!(rel(r.rib_n, old.rib) < 1e-9, "{tilt_deg}: {r:?} {old:?}");
+        }
+    }
+}
