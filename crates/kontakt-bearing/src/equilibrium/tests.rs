@@ -450,3 +450,23 @@ fn pure_axial_roller_loads_match_todays_two_dimensional_roller_loads() {
         }
     }
 }
+
+#[test]
+fn a_moment_beyond_what_the_axial_load_holds_ends_with_a_status_not_a_number() {
+    // a thrust bearing: |M| > F_z R lifts every roller on one side and more; no equilibrium
+    let mut s = RollerBearingSolver::new(RollerBearing::thrust(60.0, 16, 6.0, 8.0)).unwrap();
+    let sol = s
+        .solve(&RingLoad::forces([
+            0.0,
+            0.0,
+            1_000.0,
+            0.0,
+            2.0 * 1_000.0 * 30.0,
+        ]))
+        .unwrap();
+    assert!(!sol.status.converged(), "{sol:?}");
+    assert!(sol.note.is_some());
+    let finite = |a: &[f64]| a.iter().all(|v| v.is_finite());
+    assert!(finite(&sol.displacement) && finite(&sol.load) && sol.status.residual.is_finite());
+    assert!(sol.stiffness.iter().all(|row| finite(row)));
+}
