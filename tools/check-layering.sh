@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Layering check of the kontakt library (issue 10, item 6). Run from .ci/run; needs only
+# Layering check of the kontakt crates (issue 10, item 6). Run from .ci/run; needs only
 # bash, grep and awk.
 #
 # It builds the import graph between the top-level modules of crates/kontakt/src (a file
@@ -18,6 +18,11 @@
 # not fail the check; once such a rule passes, the check fails until the entry is removed,
 # so an exemption cannot outlive the violation.
 #
+# The other crates (kontakt-case, kontakt-cli) have no layer table: only no-cycles is run, on
+# a graph whose nodes are files rather than top-level modules (`commands/friction.rs` is
+# `commands/friction`), so a cycle between sibling submodules is found too (the CLI's
+# commands/friction and commands/pimp imported each other until issue 30, item 21).
+#
 # Usage: tools/check-layering.sh [path/to/crate]   (default crates/kontakt; exit 0: clean, 1: violation)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -25,7 +30,8 @@ CRATE=${1:-crates/kontakt}
 SRC=$CRATE/src
 
 RULES=(case-layer halfspace-pimp layer-order no-cycles)
-# Other crates of the workspace (kontakt-case) have no layer table: only cycles are refused.
+# Other crates of the workspace (kontakt-case, kontakt-cli) have no layer table: only cycles
+# are refused.
 if [[ $CRATE != crates/kontakt ]]; then
   RULES=(no-cycles)
 fi
@@ -56,32 +62,73 @@ if [[ ! -d $SRC ]]; then
   exit 2
 fi
 
+# --- the modules ----------------------------------------------------------------------------
+# GRAIN=top (crates/kontakt): a module is a top-level file `x.rs` or directory `x/`.
+# GRAIN=file (the other crates): every file is a module, `a/b.rs` is `a/b` and `a/mod.rs` is
+# `a`, so sibling submodules (the CLI's commands/friction and commands/pimp) are nodes of
+# their own; an import between a module and its own ancestor (a parent re-exporting its
+# children, a child using its parent's helpers) is not an edge.
+GRAIN=top
+[[ $CRATE != crates/kontakt ]] && GRAIN=file
+files=$(find "$SRC" -name '*.rs' ! -path "$SRC/lib.rs" ! -path "$SRC/main.rs" | LC_ALL=C sort)
+module_of() {
+  local rel=${1#"$SRC"/}
+  if [[ $GRAIN == top ]]; then
+    rel=${rel%%/*}
+    echo "${rel%.rs}"
+  else
+    rel=${rel%.rs}
+    echo "${rel%/mod}"
+  fi
+}
+modules=$(for f in $files; do module_of "$f"; done | LC_ALL=C sort -u)
+
 # --- the import graph: lines "from to file:line" -------------------------------------------
-edges=$(
-  find "$SRC" -name '*.rs' ! -path "$SRC/lib.rs" | LC_ALL=C sort | while read -r f; do
-    rel=${f#"$SRC"/}
-    mod=${rel%%/*}
-    mod=${mod%.rs}
-    awk -v mod="$mod" -v file="$f" '
-      function top(s,   m) {            # the first path segment of s, if it is a module name
-        if (match(s, /^[ \t\n]*[a-z_][a-z0-9_]*/)) {
-          m = substr(s, RSTART, RLENGTH); gsub(/[ \t\n]/, "", m); return m
+# The awk prints each `crate::a::b::c` path (and, at file grain, each unindented
+# `use super::a::b`, resolved against the file's parent) as a/b/c; `resolve` then maps it to
+# the longest known module prefix (at top grain: its first segment).
+raw_edges=$(
+  for f in $files; do
+    mod=$(module_of "$f")
+    # `super` of module a/b (a/b.rs or a/b/mod.rs) is a; of a top-level module, the root
+    parent=${mod%/*}
+    [[ $parent == "$mod" ]] && parent=""
+    awk -v mod="$mod" -v file="$f" -v grain="$GRAIN" -v parent="$parent" '
+      function path(s,   m) {          # the leading module path of s, as a/b/c
+        if (match(s, /^[ \t\n]*[a-z_][a-z0-9_]*([ \t\n]*::[ \t\n]*[a-z_][a-z0-9_]*)*/)) {
+          m = substr(s, RSTART, RLENGTH); gsub(/[ \t\n]/, "", m); gsub(/::/, "/", m); return m
         }
         return ""
       }
-      function emit(to, at) { if (to != "" && to != mod && to != "self" && to != "super") print mod, to, file ":" at }
+      function emit(to, at) { if (to != "" && to != "self" && to != "super") print mod, to, file ":" at }
       {
         line = $0
         # strip comments (doc comments included); a "//" inside a string literal is rare
-        # enough in this crate not to matter
+        # enough in these crates not to matter
         if (in_block) { if (sub(/.*\*\//, "", line)) in_block = 0; else next }
         gsub(/\/\*.*\*\//, "", line)
         if (sub(/\/\*.*/, "", line)) in_block = 1
         sub(/\/\/.*/, "", line)
+        if (grain == "file" && match(line, /^use[ \t]+super::/)) {   # a file-level `use super::`
+          rest = substr(line, RSTART + RLENGTH)
+          if (match(rest, /^([a-z_][a-z0-9_]*::)*\{/)) {              # super::{a, b::C} or super::x::{...}
+            pre = substr(rest, 1, RLENGTH - 1); gsub(/::/, "/", pre)
+            rest = substr(rest, RLENGTH + 1); d = 0; item = ""
+            for (i = 1; i <= length(rest); i++) {
+              c = substr(rest, i, 1)
+              if (c == "{") d++
+              if (c == "}" && d-- == 0) { emit(parent (parent == "" ? "" : "/") pre path(item), NR); break }
+              if (c == "," && d == 0) { emit(parent (parent == "" ? "" : "/") pre path(item), NR); item = ""; continue }
+              item = item c
+            }
+          } else emit(parent (parent == "" ? "" : "/") path(rest), NR)
+          next
+        }
         if (group != "") {                  # inside a multi-line `crate::{ ... }`
           group = group " " line; line = ""
-        } else if (match(line, /crate::\{/)) {
-          group = substr(line, RSTART + 7); start = NR
+        } else if (match(line, /crate::([a-z_][a-z0-9_]*::)*\{/)) {
+          prefix = substr(line, RSTART + 7, RLENGTH - 8); gsub(/::/, "/", prefix)
+          group = substr(line, RSTART + RLENGTH - 1); start = NR
           line = substr(line, 1, RSTART - 1)
         }
         if (group != "") {
@@ -91,14 +138,14 @@ edges=$(
           for (i = 1; i <= length(group); i++) {
             c = substr(group, i, 1)
             if (c == "{") { depth++; if (depth == 1) { item = ""; continue } }
-            if (c == "}") { depth--; if (depth == 0) { emit(top(item), start); break } }
-            if (c == "," && depth == 1) { emit(top(item), start); item = ""; continue }
+            if (c == "}") { depth--; if (depth == 0) { emit(prefix path(item), start); break } }
+            if (c == "," && depth == 1) { emit(prefix path(item), start); item = ""; continue }
             item = item c
           }
           line = line " " substr(group, i + 1); group = ""
         }
-        while (match(line, /(^|[^a-zA-Z0-9_])crate::[a-z_][a-z0-9_]*/)) {
-          seg = substr(line, RSTART, RLENGTH); sub(/.*crate::/, "", seg)
+        while (match(line, /(^|[^a-zA-Z0-9_])crate::[a-z_][a-z0-9_]*(::[a-z_][a-z0-9_]*)*/)) {
+          seg = substr(line, RSTART, RLENGTH); sub(/.*crate::/, "", seg); gsub(/::/, "/", seg)
           emit(seg, NR)
           line = substr(line, RSTART + RLENGTH)
         }
@@ -107,15 +154,29 @@ edges=$(
     ' "$f"
   done
 )
-
-modules=$(find "$SRC" -mindepth 1 -maxdepth 1 \( -name '*.rs' -o -type d \) ! -name lib.rs \
-  -exec basename {} .rs \; | LC_ALL=C sort)
+# Resolve each path to a module and drop self-imports (and, at file grain, imports between
+# a module and its ancestor).
+edges=$(awk -v grain="$GRAIN" -v mods="$modules" '
+  BEGIN { n = split(mods, m, /[ \n]+/); for (i = 1; i <= n; i++) known[m[i]] }
+  function ancestor(a, b) { return index(b "/", a "/") == 1 }
+  NF >= 3 {
+    to = $2
+    if (grain == "top" || to == "kontakt_case") { sub(/\/.*/, "", to) }
+    else {
+      while (!(to in known) && index(to, "/")) sub(/\/[^\/]*$/, "", to)
+      if (!(to in known)) next          # an item of the crate root (main.rs, lib.rs)
+    }
+    if (to == $1) next
+    if (grain == "file" && (ancestor(to, $1) || ancestor($1, to))) next
+    print $1, to, $3
+  }' <<<"$raw_edges")
 
 # --- report the graph ---------------------------------------------------------------------
 echo "check-layering: module imports in $SRC (code only, comments ignored)"
+width=$(awk '{ if (length($0) > w) w = length($0) } END { print w }' <<<"$modules")
 for m in $modules; do
   deps=$(awk -v m="$m" '$1 == m { print $2 }' <<<"$edges" | LC_ALL=C sort -u | tr '\n' ' ')
-  printf '  %-11s -> %s\n' "$m" "${deps:-(nothing)}"
+  printf '  %-*s -> %s\n' "$width" "$m" "${deps:-(nothing)}"
 done
 
 # --- the rules: each prints its violations, one per line, and nothing when it holds -------

@@ -61,6 +61,13 @@ pub struct BemOutcome {
 /// Invalid input (named by its case-file key), bodies that do not touch, a contact that
 /// reaches the border of a map or a fixed extent, and non-convergence.
 pub fn run_bem_case(case: &PimpCase, base_dir: &Path) -> Result<BemOutcome> {
+    crate::validity::checked(run_bem_case_unchecked(case, base_dir)?)
+}
+
+crate::validity::checked_report!(BemOutcome, report);
+
+/// [`run_bem_case`] before the validity check of [`crate::validity::checked`].
+pub(crate) fn run_bem_case_unchecked(case: &PimpCase, base_dir: &Path) -> Result<BemOutcome> {
     run(case, base_dir, None)
 }
 
@@ -78,7 +85,7 @@ pub fn run_bem_case_on_map(case: &PimpCase, map: GapMap) -> Result<BemOutcome> {
             "\"map\" for a case solved on a map in memory",
         ));
     }
-    run(case, Path::new("."), Some(map))
+    crate::validity::checked(run(case, Path::new("."), Some(map))?)
 }
 
 fn run(case: &PimpCase, base_dir: &Path, given: Option<GapMap>) -> Result<BemOutcome> {
@@ -123,6 +130,9 @@ fn run(case: &PimpCase, base_dir: &Path, given: Option<GapMap>) -> Result<BemOut
             "approach" => "load.approach_mm".into(),
             "cells" => "bem.cells".into(),
             "extent" => "bem.extent_mm".into(),
+            "e_star" => "body1.e_mpa, body2.e_mpa".into(),
+            "spacing[0]" => "geometry.spacing_mm[0]".into(),
+            "spacing[1]" => "geometry.spacing_mm[1]".into(),
             other => other.into(),
         })
     };
@@ -133,82 +143,83 @@ fn run(case: &PimpCase, base_dir: &Path, given: Option<GapMap>) -> Result<BemOut
             "exactly one of force_n or approach_mm (or neither for surfaces placed in contact)",
         )
     };
-    let (label, solution, separation, rib_angle, curvature, boundary, warnings) = match &case
-        .geometry
-    {
-        GeometrySpec::Map {
-            file,
-            spacing_mm,
-            values,
-            boundary,
-        } => {
-            let path = base_dir.join(file);
-            let map = match given {
-                Some(map) => Ok(map),
-                None => crate::maps::read_gap_map(&path, *spacing_mm, *values),
-            }
-            .map_err(|e| {
-                e.map_field(|f| match f {
-                    "spacing[0]" => "geometry.spacing_mm[0]".into(),
-                    "spacing[1]" => "geometry.spacing_mm[1]".into(),
-                    "gap_map.file" | "gap_map" => "geometry.file".into(),
-                    other => other.into(),
-                })
-            })?;
-            let control = match (case.load.force_n, case.load.approach_mm) {
-                (Some(f), None) => Control::Force(f),
-                (None, Some(d)) => Control::Approach(d),
-                _ => return Err(load_error()),
-            };
-            let s = bem.solve_map(&map, control, *boundary).map_err(map_load)?;
-            // A map's bodies are unknown: no size check.
-            (
-                format!("gap map {file}"),
-                s,
-                None,
-                None,
-                None,
-                *boundary,
-                Vec::new(),
-            )
-        }
-        g => {
-            let GapSetup {
-                label,
-                source,
-                separation,
-                rib_angle,
-            } = gap_setup(g)?;
-            precheck(g, source.as_ref(), m1, m2, &case.load, separation)?;
-            let s = match (case.load.force_n, case.load.approach_mm, separation) {
-                (Some(f), None, _) => bem.solve_force(source.as_ref(), f),
-                (None, Some(d), _) => bem.solve_approach(source.as_ref(), d),
-                (None, None, Some(sep)) if sep < 0.0 => bem.solve_approach(source.as_ref(), -sep),
-                (None, None, Some(sep)) => {
-                    return Err(Error::Geometry {
-                        field: "geometry".into(),
-                        reason: format!(
-                            "the bodies do not touch: separation = {sep:.6e} mm (give \
-                             load.force_n or load.approach_mm to press them together)"
-                        ),
-                    });
+    let (label, solution, separation, rib_angle, curvature, boundary, (warnings, contacts)) =
+        match &case.geometry {
+            GeometrySpec::Map {
+                file,
+                spacing_mm,
+                values,
+                boundary,
+            } => {
+                let path = base_dir.join(file);
+                let map = match given {
+                    Some(map) => Ok(map),
+                    None => crate::maps::read_gap_map(&path, *spacing_mm, *values),
                 }
-                _ => return Err(load_error()),
+                .map_err(|e| {
+                    e.map_field(|f| match f {
+                        "spacing[0]" => "geometry.spacing_mm[0]".into(),
+                        "spacing[1]" => "geometry.spacing_mm[1]".into(),
+                        "gap_map.file" | "gap_map" => "geometry.file".into(),
+                        other => other.into(),
+                    })
+                })?;
+                let control = match (case.load.force_n, case.load.approach_mm) {
+                    (Some(f), None) => Control::Force(f),
+                    (None, Some(d)) => Control::Approach(d),
+                    _ => return Err(load_error()),
+                };
+                let s = bem.solve_map(&map, control, *boundary).map_err(map_load)?;
+                // A map's bodies are unknown: no size check.
+                (
+                    format!("gap map {file}"),
+                    s,
+                    None,
+                    None,
+                    None,
+                    *boundary,
+                    (Vec::new(), Vec::new()),
+                )
             }
-            .map_err(map_load)?;
-            let warnings = zone_warnings(g, source.as_ref(), &s)?;
-            let k = source.curvature();
-            (
-                label,
-                s,
-                separation,
-                rib_angle,
-                Some(k),
-                kontakt::halfspace::Boundary::Free,
-                warnings,
-            )
-        }
-    };
+            g => {
+                let GapSetup {
+                    label,
+                    source,
+                    separation,
+                    rib_angle,
+                } = gap_setup(g)?;
+                precheck(g, source.as_ref(), m1, m2, &case.load, separation)?;
+                let s = match (case.load.force_n, case.load.approach_mm, separation) {
+                    (Some(f), None, _) => bem.solve_force(source.as_ref(), f),
+                    (None, Some(d), _) => bem.solve_approach(source.as_ref(), d),
+                    (None, None, Some(sep)) if sep < 0.0 => {
+                        bem.solve_approach(source.as_ref(), -sep)
+                    }
+                    (None, None, Some(sep)) => {
+                        return Err(Error::Geometry {
+                            field: "geometry".into(),
+                            reason: format!(
+                                "the bodies do not touch: separation = {sep:.6e} mm (give \
+                             load.force_n or load.approach_mm to press them together)"
+                            ),
+                        });
+                    }
+                    _ => return Err(load_error()),
+                }
+                .map_err(map_load)?;
+                let warnings = zone_warnings(g, source.as_ref(), &s)?;
+                let k = source.curvature();
+                (
+                    label,
+                    s,
+                    separation,
+                    rib_angle,
+                    Some(k),
+                    kontakt::halfspace::Boundary::Free,
+                    warnings,
+                )
+            }
+        };
     let report = PimpReport::assemble(
         ReportMeta {
             name: case.name.clone(),
@@ -230,6 +241,7 @@ fn run(case: &PimpCase, base_dir: &Path, given: Option<GapMap>) -> Result<BemOut
             hertz: curvature.and_then(|k| hertz_echo(k, m1, m2, solution.force)),
             grid_rounds: solution.domains,
             warnings,
+            contacts,
         },
         &solution,
     );

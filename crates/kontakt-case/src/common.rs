@@ -67,116 +67,476 @@ pub fn read_case_text(reader: impl std::io::Read, label: &str) -> Result<String>
 }
 
 /// Parse TOML into `T`, turning the reader's errors into [`Error::CaseFile`]: the line,
-/// the key path as the file spells it and a message in the schema's words.
-pub(crate) fn parse_toml<T: serde::de::DeserializeOwned>(text: &str) -> Result<T> {
-    toml::from_str(text).map_err(|e| case_file_error(text, &e))
+/// the full key path (`geometry.face.radius_mm`) and a message in the schema's words. Keys
+/// that the schema does not hold are refused (see [`check_consumed`]), in every table.
+pub(crate) fn parse_toml<T: serde::de::DeserializeOwned + Serialize>(text: &str) -> Result<T> {
+    let value: T = toml::from_str(text).map_err(|e| case_file_error::<T>(text, &e))?;
+    let table: toml::Table = toml::from_str(text).map_err(|e| case_file_error::<T>(text, &e))?;
+    check_consumed(&table, &value, Some(text))?;
+    Ok(value)
 }
 
-/// [`Error::CaseFile`] from a TOML reader's error on `text`.
+/// [`parse_toml`] for an already parsed table (a sweep's edited base case): the same
+/// messages, without line numbers.
+pub(crate) fn parse_table<T: serde::de::DeserializeOwned + Serialize>(
+    table: toml::Table,
+) -> Result<T> {
+    let value: T = table
+        .clone()
+        .try_into()
+        .map_err(|e: toml::de::Error| located_error::<T>(&table, None, &e))?;
+    check_consumed(&table, &value, None)?;
+    Ok(value)
+}
+
+/// Refuse a key of `input` that the parsed `value` does not hold.
+///
+/// serde's `deny_unknown_fields` does not reach every table: a unit variant of an
+/// internally tagged enum (`[geometry.rib] shape = "cone"`) takes any keys beside its tag,
+/// and a struct without the attribute skips them. Serializing what was read and comparing
+/// its keys with the file's closes the gap structurally: whatever the schema did not
+/// consume is an unknown key, named by its full path with the keys its table takes.
+/// (A schema whose value cannot be serialized as TOML is not checked here; every case
+/// schema can, which the key-walk test proves.)
+fn check_consumed<T: Serialize>(input: &toml::Table, value: &T, text: Option<&str>) -> Result<()> {
+    let Ok(toml::Value::Table(read)) = toml::Value::try_from(value) else {
+        return Ok(());
+    };
+    let mut path = Vec::new();
+    let Some((path, takes)) = unconsumed(input, &read, &mut path) else {
+        return Ok(());
+    };
+    let place = match path.split_last() {
+        Some((_, parent)) if !parent.is_empty() => format!("[{}]", show_path(parent)),
+        _ => "the top level".to_string(),
+    };
+    let takes = if takes.is_empty() {
+        "no other keys".to_string()
+    } else {
+        takes
+            .iter()
+            .map(|k| format!("`{k}`"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let shown = show_path(&path);
+    Err(Error::CaseFile {
+        line: text.and_then(|t| SpanIndex::new(t).line_of(&path)),
+        key: shown.clone().into(),
+        message: one_line_text(&format!("unknown key `{shown}`; {place} takes {takes}")),
+    })
+}
+
+/// The first key path of `input` missing from `read`, with the keys of its table in `read`.
+fn unconsumed(
+    input: &toml::Table,
+    read: &toml::Table,
+    path: &mut Vec<Seg>,
+) -> Option<(Vec<Seg>, Vec<String>)> {
+    for (k, v) in input {
+        path.push(Seg::Key(k.clone()));
+        let Some(r) = read.get(k) else {
+            return Some((path.clone(), read.keys().cloned().collect()));
+        };
+        if let Some(found) = unconsumed_value(v, r, path) {
+            return Some(found);
+        }
+        path.pop();
+    }
+    None
+}
+
+fn unconsumed_value(
+    v: &toml::Value,
+    r: &toml::Value,
+    path: &mut Vec<Seg>,
+) -> Option<(Vec<Seg>, Vec<String>)> {
+    match (v, r) {
+        (toml::Value::Table(v), toml::Value::Table(r)) => unconsumed(v, r, path),
+        (toml::Value::Array(v), toml::Value::Array(r)) => {
+            for (i, (v, r)) in v.iter().zip(r).enumerate() {
+                path.push(Seg::Index(i));
+                if let Some(found) = unconsumed_value(v, r, path) {
+                    return Some(found);
+                }
+                path.pop();
+            }
+            None
+        }
+        _ => None,
+    }
+}
+
+/// One step of a key path: a table key or an array index.
+#[derive(Debug, Clone, PartialEq)]
+enum Seg {
+    Key(String),
+    Index(usize),
+}
+
+/// A key path as a case file spells it: `geometry.face.radius_mm`, `parameter[1].key`.
+fn show_path(path: &[Seg]) -> String {
+    let mut s = String::new();
+    for seg in path {
+        match seg {
+            Seg::Key(k) if s.is_empty() => s.push_str(k),
+            Seg::Key(k) => {
+                s.push('.');
+                s.push_str(k);
+            }
+            Seg::Index(i) => s.push_str(&format!("[{i}]")),
+        }
+    }
+    s
+}
+
+/// Where each key and value of a TOML text stands: key path, the key's span and the
+/// value's span (inline tables, dotted keys and arrays of tables included).
+struct SpanIndex<'t> {
+    text: &'t str,
+    entries: Vec<(Vec<Seg>, std::ops::Range<usize>, std::ops::Range<usize>)>,
+}
+
+impl<'t> SpanIndex<'t> {
+    fn new(text: &'t str) -> Self {
+        let mut entries = Vec::new();
+        if let Ok(doc) = toml::de::DeTable::parse(text) {
+            index_table(doc.get_ref(), &mut Vec::new(), &mut entries);
+        }
+        SpanIndex { text, entries }
+    }
+
+    /// The deepest key path whose key or value holds `offset`.
+    fn path_at(&self, offset: usize) -> Option<Vec<Seg>> {
+        let holds =
+            |r: &std::ops::Range<usize>| r.start <= offset && offset < r.end.max(r.start + 1);
+        self.entries
+            .iter()
+            .filter(|(_, k, v)| holds(k) || holds(v))
+            .max_by_key(|(p, _, _)| p.len())
+            .map(|(p, _, _)| p.clone())
+    }
+
+    /// The line (1-based) of the key at `path`, or of the nearest table above it.
+    fn line_of(&self, path: &[Seg]) -> Option<usize> {
+        (0..=path.len()).rev().find_map(|n| {
+            let (_, k, _) = self.entries.iter().find(|(p, _, _)| p == &path[..n])?;
+            Some(line_at(self.text, k.start))
+        })
+    }
+}
+
+fn index_table(
+    table: &toml::de::DeTable<'_>,
+    path: &mut Vec<Seg>,
+    out: &mut Vec<(Vec<Seg>, std::ops::Range<usize>, std::ops::Range<usize>)>,
+) {
+    for (k, v) in table.iter() {
+        path.push(Seg::Key(k.get_ref().to_string()));
+        out.push((path.clone(), k.span(), v.span()));
+        match v.get_ref() {
+            toml::de::DeValue::Table(t) => index_table(t, path, out),
+            toml::de::DeValue::Array(a) => {
+                for (i, e) in a.iter().enumerate() {
+                    path.push(Seg::Index(i));
+                    // An element has no key of its own: only its value's span is its.
+                    out.push((path.clone(), e.span(), e.span()));
+                    if let toml::de::DeValue::Table(t) = e.get_ref() {
+                        index_table(t, path, out);
+                    }
+                    path.pop();
+                }
+            }
+            _ => {}
+        }
+        path.pop();
+    }
+}
+
+/// The line (1-based) of byte `offset` in `text`.
+fn line_at(text: &str, offset: usize) -> usize {
+    text[..offset.min(text.len())].matches('\n').count() + 1
+}
+
+/// [`Error::CaseFile`] from a TOML reader's error on `text`, read as a `T`.
 ///
 /// A file that is not TOML at all says so ("not valid TOML: ..."). Otherwise the error is
-/// about the schema, and the key path is rebuilt from the error's position: the table
-/// header above it (`[contact]`, `[[loads]]`) and the key on its line. serde's wording
-/// ("field", "f64") becomes the schema's ("key", "a number").
-pub(crate) fn case_file_error(text: &str, e: &toml::de::Error) -> Error {
-    match case_file_error_raw(text, e) {
-        // The reader quotes the file's strings (`kind = "a\nb"`, found by fuzzing):
-        // control characters are escaped so that the message stays on one line.
-        Error::CaseFile { line, key, message } if message.chars().any(char::is_control) => {
-            Error::CaseFile {
-                line,
-                key,
-                message: message.chars().flat_map(char::escape_default).collect(),
-            }
-        }
-        other => other,
+/// about the schema, and the key path is found as described at [`located_error`].
+pub(crate) fn case_file_error<T: serde::de::DeserializeOwned>(
+    text: &str,
+    e: &toml::de::Error,
+) -> Error {
+    match text.parse::<toml::Table>() {
+        Err(_) => Error::CaseFile {
+            line: e.span().map(|s| line_at(text, s.start)),
+            key: "case".into(),
+            message: one_line_text(&format!("not valid TOML: {}", e.message().trim())),
+        },
+        Ok(table) => located_error::<T>(&table, Some(text), e),
     }
 }
 
-fn case_file_error_raw(text: &str, e: &toml::de::Error) -> Error {
-    let (line, table, key) = match e.span() {
-        Some(span) => locate(text, span.start.min(text.len())),
-        None => (None, String::new(), None),
+/// Control characters escaped, so that a message quoting the file's strings
+/// (`kind = "a\nb"`, found by fuzzing) stays on one line.
+fn one_line_text(message: &str) -> String {
+    if message.chars().any(char::is_control) {
+        message.chars().flat_map(char::escape_default).collect()
+    } else {
+        message.to_string()
+    }
+}
+
+/// [`Error::CaseFile`] for the reader's error `e` on the document `doc` (with its `text`
+/// when there is one, for the line).
+///
+/// The reader's position names the key only where serde read the value directly. Inside a
+/// tagged table (`[geometry]` by its `kind`, `[geometry.face]` by its `shape`) serde reads
+/// the whole table first and its error points at the table. The key is then found by
+/// asking the schema: the table holding the unknown key whose removal changes the error,
+/// the table lacking the missing key where adding it does, the value whose removal does.
+/// serde's wording ("field", "f64") becomes the schema's ("key", "a number").
+fn located_error<T: serde::de::DeserializeOwned>(
+    doc: &toml::Table,
+    text: Option<&str>,
+    e: &toml::de::Error,
+) -> Error {
+    let index = text.map(SpanIndex::new);
+    let at = match (&index, e.span()) {
+        (Some(index), Some(span)) => index.path_at(span.start).unwrap_or_default(),
+        _ => Vec::new(),
     };
     let message = e.message().trim();
-    if text.parse::<toml::Table>().is_err() {
-        return Error::CaseFile {
-            line,
-            key: "case".into(),
-            message: format!("not valid TOML: {message}"),
-        };
-    }
-    if e.span().is_none() {
-        // No position (a case read from an edited table): the reader's message, in the
-        // schema's words.
-        return Error::CaseFile {
-            line: None,
-            key: "case".into(),
-            message: schema_words(message).replace("field", "key"),
-        };
-    }
-    let join = |table: &str, k: &str| {
-        if table.is_empty() {
-            k.to_string()
-        } else {
-            format!("{table}.{k}")
-        }
+    let trial = |d: &toml::Table| -> Option<String> {
+        d.clone()
+            .try_into::<T>()
+            .err()
+            .map(|e: toml::de::Error| e.message().trim().to_string())
     };
-    let (key_path, message) = if let Some(rest) = message.strip_prefix("unknown field ") {
-        let (name, valid) = split_expected(rest);
-        let name = name.trim_matches('`');
-        // An unknown table is reported at its own header: the key is the header's path and
-        // the keys it could have been are its parent's.
-        let parent = match (&key, table.rsplit_once('.')) {
-            (None, Some((parent, last))) if last == name => parent,
-            (None, None) if table == name => "",
-            _ => table.as_str(),
-        };
-        let path = join(parent, name);
-        let place = if parent.is_empty() {
-            "the top level".to_string()
-        } else {
-            format!("[{parent}]")
+    let unknown = message
+        .strip_prefix("unknown field ")
+        .map(|rest| split_expected(rest));
+    let missing = message
+        .strip_prefix("missing field ")
+        .map(|rest| rest.trim().trim_matches('`'));
+    let path = match (unknown, missing) {
+        (Some((name, _)), _) => {
+            let name = name.trim_matches('`');
+            if matches!(at.last(), Some(Seg::Key(k)) if k == name) {
+                at.clone()
+            } else {
+                find_unknown(doc, &at, name, &trial)
+            }
+        }
+        (_, Some(name)) => find_missing(doc, &at, name, &trial),
+        _ => find_bad_value(doc, &at, message, &trial),
+    };
+    let shown = if path.is_empty() {
+        "case".to_string()
+    } else {
+        show_path(&path)
+    };
+    let message = if let Some((_, valid)) = unknown {
+        let place = match path.split_last() {
+            Some((_, parent)) if !parent.is_empty() => format!("[{}]", show_path(parent)),
+            _ => "the top level".to_string(),
         };
         let takes = valid.unwrap_or("no keys");
-        (
-            path.clone(),
-            format!("unknown key `{path}`; {place} takes {takes}"),
-        )
-    } else if let Some(rest) = message.strip_prefix("missing field ") {
-        let path = join(&table, rest.trim().trim_matches('`'));
-        (path.clone(), format!("missing key `{path}`"))
+        format!("unknown key `{shown}`; {place} takes {takes}")
+    } else if missing.is_some() {
+        format!("missing key `{shown}`")
     } else if let Some(rest) = message.strip_prefix("unknown variant ") {
         let (name, valid) = rest
             .split_once(", expected ")
             .unwrap_or((rest, "another value"));
-        let path = key
-            .as_deref()
-            .map_or_else(|| table.clone(), |k| join(&table, k));
-        (path.clone(), format!("`{path}` = {name}: expected {valid}"))
+        format!("`{shown}` = {name}: expected {valid}")
     } else {
-        let path = key
-            .as_deref()
-            .map_or_else(|| table.clone(), |k| join(&table, k));
-        let shown = if path.is_empty() {
-            "case".to_string()
-        } else {
-            path
-        };
-        (
-            shown.clone(),
-            format!("`{shown}`: {}", schema_words(message)),
-        )
+        format!("`{shown}`: {}", schema_words(message))
     };
     Error::CaseFile {
-        line,
-        key: if key_path.is_empty() {
-            "case".into()
-        } else {
-            key_path.into()
-        },
-        message,
+        line: index
+            .as_ref()
+            .and_then(|i| i.line_of(&path))
+            .or_else(|| text.zip(e.span()).map(|(t, s)| line_at(t, s.start))),
+        key: shown.into(),
+        message: one_line_text(&message),
     }
+}
+
+/// The value at `path` in `doc`.
+fn node_mut<'a>(doc: &'a mut toml::Table, path: &[Seg]) -> Option<&'a mut toml::Value> {
+    let (Seg::Key(first), rest) = path.split_first()? else {
+        return None;
+    };
+    let mut v = doc.get_mut(first)?;
+    for seg in rest {
+        v = match (seg, v) {
+            (Seg::Key(k), toml::Value::Table(t)) => t.get_mut(k)?,
+            (Seg::Index(i), toml::Value::Array(a)) => a.get_mut(*i)?,
+            _ => return None,
+        };
+    }
+    Some(v)
+}
+
+/// The table at `path` (the document itself for the empty path).
+fn table_mut<'a>(doc: &'a mut toml::Table, path: &[Seg]) -> Option<&'a mut toml::Table> {
+    if path.is_empty() {
+        return Some(doc);
+    }
+    node_mut(doc, path)?.as_table_mut()
+}
+
+/// The values of a document that are not tables, with their paths.
+type Leaves = Vec<(Vec<Seg>, toml::Value)>;
+
+/// Every table path in `doc` at or below `at`, and every other value's path (leaves),
+/// deepest first (then in the document's order).
+fn below(doc: &toml::Table, at: &[Seg]) -> (Vec<Vec<Seg>>, Leaves) {
+    fn walk(v: &toml::Value, path: &mut Vec<Seg>, tables: &mut Vec<Vec<Seg>>, leaves: &mut Leaves) {
+        match v {
+            toml::Value::Table(t) => {
+                tables.push(path.clone());
+                for (k, x) in t {
+                    path.push(Seg::Key(k.clone()));
+                    walk(x, path, tables, leaves);
+                    path.pop();
+                }
+            }
+            toml::Value::Array(a) if a.iter().any(toml::Value::is_table) => {
+                for (i, x) in a.iter().enumerate() {
+                    path.push(Seg::Index(i));
+                    walk(x, path, tables, leaves);
+                    path.pop();
+                }
+            }
+            other => leaves.push((path.clone(), other.clone())),
+        }
+    }
+    let mut doc = doc.clone();
+    let (mut tables, mut leaves) = (Vec::new(), Vec::new());
+    if let Some(v) = node_mut(&mut doc, at) {
+        walk(v, &mut at.to_vec(), &mut tables, &mut leaves);
+    } else {
+        walk(
+            &toml::Value::Table(doc),
+            &mut Vec::new(),
+            &mut tables,
+            &mut leaves,
+        );
+    }
+    tables.sort_by_key(|p| std::cmp::Reverse(p.len()));
+    leaves.sort_by_key(|(p, _)| std::cmp::Reverse(p.len()));
+    (tables, leaves)
+}
+
+/// The path of the unknown key `name` at or below `at`: the one table holding it, or the
+/// one whose removal of it changes the error.
+fn find_unknown(
+    doc: &toml::Table,
+    at: &[Seg],
+    name: &str,
+    trial: &dyn Fn(&toml::Table) -> Option<String>,
+) -> Vec<Seg> {
+    let (tables, _) = below(doc, at);
+    let holding: Vec<_> = tables
+        .into_iter()
+        .filter(|t| table_mut(&mut doc.clone(), t).is_some_and(|t| t.contains_key(name)))
+        .collect();
+    if let [only] = holding.as_slice() {
+        let mut path = only.clone();
+        path.push(Seg::Key(name.to_string()));
+        return path;
+    }
+    let before = trial(doc);
+    let changed = |after: &Option<String>| after != &before;
+    find_table(
+        doc,
+        at,
+        name,
+        &|t| t.remove(name).is_some(),
+        &changed,
+        trial,
+    )
+}
+
+/// The path of the missing key `name` at or below `at`: the table lacking it where adding
+/// it changes the error (to anything but "unknown field").
+fn find_missing(
+    doc: &toml::Table,
+    at: &[Seg],
+    name: &str,
+    trial: &dyn Fn(&toml::Table) -> Option<String>,
+) -> Vec<Seg> {
+    let before = trial(doc);
+    let refused = format!("unknown field `{name}`");
+    let add = |t: &mut toml::Table| {
+        t.insert(name.to_string(), toml::Value::String(String::new()))
+            .is_none()
+    };
+    let changed = |after: &Option<String>| {
+        after != &before && !after.as_ref().is_some_and(|m| m.starts_with(&refused))
+    };
+    find_table(doc, at, name, &add, &changed, trial)
+}
+
+/// `name`'s path in the first table at or below `at` (deepest first) where `edit` applies
+/// and the error of the edited document passes `changed`; at `at` when there is none.
+fn find_table(
+    doc: &toml::Table,
+    at: &[Seg],
+    name: &str,
+    edit: &dyn Fn(&mut toml::Table) -> bool,
+    changed: &dyn Fn(&Option<String>) -> bool,
+    trial: &dyn Fn(&toml::Table) -> Option<String>,
+) -> Vec<Seg> {
+    let (tables, _) = below(doc, at);
+    let found = tables.into_iter().find(|t| {
+        let mut d = doc.clone();
+        table_mut(&mut d, t).is_some_and(edit) && changed(&trial(&d))
+    });
+    let mut path = found.unwrap_or_else(|| at.to_vec());
+    path.push(Seg::Key(name.to_string()));
+    path
+}
+
+/// The path of the value at or below `at` that `message` is about: the values the message
+/// quotes first, the one whose removal changes the error.
+fn find_bad_value(
+    doc: &toml::Table,
+    at: &[Seg],
+    message: &str,
+    trial: &dyn Fn(&toml::Table) -> Option<String>,
+) -> Vec<Seg> {
+    let (_, mut leaves) = below(doc, at);
+    if leaves.len() <= 1 && !matches!(node_mut(&mut doc.clone(), at), Some(toml::Value::Table(_))) {
+        return at.to_vec();
+    }
+    let quoted = |v: &toml::Value| match v {
+        toml::Value::String(s) => {
+            message.contains(&format!("{s:?}")) || message.contains(&format!("`{s}`"))
+        }
+        toml::Value::Integer(i) => message.contains(&format!("`{i}`")),
+        toml::Value::Float(x) => {
+            message.contains(&format!("`{x}`")) || message.contains(&format!("`{x:?}`"))
+        }
+        toml::Value::Boolean(b) => message.contains(&format!("`{b}`")),
+        toml::Value::Array(_) => message.contains("sequence"),
+        _ => false,
+    };
+    leaves.sort_by_key(|(_, v)| !quoted(v));
+    let before = trial(doc);
+    leaves
+        .into_iter()
+        .map(|(p, _)| p)
+        .find(|p| {
+            let mut d = doc.clone();
+            let removed = match p.split_last() {
+                Some((Seg::Key(k), parent)) => table_mut(&mut d, parent).and_then(|t| t.remove(k)),
+                _ => None,
+            };
+            removed.is_some() && trial(&d) != before
+        })
+        .unwrap_or_else(|| at.to_vec())
 }
 
 /// Split "`name`, expected one of `a`, `b`" into the name and "`a`, `b`".
@@ -197,41 +557,29 @@ fn split_expected(rest: &str) -> (&str, Option<&str>) {
 
 /// serde's type names in the words of a case file.
 fn schema_words(message: &str) -> String {
-    message
+    let mut m = message
         .replace("invalid type: ", "")
+        .replace("invalid value: ", "")
         .replace("expected f64", "expected a number")
         .replace("expected usize", "expected a whole number >= 0")
         .replace("expected u64", "expected a whole number >= 0")
         .replace("expected u32", "expected a whole number >= 0")
         .replace("expected i64", "expected a whole number")
         .replace("expected a boolean", "expected true or false")
-}
-
-/// The line (1-based), the table path of the header above `offset` (or on its line) and
-/// the key written on `offset`'s line, if any.
-fn locate(text: &str, offset: usize) -> (Option<usize>, String, Option<String>) {
-    let start = text[..offset].rfind('\n').map_or(0, |i| i + 1);
-    let line = text[..start].matches('\n').count() + 1;
-    let this_line = text[start..].lines().next().unwrap_or("");
-    let table = text[..start]
-        .lines()
-        .chain(std::iter::once(this_line))
-        .filter_map(header)
-        .next_back()
-        .unwrap_or_default()
-        .to_string();
-    let key = this_line
-        .split_once('=')
-        .map(|(k, _)| k.trim().trim_matches('"').to_string())
-        .filter(|k| !k.is_empty() && header(this_line).is_none());
-    (Some(line), table, key)
-}
-
-/// The table path of a `[table]` or `[[array]]` header line.
-fn header(line: &str) -> Option<&str> {
-    let l = line.trim();
-    let inner = l.strip_prefix("[[").or_else(|| l.strip_prefix('['))?;
-    Some(inner.split(']').next().unwrap_or("").trim())
+        .replace("expected a sequence", "expected an array")
+        .replace("sequence", "array")
+        .replace("map,", "table,");
+    // serde names the Rust type of a table ("expected internally tagged enum FaceShape",
+    // "expected struct MaterialSpec"): a case file has tables.
+    for prefix in ["expected internally tagged enum ", "expected struct "] {
+        if let Some(i) = m.find(prefix) {
+            let end = m[i + prefix.len()..]
+                .find(|c: char| !c.is_alphanumeric() && c != '_')
+                .map_or(m.len(), |j| i + prefix.len() + j);
+            m.replace_range(i..end, "expected a table");
+        }
+    }
+    m
 }
 
 /// `[body1]` / `[body2]`: the elastic constants.
@@ -289,4 +637,36 @@ fn one_line(path: &Path) -> String {
     } else {
         shown
     }
+}
+
+/// An error about the library's angle `field` \[rad\], said as the case file's key `key` in
+/// degrees: the value the file gives and the range in degrees. (`half_angle_deg = 90` was
+/// reported as `1.5707963267948966` against a range in radians, found by probing.)
+pub(crate) fn in_degrees(e: Error, field: &str, key: &str, typed_deg: f64) -> Error {
+    match e {
+        Error::InvalidInput {
+            field: f, expected, ..
+        } if f == field => Error::invalid(key.to_string(), typed_deg, degrees_text(&expected)),
+        other => other,
+    }
+}
+
+/// A range in radians (`(0, pi/2) rad`, `a finite angle [rad]`) in degrees.
+fn degrees_text(text: &str) -> String {
+    let mut out = text
+        .replace("pi/2", "90")
+        .replace("2 pi", "360")
+        .replace("pi", "180")
+        .replace("[rad]", "[deg]");
+    // " rad" as a word ("rad," "rad)" or at the end), not the start of "radius".
+    let mut i = 0;
+    while let Some(j) = out[i..].find(" rad") {
+        let at = i + j;
+        let after = out[at + 4..].chars().next();
+        if after.is_none_or(|c| !c.is_alphabetic()) {
+            out.replace_range(at..at + 4, " deg");
+        }
+        i = at + 4;
+    }
+    out
 }

@@ -46,6 +46,7 @@
 
 use crate::common::SCHEMA_VERSION;
 use crate::pimp_case::{GeometrySpec, roller_rib_from_spec};
+use crate::validity::{ContactSize, Size, checked, checked_report};
 use kontakt::bearing::{
     Operating, PressureModel, RibFriction, RibFrictionModel, RibLubrication, RollerSet,
 };
@@ -54,6 +55,7 @@ use kontakt::friction::{
     FluidShear, FrictionLaw, LoadSharing, power_density as power_density_into,
 };
 use kontakt::geometry::VelocityField;
+use kontakt::hertz::{HertzPointContact, PointGeometry};
 use kontakt::lubrication::{FilmFormula, Lubricant};
 use kontakt::{Error, Result};
 use serde::{Deserialize, Serialize};
@@ -114,8 +116,9 @@ fn yes() -> bool {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
 #[serde(deny_unknown_fields)]
 pub struct SpeedSpec {
-    /// The speeds \[r/min\].
-    #[serde(default)]
+    /// The speeds \[r/min\]: a list, or one number (`rpm = 1500.0`, as a sweep's
+    /// parameter on `speed.rpm` sets it).
+    #[serde(default, deserialize_with = "one_or_many")]
     pub rpm: Option<Vec<f64>>,
     /// Lowest speed of a range \[r/min\].
     #[serde(default)]
@@ -129,6 +132,22 @@ pub struct SpeedSpec {
     /// Spacing of a range (default log).
     #[serde(default)]
     pub spacing: Spacing,
+}
+
+/// `rpm = 1500.0` or `rpm = [500.0, 1500.0]`.
+fn one_or_many<'de, D: serde::Deserializer<'de>>(
+    d: D,
+) -> std::result::Result<Option<Vec<f64>>, D::Error> {
+    #[derive(Deserialize)]
+    #[serde(untagged, expecting = "a speed in r/min or a list of them")]
+    enum OneOrMany {
+        One(f64),
+        Many(Vec<f64>),
+    }
+    Ok(Some(match OneOrMany::deserialize(d)? {
+        OneOrMany::One(v) => vec![v],
+        OneOrMany::Many(v) => v,
+    }))
 }
 
 /// Spacing of a speed range.
@@ -181,21 +200,53 @@ impl SpeedSpec {
                 if !(2..=1000).contains(&n) {
                     return Err(Error::invalid("speed.points", n, "2 to 1000 points"));
                 }
+                // The ends exactly as given; a linear step as (hi - lo) * i / (n - 1), so
+                // 500..2500 in 5 points is 500, 1000, 1500, 2000, 2500 to the last bit.
                 Ok((0..n)
                     .map(|i| {
-                        let t = i as f64 / (n - 1) as f64;
+                        if i == 0 {
+                            return lo;
+                        }
+                        if i == n - 1 {
+                            return hi;
+                        }
                         match self.spacing {
-                            Spacing::Log => lo * (hi / lo).powf(t),
-                            Spacing::Linear => lo + (hi - lo) * t,
+                            Spacing::Log => lo * (hi / lo).powf(i as f64 / (n - 1) as f64),
+                            Spacing::Linear => lo + (hi - lo) * i as f64 / (n - 1) as f64,
                         }
                     })
                     .collect())
             }
-            _ => Err(Error::invalid(
-                "speed",
-                "neither a list nor a complete range",
-                "either rpm = [...] or min_rpm, max_rpm (and optionally points, spacing)",
-            )),
+            (rpm, lo, hi) => {
+                // Say what was given: a list and (part of) a range (a sweep parameter on
+                // `speed.rpm` of a case with a range, issue 30 item 13), a list with
+                // `points`, half a range, or nothing.
+                let mut given: Vec<&str> = Vec::new();
+                if rpm.is_some() {
+                    given.push("rpm");
+                }
+                if lo.is_some() {
+                    given.push("min_rpm");
+                }
+                if hi.is_some() {
+                    given.push("max_rpm");
+                }
+                if self.points.is_some() {
+                    given.push("points");
+                }
+                let value = if given.is_empty() {
+                    "no speeds".to_string()
+                } else {
+                    given.join(", ")
+                };
+                Err(Error::invalid(
+                    "speed",
+                    value,
+                    "either a list rpm = [...] or a range min_rpm, max_rpm (with optional \
+                     points, spacing), not both (a sweep over speed.rpm needs a base case \
+                     with rpm; over a range, sweep speed.min_rpm or speed.max_rpm)",
+                ))
+            }
         }
     }
 }
@@ -486,21 +537,28 @@ pub struct FrictionRow {
     pub power_w: f64,
     /// Friction power of all rib contacts \[W\].
     pub bearing_power_w: f64,
-    /// The rib's share of the bearing friction torque \[N·mm\].
-    pub bearing_torque_nmm: f64,
-    /// Friction moment on a roller about its axis \[N·mm\].
+    /// The rib friction's share of the bearing's drag torque \[N·mm\]: the torque the shaft
+    /// must supply to it, from the power balance `Z P / |ω_i − ω_o|` (docs/friction.md §5.2).
+    /// This is the rib's friction torque of the bearing (the plots' "rib torque").
+    pub bearing_drag_torque_nmm: f64,
+    /// Moment of the rib friction on one roller about the roller's axis \[N·mm\].
     pub roller_axis_moment_nmm: f64,
-    /// Friction moment on the inner ring about its axis, all rollers \[N·mm\].
-    pub ring_axis_moment_nmm: f64,
+    /// Moment of the rib friction forces on the inner ring alone about the ring axis, all
+    /// rollers \[N·mm\]. Not the drag torque: the same forces turn the rollers back about
+    /// their axes, and that moment returns to the rings through the raceway contacts; the
+    /// net that the shaft feels is `bearing_drag_torque_nmm`.
+    pub inner_ring_rib_moment_nmm: f64,
 }
 
 impl FrictionRow {
-    fn of(pairing: &str, r: &RibFriction) -> Self {
+    /// The row of `r`, computed at the case's speed `rpm` (reported as given, not
+    /// converted back from rad/s: 1500, not 1500.0000000000002).
+    fn of(pairing: &str, rpm: f64, r: &RibFriction) -> Self {
         let film = r.film_thickness;
         FrictionRow {
             pairing: pairing.to_string(),
             model: r.model.as_str(),
-            speed_rpm: r.operating.inner_speed / RAD_S_PER_RPM,
+            speed_rpm: rpm,
             cage_speed_rpm: r.cage_speed / RAD_S_PER_RPM,
             relative_speed_rad_s: r.relative_speed,
             rib_load_n: r.loads.rib,
@@ -519,9 +577,9 @@ impl FrictionRow {
             coefficient: r.coefficient,
             power_w: r.power,
             bearing_power_w: r.bearing_power,
-            bearing_torque_nmm: r.bearing_torque,
+            bearing_drag_torque_nmm: r.bearing_torque,
             roller_axis_moment_nmm: r.roller_axis_moment,
-            ring_axis_moment_nmm: r.ring_axis_moment,
+            inner_ring_rib_moment_nmm: r.ring_axis_moment,
         }
     }
 }
@@ -567,9 +625,17 @@ pub struct FrictionReport {
     pub rows: Vec<FrictionRow>,
     /// Torque of each model relative to Hertz (when Hertz is among the models).
     pub model_difference: Vec<ModelDifference>,
-    /// Every distinct warning of the film formula and the models.
+    /// Every distinct warning of the film formula and the models, and of the rib
+    /// contact's size against the roller end and the rib.
     pub warnings: Vec<String>,
+    /// The rib contact's size against the bodies at the largest rib load, for the
+    /// validity check ([`crate::validity`]); not in the JSON.
+    #[serde(skip)]
+    pub contacts: Vec<ContactSize>,
 }
+
+checked_report!(FrictionReport);
+checked_report!(FrictionOutcome, report);
 
 /// A friction case's report and the fields of its maps.
 #[derive(Debug, Clone, PartialEq)]
@@ -636,6 +702,77 @@ impl FrictionMap {
 /// # Errors
 /// Invalid input named by its case-file key, and the solvers' failures.
 pub fn run_friction_case(case: &FrictionCase) -> Result<FrictionOutcome> {
+    checked(run_friction_case_unchecked(case)?)
+}
+
+/// The rib contact's size against the roller end face and the rib at the largest rib
+/// load of the speeds `speeds` \[r/min\]: the Hertz ellipse of the contact point's
+/// curvature, as PimP and the half-space solver check before a solve
+/// (`kontakt::field::validity::ellipse_size_check`). Refused here, before any solve, when
+/// the contact would be as large as a body's radius of curvature or run over the face's
+/// edge; otherwise the contact for the validity check and the warnings about the edge.
+fn rib_contact_size(
+    case: &FrictionCase,
+    model: &RibFrictionModel,
+    gap: &kontakt::gap::SurfacePairGap,
+    speeds: &[f64],
+) -> Result<(Vec<ContactSize>, Vec<String>)> {
+    // A speed the loads cannot be computed at is reported by the sweep, with its key.
+    let Some(rib_load) = speeds
+        .iter()
+        .filter_map(|&rpm| model.loads(&operating(case.load.axial_n, rpm)).ok())
+        .map(|(_, loads)| loads.rib)
+        .reduce(f64::max)
+    else {
+        return Ok((Vec::new(), Vec::new()));
+    };
+    let material = model.material();
+    let sol = HertzPointContact::new(
+        PointGeometry::from_curvature(kontakt::gap::GapSource::curvature(gap)),
+        material,
+        material,
+    )
+    .and_then(|h| h.solve_force(rib_load))?;
+    let at = format!("rib contact at the largest rib load, {rib_load:.6} N");
+    let key = |f: &str| crate::pimp_case::size_field(&case.geometry, f);
+    let check = kontakt::field::validity::ellipse_size_check(gap, sol.semi_axes, sol.orientation)
+        .map_err(|e| match e {
+        Error::Geometry { field, reason } => Error::Geometry {
+            field: key(&field).into(),
+            reason: format!("{at}: {reason}"),
+        },
+        other => other,
+    })?;
+    let edge = kontakt::field::validity::ZoneCheck {
+        curvature: None,
+        ..check
+    };
+    let contacts = check
+        .curvature
+        .map(|c| ContactSize {
+            at: Some(at.clone()),
+            // The message of the first model's theory.
+            size: if case.models.first() == Some(&PressureModel::Hertz) {
+                Size::Hertz(kontakt::hertz::validity::SizeCheck {
+                    ratio: c.ratio,
+                    body: c.body,
+                    extent: c.extent,
+                    radius: c.radius,
+                    direction: 0.0,
+                })
+            } else {
+                Size::HalfSpace(c)
+            },
+            keys: [key("body1.radii"), key("body2.radii")],
+        })
+        .into_iter()
+        .collect();
+    let edge = edge.warnings().into_iter().map(|w| format!("{at}: {w}"));
+    Ok((contacts, edge.collect()))
+}
+
+/// [`run_friction_case`] before the validity check of [`crate::validity::checked`].
+pub(crate) fn run_friction_case_unchecked(case: &FrictionCase) -> Result<FrictionOutcome> {
     if case.method != "friction" {
         return Err(Error::invalid(
             "method",
@@ -643,13 +780,9 @@ pub fn run_friction_case(case: &FrictionCase) -> Result<FrictionOutcome> {
             "\"friction\" for this schema",
         ));
     }
-    if case.models.is_empty() {
-        return Err(Error::invalid(
-            "models",
-            "an empty list",
-            "one or more of \"hertz\", \"pimp\", \"halfspace\"",
-        ));
-    }
+    let names: Vec<&str> = case.models.iter().map(PressureModel::as_str).collect();
+    let valid = PressureModel::ALL.map(|m| m.as_str());
+    kontakt::error::choices("models", &names, &valid)?;
     let (pairing, pair) = roller_rib_from_spec(&case.geometry)?.ok_or_else(|| {
         Error::invalid(
             "geometry.kind",
@@ -671,6 +804,8 @@ pub fn run_friction_case(case: &FrictionCase) -> Result<FrictionOutcome> {
         .map(|l| l.lubrication())
         .transpose()?;
     let law = case.friction.law(lubrication.is_some())?;
+    // The gap with the face's edge, for the size check (the model's own has no edges).
+    let gap = pair.gap()?;
     let model = RibFrictionModel::new(
         pair.spec,
         case.rollers,
@@ -693,6 +828,7 @@ pub fn run_friction_case(case: &FrictionCase) -> Result<FrictionOutcome> {
             other => other.to_string(),
         })
     })?;
+    let (contacts, edge_warnings) = rib_contact_size(case, &model, &gap, &speeds)?;
     let mut rows = Vec::new();
     let mut warnings = BTreeSet::new();
     let middle = speeds[speeds.len() / 2];
@@ -710,11 +846,11 @@ pub fn run_friction_case(case: &FrictionCase) -> Result<FrictionOutcome> {
                     other => other.to_string(),
                 })
             })?;
-        for r in &sweep {
+        for (r, &rpm) in sweep.iter().zip(&speeds) {
             if let Some(h) = &r.film_thickness {
                 warnings.extend(h.warning_lines());
             }
-            rows.push(FrictionRow::of(&pairing, r));
+            rows.push(FrictionRow::of(&pairing, rpm, r));
         }
     }
     let mut model_difference = Vec::new();
@@ -722,13 +858,13 @@ pub fn run_friction_case(case: &FrictionCase) -> Result<FrictionOutcome> {
         let n = speeds.len();
         let at = |k: usize| &rows[k * n + i];
         if let Some(h) = case.models.iter().position(|m| *m == PressureModel::Hertz) {
-            let base = at(h).bearing_torque_nmm;
+            let base = at(h).bearing_drag_torque_nmm;
             for (k, m) in case.models.iter().enumerate() {
                 if *m != PressureModel::Hertz && base > 0.0 {
                     model_difference.push(ModelDifference {
                         speed_rpm: at(k).speed_rpm,
                         model: m.as_str(),
-                        torque_vs_hertz: at(k).bearing_torque_nmm / base,
+                        torque_vs_hertz: at(k).bearing_drag_torque_nmm / base,
                     });
                 }
             }
@@ -752,7 +888,8 @@ pub fn run_friction_case(case: &FrictionCase) -> Result<FrictionOutcome> {
         law,
         rows,
         model_difference,
-        warnings: warnings.into_iter().collect(),
+        warnings: edge_warnings.into_iter().chain(warnings).collect(),
+        contacts,
     };
     let map = FrictionMap::new(&model, case.models[0], case.load.axial_n, middle)?;
     Ok(FrictionOutcome { report, map })

@@ -32,10 +32,11 @@
 //! Keys are never renamed without bumping the schema version; new keys may be added.
 
 use crate::common::{SCHEMA_VERSION, material_keys, parse_toml};
+use crate::validity::{ContactSize, Size, checked, checked_report};
 use kontakt::hertz::line::LineContact;
 use kontakt::hertz::point_stress::FirstYield;
 use kontakt::hertz::subsurface::YieldCriterion;
-use kontakt::hertz::validity::{SizeCheck, line_size_check, point_size_check};
+use kontakt::hertz::validity::{line_size, point_size};
 use kontakt::hertz::{HertzPointContact, PointGeometry};
 use kontakt::material::{ElasticMaterial, dundurs_beta};
 use kontakt::{Error, Result};
@@ -242,7 +243,13 @@ pub struct ContactReport {
     /// a body's radius of curvature (`kontakt::hertz::validity`), a maximum pressure above
     /// first yield. Empty when none applies.
     pub warnings: Vec<String>,
+    /// The contact's size against the bodies, for the validity check
+    /// ([`crate::validity`]); not in the JSON.
+    #[serde(skip)]
+    pub contacts: Vec<ContactSize>,
 }
+
+checked_report!(ContactReport);
 
 /// Inputs echoed in the report.
 #[derive(Debug, Clone, PartialEq, Serialize)]
@@ -327,6 +334,9 @@ fn radii<const N: usize>(body: &BodySpec, prefix: &'static str, kind: &str) -> R
 /// Map the library's field names to the case file's keys (`body1.radii[0]` →
 /// `body1.radii_mm[0]`, `force` → `load.force_n`, ...).
 fn case_field(f: &str) -> String {
+    if f.contains(".radii_mm") {
+        return f.to_string();
+    }
     let f = f
         .replace(".radii", ".radii_mm")
         .replace(".radius", ".radii_mm[0]");
@@ -349,7 +359,22 @@ fn case_field(f: &str) -> String {
 /// Any invalid input, with the field named by its case-file key
 /// (e.g. `body1.e_mpa`, `load.force_n`, `body2.radii_mm[1]`).
 pub fn run_case(case: &CaseFile) -> Result<ContactReport> {
+    checked(run_case_unchecked(case)?)
+}
+
+/// [`run_case`] before the validity check of [`crate::validity::checked`] (what
+/// [`crate::Case::run`] dispatches to, and checks).
+pub(crate) fn run_case_unchecked(case: &CaseFile) -> Result<ContactReport> {
     run_case_inner(case).map_err(|e| e.map_field(case_field))
+}
+
+/// The size of a Hertz contact against the bodies (case keys `body1.radii_mm`,
+/// `body2.radii_mm`), refused here already when too large (before the stresses are
+/// computed on a contact that is refused anyway).
+fn hertz_size(size: kontakt::hertz::validity::SizeCheck) -> Result<ContactSize> {
+    let c = ContactSize::new(Size::Hertz(size), ["body1.radii_mm", "body2.radii_mm"]);
+    c.verdict()?;
+    Ok(c)
 }
 
 fn run_case_inner(case: &CaseFile) -> Result<ContactReport> {
@@ -402,7 +427,7 @@ fn run_case_inner(case: &CaseFile) -> Result<ContactReport> {
                     ));
                 }
             };
-            let size = point_size_check(&geometry, &sol)?;
+            let size = hertz_size(point_size(&geometry, &sol))?;
             let (peaks, _) = contact.subsurface_peaks(&sol)?;
             let fy = case
                 .yield_check
@@ -437,7 +462,8 @@ fn run_case_inner(case: &CaseFile) -> Result<ContactReport> {
                 first_yield_line_load_n_per_mm: None,
                 first_yield_max_pressure_mpa: fy.map(|f| f.max_pressure),
                 yield_pressure_margin: fy.map(|f| f.max_pressure / sol.max_pressure),
-                warnings: warnings(&size, fy.map(|f| f.max_pressure / sol.max_pressure)),
+                warnings: warnings(fy.map(|f| f.max_pressure / sol.max_pressure)),
+                contacts: vec![size],
             }
             .finite()
         }
@@ -479,7 +505,7 @@ fn run_case_inner(case: &CaseFile) -> Result<ContactReport> {
                 }
             };
             let sol = contact.solve(line_load)?;
-            let size = line_size_check(contact.radii(), &sol)?;
+            let size = hertz_size(line_size(contact.radii(), &sol))?;
             let b = sol.half_width;
             let force = length.map(|l| line_load * l);
             let approach = match (force, length) {
@@ -528,18 +554,19 @@ fn run_case_inner(case: &CaseFile) -> Result<ContactReport> {
                 first_yield_line_load_n_per_mm: yield_line_load.map(|(q, _)| q),
                 first_yield_max_pressure_mpa: yield_line_load.map(|(_, p)| p),
                 yield_pressure_margin: yield_line_load.map(|(_, p)| p / sol.max_pressure),
-                warnings: warnings(&size, yield_line_load.map(|(_, p)| p / sol.max_pressure)),
+                warnings: warnings(yield_line_load.map(|(_, p)| p / sol.max_pressure)),
+                contacts: vec![size],
             }
             .finite()
         }
     }
 }
 
-/// The report's warnings: the contact's size against the bodies, and a maximum pressure
-/// above the first-yield pressure (`margin` = p0,Y / p0 < 1: the bodies yield, and elastic
-/// theory no longer describes them).
-fn warnings(size: &SizeCheck, margin: Option<f64>) -> Vec<String> {
-    let mut w: Vec<String> = size.warning().into_iter().collect();
+/// The report's warnings but the contact's size (added by [`crate::validity::checked`]): a
+/// maximum pressure above the first-yield pressure (`margin` = p0,Y / p0 < 1: the bodies
+/// yield, and elastic theory no longer describes them).
+fn warnings(margin: Option<f64>) -> Vec<String> {
+    let mut w = Vec::new();
     if let Some(m) = margin.filter(|&m| m < 1.0) {
         w.push(format!(
             "first yield: the maximum pressure is {:.2} times the first-yield pressure; the \
@@ -602,8 +629,14 @@ impl ContactReport {
             .chain((!line_without_length).then_some(("semi_axes_mm[0]", self.semi_axes_mm[0])))
         {
             if !value.is_finite() {
+                // The first-yield results scale with the yield stress alone: name it.
+                let field = if key.contains("yield") {
+                    "yield.stress_mpa"
+                } else {
+                    "case"
+                };
                 return Err(Error::Geometry {
-                    field: "case".into(),
+                    field: field.into(),
                     reason: format!(
                         "the result {key} = {value} is beyond the range of double precision \
                          numbers; the inputs are too extreme to give a meaningful result \

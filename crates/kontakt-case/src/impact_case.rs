@@ -31,7 +31,9 @@
 //! ```
 
 use crate::common::{MaterialSpec, SCHEMA_VERSION, material, parse_toml};
+use crate::validity::{ContactSize, Size, checked, checked_report};
 use kontakt::hertz::impact::{HertzImpact, sphere_mass};
+use kontakt::hertz::validity::SizeCheck;
 use kontakt::impact::{
     ElasticImpactOptions, ElasticObliqueImpact, IncidentMotion, RigidObliqueImpact, RigidRegime,
     SphereBody,
@@ -197,7 +199,17 @@ pub struct ImpactReport {
     pub rigid: Option<RigidReport>,
     /// The elastic rebound (with friction).
     pub elastic: Option<ElasticReport>,
+    /// Results to treat with care: a contact large against the sphere's radius. Absent
+    /// when none applies.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub warnings: Vec<String>,
+    /// The largest contact's size against the sphere, for the validity check
+    /// ([`crate::validity`]); not in the JSON.
+    #[serde(skip)]
+    pub contacts: Vec<ContactSize>,
 }
+
+checked_report!(ImpactReport);
 
 impl ImpactCase {
     /// Parse an impact case from TOML text.
@@ -218,6 +230,11 @@ impl ImpactCase {
 /// `friction.mu`, `friction.restitution`, ...), and an oblique or spinning impact without
 /// `[friction]`.
 pub fn run_impact_case(case: &ImpactCase) -> Result<ImpactReport> {
+    checked(run_impact_case_unchecked(case)?)
+}
+
+/// [`run_impact_case`] before the validity check of [`crate::validity::checked`].
+pub(crate) fn run_impact_case_unchecked(case: &ImpactCase) -> Result<ImpactReport> {
     if case.method != "impact" {
         return Err(Error::invalid(
             "method",
@@ -295,6 +312,28 @@ pub fn run_impact_case(case: &ImpactCase) -> Result<ImpactReport> {
         max_contact_radius_mm: hertz.max_contact_radius,
         max_pressure_mpa: hertz.max_pressure,
     };
+    // The largest contact (at the largest approach) against the sphere's radius; the
+    // flat does not limit it. Refused before the oblique analyses.
+    let contacts: Vec<ContactSize> = hertz
+        .max_contact_radius
+        .map(|a| {
+            ContactSize::new(
+                Size::Hertz(SizeCheck {
+                    ratio: a / s.radius_mm,
+                    body: 1,
+                    extent: a,
+                    radius: s.radius_mm,
+                    direction: 0.0,
+                }),
+                ["sphere.radius_mm", "flat"],
+            )
+            .at("impact, at the largest approach")
+        })
+        .into_iter()
+        .collect();
+    for c in &contacts {
+        c.verdict()?;
+    }
     let w1 = incident.peripheral_velocity(s.radius_mm);
     let (kappa, chi, rigid, elastic) = match case.friction {
         None if w1 != 0.0 => {
@@ -359,5 +398,7 @@ pub fn run_impact_case(case: &ImpactCase) -> Result<ImpactReport> {
         chi,
         rigid,
         elastic,
+        warnings: Vec::new(),
+        contacts,
     })
 }

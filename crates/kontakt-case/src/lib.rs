@@ -36,6 +36,7 @@ pub mod rough_case;
 pub mod sweep;
 pub mod topography;
 pub mod traction_case;
+pub mod validity;
 
 pub use bem_case::{BemOutcome, run_bem_case, run_bem_case_on_map};
 pub use case::{Case, CaseFile, FieldView, Outcome};

@@ -126,7 +126,21 @@ fn read_npy(bytes: &[u8]) -> std::result::Result<(usize, usize, Vec<f64>), Strin
         Ok(v) => v,
         Err(_) => npyz::NpyFile::new(bytes)
             .and_then(|f| f.into_vec::<f32>())
-            .map_err(|_| format!("float64 or float32 values are needed, the file holds {dtype:?}"))?
+            .map_err(|_| {
+                // The dtype as numpy writes it (`<i8`), not the reader's Rust debug dump
+                // (`Plain(TypeStr { .. })`, found by probing).
+                let found = match &dtype {
+                    npyz::DType::Plain(t) => t.to_string(),
+                    other => {
+                        let d: String = other.descr().chars().take(60).collect();
+                        format!("the structured dtype {d}")
+                    }
+                };
+                format!(
+                    "float64 or float32 values are needed (dtype <f8, >f8, <f4 or >f4), the \
+                     file holds {found}"
+                )
+            })?
             .into_iter()
             .map(f64::from)
             .collect(),
@@ -223,7 +237,12 @@ mod tests {
 
     /// A `.npy` file as numpy writes it (format 1.0).
     fn npy_bytes(descr: &str, shape: &str, data: &[u8]) -> Vec<u8> {
-        let dict = format!("{{'descr': '{descr}', 'fortran_order': False, 'shape': {shape}, }}");
+        npy_bytes_literal(&format!("'{descr}'"), shape, data)
+    }
+
+    /// [`npy_bytes`] with the dtype as a Python literal (a structured dtype is a list).
+    fn npy_bytes_literal(descr: &str, shape: &str, data: &[u8]) -> Vec<u8> {
+        let dict = format!("{{'descr': {descr}, 'fortran_order': False, 'shape': {shape}, }}");
         let mut header = dict.into_bytes();
         while (10 + header.len() + 1) % 64 != 0 {
             header.push(b' ');
@@ -256,7 +275,22 @@ mod tests {
         assert!(e.contains("2-D"), "{e}");
         let ints: Vec<u8> = [1i64, 2].iter().flat_map(|v| v.to_le_bytes()).collect();
         let e = read_npy(&npy_bytes("<i8", "(1, 2)", &ints)).unwrap_err();
-        assert!(e.contains("float64 or float32"), "{e}");
+        assert_eq!(
+            e,
+            "float64 or float32 values are needed (dtype <f8, >f8, <f4 or >f4), the file \
+             holds <i8"
+        );
+        // A structured array: its dtype in numpy's words, on one line.
+        let e = read_npy(&npy_bytes_literal(
+            "[('x', '<i8'), ('y', '<i8')]",
+            "(1, 1)",
+            &ints,
+        ))
+        .unwrap_err();
+        assert!(
+            e.ends_with("the file holds the structured dtype [('x', '<i8'), ('y', '<i8'), ]"),
+            "{e}"
+        );
     }
 
     /// Found by the fuzz harness (tests/fuzz.rs): a header whose shape overflows 64 bits

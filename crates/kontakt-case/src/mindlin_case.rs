@@ -37,8 +37,9 @@
 //! With `kind = "hertz"` the first axis `x` is the major semi-axis of the contact ellipse;
 //! with `kind = "ellipse"` it is the semi-axis `a` as given.
 
-use crate::common::{MaterialSpec, SCHEMA_VERSION, material, parse_toml};
+use crate::common::{MaterialSpec, SCHEMA_VERSION, in_degrees, material, parse_toml};
 use crate::traction_case::{FrictionSpec, TractionGeometry, TractionLoad};
+use crate::validity::{ContactSize, checked, checked_report};
 use kontakt::tangential::{ContactEllipse, EllipseAxis, Mindlin};
 use kontakt::{Error, Result};
 use serde::{Deserialize, Serialize};
@@ -82,6 +83,21 @@ pub struct TangentialSpec {
     /// Points per branch of the loop, 2..=10000, default 41.
     #[serde(default = "default_points")]
     pub points: usize,
+}
+
+/// Smallest `Q*/(mu P)` of a case: below it the loop area, a difference of displacements
+/// that agree to that fraction, loses more than 1e-4 of its value to rounding with 10000
+/// points per branch (measured: 4e-4 at 6.7e-12 with 41 points, 1.4 % at 6.7e-14).
+pub const MIN_LOAD_FRACTION: f64 = 1e-8;
+
+/// `x` as Rust prints it within 1e-3..1e7, in exponent form outside (a limit of 1e302 N
+/// in one line, not 303 digits).
+fn short(x: f64) -> String {
+    if (1e-3..1e7).contains(&x.abs()) {
+        format!("{x}")
+    } else {
+        format!("{x:e}")
+    }
 }
 
 fn default_cycles() -> usize {
@@ -142,7 +158,17 @@ pub struct MindlinReport {
     pub loop_force_n: Vec<f64>,
     /// The tangential displacement \[mm\] at each point of `loop_force_n`.
     pub loop_displacement_mm: Vec<f64>,
+    /// Results to treat with care: a contact large against the bodies' radii of
+    /// curvature. Absent when none applies.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub warnings: Vec<String>,
+    /// The contact's size against the bodies (`kind = "hertz"`), for the validity check
+    /// ([`crate::validity`]); not in the JSON.
+    #[serde(skip)]
+    pub contacts: Vec<ContactSize>,
 }
+
+checked_report!(MindlinReport);
 
 impl MindlinCase {
     /// Parse a Cattaneo-Mindlin case from TOML text.
@@ -162,6 +188,11 @@ impl MindlinCase {
 /// (`tangential.amplitude_n` outside `0 < Q* <= mu P`, `tangential.cycles`,
 /// `tangential.points`, `friction.mu`, `load.force_n`, `geometry.radii1_mm`, ...).
 pub fn run_mindlin_case(case: &MindlinCase) -> Result<MindlinReport> {
+    checked(run_mindlin_case_unchecked(case)?)
+}
+
+/// [`run_mindlin_case`] before the validity check of [`crate::validity::checked`].
+pub(crate) fn run_mindlin_case_unchecked(case: &MindlinCase) -> Result<MindlinReport> {
     if case.method != "mindlin" {
         return Err(Error::invalid(
             "method",
@@ -206,16 +237,18 @@ pub fn run_mindlin_case(case: &MindlinCase) -> Result<MindlinReport> {
             other => other.into(),
         })
     };
+    let mut contacts = Vec::new();
     let (label, ellipse) = match &case.geometry {
         TractionGeometry::Hertz {
             radii1_mm,
             radii2_mm,
             angle_deg,
         } => {
-            let sol = crate::traction_case::hertz_of_geometry(
+            let (sol, size) = crate::traction_case::hertz_of_geometry(
                 *radii1_mm, *radii2_mm, *angle_deg, m1, m2, force,
             )
             .map_err(map)?;
+            contacts.push(size);
             (
                 "hertz",
                 ContactEllipse::from_hertz(&sol, EllipseAxis::Major)?,
@@ -234,15 +267,28 @@ pub fn run_mindlin_case(case: &MindlinCase) -> Result<MindlinReport> {
         }
     };
     let contact = Mindlin::new(ellipse, m1, m2, mu)
-        .and_then(|c| c.with_load_direction(t.angle_deg.to_radians()))
+        .and_then(|c| {
+            c.with_load_direction(t.angle_deg.to_radians())
+                .map_err(|e| in_degrees(e, "load_direction", "tangential.angle_deg", t.angle_deg))
+        })
         .map_err(map)?;
     let limit = contact.limit_force();
     let q = t.amplitude_n;
-    if !(q.is_finite() && q > 0.0 && q <= limit) {
+    // Below MIN_LOAD_FRACTION the loop's width (of relative order Q*/(mu P) against its
+    // length) is below what double precision resolves over the loop's points: the loop
+    // area came out as rounding noise (1e-18 N mm against 6e-154 at Q*/(mu P) = 2e-153).
+    let least = MIN_LOAD_FRACTION * limit;
+    if !(q.is_finite() && q >= least && q <= limit) {
         return Err(Error::invalid(
             "tangential.amplitude_n",
             q,
-            format!("0 < Q* <= mu P = {limit} N (beyond it the contact slides)"),
+            format!(
+                "{} N <= Q* <= mu P = {} N (beyond mu P the contact slides; below \
+                 {MIN_LOAD_FRACTION:e} mu P it practically sticks, and its hysteresis loop is \
+                 narrower than double precision resolves)",
+                short(least),
+                short(limit)
+            ),
         ));
     }
 
@@ -297,5 +343,7 @@ pub fn run_mindlin_case(case: &MindlinCase) -> Result<MindlinReport> {
         loop_energy_nmm: loop_energy,
         loop_force_n: forces,
         loop_displacement_mm: shifts,
+        warnings: Vec::new(),
+        contacts,
     })
 }

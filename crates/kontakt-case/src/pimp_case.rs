@@ -42,8 +42,9 @@
 //! ```
 
 pub use crate::common::MaterialSpec;
-use crate::common::SCHEMA_VERSION;
 pub(crate) use crate::common::material;
+use crate::common::{SCHEMA_VERSION, in_degrees};
+use crate::validity::{ContactSize, Size, checked_report};
 use kontakt::bearing::{FaceShape, RibShape, RollerRib, RollerRibSpec, TaperedRollerBearing};
 use kontakt::field::NormalSolution;
 use kontakt::geometry::RelativeCurvature;
@@ -282,10 +283,11 @@ impl SurfaceSpec {
         let surface = match s {
             "plane" => Ok(Surface::plane(self.material)),
             "sphere" => Surface::sphere(need(f("radius_mm"), self.radius_mm, s)?, self.material),
-            "cone" => Surface::cone(
-                need(f("half_angle_deg"), self.half_angle_deg, s)?.to_radians(),
-                self.material,
-            ),
+            "cone" => {
+                let deg = need(f("half_angle_deg"), self.half_angle_deg, s)?;
+                Surface::cone(deg.to_radians(), self.material)
+                    .map_err(|e| in_degrees(e, "half_angle", "half_angle_deg", deg))
+            }
             "torus" => Surface::torus(
                 need(f("major_mm"), self.major_mm, s)?,
                 need(f("minor_mm"), self.minor_mm, s)?,
@@ -412,7 +414,13 @@ pub struct PimpReport {
     /// (`kontakt::field::validity`). Empty when none applies (always for a gap map, whose
     /// bodies are unknown).
     pub warnings: Vec<String>,
+    /// The zone's size against the bodies, for the validity check ([`crate::validity`]);
+    /// not in the JSON.
+    #[serde(skip)]
+    pub contacts: Vec<ContactSize>,
 }
+
+checked_report!(PimpReport);
 
 /// The grid of a PimP result.
 #[derive(Debug, Clone, Copy, PartialEq, Serialize)]
@@ -502,6 +510,13 @@ pub fn roller_rib_from_spec(geometry: &GeometrySpec) -> Result<Option<(String, R
 /// Invalid input (named by its case-file key), bodies that do not touch under pose
 /// control (the error states the separation), grid and convergence failures.
 pub fn run_pimp_case(case: &PimpCase) -> Result<PimpOutcome> {
+    crate::validity::checked(run_pimp_case_unchecked(case)?)
+}
+
+checked_report!(PimpOutcome, report);
+
+/// [`run_pimp_case`] before the validity check of [`crate::validity::checked`].
+pub(crate) fn run_pimp_case_unchecked(case: &PimpCase) -> Result<PimpOutcome> {
     if case.method != "pimp" {
         return Err(Error::invalid(
             "method",
@@ -580,7 +595,7 @@ pub fn run_pimp_case(case: &PimpCase) -> Result<PimpOutcome> {
             ));
         }
     };
-    let warnings = zone_warnings(&case.geometry, source.as_ref(), &solution)?;
+    let (warnings, contacts) = zone_warnings(&case.geometry, source.as_ref(), &solution)?;
     let k = source.curvature();
     let hertz = hertz_echo(k, m1, m2, solution.force);
     let report = PimpReport::assemble(
@@ -597,11 +612,17 @@ pub fn run_pimp_case(case: &PimpCase) -> Result<PimpOutcome> {
             hertz,
             grid_rounds: solution.domains - 1,
             warnings,
+            contacts,
         },
         &solution,
     );
     Ok(PimpOutcome { report, solution })
 }
+
+/// Smallest Hertz approach of a PimP or half-space case over the radius of relative
+/// curvature: the gap of surfaces placed at coordinates of the bodies' size is resolved to
+/// about 1e-16 of that size, so an approach of 1e-12 of it keeps four digits.
+pub const MIN_RELATIVE_APPROACH: f64 = 1e-12;
 
 /// Before a solve: the size check on the Hertz ellipse of the local curvature under the
 /// case's load (`kontakt::field::validity::ellipse_size_check`), so that a contact far
@@ -631,13 +652,41 @@ pub(crate) fn precheck(
     };
     // An invalid load is reported by the solver with its key.
     let Ok(sol) = sol else { return Ok(()) };
+    // The approach must be resolved by the gap, which is computed from surfaces placed at
+    // coordinates of the bodies' size: below MIN_RELATIVE_APPROACH of the radius of
+    // relative curvature the solvers iterated on rounding noise and ended as "did not
+    // converge" (a hostile probe: 1e-30 N on the example sphere/torus).
+    let k = source.curvature();
+    let radius = 0.5 / k.a_coef.max(k.b_coef);
+    if sol.approach < MIN_RELATIVE_APPROACH * radius {
+        let (key, value) = match (load.force_n, approach) {
+            (Some(f), _) => ("load.force_n", format!("{f:e} N")),
+            (None, Some(d)) if load.approach_mm.is_some() => {
+                ("load.approach_mm", format!("{d:e} mm"))
+            }
+            (None, _) => (
+                "geometry",
+                format!("a separation of {:e} mm", -approach.unwrap_or(0.0)),
+            ),
+        };
+        return Err(Error::invalid(
+            key,
+            value,
+            format!(
+                "a load whose Hertz approach ({:e} mm) is at least {MIN_RELATIVE_APPROACH:e} of \
+                 the radius of relative curvature {radius:e} mm (below it the gap is not \
+                 resolved in double precision)",
+                sol.approach
+            ),
+        ));
+    }
     kontakt::field::validity::ellipse_size_check(source, sol.semi_axes, sol.orientation)
         .map_err(|e| e.map_field(|f| size_field(geometry, f)))?;
     Ok(())
 }
 
 /// The case-file key of a size check's field (`body1.radii`, an edge's quantity).
-fn size_field(geometry: &GeometrySpec, f: &str) -> String {
+pub(crate) fn size_field(geometry: &GeometrySpec, f: &str) -> String {
     let body = if f.starts_with("body2") { 2 } else { 1 };
     match (geometry, f) {
         (GeometrySpec::RollerRib { .. }, "bearing.roller_large_end_radius") => {
@@ -660,16 +709,48 @@ fn size_field(geometry: &GeometrySpec, f: &str) -> String {
 }
 
 /// The size check of a solution against the bodies of its geometry
-/// (`kontakt::field::validity`): the report's warnings, or the error naming the case-file
-/// key of the body's radii or the face's edge.
+/// (`kontakt::field::validity`): the report's warnings about a face's edge and the zone's
+/// size against the bodies' curvature (warned about by [`crate::validity::checked`]), or
+/// the error naming the case-file key of the body's radii or the face's edge.
 pub(crate) fn zone_warnings<D>(
     geometry: &GeometrySpec,
     source: &dyn GapSource,
     solution: &NormalSolution<D>,
-) -> Result<Vec<String>> {
+) -> Result<(Vec<String>, Vec<ContactSize>)> {
     let check = kontakt::field::validity::zone_size_check(source, solution)
         .map_err(|e| e.map_field(|f| size_field(geometry, f)))?;
-    Ok(check.warnings())
+    let edge = kontakt::field::validity::ZoneCheck {
+        curvature: None,
+        ..check
+    };
+    let keys = [
+        size_field(geometry, "body1.radii"),
+        size_field(geometry, "body2.radii"),
+    ];
+    let contacts = check
+        .curvature
+        .map(|c| ContactSize {
+            at: None,
+            size: Size::HalfSpace(c),
+            keys,
+        })
+        .into_iter()
+        .collect();
+    Ok((edge.warnings(), contacts))
+}
+
+/// The axes `[x, y]` of a case's field grid as unit vectors in the bearing frame (`X`
+/// radial, `Y` circumferential at the contact point, `Z` the ring axis) for a roller/rib
+/// geometry, built-in pairing or custom face and rib alike, so that its maps name their
+/// axes along and across the rib as the demo's do; `None` for the other kinds (no bearing).
+///
+/// # Errors
+/// Those of [`roller_rib_from_spec`] and of the pair's gap.
+pub fn bearing_axes(geometry: &GeometrySpec) -> Result<Option<[[f64; 3]; 2]>> {
+    let Some((_, pair)) = roller_rib_from_spec(geometry)? else {
+        return Ok(None);
+    };
+    Ok(Some(pair.gap()?.principal_axes()))
 }
 
 /// The substitute geometry of a case and what the report echoes about it.
@@ -805,8 +886,10 @@ pub(crate) struct ReportMeta {
     pub hertz: Option<HertzEcho>,
     /// The report's `grid_rounds`: PimP counts grid resizes, bem the domains tried.
     pub grid_rounds: usize,
-    /// The size check's warnings.
+    /// The size check's warnings (a face's edge).
     pub warnings: Vec<String>,
+    /// The zone's size against the bodies.
+    pub contacts: Vec<ContactSize>,
 }
 
 impl PimpReport {
@@ -842,6 +925,7 @@ impl PimpReport {
             rib_angle_deg: meta.rib_angle_deg,
             hertz: meta.hertz,
             warnings: meta.warnings,
+            contacts: meta.contacts,
         }
     }
 }

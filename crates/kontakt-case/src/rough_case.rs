@@ -220,6 +220,11 @@ impl RoughCase {
 /// `load.mean_pressure_mpa[2]`, ...), a map that cannot be read, and
 /// [`Error::NotConverged`].
 pub fn run_rough_case(case: &RoughCase, base_dir: &Path) -> Result<RoughOutcome> {
+    crate::validity::checked(run_rough_case_unchecked(case, base_dir)?)
+}
+
+/// [`run_rough_case`] before the validity check of [`crate::validity::checked`].
+pub(crate) fn run_rough_case_unchecked(case: &RoughCase, base_dir: &Path) -> Result<RoughOutcome> {
     if case.method != "rough" {
         return Err(Error::invalid(
             "method",

@@ -73,7 +73,9 @@
 //! its value and the models, when the materials differ and `K` is neglected.
 
 use crate::common::{MaterialSpec, SCHEMA_VERSION, material, parse_toml};
+use crate::validity::{ContactSize, Size, checked, checked_report};
 use kontakt::hertz::line::LineContact;
+use kontakt::hertz::validity::{line_size, point_size};
 use kontakt::hertz::{HertzPointContact, PointGeometry};
 use kontakt::material::effective_modulus;
 use kontakt::rolling::{KalkerExact, KalkerExactOptions, difference_parameter};
@@ -177,6 +179,15 @@ pub enum TractionModel {
 }
 
 impl TractionModel {
+    /// Every model, in the order of the schema's documentation.
+    pub const ALL: [TractionModel; 5] = [
+        TractionModel::Carter,
+        TractionModel::KalkerLinear,
+        TractionModel::Fastsim,
+        TractionModel::KalkerExact,
+        TractionModel::Asperity,
+    ];
+
     /// The model's name as in the case file and the report.
     pub fn as_str(self) -> &'static str {
         match self {
@@ -356,9 +367,56 @@ impl CreepageRange {
             }
         }
         let n = self.points - 1;
+        // Where (max - min) i overflows (min = -1e308, max = 1e308 made inf * 0, a NaN
+        // creepage nobody typed; found by probing), min (1 - t) + max t instead.
+        let span = self.max - self.min;
+        let span = if (span * n as f64).is_finite() {
+            span
+        } else {
+            f64::INFINITY
+        };
         Ok((0..=n)
-            .map(|i| self.min + (self.max - self.min) * i as f64 / n as f64)
+            .map(|i| {
+                if span.is_finite() {
+                    self.min + span * i as f64 / n as f64
+                } else {
+                    let t = i as f64 / n as f64;
+                    self.min * (1.0 - t) + self.max * t
+                }
+            })
             .collect())
+    }
+}
+
+/// A library error about one point of the creepage range (`creepage = 1e306`, a value the
+/// case does not give), said as the bound of `[creepage]` on its side (`creepage.max` or
+/// `creepage.min`), with the point in the message.
+fn range_point(e: Error, range: &CreepageRange) -> Error {
+    match e {
+        Error::InvalidInput {
+            field,
+            value,
+            expected,
+        } if field == "creepage" || field == "creepage.longitudinal" => {
+            // The bound on the point's side: max for a point of max's sign within it (the
+            // larger bound in magnitude when the point does not parse).
+            let max_side = value
+                .parse::<f64>()
+                .map_or(range.max.abs() >= range.min.abs(), |x| {
+                    x.signum() == range.max.signum() && x.abs() <= range.max.abs()
+                });
+            let (key, bound) = if max_side {
+                ("creepage.max", range.max)
+            } else {
+                ("creepage.min", range.min)
+            };
+            Error::invalid(
+                key,
+                bound,
+                format!("{expected} (the range reaches the creepage {value})"),
+            )
+        }
+        other => other,
     }
 }
 
@@ -398,7 +456,8 @@ impl Default for FastsimSpec {
 pub struct KalkerExactSpec {
     /// Cells across the contact ellipse `[mx, my]` (along the rolling direction, across),
     /// each 8..=1024; default `[32, 32]`. Below 16 the report warns: the creep force may
-    /// then be off by 5 % or more (grid convergence in docs/tangential.md §11).
+    /// then be off by 5 % or more (grid convergence in docs/tangential.md §11); with spin
+    /// below 64 (`KalkerExactOptions::SPIN_ELEMENTS`; docs/rolling.md §6.1).
     pub elements: [usize; 2],
     /// Most Newton iterations of the steady solver per point, >= 1 (default 100); a
     /// point that needs more is reported as not converged.
@@ -553,10 +612,17 @@ pub struct TractionReport {
     pub spin_creepage_per_mm: Option<f64>,
     /// One curve per model, in the order of the case.
     pub curves: Vec<CurveReport>,
-    /// Results to treat with care: unconverged points of `kalker_exact`, a coarse grid.
+    /// Results to treat with care: a contact large against the bodies, unconverged points
+    /// of `kalker_exact`, a coarse grid.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<String>,
+    /// The contact's size against the bodies (`kind = "hertz"`, and `"line"` with radii),
+    /// for the validity check ([`crate::validity`]); not in the JSON.
+    #[serde(skip)]
+    pub contacts: Vec<ContactSize>,
 }
+
+checked_report!(TractionReport);
 
 /// Run a traction case: build the contact, plan each model once and evaluate its curve.
 ///
@@ -641,6 +707,16 @@ pub fn run_traction_case_with_map(
     case: &TractionCase,
     map: Option<MapPoint>,
 ) -> Result<(TractionReport, Option<ExactMap>)> {
+    let (report, map) = run_traction_case_with_map_unchecked(case, map)?;
+    Ok((checked(report)?, map))
+}
+
+/// [`run_traction_case_with_map`] before the validity check of
+/// [`crate::validity::checked`].
+pub(crate) fn run_traction_case_with_map_unchecked(
+    case: &TractionCase,
+    map: Option<MapPoint>,
+) -> Result<(TractionReport, Option<ExactMap>)> {
     if map.is_some() && !case.models.contains(&TractionModel::KalkerExact) {
         return Err(Error::invalid(
             "models",
@@ -669,13 +745,12 @@ pub fn run_traction_case_with_map(
             "\"traction\" for this schema",
         ));
     }
-    if case.models.is_empty() {
-        return Err(Error::invalid(
-            "models",
-            "[]",
-            "at least one of carter, kalker_linear, fastsim, kalker_exact, asperity",
-        ));
-    }
+    let names: Vec<&str> = case.models.iter().map(|m| m.as_str()).collect();
+    kontakt::error::choices(
+        "models",
+        &names,
+        &TractionModel::ALL.map(TractionModel::as_str),
+    )?;
     let m1 = material(&case.body1, "body1")?;
     let m2 = material(&case.body2, "body2")?;
     let mu = case.friction.mu;
@@ -694,7 +769,7 @@ pub fn run_traction_case_with_map(
     };
     let (force, load_key) = case.load.force(length)?;
     let map_common = |e: Error| {
-        e.map_field(|f| match f {
+        range_point(e, &case.creepage).map_field(|f| match f {
             "friction_coefficient" => "friction.mu".into(),
             "normal_force" | "force" | "line_load" => load_key.into(),
             "poisson_ratio" => "body1.nu, body2.nu".into(),
@@ -713,14 +788,16 @@ pub fn run_traction_case_with_map(
     let k_difference = difference_parameter(&m1, &m2).map_err(map_common)?;
 
     // (label, ellipse, Carter, line load, [a, b] or [half-width, half-length], p0)
+    let mut contacts = Vec::new();
     let (label, ellipse, carter, line_load, semi_axes_mm, max_pressure_mpa) = match &case.geometry {
         TractionGeometry::Hertz {
             radii1_mm,
             radii2_mm,
             angle_deg,
         } => {
-            let sol = hertz_of_geometry(*radii1_mm, *radii2_mm, *angle_deg, m1, m2, force)
+            let (sol, size) = hertz_of_geometry(*radii1_mm, *radii2_mm, *angle_deg, m1, m2, force)
                 .map_err(map_common)?;
+            contacts.push(size);
             let Some(axis) = rolling_axis(&sol) else {
                 return Err(Error::Geometry {
                     field: "geometry.angle_deg".into(),
@@ -760,6 +837,13 @@ pub fn run_traction_case_with_map(
                                 _ => "geometry.radii_mm".into(),
                             })
                         })?;
+                    let sol = contact.solve(line_load).map_err(map_common)?;
+                    let size = ContactSize::new(
+                        Size::Hertz(line_size(contact.radii(), &sol)),
+                        ["geometry.radii_mm[0]", "geometry.radii_mm[1]"],
+                    );
+                    size.verdict()?;
+                    contacts.push(size);
                     Carter::from_line_contact(&contact, line_load, mu).map_err(map_common)?
                 }
                 (None, Some(a)) => {
@@ -942,6 +1026,7 @@ pub fn run_traction_case_with_map(
         spin_creepage_per_mm: combined.then_some(case.creepage.spin_per_mm),
         curves,
         warnings,
+        contacts,
     };
     Ok((report, exact_map))
 }
@@ -1011,6 +1096,15 @@ fn exact_curve(
              {KALKER_EXACT_WARN_ELEMENTS} the creep force may be off by 5 % or more (grid \
              convergence: docs/tangential.md section 11); use kalker_exact.elements >= [32, 32] \
              for results"
+        ));
+    }
+    if mx.min(my) >= KALKER_EXACT_WARN_ELEMENTS && options.coarse_for(&creepages) {
+        warnings.push(format!(
+            "kalker_exact: {mx} x {my} cells across the contact with spin; the creep force \
+             converges slowly there (first order; CONTACT's lateral-plus-spin case: 5.9 % low \
+             at 32 cells, 3.0 % at 64, 1.5 % at 128; docs/rolling.md section 6.1): use \
+             kalker_exact.elements >= [{n}, {n}] for results",
+            n = KalkerExactOptions::SPIN_ELEMENTS
         ));
     }
     let not_converged: Vec<usize> = points
@@ -1183,8 +1277,9 @@ fn combined_curve(
 
 /// The Hertz solution of a `kind = "hertz"` geometry (principal radii \[mm\], the angle
 /// between the principal planes \[deg\]) under the normal force `force` \[N\]; errors name
-/// the case keys (`geometry.angle_deg`, `geometry.radii1_mm`, ...). Shared with the
-/// Cattaneo-Mindlin cases.
+/// the case keys (`geometry.angle_deg`, `geometry.radii1_mm`, ...), and its size against
+/// the bodies (keys `geometry.radii1_mm`, `geometry.radii2_mm`; refused here already when
+/// as large as a body's radius of curvature). Shared with the Cattaneo-Mindlin cases.
 pub(crate) fn hertz_of_geometry(
     radii1_mm: [f64; 2],
     radii2_mm: [f64; 2],
@@ -1192,7 +1287,7 @@ pub(crate) fn hertz_of_geometry(
     m1: kontakt::material::ElasticMaterial,
     m2: kontakt::material::ElasticMaterial,
     force: f64,
-) -> Result<kontakt::hertz::HertzPointSolution> {
+) -> Result<(kontakt::hertz::HertzPointSolution, ContactSize)> {
     if !angle_deg.is_finite() {
         return Err(Error::invalid(
             "geometry.angle_deg",
@@ -1208,7 +1303,13 @@ pub(crate) fn hertz_of_geometry(
                 .replace("body2.radii", "geometry.radii2_mm"),
         })
     })?;
-    HertzPointContact::new(g, m1, m2)?.solve_force(force)
+    let sol = HertzPointContact::new(g, m1, m2)?.solve_force(force)?;
+    let size = ContactSize::new(
+        Size::Hertz(point_size(&g, &sol)),
+        ["geometry.radii1_mm", "geometry.radii2_mm"],
+    );
+    size.verdict()?;
+    Ok((sol, size))
 }
 
 /// Plan the asperity model on the case's nominal contact.

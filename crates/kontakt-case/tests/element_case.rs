@@ -212,13 +212,9 @@ fn errors_name_case_keys() {
 }
 
 fn capi_examples() -> Vec<PathBuf> {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../kontakt-capi/examples");
-    let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-        .collect();
-    files.sort();
+    let files = toml_keys::toml_files(
+        &PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../kontakt-capi/examples"),
+    );
     assert!(!files.is_empty());
     files
 }

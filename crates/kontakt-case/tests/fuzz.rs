@@ -15,6 +15,9 @@
 
 #[path = "support/fuzz_gen.rs"]
 mod fuzz_gen;
+#[path = "support/toml_keys.rs"]
+#[allow(dead_code)] // only the listing of case files is used here
+mod toml_keys;
 
 use fuzz_gen::{Edit, apply, config, edit, non_finite, splice, splice_text, to_text};
 use kontakt::gap::MapKind;
@@ -45,13 +48,7 @@ fn case_seeds() -> &'static [Value] {
 
 /// The `.toml` files of `dir`, sorted by name.
 fn toml_paths(dir: &Path) -> Vec<PathBuf> {
-    let mut files: Vec<_> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
-        .collect();
-    files.sort();
-    files
+    toml_keys::toml_files(dir)
 }
 
 /// Every `.toml` file of `dir`, sorted by name, parsed and cut by [`small`].

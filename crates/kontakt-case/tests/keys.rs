@@ -16,7 +16,7 @@ use toml::Value;
 
 #[path = "support/toml_keys.rs"]
 mod toml_keys;
-use toml_keys::{leaves, names_a_key, set};
+use toml_keys::{example_files, leaves, names_a_key, set};
 
 fn examples() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples")
@@ -24,12 +24,7 @@ fn examples() -> PathBuf {
 
 #[test]
 fn every_error_names_a_key_of_the_case_file() {
-    let mut files: Vec<PathBuf> = std::fs::read_dir(examples())
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-        .collect();
-    files.sort();
+    let files = example_files();
     let (mut runs, mut named, mut wrong) = (0, 0, Vec::new());
     for file in &files {
         let doc: Value = toml::from_str(&std::fs::read_to_string(file).unwrap()).unwrap();

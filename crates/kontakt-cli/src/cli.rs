@@ -162,14 +162,21 @@ pub enum Criterion {
     Tresca,
 }
 
+/// The case file that every case command reads, and its `--json` switch (one group,
+/// flattened into each command's arguments).
 #[derive(Debug, Args)]
-pub struct SolveArgs {
-    /// Case file (TOML), or `-` for standard input.
+pub struct CaseInput {
+    /// Case file (TOML, of the method the command names; docs/case-schema.md), or `-` for
+    /// standard input.
     #[arg(value_name = "CASE.toml")]
     pub case: PathBuf,
-    /// Print one JSON document instead of the table.
+    /// Print one JSON document instead of the table or text.
     #[arg(long)]
     pub json: bool,
+}
+
+#[derive(Debug, Args)]
+pub struct SolveArgs {
     /// PimP and BEM cases: write the fields to this CSV file (x_mm, y_mm, pressure_mpa;
     /// BEM adds displacement_mm and gap_mm).
     #[arg(long, value_name = "FILE.csv")]
@@ -177,6 +184,8 @@ pub struct SolveArgs {
     /// PimP and BEM cases: draw the pressure map with the contact outline (.png or .svg).
     #[arg(long, value_name = "FILE.png|svg")]
     pub map: Option<PathBuf>,
+    #[command(flatten)]
+    pub input: CaseInput,
 }
 
 #[derive(Debug, Args)]
@@ -194,7 +203,7 @@ pub struct ValidateArgs {
     /// Folder for the report (created if missing; files in it are overwritten).
     #[arg(long, value_name = "DIR", default_value = "kontakt-validate")]
     pub out: PathBuf,
-    /// Cells a side of the half-space grid, 8..=4096.
+    /// Cells a side of the half-space grid, 12..=4096 (each contact spans at least 8).
     #[arg(long, value_name = "N", default_value_t = 64)]
     pub cells: usize,
     /// Print the results as JSON instead of the summary table.
@@ -204,9 +213,6 @@ pub struct ValidateArgs {
 
 #[derive(Debug, Args)]
 pub struct TractionArgs {
-    /// Case file (TOML, method = "traction"), or `-` for standard input.
-    #[arg(value_name = "CASE.toml")]
-    pub case: PathBuf,
     /// Write every point to this CSV file (creepage, F_T/(mu F_N) per model).
     #[arg(long, value_name = "FILE.csv")]
     pub csv: Option<PathBuf>,
@@ -221,42 +227,30 @@ pub struct TractionArgs {
     /// kalker_exact reaches F_T/(mu F_N) = 0.5).
     #[arg(long, value_name = "XI", requires = "map", allow_hyphen_values = true)]
     pub map_creepage: Option<f64>,
-    /// Print one JSON document instead of the table.
-    #[arg(long)]
-    pub json: bool,
+    #[command(flatten)]
+    pub input: CaseInput,
 }
 
 #[derive(Debug, Args)]
 pub struct MindlinArgs {
-    /// Case file (TOML, method = "mindlin"), or `-` for standard input.
-    #[arg(value_name = "CASE.toml")]
-    pub case: PathBuf,
     /// Write every point of the loading history to this CSV file (force_n, displacement_mm).
     #[arg(long, value_name = "FILE.csv")]
     pub csv: Option<PathBuf>,
     /// Draw the hysteresis loop, Q against the shift (.png or .svg).
     #[arg(long, value_name = "FILE.png|svg")]
     pub plot: Option<PathBuf>,
-    /// Print one JSON document instead of the text.
-    #[arg(long)]
-    pub json: bool,
+    #[command(flatten)]
+    pub input: CaseInput,
 }
 
 #[derive(Debug, Args)]
 pub struct ImpactArgs {
-    /// Case file (TOML, method = "impact"), or `-` for standard input.
-    #[arg(value_name = "CASE.toml")]
-    pub case: PathBuf,
-    /// Print one JSON document instead of the text.
-    #[arg(long)]
-    pub json: bool,
+    #[command(flatten)]
+    pub input: CaseInput,
 }
 
 #[derive(Debug, Args)]
 pub struct RoughArgs {
-    /// Case file (TOML, method = "rough"), or `-` for standard input.
-    #[arg(value_name = "CASE.toml")]
-    pub case: PathBuf,
     /// Write one row per load to this CSV file.
     #[arg(long, value_name = "FILE.csv")]
     pub csv: Option<PathBuf>,
@@ -266,16 +260,12 @@ pub struct RoughArgs {
     /// Draw the pressure at the highest load (.png or .svg).
     #[arg(long, value_name = "FILE.png|svg")]
     pub map: Option<PathBuf>,
-    /// Print one JSON document instead of the table.
-    #[arg(long)]
-    pub json: bool,
+    #[command(flatten)]
+    pub input: CaseInput,
 }
 
 #[derive(Debug, Args)]
 pub struct FrictionArgs {
-    /// Case file (TOML, method = "friction"), or `-` for standard input.
-    #[arg(value_name = "CASE.toml")]
-    pub case: PathBuf,
     /// Write every row (model × speed) to this CSV file.
     #[arg(long, value_name = "FILE.csv")]
     pub csv: Option<PathBuf>,
@@ -291,9 +281,8 @@ pub struct FrictionArgs {
     /// Draw the friction-power density map (first model, middle speed).
     #[arg(long, value_name = "FILE.png|svg")]
     pub density: Option<PathBuf>,
-    /// Print one JSON document instead of the table.
-    #[arg(long)]
-    pub json: bool,
+    #[command(flatten)]
+    pub input: CaseInput,
 }
 
 #[derive(Debug, Args)]

@@ -9,7 +9,9 @@
 
 mod cli;
 mod commands;
+mod error;
 mod output;
+mod render;
 
 #[cfg(test)]
 mod fuzz;
@@ -23,7 +25,7 @@ fn main() -> ExitCode {
         Ok(args) => args,
         Err(e) => return usage_error(&e),
     };
-    let mut stdout = std::io::stdout().lock();
+    let mut stdout = StandardOutput(std::io::stdout().lock());
     let result =
         commands::run(&args, &mut stdout).and_then(|()| stdout.flush().map_err(Into::into));
     match result {
@@ -37,6 +39,27 @@ fn main() -> ExitCode {
             eprintln!("error: {}", one_line(&chain_message(&err)));
             ExitCode::from(code)
         }
+    }
+}
+
+/// Standard output whose write errors name it ("cannot write standard output: No space
+/// left on device"), as the files' errors name the file; the error's kind is kept (a
+/// closed pipe stays a closed pipe).
+struct StandardOutput<W>(W);
+
+impl<W: Write> StandardOutput<W> {
+    fn label(e: std::io::Error) -> std::io::Error {
+        std::io::Error::new(e.kind(), format!("cannot write standard output: {e}"))
+    }
+}
+
+impl<W: Write> Write for StandardOutput<W> {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        self.0.write(buf).map_err(Self::label)
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        self.0.flush().map_err(Self::label)
     }
 }
 

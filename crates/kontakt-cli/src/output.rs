@@ -5,6 +5,40 @@ use kontakt_case::ContactReport;
 use kontakt_case::case::ContactKind;
 use std::io::Write;
 
+/// A number in the text tables: `{:.N}` gives `N` decimals for `10^-N <= |x| < 1e7` (and
+/// 0), and exponent form with `max(N, 3)` decimals of the mantissa outside that range, so
+/// that a value of 1e300 prints as `1.000e300` and not as 301 digits that break the
+/// table's columns, and 1e-9 MPa not as `0.0` (`{}` without a precision: Rust's shortest
+/// form for `1e-5 <= |x| < 1e7`, `{:e}` outside). Width and alignment are honoured (numbers right-aligned by default).
+/// Every command's tables format their numbers through it.
+#[derive(Debug, Clone, Copy)]
+pub struct Num(pub f64);
+
+impl std::fmt::Display for Num {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let x = self.0;
+        // Fixed point while the number has a significant digit among the decimals asked
+        // for (at least 1e-5 without a precision) and is below 1e7.
+        let smallest = f
+            .precision()
+            .map_or(1e-5, |p| 10f64.powi(-(p.min(300) as i32)));
+        let plain = x == 0.0 || !x.is_finite() || (smallest..1e7).contains(&x.abs());
+        let s = match (plain, f.precision()) {
+            (true, Some(p)) => format!("{x:.p$}"),
+            (true, None) => format!("{x}"),
+            (false, Some(p)) => format!("{x:.*e}", p.max(3)),
+            (false, None) => format!("{x:e}"),
+        };
+        let pad = f.width().unwrap_or(0).saturating_sub(s.chars().count());
+        let (left, right) = match f.align() {
+            Some(std::fmt::Alignment::Left) => (0, pad),
+            Some(std::fmt::Alignment::Center) => (pad / 2, pad - pad / 2),
+            _ => (pad, 0),
+        };
+        write!(f, "{:left$}{s}{:right$}", "", "")
+    }
+}
+
 fn opt(v: Option<f64>, prec: usize) -> String {
     v.map_or_else(|| "-".to_string(), |x| fmt_num(x, prec))
 }
@@ -56,15 +90,23 @@ pub fn print_report(out: &mut impl Write, r: &ContactReport, json: bool) -> Resu
     let mut rows: Vec<(&str, String, &str)> = vec![
         ("body 1 radii", radii(&i.body1_radii_mm), "mm"),
         ("body 2 radii", radii(&i.body2_radii_mm), "mm"),
-        ("E1, nu1", format!("{}, {}", i.e1_mpa, i.nu1), "MPa, -"),
-        ("E2, nu2", format!("{}, {}", i.e2_mpa, i.nu2), "MPa, -"),
+        (
+            "E1, nu1",
+            format!("{}, {}", Num(i.e1_mpa), Num(i.nu1)),
+            "MPa, -",
+        ),
+        (
+            "E2, nu2",
+            format!("{}, {}", Num(i.e2_mpa), Num(i.nu2)),
+            "MPa, -",
+        ),
         ("contact modulus E*", fmt_num(r.e_star_mpa, 7), "MPa"),
     ];
     match r.kind {
         ContactKind::Point => {
             rows.push((
                 "angle between principal planes",
-                format!("{}", i.angle_deg),
+                format!("{}", Num(i.angle_deg)),
                 "deg",
             ));
             rows.push((
@@ -158,8 +200,34 @@ pub fn print_report(out: &mut impl Write, r: &ContactReport, json: bool) -> Resu
     for (k, val, unit) in rows {
         writeln!(out, "  {k:<w$}  {val:>v$}  {unit}")?;
     }
-    for warning in &r.warnings {
+    print_warnings(out, &r.warnings)
+}
+
+/// A report's warnings, one `  warning: ...` line each.
+pub fn print_warnings(out: &mut impl Write, warnings: &[String]) -> Result<()> {
+    for warning in warnings {
         writeln!(out, "  warning: {warning}")?;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Num;
+
+    /// Issue 30 item 12: the tables' one number format: fixed point in range, exponent
+    /// form outside (1e300 was printed with 301 digits), width and alignment kept.
+    #[test]
+    fn numbers_switch_to_exponent_form_outside_the_range() {
+        assert_eq!(format!("{:.4}", Num(0.123456)), "0.1235");
+        assert_eq!(format!("{:>12.6}", Num(0.0004)), "    0.000400");
+        assert_eq!(format!("{:.1}", Num(0.0004)), "4.000e-4");
+        assert_eq!(format!("{:.1}", Num(1e300)), "1.000e300");
+        assert_eq!(format!("{:>10.2}", Num(1e300)), " 1.000e300");
+        assert_eq!(format!("{:<8.1}|", Num(2.5)), "2.5     |");
+        assert_eq!(format!("{}", Num(1e150)), "1e150");
+        assert_eq!(format!("{}", Num(0.3)), "0.3");
+        assert_eq!(format!("{}", Num(1e-300)), "1e-300");
+        assert_eq!(format!("{:.3}", Num(0.0)), "0.000");
+    }
 }

@@ -682,3 +682,152 @@ fn pimp_and_bem_results_outside_the_model_warn_or_are_refused() {
         "{e}"
     );
 }
+
+/// A temporary copy of example `file` with each `(from, to)` of `edits` replaced.
+fn edited_example(file: &str, edits: &[(&str, &str)], tag: &str) -> PathBuf {
+    let mut text = std::fs::read_to_string(examples().join(file)).unwrap();
+    for (from, to) in edits {
+        assert!(text.contains(from), "{from}");
+        text = text.replace(from, to);
+    }
+    let p = std::env::temp_dir().join(format!("kontakt-cli-{}-{tag}.toml", std::process::id()));
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+/// Issue 30 item 3: the subcommands that bypassed the size check (traction, mindlin,
+/// impact, friction) print the `warning:` line in the band 0.4-1 and refuse beyond it with
+/// exit status 2 naming the key, as `kontakt solve` does on the same file.
+#[test]
+fn every_subcommand_warns_and_refuses_an_oversize_contact() {
+    for (command, file, from, warn, refuse, key) in [
+        (
+            "mindlin",
+            "mindlin_fretting.toml",
+            "force_n = 100.0",
+            "force_n = 1e6",
+            "force_n = 1e8",
+            "geometry.radii1_mm",
+        ),
+        (
+            "traction",
+            "traction_twin_disc.toml",
+            "force_n = 1000.0",
+            "force_n = 1e8",
+            "force_n = 1e9",
+            "geometry.radii1_mm",
+        ),
+        (
+            "impact",
+            "impact_oblique.toml",
+            "speed_mm_per_s = 1000.0",
+            "speed_mm_per_s = 1e6",
+            "speed_mm_per_s = 1e7",
+            "sphere.radius_mm",
+        ),
+        (
+            "friction",
+            "rib_friction.toml",
+            "axial_n = 15000.0",
+            "axial_n = 6e6",
+            "axial_n = 1e8",
+            "geometry.bearing.roller_large_end_radius_mm",
+        ),
+    ] {
+        let p = edited_example(file, &[(from, warn)], command);
+        for sub in [command, "solve"] {
+            let out = kontakt().arg(sub).arg(&p).output().unwrap();
+            assert!(
+                out.status.success(),
+                "{sub} {file}: {}",
+                String::from_utf8_lossy(&out.stderr)
+            );
+            let text = String::from_utf8(out.stdout).unwrap();
+            assert!(
+                text.lines().any(|l| l.starts_with("  warning: ")
+                    && (l.contains("contact size") || l.contains("face edge"))),
+                "{sub} {file}: {text}"
+            );
+        }
+        let p = edited_example(file, &[(from, refuse)], command);
+        for sub in [command, "solve"] {
+            let line = bad(&[sub, p.to_str().unwrap()]);
+            assert!(line.contains(&format!(": {key}: ")), "{sub} {file}: {line}");
+        }
+    }
+}
+
+/// Issue 30 item 4: `kontakt mindlin` goes through the report's finiteness check (mu =
+/// 1e301 printed "inf N mm" and wrote null in JSON): exit status 2 naming the key, in
+/// text and JSON.
+#[test]
+fn mindlin_refuses_an_overflowing_report() {
+    let p = edited_example(
+        "mindlin_fretting.toml",
+        &[
+            ("mu = 0.3", "mu = 1e300"),
+            ("amplitude_n = 20.0", "amplitude_n = 1e301"),
+        ],
+        "mindlin-inf",
+    );
+    for json in [false, true] {
+        let mut args = vec!["mindlin", p.to_str().unwrap()];
+        if json {
+            args.push("--json");
+        }
+        let line = bad(&args);
+        assert!(
+            line.contains("dissipated_energy_per_cycle_nmm: the result is inf"),
+            "{line}"
+        );
+    }
+}
+
+/// Issue 30 item 12: numbers beyond the tables' range print in exponent form (mu = 1e150
+/// printed 151 digits), and a full disk names the file or standard output (exit 1).
+#[test]
+fn extreme_numbers_and_full_disks() {
+    let p = edited_example(
+        "mindlin_fretting.toml",
+        &[
+            ("mu = 0.3", "mu = 1e150"),
+            ("amplitude_n = 20.0", "amplitude_n = 1e151"),
+        ],
+        "mindlin-big",
+    );
+    let out = kontakt().arg("mindlin").arg(&p).output().unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(text.contains("mu = 1e150"), "{text}");
+    assert!(text.lines().all(|l| l.chars().count() < 200), "{text}");
+    if !std::path::Path::new("/dev/full").exists() {
+        return;
+    }
+    let mindlin = examples().join("mindlin_fretting.toml");
+    let out = kontakt()
+        .arg("mindlin")
+        .arg(&mindlin)
+        .args(["--csv", "/dev/full"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(err.contains("cannot write /dev/full: "), "{err}");
+    let full = std::fs::OpenOptions::new()
+        .write(true)
+        .open("/dev/full")
+        .unwrap();
+    let out = std::process::Command::new(assert_cmd::cargo::cargo_bin("kontakt"))
+        .arg("mindlin")
+        .arg(&mindlin)
+        .stdout(full)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(err.contains("cannot write standard output: "), "{err}");
+}

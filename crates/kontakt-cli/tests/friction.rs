@@ -86,8 +86,8 @@ fn example_report_is_consistent() {
         let w = f("speed_rpm") * std::f64::consts::PI / 30.0;
         assert!((f("bearing_power_w") - z * f("power_w")).abs() < 1e-9 * f("bearing_power_w"));
         assert!(
-            (f("bearing_torque_nmm") - f("bearing_power_w") * 1e3 / w).abs()
-                < 1e-9 * f("bearing_torque_nmm")
+            (f("bearing_drag_torque_nmm") - f("bearing_power_w") * 1e3 / w).abs()
+                < 1e-9 * f("bearing_drag_torque_nmm")
         );
         assert!(f("coefficient") > 0.0 && f("coefficient") <= 0.12 * 1.001);
     }
@@ -99,7 +99,7 @@ fn example_report_is_consistent() {
         let at = |model: &str| {
             rows.iter()
                 .find(|x| x["model"] == model && x["speed_rpm"].as_f64() == Some(s))
-                .unwrap()["bearing_torque_nmm"]
+                .unwrap()["bearing_drag_torque_nmm"]
                 .as_f64()
                 .unwrap()
         };

@@ -129,7 +129,7 @@ fn bad_cases_name_the_key() {
         (
             "amplitude_n = 20.0",
             "amplitude_n = 31.0",
-            "invalid tangential.amplitude_n = 31: expected 0 < Q* <= mu P = 30",
+            "invalid tangential.amplitude_n = 31: expected 3e-7 N <= Q* <= mu P = 30 N",
         ),
         (
             "amplitude_n = 20.0",

@@ -60,6 +60,8 @@ fn main() -> Result<(), PlotError> {
         overlays: &overlays,
         ellipse: None,
         max_marker: None,
+        color_max: None,
+        stretch: None,
     };
     for ext in ["png", "svg"] {
         let path = out.join(format!("map128.{ext}"));
@@ -207,6 +209,7 @@ fn main() -> Result<(), PlotError> {
         y_label: "pressure [MPa]",
         series: &series,
         x_log: false,
+        y_from_zero: false,
     };
     for (ext, size) in [
         ("png", (900, 600)),

@@ -107,6 +107,9 @@ pub(crate) fn frame(map: &FieldMap) -> Frame {
         }
     }
     let (mut gx0, mut gx1, mut gy0, mut gy1) = (map.x_min, x_max, map.y_min, y_max);
+    // The ellipse lies wholly inside the frame, with a margin (its dotted line's tips
+    // were cut at the frame's edge).
+    let mut ellipse_box = None;
     if let Some(e) = &map.ellipse {
         let (s, c) = e.angle.sin_cos();
         let (a, b) = e.semi_axes;
@@ -119,10 +122,7 @@ pub(crate) fn frame(map: &FieldMap) -> Frame {
             e.centre.1 + hy,
         );
         grow(ex0, ex1, ey0, ey1);
-        gx0 = gx0.min(ex0);
-        gx1 = gx1.max(ex1);
-        gy0 = gy0.min(ey0);
-        gy1 = gy1.max(ey1);
+        ellipse_box = Some((ex0, ex1, ey0, ey1));
     }
     if !(bx1 > bx0) || !(by1 > by0) {
         return Frame {
@@ -133,17 +133,24 @@ pub(crate) fn frame(map: &FieldMap) -> Frame {
     }
     let px = (0.08 * (bx1 - bx0)).max(map.dx);
     let py = (0.08 * (by1 - by0)).max(map.dy);
+    if let Some((ex0, ex1, ey0, ey1)) = ellipse_box {
+        gx0 = gx0.min(ex0 - px);
+        gx1 = gx1.max(ex1 + px);
+        gy0 = gy0.min(ey0 - py);
+        gy1 = gy1.max(ey1 + py);
+    }
     let x = ((bx0 - px).max(gx0), (bx1 + px).min(gx1));
     let y = ((by0 - py).max(gy0), (by1 + py).min(gy1));
     let aspect = (x.1 - x.0) / (y.1 - y.0);
     let factor = |r: f64| (r / MAX_ASPECT - 1e-9).ceil().max(1.0);
-    let stretch = if aspect > MAX_ASPECT {
-        (1.0, factor(aspect))
-    } else if aspect < 1.0 / MAX_ASPECT {
-        (factor(1.0 / aspect), 1.0)
-    } else {
-        (1.0, 1.0)
+    let wide = aspect >= 1.0;
+    let k = match map.stretch {
+        Some(k) => k,
+        None if aspect > MAX_ASPECT => factor(aspect),
+        None if aspect < 1.0 / MAX_ASPECT => factor(1.0 / aspect),
+        None => 1.0,
     };
+    let stretch = if wide { (1.0, k) } else { (k, 1.0) };
     Frame { x, y, stretch }
 }
 
@@ -283,7 +290,9 @@ impl Figure for FieldFigure<'_> {
 
         // Colour range: from min(0, min) to max(0, max).
         let lo = map.values.iter().copied().fold(0.0f64, f64::min);
-        let mut top = map.values.iter().copied().fold(0.0f64, f64::max);
+        let mut top = map
+            .color_max
+            .unwrap_or_else(|| map.values.iter().copied().fold(0.0f64, f64::max));
         if !(top > lo) {
             top = lo + 1.0;
         }
@@ -908,6 +917,8 @@ mod tests {
             overlays: &[],
             ellipse: None,
             max_marker: None,
+            color_max: None,
+            stretch: None,
         }
     }
 
@@ -966,7 +977,16 @@ mod tests {
             color: (0, 0, 0),
         });
         let f = frame(&with_ellipse);
-        assert!(f.x.0 <= -0.8 && f.x.1 >= 0.8);
+        // the whole ellipse with a margin: its tips are not cut at the frame (issue 30)
+        assert!(f.x.0 < -0.8 - 0.05 && f.x.1 > 0.8 + 0.05, "{f:?}");
+        assert!(f.y.0 < -0.1 && f.y.1 > 0.1, "{f:?}");
+        // A given stretch is used as it is, on the short axis.
+        let fixed = FieldMap {
+            stretch: Some(2.0),
+            ..map_of(n, n, &values)
+        };
+        assert_eq!(frame(&fixed).stretch, (1.0, 2.0));
+        assert_eq!(crate::map_stretch(&fixed), 3.0);
         let zero = vec![0.0; n * n];
         let f = frame(&map_of(n, n, &zero));
         assert_eq!(

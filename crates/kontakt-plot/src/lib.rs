@@ -45,7 +45,9 @@
 //!     outline: true,
 //!     overlays: &[],
 //!     ellipse: None,
-//!     max_marker: Some("p_max = 1000 MPa"),
+//!     max_marker: Some("maximum pressure 1000 MPa"),
+//!     color_max: None,
+//!     stretch: None,
 //! };
 //! field_map(Path::new("pressure.png"), &map, (1000, 700))?;
 //! # Ok::<(), kontakt_plot::PlotError>(())
@@ -197,8 +199,28 @@ pub struct FieldMap<'a> {
     /// point), dotted, with a legend entry.
     pub ellipse: Option<Ellipse<'a>>,
     /// Mark the cell of the largest value with a ringed dot, with this legend entry (e.g.
-    /// `"p_max = 458 MPa"`).
+    /// `"maximum 458 MPa"`).
     pub max_marker: Option<&'a str>,
+    /// The top of the colour scale (finite, > 0), e.g. one value shared by several maps so
+    /// that a colour means the same pressure on each; larger values take the top colour.
+    /// `None`: the largest value of this map.
+    pub color_max: Option<f64>,
+    /// The stretch of the frame's short axis (a whole number ≥ 1; 1: to scale), e.g. one
+    /// factor for all maps of a contact so that they compare; `None`: the smallest whole
+    /// factor that brings the frame to at most 2.5:1 (see [`field_map`], [`map_stretch`]).
+    pub stretch: Option<f64>,
+}
+
+/// The stretch [`field_map`] gives the short axis of `map` when its `stretch` is `None`: 1
+/// when its frame is at most 2.5:1, else the smallest whole factor that brings it there.
+/// Several maps drawn with one factor (e.g. the largest of theirs) compare at a glance.
+pub fn map_stretch(map: &FieldMap) -> f64 {
+    let auto = FieldMap {
+        stretch: None,
+        ..*map
+    };
+    let (sx, sy) = field::frame(&auto).stretch;
+    sx.max(sy)
 }
 
 /// An ellipse drawn over a [`FieldMap`] in the map's coordinates.
@@ -306,6 +328,8 @@ pub struct Arrow {
 ///     overlays: &[],
 ///     ellipse: None,
 ///     max_marker: None,
+///     color_max: None,
+///     stretch: None,
 /// };
 /// // A rigid rotation about the centre: v = omega × r in mm/s, drawn 0.1 mm per mm/s.
 /// let (omega, scale) = (2.0, 0.1);
@@ -385,6 +409,9 @@ pub struct LinePlot<'a> {
     /// (`0.1`, `1`, `10`, ... from 0.001 to 100000, `10ᵏ` beyond), with 2 and 5 times each
     /// decade where fewer than three decades are in range.
     pub x_log: bool,
+    /// The y axis starts at 0 (ends there for negative data): for magnitudes such as a
+    /// torque, whose size matters, not only its variation.
+    pub y_from_zero: bool,
 }
 
 /// Draw a line plot into `path` (`.png` or `.svg`, see [`Format`]) with the image size
@@ -464,12 +491,19 @@ fn validate_field(map: &FieldMap) -> Result<(), PlotError> {
         .checked_mul(map.ny)
         .ok_or_else(|| PlotError::invalid("nx*ny", "overflow", "a grid that fits in memory"))?;
     check_values("values", map.values, n)?;
-    for (k, overlay) in map.overlays.iter().enumerate() {
-        check_values(
-            &format!("overlays[{k}] ({:?}).values", overlay.label),
-            overlay.values,
-            n,
-        )?;
+    if let Some(c) = map.color_max
+        && !(c.is_finite() && c > 0.0)
+    {
+        return Err(PlotError::invalid("color_max", c, "a finite value > 0"));
+    }
+    if let Some(k) = map.stretch
+        && !(k.is_finite() && (1.0..=1000.0).contains(&k) && k.fract() == 0.0)
+    {
+        return Err(PlotError::invalid(
+            "stretch",
+            k,
+            "a whole number from 1 to 1000",
+        ));
     }
     Ok(())
 }

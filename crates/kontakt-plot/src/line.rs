@@ -24,6 +24,16 @@ fn padded(lo: f64, hi: f64) -> (f64, f64) {
     }
 }
 
+/// The y range of data in `[lo, hi]` that starts at 0: `[0, hi + 4 %]` for data ≥ 0,
+/// `[lo − 4 %, 0]` for data ≤ 0, both ends padded when the data change sign.
+pub(crate) fn from_zero(lo: f64, hi: f64) -> (f64, f64) {
+    let (a, b) = padded(lo.min(0.0), hi.max(0.0));
+    (
+        if lo >= 0.0 { 0.0 } else { a },
+        if hi <= 0.0 { 0.0 } else { b },
+    )
+}
+
 impl Figure for LineFigure<'_> {
     fn draw<DB: DrawingBackend>(&self, target: &Target<DB>) -> Result<(), PlotError> {
         let plot = self.0;
@@ -48,7 +58,11 @@ impl Figure for LineFigure<'_> {
             y1 = y1.max(y);
         }
         let (x0, x1) = padded(x0, x1);
-        let (y0, y1) = padded(y0, y1);
+        let (y0, y1) = if plot.y_from_zero {
+            from_zero(y0, y1)
+        } else {
+            padded(y0, y1)
+        };
         if !(x1 - x0).is_finite() || !(y1 - y0).is_finite() {
             return Err(PlotError::InvalidInput {
                 field: "series".into(),
@@ -355,6 +369,17 @@ pub(crate) fn legend_place(
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn y_from_zero_starts_the_axis_at_zero() {
+        // the data's range is [0, 4600] padded by 4 % above, not [3000, 4600]
+        let (a, b) = super::from_zero(3000.0, 4600.0);
+        assert!(a == 0.0 && (b - 4784.0).abs() < 1e-9, "{a} {b}");
+        let (a, b) = super::from_zero(-10.0, -5.0);
+        assert!((a + 10.4).abs() < 1e-12 && b == 0.0, "{a} {b}");
+        let (a, b) = super::from_zero(-1.0, 1.0);
+        assert!(a < -1.0 && b > 1.0);
+    }
+
     use super::*;
 
     #[test]

@@ -60,6 +60,8 @@ fn map<'a>(values: &'a [f64], overlays: &'a [Overlay<'a>]) -> FieldMap<'a> {
         overlays,
         ellipse: None,
         max_marker: None,
+        color_max: None,
+        stretch: None,
     }
 }
 
@@ -474,6 +476,7 @@ fn line_plot_png_and_svg() {
         y_label: "p [MPa]",
         series: &series,
         x_log: false,
+        y_from_zero: false,
     };
     let size = (900, 600);
     let png = dir.join("line.PNG");
@@ -522,6 +525,7 @@ fn line_plot_png_and_svg() {
         y_label: "",
         series: &series,
         x_log: false,
+        y_from_zero: false,
     };
     line_plot(&dir.join("small.png"), &plot, (200, 150)).unwrap();
     line_plot(&dir.join("small.svg"), &plot, (200, 150)).unwrap();
@@ -708,6 +712,7 @@ fn line_plot_validation() {
                 y_label: "y",
                 series,
                 x_log: false,
+                y_from_zero: false,
             },
             (800, 600),
         )
@@ -767,6 +772,7 @@ fn line_plot_validation() {
                 y_label: "y",
                 series: &[ok],
                 x_log: false,
+                y_from_zero: false,
             },
             (100, 100),
         ),
@@ -781,6 +787,7 @@ fn line_plot_validation() {
             y_label: "y",
             series: &[ok],
             x_log: false,
+            y_from_zero: false,
         },
         (800, 600),
     )
@@ -828,6 +835,8 @@ fn odd_shapes_and_ranges_do_not_panic() {
                     }],
                     ellipse: None,
                     max_marker: Some("max"),
+                    color_max: None,
+                    stretch: None,
                 };
                 let ext = if k % 2 == 0 { "png" } else { "svg" };
                 field_map(&dir.join(format!("f{k}.{ext}")), &m, size).unwrap();
@@ -854,6 +863,7 @@ fn odd_shapes_and_ranges_do_not_panic() {
             y_label: "y",
             series: &series,
             x_log: false,
+            y_from_zero: false,
         };
         for size in [(200, 150), (3000, 150)] {
             line_plot(&dir.join(format!("l{k}-{}.png", size.0)), &plot, size).unwrap();
@@ -892,6 +902,7 @@ fn log_x_axis() {
         y_label: "y",
         series: &series,
         x_log: true,
+        y_from_zero: false,
     };
     let out = dir.join("log.svg");
     line_plot(&out, &plot, (800, 600)).unwrap();

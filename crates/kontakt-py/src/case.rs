@@ -61,20 +61,6 @@ pub struct CaseResult {
     warnings: Vec<String>,
 }
 
-/// The report's `warnings` (hertz, pimp, bem, friction reports; empty for the others).
-pub fn report_warnings(report: &str) -> Vec<String> {
-    serde_json::from_str::<serde_json::Value>(report)
-        .ok()
-        .and_then(|v| {
-            v.get("warnings")?.as_array().map(|w| {
-                w.iter()
-                    .filter_map(|s| s.as_str().map(str::to_string))
-                    .collect()
-            })
-        })
-        .unwrap_or_default()
-}
-
 fn array2<'py>(py: Python<'py>, a: &Option<Array2<f64>>) -> Option<Bound<'py, PyArray2<f64>>> {
     a.as_ref().map(|a| a.clone().into_pyarray(py))
 }
@@ -230,7 +216,7 @@ fn result(case: &Case, outcome: Outcome) -> PyResult<CaseResult> {
     };
     Ok(CaseResult {
         method: case.method(),
-        warnings: report_warnings(&report),
+        warnings: outcome.warnings().to_vec(),
         report,
         fields,
     })

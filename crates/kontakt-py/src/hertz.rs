@@ -306,15 +306,19 @@ impl HertzPoint {
                 ));
             }
         };
+        let solution = solution.map_err(to_py)?;
+        let size = kontakt::hertz::validity::point_size(self.inner.geometry(), &solution);
+        let warnings = size_verdict(size, ["radii1", "radii2"])?;
         Ok(HertzPointResult {
             contact: self.inner,
-            solution: solution.map_err(to_py)?,
+            solution,
             by_approach,
+            warnings,
         })
     }
 }
 
-/// The methods both solved Hertz contacts share (`p0`, `mean_pressure`,
+/// The methods both solved Hertz contacts share (`p0`, `mean_pressure`, `warnings`,
 /// `subsurface_peaks`, `to_dict`), written once; `$ty` says how it is a Hertz case
 /// (`HertzCase`), and `$($own)*` are its own methods (one `#[pymethods]` block per class).
 macro_rules! hertz_result {
@@ -330,6 +334,13 @@ macro_rules! hertz_result {
             #[getter]
             fn mean_pressure(&self) -> f64 {
                 self.solution.mean_pressure
+            }
+            /// Where the result is outside Hertz theory's comfortable range (a contact
+            /// above 0.4 of a body's radius of curvature), as the case reports' `warnings`;
+            /// empty when none applies (at 1 or more `solve` raises `InputError`).
+            #[getter]
+            fn warnings(&self) -> Vec<String> {
+                self.warnings.clone()
             }
             #[doc = $peaks_doc]
             fn subsurface_peaks<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
@@ -363,6 +374,7 @@ pub struct HertzPointResult {
     contact: HertzPointContact,
     solution: HertzPointSolution,
     by_approach: bool,
+    warnings: Vec<String>,
 }
 
 impl HertzPointResult {
@@ -392,6 +404,17 @@ impl HertzPointResult {
         ];
         (contact, bodies, load)
     }
+}
+
+/// The case layer's validity check of a contact's size, with the arguments named as the
+/// Python signature does: the warnings, or `InputError` naming the radius argument.
+fn size_verdict(
+    size: kontakt::hertz::validity::SizeCheck,
+    keys: [&str; 2],
+) -> PyResult<Vec<String>> {
+    use kontakt_case::validity::{ContactSize, Size};
+    let verdict = ContactSize::new(Size::Hertz(size), keys).verdict();
+    Ok(verdict.map_err(to_py)?.into_iter().collect())
 }
 
 hertz_result!(
@@ -569,12 +592,15 @@ impl HertzLine {
             Some(l) => Some(self.inner.lundberg_approach(q * l, l).map_err(to_py)?),
             None => None,
         };
+        let size = kontakt::hertz::validity::line_size(self.inner.radii(), &solution);
+        let warnings = size_verdict(size, ["radius1", "radius2"])?;
         Ok(HertzLineResult {
             contact: self.inner,
             solution,
             length: self.length,
             approach,
             by_force,
+            warnings,
         })
     }
 }
@@ -587,6 +613,7 @@ pub struct HertzLineResult {
     length: Option<f64>,
     approach: Option<f64>,
     by_force: bool,
+    warnings: Vec<String>,
 }
 
 impl HertzLineResult {

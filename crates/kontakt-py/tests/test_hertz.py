@@ -114,3 +114,38 @@ def test_bad_input_names_field_value_and_range():
     assert e.value.field == "criterion"
     with pytest.raises(kt.InputError, match="length"):
         kt.HertzLine(5.0, math.inf).solve(force=100.0)
+
+
+def test_results_carry_the_size_warning_and_refuse_an_oversize_contact():
+    """Issue 30 item 3: the case reports' validity check on the classes' own results."""
+    ball = kt.HertzPoint((6.35, 6.35), (math.inf, math.inf))
+    assert ball.solve(force=100.0).warnings == []
+    # a = 3.456 mm, 0.54 of the ball's radius: a warning, as in `kontakt hertz`.
+    heavy = ball.solve(force=1e6)
+    assert len(heavy.warnings) == 1 and "0.54 of body 1" in heavy.warnings[0]
+    assert heavy.warnings == heavy.to_dict()["warnings"]
+    with pytest.raises(kt.InputError, match="radii1"):
+        ball.solve(force=1e8)  # a = 16 mm on a 6.35 mm ball
+    roller = kt.HertzLine(10.0, math.inf)  # no length: Lundberg needs l >= 5 b
+    assert roller.solve(line_load=100.0).warnings == []
+    assert "0.47 of body 1" in roller.solve(line_load=2e5).warnings[0]  # b = 4.7 mm
+    with pytest.raises(kt.InputError, match="radius1"):
+        roller.solve(line_load=1e7)
+
+
+def test_every_method_carries_the_size_warning_through_run(repo):
+    """Issue 30 item 3: kt.run goes through the same check as the CLI, for the models that
+    had none (mindlin, impact)."""
+    tomllib = pytest.importorskip("tomllib")  # Python >= 3.11
+    for example, key, value in [
+        ("mindlin_fretting", ("load", "force_n"), 1e6),
+        ("impact_oblique", ("impact", "speed_mm_per_s"), 1e6),
+    ]:
+        case = tomllib.loads((repo / "examples" / f"{example}.toml").read_text())
+        case[key[0]][key[1]] = value
+        r = kt.run(case)
+        assert r.warnings and "contact size" in r.warnings[-1], r.warnings
+        assert r.warnings == r.to_dict()["warnings"]
+        case[key[0]][key[1]] = value * 100
+        with pytest.raises(kt.InputError):
+            kt.run(case)

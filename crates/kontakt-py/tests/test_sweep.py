@@ -48,7 +48,8 @@ def check_hertz_rows(rows: list[dict[str, str]], n: int) -> None:
     """Every case once, in order; p0 = (6 F E*² / π³ R²)^(1/3), Hertz (Johnson 1985, ch. 4)."""
     assert [int(r["case"]) for r in rows] == list(range(n))
     for r in rows:
-        assert r["status"] == "ok", r
+        # Solved; "warning" with the report's warnings (above first yield).
+        assert r["status"] == ("warning" if r.get("warnings[0]") else "ok"), r
         force = float(r["load.force_n"])
         radius = float(r["ball_radius_mm"])
         p0 = (6.0 * force * E_STAR**2 / (math.pi**3 * radius**2)) ** (1.0 / 3.0)

@@ -145,6 +145,44 @@ pub fn positive_as(field: &'static str, value: f64, expected: &'static str) -> R
     }
 }
 
+/// Check a list of choices (`models = ["hertz", "pimp"]`, `--backends hertz,pimp`): at
+/// least one, each one of `valid`, none twice. A repeated choice was accepted and gave
+/// duplicate columns in the reports (found by probing); every list of choices goes through
+/// this one check.
+///
+/// # Errors
+/// [`Error::InvalidInput`] naming `field`, with the list as given and the valid choices.
+pub fn choices(field: &'static str, given: &[&str], valid: &[&str]) -> Result<()> {
+    let list = valid.join(", ");
+    let shown = given.join(",");
+    if given.is_empty() {
+        return Err(Error::invalid(
+            field,
+            "an empty list",
+            format!("one or more of {list}"),
+        ));
+    }
+    if let Some(bad) = given.iter().find(|g| !valid.contains(g)) {
+        return Err(Error::invalid(
+            field,
+            shown,
+            format!("one or more of {list} (not {bad})"),
+        ));
+    }
+    if let Some((_, twice)) = given
+        .iter()
+        .enumerate()
+        .find(|(i, g)| given[..*i].contains(g))
+    {
+        return Err(Error::invalid(
+            field,
+            shown,
+            format!("each of {list} at most once ({twice} is given twice)"),
+        ));
+    }
+    Ok(())
+}
+
 /// Check that `value` is finite and not negative.
 pub(crate) fn non_negative(field: &'static str, value: f64) -> Result<f64> {
     if value.is_finite() && value >= 0.0 {

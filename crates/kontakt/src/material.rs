@@ -48,11 +48,13 @@ impl ElasticMaterial {
     /// # Ok::<(), kontakt::Error>(())
     /// ```
     pub fn new(youngs_modulus: Megapascal, poisson_ratio: f64) -> Result<Self> {
-        if !(youngs_modulus.is_finite() && youngs_modulus > 0.0) {
+        // A subnormal modulus (5e-324 MPa, found by probing) is > 0 but makes E* and every
+        // contact size overflow; the error then named the force. It is the modulus's.
+        if !(youngs_modulus.is_finite() && youngs_modulus >= f64::MIN_POSITIVE) {
             return Err(Error::invalid(
                 "youngs_modulus",
                 youngs_modulus,
-                "a finite modulus > 0 MPa",
+                "a finite modulus > 0 MPa (at least 2.2e-308, the smallest normal f64)",
             ));
         }
         if !(poisson_ratio.is_finite() && poisson_ratio > -1.0 && poisson_ratio <= 0.5) {

@@ -181,14 +181,20 @@ struct SweepSpec {
 }
 
 #[derive(Debug, Deserialize)]
-#[serde(untagged)]
+#[serde(
+    untagged,
+    expecting = "expected a case file's path (a string) or an inline table of the base case"
+)]
 enum BaseSpec {
     Path(String),
     Inline(toml::Table),
 }
 
 #[derive(Debug, Deserialize)]
-#[serde(untagged)]
+#[serde(
+    untagged,
+    expecting = "expected a key path (a string) or an array of key paths"
+)]
 enum KeySpec {
     One(String),
     Many(Vec<String>),
@@ -357,13 +363,13 @@ impl Values {
     pub fn get(&self, j: u64) -> toml::Value {
         match self {
             Values::Linear { start, stop, count } => {
-                toml::Value::Float(range_point(*start, *stop, *count, j, |a, b, t| {
-                    a + (b - a) * t
+                toml::Value::Float(range_point(*start, *stop, *count, j, |a, b, j, m| {
+                    a + (b - a) * j / m
                 }))
             }
             Values::Log { start, stop, count } => {
-                toml::Value::Float(range_point(*start, *stop, *count, j, |a, b, t| {
-                    (a.ln() + (b.ln() - a.ln()) * t).exp()
+                toml::Value::Float(range_point(*start, *stop, *count, j, |a, b, j, m| {
+                    (a.ln() + (b.ln() - a.ln()) * j / m).exp()
                 }))
             }
             Values::List(v) => v
@@ -374,13 +380,22 @@ impl Values {
     }
 }
 
-fn range_point(start: f64, stop: f64, count: u64, j: u64, f: impl Fn(f64, f64, f64) -> f64) -> f64 {
+/// Point `j` of `count` from `start` to `stop`: the ends exactly, between them
+/// `f(start, stop, j, count - 1)` (a step times `j` before the division, so that
+/// 100..3000 in 30 points gives 1800, not 1799.9999999999998).
+fn range_point(
+    start: f64,
+    stop: f64,
+    count: u64,
+    j: u64,
+    f: impl Fn(f64, f64, f64, f64) -> f64,
+) -> f64 {
     if j == 0 || count < 2 {
         start
     } else if j + 1 == count {
         stop
     } else {
-        f(start, stop, j as f64 / (count - 1) as f64)
+        f(start, stop, j as f64, (count - 1) as f64)
     }
 }
 
@@ -465,8 +480,12 @@ impl Sweep {
         base_dir: &Path,
         max_cases: Option<u64>,
     ) -> SweepResult<Self> {
-        let spec: SweepSpec = toml::from_str(text)
-            .map_err(|e| input(format!("sweep file: {}", case_file_error(text, &e))))?;
+        let spec: SweepSpec = toml::from_str(text).map_err(|e| {
+            input(format!(
+                "sweep file: {}",
+                case_file_error::<SweepSpec>(text, &e)
+            ))
+        })?;
         Self::from_spec(spec, base_dir, max_cases)
     }
 
@@ -501,7 +520,7 @@ impl Sweep {
                     input(format!(
                         "invalid base = \"{p}\": {}: {}",
                         path.display(),
-                        case_file_error(&text, &e)
+                        case_file_error::<toml::Table>(&text, &e)
                     ))
                 })?;
                 let parent = path.parent().unwrap_or(Path::new(".")).to_path_buf();
@@ -1054,6 +1073,21 @@ force_n = 100.0
         let case = s.case_table(4).unwrap();
         assert_eq!(case["body1"]["e_mpa"].as_float(), Some(2.0));
         assert_eq!(case["load"]["force_n"].as_float(), Some(2.0));
+    }
+
+    /// Issue 30, item 16: a linear range's points are whole steps (`j * (b - a) / m`, not
+    /// `(b - a) * (j / m)`, which gave 1799.9999999999998 for 1800).
+    #[test]
+    fn linear_range_points_are_exact_steps() {
+        let s = sweep(
+            "[[parameter]]\nkey = \"load.force_n\"\nstart = 100.0\nstop = 3000.0\ncount = 30\n",
+        )
+        .unwrap();
+        let v: Vec<f64> = (0..30)
+            .map(|i| s.values(i)[0].as_float().unwrap())
+            .collect();
+        let want: Vec<f64> = (1..=30).map(|i| 100.0 * f64::from(i)).collect();
+        assert_eq!(v, want);
     }
 
     #[test]

@@ -1,15 +1,23 @@
-//! One row per case and the Arrow tables of a chunk.
+//! The rows of the cases and the Arrow tables of a chunk.
 //!
 //! A row is: `case` (the case index), the swept parameters (one column each, named as in
-//! the sweep file), `status` (`ok`, `invalid`: the case reader or the method refused an
+//! the sweep file), `status` (`ok`, `warning`: solved with warnings in the report's
+//! `warnings`, `invalid`: the case reader or the method refused an
 //! input, `failed`: a solver did not converge, `panic`: a bug), `error` (the one-line
 //! message, null when ok), then the case's report flattened:
 //! - nested objects give dotted names (`status.residual`, `hertz.max_pressure_mpa`);
 //! - arrays of at most [`MAX_ARRAY_LEN`] elements give indexed names (`semi_axes_mm[0]`,
-//!   `extents_mm[1][0]`); longer arrays (curves, rows of a friction sweep) are left out;
+//!   `extents_mm[1][0]`); longer arrays (curves) are left out;
 //! - numbers, booleans and strings are kept, `null` is a missing value;
 //! - `kontakt_version`, `schema_version` and the `inputs` echo are left out (the
 //!   parameters and the base case in `sweep.json` say what was run).
+//!
+//! A case gives one row, except a report with a `rows` list of objects (a friction case:
+//! one per pressure model and speed; a rough case: one per load), which gives one row per
+//! element, long and numeric: the element's keys as columns (`model`, `speed_rpm`,
+//! `coefficient`, ...), then the keys of any other list of objects in the report
+//! (a friction case's `model_difference`) whose shared keys (`speed_rpm`, `model`) match
+//! the element, then the report's other scalars, repeated on every row.
 //!
 //! Units are those of the report keys (`_mm`, `_n`, `_mpa`, ...): mm, N, MPa.
 
@@ -29,7 +37,7 @@ const SKIPPED: [&str; 3] = ["kontakt_version", "schema_version", "inputs"];
 
 /// Names of the fixed columns.
 pub const CASE_COLUMN: &str = "case";
-/// Status column: `ok`, `invalid`, `failed` or `panic`.
+/// Status column: `ok`, `warning`, `invalid`, `failed` or `panic`.
 pub const STATUS_COLUMN: &str = "status";
 /// Error message column (null when ok).
 pub const ERROR_COLUMN: &str = "error";
@@ -39,6 +47,9 @@ pub const ERROR_COLUMN: &str = "error";
 pub enum Status {
     /// Solved.
     Ok,
+    /// Solved, with warnings (the report's `warnings`: a result outside the model's
+    /// comfortable range, such as a contact large against the bodies).
+    Warning,
     /// The case reader or the method refused an input (the message names the key).
     Invalid,
     /// A computation failed at run time (did not converge).
@@ -48,10 +59,16 @@ pub enum Status {
 }
 
 impl Status {
+    /// Whether the case was solved (`ok` or `warning`).
+    pub fn solved(self) -> bool {
+        matches!(self, Status::Ok | Status::Warning)
+    }
+
     /// The status column's text.
     pub fn as_str(self) -> &'static str {
         match self {
             Status::Ok => "ok",
+            Status::Warning => "warning",
             Status::Invalid => "invalid",
             Status::Failed => "failed",
             Status::Panic => "panic",
@@ -81,23 +98,104 @@ pub struct Row {
     pub status: Status,
     /// The error message (none when ok).
     pub error: Option<String>,
-    /// The report's scalars by flattened name, in the report's order.
-    pub outputs: Vec<(String, Cell)>,
+    /// The report's scalars by flattened name, in the report's order: one list per table
+    /// row the case gives (see the module docs); none for a case that is not ok, which
+    /// still gives one table row.
+    pub outputs: Vec<Vec<(String, Cell)>>,
 }
 
-/// Flatten a report (as JSON) into named scalars (rules: module docs).
-pub fn flatten(report: &serde_json::Value) -> Vec<(String, Cell)> {
-    let mut out = Vec::with_capacity(48);
-    if let serde_json::Value::Object(map) = report {
-        let mut name = String::with_capacity(64);
-        for (k, v) in map {
-            if SKIPPED.contains(&k.as_str()) {
-                continue;
+impl Row {
+    /// The number of table rows of this case (at least 1).
+    pub fn table_rows(&self) -> usize {
+        self.outputs.len().max(1)
+    }
+}
+
+/// The report key whose list of objects gives one table row per element.
+pub const ROWS_KEY: &str = "rows";
+
+fn is_object_list(v: &serde_json::Value) -> bool {
+    matches!(v, serde_json::Value::Array(a) if !a.is_empty() && a.iter().all(serde_json::Value::is_object))
+}
+
+/// Flatten a report (as JSON) into named scalars, one list per table row (rules: module
+/// docs).
+pub fn flatten(report: &serde_json::Value) -> Vec<Vec<(String, Cell)>> {
+    use serde_json::Value as J;
+    let J::Object(map) = report else {
+        return vec![Vec::new()];
+    };
+    let rows = map.get(ROWS_KEY).filter(|v| is_object_list(v));
+    let mut common = Vec::with_capacity(48);
+    let mut joined: Vec<&J> = Vec::new();
+    let mut name = String::with_capacity(64);
+    for (k, v) in map {
+        if SKIPPED.contains(&k.as_str()) {
+            continue;
+        }
+        if rows.is_some() && is_object_list(v) {
+            if k != ROWS_KEY {
+                joined.push(v);
             }
+            continue;
+        }
+        name.clear();
+        name.push_str(k);
+        walk(v, &mut name, &mut common);
+    }
+    let Some(J::Array(rows)) = rows else {
+        return vec![common];
+    };
+    // The keys that identify a row (those the joined lists match on: `model`,
+    // `speed_rpm`) come first.
+    let first = rows.first().and_then(J::as_object);
+    let mut keys_first: Vec<&String> = joined
+        .iter()
+        .filter_map(|l| l.as_array()?.first()?.as_object())
+        .flat_map(|o| o.keys())
+        .filter(|k| first.is_some_and(|r| r.contains_key(*k)))
+        .collect();
+    keys_first.sort_unstable();
+    keys_first.dedup();
+    let mut out = Vec::with_capacity(rows.len());
+    for row in rows.iter().filter_map(J::as_object) {
+        let mut cells = Vec::with_capacity(common.len() + row.len() + 4);
+        let ordered = keys_first
+            .iter()
+            .filter_map(|k| row.get_key_value(k.as_str()))
+            .chain(row.iter().filter(|(k, _)| !keys_first.contains(k)));
+        for (k, v) in ordered {
             name.clear();
             name.push_str(k);
-            walk(v, &mut name, &mut out);
+            walk(v, &mut name, &mut cells);
         }
+        for list in &joined {
+            for other in list
+                .as_array()
+                .into_iter()
+                .flatten()
+                .filter_map(J::as_object)
+            {
+                let mut shared = other
+                    .iter()
+                    .filter(|(k, _)| row.contains_key(*k))
+                    .peekable();
+                if shared.peek().is_none() || !shared.all(|(k, v)| row.get(k) == Some(v)) {
+                    continue;
+                }
+                for (k, v) in other.iter().filter(|(k, _)| !row.contains_key(*k)) {
+                    name.clear();
+                    name.push_str(k);
+                    walk(v, &mut name, &mut cells);
+                }
+            }
+        }
+        for (k, c) in &common {
+            if !cells.iter().any(|(n, _)| n == k) {
+                cells.push((k.clone(), c.clone()));
+            }
+        }
+        out.push(cells);
     }
     out
 }
@@ -261,14 +359,17 @@ pub fn chunk_batch(
     first_case: u64,
     rows: &[Row],
 ) -> Result<RecordBatch, String> {
-    let n = rows.len();
-    let cases = first_case..first_case + n as u64;
+    // The case of every table row, in order (a case with a list of rows repeats).
+    let cases: Vec<u64> = rows
+        .iter()
+        .enumerate()
+        .flat_map(|(k, r)| std::iter::repeat_n(first_case + k as u64, r.table_rows()))
+        .collect();
+    let n = cases.len();
     let mut fields = Vec::new();
     let mut columns: Vec<ArrayRef> = Vec::new();
     fields.push(Field::new(CASE_COLUMN, DataType::UInt64, false));
-    columns.push(Arc::new(UInt64Array::from(
-        cases.clone().collect::<Vec<_>>(),
-    )));
+    columns.push(Arc::new(UInt64Array::from(cases.clone())));
     let reserved: Vec<&str> = sweep
         .parameters()
         .iter()
@@ -279,34 +380,42 @@ pub fn chunk_batch(
         let (ty, array) = parameter_array(
             param,
             cases
-                .clone()
-                .map(|i| param.values.get(sweep.value_index(p, i))),
+                .iter()
+                .map(|&i| param.values.get(sweep.value_index(p, i))),
         );
         fields.push(Field::new(param.name.clone(), ty, true));
         columns.push(array);
     }
     fields.push(Field::new(STATUS_COLUMN, DataType::Utf8, false));
-    columns.push(Arc::new(StringArray::from(
-        rows.iter().map(|r| r.status.as_str()).collect::<Vec<_>>(),
-    )));
+    let repeat = |f: &dyn Fn(&Row) -> Option<String>| {
+        rows.iter()
+            .flat_map(|r| std::iter::repeat_n(f(r), r.table_rows()))
+            .collect::<Vec<_>>()
+    };
+    columns.push(Arc::new(StringArray::from(repeat(&|r| {
+        Some(r.status.as_str().to_string())
+    }))));
     fields.push(Field::new(ERROR_COLUMN, DataType::Utf8, true));
-    columns.push(Arc::new(StringArray::from(
-        rows.iter().map(|r| r.error.clone()).collect::<Vec<_>>(),
-    )));
+    columns.push(Arc::new(StringArray::from(repeat(&|r| r.error.clone()))));
 
-    // Output columns: union over the rows, in the order first met.
+    // Output columns: union over the table rows, in the order first met.
     let mut index: HashMap<&str, usize> = HashMap::new();
     let mut names: Vec<&str> = Vec::new();
     let mut cells: Vec<Vec<Cell>> = Vec::new();
-    for (r, row) in rows.iter().enumerate() {
-        for (name, cell) in &row.outputs {
-            let c = *index.entry(name.as_str()).or_insert_with(|| {
-                names.push(name.as_str());
-                cells.push(vec![Cell::Null; n]);
-                names.len() - 1
-            });
-            cells[c][r] = cell.clone();
+    // A case that is not ok has no outputs and one table row.
+    let mut r = 0;
+    for row in rows {
+        for (k, outputs) in row.outputs.iter().enumerate() {
+            for (name, cell) in outputs {
+                let c = *index.entry(name.as_str()).or_insert_with(|| {
+                    names.push(name.as_str());
+                    cells.push(vec![Cell::Null; n]);
+                    names.len() - 1
+                });
+                cells[c][r + k] = cell.clone();
+            }
         }
+        r += row.table_rows();
     }
     for (name, column) in names.iter().zip(&cells) {
         let Some(ty) = column_type(column) else {
@@ -404,7 +513,7 @@ mod tests {
             "status": {"termination": "converged", "residual": 1e-9},
             "curve": [0, 1, 2, 3, 4, 5, 6, 7, 8], "hertz": null, "ok": true
         });
-        let cells = flatten(&v);
+        let cells = &flatten(&v)[0];
         let names: Vec<&str> = cells.iter().map(|(n, _)| n.as_str()).collect();
         for want in [
             "force_n",
@@ -429,6 +538,42 @@ mod tests {
         }
         assert!(cells.contains(&("patches".into(), Cell::I64(1))));
         assert!(cells.contains(&("force_n".into(), Cell::F64(100.0))));
+    }
+
+    #[test]
+    fn a_list_of_rows_gives_one_table_row_each_with_joined_lists() {
+        let v = serde_json::json!({
+            "kontakt_version": "0.1.0", "pairing": "p", "rollers": 17,
+            "rows": [
+                {"model": "hertz", "speed_rpm": 500.0, "torque": 2.0},
+                {"model": "pimp", "speed_rpm": 500.0, "torque": 2.2}
+            ],
+            "model_difference": [{"model": "pimp", "speed_rpm": 500.0, "torque_vs_hertz": 1.1}],
+            "warnings": []
+        });
+        let rows = flatten(&v);
+        assert_eq!(rows.len(), 2);
+        let names = |r: &[(String, Cell)]| r.iter().map(|(n, _)| n.clone()).collect::<Vec<_>>();
+        assert_eq!(
+            names(&rows[0]),
+            ["model", "speed_rpm", "torque", "pairing", "rollers"]
+        );
+        assert_eq!(
+            names(&rows[1]),
+            [
+                "model",
+                "speed_rpm",
+                "torque",
+                "torque_vs_hertz",
+                "pairing",
+                "rollers"
+            ]
+        );
+        assert!(rows[1].contains(&("torque_vs_hertz".into(), Cell::F64(1.1))));
+        // without a `rows` list: one row, a short list of objects flattened with indices
+        let one = flatten(&serde_json::json!({"a": [{"b": 1}], "c": 2.0}));
+        assert_eq!(one.len(), 1);
+        assert_eq!(names(&one[0]), ["a[0].b", "c"]);
     }
 
     #[test]

@@ -1,9 +1,27 @@
 //! Walking a TOML case file for the key tests: its numeric leaves, setting one, and whether
-//! an error's field names a key of the file. Shared by `keys.rs` and `element_case.rs`
+//! an error's field names a key of the file. Shared by `keys.rs`, `element_case.rs` and `validity.rs`
 //! (`#[path = "support/toml_keys.rs"] mod toml_keys;`).
 #![allow(clippy::unwrap_used)] // tests: a panic is a failure with its message
 
+use std::path::PathBuf;
 use toml::Value;
+
+/// The `*.toml` files of `dir`, sorted.
+pub fn toml_files(dir: &std::path::Path) -> Vec<PathBuf> {
+    let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    files.sort();
+    files
+}
+
+/// The example case files, `examples/*.toml`, sorted.
+#[allow(dead_code)] // not every test that includes this module walks the examples
+pub fn example_files() -> Vec<PathBuf> {
+    toml_files(&PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples"))
+}
 
 /// Every numeric leaf of `v` as a path of keys and array indices.
 pub fn leaves(v: &Value, path: &mut Vec<String>, out: &mut Vec<Vec<String>>) {

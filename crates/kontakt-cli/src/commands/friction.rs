@@ -4,7 +4,7 @@
 //! velocity and the friction-power density. The physics is `kontakt_case::run_friction_case`.
 
 use crate::cli::FrictionArgs;
-use crate::commands::{InputError, cannot_write};
+use crate::commands::InputError;
 use anyhow::{Context, Result};
 use kontakt_case::friction_case::{FrictionMap, FrictionReport};
 use kontakt_case::{Case, Outcome};
@@ -14,7 +14,7 @@ use std::path::Path;
 
 /// Run the subcommand.
 pub fn run(args: &FrictionArgs, out: &mut impl Write) -> Result<()> {
-    let (label, text) = crate::commands::read_case_for(&args.case, "friction", "friction")?;
+    let (label, text) = args.input.read("friction")?;
     let case = Case::from_toml_str(&text).with_context(|| label.clone())?;
     let Outcome::Friction(outcome) = case.run(Path::new(".")).with_context(|| label.clone())?
     else {
@@ -36,7 +36,7 @@ pub fn run(args: &FrictionArgs, out: &mut impl Write) -> Result<()> {
     if let Some(path) = &args.density {
         write_density_map(path, &outcome.map, r)?;
     }
-    print_report(out, r, args.json)
+    print_report(out, r, args.input.json)
 }
 
 /// The report as a table per model, or as pretty JSON.
@@ -45,6 +45,7 @@ pub fn print_report(out: &mut impl Write, r: &FrictionReport, json: bool) -> Res
         return crate::output::print_json(out, r);
     }
     let name = crate::output::name_suffix(r.name.as_deref());
+    let num = crate::output::Num;
     writeln!(
         out,
         "kontakt {} — roller-end/rib friction{name}",
@@ -55,8 +56,8 @@ pub fn print_report(out: &mut impl Write, r: &FrictionReport, json: bool) -> Res
         "  pairing {}, {} rollers of {:.1} g, F_a = {} N{}",
         r.pairing,
         r.rollers,
-        r.roller_mass_kg * 1e3,
-        r.axial_load_n,
+        num(r.roller_mass_kg * 1e3),
+        num(r.axial_load_n),
         if r.centrifugal {
             ", centrifugal force included"
         } else {
@@ -67,13 +68,13 @@ pub fn print_report(out: &mut impl Write, r: &FrictionReport, json: bool) -> Res
         Some(eta) => writeln!(
             out,
             "  lubricated: eta = {:.2} mPa·s at the inlet; mu_b = {}",
-            eta * 1e9,
-            r.law.boundary_coefficient
+            num(eta * 1e9),
+            num(r.law.boundary_coefficient)
         )?,
         None => writeln!(
             out,
             "  dry: Coulomb friction, mu = {}",
-            r.law.boundary_coefficient
+            num(r.law.boundary_coefficient)
         )?,
     }
     let mut model = "";
@@ -98,22 +99,27 @@ pub fn print_report(out: &mut impl Write, r: &FrictionReport, json: bool) -> Res
         }
         let h = row
             .film_central_mm
-            .map_or_else(|| "-".to_string(), |h| format!("{:.4}", h * 1e3));
+            .map_or_else(|| "-".to_string(), |h| format!("{:.4}", num(h * 1e3)));
         writeln!(
             out,
             "  {:>8.0} {:>9.3} {:>8.1} {:>9.1} {:>9} {:>7.3} {:>8.5} {:>9.4} {:>10.3} {:>10.2}",
-            row.speed_rpm,
-            row.rib_load_n,
-            row.max_pressure_mpa,
-            row.sliding_speed_mm_s,
+            num(row.speed_rpm),
+            num(row.rib_load_n),
+            num(row.max_pressure_mpa),
+            num(row.sliding_speed_mm_s),
             h,
-            row.lambda,
-            row.coefficient,
-            row.power_w,
-            row.bearing_power_w,
-            row.bearing_torque_nmm
+            num(row.lambda),
+            num(row.coefficient),
+            num(row.power_w),
+            num(row.bearing_power_w),
+            num(row.bearing_drag_torque_nmm)
         )?;
     }
+    writeln!(
+        out,
+        "\n  M: the rib friction's share of the bearing's drag torque, Z·P_1/|ω_i − ω_o| \
+         (bearing_drag_torque_nmm; docs/friction.md §5.2)"
+    )?;
     if !r.model_difference.is_empty() {
         writeln!(out, "\n  rib torque relative to Hertz:")?;
         let models: Vec<&str> = {
@@ -131,14 +137,14 @@ pub fn print_report(out: &mut impl Write, r: &FrictionReport, json: bool) -> Res
         let mut speeds: Vec<f64> = r.model_difference.iter().map(|d| d.speed_rpm).collect();
         speeds.dedup();
         for s in speeds {
-            write!(out, "  {s:>8.0}")?;
+            write!(out, "  {:>8.0}", num(s))?;
             for m in &models {
                 let d = r
                     .model_difference
                     .iter()
                     .find(|d| d.speed_rpm == s && d.model == *m);
                 match d {
-                    Some(d) => write!(out, " {:>11.4}", d.torque_vs_hertz)?,
+                    Some(d) => write!(out, " {:>11.4}", num(d.torque_vs_hertz))?,
                     None => write!(out, " {:>11}", "-")?,
                 }
             }
@@ -153,11 +159,11 @@ pub fn print_report(out: &mut impl Write, r: &FrictionReport, json: bool) -> Res
 
 /// Every row, one line per model and speed, with unit-suffixed columns.
 pub fn write_csv(path: &Path, r: &FrictionReport) -> Result<()> {
-    let mut w = csv::Writer::from_path(path).map_err(|e| cannot_write("write", path, e))?;
+    let mut w = crate::commands::CsvFile::create(path)?;
     for row in &r.rows {
         w.serialize(row)?;
     }
-    w.flush()?;
+    w.finish()?;
     Ok(())
 }
 
@@ -179,7 +185,7 @@ fn write_curves(path: &Path, r: &FrictionReport, curve: Curve) -> Result<()> {
                 .filter(|row| row.model == *m)
                 .map(|row| {
                     let y = match curve {
-                        Curve::Torque => row.bearing_torque_nmm,
+                        Curve::Torque => row.bearing_drag_torque_nmm,
                         Curve::Coefficient => row.coefficient,
                     };
                     (row.speed_rpm, y)
@@ -190,16 +196,22 @@ fn write_curves(path: &Path, r: &FrictionReport, curve: Curve) -> Result<()> {
     let series: Vec<Series> = models
         .iter()
         .enumerate()
-        .map(|(i, m)| Series {
-            label: m,
-            points: &points[i],
-            color: PALETTE[i % PALETTE.len()],
-            style: LineStyle::Solid,
+        .map(|(i, m)| {
+            let (color, style) = model_style(m);
+            Series {
+                label: m,
+                points: &points[i],
+                color,
+                style,
+            }
         })
         .collect();
     let (what, y_label) = match curve {
-        Curve::Torque => ("rib friction torque", "rib torque of the bearing [N·mm]"),
-        Curve::Coefficient => ("friction coefficient", "μ = |Fₜ| / Q_f [-]"),
+        Curve::Torque => (
+            "rib friction torque",
+            "rib drag torque of the bearing [N·mm]",
+        ),
+        Curve::Coefficient => ("friction coefficient", COEFFICIENT_LABEL),
     };
     let title = format!(
         "{}: {what}, Fₐ = {} N",
@@ -214,10 +226,26 @@ fn write_curves(path: &Path, r: &FrictionReport, curve: Curve) -> Result<()> {
             y_label,
             series: &series,
             x_log: true,
+            y_from_zero: true,
         },
         (900, 600),
     )
     .with_context(|| format!("drawing {}", path.display()))
+}
+
+/// The y label of the friction coefficient (plain words: no `Q_f` with a literal
+/// underscore).
+const COEFFICIENT_LABEL: &str = "μ = friction force / rib load [-]";
+
+/// Colour and line style of a pressure model's curve, the same on every plot; the styles
+/// differ so that curves that lie on each other (the models agree to 0.03 % on a Hertzian
+/// pairing) stay visible: a solid line, dashes over it and dots at the speeds.
+fn model_style(model: &str) -> ((u8, u8, u8), LineStyle) {
+    match model {
+        "hertz" => (PALETTE[0], LineStyle::Solid),
+        "pimp" => (PALETTE[1], LineStyle::Dashed),
+        _ => (PALETTE[2], LineStyle::Markers),
+    }
 }
 
 fn field_map<'a>(
@@ -227,29 +255,15 @@ fn field_map<'a>(
     colorbar_label: &'a str,
     (axes, max_marker): (&'a (String, String), &'a str),
 ) -> FieldMap<'a> {
-    let g = &m.field.grid;
     FieldMap {
-        nx: g.nx(),
-        ny: g.ny(),
-        x_min: g.x(0) - 0.5 * g.dx(),
-        y_min: g.y(0) - 0.5 * g.dy(),
-        dx: g.dx(),
-        dy: g.dy(),
-        values,
-        title,
-        x_label: &axes.0,
-        y_label: &axes.1,
-        colorbar_label,
-        outline: true,
-        overlays: &[],
-        ellipse: None,
         max_marker: Some(max_marker),
+        ..crate::render::grid_map(&m.field.grid, values, title, axes, colorbar_label)
     }
 }
 
 /// The map axes' names by their direction in the bearing.
 fn axis_names(m: &FrictionMap) -> (String, String) {
-    use crate::commands::pimp::axis_name;
+    use crate::render::axis_name;
     (axis_name(m.axes[0]), axis_name(m.axes[1]))
 }
 
@@ -263,16 +277,30 @@ fn write_density_map(path: &Path, m: &FrictionMap, r: &FrictionReport) -> Result
         m.speed_rpm,
         m.result.power
     );
-    let values: Vec<f64> = m.power_density.iter().map(|d| d * 1e3).collect();
-    let max = values.iter().copied().fold(0.0f64, f64::max);
-    let max = format!("maximum {max:.0} mW/mm²");
+    let max = m.power_density.iter().copied().fold(0.0f64, f64::max);
+    let (factor, unit) = crate::render::power_density_unit(max);
+    let values: Vec<f64> = m.power_density.iter().map(|d| d * factor).collect();
+    let max = format!("maximum {} {unit}", three_digits(max * factor));
+    let label = format!("shear stress × sliding speed [{unit}]");
     let axes = axis_names(m);
     kontakt_plot::field_map(
         path,
-        &field_map(m, &values, &title, "τ · v_s [mW/mm²]", (&axes, &max)),
+        &field_map(m, &values, &title, &label, (&axes, &max)),
         (900, 640),
     )
     .with_context(|| format!("drawing {}", path.display()))
+}
+
+/// `x` with three significant digits (34.5, 345, 3.45).
+fn three_digits(x: f64) -> String {
+    let decimals = if x >= 100.0 {
+        0
+    } else if x >= 10.0 {
+        1
+    } else {
+        2
+    };
+    format!("{x:.decimals$}")
 }
 
 /// The sliding velocity as arrows over the pressure map.
@@ -285,7 +313,7 @@ fn write_sliding_map(path: &Path, m: &FrictionMap, r: &FrictionReport) -> Result
         m.speed_rpm
     );
     let (arrows, label) = sliding_arrows(m);
-    let max = crate::commands::pimp::max_label(&m.field.pressure);
+    let max = crate::render::max_label(&m.field.pressure);
     let axes = axis_names(m);
     kontakt_plot::field_map_with_arrows(
         path,
@@ -366,7 +394,7 @@ pub struct DemoSummary {
 pub fn demo_study(
     out_dir: &Path,
     md: &mut String,
-    written: &mut crate::commands::pimp::Written,
+    written: &mut crate::render::Written,
 ) -> Result<Vec<DemoSummary>> {
     use kontakt_case::friction_case::{FrictionCase, run_friction_case};
     let base: FrictionCase =
@@ -379,8 +407,7 @@ pub fn demo_study(
             }
         };
     let csv_path = out_dir.join("friction.csv");
-    let mut w =
-        csv::Writer::from_path(&csv_path).map_err(|e| cannot_write("write", &csv_path, e))?;
+    let mut w = crate::commands::CsvFile::create(&csv_path)?;
     let mut summary = Vec::new();
     let mut torque_curves: Vec<(String, Vec<(f64, f64)>)> = Vec::new();
     let mut mu_curves: Vec<(String, Vec<(f64, f64)>)> = Vec::new();
@@ -412,7 +439,7 @@ pub fn demo_study(
                 .map(|x| (x.speed_rpm, f(x)))
                 .collect::<Vec<_>>()
         };
-        torque_curves.push((name.to_string(), of("pimp", &|x| x.bearing_torque_nmm)));
+        torque_curves.push((name.to_string(), of("pimp", &|x| x.bearing_drag_torque_nmm)));
         mu_curves.push((name.to_string(), of("pimp", &|x| x.coefficient)));
         ratio_curves.push((
             name.to_string(),
@@ -432,7 +459,7 @@ pub fn demo_study(
             r.rows
                 .iter()
                 .filter(|x| x.model == m)
-                .map(|x| x.bearing_torque_nmm)
+                .map(|x| x.bearing_drag_torque_nmm)
                 .collect()
         });
         summary.push(DemoSummary {
@@ -448,39 +475,46 @@ pub fn demo_study(
         }
         last = Some(outcome.report);
     }
-    w.flush()?;
+    w.finish()?;
     written.tables.push("friction.csv".into());
-    let mut plot =
-        |file: &str, title: &str, y_label: &str, curves: &[(String, Vec<(f64, f64)>)]| {
-            crate::commands::pimp::pairing_plot(
-                &out_dir.join(file),
-                title,
-                "inner ring speed [r/min] (log scale)",
-                y_label,
-                curves,
-                true,
-            )?;
-            written.plots.push(file.to_string());
-            Ok::<(), anyhow::Error>(())
-        };
+    let mut plot = |file: &str,
+                    title: &str,
+                    y_label: &str,
+                    curves: &[(String, Vec<(f64, f64)>)],
+                    from_zero: bool| {
+        crate::render::pairing_plot(
+            &out_dir.join(file),
+            title,
+            "inner ring speed [r/min] (log scale)",
+            y_label,
+            curves,
+            true,
+            from_zero,
+        )?;
+        written.plots.push(file.to_string());
+        Ok::<(), anyhow::Error>(())
+    };
     let fa = base.load.axial_n;
     plot(
         "friction_torque.png",
         &format!("Rib friction torque of the bearing, PimP, Fₐ = {fa} N"),
-        "rib torque [N·mm]",
+        "rib drag torque [N·mm]",
         &torque_curves,
+        true,
     )?;
     plot(
         "friction_coefficient.png",
         &format!("Rib friction coefficient (Stribeck), PimP, Fₐ = {fa} N"),
-        "μ = |Fₜ| / Q_f [-]",
+        COEFFICIENT_LABEL,
         &mu_curves,
+        true,
     )?;
     plot(
         "friction_model_ratio.png",
         "Rib torque, PimP over Hertz",
         "torque ratio PimP / Hertz [-]",
         &ratio_curves,
+        false,
     )?;
     let law = last.map(|r| r.law);
     md.push_str(&format!(
@@ -508,7 +542,7 @@ pub fn demo_study(
     }
     md.push_str(&format!(
         "\nSliding velocity of the roller on the rib over the PimP pressure of {map_pairing} \
-         (a curved zone) and the friction-power density tau · v_s:\n\n\
+         (a curved zone) and the friction-power density (shear stress times sliding speed):\n\n\
          ![sliding velocity](friction_sliding.png)\n\n![power density](friction_density.png)\n"
     ));
     Ok(summary)

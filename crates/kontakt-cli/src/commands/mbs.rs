@@ -39,12 +39,11 @@ pub fn run(args: &MbsArgs, out: &mut impl Write) -> Result<()> {
     let backends: Vec<&str> = timing.iter().map(|(name, _)| *name).collect();
     // CSV.
     let csv_path = args.out.join("mbs.csv");
-    let mut w =
-        csv::Writer::from_path(&csv_path).map_err(|e| cannot_write("write", &csv_path, e))?;
+    let mut w = crate::commands::CsvFile::create(&csv_path)?;
     for s in samples {
         w.serialize(s)?;
     }
-    w.flush()?;
+    w.finish()?;
     // Plots: one curve per back-end and phase.
     let curves =
         |phase: &str, f: &dyn Fn(&MotionSample) -> (f64, f64)| -> Vec<(String, Vec<(f64, f64)>)> {
@@ -62,7 +61,13 @@ pub fn run(args: &MbsArgs, out: &mut impl Write) -> Result<()> {
                 })
                 .collect()
         };
-    let plot = crate::commands::pimp::pairing_plot;
+    let plot =
+        |path: &std::path::Path,
+         title: &str,
+         x: &str,
+         y: &str,
+         c: &[(String, Vec<(f64, f64)>)],
+         log: bool| { crate::render::pairing_plot(path, title, x, y, c, log, false) };
     let dir = &args.out;
     plot(
         &dir.join("mbs_load.png"),

@@ -4,7 +4,6 @@
 //! loop, as a table, JSON, CSV and a plot. The physics is `kontakt_case::run_mindlin_case`.
 
 use crate::cli::MindlinArgs;
-use crate::commands::cannot_write;
 use anyhow::{Context, Result};
 use kontakt_case::{MindlinCase, MindlinReport, run_mindlin_case};
 use kontakt_plot::{LinePlot, LineStyle, PALETTE, Series};
@@ -13,7 +12,7 @@ use std::path::Path;
 
 /// Run the subcommand.
 pub fn run(args: &MindlinArgs, out: &mut impl Write) -> Result<()> {
-    let (label, text) = crate::commands::read_case_for(&args.case, "mindlin", "mindlin")?;
+    let (label, text) = args.input.read("mindlin")?;
     let case = MindlinCase::from_toml_str(&text).with_context(|| label.clone())?;
     let report = run_mindlin_case(&case).with_context(|| label.clone())?;
     if let Some(path) = &args.csv {
@@ -22,7 +21,7 @@ pub fn run(args: &MindlinArgs, out: &mut impl Write) -> Result<()> {
     if let Some(path) = &args.plot {
         write_plot(path, &report)?;
     }
-    print_report(out, &report, args.json)
+    print_report(out, &report, args.input.json)
 }
 
 /// The report as text or as pretty JSON.
@@ -36,22 +35,29 @@ pub fn print_report(out: &mut impl Write, r: &MindlinReport, json: bool) -> Resu
         "kontakt {} — Cattaneo-Mindlin partial slip{name}",
         r.kontakt_version
     )?;
-    let [a, b] = r.semi_axes_mm;
+    let n = crate::output::Num;
+    let [a, b] = r.semi_axes_mm.map(n);
     writeln!(
         out,
         "  contact ({}): a = {a:.5} mm, b = {b:.5} mm, p0 = {:.1} MPa, F_N = {} N, mu = {}",
-        r.geometry, r.max_pressure_mpa, r.force_n, r.mu
+        r.geometry,
+        n(r.max_pressure_mpa),
+        n(r.force_n),
+        n(r.mu)
     )?;
     writeln!(
         out,
         "  tangential force Q* = {} N at {} deg from a: Q*/(mu F_N) = {:.4} (slides at {:.4} N)",
-        r.amplitude_n, r.load_angle_deg, r.load_fraction, r.limit_force_n
+        n(r.amplitude_n),
+        n(r.load_angle_deg),
+        n(r.load_fraction),
+        n(r.limit_force_n)
     )?;
-    let [sa, sb] = r.stick_semi_axes_mm;
+    let [sa, sb] = r.stick_semi_axes_mm.map(n);
     writeln!(
         out,
         "  stick zone: a' = {sa:.5} mm, b' = {sb:.5} mm (c/a = {:.4})",
-        r.stick_ratio
+        n(r.stick_ratio)
     )?;
     writeln!(
         out,
@@ -63,17 +69,17 @@ pub fn print_report(out: &mut impl Write, r: &MindlinReport, json: bool) -> Resu
         "  energy dissipated per cycle: {:.6e} N mm (closed form), {:.6e} N mm (loop area)",
         r.dissipated_energy_per_cycle_nmm, r.loop_energy_nmm
     )?;
-    Ok(())
+    crate::output::print_warnings(out, &r.warnings)
 }
 
 /// Every point of the loading history: `force_n`, `displacement_mm`.
 pub fn write_csv(path: &Path, r: &MindlinReport) -> Result<()> {
-    let mut w = csv::Writer::from_path(path).map_err(|e| cannot_write("write", path, e))?;
-    w.write_record(["force_n", "displacement_mm"])?;
+    let mut w = crate::commands::CsvFile::create(path)?;
+    w.record(["force_n", "displacement_mm"])?;
     for (q, d) in r.loop_force_n.iter().zip(&r.loop_displacement_mm) {
-        w.write_record([format!("{q:.8e}"), format!("{d:.8e}")])?;
+        w.record([format!("{q:.8e}"), format!("{d:.8e}")])?;
     }
-    w.flush()?;
+    w.finish()?;
     Ok(())
 }
 
@@ -109,6 +115,7 @@ pub fn write_plot(path: &Path, r: &MindlinReport) -> Result<()> {
             y_label: "tangential force Q [N]",
             series: &series,
             x_log: false,
+            y_from_zero: false,
         },
         (900, 600),
     )

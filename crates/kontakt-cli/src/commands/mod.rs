@@ -20,10 +20,7 @@ pub mod traction;
 pub mod validate;
 use std::io::Write;
 
-/// Bad input detected by the CLI itself (unreadable file).
-#[derive(Debug, thiserror::Error)]
-#[error("{0}")]
-pub struct InputError(pub String);
+pub use crate::error::{InputError, cannot_write};
 
 /// A progress indicator on standard error, shown only when standard error is a terminal
 /// and the output is not JSON (`quiet`): a bar of `len` steps, or a spinner for `None`.
@@ -44,14 +41,46 @@ pub fn progress(len: Option<u64>, template: &str, quiet: bool) -> Option<indicat
     Some(bar)
 }
 
-/// An output file or folder that cannot be written: a runtime failure (exit status 1),
-/// whichever flag named it (`--csv`, `--map`, `--plot`, `--out`).
-pub fn cannot_write(
-    what: &str,
-    path: &std::path::Path,
-    e: impl std::fmt::Display,
-) -> anyhow::Error {
-    anyhow::anyhow!("cannot {what} {}: {e}", path.display())
+/// A CSV output file of any command: every failure (creating it, a record, the final
+/// flush, a full disk) is an error naming the file (exit status 1), never an anonymous
+/// "No space left on device". [`CsvFile::finish`] flushes it; a file dropped without it
+/// may be incomplete.
+pub struct CsvFile<'a> {
+    path: &'a std::path::Path,
+    w: csv::Writer<std::fs::File>,
+}
+
+impl<'a> CsvFile<'a> {
+    /// Create (or truncate) `path`.
+    pub fn create(path: &'a std::path::Path) -> Result<Self> {
+        let w = csv::Writer::from_path(path).map_err(|e| cannot_write("write", path, e))?;
+        Ok(CsvFile { path, w })
+    }
+
+    /// One record of fields.
+    pub fn record<I, T>(&mut self, record: I) -> Result<()>
+    where
+        I: IntoIterator<Item = T>,
+        T: AsRef<[u8]>,
+    {
+        self.w
+            .write_record(record)
+            .map_err(|e| cannot_write("write", self.path, e))
+    }
+
+    /// One record of a serializable row (a header first, from its field names).
+    pub fn serialize(&mut self, row: impl serde::Serialize) -> Result<()> {
+        self.w
+            .serialize(row)
+            .map_err(|e| cannot_write("write", self.path, e))
+    }
+
+    /// Flush the file: where a full disk shows.
+    pub fn finish(mut self) -> Result<()> {
+        self.w
+            .flush()
+            .map_err(|e| cannot_write("write", self.path, e))
+    }
 }
 
 pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
@@ -62,7 +91,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
             output::print_report(out, &report, args.json)
         }
         Command::Solve(args) => {
-            let (label, text) = read_case(&args.case)?;
+            let (label, text) = read_case(&args.input.case)?;
             let case = Case::from_toml_str(&text).with_context(|| label.clone())?;
             let wants_field = args.csv.is_some() || args.map.is_some();
             match case.method() {
@@ -105,17 +134,21 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                 _ => {}
             }
             // Relative paths in the case (gap maps) are relative to the case file.
-            let base = args
-                .case
-                .parent()
-                .filter(|_| args.case.as_os_str() != "-")
-                .unwrap_or(std::path::Path::new("."));
+            let base = args.input.base_dir();
             let name = match &case {
                 Case::Pimp(c) | Case::Bem(c) => c.name.clone(),
                 _ => None,
             };
+            // A roller/rib map names its axes along and across the rib, as the demo's do.
+            let axes = match &case {
+                Case::Pimp(c) | Case::Bem(c) if args.map.is_some() => {
+                    kontakt_case::pimp_case::bearing_axes(&c.geometry)
+                        .with_context(|| label.clone())?
+                }
+                _ => None,
+            };
             match case.run(base).with_context(|| label.clone())? {
-                Outcome::Hertz(report) => output::print_report(out, &report, args.json),
+                Outcome::Hertz(report) => output::print_report(out, &report, args.input.json),
                 Outcome::Pimp(outcome) => {
                     let s = &outcome.solution;
                     if let Some(path) = &args.csv {
@@ -124,9 +157,9 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                     if let Some(path) = &args.map {
                         let mode = outcome.report.mode.map_or("", |m| m.as_str());
                         let what = format!("PimP {mode}");
-                        write_case_map(path, &outcome.report, s, name.as_deref(), &what)?;
+                        write_case_map(path, &outcome.report, s, (name.as_deref(), axes), &what)?;
                     }
-                    pimp::print_report(out, &outcome.report, args.json)
+                    pimp::print_report(out, &outcome.report, args.input.json)
                 }
                 Outcome::Bem(outcome) => {
                     let s = &outcome.solution;
@@ -146,19 +179,21 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                             path,
                             &outcome.report,
                             s,
-                            name.as_deref(),
+                            (name.as_deref(), axes),
                             "coupled half-space",
                         )?;
                     }
-                    pimp::print_report(out, &outcome.report, args.json)
+                    pimp::print_report(out, &outcome.report, args.input.json)
                 }
-                Outcome::Traction(report) => traction::print_report(out, &report, args.json),
+                Outcome::Traction(report) => traction::print_report(out, &report, args.input.json),
                 Outcome::Friction(outcome) => {
-                    friction::print_report(out, &outcome.report, args.json)
+                    friction::print_report(out, &outcome.report, args.input.json)
                 }
-                Outcome::Mindlin(report) => mindlin::print_report(out, &report, args.json),
-                Outcome::Impact(report) => impact::print_report(out, &report, args.json),
-                Outcome::Rough(outcome) => rough::print_report(out, &outcome.report, args.json),
+                Outcome::Mindlin(report) => mindlin::print_report(out, &report, args.input.json),
+                Outcome::Impact(report) => impact::print_report(out, &report, args.input.json),
+                Outcome::Rough(outcome) => {
+                    rough::print_report(out, &outcome.report, args.input.json)
+                }
             }
         }
         Command::Demo(args) => pimp::demo(&args.out, out, args.json),
@@ -208,12 +243,13 @@ pub fn read_case_for(
 }
 
 /// `--map` of a PimP or half-space case: the pressure map titled by the case's name (or
-/// geometry), force and method, with the local Hertz ellipse.
+/// geometry), force and method, with the local Hertz ellipse; its axes named in the bearing
+/// when `axes` gives them (a roller/rib geometry), else by the gap's principal frame.
 fn write_case_map<D>(
     path: &std::path::Path,
     report: &kontakt_case::PimpReport,
     s: &kontakt::field::NormalSolution<D>,
-    name: Option<&str>,
+    (name, axes): (Option<&str>, Option<[[f64; 3]; 2]>),
     what: &str,
 ) -> Result<()> {
     let title = format!(
@@ -222,14 +258,37 @@ fn write_case_map<D>(
         report.force_n,
     );
     let hertz = report.hertz.as_ref().map(|h| h.semi_axes_mm);
-    pimp::write_map(
+    crate::render::write_map(
         path,
         &s.grid,
         &s.pressure,
         &title,
         &[],
-        &pimp::MapNotes::principal(hertz),
+        &match axes {
+            Some(axes) => crate::render::MapNotes::in_bearing(axes, hertz),
+            None => crate::render::MapNotes::principal(hertz),
+        },
     )
+}
+
+impl crate::cli::CaseInput {
+    /// The case file (or standard input) of a command that runs `method` cases, named
+    /// like the command: its label and text (see [`read_case_for`]).
+    ///
+    /// # Errors
+    /// As [`read_case_for`].
+    pub fn read(&self, method: &str) -> Result<(String, String)> {
+        read_case_for(&self.case, method, method)
+    }
+
+    /// The folder that relative paths in the case (gap and height maps) are resolved
+    /// against: the case file's, the working folder for standard input.
+    pub fn base_dir(&self) -> &std::path::Path {
+        self.case
+            .parent()
+            .filter(|_| self.case.as_os_str() != "-")
+            .unwrap_or(std::path::Path::new("."))
+    }
 }
 
 /// Read a case file (or standard input for `-`): its label for messages and its text.

@@ -1,12 +1,12 @@
 //! PimP output: the result table, the pressure CSV and the pressure map; and the demo
 //! report of the roller-end/rib study.
 
-use crate::commands::{InputError, cannot_write, progress};
+use crate::commands::{cannot_write, progress};
+use crate::render::{MapNotes, Written, map_stretch, pairing_plot, write_map};
 use anyhow::{Context, Result};
-use kontakt::bearing::{DemoRow, DemoStudy, STUDY_FORCES, TABLE1, demo_study};
+use kontakt::bearing::{DemoMap, DemoRow, DemoStudy, STUDY_FORCES, TABLE1, demo_study};
 use kontakt::geometry::Grid2;
 use kontakt_case::PimpReport;
-use kontakt_plot::{FieldMap, LinePlot, LineStyle, PALETTE, Series};
 use std::io::Write;
 use std::path::Path;
 
@@ -22,41 +22,42 @@ pub fn print_report(out: &mut impl Write, r: &PimpReport, json: bool) -> Result<
     };
     let column = if r.mode.is_some() { "PimP" } else { "BEM" };
     writeln!(out, "{name}: {method}, {}", r.geometry)?;
+    let num = crate::output::Num;
     let hz = |f: &dyn Fn(&kontakt_case::pimp_case::HertzEcho) -> f64, prec: usize| {
         r.hertz
             .as_ref()
-            .map_or(String::from("-"), |h| format!("{:.*}", prec, f(h)))
+            .map_or(String::from("-"), |h| format!("{:.*}", prec, num(f(h))))
     };
     writeln!(out, "  {:<26} {:>14} {:>14}", "", column, "Hertz (local)")?;
     let rows: [(&str, String, String); 6] = [
         (
             "force [N]",
-            format!("{:.2}", r.force_n),
-            format!("{:.2}", r.force_n),
+            format!("{:.2}", num(r.force_n)),
+            format!("{:.2}", num(r.force_n)),
         ),
         (
             "max pressure [MPa]",
-            format!("{:.1}", r.max_pressure_mpa),
+            format!("{:.1}", num(r.max_pressure_mpa)),
             hz(&|h| h.max_pressure_mpa, 1),
         ),
         (
             "contact area [mm²]",
-            format!("{:.5}", r.contact_area_mm2),
+            format!("{:.5}", num(r.contact_area_mm2)),
             hz(&|h| h.contact_area_mm2, 5),
         ),
         (
             "approach [mm]",
-            format!("{:.6}", r.approach_mm),
+            format!("{:.6}", num(r.approach_mm)),
             hz(&|h| h.approach_mm, 6),
         ),
         (
             "semi-axis a [mm]",
-            format!("{:.4}", r.semi_axes_mm[0]),
+            format!("{:.4}", num(r.semi_axes_mm[0])),
             hz(&|h| h.semi_axes_mm[0], 4),
         ),
         (
             "semi-axis b [mm]",
-            format!("{:.4}", r.semi_axes_mm[1]),
+            format!("{:.4}", num(r.semi_axes_mm[1])),
             hz(&|h| h.semi_axes_mm[1], 4),
         ),
     ];
@@ -66,17 +67,17 @@ pub fn print_report(out: &mut impl Write, r: &PimpReport, json: bool) -> Result<
     writeln!(out, "  {:<26} {:>14}", "patches", r.patches)?;
     let curvature = r
         .centre_line_curvature_per_mm
-        .map_or("-".to_string(), |k| format!("{k:.4}"));
+        .map_or("-".to_string(), |k| format!("{:.4}", num(k)));
     writeln!(
         out,
         "  {:<26} {:>14}",
         "centre-line curv. [1/mm]", curvature
     )?;
     if let Some(a) = r.rib_angle_deg {
-        writeln!(out, "  {:<26} {:>14.3}", "rib angle [deg]", a)?;
+        writeln!(out, "  {:<26} {:>14.3}", "rib angle [deg]", num(a))?;
     }
     if let Some(s) = r.separation_mm {
-        writeln!(out, "  {:<26} {:>14.6}", "pose separation [mm]", s)?;
+        writeln!(out, "  {:<26} {:>14.6}", "pose separation [mm]", num(s))?;
     }
     // `grid_rounds` counts PimP's grid resizes and the half-space solver's domains.
     let work = match &r.solver {
@@ -107,194 +108,36 @@ pub fn print_report(out: &mut impl Write, r: &PimpReport, json: bool) -> Result<
 
 /// Write fields as CSV: one row per cell, `x_mm, y_mm` and one column per named field.
 pub fn write_csv(path: &Path, grid: &Grid2, fields: &[(&str, &[f64])]) -> Result<()> {
-    let mut w = csv::Writer::from_path(path).map_err(|e| cannot_write("write", path, e))?;
+    let mut w = crate::commands::CsvFile::create(path)?;
     let mut header = vec!["x_mm", "y_mm"];
     header.extend(fields.iter().map(|(name, _)| *name));
-    w.write_record(&header)?;
+    w.record(&header)?;
     for (k, (x, y)) in grid.points().enumerate() {
         let mut row = vec![format!("{x:.6e}"), format!("{y:.6e}")];
         row.extend(fields.iter().map(|(_, v)| format!("{:.6e}", v[k])));
-        w.write_record(&row)?;
+        w.record(&row)?;
     }
-    w.flush()?;
+    w.finish()?;
     Ok(())
 }
 
-/// The name of a grid axis by its direction `d` in the bearing frame (a unit vector; `X`
-/// radial, `Y` circumferential at the contact point, `Z` the ring axis), with its unit: the
-/// rib runs round the ring, so a circumferential axis is "along the rib" and an axis in the
-/// axial section plane is "across the rib" (with its lean from radial).
-pub fn axis_name(d: [f64; 3]) -> String {
-    let circumferential = d[1].abs().min(1.0);
-    let off = circumferential.acos().to_degrees();
-    if off <= 15.0 {
-        "along the rib (circumferential) [mm]".to_string()
-    } else if off >= 75.0 {
-        let from_radial = d[2].abs().atan2(d[0].abs()).to_degrees();
-        if from_radial < 10.0 {
-            "across the rib (radial) [mm]".to_string()
-        } else {
-            format!("across the rib ({from_radial:.0}° from radial) [mm]")
-        }
-    } else {
-        format!("{off:.0}° from circumferential [mm]")
-    }
-}
-
-/// How a pressure map is annotated: the names of its axes and the Hertz ellipse at the
-/// contact point (semi-axes `[a, b]` in mm, `a` along the grid's `x`, centred at the origin).
-pub struct MapNotes {
-    /// Labels of the x and y axes.
-    pub axes: (String, String),
-    /// Hertz semi-axes, if the ellipse is to be drawn.
-    pub hertz_semi_axes_mm: Option<[f64; 2]>,
-}
-
-impl MapNotes {
-    /// Axes named by their direction in the bearing (see [`axis_name`]).
-    pub fn in_bearing(axes: [[f64; 3]; 2], hertz_semi_axes_mm: Option<[f64; 2]>) -> Self {
-        MapNotes {
-            axes: (axis_name(axes[0]), axis_name(axes[1])),
-            hertz_semi_axes_mm,
-        }
-    }
-
-    /// Axes of the gap's principal frame (x along the Hertz major axis), for contacts that
-    /// are not placed in a bearing; plain x, y for a gap map (no Hertz contact point).
-    pub fn principal(hertz_semi_axes_mm: Option<[f64; 2]>) -> Self {
-        let axes = if hertz_semi_axes_mm.is_some() {
-            (
-                "x, along the Hertz major axis [mm]".to_string(),
-                "y, along the Hertz minor axis [mm]".to_string(),
-            )
-        } else {
-            ("x [mm]".to_string(), "y [mm]".to_string())
-        };
-        MapNotes {
-            axes,
-            hertz_semi_axes_mm,
-        }
-    }
-}
-
-/// The legend entry of the maximum-pressure marker.
-pub fn max_label(pressure: &[f64]) -> String {
-    let max = pressure.iter().copied().fold(0.0f64, f64::max);
-    format!("p_max = {max:.0} MPa")
-}
-
-/// Draw a pressure map with the contact outline, optional overlays, the Hertz ellipse at
-/// the contact point and the maximum marked, its axes named as `notes` says.
-pub fn write_map(
-    path: &Path,
-    grid: &Grid2,
-    pressure: &[f64],
-    title: &str,
-    overlays: &[kontakt_plot::Overlay<'_>],
-    notes: &MapNotes,
-) -> Result<()> {
-    kontakt_plot::Format::from_path(path).map_err(|e| InputError(e.to_string()))?;
-    let g = grid;
-    let max = max_label(pressure);
-    let map = FieldMap {
-        nx: g.nx(),
-        ny: g.ny(),
-        x_min: g.x(0) - 0.5 * g.dx(),
-        y_min: g.y(0) - 0.5 * g.dy(),
-        dx: g.dx(),
-        dy: g.dy(),
-        values: pressure,
-        title,
-        x_label: &notes.axes.0,
-        y_label: &notes.axes.1,
-        colorbar_label: "pressure [MPa]",
-        outline: true,
-        overlays,
-        ellipse: notes
-            .hertz_semi_axes_mm
-            .map(|[a, b]| kontakt_plot::Ellipse {
-                label: "Hertz ellipse at the contact point",
-                centre: (0.0, 0.0),
-                semi_axes: (a, b),
-                angle: 0.0,
-                color: HERTZ_COLOR,
-            }),
-        max_marker: Some(&max),
-    };
-    kontakt_plot::field_map(path, &map, (900, 640))
-        .with_context(|| format!("drawing {}", path.display()))
-}
-
-/// Colour of the Hertz ellipse on pressure maps (magenta: apart from viridis, the black
-/// outline and the overlays' red and orange).
-pub const HERTZ_COLOR: (u8, u8, u8) = (220, 0, 220);
-
-/// One curve per pairing (solid and dashed in turn, the palette's colours) on one plot.
-pub fn pairing_plot<S: AsRef<str>>(
-    path: &Path,
-    title: &str,
-    x_label: &str,
-    y_label: &str,
-    curves: &[(S, Vec<(f64, f64)>)],
-    x_log: bool,
-) -> Result<()> {
-    let series: Vec<Series> = curves
+/// The notes of the demo's pressure maps: axes on the rib, the Hertz ellipse, one colour
+/// scale for all pairings (a colour is one pressure on each map) and each pairing's
+/// stretch as `kontakt validate` draws it (see [`map_stretch`]).
+fn demo_map_notes(maps: &[DemoMap]) -> Vec<MapNotes> {
+    let color_max = maps
         .iter()
-        .enumerate()
-        .map(|(k, (name, pts))| Series {
-            label: name.as_ref(),
-            points: pts,
-            color: PALETTE[k % PALETTE.len()],
-            style: if k % 2 == 0 {
-                LineStyle::Solid
-            } else {
-                LineStyle::Dashed
-            },
+        .flat_map(|m| m.pressure.iter().copied())
+        .fold(0.0f64, f64::max);
+    maps.iter()
+        .map(|m| {
+            let hertz = Some(m.hertz_semi_axes_mm);
+            MapNotes::in_bearing(m.axes, hertz).shared(
+                (color_max > 0.0).then_some(color_max),
+                Some(map_stretch(&m.grid, &m.pressure, hertz)),
+            )
         })
-        .collect();
-    kontakt_plot::line_plot(
-        path,
-        &LinePlot {
-            title,
-            x_label,
-            y_label,
-            series: &series,
-            x_log,
-        },
-        (900, 600),
-    )
-    .with_context(|| format!("drawing {}", path.display()))
-}
-
-/// The files the demo writes besides report.md, by kind, in the order written: the summary
-/// line counts these lists, so it cannot disagree with what is on disk.
-#[derive(Debug, Default)]
-pub struct Written {
-    /// Pressure maps (PNG).
-    pub maps: Vec<String>,
-    /// Line plots (PNG).
-    pub plots: Vec<String>,
-    /// Maps of the friction study (PNG).
-    pub friction_maps: Vec<String>,
-    /// CSV tables.
-    pub tables: Vec<String>,
-}
-
-impl Written {
-    /// The demo's last line: the report and every file written with it, counted.
-    pub fn summary(&self, report: &Path, results: usize) -> String {
-        let pictures = self.maps.len() + self.plots.len() + self.friction_maps.len();
-        format!(
-            "Report written to {} with {pictures} pictures ({} pressure maps, {} plots, {} \
-             friction maps) and {} tables ({}; {results} results in results.csv)",
-            report.display(),
-            self.maps.len(),
-            self.plots.len(),
-            self.friction_maps.len(),
-            self.tables.len(),
-            self.tables.join(", "),
-        )
-    }
+        .collect()
 }
 
 /// Run the roller-end/rib study (`kontakt::bearing::demo_study`) and write the report
@@ -312,7 +155,7 @@ pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
     }
     let DemoStudy { rows, maps: fields } = study?;
     let mut maps = Vec::with_capacity(fields.len());
-    for m in &fields {
+    for (m, notes) in fields.iter().zip(demo_map_notes(&fields)) {
         let file = format!("{}_{:.0}N.png", m.pairing, m.force_n);
         write_map(
             &out_dir.join(&file),
@@ -320,7 +163,7 @@ pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
             &m.pressure,
             &format!("{}, {:.0} N, PimP corrected", m.pairing, m.force_n),
             &[],
-            &MapNotes::in_bearing(m.axes, Some(m.hertz_semi_axes_mm)),
+            &notes,
         )?;
         maps.push((m.pairing, file));
     }
@@ -328,12 +171,11 @@ pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
     written.maps.extend(maps.iter().map(|(_, f)| f.clone()));
     // CSV of every row.
     let csv_path = out_dir.join("results.csv");
-    let mut w =
-        csv::Writer::from_path(&csv_path).map_err(|e| cannot_write("write", &csv_path, e))?;
+    let mut w = crate::commands::CsvFile::create(&csv_path)?;
     for r in &rows {
         w.serialize(r)?;
     }
-    w.flush()?;
+    w.finish()?;
     written.tables.push("results.csv".into());
     // Maximum pressure and area against force, corrected mode.
     let series_of = |f: &dyn Fn(&DemoRow) -> f64| -> Vec<(&'static str, Vec<(f64, f64)>)> {
@@ -370,6 +212,7 @@ pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
             ylabel,
             &series_of(f),
             false,
+            false,
         )?;
         written.plots.push(file.into());
     }
@@ -405,7 +248,8 @@ pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
     md.push_str(
         "\n## Pressure maps at 400 N (corrected)\n\nEach map shows the PimP pressure inside \
          the contact outline (black), the Hertz ellipse at the contact point's curvature \
-         (magenta, dotted) and the maximum (ringed dot, value in the legend). The axes are \
+         (magenta, dotted) and the maximum (ringed dot, value in the legend), all on one \
+         colour scale. The axes are \
          directions on the rib: along it (circumferential) and across it (in the axial \
          section, with the lean from radial), in mm. A zone more slender than 2.5:1 is drawn \
          with its short axis stretched by a whole factor, as the note under the title says.\n\n",
@@ -504,21 +348,33 @@ pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
 
 #[cfg(test)]
 mod tests {
-    use super::axis_name;
+    #![allow(clippy::unwrap_used)]
 
+    /// Issue 30, item 18: the demo's pressure maps share one colour scale (the largest
+    /// pressure of them all) and each has its pairing's stretch.
     #[test]
-    fn axes_are_named_by_their_direction_on_the_rib() {
-        assert_eq!(
-            axis_name([0.0, -1.0, 0.0]),
-            "along the rib (circumferential) [mm]"
+    fn demo_maps_share_one_colour_scale() {
+        let study = kontakt::bearing::demo_study(&[400.0]).unwrap();
+        let notes = super::demo_map_notes(&study.maps);
+        let top = study
+            .maps
+            .iter()
+            .flat_map(|m| m.pressure.iter().copied())
+            .fold(0.0f64, f64::max);
+        assert_eq!(notes.len(), 8);
+        for (m, n) in study.maps.iter().zip(&notes) {
+            assert_eq!(n.color_max, Some(top), "{}", m.pairing);
+            let own = m.pressure.iter().copied().fold(0.0f64, f64::max);
+            assert!(own <= top);
+            let k = n.stretch.unwrap();
+            assert!(k >= 1.0 && k.fract() == 0.0, "{}: {k}", m.pairing);
+        }
+        // the pairings' own maxima differ, so a scale per map would differ
+        assert!(
+            study
+                .maps
+                .iter()
+                .any(|m| m.pressure.iter().copied().fold(0.0, f64::max) < 0.8 * top)
         );
-        assert_eq!(axis_name([1.0, 0.0, 0.0]), "across the rib (radial) [mm]");
-        let (s, c) = 21f64.to_radians().sin_cos();
-        assert_eq!(
-            axis_name([-c, 0.0, s]),
-            "across the rib (21° from radial) [mm]"
-        );
-        let (s, c) = 45f64.to_radians().sin_cos();
-        assert_eq!(axis_name([c, s, 0.0]), "45° from circumferential [mm]");
     }
 }

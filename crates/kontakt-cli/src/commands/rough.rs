@@ -4,8 +4,7 @@
 //! pressure map at the highest load. The physics is `kontakt_case::run_rough_case`.
 
 use crate::cli::RoughArgs;
-use crate::commands::cannot_write;
-use crate::commands::pimp::{MapNotes, write_map};
+use crate::render::{MapNotes, write_map};
 use anyhow::{Context, Result};
 use kontakt_case::rough_case::{RoughCase, RoughReport, run_rough_case};
 use kontakt_plot::{LinePlot, LineStyle, PALETTE, Series};
@@ -14,13 +13,9 @@ use std::path::Path;
 
 /// Run the subcommand.
 pub fn run(args: &RoughArgs, out: &mut impl Write) -> Result<()> {
-    let (label, text) = crate::commands::read_case_for(&args.case, "rough", "rough")?;
+    let (label, text) = args.input.read("rough")?;
     let case = RoughCase::from_toml_str(&text).with_context(|| label.clone())?;
-    let base = args
-        .case
-        .parent()
-        .filter(|_| args.case.as_os_str() != "-")
-        .unwrap_or(Path::new("."));
+    let base = args.input.base_dir();
     let outcome = run_rough_case(&case, base).with_context(|| label.clone())?;
     let r = &outcome.report;
     if let Some(path) = &args.csv {
@@ -36,13 +31,10 @@ pub fn run(args: &RoughArgs, out: &mut impl Write) -> Result<()> {
             r.name.as_deref().unwrap_or("rough contact"),
             100.0 * r.rows.last().map_or(0.0, |row| row.area_fraction)
         );
-        let notes = MapNotes {
-            axes: ("x [mm]".into(), "y [mm]".into()),
-            hertz_semi_axes_mm: None,
-        };
+        let notes = MapNotes::plain();
         write_map(path, &outcome.grid, &outcome.pressure, &title, &[], &notes)?;
     }
-    print_report(out, r, args.json)
+    print_report(out, r, args.input.json)
 }
 
 /// The report as a table or as pretty JSON.
@@ -61,8 +53,8 @@ pub fn print_report(out: &mut impl Write, r: &RoughReport, json: bool) -> Result
         r.spacing_mm[0],
         r.spacing_mm[1],
         r.rms_height_mm,
-        r.rms_slope,
-        r.e_star_mpa
+        crate::output::Num(r.rms_slope),
+        crate::output::Num(r.e_star_mpa)
     )?;
     writeln!(
         out,
@@ -77,16 +69,17 @@ pub fn print_report(out: &mut impl Write, r: &RoughReport, json: bool) -> Result
         "gap [mm]",
         "iter"
     )?;
+    let num = crate::output::Num;
     for row in &r.rows {
         writeln!(
             out,
             "  {:>12.4} {:>12.5} {:>10.5} {:>8.4} {:>10.5} {:>12.1} {:>8} {:>12.4e} {:>6}",
-            row.mean_pressure_mpa,
-            row.reduced_pressure,
-            row.area_fraction,
-            row.kappa,
-            row.persson_area_fraction,
-            row.max_pressure_mpa,
+            num(row.mean_pressure_mpa),
+            num(row.reduced_pressure),
+            num(row.area_fraction),
+            num(row.kappa),
+            num(row.persson_area_fraction),
+            num(row.max_pressure_mpa),
             row.patches,
             row.mean_gap_mm,
             row.iterations
@@ -101,11 +94,11 @@ pub fn print_report(out: &mut impl Write, r: &RoughReport, json: bool) -> Result
 
 /// One line per load.
 pub fn write_csv(path: &Path, r: &RoughReport) -> Result<()> {
-    let mut w = csv::Writer::from_path(path).map_err(|e| cannot_write("write", path, e))?;
+    let mut w = crate::commands::CsvFile::create(path)?;
     for row in &r.rows {
         w.serialize(row)?;
     }
-    w.flush()?;
+    w.finish()?;
     Ok(())
 }
 
@@ -158,6 +151,7 @@ pub fn write_plot(path: &Path, r: &RoughReport) -> Result<()> {
             y_label: "A / A0 [-]",
             series: &series,
             x_log: false,
+            y_from_zero: false,
         },
         (900, 600),
     )

@@ -69,7 +69,7 @@ pub fn run(args: &SweepArgs, out: &mut impl Write) -> Result<()> {
         });
         serde_json::to_writer_pretty(&mut *out, &v)?;
         writeln!(out)?;
-        return Ok(());
+        return every_case_failed(&s.combined);
     }
     let per_case = if s.cases_computed > 0 {
         format!(
@@ -114,6 +114,21 @@ pub fn run(args: &SweepArgs, out: &mut impl Write) -> Result<()> {
             "Fields: {}/chunk-*/case-*-<field>.npy (float64, [ny, nx])",
             args.out.join(FIELDS_DIR).display()
         )?;
+    }
+    every_case_failed(&s.combined)
+}
+
+/// A sweep whose every case failed (invalid, failed or panic) is a failed run: exit
+/// status 1 after the summary and the table are written (docs/sweep.md), so that a
+/// script notices; a sweep with some solved cases succeeds and counts the others.
+fn every_case_failed(c: &kontakt_case::sweep::CombineSummary) -> Result<()> {
+    if c.rows > 0 && c.not_ok == c.rows {
+        anyhow::bail!(
+            "every case of the sweep failed ({} of {}): see the status and error columns of {}",
+            c.not_ok,
+            c.rows,
+            c.path.display()
+        );
     }
     Ok(())
 }

@@ -3,7 +3,7 @@
 //! JSON, CSV and a plot. The physics is `kontakt_case::run_traction_case`.
 
 use crate::cli::TractionArgs;
-use crate::commands::{InputError, cannot_write};
+use crate::commands::InputError;
 use anyhow::{Context, Result};
 use kontakt_case::{ExactMap, MapPoint, TractionCase, TractionReport, run_traction_case_with_map};
 use kontakt_plot::{Ellipse, FieldMap, LinePlot, LineStyle, Overlay, PALETTE, Series};
@@ -15,7 +15,7 @@ const MAX_ROWS: usize = 21;
 
 /// Run the subcommand.
 pub fn run(args: &TractionArgs, out: &mut impl Write) -> Result<()> {
-    let (label, text) = crate::commands::read_case_for(&args.case, "traction", "traction")?;
+    let (label, text) = args.input.read("traction")?;
     let case = TractionCase::from_toml_str(&text).with_context(|| label.clone())?;
     let map = args
         .map
@@ -31,7 +31,7 @@ pub fn run(args: &TractionArgs, out: &mut impl Write) -> Result<()> {
     if let Some(path) = &args.plot {
         write_plot(path, &report)?;
     }
-    print_report(out, &report, args.json)
+    print_report(out, &report, args.input.json)
 }
 
 /// The report as a table (a subsample of the points) or as pretty JSON.
@@ -45,7 +45,8 @@ pub fn print_report(out: &mut impl Write, r: &TractionReport, json: bool) -> Res
         "kontakt {} — traction curves F_T/(mu F_N){name}",
         r.kontakt_version
     )?;
-    let [a, b] = r.semi_axes_mm;
+    let num = crate::output::Num;
+    let [a, b] = r.semi_axes_mm.map(num);
     let axes = if r.geometry == "line" {
         format!("half-width a = {a:.5} mm, half-length {b:.4} mm")
     } else {
@@ -53,18 +54,21 @@ pub fn print_report(out: &mut impl Write, r: &TractionReport, json: bool) -> Res
     };
     writeln!(out, "  contact ({}): {axes}", r.geometry)?;
     let load = match r.line_load_n_per_mm {
-        Some(q) => format!("F_N = {} N ({q:.4} N/mm)", r.force_n),
-        None => format!("F_N = {} N", r.force_n),
+        Some(q) => format!("F_N = {} N ({:.4} N/mm)", num(r.force_n), num(q)),
+        None => format!("F_N = {} N", num(r.force_n)),
     };
     writeln!(
         out,
         "  {load}, p0 = {:.1} MPa, mu = {}",
-        r.max_pressure_mpa, r.mu
+        num(r.max_pressure_mpa),
+        num(r.mu)
     )?;
     writeln!(
         out,
         "  E* = {:.1} MPa, Kalker G = {:.1} MPa, nu = {:.4}",
-        r.e_star_mpa, r.shear_modulus_mpa, r.poisson_ratio
+        num(r.e_star_mpa),
+        num(r.shear_modulus_mpa),
+        num(r.poisson_ratio)
     )?;
     if r.difference_parameter != 0.0 {
         writeln!(
@@ -77,7 +81,9 @@ pub fn print_report(out: &mut impl Write, r: &TractionReport, json: bool) -> Res
         writeln!(
             out,
             "  Kalker C11 = {:.4}, C22 = {:.4}, C23 = {:.4}",
-            c.c11, c.c22, c.c23
+            num(c.c11),
+            num(c.c22),
+            num(c.c23)
         )?;
     }
     let mut sat = format!(
@@ -130,16 +136,16 @@ pub fn print_report(out: &mut impl Write, r: &TractionReport, json: bool) -> Res
         .step_by(step)
         .chain((!(n - 1).is_multiple_of(step)).then_some(n - 1));
     for i in rows {
-        write!(out, "  {:>12.6}", r.creepage[i])?;
+        write!(out, "  {:>12.6}", num(r.creepage[i]))?;
         for c in &r.curves {
             let bad = c
                 .exact
                 .as_ref()
                 .is_some_and(|x| x.not_converged.contains(&i));
             if bad {
-                write!(out, " {:>13.5}*", c.normalized_force[i])?;
+                write!(out, " {:>13.5}*", num(c.normalized_force[i]))?;
             } else {
-                write!(out, " {:>14.5}", c.normalized_force[i])?;
+                write!(out, " {:>14.5}", num(c.normalized_force[i]))?;
             }
         }
         writeln!(out)?;
@@ -173,6 +179,7 @@ fn ordinal(n: usize) -> String {
 /// With lateral or spin creepage: the creep forces and the spin moment of each model that
 /// computes them, at the same points as the curve table.
 fn print_forces(out: &mut impl Write, r: &TractionReport, step: usize) -> Result<()> {
+    let num = crate::output::Num;
     let with: Vec<_> = r
         .curves
         .iter()
@@ -184,8 +191,8 @@ fn print_forces(out: &mut impl Write, r: &TractionReport, step: usize) -> Result
     writeln!(
         out,
         "  creep forces on body 1 at lateral creepage {} and spin {} 1/mm (Fx, Fy in N, Mz in N mm)",
-        r.lateral_creepage.unwrap_or(0.0),
-        r.spin_creepage_per_mm.unwrap_or(0.0)
+        num(r.lateral_creepage.unwrap_or(0.0)),
+        num(r.spin_creepage_per_mm.unwrap_or(0.0))
     )?;
     write!(out, "  {:>12}", "creepage")?;
     for (model, f) in &with {
@@ -200,12 +207,13 @@ fn print_forces(out: &mut impl Write, r: &TractionReport, step: usize) -> Result
         .step_by(step)
         .chain((!(n - 1).is_multiple_of(step)).then_some(n - 1));
     for i in rows {
-        write!(out, "  {:>12.6}", r.creepage[i])?;
+        write!(out, "  {:>12.6}", num(r.creepage[i]))?;
         for (_, f) in &with {
             write!(
                 out,
                 " {:>14.5} {:>14.5}",
-                f.longitudinal_force_n[i], f.lateral_force_n[i]
+                num(f.longitudinal_force_n[i]),
+                num(f.lateral_force_n[i])
             )?;
             if let Some(m) = &f.spin_moment_nmm {
                 write!(out, " {:>14.5}", m[i])?;
@@ -218,7 +226,7 @@ fn print_forces(out: &mut impl Write, r: &TractionReport, step: usize) -> Result
 
 /// Every point: `creepage` and one column `<model>_ft_over_mu_fn` per model.
 pub fn write_csv(path: &Path, r: &TractionReport) -> Result<()> {
-    let mut w = csv::Writer::from_path(path).map_err(|e| cannot_write("write", path, e))?;
+    let mut w = crate::commands::CsvFile::create(path)?;
     let mut header = vec!["creepage".to_string()];
     header.extend(
         r.curves
@@ -235,7 +243,7 @@ pub fn write_csv(path: &Path, r: &TractionReport) -> Result<()> {
             }
         }
     }
-    w.write_record(&header)?;
+    w.record(&header)?;
     for (i, xi) in r.creepage.iter().enumerate() {
         let mut row = vec![format!("{xi:.8e}")];
         row.extend(
@@ -250,9 +258,9 @@ pub fn write_csv(path: &Path, r: &TractionReport) -> Result<()> {
                 row.push(format!("{:.8e}", m[i]));
             }
         }
-        w.write_record(&row)?;
+        w.record(&row)?;
     }
-    w.flush()?;
+    w.finish()?;
     Ok(())
 }
 
@@ -323,6 +331,8 @@ pub fn write_map(path: &Path, m: &ExactMap) -> Result<()> {
                 color: (80, 80, 80),
             }),
             max_marker: None,
+            color_max: None,
+            stretch: None,
         },
         (900, 700),
     )
@@ -398,6 +408,7 @@ pub fn write_plot(path: &Path, r: &TractionReport) -> Result<()> {
             y_label: "Fₜ / (μ Fₙ) [-]",
             series: &series,
             x_log: false,
+            y_from_zero: false,
         },
         (900, 600),
     )

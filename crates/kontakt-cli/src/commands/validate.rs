@@ -1,13 +1,13 @@
 //! `kontakt validate`: PimP against the coupled half-space solver for the roller-end/rib
 //! pairings of Wirsching et al. (2020) (its Figures 7-10 with the half-space solver in the place of FEM).
 
-use crate::commands::pimp::{MapNotes, write_map};
 use crate::commands::{cannot_write, progress};
+use crate::render::{HERTZ_COLOR, MapNotes, map_stretch, write_map};
 use anyhow::{Context, Result};
 use kontakt::bearing::validation::{PairingStudy, ValidationRow, validate_pairing};
 use kontakt::bearing::{STUDY_FORCES, TABLE1};
 use kontakt::halfspace::BemOptions;
-use kontakt_plot::{LinePlot, LineStyle, Overlay, PALETTE, Series};
+use kontakt_plot::{LinePlot, LineStyle, Overlay, Series};
 use std::io::Write;
 use std::path::Path;
 
@@ -36,8 +36,25 @@ struct CsvRow<'a> {
     hertz_contact_area_mm2: f64,
 }
 
+/// Fewest cells a side of `kontakt validate`'s grid.
+pub const VALIDATE_MIN_CELLS: usize = 12;
+
 /// Run the study and write the report folder.
 pub fn validate(out_dir: &Path, cells: usize, out: &mut impl Write, json: bool) -> Result<()> {
+    // The study's adaptive extent holds the contact in about three quarters of the grid,
+    // and a contact needs MIN_CELLS_ACROSS (8) cells each way: 12 is the fewest that runs
+    // every pairing (the help said 8, which failed at the first pairing).
+    if !(VALIDATE_MIN_CELLS..=4096).contains(&cells) {
+        return Err(kontakt::Error::invalid(
+            "--cells",
+            cells,
+            format!(
+                "{VALIDATE_MIN_CELLS}..=4096 cells a side (the contact must span 8 cells each \
+                 way in every pairing)"
+            ),
+        )
+        .into());
+    }
     std::fs::create_dir_all(out_dir).map_err(|e| cannot_write("create", out_dir, e))?;
     let options = BemOptions {
         cells: [cells, cells],
@@ -98,12 +115,12 @@ pub fn validate(out_dir: &Path, cells: usize, out: &mut impl Write, json: bool) 
             Overlay {
                 label: "PimP published",
                 values: &o.pimp_published,
-                color: (220, 30, 30),
+                color: PUBLISHED_COLOR,
             },
             Overlay {
                 label: "PimP corrected",
                 values: &o.pimp_corrected,
-                color: (255, 150, 0),
+                color: CORRECTED_COLOR,
             },
         ];
         let hertz = s
@@ -120,7 +137,9 @@ pub fn validate(out_dir: &Path, cells: usize, out: &mut impl Write, json: bool) 
                 s.pairing, o.force_n
             ),
             &overlays,
-            &MapNotes::in_bearing(o.axes, hertz),
+            // the stretch of the demo's map of this pairing: that of the PimP-corrected field
+            &MapNotes::in_bearing(o.axes, hertz)
+                .shared(None, Some(map_stretch(&o.grid, &o.pimp_corrected, hertz))),
         )?;
         maps += 1;
     }
@@ -142,7 +161,7 @@ pub fn validate(out_dir: &Path, cells: usize, out: &mut impl Write, json: bool) 
 }
 
 fn write_csv(path: &Path, studies: &[PairingStudy]) -> Result<()> {
-    let mut w = csv::Writer::from_path(path).map_err(|e| cannot_write("write", path, e))?;
+    let mut w = crate::commands::CsvFile::create(path)?;
     for s in studies {
         for r in &s.rows {
             w.serialize(CsvRow {
@@ -161,7 +180,7 @@ fn write_csv(path: &Path, studies: &[PairingStudy]) -> Result<()> {
             })?;
         }
     }
-    w.flush()?;
+    w.finish()?;
     Ok(())
 }
 
@@ -169,9 +188,8 @@ fn write_csv(path: &Path, studies: &[PairingStudy]) -> Result<()> {
 /// `k` = 0 maximum pressure, 1 area.
 fn deviation_plot(path: &Path, title: &str, studies: &[&PairingStudy], k: usize) -> Result<()> {
     let methods = ["PimP published", "PimP corrected", "Hertz"];
-    let styles = [LineStyle::Solid, LineStyle::Dashed, LineStyle::Markers];
-    // (label, points, colour index, style) per curve.
-    type Curve = (String, Vec<(f64, f64)>, usize, LineStyle);
+    // (label, points, colour, style) per curve.
+    type Curve = (String, Vec<(f64, f64)>, (u8, u8, u8), LineStyle);
     let mut data: Vec<Curve> = Vec::new();
     for (si, s) in studies.iter().enumerate() {
         for (m, method) in methods.iter().enumerate() {
@@ -180,20 +198,16 @@ fn deviation_plot(path: &Path, title: &str, studies: &[&PairingStudy], k: usize)
                 .iter()
                 .map(|r| (r.force_n, 100.0 * r.deviations()[m][k]))
                 .collect();
-            data.push((
-                format!("{method}, {}", s.pairing),
-                pts,
-                si * 3 + m,
-                styles[m],
-            ));
+            let (color, style) = curve_style(m, si);
+            data.push((format!("{method}, {}", s.pairing), pts, color, style));
         }
     }
     let series: Vec<Series> = data
         .iter()
-        .map(|(label, pts, c, style)| Series {
+        .map(|(label, pts, color, style)| Series {
             label,
             points: pts,
-            color: PALETTE[c % PALETTE.len()],
+            color: *color,
             style: *style,
         })
         .collect();
@@ -205,10 +219,32 @@ fn deviation_plot(path: &Path, title: &str, studies: &[&PairingStudy], k: usize)
             y_label: "deviation from the half-space solver [%]",
             series: &series,
             x_log: false,
+            y_from_zero: false,
         },
         (1000, 640),
     )
     .with_context(|| format!("drawing {}", path.display()))
+}
+
+/// The colours of the methods on every deviation plot, those of their outlines on the
+/// contact-shape maps: PimP published red, PimP corrected orange, Hertz magenta.
+const METHOD_COLORS: [(u8, u8, u8); 3] = [PUBLISHED_COLOR, CORRECTED_COLOR, HERTZ_COLOR];
+const PUBLISHED_COLOR: (u8, u8, u8) = (220, 30, 30);
+const CORRECTED_COLOR: (u8, u8, u8) = (255, 150, 0);
+
+/// Colour and style of the curve of method `method` (0 PimP published, 1 PimP corrected,
+/// 2 Hertz) for the `pairing`-th pairing of a plot: the colour says the method on every
+/// plot, the style the pairing (solid the first, dashed the second); Hertz is drawn as dots
+/// at the loads, which stay visible where it lies on PimP corrected (an elliptic zone).
+fn curve_style(method: usize, pairing: usize) -> ((u8, u8, u8), LineStyle) {
+    let style = if method == 2 {
+        LineStyle::Markers
+    } else if pairing.is_multiple_of(2) {
+        LineStyle::Solid
+    } else {
+        LineStyle::Dashed
+    };
+    (METHOD_COLORS[method], style)
 }
 
 /// `x` in percent with its sign and one decimal; a value that rounds to zero is `+0.0`, not
@@ -374,4 +410,23 @@ fn print_summary(out: &mut impl Write, studies: &[PairingStudy]) -> Result<()> {
         )?;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::curve_style;
+
+    /// Issue 30, item 18: a method has one colour on every plot and for every pairing; the
+    /// pairings of a plot differ by style.
+    #[test]
+    fn each_method_has_one_colour_on_every_plot() {
+        for method in 0..3 {
+            let colours: Vec<_> = (0..4).map(|p| curve_style(method, p).0).collect();
+            assert!(colours.iter().all(|c| *c == colours[0]), "{colours:?}");
+        }
+        assert_ne!(curve_style(0, 0).0, curve_style(1, 0).0);
+        assert_ne!(curve_style(1, 0).0, curve_style(2, 0).0);
+        assert_ne!(curve_style(0, 0).1, curve_style(0, 1).1);
+        assert_ne!(curve_style(1, 0).1, curve_style(2, 0).1);
+    }
 }

@@ -431,7 +431,8 @@ impl RibFrictionModel {
     /// # Errors
     /// Those of [`RollerRib::new`], [`RollerSet::mass`], [`FrictionLaw::check`], of the
     /// lubricant at its temperature, field `roughness` (negative, non-finite or both zero),
-    /// and of the solvers' set-up.
+    /// field `count` (more rollers than fit side by side around the ring,
+    /// `Z > π / asin(r_L / R)`), and of the solvers' set-up.
     pub fn new(
         spec: RollerRibSpec,
         rollers: RollerSet,
@@ -445,6 +446,26 @@ impl RibFrictionModel {
         }
         let pair = RollerRib::new(spec)?;
         let mass = rollers.mass(&pair)?;
+        // The rollers must fit side by side around the ring: neighbours' centres a chord
+        // 2 R sin(pi/Z) >= 2 r_L apart. (A billion rollers, found by probing, carried
+        // nothing each, and the error blamed the speed.)
+        let r_l = pair.spec.bearing.roller_large_end_radius;
+        let fit = if r_l < mass.radius {
+            (std::f64::consts::PI / (r_l / mass.radius).asin()).floor()
+        } else {
+            0.0
+        };
+        if rollers.count as f64 > fit {
+            return Err(Error::invalid(
+                "count",
+                rollers.count,
+                format!(
+                    "at most {fit} rollers: no more of large-end radius {r_l} mm fit side by \
+                     side around the ring at {:.4} mm from its axis",
+                    mass.radius
+                ),
+            ));
+        }
         let gap = SurfacePairGap::new(pair.face.clone(), pair.rib.clone(), pair.contact)?;
         let frame = ContactFrame::of_gap(&gap);
         let material = ElasticMaterial::STEEL;
@@ -520,16 +541,18 @@ impl RibFrictionModel {
     }
 
     /// The pressure field of the rib contact at the rib load `rib_load` \[N\] by `model`.
-    /// Hertz is sampled on a 64 × 64 grid over the ellipse's bounding box (5 % margin).
+    /// Hertz is sampled on a 64 × 64 grid over the ellipse (5 % margin) in its principal
+    /// frame, where PimP and the half-space solver lay their grids (x along the major axis).
     ///
     /// # Errors
     /// Those of the solvers.
     pub fn solve(&self, model: PressureModel, rib_load: f64) -> Result<NormalSolution<()>> {
         Ok(match model {
             PressureModel::Hertz => {
+                // On the gap's principal frame, as PimP and the half-space solver: the
+                // maps and the friction integral see the three models' grids alike.
                 let h = self.hertz.solve_force(rib_load)?;
-                h.on_grid(h.covering_grid(64, 64, 0.05)?)?
-                    .map_detail(|_| ())
+                h.on_principal_grid(64, 64, 0.05)?.map_detail(|_| ())
             }
             PressureModel::Pimp => self
                 .pimp

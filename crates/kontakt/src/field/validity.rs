@@ -73,6 +73,51 @@ pub struct CurvatureRatio {
     pub radius: Millimetre,
 }
 
+impl CurvatureRatio {
+    /// The warning a result should carry when the ratio exceeds [`WARN_SIZE_RATIO`]: one
+    /// line naming the extent, the body's radius, the ratio and the surface's inclination.
+    pub fn warning(&self) -> Option<String> {
+        (self.ratio > WARN_SIZE_RATIO).then(|| {
+            format!(
+                "contact size: the contact zone reaches {} mm from the contact point, {:.2} of \
+                 body {}'s radius of curvature {} mm in that direction; the half-space model \
+                 assumes a zone small against the bodies (above {WARN_SIZE_RATIO} the surface is \
+                 inclined by more than 24 degrees at the zone's edge, here {:.0})",
+                significant(self.extent),
+                self.ratio,
+                self.body,
+                significant(self.radius),
+                self.ratio.min(1.0).asin().to_degrees()
+            )
+        })
+    }
+
+    /// `Ok(self)` below [`MAX_SIZE_RATIO`]; otherwise [`Error::Geometry`] with field
+    /// `body1.radii` or `body2.radii` (a case layer renames it to its own key).
+    ///
+    /// # Errors
+    /// As above.
+    pub fn refuse_too_large(self) -> Result<Self> {
+        if self.ratio < MAX_SIZE_RATIO {
+            return Ok(self);
+        }
+        Err(Error::Geometry {
+            field: format!("body{}.radii", self.body).into(),
+            reason: format!(
+                "the contact zone would reach {} mm from the contact point, {} times body {}'s \
+                 radius of curvature {} mm in that direction: the half-space model needs a zone \
+                 small against the bodies (ratio < {MAX_SIZE_RATIO}, < {WARN_SIZE_RATIO} for \
+                 the surface to stay within 24 degrees of the contact plane); reduce the load, \
+                 or check the radii (a near-conformal groove?)",
+                significant(self.extent),
+                significant(self.ratio),
+                self.body,
+                significant(self.radius)
+            ),
+        })
+    }
+}
+
 /// The largest ratio of the zone's reach towards a face edge to the edge's distance.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct EdgeRatio {
@@ -100,19 +145,7 @@ impl ZoneCheck {
     /// [`WARN_SIZE_RATIO`] and an edge ratio above [`WARN_EDGE_RATIO`].
     pub fn warnings(&self) -> Vec<String> {
         let mut w = Vec::new();
-        if let Some(c) = self.curvature.filter(|c| c.ratio > WARN_SIZE_RATIO) {
-            w.push(format!(
-                "contact size: the contact zone reaches {} mm from the contact point, {:.2} of \
-                 body {}'s radius of curvature {} mm in that direction; the half-space model \
-                 assumes a zone small against the bodies (above {WARN_SIZE_RATIO} the surface is \
-                 inclined by more than 24 degrees at the zone's edge, here {:.0})",
-                significant(c.extent),
-                c.ratio,
-                c.body,
-                significant(c.radius),
-                c.ratio.min(1.0).asin().to_degrees()
-            ));
-        }
+        w.extend(self.curvature.and_then(|c| c.warning()));
         if let Some(e) = self.edge.filter(|e| e.ratio > WARN_EDGE_RATIO) {
             w.push(format!(
                 "face edge: the contact zone reaches {} mm towards {} of body {}, which is {} \
@@ -210,22 +243,7 @@ fn check(
     let [[x0, x1], [y0, y1]] = extents;
     let half = [x0.abs().max(x1.abs()), y0.abs().max(y1.abs())];
     let curvature = curvature_ratio(&bodies, half, rotation);
-    if !(curvature.ratio < MAX_SIZE_RATIO) {
-        return Err(Error::Geometry {
-            field: format!("body{}.radii", curvature.body).into(),
-            reason: format!(
-                "the contact zone would reach {} mm from the contact point, {} times body {}'s \
-                 radius of curvature {} mm in that direction: the half-space model needs a zone \
-                 small against the bodies (ratio < {MAX_SIZE_RATIO}, < {WARN_SIZE_RATIO} for \
-                 the surface to stay within 24 degrees of the contact plane); reduce the load, \
-                 or check the radii (a near-conformal groove?)",
-                significant(curvature.extent),
-                significant(curvature.ratio),
-                curvature.body,
-                significant(curvature.radius)
-            ),
-        });
-    }
+    let curvature = curvature.refuse_too_large()?;
     let box_ = extents;
     let edge = bodies
         .iter()

@@ -45,4 +45,7 @@ pub use operator::{Boundary, ElasticOperator, HalfSpacePlan, OperatorScratch};
 pub(crate) use operator::{PaddedFfts, Parity};
 pub use planner::HalfSpacePlanner;
 pub(crate) use solver::smallest;
-pub use solver::{Control, HalfSpaceSolver, Preconditioner, SolveReport, SolverOptions, Start};
+pub use solver::{
+    Control, HalfSpaceSolver, Preconditioner, SCALE_RANGE, SolveReport, SolverOptions, Start,
+    check_scales,
+};

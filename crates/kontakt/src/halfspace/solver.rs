@@ -148,6 +148,62 @@ impl SolveReport {
     }
 }
 
+/// The range \[1e-100, 1e100\] within which [`check_scales`] keeps the solver's scales:
+/// far enough from the ends of f64 (1e±308) that the sums of a grid of up to 1e8 cells,
+/// the products of pressures and influence coefficients and their squares in the
+/// residual stay finite. Every engineering input lies many decades inside it.
+pub const SCALE_RANGE: [f64; 2] = [1e-100, 1e100];
+
+/// Refuse, before an iteration, inputs whose derived scales would overflow or underflow
+/// the iteration (found by a hostile probe: a modulus of 1e-300 MPa, a force of 1e300 N or
+/// a map spacing of 1e-300 mm ended as "did not converge (residual NaN/inf)" after 200
+/// iterations): the contact modulus `e_star` \[MPa\], the cell sizes \[mm\], and the
+/// load's pressure scale (force over the grid's area, or `E* d / L` for an approach `d`
+/// on a grid of half-width `L`) \[MPa\] and displacement scale (pressure scale times
+/// `L / E*`) \[mm\] must lie within [`SCALE_RANGE`].
+///
+/// # Errors
+/// [`Error::InvalidInput`] naming `e_star`, `spacing[0]`, `spacing[1]`, `force` or
+/// `approach` with the value and the range.
+pub fn check_scales(grid: &Grid2, e_star: f64, control: Control) -> Result<()> {
+    let [lo, hi] = SCALE_RANGE;
+    let ok = |x: f64| x.is_finite() && x.abs() >= lo && x.abs() <= hi;
+    if !ok(e_star) {
+        return Err(Error::invalid(
+            "e_star",
+            e_star,
+            format!("a contact modulus E* within {lo:e}..={hi:e} MPa"),
+        ));
+    }
+    for (field, d) in [("spacing[0]", grid.dx()), ("spacing[1]", grid.dy())] {
+        if !ok(d) {
+            return Err(Error::invalid(
+                field,
+                d,
+                format!("a cell size within {lo:e}..={hi:e} mm"),
+            ));
+        }
+    }
+    let half = 0.5 * (grid.nx() as f64 * grid.dx()).max(grid.ny() as f64 * grid.dy());
+    let area = grid.nx() as f64 * grid.dx() * grid.ny() as f64 * grid.dy();
+    let (field, value, unit, pressure) = match control {
+        Control::Force(f) => ("force", f, "N", f / area),
+        Control::Approach(d) | Control::LineLoad(d) => ("approach", d, "mm", e_star * d / half),
+    };
+    let displacement = pressure * half / e_star;
+    if !(ok(pressure) && ok(displacement)) {
+        return Err(Error::invalid(
+            field,
+            format!("{value:e} {unit}"),
+            format!(
+                "a load whose pressure scale ({pressure:e} MPa on this grid, E* = {e_star:e} \
+                 MPa) and displacement scale ({displacement:e} mm) lie within {lo:e}..={hi:e}"
+            ),
+        ));
+    }
+    Ok(())
+}
+
 /// A half-space contact solver for one grid: a (possibly shared) FFT plan, the
 /// operator's work arrays and the solver's own state (pressure, displacement, the warm
 /// start's estimate).
@@ -509,6 +565,7 @@ impl HalfSpaceSolver {
                 reason: "the gap is +inf everywhere: the bodies cannot meet on this grid".into(),
             });
         }
+        check_scales(&self.grid, self.e_star, control.point()?)?;
         if let Control::Approach(d) = control.point()?
             && d <= h_min
         {

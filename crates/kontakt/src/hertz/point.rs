@@ -472,6 +472,32 @@ impl HertzPointSolution {
         })
     }
 
+    /// The Hertz pressure on a grid of `nx × ny` cells in the ellipse's own principal frame
+    /// (`x` along the major semi-axis `a`), covering it with a margin of `margin` (e.g. 0.05
+    /// for 5 %) on each side; the solution's `orientation` is the ellipse's, so its grid
+    /// lies as PimP's and the half-space solver's grids lie for the same gap (their `x`
+    /// along the direction of least relative curvature), and a map or a friction integral
+    /// treats all three alike. [`on_grid`](Self::on_grid) instead samples the turned
+    /// ellipse on a grid of the contact frame (orientation 0).
+    ///
+    /// # Errors
+    /// Those of [`Grid2::centered`] and [`on_grid`](Self::on_grid).
+    pub fn on_principal_grid(
+        &self,
+        nx: usize,
+        ny: usize,
+        margin: f64,
+    ) -> Result<NormalSolution<HertzPointSolution>> {
+        let unturned = HertzPointSolution {
+            orientation: 0.0,
+            ..*self
+        };
+        let mut solution = unturned.on_grid(unturned.covering_grid(nx, ny, margin)?)?;
+        solution.orientation = self.orientation;
+        solution.detail = *self;
+        Ok(solution)
+    }
+
     /// A grid of `nx × ny` cells in the contact frame that covers the ellipse (turned by
     /// its orientation) with a margin of `margin` (e.g. 0.05 for 5 %) on each side: the
     /// half-extents of its bounding box, `√(a² cos²θ + b² sin²θ)` and

@@ -79,8 +79,11 @@ impl SizeCheck {
     }
 
     /// `Ok(self)` below [`MAX_SIZE_RATIO`]; otherwise [`Error::Geometry`] with field
-    /// `body1.radii` or `body2.radii`.
-    fn refuse_too_large(self) -> Result<Self> {
+    /// `body1.radii` or `body2.radii` (a case layer renames it to its own key).
+    ///
+    /// # Errors
+    /// As above.
+    pub fn refuse_too_large(self) -> Result<Self> {
         if self.ratio < MAX_SIZE_RATIO {
             return Ok(self);
         }
@@ -152,6 +155,12 @@ fn normal_curvature(radii: [Millimetre; 2], theta: Radian) -> f64 {
 /// # Ok::<(), kontakt::Error>(())
 /// ```
 pub fn point_size_check(geometry: &PointGeometry, sol: &HertzPointSolution) -> Result<SizeCheck> {
+    point_size(geometry, sol).refuse_too_large()
+}
+
+/// The ratio of [`point_size_check`] without the refusal (for callers that apply
+/// [`SizeCheck::refuse_too_large`] and [`SizeCheck::warning`] later, naming their own key).
+pub fn point_size(geometry: &PointGeometry, sol: &HertzPointSolution) -> SizeCheck {
     let [a, b] = sol.semi_axes;
     let radii = [geometry.body1_radii(), geometry.body2_radii()];
     let offsets = [0.0, geometry.angle()];
@@ -191,7 +200,7 @@ pub fn point_size_check(geometry: &PointGeometry, sol: &HertzPointSolution) -> R
             }
         }
     }
-    best.refuse_too_large()
+    best
 }
 
 /// The contact-half-width-to-radius ratio of a Hertz line contact between cylinders of
@@ -201,6 +210,11 @@ pub fn point_size_check(geometry: &PointGeometry, sol: &HertzPointSolution) -> R
 /// [`Error::Geometry`] (field `body1.radii` or `body2.radii`) when the ratio reaches
 /// [`MAX_SIZE_RATIO`].
 pub fn line_size_check(radii: [Millimetre; 2], sol: &LineSolution) -> Result<SizeCheck> {
+    line_size(radii, sol).refuse_too_large()
+}
+
+/// The ratio of [`line_size_check`] without the refusal.
+pub fn line_size(radii: [Millimetre; 2], sol: &LineSolution) -> SizeCheck {
     let b = sol.half_width;
     let (body, r) = if radii[0].abs() <= radii[1].abs() {
         (1, radii[0])
@@ -214,7 +228,6 @@ pub fn line_size_check(radii: [Millimetre; 2], sol: &LineSolution) -> Result<Siz
         radius: r,
         direction: 0.0,
     }
-    .refuse_too_large()
 }
 
 #[cfg(test)]

@@ -535,7 +535,8 @@ impl PimpTracker {
                         field: "surfaces".into(),
                         reason: format!(
                             "a ray of the gap stencil misses a surface at ({:.4e}, {:.4e}) mm \
-                             in the contact plane: use GapSampling::Exact",
+                             in the contact plane: the contact reaches beyond the surfaces \
+                             (GapSampling::Exact samples every cell instead)",
                             xs[bad % NODES_X],
                             ys[bad / NODES_X]
                         ),

@@ -43,12 +43,11 @@
 //! - Vollebregt, CONTACT user guide (the Panagiotopoulos process, example
 //!   `spence35`).
 
-use super::cross::CouplingOperator;
-use super::operator::difference_parameter;
+use super::outer::{CoupledParts, OuterLimits, OuterLoop, combined_constants, run_outer};
 use super::shift::{CellState, ShiftLoad, ShiftOptions, ShiftSolver};
 use crate::error::{Error, Result};
 use crate::geometry::Grid2;
-use crate::halfspace::{Control, HalfSpaceSolver, SolveReport, SolverOptions, Start};
+use crate::halfspace::{Control, SolveReport, SolverOptions};
 use crate::material::ElasticMaterial;
 use crate::solve::{SolveStatus, Termination};
 use crate::tangential::KalkerMaterial;
@@ -180,61 +179,23 @@ pub struct CoupledShiftSolver {
     grid: Grid2,
     options: CoupledOptions,
     k: f64,
-    normal: HalfSpaceSolver,
     tang: ShiftSolver,
-    cross: Option<CouplingOperator>,
+    /// The normal solver, the coupling operator and the outer loop's work arrays.
+    outer: OuterLoop,
     /// Tangential displacement difference at the end of the previous step \[mm\].
     prev_u: [Vec<f64>; 2],
     prev_shift: [f64; 2],
-    /// Work arrays: modified gap, `A_n τ`, `A_t p`, the last pass's fields.
-    gap: Vec<f64>,
-    un: Vec<f64>,
-    up: [Vec<f64>; 2],
-    old_p: Vec<f64>,
-    old_tau: [Vec<f64>; 2],
+    /// The per-cell base slip `A_t p − u'` \[mm\] of the pass.
     base: [Vec<f64>; 2],
     /// The last tangential solve's relative residual.
     inner_residual: f64,
 }
 
-/// Kalker's combined constants of two bodies and the difference parameter `K` in use
-/// (0 when `coupling` is off): the start of the coupled solvers' `new`.
-pub(super) fn combined_constants(
-    body1: &ElasticMaterial,
-    body2: &ElasticMaterial,
-    coupling: bool,
-) -> Result<(KalkerMaterial, f64)> {
-    let material = KalkerMaterial::new(body1, body2)?;
-    let k = if coupling {
-        difference_parameter(body1, body2)?
-    } else {
-        0.0
-    };
-    Ok((material, k))
-}
-
-/// The parts a coupled problem adds to its tangential solver, checked: `K` in use (0
-/// when `coupling` is off), the normal solver on `grid` with Love's compliance of the
-/// two bodies (`1/E* = (1 − ν)/G` with Kalker's constants), and the coupling operator
-/// when `K ≠ 0`.
-pub(super) fn normal_and_coupling(
-    grid: &Grid2,
-    material: KalkerMaterial,
-    k: f64,
-    coupling: bool,
-    normal: SolverOptions,
-) -> Result<(f64, HalfSpaceSolver, Option<CouplingOperator>)> {
-    super::operator::check_material(&material)?;
-    super::cross::check_difference(k)?;
-    let k = if coupling { k } else { 0.0 };
-    let e_star = material.shear_modulus / (1.0 - material.poisson_ratio);
-    let solver = HalfSpaceSolver::new(*grid, e_star, normal)?;
-    let cross = if k != 0.0 {
-        Some(CouplingOperator::new(grid, material, k)?)
-    } else {
-        None
-    };
-    Ok((k, solver, cross))
+impl CoupledParts for CoupledShiftSolver {
+    fn parts(&mut self) -> (&mut OuterLoop, [&[f64]; 2]) {
+        let [tx, ty] = &self.tang.tau;
+        (&mut self.outer, [tx, ty])
+    }
 }
 
 impl CoupledShiftSolver {
@@ -266,8 +227,7 @@ impl CoupledShiftSolver {
         options: CoupledOptions,
     ) -> Result<Self> {
         options.validate()?;
-        let (k, normal, cross) =
-            normal_and_coupling(grid, material, k, options.coupling, options.normal)?;
+        let (k, outer) = OuterLoop::new(grid, material, k, options.coupling, options.normal)?;
         let tang = ShiftSolver::new(grid, material, options.normal.threads)?;
         let n = grid.len();
         let z2 = || [vec![0.0; n], vec![0.0; n]];
@@ -275,16 +235,10 @@ impl CoupledShiftSolver {
             grid: *grid,
             options,
             k,
-            normal,
             tang,
-            cross,
+            outer,
             prev_u: z2(),
             prev_shift: [0.0; 2],
-            gap: vec![0.0; n],
-            un: vec![0.0; n],
-            up: z2(),
-            old_p: vec![0.0; n],
-            old_tau: z2(),
             base: z2(),
             inner_residual: 0.0,
         })
@@ -341,68 +295,34 @@ impl CoupledShiftSolver {
             }
             _ => {}
         }
-        let n = self.grid.len();
-        if gap.len() != n {
-            return Err(Error::invalid(
-                "gap",
-                format!("{} values", gap.len()),
-                format!("{n} values ({} x {} grid)", self.grid.nx(), self.grid.ny()),
-            ));
-        }
+        OuterLoop::check_gap(&self.grid, gap)?;
         let opts = self.options;
+        let limits = OuterLimits {
+            tolerance: opts.tolerance,
+            patience: opts.patience,
+            max_outer: opts.max_outer,
+        };
         let area = self.grid.cell_area();
         let mut shift = self.prev_shift;
         let mut tang_iters = 0;
-        let mut best = f64::INFINITY;
-        let mut since_best = 0;
-        let mut change;
-        let mut passes = 0;
-        let termination;
-        let mut report;
-        loop {
-            passes += 1;
-            // (1) The normal problem with the tractions' normal displacement.
-            let normal_gap: &[f64] = match &mut self.cross {
-                Some(cross) => {
-                    let [tx, ty] = &self.tang.tau;
-                    cross.normal(tx, ty, &mut self.un)?;
-                    for ((g, h), u) in self.gap.iter_mut().zip(gap).zip(&self.un) {
-                        *g = h + u;
-                    }
-                    &self.gap
-                }
-                None => gap,
-            };
-            report = self.normal.solve(normal_gap, control, Start::Warm)?;
-            if report.status.termination != Termination::Converged {
-                termination = report.status.termination;
-                change = report.status.residual;
-                break;
-            }
-            let p = self.normal.pressure();
-            let normal_force = p.iter().sum::<f64>() * area;
+        let (report, status) = run_outer(self, gap, control, limits, |s| {
             // (2) The tangential problem for this pressure.
-            if let Some(cross) = &mut self.cross {
-                let [ux, uy] = &mut self.up;
-                cross.tangential(p, ux, uy)?;
-            }
-            for (b, pv) in self.tang.bound.iter_mut().zip(p) {
+            s.outer.pressure_displacement()?;
+            let p = s.outer.normal.pressure();
+            let normal_force = p.iter().sum::<f64>() * area;
+            for (b, pv) in s.tang.bound.iter_mut().zip(p) {
                 *b = mu * pv;
             }
             for k in 0..2 {
-                for ((b, up), u0) in self.base[k]
-                    .iter_mut()
-                    .zip(&self.up[k])
-                    .zip(&self.prev_u[k])
-                {
+                for ((b, up), u0) in s.base[k].iter_mut().zip(&s.outer.up[k]).zip(&s.prev_u[k]) {
                     *b = up - u0;
                 }
             }
             let inner = match load {
                 ShiftLoad::Shift(d) => {
                     shift = d;
-                    let dd = [d[0] - self.prev_shift[0], d[1] - self.prev_shift[1]];
-                    self.tangential(dd)
+                    let dd = [d[0] - s.prev_shift[0], d[1] - s.prev_shift[1]];
+                    s.tangential(dd)
                 }
                 ShiftLoad::Force(f) => {
                     let limit = mu * normal_force;
@@ -417,61 +337,14 @@ impl CoupledShiftSolver {
                             ),
                         ));
                     }
-                    let (dd, inner) = self.force_control(f, limit);
-                    shift = [self.prev_shift[0] + dd[0], self.prev_shift[1] + dd[1]];
+                    let (dd, inner) = s.force_control(f, limit);
+                    shift = [s.prev_shift[0] + dd[0], s.prev_shift[1] + dd[1]];
                     inner
                 }
             };
             tang_iters += inner.1;
-            if inner.0 != Termination::Converged {
-                termination = inner.0;
-                change = self.inner_residual;
-                break;
-            }
-            if self.cross.is_none() {
-                termination = Termination::Converged;
-                change = 0.0;
-                break;
-            }
-            // (3) The change over the pass.
-            let p = self.normal.pressure();
-            let (mut num, mut den) = (0.0, 0.0);
-            let [tx, ty] = &self.tang.tau;
-            let [ox, oy] = &self.old_tau;
-            for (i, (pv, po)) in p.iter().zip(&self.old_p).enumerate() {
-                let (dx, dy, dp) = (tx[i] - ox[i], ty[i] - oy[i], pv - po);
-                num += dp * dp + dx * dx + dy * dy;
-                den += pv * pv + tx[i] * tx[i] + ty[i] * ty[i];
-            }
-            change = (num / den).sqrt();
-            self.old_p.copy_from_slice(p);
-            for k in 0..2 {
-                self.old_tau[k].copy_from_slice(&self.tang.tau[k]);
-            }
-            if !change.is_finite() {
-                termination = Termination::Diverged;
-                break;
-            }
-            if passes > 1 && change <= opts.tolerance {
-                termination = Termination::Converged;
-                break;
-            }
-            if change < best {
-                best = change;
-                since_best = 0;
-            } else {
-                since_best += 1;
-                if since_best >= opts.patience {
-                    termination = Termination::Stagnated;
-                    break;
-                }
-            }
-            if passes >= opts.max_outer {
-                termination = Termination::MaxIterations;
-                break;
-            }
-        }
-        let status = SolveStatus::new(termination, passes, change);
+            Ok((inner.0 != Termination::Converged).then_some((inner.0, s.inner_residual)))
+        })?;
         Ok(self.finish(shift, mu, tang_iters, report, status))
     }
 
@@ -599,23 +472,16 @@ impl CoupledShiftSolver {
     ) -> CoupledSolution {
         let n = self.grid.len();
         let area = self.grid.cell_area();
-        let p = self.normal.pressure().to_vec();
+        let p = self.outer.normal.pressure().to_vec();
         // u = A τ + A_t p.
         let mut u = [vec![0.0; n], vec![0.0; n]];
         self.tang
             .displacements(&mut u)
             .expect("invariant: lengths match the grid");
-        let mut coupling_gap = vec![0.0; n];
-        if let Some(cross) = &mut self.cross {
-            let [ux, uy] = &mut self.up;
-            cross
-                .tangential(&p, ux, uy)
-                .expect("invariant: lengths match the grid");
-            let [tx, ty] = &self.tang.tau;
-            cross
-                .normal(tx, ty, &mut coupling_gap)
-                .expect("invariant: lengths match the grid");
-            for (uk, upk) in u.iter_mut().zip(&self.up) {
+        let [tx, ty] = &self.tang.tau;
+        let coupling_gap = self.outer.final_fields([tx, ty]);
+        if self.outer.cross.is_some() {
+            for (uk, upk) in u.iter_mut().zip(&self.outer.up) {
                 for (a, b) in uk.iter_mut().zip(upk) {
                     *a += b;
                 }

@@ -65,13 +65,12 @@
 //! - Vollebregt, CONTACT user guide (the Panagiotopoulos process, the force-controlled
 //!   creepage "F = 1", example `bentall`).
 
-use super::coupled::{combined_constants, normal_and_coupling};
-use super::cross::CouplingOperator;
+use super::outer::{CoupledParts, OuterLimits, OuterLoop, combined_constants, run_outer};
 use super::shift::CellState;
 use super::steady::{SteadyOptions, SteadySolution, SteadySolver};
 use crate::error::{Error, Result};
 use crate::geometry::Grid2;
-use crate::halfspace::{Control, HalfSpaceSolver, SolveReport, SolverOptions, Start};
+use crate::halfspace::{Control, SolveReport, SolverOptions};
 use crate::material::ElasticMaterial;
 use crate::solve::{SolveStatus, Termination};
 use crate::tangential::{Creepage, KalkerMaterial};
@@ -270,18 +269,12 @@ pub struct CoupledSteadySolver {
     options: CoupledSteadyOptions,
     material: KalkerMaterial,
     k: f64,
-    normal: HalfSpaceSolver,
     steady: SteadySolver,
-    cross: Option<CouplingOperator>,
-    /// Work arrays: modified gap, `A_n τ`, `A_t p`, the extra slip, the last tractions
-    /// and the last pass's fields.
-    gap: Vec<f64>,
-    un: Vec<f64>,
-    up: [Vec<f64>; 2],
+    /// The normal solver, the coupling operator and the outer loop's work arrays.
+    outer: OuterLoop,
+    /// Work arrays: the extra slip and the last tractions.
     extra: [Vec<f64>; 2],
     tau: [Vec<f64>; 2],
-    old_p: Vec<f64>,
-    old_tau: [Vec<f64>; 2],
     /// The last longitudinal creepage and slope `dF_x/dξ` \[N\] of the force control.
     last_xi: Option<f64>,
     last_slope: Option<f64>,
@@ -297,6 +290,13 @@ struct Search {
     termination: Termination,
     /// `|F_x − F_x*|/(μ F_N)`.
     residual: f64,
+}
+
+impl CoupledParts for CoupledSteadySolver {
+    fn parts(&mut self) -> (&mut OuterLoop, [&[f64]; 2]) {
+        let [tx, ty] = &self.tau;
+        (&mut self.outer, [tx, ty])
+    }
 }
 
 impl CoupledSteadySolver {
@@ -330,8 +330,7 @@ impl CoupledSteadySolver {
         options: CoupledSteadyOptions,
     ) -> Result<Self> {
         options.validate()?;
-        let (k, normal, cross) =
-            normal_and_coupling(grid, material, k, options.coupling, options.normal)?;
+        let (k, outer) = OuterLoop::new(grid, material, k, options.coupling, options.normal)?;
         let steady = SteadySolver::new(grid, material, options.normal.threads)?;
         let n = grid.len();
         let z2 = || [vec![0.0; n], vec![0.0; n]];
@@ -340,16 +339,10 @@ impl CoupledSteadySolver {
             options,
             material,
             k,
-            normal,
             steady,
-            cross,
-            gap: vec![0.0; n],
-            un: vec![0.0; n],
-            up: z2(),
+            outer,
             extra: z2(),
             tau: z2(),
-            old_p: vec![0.0; n],
-            old_tau: z2(),
             last_xi: None,
             last_slope: None,
         })
@@ -364,10 +357,10 @@ impl CoupledSteadySolver {
     /// force control, from `ξ = 0`.
     pub fn reset(&mut self) {
         self.steady.reset();
-        for v in self.tau.iter_mut().chain(self.old_tau.iter_mut()) {
+        for v in self.tau.iter_mut() {
             v.fill(0.0);
         }
-        self.old_p.fill(0.0);
+        self.outer.forget();
         self.last_xi = None;
         self.last_slope = None;
     }
@@ -420,54 +413,24 @@ impl CoupledSteadySolver {
                 }
             }
         }
-        let n = self.grid.len();
-        if gap.len() != n {
-            return Err(Error::invalid(
-                "gap",
-                format!("{} values", gap.len()),
-                format!("{n} values ({} x {} grid)", self.grid.nx(), self.grid.ny()),
-            ));
-        }
+        OuterLoop::check_gap(&self.grid, gap)?;
         let opts = self.options;
+        let limits = OuterLimits {
+            tolerance: opts.tolerance,
+            patience: opts.patience,
+            max_outer: opts.max_outer,
+        };
         let nx = self.grid.nx();
         let area = self.grid.cell_area();
         let g_mod = self.material.shear_modulus;
         let mut solves = 0;
         let mut fft = 0;
-        let mut best = f64::INFINITY;
-        let mut since_best = 0;
-        let mut change;
-        let mut passes = 0;
-        let termination;
-        let mut report;
         let mut last: Option<(SteadySolution, f64)> = None;
-        loop {
-            passes += 1;
-            // (1) The normal problem with the tractions' normal displacement.
-            let normal_gap: &[f64] = match &mut self.cross {
-                Some(cross) => {
-                    let [tx, ty] = &self.tau;
-                    cross.normal(tx, ty, &mut self.un)?;
-                    for ((g, h), u) in self.gap.iter_mut().zip(gap).zip(&self.un) {
-                        *g = h + u;
-                    }
-                    &self.gap
-                }
-                None => gap,
-            };
-            report = self.normal.solve(normal_gap, control, Start::Warm)?;
-            if report.status.termination != Termination::Converged {
-                termination = report.status.termination;
-                change = report.status.residual;
-                break;
-            }
-            let p = self.normal.pressure();
+        let (report, status) = run_outer(self, gap, control, limits, |s| {
             // (2) The pressure's tangential displacement as an extra rigid slip.
-            let extra = match &mut self.cross {
-                Some(cross) => {
-                    let [ux, uy] = &mut self.up;
-                    cross.tangential(p, ux, uy)?;
-                    for (e, u) in self.extra.iter_mut().zip(&self.up) {
+            let extra = match s.outer.pressure_displacement()? {
+                true => {
+                    for (e, u) in s.extra.iter_mut().zip(&s.outer.up) {
                         for (row_e, row_u) in e.chunks_exact_mut(nx).zip(u.chunks_exact(nx)) {
                             for i in 0..nx - 1 {
                                 row_e[i] = row_u[i] - row_u[i + 1];
@@ -475,20 +438,21 @@ impl CoupledSteadySolver {
                             row_e[nx - 1] = 0.0;
                         }
                     }
-                    Some([&self.extra[0][..], &self.extra[1][..]])
+                    Some([&s.extra[0][..], &s.extra[1][..]])
                 }
-                None => None,
+                false => None,
             };
+            let p = s.outer.normal.pressure();
             // (3) The steady tangential problem for this pressure.
             let (solution, xi, inner) = match load {
                 SteadyLoad::Creepage(c) => {
-                    let s = steady_solve(&mut self.steady, p, mu, c, extra, &opts.steady)?;
-                    self.last_xi = Some(c.longitudinal);
+                    let sol = steady_solve(&mut s.steady, p, mu, c, extra, &opts.steady)?;
+                    s.last_xi = Some(c.longitudinal);
                     solves += 1;
-                    fft += s.fft_iterations;
-                    let t = s.status.termination;
-                    let r = s.status.residual;
-                    (s, c.longitudinal, (t, r))
+                    fft += sol.fft_iterations;
+                    let t = sol.status.termination;
+                    let r = sol.status.residual;
+                    (sol, c.longitudinal, (t, r))
                 }
                 SteadyLoad::LongitudinalForce {
                     force,
@@ -499,23 +463,23 @@ impl CoupledSteadySolver {
                     let limit = mu * normal_force;
                     check_force_target(force, limit)?;
                     let p_max = p.iter().fold(0.0f64, |a, v| a.max(*v));
-                    let scale = (mu + 2.0 * self.k.abs()) * p_max / g_mod;
+                    let scale = (mu + 2.0 * s.k.abs()) * p_max / g_mod;
                     let search = find_creepage(
-                        &mut self.steady,
+                        &mut s.steady,
                         p,
                         mu,
                         extra,
                         [lateral, spin],
                         force,
                         limit,
-                        (self.last_xi.unwrap_or(0.0), self.last_slope, scale),
+                        (s.last_xi.unwrap_or(0.0), s.last_slope, scale),
                         &opts,
                     )?;
                     solves += search.solves;
                     fft += search.fft;
-                    self.last_xi = Some(search.xi);
+                    s.last_xi = Some(search.xi);
                     if search.slope.is_some() {
-                        self.last_slope = search.slope;
+                        s.last_slope = search.slope;
                     }
                     let inner = if search.termination == Termination::Converged {
                         let st = search.solution.status;
@@ -526,58 +490,11 @@ impl CoupledSteadySolver {
                     (search.solution, search.xi, inner)
                 }
             };
-            self.tau[0].copy_from_slice(&solution.traction_x);
-            self.tau[1].copy_from_slice(&solution.traction_y);
+            s.tau[0].copy_from_slice(&solution.traction_x);
+            s.tau[1].copy_from_slice(&solution.traction_y);
             last = Some((solution, xi));
-            if inner.0 != Termination::Converged {
-                termination = inner.0;
-                change = inner.1;
-                break;
-            }
-            if self.cross.is_none() {
-                termination = Termination::Converged;
-                change = 0.0;
-                break;
-            }
-            // (4) The change over the pass.
-            let p = self.normal.pressure();
-            let (mut num, mut den) = (0.0, 0.0);
-            let [tx, ty] = &self.tau;
-            let [ox, oy] = &self.old_tau;
-            for (i, (pv, po)) in p.iter().zip(&self.old_p).enumerate() {
-                let (dx, dy, dp) = (tx[i] - ox[i], ty[i] - oy[i], pv - po);
-                num += dp * dp + dx * dx + dy * dy;
-                den += pv * pv + tx[i] * tx[i] + ty[i] * ty[i];
-            }
-            change = (num / den).sqrt();
-            self.old_p.copy_from_slice(p);
-            for k in 0..2 {
-                self.old_tau[k].copy_from_slice(&self.tau[k]);
-            }
-            if !change.is_finite() {
-                termination = Termination::Diverged;
-                break;
-            }
-            if passes > 1 && change <= opts.tolerance {
-                termination = Termination::Converged;
-                break;
-            }
-            if change < best {
-                best = change;
-                since_best = 0;
-            } else {
-                since_best += 1;
-                if since_best >= opts.patience {
-                    termination = Termination::Stagnated;
-                    break;
-                }
-            }
-            if passes >= opts.max_outer {
-                termination = Termination::MaxIterations;
-                break;
-            }
-        }
-        let status = SolveStatus::new(termination, passes, change);
+            Ok((inner.0 != Termination::Converged).then_some(inner))
+        })?;
         Ok(self.finish(last, load, solves, fft, report, status))
     }
 
@@ -593,21 +510,14 @@ impl CoupledSteadySolver {
     ) -> CoupledSteadySolution {
         let n = self.grid.len();
         let area = self.grid.cell_area();
-        let p = self.normal.pressure().to_vec();
-        let mut coupling_gap = vec![0.0; n];
+        let p = self.outer.normal.pressure().to_vec();
         let mut pressure_displacement_x = vec![0.0; n];
         let mut pressure_displacement_y = vec![0.0; n];
-        if let Some(cross) = &mut self.cross {
-            let [tx, ty] = &self.tau;
-            cross
-                .normal(tx, ty, &mut coupling_gap)
-                .expect("invariant: lengths match the grid");
-            let [ux, uy] = &mut self.up;
-            cross
-                .tangential(&p, ux, uy)
-                .expect("invariant: lengths match the grid");
-            pressure_displacement_x.copy_from_slice(&self.up[0]);
-            pressure_displacement_y.copy_from_slice(&self.up[1]);
+        let [tx, ty] = &self.tau;
+        let coupling_gap = self.outer.final_fields([tx, ty]);
+        if self.outer.cross.is_some() {
+            pressure_displacement_x.copy_from_slice(&self.outer.up[0]);
+            pressure_displacement_y.copy_from_slice(&self.outer.up[1]);
         }
         let creepage_of = |xi: f64| match load {
             SteadyLoad::Creepage(c) => c,

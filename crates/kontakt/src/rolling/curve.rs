@@ -45,7 +45,11 @@
 //! vanishes. Grids with fewer than [`KalkerExactOptions::MIN_ELEMENTS`] cells across the
 //! contact in either direction are refused (they cannot resolve the slip area, which
 //! starts as a strip at the trailing edge); the default `[32, 32]` is a compromise of
-//! accuracy and speed.
+//! accuracy and speed for pure creepages (1-2 % in the knee). With spin the force converges
+//! more slowly (CONTACT's lateral-plus-spin case on `a/b = 2`: 5.9 % low at 32 cells, 3.0 %
+//! at 64, 1.5 % at 128, first order; docs/rolling.md §6.1), and
+//! [`KalkerExactOptions::coarse_for`] flags such grids below
+//! [`KalkerExactOptions::SPIN_ELEMENTS`] cells.
 //!
 //! # Dissimilar bodies (the coupling)
 //! With [`KalkerExactOptions::coupling`] and bodies of different materials (Kalker's
@@ -152,6 +156,21 @@ impl KalkerExactOptions {
     pub const MIN_ELEMENTS: usize = 8;
     /// Most cells across the contact in each direction.
     pub const MAX_ELEMENTS: usize = 1024;
+    /// Fewest cells across the contact for creepages with spin before the grid counts
+    /// as coarse ([`coarse_for`](Self::coarse_for)): the creep force converges at first
+    /// order in the cell size, and with spin its error is largest (CONTACT's
+    /// lateral-plus-spin case, `a/b = 2`: −5.9 %, −3.0 %, −1.5 % of the force at 32, 64,
+    /// 128 cells; without spin 1-2 % at 32 cells; docs/rolling.md §6.1).
+    pub const SPIN_ELEMENTS: usize = 64;
+
+    /// Whether the grid is coarse for the creepages `creepages`: some point has a spin
+    /// `φ ≠ 0` and fewer than [`SPIN_ELEMENTS`](Self::SPIN_ELEMENTS) cells lie across
+    /// the contact in either direction. The solution is then no less valid, but its
+    /// grid error can reach several per cent (docs/rolling.md §6.1).
+    pub fn coarse_for(&self, creepages: &[Creepage]) -> bool {
+        creepages.iter().any(|c| c.spin != 0.0)
+            && self.elements.iter().any(|n| *n < Self::SPIN_ELEMENTS)
+    }
 
     /// Check the options (the steady solver's own options are checked at each solve).
     ///

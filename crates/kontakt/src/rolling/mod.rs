@@ -46,6 +46,7 @@ mod curve;
 pub mod influence;
 mod newton;
 mod operator;
+mod outer;
 mod shift;
 mod steady;
 mod steady_fft;
