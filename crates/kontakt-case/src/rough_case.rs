@@ -136,6 +136,9 @@ pub struct RoughSolverSpec {
     pub tolerance: f64,
     /// Most iterations per load (default 3000).
     pub max_iterations: usize,
+    /// Memory budget \[GiB\] (default [`DEFAULT_MEMORY_GIB`]): a grid whose estimated
+    /// memory ([`memory_estimate`]) exceeds it is refused before anything is allocated.
+    pub max_memory_gib: f64,
 }
 
 impl Default for RoughSolverSpec {
@@ -143,8 +146,58 @@ impl Default for RoughSolverSpec {
         RoughSolverSpec {
             tolerance: 1e-6,
             max_iterations: 3000,
+            max_memory_gib: DEFAULT_MEMORY_GIB,
         }
     }
+}
+
+/// Default memory budget of a rough case \[GiB\]: 16, two thirds of a 24 GiB machine (the
+/// rest for the system and the plots). 8192 × 8192 cells take about 9 GiB; 16384 × 16384
+/// about 35 GiB, refused.
+pub const DEFAULT_MEMORY_GIB: f64 = 16.0;
+
+/// The bytes a rough case of `points` cells will hold while it solves: the contact
+/// ([`RoughContact::memory_estimate`]: solver, gap, patch search), the height map and the
+/// pressure copied into the outcome (8 bytes per cell each). About 137 bytes per cell.
+///
+/// # Errors
+/// [`Error::InvalidInput`] for a thread count outside its range.
+pub fn memory_estimate(points: [usize; 2], options: &kontakt::halfspace::SolverOptions) -> Result<u64> {
+    let n = points[0] as u64 * points[1] as u64;
+    Ok(RoughContact::memory_estimate(points, options)? + 16 * n)
+}
+
+/// Refuse a grid whose [`memory_estimate`] exceeds `solver.max_memory_gib`, naming `key`
+/// (the case key the grid comes from) with the estimate and the budget.
+fn check_memory(
+    key: &'static str,
+    points: [usize; 2],
+    budget_gib: f64,
+    options: &kontakt::halfspace::SolverOptions,
+) -> Result<()> {
+    let bytes = memory_estimate(points, options)?;
+    let gib = bytes as f64 / f64::from(1u32 << 30);
+    if gib > budget_gib {
+        let per_cell = bytes as f64 / (points[0] as f64 * points[1] as f64);
+        let side = ((budget_gib * f64::from(1u32 << 30) / per_cell).sqrt() as usize) & !1;
+        return Err(Error::invalid(
+            key,
+            format!("{points:?}"),
+            format!(
+                "a grid whose estimated memory fits solver.max_memory_gib = {budget_gib} GiB; \
+                 {} x {} cells need about {} ({per_cell:.0} bytes per cell), the budget \
+                 holds about {side} x {side}",
+                points[0],
+                points[1],
+                if gib >= 1.0 {
+                    format!("{gib:.1} GiB")
+                } else {
+                    format!("{:.1} MiB", gib * 1024.0)
+                }
+            ),
+        ));
+    }
+    Ok(())
 }
 
 /// One load of a [`RoughReport`].
@@ -264,6 +317,19 @@ pub fn run_rough_case(case: &RoughCase, base_dir: &Path) -> Result<RoughOutcome>
             ));
         }
     }
+    let budget = case.solver.max_memory_gib;
+    if !(budget.is_finite() && budget > 0.0) {
+        return Err(Error::invalid(
+            "solver.max_memory_gib",
+            budget,
+            "a finite memory budget > 0 GiB",
+        ));
+    }
+    let options = kontakt::halfspace::SolverOptions {
+        tolerance: case.solver.tolerance,
+        max_iterations: case.solver.max_iterations,
+        ..Default::default()
+    };
     let hardness = match case.load.hardness_mpa {
         Some(h) if !(h.is_finite() && h > 0.0) => {
             return Err(Error::invalid(
@@ -302,6 +368,9 @@ pub fn run_rough_case(case: &RoughCase, base_dir: &Path) -> Result<RoughOutcome>
                     ));
                 }
             };
+            // Counted before the surface is generated: nothing is allocated for a grid
+            // beyond the budget (16384² aborted the process on an allocation failure).
+            check_memory("surface.points", *points, budget, &options)?;
             let spec = SelfAffineSpec {
                 points: *points,
                 size: *size_mm,
@@ -399,6 +468,12 @@ pub fn run_rough_case(case: &RoughCase, base_dir: &Path) -> Result<RoughOutcome>
                 }
             };
             warnings.extend(crate::maps::skipped_note("surface.file", skipped));
+            check_memory(
+                "surface.file",
+                [map.grid().nx(), map.grid().ny()],
+                budget,
+                &options,
+            )?;
             let map = if scale == 1.0 {
                 map
             } else {
@@ -421,17 +496,13 @@ pub fn run_rough_case(case: &RoughCase, base_dir: &Path) -> Result<RoughOutcome>
             ("map", map, h, s)
         }
     };
-    let mut contact = RoughContact::new(
-        &map,
-        e_star,
-        rms_slope,
-        kontakt::halfspace::SolverOptions {
-            tolerance: case.solver.tolerance,
-            max_iterations: case.solver.max_iterations,
-            ..Default::default()
-        },
-    )
-    .map_err(|e| e.map_field(|f| format!("solver.{f}")))?;
+    let mut contact = RoughContact::new(&map, e_star, rms_slope, options).map_err(|e| {
+        e.map_field(|f| match (f, &case.surface) {
+            ("grid", SurfaceSpec::SelfAffine { .. }) => "surface.points".into(),
+            ("grid", SurfaceSpec::Map { .. }) => "surface.file".into(),
+            _ => format!("solver.{f}"),
+        })
+    })?;
     let mut rows = Vec::with_capacity(loads.len());
     let mut above = Vec::new();
     for (i, &p) in loads.iter().enumerate() {

@@ -402,3 +402,40 @@ fn map_files_are_capped() {
     }
     std::fs::remove_file(&big).unwrap();
 }
+
+/// Issue 30 item 7: the documented largest grid, 16384 x 16384, aborted the process on an
+/// allocation failure (SIGABRT); its memory is estimated before anything is allocated and
+/// refused in one line naming the key, the estimate and the budget (status 2, at once);
+/// `solver.max_memory_gib` sets the budget (a small one refuses the example's 256²).
+#[test]
+fn grids_beyond_the_memory_budget_are_refused() {
+    let dir = tempdir("memory");
+    let base = std::fs::read_to_string(example()).unwrap();
+    for (from, to, expect) in [
+        (
+            "points = [256, 256]",
+            "points = [16384, 16384]",
+            "invalid surface.points = [16384, 16384]: expected a grid whose estimated memory fits solver.max_memory_gib = 16 GiB; 16384 x 16384 cells need about 34.3 GiB (137 bytes per cell)",
+        ),
+        (
+            "seed = 1",
+            "seed = 1\n[solver]\nmax_memory_gib = 0.005",
+            "invalid surface.points = [256, 256]: expected a grid whose estimated memory fits solver.max_memory_gib = 0.005 GiB; 256 x 256 cells need about 9.4 MiB (150 bytes per cell)",
+        ),
+        (
+            "seed = 1",
+            "seed = 1\n[solver]\nmax_memory_gib = -1.0",
+            "invalid solver.max_memory_gib = -1",
+        ),
+    ] {
+        let p = dir.join("big.toml");
+        std::fs::write(&p, base.replace(from, to)).unwrap();
+        let started = std::time::Instant::now();
+        let out = kontakt().args(["rough", p.to_str().unwrap()]).output().unwrap();
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert_eq!(out.status.code(), Some(2), "{to}: {err}");
+        assert_eq!(err.trim().lines().count(), 1, "{err}");
+        assert!(err.contains(expect), "{to}: {err}");
+        assert!(started.elapsed().as_secs_f64() < 5.0, "not refused at once");
+    }
+}

@@ -331,6 +331,35 @@ impl HalfSpacePlan {
         self.kernel.iter().map(move |k| k * scale)
     }
 
+    /// The bytes a plan of `nx × ny` cells (`boundary`) and one [`OperatorScratch`] of it
+    /// will hold, on `threads` resolved threads, counted from the layout
+    /// [`HalfSpacePlan::layout_on`] makes before anything is allocated: the kernel spectrum
+    /// (`kx·my` f64), the row spectra and column results (`2·ny·kx` complex) and one
+    /// workspace per task (a real row of `mx`, a block of `BLOCK·max(my, kx)` complex and
+    /// an FFT scratch, bounded here by `4·max(mx, my)` complex). Returns `(plan, scratch)`.
+    pub(crate) fn estimate_bytes(
+        nx: usize,
+        ny: usize,
+        boundary: Boundary,
+        threads: usize,
+    ) -> (u64, u64) {
+        let (mx, my) = match boundary {
+            Boundary::Free => (2 * nx, 2 * ny),
+            Boundary::Periodic => (nx, ny),
+        };
+        let serial = threads <= 1 || nx * ny < PARALLEL_MIN_CELLS;
+        let (mx, my, ny) = (mx as u64, my as u64, ny as u64);
+        let kx = mx / 2 + 1;
+        let c = std::mem::size_of::<Complex<f64>>() as u64;
+        let tasks = if serial {
+            1
+        } else {
+            4 * threads as u64
+        };
+        let workspace = 8 * mx + c * (BLOCK as u64 * my.max(kx) + 4 * mx.max(my));
+        (8 * kx * my, 2 * c * ny * kx + tasks * workspace)
+    }
+
     /// The FFT plans, task split and an empty kernel for a `mx × my` transform of the
     /// grid's data on `threads`.
     fn layout_on(
@@ -583,14 +612,34 @@ impl HalfSpacePlan {
             layout: l,
             rows: vec![Complex::default(); l.spectra],
             cols: vec![Complex::default(); l.spectra],
-            work: (0..l.tasks)
-                .map(|_| Workspace {
-                    row: vec![0.0; l.row],
-                    block: vec![Complex::default(); l.block],
-                    scratch: vec![Complex::default(); l.fft_scratch],
-                })
-                .collect(),
+            work: self.workspaces(),
         }
+    }
+
+    /// [`HalfSpacePlan::scratch`] with its grid-sized arrays allocated fallibly.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] naming `grid` when the memory is refused.
+    pub(crate) fn try_scratch(&self) -> Result<OperatorScratch> {
+        let l = self.layout;
+        Ok(OperatorScratch {
+            layout: l,
+            rows: crate::error::try_filled("grid", l.spectra, Complex::default())?,
+            cols: crate::error::try_filled("grid", l.spectra, Complex::default())?,
+            work: self.workspaces(),
+        })
+    }
+
+    /// One workspace per task (a row, a block and an FFT scratch each).
+    fn workspaces(&self) -> Vec<Workspace> {
+        let l = self.layout;
+        (0..l.tasks)
+            .map(|_| Workspace {
+                row: vec![0.0; l.row],
+                block: vec![Complex::default(); l.block],
+                scratch: vec![Complex::default(); l.fft_scratch],
+            })
+            .collect()
     }
 
     /// Whether `scratch` fits this plan.
