@@ -177,6 +177,16 @@ pub enum TractionModel {
 }
 
 impl TractionModel {
+    /// Every model, in the order the documentation lists them (the help of
+    /// `kontakt traction` is built from it).
+    pub const ALL: [TractionModel; 5] = [
+        TractionModel::Carter,
+        TractionModel::KalkerLinear,
+        TractionModel::Fastsim,
+        TractionModel::Asperity,
+        TractionModel::KalkerExact,
+    ];
+
     /// The model's name as in the case file and the report.
     pub fn as_str(self) -> &'static str {
         match self {

@@ -30,13 +30,50 @@ pub struct Cli {
     pub command: Command,
 }
 
+/// `kontakt solve`'s help line, naming every method of [`kontakt_case::Case::METHODS`] (the
+/// list the dispatch runs), so that the help cannot drift from the code.
+fn solve_about() -> String {
+    format!(
+        "Solve a case described in a TOML file, any method: {} (schema: docs/case-schema.md)",
+        kontakt_case::Case::METHODS.join(", ")
+    )
+}
+
+/// `kontakt traction`'s help line, naming every model of
+/// [`kontakt_case::traction_case::TractionModel::ALL`].
+fn traction_about() -> String {
+    let models: Vec<&str> = kontakt_case::traction_case::TractionModel::ALL
+        .iter()
+        .map(|m| m.as_str())
+        .collect();
+    format!(
+        "Traction curves F_T/(mu F_N) against the creepage (slide-to-roll ratio), models {} \
+         (TOML case, method = \"traction\"; docs/case-schema.md)",
+        models.join(", ")
+    )
+}
+
+/// `kontakt friction`'s help line, naming every pressure model of
+/// [`kontakt::bearing::rib_friction::PressureModel::ALL`].
+fn friction_about() -> String {
+    let models: Vec<&str> = kontakt::bearing::rib_friction::PressureModel::ALL
+        .iter()
+        .map(|m| m.as_str())
+        .collect();
+    format!(
+        "Friction torque and power of the roller-end/rib contact of a tapered roller bearing \
+         over a speed sweep: pressure models {}, lubricant film, mixed friction (TOML case, \
+         method = \"friction\"; docs/case-schema.md)",
+        models.join(", ")
+    )
+}
+
 #[derive(Debug, Subcommand)]
 pub enum Command {
     /// Hertz point-contact calculator (exact elliptical solution; the same as a case file
     /// with method = "hertz", docs/case-schema.md).
     Hertz(HertzArgs),
-    /// Solve a case described in a TOML file: method = "hertz", "pimp" or "bem" (schema:
-    /// docs/case-schema.md).
+    #[command(about = solve_about())]
     Solve(SolveArgs),
     /// Run the roller-end/rib study (Wirsching et al. (2020) Table 1, 100-400 N) and write a report
     /// (Markdown, pressure maps, CSV) into a folder (docs/bearing.md, docs/pimp.md).
@@ -45,9 +82,7 @@ pub enum Command {
     /// pairings (Wirsching et al. (2020) Figures 7-10) and write a report (Markdown, plots, CSV;
     /// docs/pimp.md, docs/halfspace.md).
     Validate(ValidateArgs),
-    /// Traction curves F_T/(mu F_N) against the creepage (slide-to-roll ratio): Carter,
-    /// Kalker linear, FASTSIM and the asperity model (Mindlin partial slip per asperity), from
-    /// a TOML case (method = "traction"; docs/case-schema.md).
+    #[command(about = traction_about())]
     Traction(TractionArgs),
     /// Cattaneo-Mindlin partial slip of a Hertz contact under an oscillating tangential
     /// force: stick zone, shift, the Mindlin-Deresiewicz hysteresis loop and the energy
@@ -62,9 +97,7 @@ pub enum Command {
     /// patches and mean gap per nominal pressure (TOML case, method = "rough";
     /// docs/case-schema.md, docs/rough.md).
     Rough(RoughArgs),
-    /// Friction torque and power of the roller-end/rib contact of a tapered roller bearing
-    /// over a speed sweep: Hertz, PimP and/or half-space pressure, lubricant film, mixed
-    /// friction (TOML case, method = "friction"; docs/case-schema.md).
+    #[command(about = friction_about())]
     Friction(FrictionArgs),
     /// Drive the contact element of one roller against the rib through a prescribed motion
     /// (load ramp, tilt and skew at constant load) with the Hertz, PimP and half-space
