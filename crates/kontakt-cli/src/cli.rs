@@ -112,9 +112,10 @@ pub enum Command {
 }
 
 #[derive(Debug, Args)]
-#[command(group(clap::ArgGroup::new("load").required(true).args(["force", "approach"])))]
+#[command(group(clap::ArgGroup::new("load").required(true).args(["force", "approach", "line_load"])))]
 pub struct HertzArgs {
-    /// Principal radii of body 1 [mm], "RX,RY": convex > 0, concave < 0, `inf` for flat.
+    /// Principal radii of body 1 [mm], "RX,RY": convex > 0, concave < 0, `inf` for flat
+    /// (a line contact: one radius, "R").
     #[arg(
         long,
         value_name = "RX,RY",
@@ -123,7 +124,8 @@ pub struct HertzArgs {
         required = true
     )]
     pub body1_radii: Vec<f64>,
-    /// Principal radii of body 2 [mm], "RX,RY": convex > 0, concave < 0, `inf` for flat.
+    /// Principal radii of body 2 [mm], "RX,RY": convex > 0, concave < 0, `inf` for flat
+    /// (a line contact: one radius, "R").
     #[arg(
         long,
         value_name = "RX,RY",
@@ -178,6 +180,14 @@ pub struct HertzArgs {
     /// Approach of distant points [mm], > 0 (or give --force).
     #[arg(long, value_name = "MM", allow_hyphen_values = true)]
     pub approach: Option<f64>,
+    /// Line contact (parallel cylinders, one radius per body: --body1-radii R) of this
+    /// length [mm], > 0; a case file's `[contact] kind = "line"`, `length_mm`.
+    #[arg(long, value_name = "MM", allow_hyphen_values = true)]
+    pub length: Option<f64>,
+    /// Line contact loaded per unit length [N/mm], > 0 (instead of --force; --length then
+    /// optional); a case file's `[load] line_load_n_per_mm`.
+    #[arg(long, value_name = "N_PER_MM", allow_hyphen_values = true)]
+    pub line_load: Option<f64>,
     /// Yield stress of the weaker body [MPa], > 0: reports the first-yield load.
     #[arg(long, value_name = "MPA", allow_hyphen_values = true)]
     pub yield_stress: Option<f64>,
