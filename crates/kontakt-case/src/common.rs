@@ -35,7 +35,8 @@ pub fn read_case_file(path: &Path) -> Result<String> {
 pub fn read_case_text(reader: impl std::io::Read, label: &str) -> Result<String> {
     use std::io::Read;
     let mut bytes = Vec::new();
-    let read = crate::files::Capped::new(reader, MAX_CASE_FILE_BYTES, false).read_to_end(&mut bytes);
+    let read =
+        crate::files::Capped::new(reader, MAX_CASE_FILE_BYTES, false).read_to_end(&mut bytes);
     if let Err(e) = read {
         if !crate::files::is_too_large(&e) {
             return Err(Error::CaseFile {

@@ -60,7 +60,9 @@ impl<R: Read> Read for Capped<R> {
         }
         let left = self.limit - self.read;
         // One byte beyond the limit tells a file of exactly `limit` bytes from a larger one.
-        let want = buf.len().min(usize::try_from(left).unwrap_or(usize::MAX).max(1));
+        let want = buf
+            .len()
+            .min(usize::try_from(left).unwrap_or(usize::MAX).max(1));
         let n = self.inner.read(&mut buf[..want])?;
         if left == 0 && n > 0 {
             return Err(std::io::Error::new(
@@ -119,7 +121,11 @@ fn size_label(bytes: u64) -> String {
 /// # Errors
 /// The message of the file system's error (no such file, permission), or `larger than
 /// <limit>` for a regular file whose size exceeds the limit.
-pub fn open(path: &Path, limit: u64, text: bool) -> Result<BufReader<Capped<std::fs::File>>, String> {
+pub fn open(
+    path: &Path,
+    limit: u64,
+    text: bool,
+) -> Result<BufReader<Capped<std::fs::File>>, String> {
     let file = std::fs::File::open(path).map_err(|e| e.to_string())?;
     // A regular file's size is known: one over the limit is refused before any read (the
     // count while reading still holds for devices, pipes and growing files).
@@ -175,12 +181,7 @@ mod tests {
         let mut s = String::new();
         let e = r.read_to_string(&mut s).unwrap_err().to_string();
         assert!(e.contains("NUL byte at offset 0"), "{e}");
-        let e = read_all(
-            std::fs::File::open("/dev/zero").unwrap(),
-            1 << 20,
-            false,
-        )
-        .unwrap_err();
+        let e = read_all(std::fs::File::open("/dev/zero").unwrap(), 1 << 20, false).unwrap_err();
         assert_eq!(e, "larger than 1 MiB");
     }
 }

@@ -99,7 +99,9 @@ fn read_csv(bytes: impl std::io::Read) -> std::result::Result<Csv, String> {
         if record.iter().all(str::is_empty) {
             continue;
         }
-        if ny == 0 && crate::topography::is_header_line(&record.iter().collect::<Vec<_>>().join(",")) {
+        if ny == 0
+            && crate::topography::is_header_line(&record.iter().collect::<Vec<_>>().join(","))
+        {
             skipped += 1;
             continue;
         }
@@ -257,8 +259,7 @@ mod tests {
         assert_eq!(v, vec![1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
         // A profilometer's header lines before the numbers are skipped and counted; the
         // same line after the first row of numbers is an error.
-        let ((nx, ny, v), skipped) =
-            read_csv(&b"Height map\nx0, x1\n1, 2\n3, 4\n"[..]).unwrap();
+        let ((nx, ny, v), skipped) = read_csv(&b"Height map\nx0, x1\n1, 2\n3, 4\n"[..]).unwrap();
         assert_eq!((nx, ny, skipped, v), (2, 2, 2, vec![1.0, 2.0, 3.0, 4.0]));
         let e = read_csv(&b"1, 2\nx0, x1\n"[..]).unwrap_err();
         assert!(e.contains("`x0` is not a number"), "{e}");

@@ -162,7 +162,10 @@ pub const DEFAULT_MEMORY_GIB: f64 = 16.0;
 ///
 /// # Errors
 /// [`Error::InvalidInput`] for a thread count outside its range.
-pub fn memory_estimate(points: [usize; 2], options: &kontakt::halfspace::SolverOptions) -> Result<u64> {
+pub fn memory_estimate(
+    points: [usize; 2],
+    options: &kontakt::halfspace::SolverOptions,
+) -> Result<u64> {
     let n = points[0] as u64 * points[1] as u64;
     Ok(RoughContact::memory_estimate(points, options)? + 16 * n)
 }
@@ -561,7 +564,11 @@ const METAL_HARDNESS_OVER_E_STAR: f64 = 0.1;
 /// hardness), so the real contact area is larger and the pressures lower than reported.
 /// `above` holds per such load its index, its largest pressure \[MPa\] and the fraction of
 /// its real contact area above the limit.
-fn hardness_warning(above: &[(usize, f64, f64)], hardness: Option<f64>, e_star: f64) -> Option<String> {
+fn hardness_warning(
+    above: &[(usize, f64, f64)],
+    hardness: Option<f64>,
+    e_star: f64,
+) -> Option<String> {
     let (first, last) = (above.first()?, above.last()?);
     let limit = match hardness {
         Some(h) => format!("load.hardness_mpa = {h} MPa"),

@@ -79,9 +79,7 @@ pub(crate) fn is_header_line(line: &str) -> bool {
 }
 
 /// The lines of a capped reader, the reader's errors as messages.
-fn lines(
-    reader: impl BufRead,
-) -> impl Iterator<Item = std::result::Result<String, String>> {
+fn lines(reader: impl BufRead) -> impl Iterator<Item = std::result::Result<String, String>> {
     reader
         .lines()
         .map(|l| l.map_err(|e| format!("a readable text file ({e})")))

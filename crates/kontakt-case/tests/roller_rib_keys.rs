@@ -77,10 +77,17 @@ fn outside_diameter_checks_that_the_roller_fits() {
     let with = |d: f64| {
         CASE.replace(
             "[pimp]",
-            &format!("{}[pimp]", bearing.replace("outer", &format!("outside_diameter_mm = {d:?}"))),
+            &format!(
+                "{}[pimp]",
+                bearing.replace("outer", &format!("outside_diameter_mm = {d:?}"))
+            ),
         )
     };
     assert!(run(&with(110.0)).is_ok());
     let e = run(&with(80.0)).unwrap_err();
-    assert!(e.to_string().contains("the roller must fit inside the outside diameter"), "{e}");
+    assert!(
+        e.to_string()
+            .contains("the roller must fit inside the outside diameter"),
+        "{e}"
+    );
 }

@@ -25,11 +25,19 @@ fn help_names_every_method_and_model() {
     }
     let traction = help("traction");
     for m in TractionModel::ALL {
-        assert!(traction.contains(m.as_str()), "traction --help omits {}", m.as_str());
+        assert!(
+            traction.contains(m.as_str()),
+            "traction --help omits {}",
+            m.as_str()
+        );
     }
     let friction = help("friction");
     for m in PressureModel::ALL {
-        assert!(friction.contains(m.as_str()), "friction --help omits {}", m.as_str());
+        assert!(
+            friction.contains(m.as_str()),
+            "friction --help omits {}",
+            m.as_str()
+        );
     }
 }
 
@@ -46,7 +54,9 @@ fn sweep_doc_counts_the_columns_the_program_writes() {
     let out = support::tempdir("help", "sweep");
     let v = run_json(&[
         "sweep",
-        root.join("examples/sweeps/hertz_load.toml").to_str().unwrap(),
+        root.join("examples/sweeps/hertz_load.toml")
+            .to_str()
+            .unwrap(),
         "--out",
         out.join("hertz-load").to_str().unwrap(),
     ]);
@@ -55,5 +65,8 @@ fn sweep_doc_counts_the_columns_the_program_writes() {
         v["cases"],
         v["columns"].as_array().unwrap().len()
     );
-    assert!(line.ends_with(&expect), "docs/sweep.md says `{line}`, the program {expect}");
+    assert!(
+        line.ends_with(&expect),
+        "docs/sweep.md says `{line}`, the program {expect}"
+    );
 }

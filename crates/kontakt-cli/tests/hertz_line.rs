@@ -48,16 +48,38 @@ fn line_flags_give_the_case_files_report() {
 fn line_flag_errors_name_the_flag() {
     let base = ["hertz", "--body1-radii", "3.25", "--body2-radii", "15.75"];
     for (extra, expect) in [
-        (&["--length", "-8", "--force", "2000"][..], "invalid --length = -8"),
+        (
+            &["--length", "-8", "--force", "2000"][..],
+            "invalid --length = -8",
+        ),
         (&["--line-load", "0"][..], "invalid --line-load = 0"),
-        (&["--line-load", "250", "--angle-deg", "3"][..], "invalid --angle-deg = 3"),
-        (&["--line-load", "250", "--force", "3"][..], "cannot be used with"),
-        (&["--force", "2000", "--line-load", "inf"][..], "cannot be used with"),
+        (
+            &["--line-load", "250", "--angle-deg", "3"][..],
+            "invalid --angle-deg = 3",
+        ),
+        (
+            &["--line-load", "250", "--force", "3"][..],
+            "cannot be used with",
+        ),
+        (
+            &["--force", "2000", "--line-load", "inf"][..],
+            "cannot be used with",
+        ),
     ] {
         let args: Vec<&str> = base.iter().copied().chain(extra.iter().copied()).collect();
         let e = bad(&args);
         assert!(e.contains(expect), "{extra:?}: {e}");
     }
-    let e = bad(&["hertz", "--body1-radii", "3.25,3", "--body2-radii", "15.75", "--length", "8", "--force", "10"]);
+    let e = bad(&[
+        "hertz",
+        "--body1-radii",
+        "3.25,3",
+        "--body2-radii",
+        "15.75",
+        "--length",
+        "8",
+        "--force",
+        "10",
+    ]);
     assert!(e.contains("invalid --body1-radii"), "{e}");
 }

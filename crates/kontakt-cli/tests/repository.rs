@@ -65,7 +65,11 @@ fn no_machine_paths_in_the_repository() {
         };
         for (k, line) in text.lines().enumerate() {
             if let Some(p) = patterns.iter().find(|p| line.contains(p.as_str())) {
-                let shown = file.strip_prefix(root()).unwrap_or(file).display().to_string();
+                let shown = file
+                    .strip_prefix(root())
+                    .unwrap_or(file)
+                    .display()
+                    .to_string();
                 found.push(format!("{shown}:{}: `{p}` in {}", k + 1, line.trim()));
             }
         }

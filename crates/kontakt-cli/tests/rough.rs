@@ -252,11 +252,17 @@ fn wavy_case(dir: &std::path::Path, file: &str, header: &str, per_mm: f64, keys:
     let row: Vec<String> = (0..n)
         .map(|i| {
             let x = (i as f64 + 0.5) * lambda / n as f64;
-            format!("{:e}", per_mm * d * (2.0 * std::f64::consts::PI * x / lambda).cos())
+            format!(
+                "{:e}",
+                per_mm * d * (2.0 * std::f64::consts::PI * x / lambda).cos()
+            )
         })
         .collect();
-    std::fs::write(dir.join(file), format!("{header}{}\n", vec![row.join(","); 8].join("\n")))
-        .unwrap();
+    std::fs::write(
+        dir.join(file),
+        format!("{header}{}\n", vec![row.join(","); 8].join("\n")),
+    )
+    .unwrap();
     let dx = lambda / n as f64;
     let case = format!(
         "method = \"rough\"\n[surface]\nkind = \"map\"\nfile = \"{file}\"\nspacing_mm = [{dx:?}, {dx:?}]\n{keys}\n\
@@ -274,29 +280,50 @@ fn wavy_case(dir: &std::path::Path, file: &str, header: &str, per_mm: f64, keys:
 #[test]
 fn profilometer_export_with_header_and_microns() {
     let dir = tempdir("units");
-    let plain = run_json(&["rough", wavy_case(&dir, "mm.csv", "", 1.0, "").to_str().unwrap()]);
-    assert_eq!(plain["warnings"].as_array().unwrap().len(), 0, "{}", plain["warnings"]);
+    let plain = run_json(&[
+        "rough",
+        wavy_case(&dir, "mm.csv", "", 1.0, "").to_str().unwrap(),
+    ]);
+    assert_eq!(
+        plain["warnings"].as_array().unwrap().len(),
+        0,
+        "{}",
+        plain["warnings"]
+    );
     let header = "Profilometer export,,\nx0,x1,x2\n";
     for (file, keys) in [
         ("um.csv", "unit = \"um\""),
         ("um2.csv", "unit = \"µm\""),
         ("scaled.csv", "scale = 1e-3"),
     ] {
-        let v = run_json(&["rough", wavy_case(&dir, file, header, 1e3, keys).to_str().unwrap()]);
+        let v = run_json(&[
+            "rough",
+            wavy_case(&dir, file, header, 1e3, keys).to_str().unwrap(),
+        ]);
         let w = v["warnings"].as_array().unwrap();
         assert_eq!(w.len(), 1, "{w:?}");
         assert!(
             w[0].as_str().unwrap().contains("skipped 2 header lines"),
             "{w:?}"
         );
-        for (a, b) in v["rows"].as_array().unwrap().iter().zip(plain["rows"].as_array().unwrap()) {
+        for (a, b) in v["rows"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .zip(plain["rows"].as_array().unwrap())
+        {
             let (pa, pb) = (num(&a["max_pressure_mpa"]), num(&b["max_pressure_mpa"]));
             assert!((pa / pb - 1.0).abs() < 1e-9, "{file}: {pa} vs {pb}");
             assert_eq!(a["area_fraction"], b["area_fraction"], "{file}");
         }
     }
     // Without the unit the heights are read as mm: 1000 times rougher, a different result.
-    let v = run_json(&["rough", wavy_case(&dir, "raw.csv", header, 1e3, "").to_str().unwrap()]);
+    let v = run_json(&[
+        "rough",
+        wavy_case(&dir, "raw.csv", header, 1e3, "")
+            .to_str()
+            .unwrap(),
+    ]);
     assert!(num(&v["rms_height_mm"]) > 100.0 * num(&plain["rms_height_mm"]));
     // Bad units and scales name the key.
     for (keys, expect) in [
@@ -305,7 +332,10 @@ fn profilometer_export_with_header_and_microns() {
         ("scale = -1.0", "invalid surface.scale = -1"),
     ] {
         let p = wavy_case(&dir, "bad.csv", "", 1.0, keys);
-        let out = kontakt().args(["rough", p.to_str().unwrap()]).output().unwrap();
+        let out = kontakt()
+            .args(["rough", p.to_str().unwrap()])
+            .output()
+            .unwrap();
         let err = String::from_utf8(out.stderr).unwrap();
         assert_eq!(out.status.code(), Some(2), "{keys}: {err}");
         assert!(err.contains(expect), "{keys}: {err}");
@@ -319,7 +349,12 @@ fn non_periodic_map_is_named() {
     let dir = tempdir("periodic");
     let n = 64usize;
     let row: Vec<String> = (0..n)
-        .map(|i| format!("{:e}", 1e-3 * (std::f64::consts::PI * (i as f64 + 0.5) / n as f64).cos()))
+        .map(|i| {
+            format!(
+                "{:e}",
+                1e-3 * (std::f64::consts::PI * (i as f64 + 0.5) / n as f64).cos()
+            )
+        })
         .collect();
     std::fs::write(dir.join("half.csv"), vec![row.join(","); 8].join("\n")).unwrap();
     let case = "method = \"rough\"\n[surface]\nkind = \"map\"\nfile = \"half.csv\"\n\
@@ -329,7 +364,8 @@ fn non_periodic_map_is_named() {
     let v = run_json(&["rough", dir.join("half.toml").to_str().unwrap()]);
     let w = v["warnings"].as_array().unwrap();
     assert!(
-        w.iter().any(|w| w.as_str().unwrap().contains("the map is not periodic")),
+        w.iter()
+            .any(|w| w.as_str().unwrap().contains("the map is not periodic")),
         "{w:?}"
     );
 }
@@ -342,7 +378,10 @@ fn pressures_above_the_hardness_are_flagged() {
     let v = run_json(&["rough", example().to_str().unwrap()]);
     let w = v["warnings"].as_array().unwrap();
     assert_eq!(w.len(), 1, "{w:?}");
-    assert!(w[0].as_str().unwrap().contains("0.1 E* = 11538 MPa"), "{w:?}");
+    assert!(
+        w[0].as_str().unwrap().contains("0.1 E* = 11538 MPa"),
+        "{w:?}"
+    );
     let dir = tempdir("hardness");
     let base = std::fs::read_to_string(example()).unwrap();
     let p = dir.join("h.toml");
@@ -351,14 +390,20 @@ fn pressures_above_the_hardness_are_flagged() {
         "mean_pressure_mpa = [100.0, 200.0, 400.0, 800.0]\nhardness_mpa = 7500.0",
     );
     std::fs::write(&p, &text).unwrap();
-    let out = kontakt().args(["rough", p.to_str().unwrap()]).output().unwrap();
+    let out = kontakt()
+        .args(["rough", p.to_str().unwrap()])
+        .output()
+        .unwrap();
     let s = String::from_utf8(out.stdout).unwrap();
     assert!(
         s.contains("warning: the largest pressure exceeds load.hardness_mpa = 7500 MPa at 4 loads"),
         "{s}"
     );
     std::fs::write(&p, text.replace("7500.0", "-1.0")).unwrap();
-    let out = kontakt().args(["rough", p.to_str().unwrap()]).output().unwrap();
+    let out = kontakt()
+        .args(["rough", p.to_str().unwrap()])
+        .output()
+        .unwrap();
     let err = String::from_utf8(out.stderr).unwrap();
     assert_eq!(out.status.code(), Some(2), "{err}");
     assert!(err.contains("invalid load.hardness_mpa = -1"), "{err}");
@@ -386,7 +431,11 @@ fn map_files_are_capped() {
         if file == "zero.xyz" {
             std::os::unix::fs::symlink("/dev/zero", dir.join(file)).unwrap_or_default();
         }
-        let spacing = if file.ends_with("xyz") { "" } else { "spacing_mm = [0.01, 0.01]" };
+        let spacing = if file.ends_with("xyz") {
+            ""
+        } else {
+            "spacing_mm = [0.01, 0.01]"
+        };
         let case = format!(
             "method = \"rough\"\n[surface]\nkind = \"map\"\nfile = \"{file}\"\n{spacing}\n\
              [body1]\ne_mpa = 210000.0\nnu = 0.3\n[body2]\ne_mpa = 210000.0\nnu = 0.3\n\
@@ -394,11 +443,17 @@ fn map_files_are_capped() {
         );
         let p = dir.join("cap.toml");
         std::fs::write(&p, case).unwrap();
-        let out = kontakt().args(["rough", p.to_str().unwrap()]).output().unwrap();
+        let out = kontakt()
+            .args(["rough", p.to_str().unwrap()])
+            .output()
+            .unwrap();
         let err = String::from_utf8(out.stderr).unwrap();
         assert_eq!(out.status.code(), Some(2), "{file}: {err}");
         assert_eq!(err.trim().lines().count(), 1, "{err}");
-        assert!(err.contains("surface.file") && err.contains(expect), "{file}: {err}");
+        assert!(
+            err.contains("surface.file") && err.contains(expect),
+            "{file}: {err}"
+        );
     }
     std::fs::remove_file(&big).unwrap();
 }
@@ -431,7 +486,10 @@ fn grids_beyond_the_memory_budget_are_refused() {
         let p = dir.join("big.toml");
         std::fs::write(&p, base.replace(from, to)).unwrap();
         let started = std::time::Instant::now();
-        let out = kontakt().args(["rough", p.to_str().unwrap()]).output().unwrap();
+        let out = kontakt()
+            .args(["rough", p.to_str().unwrap()])
+            .output()
+            .unwrap();
         let err = String::from_utf8(out.stderr).unwrap();
         assert_eq!(out.status.code(), Some(2), "{to}: {err}");
         assert_eq!(err.trim().lines().count(), 1, "{err}");

@@ -176,15 +176,30 @@ fn rib_angle_reproduces_the_height_based_geometry() {
         })
         .unwrap();
         assert!((by_angle.rib_angle_deg - by_height.rib_angle_deg).abs() < 1e-12);
-        assert!((by_angle.contact.point - by_height.contact.point).norm() < 1e-10, "{name}");
-        assert!((by_angle.contact.normal.into_inner() - by_height.contact.normal.into_inner()).norm() < 1e-10);
-        for (a, b) in [(&by_angle.face, &by_height.face), (&by_angle.rib, &by_height.rib)] {
+        assert!(
+            (by_angle.contact.point - by_height.contact.point).norm() < 1e-10,
+            "{name}"
+        );
+        assert!(
+            (by_angle.contact.normal.into_inner() - by_height.contact.normal.into_inner()).norm()
+                < 1e-10
+        );
+        for (a, b) in [
+            (&by_angle.face, &by_height.face),
+            (&by_angle.rib, &by_height.rib),
+        ] {
             for probe in [by_height.contact.point, by_height.apex] {
-                assert!((a.signed_distance(&probe) - b.signed_distance(&probe)).abs() < 1e-10, "{name}");
+                assert!(
+                    (a.signed_distance(&probe) - b.signed_distance(&probe)).abs() < 1e-10,
+                    "{name}"
+                );
             }
         }
         let h_printed = spec.contact_height_for_rib_angle(printed).unwrap();
-        assert!((h_printed - CONTACT_HEIGHT).abs() < 0.45, "{name}: {printed}° gives {h_printed}");
+        assert!(
+            (h_printed - CONTACT_HEIGHT).abs() < 0.45,
+            "{name}: {printed}° gives {h_printed}"
+        );
     }
     let spec = RollerRibSpec::builtin("sphere-cone-29").unwrap();
     for bad in [f64::NAN, -5.0, 180.0, 80.0] {

@@ -351,11 +351,7 @@ impl HalfSpacePlan {
         let (mx, my, ny) = (mx as u64, my as u64, ny as u64);
         let kx = mx / 2 + 1;
         let c = std::mem::size_of::<Complex<f64>>() as u64;
-        let tasks = if serial {
-            1
-        } else {
-            4 * threads as u64
-        };
+        let tasks = if serial { 1 } else { 4 * threads as u64 };
         let workspace = 8 * mx + c * (BLOCK as u64 * my.max(kx) + 4 * mx.max(my));
         (8 * kx * my, 2 * c * ny * kx + tasks * workspace)
     }
