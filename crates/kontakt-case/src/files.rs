@@ -70,16 +70,14 @@ impl<R: Read> Read for Capped<R> {
                 TooLarge(self.limit),
             ));
         }
-        if self.text {
-            if let Some(k) = buf[..n].iter().position(|&b| b == 0) {
-                return Err(std::io::Error::new(
-                    std::io::ErrorKind::InvalidData,
-                    format!(
-                        "not text: a NUL byte at offset {} (a binary file or a device?)",
-                        self.read + k as u64
-                    ),
-                ));
-            }
+        if let Some(k) = buf[..n].iter().position(|&b| b == 0).filter(|_| self.text) {
+            return Err(std::io::Error::new(
+                std::io::ErrorKind::InvalidData,
+                format!(
+                    "not text: a NUL byte at offset {} (a binary file or a device?)",
+                    self.read + k as u64
+                ),
+            ));
         }
         self.read += n as u64;
         Ok(n)
@@ -129,10 +127,11 @@ pub fn open(
     let file = std::fs::File::open(path).map_err(|e| e.to_string())?;
     // A regular file's size is known: one over the limit is refused before any read (the
     // count while reading still holds for devices, pipes and growing files).
-    if let Ok(meta) = file.metadata() {
-        if meta.is_file() && meta.len() > limit {
-            return Err(format!("{} ({} bytes)", TooLarge(limit), meta.len()));
-        }
+    if let Ok(meta) = file.metadata()
+        && meta.is_file()
+        && meta.len() > limit
+    {
+        return Err(format!("{} ({} bytes)", TooLarge(limit), meta.len()));
     }
     Ok(BufReader::new(Capped::new(file, limit, text)))
 }
@@ -155,7 +154,7 @@ mod tests {
 
     #[test]
     fn cap_counts_while_reading() {
-        let data = vec![b'1'; 100];
+        let data = [b'1'; 100];
         assert_eq!(read_all(&data[..], 100, true).map(|b| b.len()), Ok(100));
         let e = read_all(&data[..], 99, true).unwrap_err();
         assert_eq!(e, "larger than 99 bytes");
