@@ -18,6 +18,11 @@ fn tempdir(name: &str) -> PathBuf {
     support::tempdir("rough", name)
 }
 
+/// `kontakt rough CASE` must fail on bad input: exit status 2 and one line, returned.
+fn refused(case: &std::path::Path) -> String {
+    support::bad(&["rough", case.to_str().unwrap()])
+}
+
 /// A wavy surface z = D cos(2 pi x/lambda) as a CSV height map (128 cells per wavelength,
 /// 8 rows: the periodic 2-D solver then solves the plane problem) against Westergaard's
 /// solution (Johnson 1985 §13.2): p = p* sin²(pi a/lambda) with p* = pi E* D/lambda, so
@@ -230,17 +235,7 @@ fn bad_cases_name_the_key() {
         assert!(base.contains(from), "{from}");
         let p = dir.join("bad.toml");
         std::fs::write(&p, base.replace(from, to)).unwrap();
-        let out = kontakt()
-            .args(["rough", p.to_str().unwrap()])
-            .output()
-            .unwrap();
-        let err = String::from_utf8(out.stderr).unwrap();
-        assert_eq!(out.status.code(), Some(2), "{to}: {err}");
-        assert_eq!(
-            err.lines().filter(|l| !l.trim().is_empty()).count(),
-            1,
-            "{err}"
-        );
+        let err = refused(&p);
         assert!(err.contains(expect), "{to}: {err}");
     }
 }
@@ -331,13 +326,7 @@ fn profilometer_export_with_header_and_microns() {
         ("scale = 0.0", "invalid surface.scale = 0"),
         ("scale = -1.0", "invalid surface.scale = -1"),
     ] {
-        let p = wavy_case(&dir, "bad.csv", "", 1.0, keys);
-        let out = kontakt()
-            .args(["rough", p.to_str().unwrap()])
-            .output()
-            .unwrap();
-        let err = String::from_utf8(out.stderr).unwrap();
-        assert_eq!(out.status.code(), Some(2), "{keys}: {err}");
+        let err = refused(&wavy_case(&dir, "bad.csv", "", 1.0, keys));
         assert!(err.contains(expect), "{keys}: {err}");
     }
 }
@@ -400,12 +389,7 @@ fn pressures_above_the_hardness_are_flagged() {
         "{s}"
     );
     std::fs::write(&p, text.replace("7500.0", "-1.0")).unwrap();
-    let out = kontakt()
-        .args(["rough", p.to_str().unwrap()])
-        .output()
-        .unwrap();
-    let err = String::from_utf8(out.stderr).unwrap();
-    assert_eq!(out.status.code(), Some(2), "{err}");
+    let err = refused(&p);
     assert!(err.contains("invalid load.hardness_mpa = -1"), "{err}");
 }
 
@@ -443,13 +427,7 @@ fn map_files_are_capped() {
         );
         let p = dir.join("cap.toml");
         std::fs::write(&p, case).unwrap();
-        let out = kontakt()
-            .args(["rough", p.to_str().unwrap()])
-            .output()
-            .unwrap();
-        let err = String::from_utf8(out.stderr).unwrap();
-        assert_eq!(out.status.code(), Some(2), "{file}: {err}");
-        assert_eq!(err.trim().lines().count(), 1, "{err}");
+        let err = refused(&p);
         assert!(
             err.contains("surface.file") && err.contains(expect),
             "{file}: {err}"
@@ -486,13 +464,7 @@ fn grids_beyond_the_memory_budget_are_refused() {
         let p = dir.join("big.toml");
         std::fs::write(&p, base.replace(from, to)).unwrap();
         let started = std::time::Instant::now();
-        let out = kontakt()
-            .args(["rough", p.to_str().unwrap()])
-            .output()
-            .unwrap();
-        let err = String::from_utf8(out.stderr).unwrap();
-        assert_eq!(out.status.code(), Some(2), "{to}: {err}");
-        assert_eq!(err.trim().lines().count(), 1, "{err}");
+        let err = refused(&p);
         assert!(err.contains(expect), "{to}: {err}");
         assert!(started.elapsed().as_secs_f64() < 5.0, "not refused at once");
     }
