@@ -508,12 +508,29 @@ pub fn roller_rib_from_spec(geometry: &GeometrySpec) -> Result<Option<(String, R
         (None, Some(alpha)) => {
             spec.contact_height = spec
                 .contact_height_for_rib_angle(*alpha)
-                .map_err(|e| e.map_field(|f| format!("geometry.{f}")))?;
+                .map_err(|e| e.map_field(roller_rib_key))?;
         }
         (None, None) => {}
     }
-    let pair = RollerRib::new(spec).map_err(|e| e.map_field(|f| format!("geometry.{f}")))?;
+    let pair = RollerRib::new(spec).map_err(|e| e.map_field(roller_rib_key))?;
     Ok(Some((label, pair)))
+}
+
+/// The case-file key of a [`RollerRib`] field: `bearing.bore` is `geometry.bearing.bore_mm`,
+/// `face.radius` is `geometry.face.radius_mm` (the library's names carry no unit suffix).
+fn roller_rib_key(f: &str) -> String {
+    let key = match f {
+        "bearing.bore"
+        | "bearing.outside_diameter"
+        | "bearing.roller_large_end_radius"
+        | "bearing.inner_raceway_radius"
+        | "face.radius"
+        | "face.eccentricity"
+        | "rib.radius"
+        | "contact_height" => format!("{f}_mm"),
+        other => other.to_string(),
+    };
+    format!("geometry.{key}")
 }
 
 /// Solve a PimP case.

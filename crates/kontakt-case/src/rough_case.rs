@@ -166,8 +166,8 @@ pub fn memory_estimate(
     points: [usize; 2],
     options: &kontakt::halfspace::SolverOptions,
 ) -> Result<u64> {
-    let n = points[0] as u64 * points[1] as u64;
-    Ok(RoughContact::memory_estimate(points, options)? + 16 * n)
+    let n = (points[0] as u64).saturating_mul(points[1] as u64);
+    Ok(RoughContact::memory_estimate(points, options)?.saturating_add(n.saturating_mul(16)))
 }
 
 /// Refuse a grid whose [`memory_estimate`] exceeds `solver.max_memory_gib`, naming `key`
@@ -371,9 +371,6 @@ pub fn run_rough_case(case: &RoughCase, base_dir: &Path) -> Result<RoughOutcome>
                     ));
                 }
             };
-            // Counted before the surface is generated: nothing is allocated for a grid
-            // beyond the budget (16384² aborted the process on an allocation failure).
-            check_memory("surface.points", *points, budget, &options)?;
             let spec = SelfAffineSpec {
                 points: *points,
                 size: *size_mm,
@@ -384,7 +381,7 @@ pub fn run_rough_case(case: &RoughCase, base_dir: &Path) -> Result<RoughOutcome>
                 amplitude,
                 seed: *seed,
             };
-            let s = spec.generate().map_err(|e| {
+            let name_key = |e: Error| {
                 e.map_field(|f| match f {
                     "amplitude.rms_slope" => "surface.rms_slope".into(),
                     "amplitude.rms_height" => "surface.rms_height_mm".into(),
@@ -395,7 +392,13 @@ pub fn run_rough_case(case: &RoughCase, base_dir: &Path) -> Result<RoughOutcome>
                     "long_cutoff" | "rolloff" | "short_cutoff" => format!("surface.{f}_mm"),
                     other => format!("surface.{other}"),
                 })
-            })?;
+            };
+            // Checked, then counted before the surface is generated: nothing is allocated
+            // for a grid beyond the budget (16384² aborted the process on an allocation
+            // failure).
+            spec.validate().map_err(name_key)?;
+            check_memory("surface.points", *points, budget, &options)?;
+            let s = spec.generate().map_err(name_key)?;
             ("self_affine", s.height_map()?, s.rms_height, s.rms_slope)
         }
         SurfaceSpec::Map {

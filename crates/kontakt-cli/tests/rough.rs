@@ -231,6 +231,13 @@ fn bad_cases_name_the_key() {
             "points = [255, 256]",
             "invalid surface.points[0] = 255",
         ),
+        // Found by the fuzz harness: the memory estimate overflowed (a panic) before the
+        // grid was checked; the grid is checked first.
+        (
+            "points = [256, 256]",
+            "points = [9223372036854775806, 256]",
+            "invalid surface.points[0] = 9223372036854775806",
+        ),
     ] {
         assert!(base.contains(from), "{from}");
         let p = dir.join("bad.toml");

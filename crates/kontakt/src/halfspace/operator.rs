@@ -343,17 +343,22 @@ impl HalfSpacePlan {
         boundary: Boundary,
         threads: usize,
     ) -> (u64, u64) {
+        // In f64, whose cast to u64 saturates: an absurd grid gives u64::MAX, not an
+        // overflow (exact below 2^53 bytes).
+        let (nx, ny) = (nx as f64, ny as f64);
         let (mx, my) = match boundary {
-            Boundary::Free => (2 * nx, 2 * ny),
+            Boundary::Free => (2.0 * nx, 2.0 * ny),
             Boundary::Periodic => (nx, ny),
         };
-        let serial = threads <= 1 || nx * ny < PARALLEL_MIN_CELLS;
-        let (mx, my, ny) = (mx as u64, my as u64, ny as u64);
-        let kx = mx / 2 + 1;
-        let c = std::mem::size_of::<Complex<f64>>() as u64;
-        let tasks = if serial { 1 } else { 4 * threads as u64 };
-        let workspace = 8 * mx + c * (BLOCK as u64 * my.max(kx) + 4 * mx.max(my));
-        (8 * kx * my, 2 * c * ny * kx + tasks * workspace)
+        let serial = threads <= 1 || nx * ny < PARALLEL_MIN_CELLS as f64;
+        let kx = (mx / 2.0).floor() + 1.0;
+        let c = std::mem::size_of::<Complex<f64>>() as f64;
+        let tasks = if serial { 1.0 } else { 4.0 * threads as f64 };
+        let workspace = 8.0 * mx + c * (BLOCK as f64 * my.max(kx) + 4.0 * mx.max(my));
+        (
+            (8.0 * kx * my) as u64,
+            (2.0 * c * ny * kx + tasks * workspace) as u64,
+        )
     }
 
     /// The FFT plans, task split and an empty kernel for a `mx × my` transform of the

@@ -477,16 +477,20 @@ impl HalfSpaceSolver {
     ) -> Result<u64> {
         let threads = super::operator::resolve_threads(options.threads)?;
         let (plan, scratch) = HalfSpacePlan::estimate_bytes(nx, ny, options.boundary, threads);
-        let n = (nx as u64) * (ny as u64);
+        // Saturating: an absurd grid gives u64::MAX (refused by any budget), not an overflow.
+        let n = (nx as u64).saturating_mul(ny as u64);
+        let fields = |k: u64| n.saturating_mul(8 * k);
         let precond = match options.preconditioner {
             Preconditioner::None => 0,
             Preconditioner::Fft => {
                 let (p, s) = HalfSpacePlan::estimate_bytes(nx, ny, Boundary::Periodic, threads);
-                p + s + 2 * 8 * n
+                p.saturating_add(s).saturating_add(fields(2))
             }
         };
-        let history = if secant { 5 * 8 * n } else { 0 };
-        Ok(plan + scratch + 6 * 8 * n + precond + history)
+        let history = if secant { fields(5) } else { 0 };
+        Ok([plan, scratch, fields(6), precond, history]
+            .into_iter()
+            .fold(0u64, u64::saturating_add))
     }
 
     /// Bytes held by the solver: the FFT plan (counted whole, also when shared), the
@@ -1273,6 +1277,16 @@ mod tests {
                 estimate >= held && estimate < 1.1 * held,
                 "{boundary:?} {threads:?}: estimate {estimate} for {held} bytes held"
             );
+        }
+        // Found by the fuzz harness: an absurd grid saturates instead of overflowing.
+        for boundary in [Boundary::Free, Boundary::Periodic] {
+            let options = SolverOptions {
+                threads: Some(4),
+                boundary,
+                ..SolverOptions::default()
+            };
+            let e = HalfSpaceSolver::memory_estimate(usize::MAX, usize::MAX, &options, true);
+            assert_eq!(e.ok(), Some(u64::MAX));
         }
     }
 

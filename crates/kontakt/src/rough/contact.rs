@@ -119,8 +119,9 @@ impl RoughContact {
             boundary: Boundary::Periodic,
             ..*options
         };
-        let n = points[0] as u64 * points[1] as u64;
-        Ok(HalfSpaceSolver::memory_estimate(points[0], points[1], &periodic, false)? + 17 * n)
+        let n = (points[0] as u64).saturating_mul(points[1] as u64);
+        let solver = HalfSpaceSolver::memory_estimate(points[0], points[1], &periodic, false)?;
+        Ok(solver.saturating_add(n.saturating_mul(17)))
     }
 
     /// The grid \[mm\].
