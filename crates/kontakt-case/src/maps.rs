@@ -371,6 +371,27 @@ mod tests {
         assert_eq!(e.field(), Some("spacing[1]"), "{e}");
     }
 
+    /// Issue 30 item 6: `/dev/zero` as a gap map grew to 4 GB before failing; through the
+    /// capped reader it fails at its first byte as CSV and at its magic bytes as `.npy`.
+    #[cfg(unix)]
+    #[test]
+    fn dev_zero_as_a_map_fails_at_once() {
+        let e = read_gap_map(Path::new("/dev/zero"), [0.01, 0.01], MapKind::Gap, 1.0)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("gap_map.file") && e.contains("NUL byte at offset 0"),
+            "{e}"
+        );
+        let link = std::env::temp_dir().join(format!("kontakt-zero-{}.npy", std::process::id()));
+        std::os::unix::fs::symlink("/dev/zero", &link).unwrap();
+        let e = read_gap_map(&link, [0.01, 0.01], MapKind::Gap, 1.0)
+            .unwrap_err()
+            .to_string();
+        std::fs::remove_file(&link).unwrap();
+        assert!(e.contains("no .npy magic bytes"), "{e}");
+    }
+
     #[test]
     fn files_that_cannot_be_read_name_the_file_and_the_row() {
         let path = std::env::temp_dir().join(format!(
