@@ -152,9 +152,13 @@ fn run(case: &PimpCase, base_dir: &Path, given: Option<GapMap>) -> Result<BemOut
                 boundary,
             } => {
                 let path = base_dir.join(file);
+                let mut notes = Vec::new();
                 let map = match given {
                     Some(map) => Ok(map),
-                    None => crate::maps::read_gap_map(&path, *spacing_mm, *values),
+                    None => crate::maps::read_gap_map(&path, *spacing_mm, *values, 1.0).map(|m| {
+                        notes.extend(crate::maps::skipped_note("geometry.file", m.skipped_lines));
+                        m.map
+                    }),
                 }
                 .map_err(|e| {
                     e.map_field(|f| match f {
@@ -178,7 +182,7 @@ fn run(case: &PimpCase, base_dir: &Path, given: Option<GapMap>) -> Result<BemOut
                     None,
                     None,
                     *boundary,
-                    (Vec::new(), Vec::new()),
+                    (notes, Vec::new()),
                 )
             }
             g => {

@@ -11,8 +11,14 @@ use kontakt::{Error, Result};
 use serde::Serialize;
 use std::path::Path;
 
-/// The valid `method` values, as an error message names them.
-const METHODS: &str = "\"hertz\", \"pimp\", \"bem\", \"traction\", \"friction\", \"mindlin\", \"impact\" or \"rough\"";
+/// The valid `method` values, as an error message names them (from [`Case::METHODS`]).
+fn methods_expected() -> String {
+    let quoted: Vec<String> = Case::METHODS.iter().map(|m| format!("\"{m}\"")).collect();
+    match quoted.split_last() {
+        Some((last, rest)) => format!("{} or {last}", rest.join(", ")),
+        None => String::new(),
+    }
+}
 
 /// A case of any method: the `method` key decides the schema.
 #[derive(Debug, Clone, PartialEq)]
@@ -59,7 +65,7 @@ impl Case {
             "mindlin" => Ok(Case::Mindlin(Box::new(parse_toml(text)?))),
             "impact" => Ok(Case::Impact(Box::new(parse_toml(text)?))),
             "rough" => Ok(Case::Rough(Box::new(parse_toml(text)?))),
-            other => Err(Error::invalid("method", other, METHODS)),
+            other => Err(Error::invalid("method", other, methods_expected())),
         }
     }
 
@@ -74,7 +80,7 @@ impl Case {
             None => "hertz".to_string(),
             Some(toml::Value::String(m)) => m.clone(),
             Some(other) => {
-                return Err(Error::invalid("method", other, METHODS));
+                return Err(Error::invalid("method", other, methods_expected()));
             }
         };
         match method.as_str() {
@@ -86,9 +92,15 @@ impl Case {
             "mindlin" => Ok(Case::Mindlin(Box::new(read(table)?))),
             "impact" => Ok(Case::Impact(Box::new(read(table)?))),
             "rough" => Ok(Case::Rough(Box::new(read(table)?))),
-            other => Err(Error::invalid("method", other, METHODS)),
+            other => Err(Error::invalid("method", other, methods_expected())),
         }
     }
+
+    /// Every `method` a case file can name; the dispatch of [`Case::from_toml_str`], the
+    /// error for an unknown method and the command line's help are built from it.
+    pub const METHODS: [&'static str; 8] = [
+        "hertz", "pimp", "bem", "traction", "friction", "mindlin", "impact", "rough",
+    ];
 
     /// The method's name, as the `method` key spells it.
     pub fn method(&self) -> &'static str {
@@ -278,20 +290,20 @@ impl Outcome {
             Outcome::Friction(o) => &o.report.warnings,
             Outcome::Mindlin(r) => &r.warnings,
             Outcome::Impact(r) => &r.warnings,
-            Outcome::Rough(_) => &[],
+            Outcome::Rough(o) => &o.report.warnings,
         }
     }
 }
 
-/// A periodic rough surface has no curvature to compare its contact with, and its report
-/// no warnings.
+/// A periodic rough surface has no curvature to compare its contact with; its report's
+/// warnings (header lines skipped, a non-periodic map, pressures above the hardness) pass on.
 impl Checked for crate::rough_case::RoughOutcome {
     fn contacts(&self) -> &[crate::validity::ContactSize] {
         &[]
     }
 
     fn warnings_mut(&mut self) -> Option<&mut Vec<String>> {
-        None
+        Some(&mut self.report.warnings)
     }
 
     fn report_value(&self) -> Option<toml::Value> {
@@ -317,6 +329,24 @@ impl Serialize for Outcome {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Issue 30 item 19: `Case::METHODS` (which the help of `kontakt solve` prints) is the
+    /// dispatch's list: each name reaches its own schema (a case with only `method` is
+    /// refused for a missing key, not as an unknown method), and an unknown method's error
+    /// names them all.
+    #[test]
+    fn methods_list_is_the_dispatch() {
+        let unknown = Case::from_toml_str("method = \"nope\"")
+            .unwrap_err()
+            .to_string();
+        for m in Case::METHODS {
+            assert!(unknown.contains(&format!("\"{m}\"")), "{unknown}");
+            match Case::from_toml_str(&format!("method = \"{m}\"\n")) {
+                Ok(case) => assert_eq!(case.method(), m),
+                Err(e) => assert!(!e.to_string().contains("invalid method"), "{m}: {e}"),
+            }
+        }
+    }
 
     /// The half-space solver's fields: three of them on the report's grid, the pressure
     /// integrating to the report's force, gap minus displacement equal to the approach

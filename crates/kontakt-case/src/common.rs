@@ -9,9 +9,7 @@ use std::path::Path;
 /// Version of the JSON result schema.
 pub const SCHEMA_VERSION: u32 = 1;
 
-/// Largest case or sweep file read \[bytes\]: 16 MiB. Case files are short TOML; gap maps
-/// and tables are separate files with their own limits (`maps`).
-pub const MAX_CASE_FILE_BYTES: u64 = 16 * 1024 * 1024;
+use crate::files::MAX_CASE_FILE_BYTES;
 
 /// The text of a case (or sweep) file at `path`, read with a size cap.
 ///
@@ -37,15 +35,16 @@ pub fn read_case_file(path: &Path) -> Result<String> {
 pub fn read_case_text(reader: impl std::io::Read, label: &str) -> Result<String> {
     use std::io::Read;
     let mut bytes = Vec::new();
-    reader
-        .take(MAX_CASE_FILE_BYTES + 1)
-        .read_to_end(&mut bytes)
-        .map_err(|e| Error::CaseFile {
-            line: None,
-            key: "path".into(),
-            message: format!("cannot read case file {label}: {e}"),
-        })?;
-    if bytes.len() as u64 > MAX_CASE_FILE_BYTES {
+    let read =
+        crate::files::Capped::new(reader, MAX_CASE_FILE_BYTES, false).read_to_end(&mut bytes);
+    if let Err(e) = read {
+        if !crate::files::is_too_large(&e) {
+            return Err(Error::CaseFile {
+                line: None,
+                key: "path".into(),
+                message: format!("cannot read case file {label}: {e}"),
+            });
+        }
         return Err(Error::CaseFile {
             line: None,
             key: "path".into(),

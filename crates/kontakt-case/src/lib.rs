@@ -14,6 +14,7 @@
 //! - [`Outcome`]: the report (stable, unit-suffixed JSON keys, `schema_version`) plus,
 //!   for the field methods, the full solution (pressure, displacement, gap per cell).
 //! - [`maps`]: gap and height maps from CSV or NumPy `.npy` files.
+//! - [`files`]: the one size-capped reader of every file a case names.
 //! - [`element_case`]: contact-element cases (`method = "element"`), not a [`Case`]: they
 //!   describe a [`kontakt::element::ContactElement`] that a multi-body code evaluates at its
 //!   own poses ([`element_from_case`]).
@@ -26,6 +27,7 @@ pub mod bem_case;
 pub mod case;
 mod common;
 pub mod element_case;
+pub mod files;
 pub mod friction_case;
 pub mod hertz_case;
 pub mod impact_case;
@@ -40,8 +42,9 @@ pub mod validity;
 
 pub use bem_case::{BemOutcome, run_bem_case, run_bem_case_on_map};
 pub use case::{Case, CaseFile, FieldView, Outcome};
-pub use common::{MAX_CASE_FILE_BYTES, SCHEMA_VERSION, read_case_file, read_case_text};
+pub use common::{SCHEMA_VERSION, read_case_file, read_case_text};
 pub use element_case::{ElementCase, element_from_case, element_from_toml};
+pub use files::{MAX_CASE_FILE_BYTES, MAX_DATA_FILE_BYTES};
 pub use friction_case::{FrictionCase, FrictionOutcome, FrictionReport, run_friction_case};
 pub use hertz_case::{ContactReport, run_case};
 pub use impact_case::{ImpactCase, ImpactReport, run_impact_case};

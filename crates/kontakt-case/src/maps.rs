@@ -1,19 +1,24 @@
 //! Gap and height maps from files: CSV (one grid row per line) or NumPy `.npy`
 //! (float64 or float32, 2-D, C order). The map itself, [`GapMap`], lives in the core
-//! library; this is the file format layer.
+//! library; this is the file format layer. Files are read through [`crate::files`], at most
+//! [`crate::files::MAX_DATA_FILE_BYTES`] (1 GiB); CSV is parsed while streaming.
 
 use kontakt::gap::{GapMap, MapKind};
 use kontakt::{Error, Result};
 use std::path::Path;
 
 /// Read a map from a CSV file (one grid row per line, `y` down the file, `x` across,
-/// comma-separated numbers, no header) or a `.npy` file (a 2-D float64 or float32
-/// array of shape `(ny, nx)`, C order), with cell spacing `spacing` \[mm\].
+/// comma-separated numbers; leading lines that do not start with a number are a header,
+/// skipped and counted) or a `.npy` file (a 2-D float64 or float32 array of shape
+/// `(ny, nx)`, C order), with cell spacing `spacing` \[mm\]; the file's values are
+/// multiplied by `to_mm` (1 for mm, 1e-3 for µm).
 ///
 /// # Errors
-/// [`Error::InvalidInput`] naming the file for an unreadable or malformed file, a
-/// ragged CSV row (named), or the errors of [`GapMap::new`].
-pub fn read_gap_map(path: &Path, spacing: [f64; 2], kind: MapKind) -> Result<GapMap> {
+/// [`Error::InvalidInput`] naming the file for an unreadable or malformed file, a file
+/// larger than [`crate::files::MAX_DATA_FILE_BYTES`], a CSV file with a NUL byte (binary), a
+/// `.npy` file without its magic bytes, a ragged CSV row (named), or the errors of
+/// [`GapMap::new`].
+pub fn read_gap_map(path: &Path, spacing: [f64; 2], kind: MapKind, to_mm: f64) -> Result<MapFile> {
     let file_err = |why: String| {
         // The readers' messages may span lines (the .npy header parser draws a caret
         // under the bad character): one line, as every error.
@@ -21,22 +26,61 @@ pub fn read_gap_map(path: &Path, spacing: [f64; 2], kind: MapKind) -> Result<Gap
         Error::invalid(
             "gap_map.file",
             path.display(),
-            format!("a readable CSV or .npy gap map ({why})"),
+            format!("a readable CSV or .npy gap map of at most 1 GiB ({why})"),
         )
     };
-    let bytes = std::fs::read(path).map_err(|e| file_err(e.to_string()))?;
     let is_npy = path
         .extension()
         .is_some_and(|e| e.eq_ignore_ascii_case("npy"));
-    let (nx, ny, values) = if is_npy {
-        read_npy(&bytes).map_err(file_err)?
+    let reader =
+        crate::files::open(path, crate::files::MAX_DATA_FILE_BYTES, !is_npy).map_err(file_err)?;
+    let ((nx, ny, mut values), skipped_lines) = if is_npy {
+        let array = read_npy(&read_npy_bytes(reader).map_err(file_err)?).map_err(file_err)?;
+        (array, 0)
     } else {
-        read_csv(&bytes).map_err(file_err)?
+        read_csv(reader).map_err(file_err)?
     };
-    GapMap::new(nx, ny, spacing, values, kind)
+    if to_mm != 1.0 {
+        values.iter_mut().for_each(|v| *v *= to_mm);
+    }
+    let map = GapMap::new(nx, ny, spacing, values, kind)?;
+    Ok(MapFile { map, skipped_lines })
 }
 
-fn read_csv(bytes: &[u8]) -> std::result::Result<(usize, usize, Vec<f64>), String> {
+/// A map read by [`read_gap_map`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct MapFile {
+    /// The map \[mm\].
+    pub map: GapMap,
+    /// Leading lines of a CSV file skipped as a header (not starting with a number).
+    pub skipped_lines: usize,
+}
+
+/// The bytes of a `.npy` file, after its magic bytes are checked (a file of zeros or text
+/// fails after six bytes, not after the size limit); `reader` is capped by its caller.
+fn read_npy_bytes(mut reader: impl std::io::Read) -> std::result::Result<Vec<u8>, String> {
+    let mut bytes = vec![0u8; 6];
+    let magic = reader.read_exact(&mut bytes).is_ok() && bytes == b"\x93NUMPY";
+    if !magic {
+        return Err("no .npy magic bytes \\x93NUMPY at the start of the file".into());
+    }
+    reader.read_to_end(&mut bytes).map_err(|e| e.to_string())?;
+    Ok(bytes)
+}
+
+/// The report's note for `n` skipped header lines of the file named by `key`, if any.
+pub fn skipped_note(key: &str, n: usize) -> Option<String> {
+    (n > 0).then(|| {
+        format!(
+            "{key}: skipped {n} header line{} before the first line of numbers",
+            if n == 1 { "" } else { "s" }
+        )
+    })
+}
+
+type Csv = ((usize, usize, Vec<f64>), usize);
+
+fn read_csv(bytes: impl std::io::Read) -> std::result::Result<Csv, String> {
     let mut reader = csv::ReaderBuilder::new()
         .has_headers(false)
         .trim(csv::Trim::All)
@@ -46,9 +90,19 @@ fn read_csv(bytes: &[u8]) -> std::result::Result<(usize, usize, Vec<f64>), Strin
     let mut values = Vec::new();
     let mut nx = 0;
     let mut ny = 0;
+    let mut skipped = 0;
     for (row, record) in reader.records().enumerate() {
-        let record = record.map_err(|e| e.to_string())?;
+        let record = record.map_err(|e| match e.kind() {
+            csv::ErrorKind::Io(io) => io.to_string(),
+            _ => e.to_string(),
+        })?;
         if record.iter().all(str::is_empty) {
+            continue;
+        }
+        if ny == 0
+            && crate::topography::is_header_line(&record.iter().collect::<Vec<_>>().join(","))
+        {
+            skipped += 1;
             continue;
         }
         if ny == 0 {
@@ -76,7 +130,7 @@ fn read_csv(bytes: &[u8]) -> std::result::Result<(usize, usize, Vec<f64>), Strin
         }
         ny += 1;
     }
-    Ok((nx, ny, values))
+    Ok(((nx, ny, values), skipped))
 }
 
 /// The message for a row written with decimal commas and `;`, tab or space between the
@@ -214,12 +268,18 @@ mod tests {
 
     #[test]
     fn csv_rows_and_errors() {
-        let (nx, ny, v) = read_csv(b"1, 2, 3\n4,5,6\n").unwrap();
-        assert_eq!((nx, ny), (3, 2));
+        let ((nx, ny, v), skipped) = read_csv(&b"1, 2, 3\n4,5,6\n"[..]).unwrap();
+        assert_eq!((nx, ny, skipped), (3, 2, 0));
         assert_eq!(v, vec![1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
-        let e = read_csv(b"1,2,3\n4,5\n").unwrap_err();
+        // A profilometer's header lines before the numbers are skipped and counted; the
+        // same line after the first row of numbers is an error.
+        let ((nx, ny, v), skipped) = read_csv(&b"Height map\nx0, x1\n1, 2\n3, 4\n"[..]).unwrap();
+        assert_eq!((nx, ny, skipped, v), (2, 2, 2, vec![1.0, 2.0, 3.0, 4.0]));
+        let e = read_csv(&b"1, 2\nx0, x1\n"[..]).unwrap_err();
+        assert!(e.contains("`x0` is not a number"), "{e}");
+        let e = read_csv(&b"1,2,3\n4,5\n"[..]).unwrap_err();
         assert!(e.contains("row 2 has 2 values"), "{e}");
-        let e = read_csv(b"1,x\n").unwrap_err();
+        let e = read_csv(&b"1,x\n"[..]).unwrap_err();
         assert!(e.contains("`x` is not a number"), "{e}");
         // Decimal commas (a spreadsheet's export) are named as such, whatever the separator.
         for text in [
@@ -231,7 +291,7 @@ mod tests {
             assert!(e.contains("decimal commas") && e.contains("row 1"), "{e}");
         }
         // Other separators without decimal commas keep the plain message.
-        let e = read_csv(b"1;x\n").unwrap_err();
+        let e = read_csv(&b"1;x\n"[..]).unwrap_err();
         assert!(e.contains("`1;x` is not a number"), "{e}");
     }
 
@@ -323,7 +383,7 @@ mod tests {
             std::thread::current().id()
         ));
         std::fs::write(&path, npy_bytes("[('a', '<f8')]", "()", &[0; 8])).unwrap();
-        let e = read_gap_map(&path, [0.01, 0.01], MapKind::Gap).unwrap_err();
+        let e = read_gap_map(&path, [0.01, 0.01], MapKind::Gap, 1.0).unwrap_err();
         std::fs::remove_file(&path).unwrap();
         let m = e.to_string();
         assert_eq!(e.field(), Some("gap_map.file"));
@@ -340,9 +400,30 @@ mod tests {
             std::thread::current().id()
         ));
         std::fs::write(&path, "0.1, 0.0\n0.0, 0.1\n").unwrap();
-        let e = read_gap_map(&path, [0.01, 1e308], MapKind::Gap).unwrap_err();
+        let e = read_gap_map(&path, [0.01, 1e308], MapKind::Gap, 1.0).unwrap_err();
         std::fs::remove_file(&path).unwrap();
         assert_eq!(e.field(), Some("spacing[1]"), "{e}");
+    }
+
+    /// Issue 30 item 6: `/dev/zero` as a gap map grew to 4 GB before failing; through the
+    /// capped reader it fails at its first byte as CSV and at its magic bytes as `.npy`.
+    #[cfg(unix)]
+    #[test]
+    fn dev_zero_as_a_map_fails_at_once() {
+        let e = read_gap_map(Path::new("/dev/zero"), [0.01, 0.01], MapKind::Gap, 1.0)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("gap_map.file") && e.contains("NUL byte at offset 0"),
+            "{e}"
+        );
+        let link = std::env::temp_dir().join(format!("kontakt-zero-{}.npy", std::process::id()));
+        std::os::unix::fs::symlink("/dev/zero", &link).unwrap();
+        let e = read_gap_map(&link, [0.01, 0.01], MapKind::Gap, 1.0)
+            .unwrap_err()
+            .to_string();
+        std::fs::remove_file(&link).unwrap();
+        assert!(e.contains("no .npy magic bytes"), "{e}");
     }
 
     #[test]
@@ -353,12 +434,12 @@ mod tests {
             std::thread::current().id()
         ));
         std::fs::write(&path, "0.1, 0.0, 0.1\n0.0, 0.0\n0.1, 0.0, 0.1\n").unwrap();
-        let e = read_gap_map(&path, [0.01, 0.01], MapKind::Gap).unwrap_err();
+        let e = read_gap_map(&path, [0.01, 0.01], MapKind::Gap, 1.0).unwrap_err();
         std::fs::remove_file(&path).unwrap();
         assert_eq!(e.field(), Some("gap_map.file"));
         assert!(e.to_string().contains("row 2 has 2 values"), "{e}");
         // A file that does not exist.
-        let e = read_gap_map(&path, [0.01, 0.01], MapKind::Gap).unwrap_err();
+        let e = read_gap_map(&path, [0.01, 0.01], MapKind::Gap, 1.0).unwrap_err();
         assert_eq!(e.field(), Some("gap_map.file"));
     }
 }

@@ -8,8 +8,8 @@
 //! kind = "roller_rib"        # built-in pairing of Wirsching et al. (2020) Table 1 ...
 //! pairing = "torus-torus-14"
 //! # ... or explicit: face = { shape = "torus", radius_mm = 14.0, eccentricity_mm = 2.0 },
-//! #                  rib = { shape = "torus", radius_mm = 30.0 }, contact_height_mm = 2.75,
-//! #                  bearing = { bore_mm = 60.0, ... }
+//! #                  rib = { shape = "torus", radius_mm = 30.0 }, contact_height_mm = 2.75
+//! #                  (or rib_angle_deg = 89.0), bearing = { bore_mm = 60.0, ... }
 //! # kind = "hertz": radii1_mm = [10, 10], radii2_mm = [inf, inf], angle_deg = 0
 //! # kind = "surfaces": [geometry.body1] / [geometry.body2] placed surfaces (see below)
 //!
@@ -139,9 +139,15 @@ pub enum GeometrySpec {
         /// Rib.
         #[serde(default)]
         rib: Option<RibShape>,
-        /// Contact height \[mm\].
+        /// Contact height \[mm\]: the distance of the contact from the roller axis (default
+        /// 2.75 mm, the height of Table 1); or give `rib_angle_deg`.
         #[serde(default)]
         contact_height_mm: Option<f64>,
+        /// Rib angle between raceway and rib \[deg\], as a drawing gives it: the contact
+        /// height follows ([`RollerRibSpec::contact_height_for_rib_angle`]); not with
+        /// `contact_height_mm`.
+        #[serde(default)]
+        rib_angle_deg: Option<f64>,
         /// Bearing data (default: the 60 mm bore bearing of docs/bearing.md).
         #[serde(default)]
         bearing: Option<TaperedRollerBearing>,
@@ -467,6 +473,7 @@ pub fn roller_rib_from_spec(geometry: &GeometrySpec) -> Result<Option<(String, R
         face,
         rib,
         contact_height_mm,
+        rib_angle_deg,
         bearing,
     } = geometry
     else {
@@ -494,14 +501,44 @@ pub fn roller_rib_from_spec(geometry: &GeometrySpec) -> Result<Option<(String, R
             ));
         }
     };
-    if let Some(h) = contact_height_mm {
-        spec.contact_height = *h;
-    }
     if let Some(b) = bearing {
         spec.bearing = *b;
     }
-    let pair = RollerRib::new(spec).map_err(|e| e.map_field(|f| format!("geometry.{f}")))?;
+    match (contact_height_mm, rib_angle_deg) {
+        (Some(_), Some(_)) => {
+            return Err(Error::invalid(
+                "geometry.rib_angle_deg",
+                "given together with contact_height_mm",
+                "either contact_height_mm or rib_angle_deg (the height follows from the angle)",
+            ));
+        }
+        (Some(h), None) => spec.contact_height = *h,
+        (None, Some(alpha)) => {
+            spec.contact_height = spec
+                .contact_height_for_rib_angle(*alpha)
+                .map_err(|e| e.map_field(roller_rib_key))?;
+        }
+        (None, None) => {}
+    }
+    let pair = RollerRib::new(spec).map_err(|e| e.map_field(roller_rib_key))?;
     Ok(Some((label, pair)))
+}
+
+/// The case-file key of a [`RollerRib`] field: `bearing.bore` is `geometry.bearing.bore_mm`,
+/// `face.radius` is `geometry.face.radius_mm` (the library's names carry no unit suffix).
+fn roller_rib_key(f: &str) -> String {
+    let key = match f {
+        "bearing.bore"
+        | "bearing.outside_diameter"
+        | "bearing.roller_large_end_radius"
+        | "bearing.inner_raceway_radius"
+        | "face.radius"
+        | "face.eccentricity"
+        | "rib.radius"
+        | "contact_height" => format!("{f}_mm"),
+        other => other.to_string(),
+    };
+    format!("geometry.{key}")
 }
 
 /// Solve a PimP case.

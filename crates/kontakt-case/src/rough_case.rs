@@ -103,6 +103,14 @@ pub enum SurfaceSpec {
         /// `.sdf` (their files give it).
         #[serde(default)]
         spacing_mm: Option<[f64; 2]>,
+        /// Unit of the file's lengths: `"mm"` (default), `"um"` (or `"µm"`), `"nm"`, `"m"`;
+        /// the heights of a CSV or `.npy` map, `x`, `y` and `z` of an `.xyz` file. Refused
+        /// for `.sdf` (its header gives the scales).
+        #[serde(default)]
+        unit: Option<String>,
+        /// Factor on the heights after `unit` (a profilometer's raw counts), > 0, default 1.
+        #[serde(default)]
+        scale: Option<f64>,
     },
 }
 
@@ -112,6 +120,12 @@ pub enum SurfaceSpec {
 pub struct RoughLoad {
     /// Nominal pressures \[MPa\], ascending, each > 0; 1..=100 of them.
     pub mean_pressure_mpa: Vec<f64>,
+    /// Indentation hardness of the softer body \[MPa\] (optional, > 0): the report warns at
+    /// each load whose largest pressure exceeds it (plastic flow of the summits, outside the
+    /// elastic solution). Without it the report warns above `0.1 E*`, above the hardness of
+    /// any metal.
+    #[serde(default)]
+    pub hardness_mpa: Option<f64>,
 }
 
 /// `[solver]`.
@@ -122,6 +136,9 @@ pub struct RoughSolverSpec {
     pub tolerance: f64,
     /// Most iterations per load (default 3000).
     pub max_iterations: usize,
+    /// Memory budget \[GiB\] (default [`DEFAULT_MEMORY_GIB`]): a grid whose estimated
+    /// memory ([`memory_estimate`]) exceeds it is refused before anything is allocated.
+    pub max_memory_gib: f64,
 }
 
 impl Default for RoughSolverSpec {
@@ -129,8 +146,61 @@ impl Default for RoughSolverSpec {
         RoughSolverSpec {
             tolerance: 1e-6,
             max_iterations: 3000,
+            max_memory_gib: DEFAULT_MEMORY_GIB,
         }
     }
+}
+
+/// Default memory budget of a rough case \[GiB\]: 16, two thirds of a 24 GiB machine (the
+/// rest for the system and the plots). 8192 × 8192 cells take about 9 GiB; 16384 × 16384
+/// about 35 GiB, refused.
+pub const DEFAULT_MEMORY_GIB: f64 = 16.0;
+
+/// The bytes a rough case of `points` cells will hold while it solves: the contact
+/// ([`RoughContact::memory_estimate`]: solver, gap, patch search), the height map and the
+/// pressure copied into the outcome (8 bytes per cell each). About 137 bytes per cell.
+///
+/// # Errors
+/// [`Error::InvalidInput`] for a thread count outside its range.
+pub fn memory_estimate(
+    points: [usize; 2],
+    options: &kontakt::halfspace::SolverOptions,
+) -> Result<u64> {
+    let n = (points[0] as u64).saturating_mul(points[1] as u64);
+    Ok(RoughContact::memory_estimate(points, options)?.saturating_add(n.saturating_mul(16)))
+}
+
+/// Refuse a grid whose [`memory_estimate`] exceeds `solver.max_memory_gib`, naming `key`
+/// (the case key the grid comes from) with the estimate and the budget.
+fn check_memory(
+    key: &'static str,
+    points: [usize; 2],
+    budget_gib: f64,
+    options: &kontakt::halfspace::SolverOptions,
+) -> Result<()> {
+    let bytes = memory_estimate(points, options)?;
+    let gib = bytes as f64 / f64::from(1u32 << 30);
+    if gib > budget_gib {
+        let per_cell = bytes as f64 / (points[0] as f64 * points[1] as f64);
+        let side = ((budget_gib * f64::from(1u32 << 30) / per_cell).sqrt() as usize) & !1;
+        return Err(Error::invalid(
+            key,
+            format!("{points:?}"),
+            format!(
+                "a grid whose estimated memory fits solver.max_memory_gib = {budget_gib} GiB; \
+                 {} x {} cells need about {} ({per_cell:.0} bytes per cell), the budget \
+                 holds about {side} x {side}",
+                points[0],
+                points[1],
+                if gib >= 1.0 {
+                    format!("{gib:.1} GiB")
+                } else {
+                    format!("{:.1} MiB", gib * 1024.0)
+                }
+            ),
+        ));
+    }
+    Ok(())
 }
 
 /// One load of a [`RoughReport`].
@@ -189,6 +259,9 @@ pub struct RoughReport {
     pub e_star_mpa: f64,
     /// One row per load, in the case's order.
     pub rows: Vec<RoughRow>,
+    /// What the user should know about the input or the result: header lines skipped in
+    /// the map file, a map that is not periodic, pressures above the hardness.
+    pub warnings: Vec<String>,
 }
 
 /// A rough case's report and the pressure field at its highest load (for maps).
@@ -252,6 +325,30 @@ pub(crate) fn run_rough_case_unchecked(case: &RoughCase, base_dir: &Path) -> Res
             ));
         }
     }
+    let budget = case.solver.max_memory_gib;
+    if !(budget.is_finite() && budget > 0.0) {
+        return Err(Error::invalid(
+            "solver.max_memory_gib",
+            budget,
+            "a finite memory budget > 0 GiB",
+        ));
+    }
+    let options = kontakt::halfspace::SolverOptions {
+        tolerance: case.solver.tolerance,
+        max_iterations: case.solver.max_iterations,
+        ..Default::default()
+    };
+    let hardness = match case.load.hardness_mpa {
+        Some(h) if !(h.is_finite() && h > 0.0) => {
+            return Err(Error::invalid(
+                "load.hardness_mpa",
+                h,
+                "a finite hardness > 0 MPa",
+            ));
+        }
+        h => h,
+    };
+    let mut warnings = Vec::new();
     let (label, map, rms_height, rms_slope) = match &case.surface {
         SurfaceSpec::SelfAffine {
             points,
@@ -289,7 +386,7 @@ pub(crate) fn run_rough_case_unchecked(case: &RoughCase, base_dir: &Path) -> Res
                 amplitude,
                 seed: *seed,
             };
-            let s = spec.generate().map_err(|e| {
+            let name_key = |e: Error| {
                 e.map_field(|f| match f {
                     "amplitude.rms_slope" => "surface.rms_slope".into(),
                     "amplitude.rms_height" => "surface.rms_height_mm".into(),
@@ -300,13 +397,61 @@ pub(crate) fn run_rough_case_unchecked(case: &RoughCase, base_dir: &Path) -> Res
                     "long_cutoff" | "rolloff" | "short_cutoff" => format!("surface.{f}_mm"),
                     other => format!("surface.{other}"),
                 })
-            })?;
+            };
+            // Checked, then counted before the surface is generated: nothing is allocated
+            // for a grid beyond the budget (16384² aborted the process on an allocation
+            // failure).
+            spec.validate().map_err(name_key)?;
+            check_memory("surface.points", *points, budget, &options)?;
+            let s = spec.generate().map_err(name_key)?;
             ("self_affine", s.height_map()?, s.rms_height, s.rms_slope)
         }
-        SurfaceSpec::Map { file, spacing_mm } => {
+        SurfaceSpec::Map {
+            file,
+            spacing_mm,
+            unit,
+            scale,
+        } => {
             let path = base_dir.join(file);
-            let map = match (crate::topography::carries_grid(&path), spacing_mm) {
-                (true, None) => crate::topography::read_topography(&path)?,
+            let is_sdf = path
+                .extension()
+                .is_some_and(|e| e.eq_ignore_ascii_case("sdf"));
+            let to_mm = match unit.as_deref() {
+                Some(u) if is_sdf => {
+                    return Err(Error::invalid(
+                        "surface.unit",
+                        u,
+                        "no unit for an .sdf file (its header gives the scales in metres)",
+                    ));
+                }
+                None | Some("mm") => 1.0,
+                Some("um" | "µm" | "μm") => 1e-3,
+                Some("nm") => 1e-6,
+                Some("m") => 1e3,
+                Some(u) => {
+                    return Err(Error::invalid(
+                        "surface.unit",
+                        u,
+                        "\"mm\", \"um\" (or \"µm\"), \"nm\" or \"m\"",
+                    ));
+                }
+            };
+            let scale = match *scale {
+                None => 1.0,
+                Some(s) if s.is_finite() && s > 0.0 => s,
+                Some(s) => {
+                    return Err(Error::invalid(
+                        "surface.scale",
+                        s,
+                        "a finite factor > 0 on the heights",
+                    ));
+                }
+            };
+            let (map, skipped) = match (crate::topography::carries_grid(&path), spacing_mm) {
+                (true, None) => {
+                    let t = crate::topography::read_topography(&path, to_mm)?;
+                    (t.map, t.skipped_lines)
+                }
                 (true, Some(s)) => {
                     return Err(Error::invalid(
                         "surface.spacing_mm",
@@ -322,15 +467,34 @@ pub(crate) fn run_rough_case_unchecked(case: &RoughCase, base_dir: &Path) -> Res
                     ));
                 }
                 (false, Some(spacing)) => {
-                    crate::maps::read_gap_map(&path, *spacing, MapKind::Height).map_err(|e| {
-                        e.map_field(|f| match f {
-                            "spacing[0]" => "surface.spacing_mm[0]".into(),
-                            "spacing[1]" => "surface.spacing_mm[1]".into(),
-                            _ => "surface.file".into(),
-                        })
-                    })?
+                    let m = crate::maps::read_gap_map(&path, *spacing, MapKind::Height, to_mm)
+                        .map_err(|e| {
+                            e.map_field(|f| match f {
+                                "spacing[0]" => "surface.spacing_mm[0]".into(),
+                                "spacing[1]" => "surface.spacing_mm[1]".into(),
+                                _ => "surface.file".into(),
+                            })
+                        })?;
+                    (m.map, m.skipped_lines)
                 }
             };
+            warnings.extend(crate::maps::skipped_note("surface.file", skipped));
+            check_memory(
+                "surface.file",
+                [map.grid().nx(), map.grid().ny()],
+                budget,
+                &options,
+            )?;
+            let map = if scale == 1.0 {
+                map
+            } else {
+                // The values are gaps max(z) - z: a factor > 0 on z is the same on them.
+                let g = map.grid();
+                let values = map.values().iter().map(|v| v * scale).collect();
+                GapMap::new(g.nx(), g.ny(), [g.dx(), g.dy()], values, MapKind::Gap)
+                    .map_err(|e| e.map_field(|_| "surface.scale".into()))?
+            };
+            warnings.extend(periodicity_warning(&map));
             let spacing = [map.grid().dx(), map.grid().dy()];
             let (h, s) = map_roughness(&map, spacing);
             if !(s > 0.0) {
@@ -343,22 +507,23 @@ pub(crate) fn run_rough_case_unchecked(case: &RoughCase, base_dir: &Path) -> Res
             ("map", map, h, s)
         }
     };
-    let mut contact = RoughContact::new(
-        &map,
-        e_star,
-        rms_slope,
-        kontakt::halfspace::SolverOptions {
-            tolerance: case.solver.tolerance,
-            max_iterations: case.solver.max_iterations,
-            ..Default::default()
-        },
-    )
-    .map_err(|e| e.map_field(|f| format!("solver.{f}")))?;
+    let mut contact = RoughContact::new(&map, e_star, rms_slope, options).map_err(|e| {
+        e.map_field(|f| match (f, &case.surface) {
+            ("grid", SurfaceSpec::SelfAffine { .. }) => "surface.points".into(),
+            ("grid", SurfaceSpec::Map { .. }) => "surface.file".into(),
+            _ => format!("solver.{f}"),
+        })
+    })?;
     let mut rows = Vec::with_capacity(loads.len());
+    let mut above = Vec::new();
     for (i, &p) in loads.iter().enumerate() {
         let r = contact
             .solve(p)
             .map_err(|e| e.map_field(|_| format!("load.mean_pressure_mpa[{i}]")))?;
+        let limit = hardness.unwrap_or(METAL_HARDNESS_OVER_E_STAR * e_star);
+        if r.max_pressure > limit {
+            above.push((i, r.max_pressure, share_above(contact.pressure(), limit)));
+        }
         rows.push(RoughRow {
             mean_pressure_mpa: p,
             reduced_pressure: p / (e_star * rms_slope),
@@ -375,6 +540,7 @@ pub(crate) fn run_rough_case_unchecked(case: &RoughCase, base_dir: &Path) -> Res
             iterations: r.status.iterations,
         });
     }
+    warnings.extend(hardness_warning(&above, hardness, e_star));
     let grid = *contact.grid();
     Ok(RoughOutcome {
         report: RoughReport {
@@ -389,11 +555,100 @@ pub(crate) fn run_rough_case_unchecked(case: &RoughCase, base_dir: &Path) -> Res
             rms_slope,
             e_star_mpa: e_star,
             rows,
+            warnings,
         },
         grid,
         pressure: contact.pressure().to_vec(),
     })
 }
+
+/// Largest `H/E*` of engineering metals: hardened bearing steel has H ≈ 7-8 GPa against
+/// E* ≈ 115 GPa (0.065); softer metals lie lower. Above `0.1 E*` no metal stays elastic.
+const METAL_HARDNESS_OVER_E_STAR: f64 = 0.1;
+
+/// The warning when the largest pressure of some loads exceeds the hardness (given, or
+/// `0.1 E*` for any metal when not): there the elastic solution holds no longer, the summits
+/// flow plastically (Johnson 1985 §6.1: a fully plastic indentation's mean pressure is the
+/// hardness), so the real contact area is larger and the pressures lower than reported.
+/// `above` holds per such load its index, its largest pressure \[MPa\] and the fraction of
+/// its real contact area above the limit.
+fn hardness_warning(
+    above: &[(usize, f64, f64)],
+    hardness: Option<f64>,
+    e_star: f64,
+) -> Option<String> {
+    let (first, last) = (above.first()?, above.last()?);
+    let limit = match hardness {
+        Some(h) => format!("load.hardness_mpa = {h} MPa"),
+        None => format!(
+            "0.1 E* = {:.0} MPa, above the hardness of any metal (give load.hardness_mpa)",
+            METAL_HARDNESS_OVER_E_STAR * e_star
+        ),
+    };
+    let share = above.iter().map(|a| a.2).fold(0.0, f64::max);
+    let loads = if above.len() == 1 {
+        format!("load.mean_pressure_mpa[{}]", first.0)
+    } else {
+        format!(
+            "{} loads (load.mean_pressure_mpa[{}..={}])",
+            above.len(),
+            first.0,
+            last.0
+        )
+    };
+    Some(format!(
+        "the largest pressure exceeds {limit} at {loads}: up to {:.0} MPa, on up to {:.1} % \
+         of the real contact area; the summits flow plastically there, so the real area is \
+         larger and the pressures lower than this elastic solution",
+        above.iter().map(|a| a.1).fold(0.0, f64::max),
+        100.0 * share
+    ))
+}
+
+/// The fraction of the loaded cells whose pressure exceeds `limit`.
+fn share_above(pressure: &[f64], limit: f64) -> f64 {
+    let loaded = pressure.iter().filter(|&&q| q > 0.0).count().max(1);
+    pressure.iter().filter(|&&q| q > limit).count() as f64 / loaded as f64
+}
+
+/// A warning when a measured map is not periodic: the solver joins its opposite edges, so
+/// a height step across that border (a tilt, a form, a cut through a random surface) is a
+/// ridge that carries spurious pressure along the border. The rms height jump across each
+/// border is compared with the rms step between neighbouring cells inside the map; above
+/// [`PERIODIC_JUMP_RATIO`] times, the map is named not periodic.
+fn periodicity_warning(map: &GapMap) -> Option<String> {
+    let (nx, ny) = (map.grid().nx(), map.grid().ny());
+    let v = map.values();
+    let rms = |pairs: &mut dyn Iterator<Item = (f64, f64)>| {
+        let (mut s, mut n) = (0.0, 0usize);
+        for (a, b) in pairs {
+            s += (a - b) * (a - b);
+            n += 1;
+        }
+        (s / n.max(1) as f64).sqrt()
+    };
+    let at = |i: usize, j: usize| v[j * nx + i];
+    let jump_x = rms(&mut (0..ny).map(|j| (at(0, j), at(nx - 1, j))));
+    let step_x = rms(&mut (0..ny).flat_map(|j| (1..nx).map(move |i| (at(i, j), at(i - 1, j)))));
+    let jump_y = rms(&mut (0..nx).map(|i| (at(i, 0), at(i, ny - 1))));
+    let step_y = rms(&mut (0..nx).flat_map(|i| (1..ny).map(move |j| (at(i, j), at(i, j - 1)))));
+    let ratio = |jump: f64, step: f64| if step > 0.0 { jump / step } else { 0.0 };
+    let (rx, ry) = (ratio(jump_x, step_x), ratio(jump_y, step_y));
+    (rx > PERIODIC_JUMP_RATIO || ry > PERIODIC_JUMP_RATIO).then(|| {
+        format!(
+            "surface.file: the map is not periodic (the rms height jump across its opposite \
+             edges is {rx:.1} x (x) and {ry:.1} x (y) the rms step between neighbouring cells); \
+             the solver joins the edges, so pressures along the borders are spurious: remove \
+             the form and tilt, or cut or window the measurement to a periodic patch"
+        )
+    })
+}
+
+/// The ratio of the rms jump across a map's border to its rms step between neighbours above
+/// which [`periodicity_warning`] warns. A periodic map has a ratio about 1 (the border is
+/// one more step); a self-affine surface cut from a larger one has a jump of about its rms
+/// height, many steps.
+const PERIODIC_JUMP_RATIO: f64 = 3.0;
 
 /// Rms height and rms slope (central differences, periodic) of a height map. The map's
 /// values are the gap `max(z) - z`, whose deviations are those of `z` with the sign

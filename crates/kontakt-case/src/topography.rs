@@ -3,8 +3,9 @@
 //! and Jiang's SDF, exported by most profilometer and interferometer software). CSV
 //! matrices and `.npy` arrays carry no spacing; they are read by [`crate::maps`].
 //!
-//! - `.xyz`: one point per line, `x y z` separated by spaces, tabs, commas or `;`, in mm;
-//!   `#` starts a comment. The points must form a complete uniform grid (any order): the
+//! - `.xyz`: one point per line, `x y z` separated by spaces, tabs, commas or `;`, in mm
+//!   (or the case's `unit`); `#` starts a comment; leading lines that do not start with a
+//!   number are a header and skipped (counted). The points must form a complete uniform grid (any order): the
 //!   distinct `x` and `y` values are the grid's columns and rows, equally spaced to 1e-6
 //!   of a cell, every node given exactly once.
 //! - `.sdf`: the ASCII variant (first line `aBCR-1.0`): `key = value` header lines
@@ -17,6 +18,7 @@
 
 use kontakt::gap::{GapMap, MapKind};
 use kontakt::{Error, Result};
+use std::io::BufRead;
 use std::path::Path;
 
 /// Whether `path` names a topography that carries its own grid (`.xyz` or `.sdf`).
@@ -28,67 +30,97 @@ pub fn carries_grid(path: &Path) -> bool {
 
 /// Read a `.xyz` or `.sdf` topography as heights \[mm\].
 ///
+/// The file is read while streaming through [`crate::files`] (at most
+/// [`crate::files::MAX_DATA_FILE_BYTES`], no NUL byte). In an `.xyz` file, leading lines whose
+/// first field is not a number (a profilometer's column titles, `x0 y0 z0`, `X [µm]`) are
+/// skipped; their count is [`Topography::skipped_lines`]. `xyz_to_mm` converts the `.xyz`
+/// file's lengths (x, y and z) to mm (1 for mm, 1e-3 for µm); an `.sdf` file gives its own
+/// scales in metres.
+///
 /// # Errors
 /// [`Error::InvalidInput`] naming `surface.file` with the file and what is wrong: an
-/// unreadable file, a line that is not three numbers (named), a grid with a missing or
-/// repeated node or unequal spacing, an SDF header without a needed key, a value count
-/// that is not `NumPoints × NumProfiles`, a binary SDF.
-pub fn read_topography(path: &Path) -> Result<GapMap> {
+/// unreadable file, a file over the size limit or with a NUL byte, a line that is not three
+/// numbers (named), a grid with a missing or repeated node or unequal spacing, an SDF header
+/// without a needed key, a value count that is not `NumPoints × NumProfiles`, a binary SDF.
+pub fn read_topography(path: &Path, xyz_to_mm: f64) -> Result<Topography> {
     let err = |why: String| Error::invalid("surface.file", path.display(), why);
-    let text = read_capped(path).map_err(err)?;
+    let reader = crate::files::open(path, crate::files::MAX_DATA_FILE_BYTES, true)
+        .map_err(|e| err(format!("a readable file ({e})")))?;
     let is_sdf = path
         .extension()
         .and_then(|e| e.to_str())
         .is_some_and(|e| e.eq_ignore_ascii_case("sdf"));
-    let (nx, ny, spacing, values) = if is_sdf {
-        parse_sdf(&text).map_err(err)?
+    let ((nx, ny, spacing, values), skipped_lines) = if is_sdf {
+        (parse_sdf(reader).map_err(err)?, 0)
     } else {
-        parse_xyz(&text).map_err(err)?
+        parse_xyz(reader, xyz_to_mm).map_err(err)?
     };
-    GapMap::new(nx, ny, spacing, values, MapKind::Height)
-        .map_err(|e| e.map_field(|_| "surface.file".into()))
+    let map = GapMap::new(nx, ny, spacing, values, MapKind::Height)
+        .map_err(|e| e.map_field(|_| "surface.file".into()))?;
+    Ok(Topography { map, skipped_lines })
 }
 
-/// Largest topography file read (1 GiB: a 4096² grid as `x y z` text is about 0.5 GiB).
-pub const MAX_TOPOGRAPHY_BYTES: u64 = 1 << 30;
+/// A topography read by [`read_topography`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct Topography {
+    /// The heights as a map (values: the gap `max(z) - z`) \[mm\].
+    pub map: GapMap,
+    /// Leading lines skipped as a header (not starting with a number).
+    pub skipped_lines: usize,
+}
 
-/// The file's text, read up to [`MAX_TOPOGRAPHY_BYTES`].
-fn read_capped(path: &Path) -> std::result::Result<String, String> {
-    use std::io::Read;
-    let file = std::fs::File::open(path).map_err(|e| format!("a readable file ({e})"))?;
-    let mut bytes = Vec::new();
-    file.take(MAX_TOPOGRAPHY_BYTES + 1)
-        .read_to_end(&mut bytes)
-        .map_err(|e| format!("a readable file ({e})"))?;
-    if bytes.len() as u64 > MAX_TOPOGRAPHY_BYTES {
-        return Err(format!(
-            "a topography file of at most {MAX_TOPOGRAPHY_BYTES} bytes"
-        ));
-    }
-    String::from_utf8(bytes).map_err(|_| "a text file (UTF-8 or ASCII)".to_string())
+/// Whether a text line starts with something that is not a number: a header line of a
+/// profilometer's export (`x0,y0,z0`, `X [µm]; Y [µm]; Z [nm]`, `Width: 1 mm`). Such lines
+/// are skipped before the first line of numbers; after it, they are errors.
+pub(crate) fn is_header_line(line: &str) -> bool {
+    line.split(|c: char| c.is_whitespace() || c == ',' || c == ';')
+        .find(|f| !f.is_empty())
+        .is_some_and(|f| f.parse::<f64>().is_err())
+}
+
+/// The lines of a capped reader, the reader's errors as messages.
+fn lines(reader: impl BufRead) -> impl Iterator<Item = std::result::Result<String, String>> {
+    reader
+        .lines()
+        .map(|l| l.map_err(|e| format!("a readable text file ({e})")))
 }
 
 type Grid = (usize, usize, [f64; 2], Vec<f64>);
 
-fn parse_xyz(text: &str) -> std::result::Result<Grid, String> {
+fn parse_xyz(reader: impl BufRead, to_mm: f64) -> std::result::Result<(Grid, usize), String> {
     let mut points = Vec::new();
-    for (k, line) in text.lines().enumerate() {
+    let mut skipped = 0;
+    for (k, line) in lines(reader).enumerate() {
+        let line = line?;
         let line = line.split('#').next().unwrap_or_default().trim();
         if line.is_empty() {
+            continue;
+        }
+        if points.is_empty() && is_header_line(line) {
+            skipped += 1;
             continue;
         }
         let fields: Vec<&str> = line
             .split(|c: char| c.is_whitespace() || c == ',' || c == ';')
             .filter(|f| !f.is_empty())
             .collect();
-        let nums: Vec<f64> = fields.iter().filter_map(|f| f.parse().ok()).collect();
+        let nums: Vec<f64> = fields
+            .iter()
+            .filter_map(|f| f.parse::<f64>().ok())
+            .map(|v| v * to_mm)
+            .collect();
         if fields.len() != 3 || nums.len() != 3 || nums.iter().any(|v| !v.is_finite()) {
             return Err(format!(
-                "an .xyz file of lines `x y z` (three finite numbers, mm); line {} is `{line}`",
+                "an .xyz file of lines `x y z` (three finite numbers); line {} is `{line}`",
                 k + 1
             ));
         }
         points.push([nums[0], nums[1], nums[2]]);
+    }
+    if points.is_empty() {
+        return Err(format!(
+            "an .xyz file with lines of numbers `x y z`; it has none ({skipped} header lines)"
+        ));
     }
     let axis = |c: usize| -> std::result::Result<(f64, f64, usize), String> {
         let mut v: Vec<f64> = points.iter().map(|p| p[c]).collect();
@@ -133,12 +165,13 @@ fn parse_xyz(text: &str) -> std::result::Result<Grid, String> {
             y0 + (k / nx) as f64 * dy
         ));
     }
-    Ok((nx, ny, [dx, dy], values))
+    Ok(((nx, ny, [dx, dy], values), skipped))
 }
 
-fn parse_sdf(text: &str) -> std::result::Result<Grid, String> {
-    let mut lines = text.lines();
-    let first = lines.next().unwrap_or_default().trim();
+fn parse_sdf(reader: impl BufRead) -> std::result::Result<Grid, String> {
+    let mut lines = lines(reader);
+    let first = lines.next().transpose()?.unwrap_or_default();
+    let first = first.trim();
     if first.starts_with("bBCR") {
         return Err(
             "an ASCII SDF (aBCR-1.0); this is the binary variant (bBCR): export ASCII".into(),
@@ -153,6 +186,7 @@ fn parse_sdf(text: &str) -> std::result::Result<Grid, String> {
     let mut in_data = false;
     let mut values = Vec::new();
     for line in lines {
+        let line = line?;
         let line = line.trim();
         if line == "*" {
             if in_data {
@@ -227,7 +261,7 @@ mod tests {
             "a.xyz",
             "# x y z\n0.2 0.0 3\n0 0 1\n0.1,0.0,2\n0 0.5 4\n0.1 0.5 5\n0.2\t0.5\t6\n",
         );
-        let m = read_topography(&p);
+        let m = read_topography(&p, 1.0).map(|t| t.map);
         assert!(m.is_ok(), "{m:?}");
         if let Ok(m) = m {
             assert_eq!((m.grid().nx(), m.grid().ny()), (3, 2));
@@ -248,7 +282,7 @@ mod tests {
             ("0 0 1\n1 0 nan\n", "line 2"),
             ("0 0\n", "line 1"),
         ] {
-            let e = read_topography(&write("b.xyz", text))
+            let e = read_topography(&write("b.xyz", text), 1.0)
                 .map(|_| ())
                 .unwrap_err();
             let m = e.to_string();
@@ -266,7 +300,7 @@ mod tests {
         let text = "aBCR-1.0\nManufacID = kontakt\nNumPoints = 3\nNumProfiles = 2\n\
                     Xscale = 1.0E-6\nYscale = 2.0E-6\nZscale = 1.0E-9\nZresolution = -1\n\
                     Compression = 0\nDataType = 7\nCheckType = 0\n*\n1 2 3\n4 5 6\n*\n";
-        let m = read_topography(&write("c.sdf", text));
+        let m = read_topography(&write("c.sdf", text), 1.0).map(|t| t.map);
         assert!(m.is_ok(), "{m:?}");
         if let Ok(m) = m {
             assert_eq!((m.grid().nx(), m.grid().ny()), (3, 2));
@@ -292,7 +326,7 @@ mod tests {
                 "value 3 is `BAD`",
             ),
         ] {
-            let e = read_topography(&write("d.sdf", text))
+            let e = read_topography(&write("d.sdf", text), 1.0)
                 .map(|_| ())
                 .unwrap_err();
             let m = e.to_string();

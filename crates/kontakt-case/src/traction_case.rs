@@ -179,7 +179,8 @@ pub enum TractionModel {
 }
 
 impl TractionModel {
-    /// Every model, in the order of the schema's documentation.
+    /// Every model, in the order the documentation lists them (the help of
+    /// `kontakt traction` is built from it).
     pub const ALL: [TractionModel; 5] = [
         TractionModel::Carter,
         TractionModel::KalkerLinear,

@@ -366,7 +366,7 @@ fn read_map(bytes: &[u8], ext: &str, spacing: [f64; 2], height: bool) {
     } else {
         MapKind::Gap
     };
-    let r = read_gap_map(&path, spacing, kind);
+    let r = read_gap_map(&path, spacing, kind, 1.0);
     std::fs::remove_file(&path).unwrap();
     if let Err(e) = r {
         let m = e.to_string();

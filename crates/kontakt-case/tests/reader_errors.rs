@@ -105,3 +105,20 @@ fn odd_paths_give_one_line() {
         assert!(e.chars().count() < 200, "{e:?}");
     }
 }
+
+/// Issue 30 item 6: a sweep's `base` file goes through the case files' capped reader:
+/// `/dev/zero` is refused after 16 MiB + 1 byte (it was read without a cap).
+#[cfg(unix)]
+#[test]
+fn sweep_base_file_is_capped() {
+    let text = "mode = \"grid\"\nbase = \"/dev/zero\"\n\n[[parameter]]\nkey = \"load.force_n\"\n\
+                values = [1.0]\n";
+    let e = kontakt_case::Sweep::from_toml_str(text, std::path::Path::new("."))
+        .err()
+        .map(|e| e.to_string())
+        .unwrap_or_default();
+    assert!(
+        e.contains("base = \"/dev/zero\"") && e.contains("larger than 16 MiB"),
+        "{e}"
+    );
+}

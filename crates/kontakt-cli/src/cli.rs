@@ -30,13 +30,50 @@ pub struct Cli {
     pub command: Command,
 }
 
+/// `kontakt solve`'s help line, naming every method of [`kontakt_case::Case::METHODS`] (the
+/// list the dispatch runs), so that the help cannot drift from the code.
+fn solve_about() -> String {
+    format!(
+        "Solve a case described in a TOML file, any method: {} (schema: docs/case-schema.md)",
+        kontakt_case::Case::METHODS.join(", ")
+    )
+}
+
+/// `kontakt traction`'s help line, naming every model of
+/// [`kontakt_case::traction_case::TractionModel::ALL`].
+fn traction_about() -> String {
+    let models: Vec<&str> = kontakt_case::traction_case::TractionModel::ALL
+        .iter()
+        .map(|m| m.as_str())
+        .collect();
+    format!(
+        "Traction curves F_T/(mu F_N) against the creepage (slide-to-roll ratio), models {} \
+         (TOML case, method = \"traction\"; docs/case-schema.md)",
+        models.join(", ")
+    )
+}
+
+/// `kontakt friction`'s help line, naming every pressure model of
+/// [`kontakt::bearing::rib_friction::PressureModel::ALL`].
+fn friction_about() -> String {
+    let models: Vec<&str> = kontakt::bearing::rib_friction::PressureModel::ALL
+        .iter()
+        .map(|m| m.as_str())
+        .collect();
+    format!(
+        "Friction torque and power of the roller-end/rib contact of a tapered roller bearing \
+         over a speed sweep: pressure models {}, lubricant film, mixed friction (TOML case, \
+         method = \"friction\"; docs/case-schema.md)",
+        models.join(", ")
+    )
+}
+
 #[derive(Debug, Subcommand)]
 pub enum Command {
     /// Hertz point-contact calculator (exact elliptical solution; the same as a case file
     /// with method = "hertz", docs/case-schema.md).
     Hertz(HertzArgs),
-    /// Solve a case described in a TOML file: method = "hertz", "pimp" or "bem" (schema:
-    /// docs/case-schema.md).
+    #[command(about = solve_about())]
     Solve(SolveArgs),
     /// Run the roller-end/rib study (Wirsching et al. (2020) Table 1, 100-400 N) and write a report
     /// (Markdown, pressure maps, CSV) into a folder (docs/bearing.md, docs/pimp.md).
@@ -45,9 +82,7 @@ pub enum Command {
     /// pairings (Wirsching et al. (2020) Figures 7-10) and write a report (Markdown, plots, CSV;
     /// docs/pimp.md, docs/halfspace.md).
     Validate(ValidateArgs),
-    /// Traction curves F_T/(mu F_N) against the creepage (slide-to-roll ratio): Carter,
-    /// Kalker linear, FASTSIM and the asperity model (Mindlin partial slip per asperity), from
-    /// a TOML case (method = "traction"; docs/case-schema.md).
+    #[command(about = traction_about())]
     Traction(TractionArgs),
     /// Cattaneo-Mindlin partial slip of a Hertz contact under an oscillating tangential
     /// force: stick zone, shift, the Mindlin-Deresiewicz hysteresis loop and the energy
@@ -62,9 +97,7 @@ pub enum Command {
     /// patches and mean gap per nominal pressure (TOML case, method = "rough";
     /// docs/case-schema.md, docs/rough.md).
     Rough(RoughArgs),
-    /// Friction torque and power of the roller-end/rib contact of a tapered roller bearing
-    /// over a speed sweep: Hertz, PimP and/or half-space pressure, lubricant film, mixed
-    /// friction (TOML case, method = "friction"; docs/case-schema.md).
+    #[command(about = friction_about())]
     Friction(FrictionArgs),
     /// Drive the contact element of one roller against the rib through a prescribed motion
     /// (load ramp, tilt and skew at constant load) with the Hertz, PimP and half-space
@@ -79,9 +112,10 @@ pub enum Command {
 }
 
 #[derive(Debug, Args)]
-#[command(group(clap::ArgGroup::new("load").required(true).args(["force", "approach"])))]
+#[command(group(clap::ArgGroup::new("load").required(true).args(["force", "approach", "line_load"])))]
 pub struct HertzArgs {
-    /// Principal radii of body 1 [mm], "RX,RY": convex > 0, concave < 0, `inf` for flat.
+    /// Principal radii of body 1 [mm], "RX,RY": convex > 0, concave < 0, `inf` for flat
+    /// (a line contact: one radius, "R").
     #[arg(
         long,
         value_name = "RX,RY",
@@ -90,7 +124,8 @@ pub struct HertzArgs {
         required = true
     )]
     pub body1_radii: Vec<f64>,
-    /// Principal radii of body 2 [mm], "RX,RY": convex > 0, concave < 0, `inf` for flat.
+    /// Principal radii of body 2 [mm], "RX,RY": convex > 0, concave < 0, `inf` for flat
+    /// (a line contact: one radius, "R").
     #[arg(
         long,
         value_name = "RX,RY",
@@ -145,6 +180,14 @@ pub struct HertzArgs {
     /// Approach of distant points [mm], > 0 (or give --force).
     #[arg(long, value_name = "MM", allow_hyphen_values = true)]
     pub approach: Option<f64>,
+    /// Line contact (parallel cylinders, one radius per body: --body1-radii R) of this
+    /// length [mm], > 0; a case file's `[contact] kind = "line"`, `length_mm`.
+    #[arg(long, value_name = "MM", allow_hyphen_values = true)]
+    pub length: Option<f64>,
+    /// Line contact loaded per unit length [N/mm], > 0 (instead of --force; --length then
+    /// optional); a case file's `[load] line_load_n_per_mm`.
+    #[arg(long, value_name = "N_PER_MM", allow_hyphen_values = true)]
+    pub line_load: Option<f64>,
     /// Yield stress of the weaker body [MPa], > 0: reports the first-yield load.
     #[arg(long, value_name = "MPA", allow_hyphen_values = true)]
     pub yield_stress: Option<f64>,

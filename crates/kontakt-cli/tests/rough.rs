@@ -18,6 +18,11 @@ fn tempdir(name: &str) -> PathBuf {
     support::tempdir("rough", name)
 }
 
+/// `kontakt rough CASE` must fail on bad input: exit status 2 and one line, returned.
+fn refused(case: &std::path::Path) -> String {
+    support::bad(&["rough", case.to_str().unwrap()])
+}
+
 /// A wavy surface z = D cos(2 pi x/lambda) as a CSV height map (128 cells per wavelength,
 /// 8 rows: the periodic 2-D solver then solves the plane problem) against Westergaard's
 /// solution (Johnson 1985 §13.2): p = p* sin²(pi a/lambda) with p* = pi E* D/lambda, so
@@ -226,21 +231,248 @@ fn bad_cases_name_the_key() {
             "points = [255, 256]",
             "invalid surface.points[0] = 255",
         ),
+        // Found by the fuzz harness: the memory estimate overflowed (a panic) before the
+        // grid was checked; the grid is checked first.
+        (
+            "points = [256, 256]",
+            "points = [9223372036854775806, 256]",
+            "invalid surface.points[0] = 9223372036854775806",
+        ),
     ] {
         assert!(base.contains(from), "{from}");
         let p = dir.join("bad.toml");
         std::fs::write(&p, base.replace(from, to)).unwrap();
-        let out = kontakt()
-            .args(["rough", p.to_str().unwrap()])
-            .output()
-            .unwrap();
-        let err = String::from_utf8(out.stderr).unwrap();
-        assert_eq!(out.status.code(), Some(2), "{to}: {err}");
-        assert_eq!(
-            err.lines().filter(|l| !l.trim().is_empty()).count(),
-            1,
-            "{err}"
-        );
+        let err = refused(&p);
         assert!(err.contains(expect), "{to}: {err}");
+    }
+}
+
+/// A wavy CSV map (`n` cells per wavelength, 8 rows) in `unit`s per mm of height `d_mm`,
+/// with `header` lines before the numbers, and its case text.
+fn wavy_case(dir: &std::path::Path, file: &str, header: &str, per_mm: f64, keys: &str) -> PathBuf {
+    let (n, lambda, d) = (64usize, 1.0f64, 1e-3f64);
+    let row: Vec<String> = (0..n)
+        .map(|i| {
+            let x = (i as f64 + 0.5) * lambda / n as f64;
+            format!(
+                "{:e}",
+                per_mm * d * (2.0 * std::f64::consts::PI * x / lambda).cos()
+            )
+        })
+        .collect();
+    std::fs::write(
+        dir.join(file),
+        format!("{header}{}\n", vec![row.join(","); 8].join("\n")),
+    )
+    .unwrap();
+    let dx = lambda / n as f64;
+    let case = format!(
+        "method = \"rough\"\n[surface]\nkind = \"map\"\nfile = \"{file}\"\nspacing_mm = [{dx:?}, {dx:?}]\n{keys}\n\
+         [body1]\ne_mpa = 210000.0\nnu = 0.3\n[body2]\ne_mpa = 210000.0\nnu = 0.3\n\
+         [load]\nmean_pressure_mpa = [50.0, 150.0]\n"
+    );
+    let p = dir.join(format!("{file}.toml"));
+    std::fs::write(&p, case).unwrap();
+    p
+}
+
+/// Issue 30 item 17: a profilometer's export (header lines, heights in µm) is read with
+/// `unit = "um"` (or `scale`), the skipped header lines are counted in a warning, and the
+/// rows equal those of the same surface in mm without a header.
+#[test]
+fn profilometer_export_with_header_and_microns() {
+    let dir = tempdir("units");
+    let plain = run_json(&[
+        "rough",
+        wavy_case(&dir, "mm.csv", "", 1.0, "").to_str().unwrap(),
+    ]);
+    assert_eq!(
+        plain["warnings"].as_array().unwrap().len(),
+        0,
+        "{}",
+        plain["warnings"]
+    );
+    let header = "Profilometer export,,\nx0,x1,x2\n";
+    for (file, keys) in [
+        ("um.csv", "unit = \"um\""),
+        ("um2.csv", "unit = \"µm\""),
+        ("scaled.csv", "scale = 1e-3"),
+    ] {
+        let v = run_json(&[
+            "rough",
+            wavy_case(&dir, file, header, 1e3, keys).to_str().unwrap(),
+        ]);
+        let w = v["warnings"].as_array().unwrap();
+        assert_eq!(w.len(), 1, "{w:?}");
+        assert!(
+            w[0].as_str().unwrap().contains("skipped 2 header lines"),
+            "{w:?}"
+        );
+        for (a, b) in v["rows"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .zip(plain["rows"].as_array().unwrap())
+        {
+            let (pa, pb) = (num(&a["max_pressure_mpa"]), num(&b["max_pressure_mpa"]));
+            assert!((pa / pb - 1.0).abs() < 1e-9, "{file}: {pa} vs {pb}");
+            assert_eq!(a["area_fraction"], b["area_fraction"], "{file}");
+        }
+    }
+    // Without the unit the heights are read as mm: 1000 times rougher, a different result.
+    let v = run_json(&[
+        "rough",
+        wavy_case(&dir, "raw.csv", header, 1e3, "")
+            .to_str()
+            .unwrap(),
+    ]);
+    assert!(num(&v["rms_height_mm"]) > 100.0 * num(&plain["rms_height_mm"]));
+    // Bad units and scales name the key.
+    for (keys, expect) in [
+        ("unit = \"inch\"", "invalid surface.unit = inch"),
+        ("scale = 0.0", "invalid surface.scale = 0"),
+        ("scale = -1.0", "invalid surface.scale = -1"),
+    ] {
+        let err = refused(&wavy_case(&dir, "bad.csv", "", 1.0, keys));
+        assert!(err.contains(expect), "{keys}: {err}");
+    }
+}
+
+/// Issue 30 item 17: a map that is not periodic (half a wavelength: the edges' heights
+/// differ by 2 D) is named in a warning; the periodic map above has none.
+#[test]
+fn non_periodic_map_is_named() {
+    let dir = tempdir("periodic");
+    let n = 64usize;
+    let row: Vec<String> = (0..n)
+        .map(|i| {
+            format!(
+                "{:e}",
+                1e-3 * (std::f64::consts::PI * (i as f64 + 0.5) / n as f64).cos()
+            )
+        })
+        .collect();
+    std::fs::write(dir.join("half.csv"), vec![row.join(","); 8].join("\n")).unwrap();
+    let case = "method = \"rough\"\n[surface]\nkind = \"map\"\nfile = \"half.csv\"\n\
+                spacing_mm = [0.015625, 0.015625]\n[body1]\ne_mpa = 210000.0\nnu = 0.3\n\
+                [body2]\ne_mpa = 210000.0\nnu = 0.3\n[load]\nmean_pressure_mpa = [50.0]\n";
+    std::fs::write(dir.join("half.toml"), case).unwrap();
+    let v = run_json(&["rough", dir.join("half.toml").to_str().unwrap()]);
+    let w = v["warnings"].as_array().unwrap();
+    assert!(
+        w.iter()
+            .any(|w| w.as_str().unwrap().contains("the map is not periodic")),
+        "{w:?}"
+    );
+}
+
+/// Issue 30 item 17: the example's elastic pressures of 22 GPa on steel are flagged: above
+/// 0.1 E* without a hardness, above `load.hardness_mpa` when given (in the text report
+/// too); a bad hardness names the key.
+#[test]
+fn pressures_above_the_hardness_are_flagged() {
+    let v = run_json(&["rough", example().to_str().unwrap()]);
+    let w = v["warnings"].as_array().unwrap();
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert!(
+        w[0].as_str().unwrap().contains("0.1 E* = 11538 MPa"),
+        "{w:?}"
+    );
+    let dir = tempdir("hardness");
+    let base = std::fs::read_to_string(example()).unwrap();
+    let p = dir.join("h.toml");
+    let text = base.replace(
+        "mean_pressure_mpa = [100.0, 200.0, 400.0, 800.0]",
+        "mean_pressure_mpa = [100.0, 200.0, 400.0, 800.0]\nhardness_mpa = 7500.0",
+    );
+    std::fs::write(&p, &text).unwrap();
+    let out = kontakt()
+        .args(["rough", p.to_str().unwrap()])
+        .output()
+        .unwrap();
+    let s = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        s.contains("warning: the largest pressure exceeds load.hardness_mpa = 7500 MPa at 4 loads"),
+        "{s}"
+    );
+    std::fs::write(&p, text.replace("7500.0", "-1.0")).unwrap();
+    let err = refused(&p);
+    assert!(err.contains("invalid load.hardness_mpa = -1"), "{err}");
+}
+
+/// Issue 30 item 6: files named by a case are read through one capped reader: `/dev/zero`
+/// as a map fails at its first byte (it grew to 4 GB before), as `.npy` at its magic bytes,
+/// a file over 1 GiB (sparse here) is refused from its size; one line, status 2.
+#[cfg(unix)]
+#[test]
+fn map_files_are_capped() {
+    let dir = tempdir("capped");
+    let big = dir.join("big.csv");
+    std::fs::File::create(&big)
+        .unwrap()
+        .set_len(kontakt_case::MAX_DATA_FILE_BYTES + 1)
+        .unwrap();
+    std::os::unix::fs::symlink("/dev/zero", dir.join("zero.npy")).unwrap_or_default();
+    for (file, expect) in [
+        ("/dev/zero", "NUL byte at offset 0"),
+        ("zero.npy", "no .npy magic bytes"),
+        ("big.csv", "larger than 1 GiB (1073741825 bytes)"),
+        ("zero.xyz", "NUL byte at offset 0"),
+    ] {
+        if file == "zero.xyz" {
+            std::os::unix::fs::symlink("/dev/zero", dir.join(file)).unwrap_or_default();
+        }
+        let spacing = if file.ends_with("xyz") {
+            ""
+        } else {
+            "spacing_mm = [0.01, 0.01]"
+        };
+        let case = format!(
+            "method = \"rough\"\n[surface]\nkind = \"map\"\nfile = \"{file}\"\n{spacing}\n\
+             [body1]\ne_mpa = 210000.0\nnu = 0.3\n[body2]\ne_mpa = 210000.0\nnu = 0.3\n\
+             [load]\nmean_pressure_mpa = [50.0]\n"
+        );
+        let p = dir.join("cap.toml");
+        std::fs::write(&p, case).unwrap();
+        let err = refused(&p);
+        assert!(
+            err.contains("surface.file") && err.contains(expect),
+            "{file}: {err}"
+        );
+    }
+    std::fs::remove_file(&big).unwrap();
+}
+
+/// Issue 30 item 7: the documented largest grid, 16384 x 16384, aborted the process on an
+/// allocation failure (SIGABRT); its memory is estimated before anything is allocated and
+/// refused in one line naming the key, the estimate and the budget (status 2, at once);
+/// `solver.max_memory_gib` sets the budget (a small one refuses the example's 256²).
+#[test]
+fn grids_beyond_the_memory_budget_are_refused() {
+    let dir = tempdir("memory");
+    let base = std::fs::read_to_string(example()).unwrap();
+    for (from, to, expect) in [
+        (
+            "points = [256, 256]",
+            "points = [16384, 16384]",
+            "invalid surface.points = [16384, 16384]: expected a grid whose estimated memory fits solver.max_memory_gib = 16 GiB; 16384 x 16384 cells need about 34.3 GiB (137 bytes per cell)",
+        ),
+        (
+            "seed = 1",
+            "seed = 1\n[solver]\nmax_memory_gib = 0.005",
+            "invalid surface.points = [256, 256]: expected a grid whose estimated memory fits solver.max_memory_gib = 0.005 GiB; 256 x 256 cells need about 9.4 MiB (150 bytes per cell)",
+        ),
+        (
+            "seed = 1",
+            "seed = 1\n[solver]\nmax_memory_gib = -1.0",
+            "invalid solver.max_memory_gib = -1",
+        ),
+    ] {
+        let p = dir.join("big.toml");
+        std::fs::write(&p, base.replace(from, to)).unwrap();
+        let started = std::time::Instant::now();
+        let err = refused(&p);
+        assert!(err.contains(expect), "{to}: {err}");
+        assert!(started.elapsed().as_secs_f64() < 5.0, "not refused at once");
     }
 }

@@ -183,6 +183,29 @@ pub fn choices(field: &'static str, given: &[&str], valid: &[&str]) -> Result<()
     Ok(())
 }
 
+/// `n` copies of `value` in a vector reserved with [`Vec::try_reserve_exact`]: when the
+/// system refuses the memory, an [`Error::InvalidInput`] naming `field` (the grid whose
+/// array it is) instead of the process aborting. For the arrays of a grid's size.
+///
+/// # Errors
+/// [`Error::InvalidInput`] with the count and bytes asked for.
+pub(crate) fn try_filled<T: Clone>(field: &'static str, n: usize, value: T) -> Result<Vec<T>> {
+    let mut v = Vec::new();
+    if v.try_reserve_exact(n).is_err() {
+        let bytes = n as f64 * std::mem::size_of::<T>() as f64;
+        return Err(Error::invalid(
+            field,
+            format!("{n} cells"),
+            format!(
+                "a grid whose arrays fit in memory (an array of {:.1} GiB could not be allocated)",
+                bytes / f64::from(1u32 << 30)
+            ),
+        ));
+    }
+    v.resize(n, value);
+    Ok(v)
+}
+
 /// Check that `value` is finite and not negative.
 pub(crate) fn non_negative(field: &'static str, value: f64) -> Result<f64> {
     if value.is_finite() && value >= 0.0 {
@@ -204,6 +227,19 @@ pub(crate) fn overflow(field: &'static str, value: f64) -> Error {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Issue 30 item 7: an array the system cannot give is an error naming the field, not
+    /// an abort: a byte count beyond `isize::MAX` (capacity overflow) and one of 2^60 bytes
+    /// (refused by the allocator, or by the address space).
+    #[test]
+    fn refused_allocation_is_an_error() {
+        for n in [usize::MAX / 4, 1 << 57] {
+            let e = try_filled("grid", n, 0.0f64).map(|v| v.len()).unwrap_err();
+            assert_eq!(e.field(), Some("grid"), "{e}");
+            assert!(e.to_string().contains("could not be allocated"), "{e}");
+        }
+        assert_eq!(try_filled("grid", 3, 1.5).ok(), Some(vec![1.5; 3]));
+    }
 
     /// Long numbers come back in exponent form, long text cut with its length; short
     /// values are untouched.

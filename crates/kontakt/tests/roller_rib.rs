@@ -154,3 +154,56 @@ fn bad_dimensions_are_clear_errors() {
         .to_string();
     assert!(e.contains("torus-torus-14"), "{e}");
 }
+
+/// Issue 30 item 14: a rib given by its angle (as a drawing gives it) reproduces the
+/// height-based geometry: for every Table 1 pairing the exact rib angle of the 2.75 mm
+/// construction gives back h = 2.75 mm (1e-12) and the same pair (contact point, normal and
+/// both surfaces' placement, 1e-10); the printed, rounded angles give heights within 0.45 mm
+/// of it; angles that put the contact below the roller axis or turn the face normal past
+/// 90° are refused naming `rib_angle_deg`.
+#[test]
+fn rib_angle_reproduces_the_height_based_geometry() {
+    for (name, _, _, printed) in TABLE1 {
+        let spec = RollerRibSpec::builtin(name).unwrap();
+        let by_height = RollerRib::new(spec).unwrap();
+        let h = spec
+            .contact_height_for_rib_angle(by_height.rib_angle_deg)
+            .unwrap();
+        assert!((h - CONTACT_HEIGHT).abs() < 1e-12, "{name}: h = {h}");
+        let by_angle = RollerRib::new(RollerRibSpec {
+            contact_height: h,
+            ..spec
+        })
+        .unwrap();
+        assert!((by_angle.rib_angle_deg - by_height.rib_angle_deg).abs() < 1e-12);
+        assert!(
+            (by_angle.contact.point - by_height.contact.point).norm() < 1e-10,
+            "{name}"
+        );
+        assert!(
+            (by_angle.contact.normal.into_inner() - by_height.contact.normal.into_inner()).norm()
+                < 1e-10
+        );
+        for (a, b) in [
+            (&by_angle.face, &by_height.face),
+            (&by_angle.rib, &by_height.rib),
+        ] {
+            for probe in [by_height.contact.point, by_height.apex] {
+                assert!(
+                    (a.signed_distance(&probe) - b.signed_distance(&probe)).abs() < 1e-10,
+                    "{name}"
+                );
+            }
+        }
+        let h_printed = spec.contact_height_for_rib_angle(printed).unwrap();
+        assert!(
+            (h_printed - CONTACT_HEIGHT).abs() < 0.45,
+            "{name}: {printed}° gives {h_printed}"
+        );
+    }
+    let spec = RollerRibSpec::builtin("sphere-cone-29").unwrap();
+    for bad in [f64::NAN, -5.0, 180.0, 80.0] {
+        let e = spec.contact_height_for_rib_angle(bad).unwrap_err();
+        assert_eq!(e.field(), Some("rib_angle_deg"), "{bad}: {e}");
+    }
+}

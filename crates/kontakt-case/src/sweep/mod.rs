@@ -510,12 +510,8 @@ impl Sweep {
             BaseSpec::Inline(t) => (t, dir.to_path_buf()),
             BaseSpec::Path(p) => {
                 let path = dir.join(&p);
-                let text = std::fs::read_to_string(&path).map_err(|e| {
-                    input(format!(
-                        "invalid base = \"{p}\": cannot read {}: {e}",
-                        path.display()
-                    ))
-                })?;
+                let text = crate::read_case_file(&path)
+                    .map_err(|e| input(format!("invalid base = \"{p}\": {e}")))?;
                 let table: toml::Table = toml::from_str(&text).map_err(|e| {
                     input(format!(
                         "invalid base = \"{p}\": {}: {}",

@@ -249,7 +249,16 @@ impl Sweep {
     /// yet (`Some(false)`: no manifest).
     fn check_manifest(&self, out_dir: &Path) -> SweepResult<bool> {
         let path = out_dir.join(MANIFEST);
-        let text = match std::fs::read_to_string(&path) {
+        // The manifest is this program's own file, read through the same capped reader.
+        let read = std::fs::File::open(&path).and_then(|f| {
+            let mut text = String::new();
+            std::io::Read::read_to_string(
+                &mut crate::files::Capped::new(f, crate::files::MAX_DATA_FILE_BYTES, true),
+                &mut text,
+            )
+            .map(|_| text)
+        });
+        let text = match read {
             Ok(t) => t,
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
                 let chunks = out_dir.join(CHUNKS_DIR);

@@ -309,9 +309,14 @@ fn hertz_case(a: &HertzArgs) -> CaseFile {
         name: None,
         method: Method::Hertz,
         contact: ContactSpec {
-            kind: ContactKind::Point,
+            // --length or --line-load make a line contact, as `kind = "line"` in a file.
+            kind: if a.length.is_some() || a.line_load.is_some() {
+                ContactKind::Line
+            } else {
+                ContactKind::Point
+            },
             angle_deg: a.angle_deg,
-            length_mm: None,
+            length_mm: a.length,
         },
         body1: BodySpec {
             radii_mm: a.body1_radii.clone(),
@@ -326,7 +331,7 @@ fn hertz_case(a: &HertzArgs) -> CaseFile {
         load: LoadSpec {
             force_n: a.force,
             approach_mm: a.approach,
-            line_load_n_per_mm: None,
+            line_load_n_per_mm: a.line_load,
         },
         yield_check: a.yield_stress.map(|stress_mpa| YieldSpec {
             stress_mpa,
@@ -355,6 +360,8 @@ fn flag_for_field(field: &str) -> String {
             "load.force_n" => "--force",
             "load.approach_mm" => "--approach",
             "contact.angle_deg" => "--angle-deg",
+            "contact.length_mm" => "--length",
+            "load.line_load_n_per_mm" => "--line-load",
             "yield.stress_mpa" => "--yield-stress",
             "radii" => "--body1-radii/--body2-radii",
             other => other,

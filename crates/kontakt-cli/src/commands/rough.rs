@@ -89,6 +89,9 @@ pub fn print_report(out: &mut impl Write, r: &RoughReport, json: bool) -> Result
         out,
         "  kappa = (A/A0)/(p/(E* h')): about 2 for numerical solvers (Hyun et al. 2004), sqrt(8/pi) = 1.60 in Persson's theory"
     )?;
+    for w in &r.warnings {
+        writeln!(out, "  warning: {w}")?;
+    }
     Ok(())
 }
 

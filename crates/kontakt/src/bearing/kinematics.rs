@@ -52,9 +52,8 @@
 //! distance of the roller's mid-point), `ω_c = (ω_i R_i + ω_o R_o) / (R_i + R_o)`: for
 //! zero cone angles this is the textbook epicyclic relation of a cylindrical roller bearing,
 //! `ω_c = ω_i D_i / (D_i + D_o)` with the outer ring fixed. The same relations are in
-//! Liu X. et al. (2023) eqs. 1–2 (after Jiang et al. 1994), as quoted in
-//! /work/shared/reference/bearing-friction.md §1.1; the derivation is also in docs/bearing.md
-//! §4 "Kinematics". Wirsching et al. (2020) §1 name the sliding speed over the contact area,
+//! Liu X. et al. (2023) eqs. 1–2 (after Jiang et al. 1994); the derivation is in
+//! docs/bearing.md §4 "Kinematics". Wirsching et al. (2020) §1 name the sliding speed over the contact area,
 //! with the pressure, as what the rib's friction depends on: hence the per-cell field.
 //!
 //! # The general (twist) form

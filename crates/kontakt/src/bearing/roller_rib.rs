@@ -36,10 +36,12 @@ use nalgebra::{Isometry3, Point3, Translation3, Unit, UnitQuaternion, Vector3};
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
 pub struct TaperedRollerBearing {
-    /// Bore diameter d \[mm\].
+    /// Bore diameter d \[mm\]. Bore and outside diameter only check that the roller fits
+    /// the section (`d/2 <` inner raceway radius, the large end's cup-side edge `< D/2`);
+    /// no result depends on them.
     #[cfg_attr(feature = "serde", serde(rename = "bore_mm"))]
     pub bore: Millimetre,
-    /// Outside diameter D \[mm\].
+    /// Outside diameter D \[mm\] (a check only, see `bore`).
     #[cfg_attr(feature = "serde", serde(rename = "outside_diameter_mm"))]
     pub outside_diameter: Millimetre,
     /// Half-angle of the roller cone, beta \[deg\].
@@ -101,9 +103,10 @@ pub enum RibShape {
     /// Conical rib (straight generatrix, r_B = 0 in Table 1).
     Cone,
     /// Toroidal rib: the generatrix is an arc of radius `radius`, convex towards the
-    /// roller.
+    /// roller (its centre lies inside the ring, on the face normal through the contact).
     Torus {
-        /// Rib radius r_B \[mm\].
+        /// Rib radius r_B \[mm\], > 0 (convex; a concave rib is not modelled and a negative
+        /// radius is refused).
         #[cfg_attr(feature = "serde", serde(rename = "radius_mm"))]
         radius: Millimetre,
     },
@@ -227,6 +230,60 @@ impl RollerRibSpec {
                 Error::invalid("pairing", name, format!("one of {}", names.join(", ")))
             })
     }
+
+    /// The contact height h \[mm\] at which this spec's face meets a rib of angle
+    /// `rib_angle_deg` \[deg\] between raceway and rib, as a drawing gives it (the contact
+    /// height is then a result). The construction's step 3, `alpha = 90° + phi - beta` with
+    /// the face normal's lean `phi = asin((h - e) / r_R)`, inverted:
+    /// `h = e + r_R sin(alpha + beta - 90°) = e - r_R cos(alpha + beta)` (docs/bearing.md §3).
+    /// Set it as `contact_height` to build the pair the drawing describes;
+    /// [`RollerRib::rib_angle_deg`] of that pair is `rib_angle_deg` again.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] naming `rib_angle_deg` unless the face normal's lean
+    /// `alpha + beta - 90°` lies strictly between −90° and 90° and gives `h > 0`, or naming
+    /// the face's radius or eccentricity or the roller half-angle when they are invalid.
+    /// Whether the face reaches that height is checked by [`RollerRib::new`].
+    pub fn contact_height_for_rib_angle(&self, rib_angle_deg: f64) -> Result<Millimetre> {
+        let beta = angle(
+            "bearing.roller_half_angle_deg",
+            self.bearing.roller_half_angle_deg,
+            0.0,
+            20.0,
+        )?;
+        let (r_face, e) = match self.face {
+            FaceShape::Sphere { radius } => (radius, 0.0),
+            FaceShape::Torus {
+                radius,
+                eccentricity,
+            } => (radius, eccentricity),
+        };
+        positive_as("face.radius", r_face, "a finite radius > 0 mm")?;
+        if !(e.is_finite() && e >= 0.0) {
+            return Err(Error::invalid(
+                "face.eccentricity",
+                e,
+                "a finite eccentricity >= 0 mm",
+            ));
+        }
+        let lo = 90.0 - beta.to_degrees() - 90.0;
+        let hi = 90.0 - beta.to_degrees() + 90.0;
+        let alpha = angle("rib_angle_deg", rib_angle_deg, lo, hi)?;
+        let phi = alpha + beta - std::f64::consts::FRAC_PI_2;
+        let h = e + r_face * phi.sin();
+        if !(h > 0.0) {
+            return Err(Error::invalid(
+                "rib_angle_deg",
+                rib_angle_deg,
+                format!(
+                    "a rib angle that puts the contact above the roller axis (it gives a contact \
+                     height of {h:.4} mm; the angle must exceed {:.3} degrees for this face)",
+                    (90.0f64.to_radians() - beta - (e / r_face).min(1.0).asin()).to_degrees()
+                ),
+            ));
+        }
+        Ok(h)
+    }
 }
 
 /// A built roller/rib pair: the two placed surfaces and the idealised contact point.
@@ -258,8 +315,9 @@ impl RollerRib {
     ///
     /// # Errors
     /// [`Error::InvalidInput`] for a non-positive or non-finite dimension, an angle out
-    /// of range, or a contact height the face cannot reach (`|h - e| >= r_R`, or `h` beyond
-    /// the roller's large-end radius).
+    /// of range, a contact height the face cannot reach (`|h - e| >= r_R`, or `h` beyond
+    /// the roller's large-end radius), or a roller that does not fit between the bore and
+    /// the outside diameter.
     pub fn new(spec: RollerRibSpec) -> Result<Self> {
         let b = spec.bearing;
         positive_as("bearing.bore", b.bore, "a finite diameter > 0 mm")?;
@@ -368,6 +426,20 @@ impl RollerRib {
         let apex = large_end - t * (r_race / alpha_i.sin());
         // Roller frame: axial coordinate lambda from the apex along u.
         let lambda_edge = rho_l / beta.tan();
+        // The roller must fit the section: its large end's outer edge (on the cup side)
+        // inside the outside diameter. Bore and outside diameter enter nothing else.
+        let outer_edge = apex + u * lambda_edge + v * rho_l;
+        let outer_radius = outer_edge.x.hypot(outer_edge.y);
+        if !(outer_radius < 0.5 * b.outside_diameter) {
+            return Err(Error::invalid(
+                "bearing.outside_diameter",
+                b.outside_diameter,
+                format!(
+                    "more than twice the radius of the roller's large end at the cup \
+                     ({outer_radius:.3} mm): the roller must fit inside the outside diameter"
+                ),
+            ));
+        }
         let lambda_face = lambda_edge - (r_face * r_face - (rho_l - e).powi(2)).sqrt();
         let lambda_c = lambda_face + r_face * phi.cos();
         let contact = apex + u * lambda_c - v * h;

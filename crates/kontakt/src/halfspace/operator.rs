@@ -331,6 +331,36 @@ impl HalfSpacePlan {
         self.kernel.iter().map(move |k| k * scale)
     }
 
+    /// The bytes a plan of `nx × ny` cells (`boundary`) and one [`OperatorScratch`] of it
+    /// will hold, on `threads` resolved threads, counted from the layout
+    /// [`HalfSpacePlan::layout_on`] makes before anything is allocated: the kernel spectrum
+    /// (`kx·my` f64), the row spectra and column results (`2·ny·kx` complex) and one
+    /// workspace per task (a real row of `mx`, a block of `BLOCK·max(my, kx)` complex and
+    /// an FFT scratch, bounded here by `4·max(mx, my)` complex). Returns `(plan, scratch)`.
+    pub(crate) fn estimate_bytes(
+        nx: usize,
+        ny: usize,
+        boundary: Boundary,
+        threads: usize,
+    ) -> (u64, u64) {
+        // In f64, whose cast to u64 saturates: an absurd grid gives u64::MAX, not an
+        // overflow (exact below 2^53 bytes).
+        let (nx, ny) = (nx as f64, ny as f64);
+        let (mx, my) = match boundary {
+            Boundary::Free => (2.0 * nx, 2.0 * ny),
+            Boundary::Periodic => (nx, ny),
+        };
+        let serial = threads <= 1 || nx * ny < PARALLEL_MIN_CELLS as f64;
+        let kx = (mx / 2.0).floor() + 1.0;
+        let c = std::mem::size_of::<Complex<f64>>() as f64;
+        let tasks = if serial { 1.0 } else { 4.0 * threads as f64 };
+        let workspace = 8.0 * mx + c * (BLOCK as f64 * my.max(kx) + 4.0 * mx.max(my));
+        (
+            (8.0 * kx * my) as u64,
+            (2.0 * c * ny * kx + tasks * workspace) as u64,
+        )
+    }
+
     /// The FFT plans, task split and an empty kernel for a `mx × my` transform of the
     /// grid's data on `threads`.
     fn layout_on(
@@ -583,14 +613,34 @@ impl HalfSpacePlan {
             layout: l,
             rows: vec![Complex::default(); l.spectra],
             cols: vec![Complex::default(); l.spectra],
-            work: (0..l.tasks)
-                .map(|_| Workspace {
-                    row: vec![0.0; l.row],
-                    block: vec![Complex::default(); l.block],
-                    scratch: vec![Complex::default(); l.fft_scratch],
-                })
-                .collect(),
+            work: self.workspaces(),
         }
+    }
+
+    /// [`HalfSpacePlan::scratch`] with its grid-sized arrays allocated fallibly.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] naming `grid` when the memory is refused.
+    pub(crate) fn try_scratch(&self) -> Result<OperatorScratch> {
+        let l = self.layout;
+        Ok(OperatorScratch {
+            layout: l,
+            rows: crate::error::try_filled("grid", l.spectra, Complex::default())?,
+            cols: crate::error::try_filled("grid", l.spectra, Complex::default())?,
+            work: self.workspaces(),
+        })
+    }
+
+    /// One workspace per task (a row, a block and an FFT scratch each).
+    fn workspaces(&self) -> Vec<Workspace> {
+        let l = self.layout;
+        (0..l.tasks)
+            .map(|_| Workspace {
+                row: vec![0.0; l.row],
+                block: vec![Complex::default(); l.block],
+                scratch: vec![Complex::default(); l.fft_scratch],
+            })
+            .collect()
     }
 
     /// Whether `scratch` fits this plan.

@@ -202,7 +202,8 @@ impl SelfAffineSpec {
         let hx = nx / 2 + 1;
         let mut rng = ChaCha8Rng::seed_from_u64(self.seed);
         // Half spectrum: columns kx = 0..=nx/2, rows ky = 0..ny (ky > ny/2 negative).
-        let mut spec = vec![Complex64::new(0.0, 0.0); hx * ny];
+        // Fallible: a grid too large for the memory is an error naming `points`.
+        let mut spec = crate::error::try_filled("points", hx * ny, Complex64::new(0.0, 0.0))?;
         let (mut power, mut slope2) = (0.0, 0.0);
         for ky in 0..ny {
             let ky_signed = if ky <= ny / 2 {
@@ -269,7 +270,7 @@ impl SelfAffineSpec {
         }
         let mut real_planner = RealFftPlanner::<f64>::new();
         let c2r = real_planner.plan_fft_inverse(nx);
-        let mut heights = vec![0.0; nx * ny];
+        let mut heights = crate::error::try_filled("points", nx * ny, 0.0)?;
         let mut scratch = c2r.make_scratch_vec();
         for j in 0..ny {
             let row = &mut spec[j * hx..(j + 1) * hx];
