@@ -34,6 +34,7 @@
 pub mod equilibrium;
 pub mod geometry;
 pub mod load_zone;
+mod newton;
 pub mod profile;
 
 pub use kontakt::{Error, Result};
