@@ -31,6 +31,7 @@
 //! is not modelled are in `docs/bearing-model.md`.
 #![forbid(unsafe_code)]
 
+pub mod ball_equilibrium;
 pub mod equilibrium;
 pub mod geometry;
 pub mod load_zone;

@@ -95,20 +95,20 @@ pub(crate) fn newton<M: ConvexRing>(
         }
         iterations += 1;
         // the Newton system on the free directions; a direction without contact
-        // stiffness borrows the all-elements-in-contact shape (a descent direction still)
+        // stiffness borrows the diagonal of the all-elements-in-contact shape (a descent
+        // direction still)
         let mut rhs = Vector5::zeros();
         let mut jac = k;
         let mut weak = false;
         for i in 0..5 {
             if free[i] {
                 rhs[i] = target[i] - f[i];
-                if !(jac[(i, i)] > 1e-6 * scale * probe[(i, i)]) {
+                if !(k[(i, i)] > 1e-6 * scale * probe[(i, i)]) {
                     weak = true;
+                    // only the weak direction borrows: the others keep Newton's rate
+                    jac[(i, i)] += scale * probe[(i, i)];
                 }
             }
-        }
-        if weak {
-            jac += probe * scale;
         }
         for i in 0..5 {
             jac[(i, i)] += 1e-12 * scale * probe[(i, i)];
