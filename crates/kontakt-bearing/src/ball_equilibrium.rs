@@ -19,9 +19,7 @@
 //! term is the turn of the load's direction with the contact angle. Newton with that
 //! Jacobian and an Armijo line search, shared with the roller solver.
 
-use crate::equilibrium::{
-    DISPLACEMENT_NAMES, Dof, FORCE_NAMES, RingLoad, free_and_target, load_scale,
-};
+use crate::equilibrium::{Dof, RingLoad, check_finite, free_and_target, load_scale, warm_start};
 use crate::geometry::{BallBearing, BallBearingKind};
 use crate::newton::{ConvexRing, Outcome, newton, to_rows};
 use kontakt::solve::{SolveStatus, Termination};
@@ -193,15 +191,7 @@ impl BallBearingSolver {
     }
 
     fn check_load(&self, load: &RingLoad) -> Result<()> {
-        for (i, d) in load.dofs.iter().enumerate() {
-            let (name, v) = match *d {
-                Dof::Force(v) => (FORCE_NAMES[i], v),
-                Dof::Displacement(v) => (DISPLACEMENT_NAMES[i], v),
-            };
-            if !v.is_finite() {
-                return Err(Error::invalid(format!("load.{name}"), v, "a finite number"));
-            }
-        }
+        check_finite(load)?;
         if self.bearing.kind == BallBearingKind::AngularContact
             && let Dof::Force(fz) = load.dofs[2]
             && fz < 0.0
@@ -235,21 +225,7 @@ impl BallBearingSolver {
     /// As [`BallBearingSolver::solve`], and `start` must be finite.
     pub fn solve_from(&mut self, load: &RingLoad, start: [f64; 5]) -> Result<BallSolution> {
         self.check_load(load)?;
-        for (i, v) in start.iter().enumerate() {
-            if !v.is_finite() {
-                return Err(Error::invalid(
-                    format!("start.{}", DISPLACEMENT_NAMES[i]),
-                    v,
-                    "a finite number",
-                ));
-            }
-        }
-        let mut u = Vector5::from(start);
-        for (i, d) in load.dofs.iter().enumerate() {
-            if let Dof::Displacement(v) = *d {
-                u[i] = v;
-            }
-        }
+        let u = warm_start(load, start, &[true; 5])?;
         Ok(self.iterate(load, u))
     }
 

@@ -323,14 +323,9 @@ impl RollerBearingSolver {
 
     /// Check the load against what the bearing can carry.
     fn check_load(&self, load: &RingLoad) -> Result<()> {
+        check_finite(load)?;
         for (i, d) in load.dofs.iter().enumerate() {
-            let (name, v) = match *d {
-                Dof::Force(v) => (FORCE_NAMES[i], v),
-                Dof::Displacement(v) => (DISPLACEMENT_NAMES[i], v),
-            };
-            if !v.is_finite() {
-                return Err(Error::invalid(format!("load.{name}"), v, "a finite number"));
-            }
+            let name = FORCE_NAMES[i];
             if let Dof::Force(v) = *d
                 && !self.stiff[i]
                 && v != 0.0
@@ -405,23 +400,7 @@ impl RollerBearingSolver {
     /// As [`RollerBearingSolver::solve`], and `start` must be finite.
     pub fn solve_from(&mut self, load: &RingLoad, start: [f64; 5]) -> Result<RollerSolution> {
         self.check_load(load)?;
-        for (i, v) in start.iter().enumerate() {
-            if !v.is_finite() {
-                return Err(Error::invalid(
-                    format!("start.{}", DISPLACEMENT_NAMES[i]),
-                    v,
-                    "a finite number",
-                ));
-            }
-        }
-        let mut u = Vector5::from(start);
-        for (i, d) in load.dofs.iter().enumerate() {
-            if let Dof::Displacement(v) = *d {
-                u[i] = v;
-            } else if !self.stiff[i] {
-                u[i] = 0.0;
-            }
-        }
+        let u = warm_start(load, start, &self.stiff)?;
         Ok(self.iterate(load, u))
     }
 
@@ -553,6 +532,47 @@ struct Scalars {
     clearance_mm: f64,
     contact_angle_rad: f64,
     thrust: bool,
+}
+
+/// Every load component finite, else an error naming it (`load.fx_n`, `load.dz_mm`).
+pub(crate) fn check_finite(load: &RingLoad) -> Result<()> {
+    for (i, d) in load.dofs.iter().enumerate() {
+        let (name, v) = match *d {
+            Dof::Force(v) => (FORCE_NAMES[i], v),
+            Dof::Displacement(v) => (DISPLACEMENT_NAMES[i], v),
+        };
+        if !v.is_finite() {
+            return Err(Error::invalid(format!("load.{name}"), v, "a finite number"));
+        }
+    }
+    Ok(())
+}
+
+/// A given start (checked finite, named `start.<component>`) with the prescribed
+/// displacements put in and the directions without stiffness at 0.
+pub(crate) fn warm_start(
+    load: &RingLoad,
+    start: [f64; 5],
+    stiff: &[bool; 5],
+) -> Result<Vector5<f64>> {
+    for (i, v) in start.iter().enumerate() {
+        if !v.is_finite() {
+            return Err(Error::invalid(
+                format!("start.{}", DISPLACEMENT_NAMES[i]),
+                v,
+                "a finite number",
+            ));
+        }
+    }
+    let mut u = Vector5::from(start);
+    for (i, d) in load.dofs.iter().enumerate() {
+        if let Dof::Displacement(v) = *d {
+            u[i] = v;
+        } else if !stiff[i] {
+            u[i] = 0.0;
+        }
+    }
+    Ok(u)
 }
 
 /// The free (force-controlled and stiff) components and the applied load on them.
