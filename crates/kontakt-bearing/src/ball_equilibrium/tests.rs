@@ -59,35 +59,44 @@ fn harris_axial_angle(fa: f64, z: f64, k: f64, bd: f64, alpha0: f64) -> f64 {
     a
 }
 
+/// Also a deep-groove bearing with 20 µm clearance, whose free contact angle
+/// `acos(1 − P_d/(2 B D))` (12.88°) enters the same relation.
 #[test]
 fn acbb_pure_axial_load_follows_harris_closed_form() {
-    let b = acbb();
-    let (z, bd, a0) = (b.balls as f64, b.centre_distance_mm(), b.contact_angle_rad);
-    let mut s = BallBearingSolver::new(b).unwrap();
-    let k = s.ball_stiffness();
-    for fa in [10.0, 300.0, 3_000.0, 20_000.0] {
-        let sol = s
-            .solve(&RingLoad::forces([0.0, 0.0, fa, 0.0, 0.0]))
-            .unwrap();
-        assert!(sol.status.converged(), "{sol:?}");
-        let alpha = harris_axial_angle(fa, z, k, bd, a0);
-        let q = k * (bd * (a0.cos() / alpha.cos() - 1.0)).powf(1.5);
-        // the closed form's own consistency: Z Q sin α = F_a
-        assert!(rel(z * q * alpha.sin(), fa) < 1e-12);
-        for ball in s.ball_loads() {
-            assert!(
-                (ball.contact_angle_rad - alpha).abs() < 1e-9,
-                "F_a {fa}: {} vs {alpha}",
-                ball.contact_angle_rad
-            );
-            assert!(
-                rel(ball.load_n, q) < 1e-9,
-                "F_a {fa}: {} vs {q}",
-                ball.load_n
-            );
+    let mut dg = dgbb();
+    dg.clearance_mm = 0.02;
+    for b in [acbb(), dg] {
+        let (z, bd, a0) = (
+            b.balls as f64,
+            b.centre_distance_mm(),
+            b.free_contact_angle(),
+        );
+        let mut s = BallBearingSolver::new(b).unwrap();
+        let k = s.ball_stiffness();
+        for fa in [10.0, 300.0, 3_000.0, 20_000.0] {
+            let sol = s
+                .solve(&RingLoad::forces([0.0, 0.0, fa, 0.0, 0.0]))
+                .unwrap();
+            assert!(sol.status.converged(), "{sol:?}");
+            let alpha = harris_axial_angle(fa, z, k, bd, a0);
+            let q = k * (bd * (a0.cos() / alpha.cos() - 1.0)).powf(1.5);
+            // the closed form's own consistency: Z Q sin α = F_a
+            assert!(rel(z * q * alpha.sin(), fa) < 1e-12);
+            for ball in s.ball_loads() {
+                assert!(
+                    (ball.contact_angle_rad - alpha).abs() < 1e-9,
+                    "F_a {fa}: {} vs {alpha}",
+                    ball.contact_angle_rad
+                );
+                assert!(
+                    rel(ball.load_n, q) < 1e-9,
+                    "F_a {fa}: {} vs {q}",
+                    ball.load_n
+                );
+            }
+            let u = sol.displacement;
+            assert!(u[0].abs() < 1e-12 && u[1].abs() < 1e-12 && u[3].abs() < 1e-14);
         }
-        let u = sol.displacement;
-        assert!(u[0].abs() < 1e-12 && u[1].abs() < 1e-12 && u[3].abs() < 1e-14);
     }
 }
 
