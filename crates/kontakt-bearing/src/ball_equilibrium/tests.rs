@@ -60,7 +60,7 @@ fn harris_axial_angle(fa: f64, z: f64, k: f64, bd: f64, alpha0: f64) -> f64 {
 }
 
 /// Also a deep-groove bearing with 20 µm clearance, whose free contact angle
-/// `acos(1 − P_d/(2 B D))` (12.88°) enters the same relation.
+/// `acos(1 − P_d/(2 B D))` (12.89°) enters the same relation.
 #[test]
 fn acbb_pure_axial_load_follows_harris_closed_form() {
     let mut dg = dgbb();
