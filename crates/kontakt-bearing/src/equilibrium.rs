@@ -40,6 +40,7 @@
 //! [`RollerBearingSolver::new`]; a solve allocates nothing.
 
 use crate::geometry::{RollerBearing, RollerBearingKind};
+use crate::newton::{ConvexRing, Outcome, newton, to_rows};
 use kontakt::solve::{SolveStatus, Termination};
 use kontakt::{Error, Result};
 use nalgebra::{Matrix5, Vector5};
@@ -322,14 +323,9 @@ impl RollerBearingSolver {
 
     /// Check the load against what the bearing can carry.
     fn check_load(&self, load: &RingLoad) -> Result<()> {
+        check_finite(load)?;
         for (i, d) in load.dofs.iter().enumerate() {
-            let (name, v) = match *d {
-                Dof::Force(v) => (FORCE_NAMES[i], v),
-                Dof::Displacement(v) => (DISPLACEMENT_NAMES[i], v),
-            };
-            if !v.is_finite() {
-                return Err(Error::invalid(format!("load.{name}"), v, "a finite number"));
-            }
+            let name = FORCE_NAMES[i];
             if let Dof::Force(v) = *d
                 && !self.stiff[i]
                 && v != 0.0
@@ -404,23 +400,7 @@ impl RollerBearingSolver {
     /// As [`RollerBearingSolver::solve`], and `start` must be finite.
     pub fn solve_from(&mut self, load: &RingLoad, start: [f64; 5]) -> Result<RollerSolution> {
         self.check_load(load)?;
-        for (i, v) in start.iter().enumerate() {
-            if !v.is_finite() {
-                return Err(Error::invalid(
-                    format!("start.{}", DISPLACEMENT_NAMES[i]),
-                    v,
-                    "a finite number",
-                ));
-            }
-        }
-        let mut u = Vector5::from(start);
-        for (i, d) in load.dofs.iter().enumerate() {
-            if let Dof::Displacement(v) = *d {
-                u[i] = v;
-            } else if !self.stiff[i] {
-                u[i] = 0.0;
-            }
-        }
+        let u = warm_start(load, start, &self.stiff)?;
         Ok(self.iterate(load, u))
     }
 
@@ -477,166 +457,29 @@ impl RollerBearingSolver {
         u
     }
 
-    fn iterate(&mut self, load: &RingLoad, mut u: Vector5<f64>) -> RollerSolution {
+    fn iterate(&mut self, load: &RingLoad, u: Vector5<f64>) -> RollerSolution {
         let b = Scalars {
             rollers: self.bearing.rollers as f64,
             roller_stiffness: self.bearing.roller_stiffness(),
             clearance_mm: self.bearing.clearance_mm,
-            roller_diameter_mm: self.bearing.roller_diameter_mm,
             contact_angle_rad: self.bearing.contact_angle_rad,
             thrust: self.bearing.kind == RollerBearingKind::Thrust,
         };
         let r = 0.5 * self.bearing.pitch_diameter_mm;
-        let mut free = [false; 5];
-        let mut target = Vector5::zeros();
-        for (i, d) in load.dofs.iter().enumerate() {
-            if let Dof::Force(v) = *d {
-                free[i] = self.stiff[i];
-                target[i] = v;
-            }
-        }
+        let (free, target) = free_and_target(load, &self.stiff);
         // the load scale: the applied forces, the moments over the pitch radius, the preload
-        let mut f_ref = (0..3).map(|i| target[i].abs()).fold(0.0, f64::max);
-        f_ref = f_ref.max(target[3].hypot(target[4]) / r);
+        let mut f_ref = load_scale(&target, r);
         if b.clearance_mm < 0.0 {
             f_ref = f_ref.max(b.rollers * b.roller_stiffness * (-0.5 * b.clearance_mm).powf(EXP));
         }
-        let limit = b.roller_diameter_mm;
-        let (mut f, mut k, mut phi) = self.evaluate(&u);
-        if f_ref == 0.0 {
-            // no applied load: the reaction to the prescribed displacements sets the scale
-            f_ref = (0..5)
-                .filter(|&i| free[i])
-                .map(|i| if i < 3 { f[i].abs() } else { f[i].abs() / r })
-                .fold(0.0, f64::max);
-        }
-        let residual = |f: &Vector5<f64>, f_ref: f64| -> f64 {
-            if f_ref == 0.0 {
-                return 0.0;
-            }
-            (0..5)
-                .filter(|&i| free[i])
-                .map(|i| {
-                    let s = if i < 3 { f_ref } else { f_ref * r };
-                    (f[i] - target[i]).abs() / s
-                })
-                .fold(0.0, f64::max)
-        };
-        let mut res = residual(&f, f_ref);
-        let mut termination = Termination::MaxIterations;
-        let mut note = None;
-        let mut iterations = 0;
-        if f_ref == 0.0 {
-            termination = Termination::Converged;
-        }
-        while termination == Termination::MaxIterations && iterations < self.max_iterations {
-            if res <= self.tolerance {
-                termination = Termination::Converged;
-                break;
-            }
-            iterations += 1;
-            // the Newton system on the free directions; a direction without contact
-            // stiffness borrows the all-slices-in-contact shape (a descent direction still)
-            let mut rhs = Vector5::zeros();
-            let mut jac = k;
-            let scale = {
-                let d = (f_ref / (b.rollers * b.roller_stiffness)).powf(0.9);
-                EXP * self.c_s * d.powf(1.0 / 9.0)
-            };
-            let mut weak = false;
-            for i in 0..5 {
-                if free[i] {
-                    rhs[i] = target[i] - f[i];
-                    if !(jac[(i, i)] > 1e-6 * scale * self.probe[(i, i)]) {
-                        weak = true;
-                    }
-                }
-            }
-            if weak {
-                jac += self.probe * scale;
-            }
-            for i in 0..5 {
-                jac[(i, i)] += 1e-12 * scale * self.probe[(i, i)];
-                if !free[i] {
-                    for j in 0..5 {
-                        jac[(i, j)] = 0.0;
-                        jac[(j, i)] = 0.0;
-                    }
-                    jac[(i, i)] = 1.0;
-                }
-            }
-            let Some(chol) = jac.cholesky() else {
-                termination = Termination::Diverged;
-                note = Some("the Newton system is singular: the load cannot be carried");
-                break;
-            };
-            let mut step = chol.solve(&rhs);
-            if weak {
-                // free flight (a direction without contact): stretch the step until the
-                // first slice it closes reaches the reference approach
-                let d_ref = (f_ref / (b.rollers * b.roller_stiffness)).powf(0.9);
-                let mut t_touch = f64::INFINITY;
-                for (j, fr) in self.frames.iter().enumerate() {
-                    let (s0, s1) = (fr.g0.dot(&step), fr.g1.dot(&step));
-                    for (kk, &xk) in self.x.iter().enumerate() {
-                        let gd = s0 + s1 * xk;
-                        if gd > 0.0 {
-                            let need = d_ref - self.approach[j * self.x.len() + kk];
-                            t_touch = t_touch.min(need / gd);
-                        }
-                    }
-                }
-                if t_touch.is_finite() && t_touch > 1.0 {
-                    step *= t_touch;
-                }
-            }
-            // Armijo backtracking on Φ(u) − F·u (convex), whose gradient is −rhs
-            let merit = phi - target.dot(&u);
-            let slope = -rhs.dot(&step);
-            let mut t = 1.0;
-            let mut accepted = false;
-            for _ in 0..60 {
-                let trial = u + step * t;
-                let (f2, k2, phi2) = self.evaluate(&trial);
-                let merit2 = phi2 - target.dot(&trial);
-                let res2 = residual(&f2, f_ref);
-                let slack = 1e-13 * (phi.abs() + target.dot(&u).abs());
-                if merit2 <= merit + 1e-4 * t * slope + slack || res2 < 0.5 * res {
-                    u = trial;
-                    f = f2;
-                    k = k2;
-                    phi = phi2;
-                    res = res2;
-                    accepted = true;
-                    break;
-                }
-                t *= 0.5;
-            }
-            if !accepted {
-                termination = if res <= 1e3 * self.tolerance {
-                    Termination::Stagnated
-                } else {
-                    Termination::Diverged
-                };
-                note = Some(
-                    "the line search found no decrease (round-off floor or a load the bearing cannot carry)",
-                );
-                break;
-            }
-            if (0..3).any(|i| u[i].abs() > limit) || (3..5).any(|i| (u[i] * r).abs() > limit) {
-                termination = Termination::Diverged;
-                note = Some(
-                    "the ring displacement exceeds the roller diameter: the load cannot be carried (e.g. a moment or radial load a single row cannot balance; hold the tilts)",
-                );
-                break;
-            }
-        }
-        if termination == Termination::MaxIterations && res <= self.tolerance {
-            termination = Termination::Converged;
-        }
-        if termination == Termination::MaxIterations {
-            note = Some("the iteration limit was reached before the tolerance");
-        }
+        let (tolerance, max_iterations) = (self.tolerance, self.max_iterations);
+        let Outcome {
+            u,
+            termination,
+            iterations,
+            residual: res,
+            mut note,
+        } = newton(self, free, target, u, f_ref, r, tolerance, max_iterations);
         // evaluate once more at the final u so that the buffers match the solution
         let (f, k, _) = self.evaluate(&u);
         let ns = self.x.len();
@@ -687,19 +530,102 @@ struct Scalars {
     rollers: f64,
     roller_stiffness: f64,
     clearance_mm: f64,
-    roller_diameter_mm: f64,
     contact_angle_rad: f64,
     thrust: bool,
 }
 
-fn to_rows(k: &Matrix5<f64>) -> [[f64; 5]; 5] {
-    let mut m = [[0.0; 5]; 5];
-    for (i, row) in m.iter_mut().enumerate() {
-        for (j, v) in row.iter_mut().enumerate() {
-            *v = k[(i, j)];
+/// Every load component finite, else an error naming it (`load.fx_n`, `load.dz_mm`).
+pub(crate) fn check_finite(load: &RingLoad) -> Result<()> {
+    for (i, d) in load.dofs.iter().enumerate() {
+        let (name, v) = match *d {
+            Dof::Force(v) => (FORCE_NAMES[i], v),
+            Dof::Displacement(v) => (DISPLACEMENT_NAMES[i], v),
+        };
+        if !v.is_finite() {
+            return Err(Error::invalid(format!("load.{name}"), v, "a finite number"));
         }
     }
-    m
+    Ok(())
+}
+
+/// A given start (checked finite, named `start.<component>`) with the prescribed
+/// displacements put in and the directions without stiffness at 0.
+pub(crate) fn warm_start(
+    load: &RingLoad,
+    start: [f64; 5],
+    stiff: &[bool; 5],
+) -> Result<Vector5<f64>> {
+    for (i, v) in start.iter().enumerate() {
+        if !v.is_finite() {
+            return Err(Error::invalid(
+                format!("start.{}", DISPLACEMENT_NAMES[i]),
+                v,
+                "a finite number",
+            ));
+        }
+    }
+    let mut u = Vector5::from(start);
+    for (i, d) in load.dofs.iter().enumerate() {
+        if let Dof::Displacement(v) = *d {
+            u[i] = v;
+        } else if !stiff[i] {
+            u[i] = 0.0;
+        }
+    }
+    Ok(u)
+}
+
+/// The free (force-controlled and stiff) components and the applied load on them.
+pub(crate) fn free_and_target(load: &RingLoad, stiff: &[bool; 5]) -> ([bool; 5], Vector5<f64>) {
+    let mut free = [false; 5];
+    let mut target = Vector5::zeros();
+    for (i, d) in load.dofs.iter().enumerate() {
+        if let Dof::Force(v) = *d {
+            free[i] = stiff[i];
+            target[i] = v;
+        }
+    }
+    (free, target)
+}
+
+/// The load scale of the applied forces and of the moments over the pitch radius `r`.
+pub(crate) fn load_scale(target: &Vector5<f64>, r: f64) -> f64 {
+    let f_ref = (0..3).map(|i| target[i].abs()).fold(0.0, f64::max);
+    f_ref.max(target[3].hypot(target[4]) / r)
+}
+
+impl ConvexRing for RollerBearingSolver {
+    fn evaluate(&mut self, u: &Vector5<f64>) -> (Vector5<f64>, Matrix5<f64>, f64) {
+        RollerBearingSolver::evaluate(self, u)
+    }
+
+    fn probe(&self) -> &Matrix5<f64> {
+        &self.probe
+    }
+
+    fn reference(&self, f_ref: f64) -> (f64, f64) {
+        let d = (f_ref / (self.bearing.rollers as f64 * self.bearing.roller_stiffness())).powf(0.9);
+        (d, EXP * self.c_s * d.powf(1.0 / 9.0))
+    }
+
+    fn touch(&self, step: &Vector5<f64>, d_ref: f64) -> f64 {
+        let mut t_touch = f64::INFINITY;
+        for (j, fr) in self.frames.iter().enumerate() {
+            let (s0, s1) = (fr.g0.dot(step), fr.g1.dot(step));
+            for (kk, &xk) in self.x.iter().enumerate() {
+                let gd = s0 + s1 * xk;
+                if gd > 0.0 {
+                    let need = d_ref - self.approach[j * self.x.len() + kk];
+                    t_touch = t_touch.min(need / gd);
+                }
+            }
+        }
+        t_touch
+    }
+
+    fn limit(&self) -> f64 {
+        self.bearing.roller_diameter_mm
+    }
 }
 
 #[cfg(test)]

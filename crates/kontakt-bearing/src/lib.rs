@@ -2,8 +2,9 @@
 //!
 //! The system level above the single contact of [`kontakt`]: roller and raceway
 //! [`profile`]s, the closed-form [`load_zone`] integrals of Sjövall (1933), the internal
-//! [`geometry`] of roller bearings as validated data and the quasi-static ring
-//! [`equilibrium`] in five degrees of freedom with its stiffness matrix.
+//! [`geometry`] of roller and ball bearings as validated data, the quasi-static ring
+//! [`equilibrium`] of roller bearings and the [`ball_equilibrium`] of deep-groove and
+//! angular-contact ball bearings, in five degrees of freedom with the stiffness matrix.
 //!
 //! ## Quick example
 //! A cylindrical roller bearing (14 rollers 10 × 12 mm on a 60 mm pitch circle, ISO/TS 16281
@@ -31,9 +32,13 @@
 //! is not modelled are in `docs/bearing-model.md`.
 #![forbid(unsafe_code)]
 
+pub mod ball_equilibrium;
 pub mod equilibrium;
 pub mod geometry;
 pub mod load_zone;
+mod newton;
 pub mod profile;
+#[cfg(test)]
+mod test_support;
 
 pub use kontakt::{Error, Result};

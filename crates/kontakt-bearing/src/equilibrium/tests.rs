@@ -3,6 +3,9 @@
 use super::*;
 use crate::load_zone::{LINE_EXPONENT, discrete, relative_load};
 use crate::profile::Profile;
+use crate::test_support::{
+    assert_same_displacement, assert_same_load, assert_stiffness_matches_central_differences,
+};
 
 /// A cylindrical roller bearing of the NU 2xx class with straight rollers.
 fn crb() -> RollerBearing {
@@ -160,24 +163,9 @@ fn equilibrium_residual_and_round_trip() {
     assert!(sol.status.converged(), "{sol:?}");
     // the residual against an independent evaluation at the returned displacement
     let (g, _) = s.load_at(sol.displacement);
-    let f_ref = f[..3]
-        .iter()
-        .fold(0.0_f64, |m, v| m.max(v.abs()))
-        .max(f[3].hypot(f[4]) / 27.0);
-    for i in 0..5 {
-        let scale = if i < 3 { f_ref } else { f_ref * 27.0 };
-        assert!(
-            (g[i] - f[i]).abs() <= 1e-9 * scale,
-            "{i}: {} vs {}",
-            g[i],
-            f[i]
-        );
-    }
+    assert_same_load(&g, &f, 27.0, 1e-9);
     // the displacement it came from: to 1e-11 mm and 1e-13 rad
-    for (i, (got, want)) in sol.displacement.iter().zip(u).enumerate() {
-        let tol = if i < 3 { 1e-11 } else { 1e-13 };
-        assert!((got - want).abs() < tol, "{i}: {:?}", sol.displacement);
-    }
+    assert_same_displacement(&sol.displacement, &u);
     // a warm start from the solution takes at most one iteration
     let again = s
         .solve_from(&RingLoad::forces(f), sol.displacement)
@@ -191,31 +179,7 @@ fn equilibrium_residual_and_round_trip() {
 #[test]
 fn stiffness_matches_central_differences() {
     let (mut s, u) = round_trip_case();
-    let (_, k) = s.load_at(u);
-    let h = [1e-7, 1e-7, 1e-7, 1e-9, 1e-9];
-    for j in 0..5 {
-        let mut up = u;
-        let mut um = u;
-        up[j] += h[j];
-        um[j] -= h[j];
-        let (fp, _) = s.load_at(up);
-        let (fm, _) = s.load_at(um);
-        for i in 0..5 {
-            let fd = (fp[i] - fm[i]) / (2.0 * h[j]);
-            let scale = k[i][i].abs().sqrt() * k[j][j].abs().sqrt();
-            assert!(
-                (fd - k[i][j]).abs() < 1e-6 * scale,
-                "K[{i}][{j}] = {} vs {fd}",
-                k[i][j]
-            );
-        }
-    }
-    // symmetric
-    for i in 0..5 {
-        for j in 0..5 {
-            assert!((k[i][j] - k[j][i]).abs() <= 1e-12 * (k[i][i] * k[j][j]).sqrt());
-        }
-    }
+    assert_stiffness_matches_central_differences(|u| s.load_at(u), u);
 }
 
 #[test]

@@ -8,10 +8,16 @@
 //! (81xxx, contact angle 90°) share one description; the frames and signs are those of
 //! `docs/bearing-model.md`. Lengths in mm, angles in rad.
 //!
+//! Ball bearings (deep-groove and angular-contact) are [`BallBearing`]s.
+//!
 //! Not yet here (later steps of issue 28): the rib geometry and roller end face (today in
 //! `kontakt::bearing::roller_rib`), the NU/NJ/NUP/N rib arrangement of cylindrical roller
-//! bearings, paired and double-row bearings, ball bearings, the generator of an internal
+//! bearings, paired and double-row bearings, the generator of an internal
 //! design from the boundary dimensions, materials other than steel.
+
+mod ball;
+
+pub use ball::{BallBearing, BallBearingKind};
 
 use crate::profile::Profile;
 use kontakt::{Error, Result};
