@@ -12,7 +12,7 @@ use serde::Serialize;
 use std::path::Path;
 
 /// The valid `method` values, as an error message names them.
-const METHODS: &str = "\"hertz\", \"pimp\", \"bem\", \"traction\", \"friction\", \"mindlin\", \"impact\" or \"rough\"";
+const METHODS: &str = "\"hertz\", \"pimp\", \"bem\", \"traction\", \"friction\", \"mindlin\", \"impact\", \"rough\" or \"bearing\"";
 
 /// A case of any method: the `method` key decides the schema.
 #[derive(Debug, Clone, PartialEq)]
@@ -37,6 +37,9 @@ pub enum Case {
     /// `method = "rough"`: a periodic rough surface on the half-space solver
     /// ([`crate::rough_case`]).
     Rough(Box<crate::rough_case::RoughCase>),
+    /// `method = "bearing"`: the load distribution of a whole roller bearing
+    /// ([`crate::bearing_case`]).
+    Bearing(Box<crate::bearing_case::BearingCase>),
 }
 
 impl Case {
@@ -59,6 +62,7 @@ impl Case {
             "mindlin" => Ok(Case::Mindlin(Box::new(parse_toml(text)?))),
             "impact" => Ok(Case::Impact(Box::new(parse_toml(text)?))),
             "rough" => Ok(Case::Rough(Box::new(parse_toml(text)?))),
+            "bearing" => Ok(Case::Bearing(Box::new(parse_toml(text)?))),
             other => Err(Error::invalid("method", other, METHODS)),
         }
     }
@@ -86,6 +90,7 @@ impl Case {
             "mindlin" => Ok(Case::Mindlin(Box::new(read(table)?))),
             "impact" => Ok(Case::Impact(Box::new(read(table)?))),
             "rough" => Ok(Case::Rough(Box::new(read(table)?))),
+            "bearing" => Ok(Case::Bearing(Box::new(read(table)?))),
             other => Err(Error::invalid("method", other, METHODS)),
         }
     }
@@ -101,6 +106,7 @@ impl Case {
             Case::Mindlin(_) => "mindlin",
             Case::Impact(_) => "impact",
             Case::Rough(_) => "rough",
+            Case::Bearing(_) => "bearing",
         }
     }
 
@@ -143,6 +149,9 @@ impl Case {
             Case::Rough(case) => Outcome::Rough(Box::new(
                 crate::rough_case::run_rough_case_unchecked(case, base_dir)?,
             )),
+            Case::Bearing(case) => Outcome::Bearing(Box::new(
+                crate::bearing_case::run_bearing_case_unchecked(case)?,
+            )),
         })
     }
 }
@@ -168,6 +177,8 @@ pub enum Outcome {
     Impact(Box<crate::impact_case::ImpactReport>),
     /// Rough-contact report and the pressure at its highest load.
     Rough(Box<crate::rough_case::RoughOutcome>),
+    /// Whole-bearing report (load distribution, stiffness).
+    Bearing(Box<crate::bearing_case::BearingReport>),
 }
 
 /// One field of an [`Outcome`] on its grid: values per cell, row-major with `x` fastest
@@ -213,7 +224,8 @@ impl Outcome {
             | Outcome::Traction(_)
             | Outcome::Friction(_)
             | Outcome::Mindlin(_)
-            | Outcome::Impact(_) => Vec::new(),
+            | Outcome::Impact(_)
+            | Outcome::Bearing(_) => Vec::new(),
             Outcome::Rough(o) => vec![view("pressure", "MPa", &o.grid, &o.pressure)],
             Outcome::Pimp(o) => vec![view(
                 "pressure",
@@ -246,6 +258,7 @@ impl Checked for Outcome {
             Outcome::Mindlin(r) => r.contacts(),
             Outcome::Impact(r) => r.contacts(),
             Outcome::Rough(o) => o.contacts(),
+            Outcome::Bearing(r) => r.contacts(),
         }
     }
 
@@ -259,6 +272,7 @@ impl Checked for Outcome {
             Outcome::Mindlin(r) => r.warnings_mut(),
             Outcome::Impact(r) => r.warnings_mut(),
             Outcome::Rough(o) => o.warnings_mut(),
+            Outcome::Bearing(r) => r.warnings_mut(),
         }
     }
 
@@ -279,6 +293,7 @@ impl Outcome {
             Outcome::Mindlin(r) => &r.warnings,
             Outcome::Impact(r) => &r.warnings,
             Outcome::Rough(_) => &[],
+            Outcome::Bearing(r) => &r.warnings,
         }
     }
 }
@@ -310,6 +325,7 @@ impl Serialize for Outcome {
             Outcome::Mindlin(r) => r.serialize(s),
             Outcome::Impact(r) => r.serialize(s),
             Outcome::Rough(o) => o.report.serialize(s),
+            Outcome::Bearing(r) => r.serialize(s),
         }
     }
 }

@@ -18,6 +18,7 @@ use std::path::PathBuf;
       kontakt mindlin examples/mindlin_fretting.toml --plot loop.png\n  \
       kontakt impact examples/impact_oblique.toml\n  \
       kontakt rough examples/rough_self_affine.toml --plot area.png\n  \
+      kontakt bearing examples/bearing_32216.toml --csv rollers.csv\n  \
       kontakt friction examples/rib_friction.toml --plot torque.png\n  \
       kontakt mbs --out kontakt-mbs\n  \
       kontakt sweep examples/sweeps/hertz_load.toml --out kontakt-sweep\n\n\
@@ -62,6 +63,11 @@ pub enum Command {
     /// patches and mean gap per nominal pressure (TOML case, method = "rough";
     /// docs/case-schema.md, docs/rough.md).
     Rough(RoughArgs),
+    /// The load distribution of a whole roller bearing (cylindrical, tapered, thrust) under
+    /// forces, moments or prescribed displacements: ring displacement and tilt, roller loads,
+    /// slices of the most loaded roller, load zone, 5 × 5 stiffness (TOML case, method =
+    /// "bearing"; docs/case-schema.md, docs/bearing-model.md).
+    Bearing(BearingArgs),
     /// Friction torque and power of the roller-end/rib contact of a tapered roller bearing
     /// over a speed sweep: Hertz, PimP and/or half-space pressure, lubricant film, mixed
     /// friction (TOML case, method = "friction"; docs/case-schema.md).
@@ -239,6 +245,16 @@ pub struct MindlinArgs {
     /// Draw the hysteresis loop, Q against the shift (.png or .svg).
     #[arg(long, value_name = "FILE.png|svg")]
     pub plot: Option<PathBuf>,
+    #[command(flatten)]
+    pub input: CaseInput,
+}
+
+#[derive(Debug, Args)]
+pub struct BearingArgs {
+    /// Write one row per roller to this CSV file (azimuth_deg, inner_load_n, outer_load_n,
+    /// rib_load_n, max_load_per_length_n_per_mm, approach_mm).
+    #[arg(long, value_name = "FILE.csv")]
+    pub csv: Option<PathBuf>,
     #[command(flatten)]
     pub input: CaseInput,
 }
