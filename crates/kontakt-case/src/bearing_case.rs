@@ -599,12 +599,20 @@ fn roller_bearing(spec: &BearingSpec) -> Result<(RollerBearing, &'static str)> {
             "bearing.cup_angle_deg",
             s.cup_angle_deg.unwrap_or(0.0),
         );
-        let e = in_degrees(
-            e,
-            "bearing.cone_angle_deg",
-            "bearing.cone_angle_deg",
-            s.cone_angle_deg.unwrap_or(0.0),
-        );
+        // the library's range names the cup angle in rad: say it in the file's degrees
+        let e = match e {
+            Error::InvalidInput { field, .. } if field == "bearing.cone_angle_deg" => {
+                Error::invalid(
+                    "bearing.cone_angle_deg",
+                    s.cone_angle_deg.unwrap_or(0.0),
+                    format!(
+                        "0 < cone angle < cup_angle_deg = {} deg for a tapered roller bearing",
+                        s.cup_angle_deg.unwrap_or(0.0)
+                    ),
+                )
+            }
+            other => other,
+        };
         let rib = b.rib_angle().to_degrees();
         let e = in_degrees(e, "bearing.rib_angle_deg", "bearing.rib_angle_deg", rib);
         in_degrees(

@@ -1,0 +1,189 @@
+//! `kontakt bearing`: the table of the examples, the JSON keys, `kontakt solve` of the same
+//! case, the per-roller CSV, and one-line input errors naming the case key (exit 2).
+
+#![allow(clippy::unwrap_used)] // test helpers: a panic is a test failure with its message
+
+mod support;
+
+use std::path::PathBuf;
+use support::{bad, kontakt, num, run_json};
+
+fn example(name: &str) -> PathBuf {
+    support::example(name)
+}
+
+/// A case file: the 32216 example with `from` replaced by `to`.
+fn edited(dir: &std::path::Path, from: &str, to: &str) -> PathBuf {
+    let text = std::fs::read_to_string(example("bearing_32216.toml")).unwrap();
+    assert!(text.contains(from), "{from}");
+    let p = dir.join("case.toml");
+    std::fs::write(&p, text.replace(from, to)).unwrap();
+    p
+}
+
+/// The table: the header, the solver line and one row per roller (16 for the 32216).
+#[test]
+fn table_of_the_32216() {
+    let out = kontakt()
+        .args(["bearing", example("bearing_32216.toml").to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("tapered roller bearing: 32216"), "{text}");
+    assert!(text.contains("solver:       converged"), "{text}");
+    assert!(text.contains("load zone ε = "), "{text}");
+    let rows = text
+        .lines()
+        .skip_while(|l| !l.contains("Q_rib N"))
+        .skip(1)
+        .take_while(|l| !l.trim().is_empty())
+        .count();
+    assert_eq!(rows, 16, "{text}");
+    assert!(text.contains("stiffness matrix"), "{text}");
+}
+
+/// The JSON keys (units in their names), `kontakt solve` giving the same document, and the
+/// per-roller CSV with one row per roller and the report's keys as its header.
+#[test]
+fn json_keys_solve_and_csv() {
+    let path = example("bearing_nu_crb.toml");
+    let v = run_json(&["bearing", path.to_str().unwrap()]);
+    for key in [
+        "schema_version",
+        "bearing_type",
+        "displacement_mm",
+        "tilt_rad",
+        "force_n",
+        "moment_nmm",
+        "solver",
+        "load_zone_epsilon",
+        "max_roller_load_n",
+        "roller_loads",
+        "most_loaded_roller",
+        "stiffness_matrix",
+        "stiffness_units",
+        "stiffness_dofs",
+    ] {
+        assert!(!v[key].is_null(), "{key} missing: {v}");
+    }
+    assert_eq!(v["method"], "bearing");
+    assert_eq!(v["solver"]["termination"], "converged");
+    assert_eq!(v["roller_loads"].as_array().unwrap().len(), 14);
+    let row = &v["roller_loads"][0];
+    for key in [
+        "azimuth_deg",
+        "inner_load_n",
+        "outer_load_n",
+        "rib_load_n",
+        "max_load_per_length_n_per_mm",
+        "approach_mm",
+    ] {
+        assert!(row[key].is_number(), "{key}: {row}");
+    }
+    assert_eq!(v["stiffness_units"][0][0], "N/mm");
+    assert_eq!(v["stiffness_units"][3][4], "N*mm/rad");
+    assert!((num(&v["force_n"][0]) - 10_000.0).abs() < 1e-6);
+    let solved = run_json(&["solve", path.to_str().unwrap()]);
+    assert_eq!(solved, v);
+    let dir = support::tempdir("bearing", "csv");
+    let csv = dir.join("rollers.csv");
+    let out = kontakt()
+        .args(["bearing", path.to_str().unwrap(), "--csv"])
+        .arg(&csv)
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        "azimuth_deg,inner_load_n,outer_load_n,rib_load_n,max_load_per_length_n_per_mm,approach_mm"
+    );
+    assert_eq!(lines.count(), 14);
+    // `kontakt solve` has no per-roller CSV: an input error pointing at `kontakt bearing`
+    let e = bad(&[
+        "solve",
+        path.to_str().unwrap(),
+        "--csv",
+        csv.to_str().unwrap(),
+    ]);
+    assert!(e.contains("kontakt bearing"), "{e}");
+}
+
+/// Input errors: one line, exit status 2, naming the key as the case file has it.
+#[test]
+fn input_errors_name_the_case_key() {
+    let dir = support::tempdir("bearing", "errors");
+    let arg = |p: &PathBuf| p.to_str().unwrap().to_string();
+    // a misspelt key
+    let p = edited(
+        &dir,
+        "roller_diameter_mm = 17.0",
+        "roller_diamter_mm = 17.0",
+    );
+    let e = bad(&["bearing", &arg(&p)]);
+    assert!(e.contains("bearing.roller_diamter_mm"), "{e}");
+    // a value out of range
+    let p = edited(
+        &dir,
+        "roller_diameter_mm = 17.0",
+        "roller_diameter_mm = -17.0",
+    );
+    let e = bad(&["bearing", &arg(&p)]);
+    assert!(e.contains("bearing.roller_diameter_mm"), "{e}");
+    // an angle, said in degrees
+    let p = edited(&dir, "cone_angle_deg = 11.7", "cone_angle_deg = 20.0");
+    let e = bad(&["bearing", &arg(&p)]);
+    assert!(e.contains("bearing.cone_angle_deg = 20"), "{e}");
+    // an unknown profile key inside the tagged table
+    let p = edited(
+        &dir,
+        "kind = \"iso\"",
+        "kind = \"circular\"\nradius_mm = 500.0\nfoo = 1",
+    );
+    let e = bad(&["bearing", &arg(&p)]);
+    assert!(e.contains("bearing.roller_profile.foo"), "{e}");
+    // a radial load on a single TRB without enough axial load
+    let p = edited(
+        &dir,
+        "force_n = [20000.0, 0.0, 10000.0]",
+        "force_n = [20000.0, 0.0, 1000.0]",
+    );
+    let e = bad(&["bearing", &arg(&p)]);
+    assert!(e.contains("load.force_n[2]"), "{e}");
+    // an axial load on a cylindrical roller bearing
+    let text = std::fs::read_to_string(example("bearing_nu_crb.toml")).unwrap();
+    let p = dir.join("nu.toml");
+    std::fs::write(
+        &p,
+        text.replace(
+            "force_n = [10000.0, 0.0, 0.0]",
+            "force_n = [10000.0, 0.0, 500.0]",
+        ),
+    )
+    .unwrap();
+    let e = bad(&["bearing", &arg(&p)]);
+    assert!(
+        e.contains("load.force_n[2] = 500") && e.contains("cylindrical"),
+        "{e}"
+    );
+    // a force and a prescribed displacement on the same degree of freedom
+    let p = dir.join("both.toml");
+    std::fs::write(
+        &p,
+        text.replace(
+            "force_n = [10000.0, 0.0, 0.0]",
+            "force_n = [10000.0, 0.0, 0.0]\nmoment_nmm = [5.0, 0.0]",
+        ),
+    )
+    .unwrap();
+    let e = bad(&["bearing", &arg(&p)]);
+    assert!(e.contains("load.moment_nmm[0]"), "{e}");
+    // a case of another method
+    let e = bad(&[
+        "bearing",
+        example("mindlin_fretting.toml").to_str().unwrap(),
+    ]);
+    assert!(e.contains("kontakt mindlin"), "{e}");
+}
