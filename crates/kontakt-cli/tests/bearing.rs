@@ -12,9 +12,9 @@ fn example(name: &str) -> PathBuf {
     support::example(name)
 }
 
-/// A case file: the 32216 example with `from` replaced by `to`.
-fn edited(dir: &std::path::Path, from: &str, to: &str) -> PathBuf {
-    let text = std::fs::read_to_string(example("bearing_32216.toml")).unwrap();
+/// A case file: the example `name` with `from` replaced by `to`.
+fn edited_example(dir: &std::path::Path, name: &str, from: &str, to: &str) -> PathBuf {
+    let text = std::fs::read_to_string(example(name)).unwrap();
     assert!(text.contains(from), "{from}");
     let p = dir.join("case.toml");
     std::fs::write(&p, text.replace(from, to)).unwrap();
@@ -115,71 +115,60 @@ fn json_keys_solve_and_csv() {
 #[test]
 fn input_errors_name_the_case_key() {
     let dir = support::tempdir("bearing", "errors");
-    let arg = |p: &PathBuf| p.to_str().unwrap().to_string();
-    // a misspelt key
-    let p = edited(
-        &dir,
-        "roller_diameter_mm = 17.0",
-        "roller_diamter_mm = 17.0",
-    );
-    let e = bad(&["bearing", &arg(&p)]);
-    assert!(e.contains("bearing.roller_diamter_mm"), "{e}");
-    // a value out of range
-    let p = edited(
-        &dir,
-        "roller_diameter_mm = 17.0",
-        "roller_diameter_mm = -17.0",
-    );
-    let e = bad(&["bearing", &arg(&p)]);
-    assert!(e.contains("bearing.roller_diameter_mm"), "{e}");
-    // an angle, said in degrees
-    let p = edited(&dir, "cone_angle_deg = 11.7", "cone_angle_deg = 20.0");
-    let e = bad(&["bearing", &arg(&p)]);
-    assert!(e.contains("bearing.cone_angle_deg = 20"), "{e}");
-    // an unknown profile key inside the tagged table
-    let p = edited(
-        &dir,
-        "kind = \"iso\"",
-        "kind = \"circular\"\nradius_mm = 500.0\nfoo = 1",
-    );
-    let e = bad(&["bearing", &arg(&p)]);
-    assert!(e.contains("bearing.roller_profile.foo"), "{e}");
-    // a radial load on a single TRB without enough axial load
-    let p = edited(
-        &dir,
-        "force_n = [20000.0, 0.0, 10000.0]",
-        "force_n = [20000.0, 0.0, 1000.0]",
-    );
-    let e = bad(&["bearing", &arg(&p)]);
-    assert!(e.contains("load.force_n[2]"), "{e}");
-    // an axial load on a cylindrical roller bearing
-    let text = std::fs::read_to_string(example("bearing_nu_crb.toml")).unwrap();
-    let p = dir.join("nu.toml");
-    std::fs::write(
-        &p,
-        text.replace(
-            "force_n = [10000.0, 0.0, 0.0]",
+    let crb_load = "force_n = [10000.0, 0.0, 0.0]";
+    let both = format!("{crb_load}\nmoment_nmm = [5.0, 0.0]");
+    // (example, replaced, by, the error names)
+    let cases = [
+        // a misspelt key
+        (
+            "bearing_32216.toml",
+            "roller_diameter_mm = 17.0",
+            "roller_diamter_mm = 17.0",
+            "bearing.roller_diamter_mm",
+        ),
+        // a value out of range
+        (
+            "bearing_32216.toml",
+            "roller_diameter_mm = 17.0",
+            "roller_diameter_mm = -17.0",
+            "bearing.roller_diameter_mm",
+        ),
+        // an angle, said in degrees
+        (
+            "bearing_32216.toml",
+            "cone_angle_deg = 11.7",
+            "cone_angle_deg = 20.0",
+            "bearing.cone_angle_deg = 20",
+        ),
+        // an unknown profile key inside the tagged table
+        (
+            "bearing_32216.toml",
+            "kind = \"iso\"",
+            "kind = \"circular\"\nradius_mm = 500.0\nfoo = 1",
+            "bearing.roller_profile.foo",
+        ),
+        // a radial load on a single TRB without enough axial load
+        (
+            "bearing_32216.toml",
+            "force_n = [20000.0, 0.0, 10000.0]",
+            "force_n = [20000.0, 0.0, 1000.0]",
+            "load.force_n[2]",
+        ),
+        // an axial load on a cylindrical roller bearing
+        (
+            "bearing_nu_crb.toml",
+            crb_load,
             "force_n = [10000.0, 0.0, 500.0]",
+            "load.force_n[2] = 500: expected 0: a cylindrical",
         ),
-    )
-    .unwrap();
-    let e = bad(&["bearing", &arg(&p)]);
-    assert!(
-        e.contains("load.force_n[2] = 500") && e.contains("cylindrical"),
-        "{e}"
-    );
-    // a force and a prescribed displacement on the same degree of freedom
-    let p = dir.join("both.toml");
-    std::fs::write(
-        &p,
-        text.replace(
-            "force_n = [10000.0, 0.0, 0.0]",
-            "force_n = [10000.0, 0.0, 0.0]\nmoment_nmm = [5.0, 0.0]",
-        ),
-    )
-    .unwrap();
-    let e = bad(&["bearing", &arg(&p)]);
-    assert!(e.contains("load.moment_nmm[0]"), "{e}");
+        // a force and a prescribed displacement on the same degree of freedom
+        ("bearing_nu_crb.toml", crb_load, &both, "load.moment_nmm[0]"),
+    ];
+    for (name, from, to, names) in cases {
+        let p = edited_example(&dir, name, from, to);
+        let e = bad(&["bearing", p.to_str().unwrap()]);
+        assert!(e.contains(names), "{name} with {to}: {e}");
+    }
     // a case of another method
     let e = bad(&[
         "bearing",
