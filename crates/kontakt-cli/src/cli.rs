@@ -18,7 +18,7 @@ use std::path::PathBuf;
       kontakt mindlin examples/mindlin_fretting.toml --plot loop.png\n  \
       kontakt impact examples/impact_oblique.toml\n  \
       kontakt rough examples/rough_self_affine.toml --plot area.png\n  \
-      kontakt bearing examples/bearing_32216.toml --csv rollers.csv\n  \
+      kontakt bearing examples/bearing_32216.toml --csv rollers.csv --plot loads.png\n  \
       kontakt friction examples/rib_friction.toml --plot torque.png\n  \
       kontakt mbs --out kontakt-mbs\n  \
       kontakt sweep examples/sweeps/hertz_load.toml --out kontakt-sweep\n\n\
@@ -255,6 +255,12 @@ pub struct BearingArgs {
     /// rib_load_n, max_load_per_length_n_per_mm, approach_mm).
     #[arg(long, value_name = "FILE.csv")]
     pub csv: Option<PathBuf>,
+    /// Draw the load distribution: every roller's load against its azimuth (.png or .svg).
+    #[arg(long, value_name = "FILE.png|svg")]
+    pub plot: Option<PathBuf>,
+    /// Draw the load per length along the most loaded roller, slice by slice (.png or .svg).
+    #[arg(long, value_name = "FILE.png|svg")]
+    pub slice_plot: Option<PathBuf>,
     #[command(flatten)]
     pub input: CaseInput,
 }

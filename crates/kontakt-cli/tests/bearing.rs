@@ -176,3 +176,36 @@ fn input_errors_name_the_case_key() {
     ]);
     assert!(e.contains("kontakt mindlin"), "{e}");
 }
+
+/// `--plot` and `--slice-plot` write their images; a file of another kind is an input error
+/// naming it (exit 2).
+#[test]
+fn plots_are_written() {
+    let dir = support::tempdir("bearing", "plots");
+    let (load, slices) = (dir.join("load.svg"), dir.join("slices.png"));
+    let out = kontakt()
+        .args([
+            "bearing",
+            example("bearing_32008x.toml").to_str().unwrap(),
+            "--plot",
+        ])
+        .arg(&load)
+        .arg("--slice-plot")
+        .arg(&slices)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(std::fs::read_to_string(&load).unwrap().contains("<svg"));
+    assert!(std::fs::metadata(&slices).unwrap().len() > 1000);
+    let e = bad(&[
+        "bearing",
+        example("bearing_32008x.toml").to_str().unwrap(),
+        "--plot",
+        dir.join("load.gif").to_str().unwrap(),
+    ]);
+    assert!(e.contains("load.gif"), "{e}");
+}

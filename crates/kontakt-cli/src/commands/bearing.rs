@@ -1,12 +1,13 @@
 //! `kontakt bearing CASE.toml`: the load distribution of a whole roller bearing (a
 //! `method = "bearing"` case): ring displacement and tilt, the load of every roller, the
 //! slices of the most loaded one and the 5 × 5 stiffness matrix, as a table, JSON and a
-//! per-roller CSV. The physics is `kontakt_case::run_bearing_case`.
+//! per-roller CSV, and plots of the load distribution and of the most loaded roller. The physics is `kontakt_case::run_bearing_case`.
 
 use crate::cli::BearingArgs;
 use crate::output::Num;
 use anyhow::{Context, Result};
 use kontakt_case::{BearingCase, BearingReport, run_bearing_case};
+use kontakt_plot::{LinePlot, LineStyle, PALETTE, Series};
 use std::io::Write;
 use std::path::Path;
 
@@ -17,6 +18,12 @@ pub fn run(args: &BearingArgs, out: &mut impl Write) -> Result<()> {
     let report = run_bearing_case(&case).with_context(|| label.clone())?;
     if let Some(path) = &args.csv {
         write_csv(path, &report)?;
+    }
+    if let Some(path) = &args.plot {
+        write_load_plot(path, &report)?;
+    }
+    if let Some(path) = &args.slice_plot {
+        write_slice_plot(path, &report)?;
     }
     print_report(out, &report, args.input.json)
 }
@@ -129,4 +136,92 @@ pub fn write_csv(path: &Path, r: &BearingReport) -> Result<()> {
         w.serialize(row)?;
     }
     w.finish()
+}
+
+/// A line plot of `series` into `path` (checked format, the error names the file).
+fn draw(path: &Path, title: &str, axes: [&str; 2], series: &[Series]) -> Result<()> {
+    kontakt_plot::Format::from_path(path)
+        .map_err(|e| crate::commands::InputError(e.to_string()))?;
+    kontakt_plot::line_plot(
+        path,
+        &LinePlot {
+            title,
+            x_label: axes[0],
+            y_label: axes[1],
+            series,
+            x_log: false,
+            y_from_zero: true,
+        },
+        (900, 600),
+    )
+    .with_context(|| format!("drawing {}", path.display()))
+}
+
+/// The load distribution: every roller's raceway load (and rib load) against its azimuth.
+pub fn write_load_plot(path: &Path, r: &BearingReport) -> Result<()> {
+    let mut rows: Vec<_> = r.roller_loads.iter().collect();
+    rows.sort_by(|a, b| a.azimuth_deg.total_cmp(&b.azimuth_deg));
+    let outer: Vec<(f64, f64)> = rows
+        .iter()
+        .map(|w| (w.azimuth_deg, w.outer_load_n))
+        .collect();
+    let rib: Vec<(f64, f64)> = rows.iter().map(|w| (w.azimuth_deg, w.rib_load_n)).collect();
+    let mut series = vec![Series {
+        label: "outer raceway load Q_out",
+        points: &outer,
+        color: PALETTE[0],
+        style: LineStyle::Markers,
+    }];
+    if r.bearing_type == "tapered" {
+        series.push(Series {
+            label: "rib load Q_rib",
+            points: &rib,
+            color: PALETTE[1],
+            style: LineStyle::Markers,
+        });
+    }
+    let eps = r
+        .load_zone_epsilon
+        .map_or_else(String::new, |e| format!(", ε = {e:.3}"));
+    let title = format!(
+        "{}: {} rollers{eps}",
+        r.name.as_deref().unwrap_or("roller loads"),
+        r.rollers
+    );
+    draw(
+        path,
+        &title,
+        ["azimuth ψ [deg]", "roller load [N]"],
+        &series,
+    )
+}
+
+/// The load per unit length along the most loaded roller, slice by slice.
+pub fn write_slice_plot(path: &Path, r: &BearingReport) -> Result<()> {
+    let m = &r.most_loaded_roller;
+    let points: Vec<(f64, f64)> = m
+        .position_mm
+        .iter()
+        .zip(&m.load_per_length_n_per_mm)
+        .map(|(x, q)| (*x, *q))
+        .collect();
+    let series = [Series {
+        label: "",
+        points: &points,
+        color: PALETTE[0],
+        style: LineStyle::Solid,
+    }];
+    let title = format!(
+        "{}: roller {} at ψ = {:.1}°, Q = {:.0} N",
+        r.name.as_deref().unwrap_or("most loaded roller"),
+        m.roller,
+        r.roller_loads[m.roller].azimuth_deg,
+        r.max_roller_load_n
+    );
+    draw(
+        path,
+        &title,
+        ["position along the roller [mm]", "load per length [N/mm]"],
+        &series,
+    )
 }
