@@ -43,6 +43,9 @@ pub enum Case {
     /// `method = "rough"`: a periodic rough surface on the half-space solver
     /// ([`crate::rough_case`]).
     Rough(Box<crate::rough_case::RoughCase>),
+    /// `method = "bearing"`: the load distribution of a whole roller bearing
+    /// ([`crate::bearing_case`]).
+    Bearing(Box<crate::bearing_case::BearingCase>),
 }
 
 impl Case {
@@ -65,6 +68,7 @@ impl Case {
             "mindlin" => Ok(Case::Mindlin(Box::new(parse_toml(text)?))),
             "impact" => Ok(Case::Impact(Box::new(parse_toml(text)?))),
             "rough" => Ok(Case::Rough(Box::new(parse_toml(text)?))),
+            "bearing" => Ok(Case::Bearing(Box::new(parse_toml(text)?))),
             other => Err(Error::invalid("method", other, methods_expected())),
         }
     }
@@ -92,14 +96,15 @@ impl Case {
             "mindlin" => Ok(Case::Mindlin(Box::new(read(table)?))),
             "impact" => Ok(Case::Impact(Box::new(read(table)?))),
             "rough" => Ok(Case::Rough(Box::new(read(table)?))),
+            "bearing" => Ok(Case::Bearing(Box::new(read(table)?))),
             other => Err(Error::invalid("method", other, methods_expected())),
         }
     }
 
     /// Every `method` a case file can name; the dispatch of [`Case::from_toml_str`], the
     /// error for an unknown method and the command line's help are built from it.
-    pub const METHODS: [&'static str; 8] = [
-        "hertz", "pimp", "bem", "traction", "friction", "mindlin", "impact", "rough",
+    pub const METHODS: [&'static str; 9] = [
+        "hertz", "pimp", "bem", "traction", "friction", "mindlin", "impact", "rough", "bearing",
     ];
 
     /// The method's name, as the `method` key spells it.
@@ -113,6 +118,7 @@ impl Case {
             Case::Mindlin(_) => "mindlin",
             Case::Impact(_) => "impact",
             Case::Rough(_) => "rough",
+            Case::Bearing(_) => "bearing",
         }
     }
 
@@ -155,6 +161,9 @@ impl Case {
             Case::Rough(case) => Outcome::Rough(Box::new(
                 crate::rough_case::run_rough_case_unchecked(case, base_dir)?,
             )),
+            Case::Bearing(case) => Outcome::Bearing(Box::new(
+                crate::bearing_case::run_bearing_case_unchecked(case)?,
+            )),
         })
     }
 }
@@ -180,6 +189,8 @@ pub enum Outcome {
     Impact(Box<crate::impact_case::ImpactReport>),
     /// Rough-contact report and the pressure at its highest load.
     Rough(Box<crate::rough_case::RoughOutcome>),
+    /// Whole-bearing report (load distribution, stiffness).
+    Bearing(Box<crate::bearing_case::BearingReport>),
 }
 
 /// One field of an [`Outcome`] on its grid: values per cell, row-major with `x` fastest
@@ -225,7 +236,8 @@ impl Outcome {
             | Outcome::Traction(_)
             | Outcome::Friction(_)
             | Outcome::Mindlin(_)
-            | Outcome::Impact(_) => Vec::new(),
+            | Outcome::Impact(_)
+            | Outcome::Bearing(_) => Vec::new(),
             Outcome::Rough(o) => vec![view("pressure", "MPa", &o.grid, &o.pressure)],
             Outcome::Pimp(o) => vec![view(
                 "pressure",
@@ -258,6 +270,7 @@ impl Checked for Outcome {
             Outcome::Mindlin(r) => r.contacts(),
             Outcome::Impact(r) => r.contacts(),
             Outcome::Rough(o) => o.contacts(),
+            Outcome::Bearing(r) => r.contacts(),
         }
     }
 
@@ -271,6 +284,7 @@ impl Checked for Outcome {
             Outcome::Mindlin(r) => r.warnings_mut(),
             Outcome::Impact(r) => r.warnings_mut(),
             Outcome::Rough(o) => o.warnings_mut(),
+            Outcome::Bearing(r) => r.warnings_mut(),
         }
     }
 
@@ -291,6 +305,7 @@ impl Outcome {
             Outcome::Mindlin(r) => &r.warnings,
             Outcome::Impact(r) => &r.warnings,
             Outcome::Rough(o) => &o.report.warnings,
+            Outcome::Bearing(r) => &r.warnings,
         }
     }
 }
@@ -322,6 +337,7 @@ impl Serialize for Outcome {
             Outcome::Mindlin(r) => r.serialize(s),
             Outcome::Impact(r) => r.serialize(s),
             Outcome::Rough(o) => o.report.serialize(s),
+            Outcome::Bearing(r) => r.serialize(s),
         }
     }
 }

@@ -8,7 +8,7 @@
 //! ```
 //!
 //! - [`Case`]: every schema (`method = "hertz" | "pimp" | "bem" | "traction" | "friction" |
-//!   "mindlin" | "impact" | "rough"`), parsed
+//!   "mindlin" | "impact" | "rough" | "bearing"`), parsed
 //!   from TOML with unknown keys refused; [`Case::run`] is the one dispatch that every
 //!   front end calls.
 //! - [`Outcome`]: the report (stable, unit-suffixed JSON keys, `schema_version`) plus,
@@ -23,6 +23,7 @@
 //! and the valid range. Units: mm, N, MPa throughout. The schema is documented in
 //! `docs/case-schema.md` and shown by the files in `examples/`.
 
+pub mod bearing_case;
 pub mod bem_case;
 pub mod case;
 mod common;
@@ -40,6 +41,7 @@ pub mod topography;
 pub mod traction_case;
 pub mod validity;
 
+pub use bearing_case::{BearingCase, BearingReport, run_bearing_case};
 pub use bem_case::{BemOutcome, run_bem_case, run_bem_case_on_map};
 pub use case::{Case, CaseFile, FieldView, Outcome};
 pub use common::{SCHEMA_VERSION, read_case_file, read_case_text};

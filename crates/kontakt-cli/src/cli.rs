@@ -18,6 +18,7 @@ use std::path::PathBuf;
       kontakt mindlin examples/mindlin_fretting.toml --plot loop.png\n  \
       kontakt impact examples/impact_oblique.toml\n  \
       kontakt rough examples/rough_self_affine.toml --plot area.png\n  \
+      kontakt bearing examples/bearing_32216.toml --csv rollers.csv --plot loads.png\n  \
       kontakt friction examples/rib_friction.toml --plot torque.png\n  \
       kontakt mbs --out kontakt-mbs\n  \
       kontakt sweep examples/sweeps/hertz_load.toml --out kontakt-sweep\n\n\
@@ -97,6 +98,11 @@ pub enum Command {
     /// patches and mean gap per nominal pressure (TOML case, method = "rough";
     /// docs/case-schema.md, docs/rough.md).
     Rough(RoughArgs),
+    /// The load distribution of a whole roller bearing (cylindrical, tapered, thrust) under
+    /// forces, moments or prescribed displacements: ring displacement and tilt, roller loads,
+    /// slices of the most loaded roller, load zone, 5 × 5 stiffness (TOML case, method =
+    /// "bearing"; docs/case-schema.md, docs/bearing-model.md).
+    Bearing(BearingArgs),
     #[command(about = friction_about())]
     Friction(FrictionArgs),
     /// Drive the contact element of one roller against the rib through a prescribed motion
@@ -282,6 +288,22 @@ pub struct MindlinArgs {
     /// Draw the hysteresis loop, Q against the shift (.png or .svg).
     #[arg(long, value_name = "FILE.png|svg")]
     pub plot: Option<PathBuf>,
+    #[command(flatten)]
+    pub input: CaseInput,
+}
+
+#[derive(Debug, Args)]
+pub struct BearingArgs {
+    /// Write one row per roller to this CSV file (azimuth_deg, inner_load_n, outer_load_n,
+    /// rib_load_n, max_load_per_length_n_per_mm, approach_mm).
+    #[arg(long, value_name = "FILE.csv")]
+    pub csv: Option<PathBuf>,
+    /// Draw the load distribution: every roller's load against its azimuth (.png or .svg).
+    #[arg(long, value_name = "FILE.png|svg")]
+    pub plot: Option<PathBuf>,
+    /// Draw the load per length along the most loaded roller, slice by slice (.png or .svg).
+    #[arg(long, value_name = "FILE.png|svg")]
+    pub slice_plot: Option<PathBuf>,
     #[command(flatten)]
     pub input: CaseInput,
 }

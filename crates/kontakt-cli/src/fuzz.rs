@@ -139,19 +139,20 @@ fn fuzz_float() -> impl Strategy<Value = f64> {
 pub fn argv() -> impl Strategy<Value = Vec<String>> {
     let command = prop::sample::select(vec![
         "hertz", "hertz", "hertz", "solve", "traction", "friction", "demo", "validate", "mbs",
-        "sweep", "help", "", "solv",
+        "sweep", "bearing", "help", "", "solv",
     ]);
-    (command, prop::collection::vec(word(), 0..12), 0..4usize).prop_map(|(c, words, file)| {
+    (command, prop::collection::vec(word(), 0..12), 0..5usize).prop_map(|(c, words, file)| {
         let mut v = vec!["kontakt".to_string()];
         if !c.is_empty() {
             v.push(c.to_string());
         }
-        if matches!(c, "solve" | "traction" | "friction" | "sweep") {
+        if matches!(c, "solve" | "traction" | "friction" | "sweep" | "bearing") {
             let f = [
                 example("ball_on_flat.toml"),
                 example("traction_twin_disc.toml"),
                 example("nonexistent.toml"),
                 example("data/wavy_sphere_gap.csv"),
+                example("bearing_32216.toml"),
             ];
             v.push(f[file].clone());
         }
@@ -163,7 +164,7 @@ pub fn argv() -> impl Strategy<Value = Vec<String>> {
 /// Whether running `cli` in-process is cheap and writes nothing outside the temp folder.
 fn runnable(args: &[String]) -> bool {
     let cmd = args.get(1).map(String::as_str);
-    matches!(cmd, Some("hertz" | "solve" | "traction"))
+    matches!(cmd, Some("hertz" | "solve" | "traction" | "bearing"))
         && !args.iter().any(|a| {
             [
                 "--csv",

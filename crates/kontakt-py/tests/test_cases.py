@@ -21,6 +21,7 @@ EXAMPLES = {
     "mindlin_fretting": "solve_mindlin_fretting",
     "impact_oblique": "solve_impact_oblique",
     "rough_self_affine": "solve_rough_self_affine",
+    "bearing_32216": "solve_bearing_32216",
 }
 # keys that may differ from the recorded baseline (as crates/kontakt-cli/tests/reports.rs)
 NEW_KEYS = {"status", "warnings", "difference_parameter"}
@@ -49,6 +50,30 @@ def test_examples_match_cli_baselines(repo, example):
     base = json.loads((repo / "crates/kontakt-cli/tests/reports" / f"{EXAMPLES[example]}.json").read_text())
     same(result.to_dict(), base)
     assert json.loads(result.to_json()) == result.to_dict()
+
+
+def test_bearing_case_through_run(repo):
+    """A whole bearing through the one dispatch: the rollers carry the applied radial and
+    axial force (1e-9), a dict case works, and an axial load on a CRB names its key."""
+    result = kt.run(repo / "examples" / "bearing_32216.toml")
+    r = result.to_dict()
+    assert r["method"] == "bearing" and r["solver"]["converged"]
+    alpha = math.radians(r["contact_angle_deg"])
+    fx = sum(row["outer_load_n"] * math.cos(alpha) * math.cos(math.radians(row["azimuth_deg"]))
+             for row in r["roller_loads"])
+    fz = sum(row["outer_load_n"] * math.sin(alpha) for row in r["roller_loads"])
+    assert abs(fx - 20000.0) < 1e-9 * 20000.0 and abs(fz - 10000.0) < 1e-9 * 20000.0
+    assert len(r["stiffness_matrix"]) == 5 and r["stiffness_units"][0][0] == "N/mm"
+    case = {
+        "method": "bearing",
+        "bearing": {"type": "cylindrical", "pitch_diameter_mm": 60.0, "rollers": 14,
+                    "roller_diameter_mm": 11.0, "roller_length_mm": 11.0},
+        "load": {"force_n": [10000.0, 0.0, 500.0], "prescribed": {"tilt_x_rad": 0.0, "tilt_y_rad": 0.0}},
+    }
+    with pytest.raises(kt.InputError, match=r"load\.force_n\[2\]"):
+        kt.run(case)
+    case["load"]["force_n"][2] = 0.0
+    assert kt.run(case).to_dict()["load_zone_epsilon"] > 0.0
 
 
 def test_pimp_fields_and_dict_case(repo):

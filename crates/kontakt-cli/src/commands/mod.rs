@@ -9,6 +9,7 @@ use kontakt_case::case::{
 };
 use kontakt_case::{Case, Outcome, run_case};
 
+pub mod bearing;
 pub mod friction;
 pub mod impact;
 pub mod mbs;
@@ -125,6 +126,12 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                     ))
                     .into());
                 }
+                "bearing" if wants_field => {
+                    return Err(InputError(format!(
+                        "{label}: bearing cases write their per-roller table with `kontakt bearing {label} --csv FILE`"
+                    ))
+                    .into());
+                }
                 "traction" if wants_field => {
                     return Err(InputError(format!(
                         "{label}: traction cases write curves with `kontakt traction {label} --csv FILE --plot FILE`"
@@ -194,6 +201,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
                 Outcome::Rough(outcome) => {
                     rough::print_report(out, &outcome.report, args.input.json)
                 }
+                Outcome::Bearing(report) => bearing::print_report(out, &report, args.input.json),
             }
         }
         Command::Demo(args) => pimp::demo(&args.out, out, args.json),
@@ -202,6 +210,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
         Command::Mindlin(args) => mindlin::run(args, out),
         Command::Impact(args) => impact::run(args, out),
         Command::Rough(args) => rough::run(args, out),
+        Command::Bearing(args) => bearing::run(args, out),
         Command::Friction(args) => friction::run(args, out),
         Command::Mbs(args) => mbs::run(args, out),
         Command::Sweep(args) => sweep::run(args, out),
@@ -231,6 +240,7 @@ pub fn read_case_for(
             "mindlin" => "kontakt mindlin (or kontakt solve)",
             "impact" => "kontakt impact (or kontakt solve)",
             "rough" => "kontakt rough (or kontakt solve)",
+            "bearing" => "kontakt bearing (or kontakt solve)",
             _ => "kontakt solve",
         };
         return Err(InputError(format!(

@@ -1,0 +1,211 @@
+//! `kontakt bearing`: the table of the examples, the JSON keys, `kontakt solve` of the same
+//! case, the per-roller CSV, and one-line input errors naming the case key (exit 2).
+
+#![allow(clippy::unwrap_used)] // test helpers: a panic is a test failure with its message
+
+mod support;
+
+use std::path::PathBuf;
+use support::{bad, kontakt, num, run_json};
+
+fn example(name: &str) -> PathBuf {
+    support::example(name)
+}
+
+/// A case file: the example `name` with `from` replaced by `to`.
+fn edited_example(dir: &std::path::Path, name: &str, from: &str, to: &str) -> PathBuf {
+    let text = std::fs::read_to_string(example(name)).unwrap();
+    assert!(text.contains(from), "{from}");
+    let p = dir.join("case.toml");
+    std::fs::write(&p, text.replace(from, to)).unwrap();
+    p
+}
+
+/// The table: the header, the solver line and one row per roller (16 for the 32216).
+#[test]
+fn table_of_the_32216() {
+    let out = kontakt()
+        .args(["bearing", example("bearing_32216.toml").to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("tapered roller bearing: 32216"), "{text}");
+    assert!(text.contains("solver:       converged"), "{text}");
+    assert!(text.contains("load zone ε = "), "{text}");
+    let rows = text
+        .lines()
+        .skip_while(|l| !l.contains("Q_rib N"))
+        .skip(1)
+        .take_while(|l| !l.trim().is_empty())
+        .count();
+    assert_eq!(rows, 16, "{text}");
+    assert!(text.contains("stiffness matrix"), "{text}");
+}
+
+/// The JSON keys (units in their names), `kontakt solve` giving the same document, and the
+/// per-roller CSV with one row per roller and the report's keys as its header.
+#[test]
+fn json_keys_solve_and_csv() {
+    let path = example("bearing_nu_crb.toml");
+    let v = run_json(&["bearing", path.to_str().unwrap()]);
+    for key in [
+        "schema_version",
+        "bearing_type",
+        "displacement_mm",
+        "tilt_rad",
+        "force_n",
+        "moment_nmm",
+        "solver",
+        "load_zone_epsilon",
+        "max_roller_load_n",
+        "roller_loads",
+        "most_loaded_roller",
+        "stiffness_matrix",
+        "stiffness_units",
+        "stiffness_dofs",
+    ] {
+        assert!(!v[key].is_null(), "{key} missing: {v}");
+    }
+    assert_eq!(v["method"], "bearing");
+    assert_eq!(v["solver"]["termination"], "converged");
+    assert_eq!(v["roller_loads"].as_array().unwrap().len(), 14);
+    let row = &v["roller_loads"][0];
+    for key in [
+        "azimuth_deg",
+        "inner_load_n",
+        "outer_load_n",
+        "rib_load_n",
+        "max_load_per_length_n_per_mm",
+        "approach_mm",
+    ] {
+        assert!(row[key].is_number(), "{key}: {row}");
+    }
+    assert_eq!(v["stiffness_units"][0][0], "N/mm");
+    assert_eq!(v["stiffness_units"][3][4], "N*mm/rad");
+    assert!((num(&v["force_n"][0]) - 10_000.0).abs() < 1e-6);
+    let solved = run_json(&["solve", path.to_str().unwrap()]);
+    assert_eq!(solved, v);
+    let dir = support::tempdir("bearing", "csv");
+    let csv = dir.join("rollers.csv");
+    let out = kontakt()
+        .args(["bearing", path.to_str().unwrap(), "--csv"])
+        .arg(&csv)
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        "azimuth_deg,inner_load_n,outer_load_n,rib_load_n,max_load_per_length_n_per_mm,approach_mm"
+    );
+    assert_eq!(lines.count(), 14);
+    // `kontakt solve` has no per-roller CSV: an input error pointing at `kontakt bearing`
+    let e = bad(&[
+        "solve",
+        path.to_str().unwrap(),
+        "--csv",
+        csv.to_str().unwrap(),
+    ]);
+    assert!(e.contains("kontakt bearing"), "{e}");
+}
+
+/// Input errors: one line, exit status 2, naming the key as the case file has it.
+#[test]
+fn input_errors_name_the_case_key() {
+    let dir = support::tempdir("bearing", "errors");
+    let crb_load = "force_n = [10000.0, 0.0, 0.0]";
+    let both = format!("{crb_load}\nmoment_nmm = [5.0, 0.0]");
+    // (example, replaced, by, the error names)
+    let cases = [
+        // a misspelt key
+        (
+            "bearing_32216.toml",
+            "roller_diameter_mm = 17.0",
+            "roller_diamter_mm = 17.0",
+            "bearing.roller_diamter_mm",
+        ),
+        // a value out of range
+        (
+            "bearing_32216.toml",
+            "roller_diameter_mm = 17.0",
+            "roller_diameter_mm = -17.0",
+            "bearing.roller_diameter_mm",
+        ),
+        // an angle, said in degrees
+        (
+            "bearing_32216.toml",
+            "cone_angle_deg = 11.7",
+            "cone_angle_deg = 20.0",
+            "bearing.cone_angle_deg = 20",
+        ),
+        // an unknown profile key inside the tagged table
+        (
+            "bearing_32216.toml",
+            "kind = \"iso\"",
+            "kind = \"circular\"\nradius_mm = 500.0\nfoo = 1",
+            "bearing.roller_profile.foo",
+        ),
+        // a radial load on a single TRB without enough axial load
+        (
+            "bearing_32216.toml",
+            "force_n = [20000.0, 0.0, 10000.0]",
+            "force_n = [20000.0, 0.0, 1000.0]",
+            "load.force_n[2]",
+        ),
+        // an axial load on a cylindrical roller bearing
+        (
+            "bearing_nu_crb.toml",
+            crb_load,
+            "force_n = [10000.0, 0.0, 500.0]",
+            "load.force_n[2] = 500: expected 0: a cylindrical",
+        ),
+        // a force and a prescribed displacement on the same degree of freedom
+        ("bearing_nu_crb.toml", crb_load, &both, "load.moment_nmm[0]"),
+    ];
+    for (name, from, to, names) in cases {
+        let p = edited_example(&dir, name, from, to);
+        let e = bad(&["bearing", p.to_str().unwrap()]);
+        assert!(e.contains(names), "{name} with {to}: {e}");
+    }
+    // a case of another method
+    let e = bad(&[
+        "bearing",
+        example("mindlin_fretting.toml").to_str().unwrap(),
+    ]);
+    assert!(e.contains("kontakt mindlin"), "{e}");
+}
+
+/// `--plot` and `--slice-plot` write their images; a file of another kind is an input error
+/// naming it (exit 2).
+#[test]
+fn plots_are_written() {
+    let dir = support::tempdir("bearing", "plots");
+    let (load, slices) = (dir.join("load.svg"), dir.join("slices.png"));
+    let out = kontakt()
+        .args([
+            "bearing",
+            example("bearing_32008x.toml").to_str().unwrap(),
+            "--plot",
+        ])
+        .arg(&load)
+        .arg("--slice-plot")
+        .arg(&slices)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(std::fs::read_to_string(&load).unwrap().contains("<svg"));
+    assert!(std::fs::metadata(&slices).unwrap().len() > 1000);
+    let e = bad(&[
+        "bearing",
+        example("bearing_32008x.toml").to_str().unwrap(),
+        "--plot",
+        dir.join("load.gif").to_str().unwrap(),
+    ]);
+    assert!(e.contains("load.gif"), "{e}");
+}
