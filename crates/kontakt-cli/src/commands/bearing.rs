@@ -167,14 +167,14 @@ pub fn write_load_plot(path: &Path, r: &BearingReport) -> Result<()> {
         .collect();
     let rib: Vec<(f64, f64)> = rows.iter().map(|w| (w.azimuth_deg, w.rib_load_n)).collect();
     let mut series = vec![Series {
-        label: "outer raceway load Q_out",
+        label: "outer raceway load",
         points: &outer,
         color: PALETTE[0],
         style: LineStyle::Markers,
     }];
     if r.bearing_type == "tapered" {
         series.push(Series {
-            label: "rib load Q_rib",
+            label: "rib load",
             points: &rib,
             color: PALETTE[1],
             style: LineStyle::Markers,
