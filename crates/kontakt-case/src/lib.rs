@@ -24,6 +24,7 @@
 //! `docs/case-schema.md` and shown by the files in `examples/`.
 
 pub mod bearing_case;
+pub mod bearing_model;
 pub mod bem_case;
 pub mod case;
 mod common;
@@ -42,6 +43,7 @@ pub mod traction_case;
 pub mod validity;
 
 pub use bearing_case::{BearingCase, BearingReport, run_bearing_case};
+pub use bearing_model::BearingModel;
 pub use bem_case::{BemOutcome, run_bem_case, run_bem_case_on_map};
 pub use case::{Case, CaseFile, FieldView, Outcome};
 pub use common::{SCHEMA_VERSION, read_case_file, read_case_text};

@@ -1,0 +1,90 @@
+use super::*;
+use crate::run_bearing_case;
+use std::path::PathBuf;
+
+fn examples() -> Vec<(PathBuf, BearingCase)> {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples");
+    let mut out = Vec::new();
+    for entry in std::fs::read_dir(&dir).unwrap() {
+        let path = entry.unwrap().path();
+        let name = path.file_name().unwrap().to_string_lossy().to_string();
+        if name.starts_with("bearing_") && name.ends_with(".toml") {
+            let text = std::fs::read_to_string(&path).unwrap();
+            out.push((path, BearingCase::from_toml_str(&text).unwrap()));
+        }
+    }
+    out.sort_by(|a, b| a.0.cmp(&b.0));
+    assert!(out.len() >= 4, "the example bearings: {out:?}");
+    out
+}
+
+/// The model's first (cold) solve is the case runner's report, bit for bit: the two must
+/// not drift apart.
+#[test]
+fn a_cold_solve_is_the_case_report() {
+    for (path, case) in examples() {
+        let mut model = BearingModel::new(&case).unwrap();
+        assert_eq!(model.warm_start(), None);
+        let report = model.solve(&case.load).unwrap();
+        assert_eq!(report, run_bearing_case(&case).unwrap(), "{}", path.display());
+        assert!(model.warm_start().is_some());
+    }
+}
+
+/// After a 1 % load change the warm solve needs fewer iterations than a cold one and
+/// lands on the same equilibrium.
+#[test]
+fn a_warm_solve_after_a_small_load_change_is_shorter_and_the_same() {
+    for (path, case) in examples() {
+        let mut model = BearingModel::new(&case).unwrap();
+        model.solve(&case.load).unwrap();
+        let mut load = case.load;
+        load.force_n = load.force_n.map(|f| 1.01 * f);
+        load.moment_nmm = load.moment_nmm.map(|m| 1.01 * m);
+        let warm = model.solve(&load).unwrap();
+        model.reset();
+        let cold = model.solve(&load).unwrap();
+        let what = path.display();
+        assert!(
+            warm.solver.iterations < cold.solver.iterations,
+            "{what}: warm {} cold {}",
+            warm.solver.iterations,
+            cold.solver.iterations
+        );
+        for i in 0..3 {
+            let (w, c) = (warm.displacement_mm[i], cold.displacement_mm[i]);
+            assert!((w - c).abs() <= 1e-9 * c.abs().max(1e-6), "{what}: δ[{i}] {w} {c}");
+        }
+        for (w, c) in warm.roller_loads.iter().zip(&cold.roller_loads) {
+            let scale = cold.max_roller_load_n;
+            assert!((w.outer_load_n - c.outer_load_n).abs() <= 1e-9 * scale, "{what}");
+        }
+    }
+}
+
+/// Load errors name the case key, as the case runner's do; a failed solve keeps the warm
+/// start.
+#[test]
+fn load_errors_name_the_case_key() {
+    let (_, case) = examples()
+        .into_iter()
+        .find(|(p, _)| p.to_string_lossy().contains("nu_crb"))
+        .unwrap();
+    let mut model = BearingModel::new(&case).unwrap();
+    model.solve(&case.load).unwrap();
+    let start = model.warm_start();
+    let mut load = case.load;
+    load.force_n[2] = f64::NAN;
+    let e = model.solve(&load).unwrap_err().to_string();
+    assert!(e.contains("load.force_n[2]"), "{e}");
+    let mut load = case.load;
+    load.moment_nmm[0] = 5.0;
+    load.prescribed.tilt_x_rad = Some(0.0);
+    let e = model.solve(&load).unwrap_err().to_string();
+    assert!(e.contains("load.moment_nmm[0]"), "{e}");
+    assert_eq!(model.warm_start(), start);
+    let mut bad = case.clone();
+    bad.method = "hertz".into();
+    let e = BearingModel::new(&bad).unwrap_err().to_string();
+    assert!(e.contains("method"), "{e}");
+}
