@@ -230,15 +230,19 @@ fn run_text(py: Python<'_>, text: &str, base_dir: PathBuf) -> PyResult<CaseResul
 /// Run a case parsed from a dict's TOML text: a schema error names the key, not a line of
 /// a text the user never saw.
 fn run_dict_text(py: Python<'_>, text: &str, base_dir: PathBuf) -> PyResult<CaseResult> {
-    let case = Case::from_toml_str(text).map_err(|e| match e {
+    run_parsed(py, parse_dict_text(text)?, base_dir)
+}
+
+/// Parse a case from a dict's TOML text: a schema error names the key, not a line.
+pub fn parse_dict_text(text: &str) -> PyResult<Case> {
+    Case::from_toml_str(text).map_err(|e| match e {
         kontakt::Error::CaseFile { key, message, .. } => to_py(kontakt::Error::CaseFile {
             line: None,
             key,
             message,
         }),
         other => to_py(other),
-    })?;
-    run_parsed(py, case, base_dir)
+    })
 }
 
 /// Run a parsed case with the GIL released.
@@ -295,7 +299,7 @@ pub fn to_toml(definition: &Bound<'_, PyAny>) -> PyResult<String> {
 }
 
 /// `v`, a dict named `name`, as TOML text.
-fn dict_toml(v: &Bound<'_, PyAny>, name: &str) -> PyResult<String> {
+pub fn dict_toml(v: &Bound<'_, PyAny>, name: &str) -> PyResult<String> {
     if !v.is_instance_of::<PyDict>() {
         return Err(args::wrong_type(
             name,

@@ -17,6 +17,7 @@
 #![allow(unsafe_code)]
 
 mod args;
+mod bearing;
 mod case;
 mod element;
 mod errors;
@@ -50,6 +51,8 @@ fn _kontakt(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(case::to_toml, m)?)?;
     m.add_class::<element::ContactElement>()?;
     m.add_class::<element::ElementResult>()?;
+    m.add_class::<bearing::Bearing>()?;
+    m.add_class::<bearing::BearingResult>()?;
     m.add_class::<sweep::Sweep>()?;
     Ok(())
 }
