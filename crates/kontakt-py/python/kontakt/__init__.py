@@ -11,6 +11,8 @@ from typing import Any, Mapping
 
 from ._sweep import sweep
 from ._kontakt import (
+    Bearing,
+    BearingResult,
     CaseResult,
     ContactElement,
     ConvergenceError,
@@ -32,6 +34,8 @@ from ._kontakt import (
 )
 
 __all__ = [
+    "Bearing",
+    "BearingResult",
     "CaseResult",
     "ContactElement",
     "ConvergenceError",

@@ -1,0 +1,216 @@
+"""kontakt.Bearing: a bearing case planned once, solved for many loads with warm starts;
+the same report as kontakt.run of the case, the GIL released, arguments named in errors."""
+
+import math
+import pathlib
+import threading
+import time
+import tomllib
+
+import numpy as np
+import pytest
+
+import kontakt as kt
+
+REPO = pathlib.Path(__file__).resolve().parents[3]
+EXAMPLES = sorted(REPO.glob("examples/bearing_*.toml"))
+CRB = REPO / "examples/bearing_nu_crb.toml"
+
+
+def test_there_are_example_bearings():
+    assert len(EXAMPLES) >= 4
+
+
+def solve_args(case: dict) -> dict:
+    """The case's [load] as the arguments of Bearing.solve."""
+    load = case.get("load", {})
+    return dict(
+        force=load.get("force_n", (0.0, 0.0, 0.0)),
+        moment=load.get("moment_nmm", (0.0, 0.0)),
+        prescribed=load.get("prescribed"),
+    )
+
+
+def close(a, b, path="report"):
+    """Every number of two reports equal to 1e-12 (relative to the larger of the
+    magnitudes in its array), every other value equal."""
+    if isinstance(a, dict):
+        assert a.keys() == b.keys(), path
+        for k in a:
+            if k != "kontakt_version":
+                close(a[k], b[k], f"{path}.{k}")
+    elif isinstance(a, list):
+        assert len(a) == len(b), path
+        scale = max((abs(x) for x in a if isinstance(x, float)), default=0.0)
+        for i, (x, y) in enumerate(zip(a, b)):
+            if isinstance(x, float):
+                assert abs(x - y) <= 1e-12 * max(scale, abs(x), abs(y)) + 1e-300, f"{path}[{i}]: {x} {y}"
+            else:
+                close(x, y, f"{path}[{i}]")
+    elif isinstance(a, float) and not isinstance(a, bool):
+        assert abs(a - b) <= 1e-12 * max(abs(a), abs(b)) + 1e-300, f"{path}: {a} {b}"
+    else:
+        assert a == b, f"{path}: {a!r} {b!r}"
+
+
+@pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)
+def test_every_example_is_kontakt_run(path):
+    case = tomllib.loads(path.read_text())
+    reference = kt.run(path).to_dict()
+    for source in (path, str(path), path.read_text(), case):
+        r = kt.Bearing(source).solve(**solve_args(case))
+        close(r.to_dict(), reference)
+    # the arrays are the report's
+    d = r.to_dict()
+    np.testing.assert_array_equal(r.displacement, d["displacement_mm"] + d["tilt_rad"])
+    np.testing.assert_array_equal(r.load_carried, d["force_n"] + d["moment_nmm"])
+    np.testing.assert_array_equal(r.stiffness, np.array(d["stiffness_matrix"]))
+    assert r.stiffness.shape == (5, 5) and r.displacement.shape == (5,)
+    rows = d["roller_loads"]
+    for key in ("azimuth_deg", "inner_load_n", "outer_load_n", "rib_load_n",
+                "max_load_per_length_n_per_mm", "approach_mm"):
+        np.testing.assert_array_equal(getattr(r, key), [row[key] for row in rows])
+        assert getattr(r, key).shape == (d["rollers"],)
+    s = r.slices
+    assert s["roller"] == d["most_loaded_roller"]["roller"]
+    for key in ("position_mm", "load_n", "load_per_length_n_per_mm", "approach_mm"):
+        np.testing.assert_array_equal(s[key], d["most_loaded_roller"][key])
+    assert r.status == d["solver"]["termination"] == "converged"
+    assert r.iterations == d["solver"]["iterations"]
+    assert r.residual == d["solver"]["residual"]
+    assert r.max_roller_load_n == d["max_roller_load_n"]
+    assert r.load_zone_epsilon == d.get("load_zone_epsilon")
+    assert r.warnings == d.get("warnings", [])
+    assert r.to_json().startswith("{") and "BearingResult(" in repr(r)
+
+
+def test_the_load_table_is_optional_and_not_used():
+    case = tomllib.loads(CRB.read_text())
+    del case["load"]
+    b = kt.Bearing(case)
+    assert b.bearing_type == "cylindrical"
+    r = b.solve(force=(10000.0, 0.0, 0.0), hold_tilts=True)
+    close(r.to_dict(), kt.run(CRB).to_dict())
+    text = CRB.read_text().split("[load]")[0]
+    assert kt.Bearing(text).solve(force=(10000.0, 0, 0), hold_tilts=True).to_dict() == r.to_dict()
+
+
+@pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.stem)
+def test_a_warm_start_after_a_one_percent_load_change(path):
+    case = tomllib.loads(path.read_text())
+    args = solve_args(case)
+    b = kt.Bearing(path)
+    b.solve(**args)
+    changed = dict(args, force=[1.01 * f for f in args["force"]], moment=[1.01 * m for m in args["moment"]])
+    warm = b.solve(**changed)
+    b.reset()
+    cold = b.solve(**changed)
+    assert warm.iterations < cold.iterations
+    np.testing.assert_allclose(warm.displacement, cold.displacement, rtol=1e-9, atol=1e-9 * np.abs(cold.displacement).max())
+    np.testing.assert_allclose(warm.outer_load_n, cold.outer_load_n, rtol=0, atol=1e-9 * cold.max_roller_load_n)
+
+
+def test_a_failed_solve_keeps_the_warm_start():
+    b = kt.Bearing(CRB)
+    first = b.solve(force=(10000.0, 0.0, 0.0), hold_tilts=True)
+    with pytest.raises(kt.InputError):
+        b.solve(force=(10000.0, 0.0, 500.0), hold_tilts=True)  # an NU bearing takes no axial load
+    again = b.solve(force=(10000.0, 0.0, 0.0), hold_tilts=True)
+    assert again.iterations < first.iterations
+    np.testing.assert_allclose(again.displacement, first.displacement, rtol=1e-9, atol=1e-15)
+
+
+def test_prescribed_displacements_give_the_reaction():
+    b = kt.Bearing(CRB)
+    r = b.solve(force=(10000.0, 0.0, 0.0), hold_tilts=True)
+    u = r.displacement
+    p = b.solve(prescribed={"dx_mm": u[0], "dy_mm": u[1], "tilt_x_rad": 0.0, "tilt_y_rad": 0.0})
+    assert p.load_carried[0] == pytest.approx(10000.0, rel=1e-9)
+    assert p.to_dict()["displacement_mm"][0] == u[0]
+
+
+def test_the_gil_is_released_during_a_solve():
+    """A thread counting in Python runs while another thread solves: the count grows
+    during the solves (with the GIL held through a solve it could not)."""
+    case = tomllib.loads(CRB.read_text())
+    case["bearing"]["slices"] = 1001
+    b = kt.Bearing(case)
+    done = threading.Event()
+    counts = []
+
+    def solves():
+        for i in range(3):
+            b.reset()
+            b.solve(force=(10000.0 + i, 0.0, 0.0), hold_tilts=True)
+        done.set()
+
+    t = threading.Thread(target=solves)
+    n = 0
+    start = time.perf_counter()
+    t.start()
+    while not done.is_set():
+        n += 1
+    t.join()
+    counts.append(n)
+    assert time.perf_counter() - start > 0 and n > 1000, n
+
+
+def field(e) -> str:
+    return e.value.field if isinstance(e.value, kt.InputError) else str(e.value)
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "exc", "named"),
+    [
+        (dict(force=(math.nan, 0.0, 0.0)), kt.InputError, "force[0]"),
+        (dict(force=(1e4, math.inf, 0.0)), kt.InputError, "force[1]"),
+        (dict(force=(1e4, 0.0)), kt.InputError, "force"),
+        (dict(force=np.zeros((1, 3))), kt.InputError, "force"),
+        (dict(force=(True, 0.0, 0.0)), TypeError, "invalid force[0] = True (bool)"),
+        (dict(force="1e4"), TypeError, "invalid force = '1e4' (str)"),
+        (dict(force=(1e4, 0, 0), moment=(0.0, math.nan)), kt.InputError, "moment[1]"),
+        (dict(force=(1e4, 0, 0), moment=(0.0, 0.0, 0.0)), kt.InputError, "moment"),
+        (dict(force=(1e4, 0, 0), moment=(True, 0.0)), TypeError, "invalid moment[0] = True (bool)"),
+        (dict(force=(1e4, 0, 0), hold_tilts=1), TypeError, "invalid hold_tilts = 1 (int)"),
+        (dict(force=(1e4, 0, 0), prescribed={"tilt_z_rad": 0.0}), kt.InputError, "prescribed"),
+        (dict(force=(1e4, 0, 0), prescribed=[0.0]), TypeError, "invalid prescribed = [0.0] (list)"),
+        (dict(force=(1e4, 0, 0), prescribed={"dx_mm": False}), TypeError, "invalid prescribed['dx_mm'] = False (bool)"),
+        (dict(force=(1e4, 0, 0), prescribed={"dy_mm": math.nan}), kt.InputError, "prescribed['dy_mm']"),
+        (dict(force=(1e4, 0, 0), prescribed={"dx_mm": 0.01}), kt.InputError, "force[0]"),
+        (dict(force=(1e4, 0, 0), prescribed={"tilt_y_rad": 0.0}, hold_tilts=True), kt.InputError, "hold_tilts"),
+        (dict(force=(1e4, 0, 50.0)), kt.InputError, "force[2]"),
+    ],
+)
+def test_bad_arguments_are_named(kwargs, exc, named):
+    b = kt.Bearing(CRB)
+    with pytest.raises(exc) as e:
+        b.solve(**kwargs)
+    assert "\n" not in str(e.value)
+    if exc is kt.InputError:
+        assert e.value.field == named, str(e.value)
+    else:
+        assert str(e.value).startswith(named), str(e.value)
+
+
+def test_bad_cases_are_named(tmp_path):
+    case = tomllib.loads(CRB.read_text())
+    with pytest.raises(kt.InputError) as e:
+        kt.Bearing(dict(case, method="hertz"))
+    assert e.value.field in ("method", "case.method")
+    bad = tomllib.loads(CRB.read_text())
+    bad["bearing"]["roller_diameter_mm"] = -1.0
+    with pytest.raises(kt.InputError) as e:
+        kt.Bearing(bad)
+    assert e.value.field == "bearing.roller_diameter_mm"
+    with pytest.raises(TypeError) as e:
+        kt.Bearing(3.0)
+    assert str(e.value).startswith("invalid case = 3.0 (float)")
+    with pytest.raises(kt.InputError):
+        kt.Bearing(tmp_path / "missing.toml")
+
+
+def test_a_load_it_cannot_carry_is_a_convergence_error_or_named():
+    case = tomllib.loads(REPO.joinpath("examples/bearing_32008x.toml").read_text())
+    b = kt.Bearing(case)
+    with pytest.raises((kt.InputError, kt.ConvergenceError)):
+        b.solve(force=(5000.0, 0.0, -3000.0), hold_tilts=True)
