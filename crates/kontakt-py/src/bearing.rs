@@ -17,7 +17,7 @@ use pyo3::types::{PyBool, PyDict, PyString};
 const PRESCRIBED: [&str; 5] = ["dx_mm", "dy_mm", "dz_mm", "tilt_x_rad", "tilt_y_rad"];
 
 /// The case key of a load component (`load.force_n[2]`, `load.prescribed.dx_mm`) as the
-/// argument of `Bearing.solve` (`force[2]`, `prescribed['dx_mm']`).
+/// argument of `Bearing.solve` (`force[2]`, `prescribed.dx_mm`).
 fn argument(key: &str) -> Option<String> {
     if let Some(rest) = key.strip_prefix("load.force_n") {
         return Some(format!("force{rest}"));
@@ -26,7 +26,7 @@ fn argument(key: &str) -> Option<String> {
         return Some(format!("moment{rest}"));
     }
     key.strip_prefix("load.prescribed.")
-        .map(|k| format!("prescribed['{k}']"))
+        .map(|k| format!("prescribed.{k}"))
 }
 
 /// A case given as a dict, TOML text (a str with a newline) or a path, as `kontakt.run`
@@ -165,7 +165,7 @@ fn load<'py>(
                 .ok()
                 .and_then(|k| PRESCRIBED.iter().position(|n| *n == k))
                 .ok_or_else(|| invalid("prescribed", format!("a key {}", args::shown(&k)), valid))?;
-            let name = format!("prescribed['{}']", PRESCRIBED[key]);
+            let name = format!("prescribed.{}", PRESCRIBED[key]);
             held[key] = Some(args::real(
                 &v,
                 &name,
@@ -187,7 +187,7 @@ fn load<'py>(
                         "hold_tilts",
                         "True",
                         &format!(
-                            "False when prescribed['{}'] = {v} gives the tilt",
+                            "False when prescribed.{} = {v} gives the tilt",
                             PRESCRIBED[i]
                         ),
                     ));

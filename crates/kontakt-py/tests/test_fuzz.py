@@ -499,6 +499,38 @@ def test_contact_element(p1, p2, t1, t2, text, reset):
     call(kt.ContactElement.from_file, text or "missing.toml")
 
 
+# --- whole bearing --------------------------------------------------------------------------
+
+BEARINGS = [kt.Bearing(REPO / f"examples/{name}.toml") for name in ("bearing_32008x", "bearing_nu_crb")]
+load = st.one_of(
+    st.floats(min_value=-2e4, max_value=2e4),
+    st.floats(min_value=0.0, max_value=2e4),
+    hostile_float,
+)
+forces = mostly(st.tuples(load, st.floats(-1e3, 1e3), load), st.one_of(st.tuples(number, number), hostile))
+moments = st.one_of(st.none(), mostly(st.tuples(st.floats(-1e5, 1e5), st.floats(-1e5, 1e5))))
+prescribed = st.one_of(
+    st.none(),
+    st.dictionaries(
+        st.sampled_from(["dx_mm", "dy_mm", "dz_mm", "tilt_x_rad", "tilt_y_rad", "tilt_z_rad"]),
+        mostly(st.floats(-0.05, 0.05)),
+        max_size=3,
+    ),
+    hostile,
+)
+
+
+@FUZZ
+@given(which=st.integers(0, len(BEARINGS) - 1), force=forces, moment=moments, prescribed=prescribed,
+       hold_tilts=st.one_of(st.none(), st.booleans(), hostile), reset=st.booleans())
+def test_bearing_solve(which, force, moment, prescribed, hold_tilts, reset):
+    b = BEARINGS[which]
+    if reset:
+        b.reset()
+    fields = {"force", "moment", "prescribed", "hold_tilts"}
+    finite_result(call(b.solve, force, moment, prescribed, hold_tilts, _fields=fields))
+
+
 # --- sweeps -------------------------------------------------------------------------------
 
 SWEEP = (REPO / "examples/sweeps/hertz_load.toml").read_text()
