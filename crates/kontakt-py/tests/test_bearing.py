@@ -164,6 +164,28 @@ def test_the_gil_is_released_during_a_solve():
     assert sorted(fractions)[2] < 0.5, fractions
 
 
+def test_a_bearing_in_use_by_another_thread_is_a_runtime_error():
+    """One Bearing per thread: a second solve on the same object while the first runs (the
+    GIL released) is refused, not a data race."""
+    case = tomllib.loads(CRB.read_text())
+    case["bearing"]["slices"] = 10001
+    b = kt.Bearing(case)
+    errors: list[BaseException] = []
+
+    def solve():
+        try:
+            b.solve(force=(10000.0, 0.0, 0.0), hold_tilts=True)
+        except RuntimeError as e:
+            errors.append(e)
+
+    threads = [threading.Thread(target=solve) for _ in range(2)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert len(errors) <= 1 and all("borrowed" in str(e) for e in errors), errors
+
+
 def field(e) -> str:
     return e.value.field if isinstance(e.value, kt.InputError) else str(e.value)
 
