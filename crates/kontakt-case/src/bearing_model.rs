@@ -9,7 +9,7 @@
 
 use crate::bearing_case::{
     BearingCase, BearingLoadSpec, BearingReport, BearingSolverEcho, BearingSpec, ProfileSpec,
-    RollerRow, SliceTable, STEEL_CONTACT_MODULUS_MPA,
+    RollerRow, STEEL_CONTACT_MODULUS_MPA, SliceTable,
 };
 use crate::common::{SCHEMA_VERSION, in_degrees};
 use crate::validity::checked;

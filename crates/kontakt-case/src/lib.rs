@@ -13,6 +13,8 @@
 //!   front end calls.
 //! - [`Outcome`]: the report (stable, unit-suffixed JSON keys, `schema_version`) plus,
 //!   for the field methods, the full solution (pressure, displacement, gap per cell).
+//! - [`BearingModel`]: a bearing case planned once and solved for many loads, warm-started
+//!   from the last equilibrium (Python's `kontakt.Bearing`).
 //! - [`maps`]: gap and height maps from CSV or NumPy `.npy` files.
 //! - [`files`]: the one size-capped reader of every file a case names.
 //! - [`element_case`]: contact-element cases (`method = "element"`), not a [`Case`]: they

@@ -155,7 +155,8 @@ fn load<'py>(
         .unwrap_or_default();
     let mut held = [None; 5];
     if let Some(p) = given(prescribed) {
-        let valid = "a dict of displacements: dx_mm, dy_mm, dz_mm [mm], tilt_x_rad, tilt_y_rad [rad]";
+        let valid =
+            "a dict of displacements: dx_mm, dy_mm, dz_mm [mm], tilt_x_rad, tilt_y_rad [rad]";
         let d = p
             .cast::<PyDict>()
             .map_err(|_| args::wrong_type("prescribed", &p, valid))?;
@@ -164,7 +165,9 @@ fn load<'py>(
                 .extract::<String>()
                 .ok()
                 .and_then(|k| PRESCRIBED.iter().position(|n| *n == k))
-                .ok_or_else(|| invalid("prescribed", format!("a key {}", args::shown(&k)), valid))?;
+                .ok_or_else(|| {
+                    invalid("prescribed", format!("a key {}", args::shown(&k)), valid)
+                })?;
             let name = format!("prescribed.{}", PRESCRIBED[key]);
             held[key] = Some(args::real(
                 &v,

@@ -6,6 +6,8 @@
 //! half-space solves on NumPy maps, PimP, traction and friction cases run through
 //! `kontakt_case` (`Case::run`, the one dispatch the CLI uses), so `to_dict()` gives the
 //! CLI's JSON keys and values.
+//! A whole bearing (`Bearing`) is the case layer's `BearingModel`: planned from a bearing
+//! case, solved for many loads.
 //!
 //! Units are the library's: mm, N, MPa, mm/s, rad/s, radians (case dicts and files keep
 //! their degrees). Errors: `kontakt.InputError(ValueError)` with `field`, `value` and

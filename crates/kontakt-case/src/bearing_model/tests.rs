@@ -26,7 +26,12 @@ fn a_cold_solve_is_the_case_report() {
         let mut model = BearingModel::new(&case).unwrap();
         assert_eq!(model.warm_start(), None);
         let report = model.solve(&case.load).unwrap();
-        assert_eq!(report, run_bearing_case(&case).unwrap(), "{}", path.display());
+        assert_eq!(
+            report,
+            run_bearing_case(&case).unwrap(),
+            "{}",
+            path.display()
+        );
         assert!(model.warm_start().is_some());
     }
 }
@@ -53,11 +58,17 @@ fn a_warm_solve_after_a_small_load_change_is_shorter_and_the_same() {
         );
         for i in 0..3 {
             let (w, c) = (warm.displacement_mm[i], cold.displacement_mm[i]);
-            assert!((w - c).abs() <= 1e-9 * c.abs().max(1e-6), "{what}: δ[{i}] {w} {c}");
+            assert!(
+                (w - c).abs() <= 1e-9 * c.abs().max(1e-6),
+                "{what}: δ[{i}] {w} {c}"
+            );
         }
         for (w, c) in warm.roller_loads.iter().zip(&cold.roller_loads) {
             let scale = cold.max_roller_load_n;
-            assert!((w.outer_load_n - c.outer_load_n).abs() <= 1e-9 * scale, "{what}");
+            assert!(
+                (w.outer_load_n - c.outer_load_n).abs() <= 1e-9 * scale,
+                "{what}"
+            );
         }
     }
 }
