@@ -69,7 +69,8 @@ impl BearingModel {
     }
 
     /// The displacement the next solve starts from, `(δx, δy, δz, θx, θy)` mm and rad;
-    /// `None` before the first converged solve and after [`BearingModel::reset`].
+    /// `None` before the first converged solve, after [`BearingModel::reset`] and after a
+    /// solve with every roller lifted off (then the next solve starts from the closed forms).
     pub fn warm_start(&self) -> Option<[f64; 5]> {
         self.last
     }
@@ -84,7 +85,9 @@ impl BearingModel {
     /// at the iteration limit or diverges (the warm start is kept).
     pub fn solve(&mut self, load: &BearingLoadSpec) -> Result<BearingReport> {
         let report = checked(self.solve_unchecked(load)?)?;
-        self.last = Some([
+        // with every roller lifted off the displacement says nothing about the next load:
+        // the closed-form start is the better one
+        self.last = (report.max_roller_load_n > 0.0).then_some([
             report.displacement_mm[0],
             report.displacement_mm[1],
             report.displacement_mm[2],
@@ -98,7 +101,15 @@ impl BearingModel {
         let load = ring_load(l)?;
         let map_load = |e: Error| e.map_field(|f| load_key(f).unwrap_or_else(|| f.to_string()));
         let solver = &mut self.solver;
-        let sol = match self.last {
+        // zero load: the closed-form start is the exact answer (every roller lifted off);
+        // Newton from an old equilibrium would end at the round-off floor instead
+        let p = &l.prescribed;
+        let unloaded = l.force_n.iter().chain(&l.moment_nmm).all(|f| *f == 0.0)
+            && [p.dx_mm, p.dy_mm, p.dz_mm, p.tilt_x_rad, p.tilt_y_rad]
+                .iter()
+                .all(|u| u.is_none_or(|u| u == 0.0));
+        let start = if unloaded { None } else { self.last };
+        let sol = match start {
             Some(start) => solver.solve_from(&load, start),
             None => solver.solve(&load),
         }

@@ -99,3 +99,26 @@ fn load_errors_name_the_case_key() {
     let e = BearingModel::new(&bad).unwrap_err().to_string();
     assert!(e.contains("method"), "{e}");
 }
+
+/// A zero load is solved from the closed forms (exactly zero, as the case runner; from the
+/// last equilibrium Newton ended at a roller load of 1e-9 N), and it leaves no warm start:
+/// the next solve starts from the closed forms, as a cold one (from zero displacement it
+/// took more iterations).
+#[test]
+fn a_solve_with_every_roller_lifted_off_leaves_no_warm_start() {
+    for (path, case) in examples() {
+        let mut model = BearingModel::new(&case).unwrap();
+        let cold = model.solve(&case.load).unwrap();
+        let zero = model
+            .solve(&BearingLoadSpec {
+                force_n: [0.0; 3],
+                moment_nmm: [0.0; 2],
+                prescribed: crate::bearing_case::PrescribedSpec::default(),
+            })
+            .unwrap();
+        assert_eq!(zero.max_roller_load_n, 0.0, "{}", path.display());
+        assert!(zero.warnings.iter().any(|w| w.contains("lifted off")));
+        assert_eq!(model.warm_start(), None, "{}", path.display());
+        assert_eq!(model.solve(&case.load).unwrap(), cold, "{}", path.display());
+    }
+}
