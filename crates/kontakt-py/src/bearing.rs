@@ -218,14 +218,11 @@ fn load<'py>(
 #[pyclass(frozen, module = "kontakt._kontakt")]
 pub struct BearingResult {
     report: BearingReport,
-    json: String,
 }
 
 impl BearingResult {
     fn new(report: BearingReport) -> PyResult<Self> {
-        let json = serde_json::to_string(&report)
-            .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(format!("report: {e}")))?;
-        Ok(BearingResult { report, json })
+        Ok(BearingResult { report })
     }
 
     fn column<'py>(
@@ -341,8 +338,9 @@ impl BearingResult {
         self.report.warnings.clone()
     }
     /// The report as a JSON string, as `kontakt bearing CASE --json` writes it (compact).
-    fn to_json(&self) -> &str {
-        &self.json
+    fn to_json(&self) -> PyResult<String> {
+        serde_json::to_string(&self.report)
+            .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(format!("report: {e}")))
     }
     /// The report as a dict with the keys of `kontakt bearing CASE --json`.
     fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
