@@ -9,6 +9,7 @@ contains its ``tribology/`` package folder:
     git clone https://github.com/moritzploss/tribology <SRC>
     python3 -m venv <VENV> && <VENV>/bin/pip install numpy scipy numexpr
     <VENV>/bin/python tools/reference/crb_fcylrolbear.py --tribology <SRC> [--commit HASH]
+    <VENV>/bin/python tools/reference/crb_fcylrolbear.py --tribology <SRC> --check
 
 (or set TRIBOLOGY_SRC instead of --tribology). The PyPI package pins an old numpy; the
 source imports fine with a recent one. Only ``tribology.roller_bearings`` and the module it
@@ -38,7 +39,8 @@ against fcylrolbear"):
   P(x) = 0.00035 D_we ln[1 / (1 - (2x/L)^2)], computed here from that formula).
 * ``rad_clear``: enters the roller approach as delta_r cos psi - rad_clear/2, i.e. it is
   the clearance of both sides together (ISO 5753 radial internal clearance, Harris's
-  diametral clearance P_d), which is what kontakt calls ``clearance_mm``.
+  diametral clearance P_d), which is what kontakt calls ``clearance_mm``; negative is a
+  preload in both.
 * ``max_dif``: fcylrolbear iterates (secant on the ring displacement) until
   |F_r - sum_j Q_j cos psi_j| <= max_dif * F_r (a fraction, although its docstring says
   percent); the residual delta_f it returns is recorded per case.
@@ -60,7 +62,7 @@ ROLLERS = 14
 ROLLER_D_MM = 11.0
 ROLLER_L_MM = 11.0
 SLICES = 31
-CLEARANCES_MM = [0.0, 0.010, 0.020]
+CLEARANCES_MM = [-0.010, 0.0, 0.010, 0.020]  # negative: preload
 LOADS_N = [1000.0, 5000.0, 10000.0, 20000.0]
 PROFILES = ["straight", "iso"]
 MAX_DIF = 1e-9
@@ -108,6 +110,24 @@ def commit_of(src, given):
         return "unknown (pass --commit)"
 
 
+def check(rows):
+    """Compare freshly computed rows with the recorded file: the same cases, every roller
+    load to 1e-12 of F_r."""
+    with open(OUT, encoding="utf-8") as f:
+        old = [l.strip() for l in f if not l.startswith("#")][1:]
+    if len(old) != len(rows):
+        sys.exit(f"check: {len(rows)} rows computed, {len(old)} recorded")
+    worst = 0.0
+    for a, b in zip(rows, old):
+        ra, rb = a.split(","), b.split(",")
+        if ra[:6] != rb[:6]:
+            sys.exit(f"check: case {ra[:6]} computed, {rb[:6]} recorded")
+        worst = max(worst, abs(float(ra[6]) - float(rb[6])) / float(ra[3]))
+    print(f"check: largest roller-load difference {worst:.3e} F_r")
+    if worst > 1e-12:
+        sys.exit("check: FAILED (> 1e-12 F_r)")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument(
@@ -116,6 +136,11 @@ def main():
         help="directory containing the tribology/ package source (or TRIBOLOGY_SRC)",
     )
     ap.add_argument("--commit", help="the tribology commit hash, if SRC is not a git clone")
+    ap.add_argument(
+        "--check",
+        action="store_true",
+        help="recompute and compare with the recorded roller loads, write nothing",
+    )
     args = ap.parse_args()
     if not args.tribology:
         sys.exit("give --tribology DIR or TRIBOLOGY_SRC")
@@ -141,7 +166,7 @@ def main():
                 )
                 assert abs(delta_f) <= MAX_DIF * f_rad
                 worst = max(worst, abs(delta_f) / f_rad)
-                case = f"{prof}_c{clear * 1000:g}um_{f_rad / 1000:g}kN"
+                case = f"{prof}_c{round(clear * 1000):d}um_{f_rad / 1000:g}kN"
                 for j in range(ROLLERS):
                     rows.append(
                         f"{case},{prof},{clear!r},{f_rad!r},{j},{float(ang_pos[j])!r},"
@@ -149,6 +174,9 @@ def main():
                     )
                 print(f"{case:24s} Q_max = {q.max():.6f} N  delta_f = {delta_f:.3e} N")
 
+    if args.check:
+        check(rows)
+        return
     if "SOURCE_DATE_EPOCH" in os.environ:
         stamp = datetime.datetime.fromtimestamp(
             int(os.environ["SOURCE_DATE_EPOCH"]), datetime.timezone.utc
@@ -171,7 +199,7 @@ def main():
         f"L_we = {ROLLER_L_MM} mm, {SLICES} slices, rollers at psi_j = 2 pi j/Z, load along psi = 0",
         "# profile straight: comb_prof = 0; iso: comb_prof = the ISO/TS 16281 roller drop at",
         "#   the slice centres (crb_fcylrolbear_profile.csv), straight raceways",
-        "# clearance_mm: fcylrolbear's rad_clear (enters as delta_r cos psi - rad_clear/2)",
+        "# clearance_mm: fcylrolbear's rad_clear (enters as delta_r cos psi - rad_clear/2; < 0: preload)",
         f"# max_dif = {MAX_DIF!r}: |F_r - sum Q_j cos psi_j| <= max_dif F_r; delta_f_n is the",
         f"#   residual fcylrolbear returned (largest |delta_f|/F_r: {worst:.3e})",
         "case,profile,clearance_mm,fr_n,roller,azimuth_rad,q_n,delta_f_n",

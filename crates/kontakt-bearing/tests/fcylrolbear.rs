@@ -2,8 +2,9 @@
 //! `fcylrolbear` of moritzploss/tribology (`tribology/roller_bearings.py`).
 //!
 //! `tests/data/crb_fcylrolbear.csv` holds fcylrolbear's roller loads for Z = 14 rollers
-//! 11 × 11 mm on d_m = 60 mm, 31 slices, clearance 0, 10 and 20 µm, F_r = 1, 5, 10 and
-//! 20 kN, straight rollers and the ISO/TS 16281 logarithmic profile; it was written by
+//! 11 × 11 mm on d_m = 60 mm, 31 slices, clearance −10 (a preload), 0, 10 and 20 µm,
+//! F_r = 1, 5, 10 and 20 kN, straight rollers and the ISO/TS 16281 logarithmic profile
+//! (32 cases, 448 roller loads); it was written by
 //! `tools/reference/crb_fcylrolbear.py` (its header records the tribology commit, the date
 //! and the command). The two codes share the ISO/TS 16281 slice law (35948 L^(8/9) δ^(10/9)
 //! for the roller, 1/n of it per slice) but no code: fcylrolbear solves one unknown (the
@@ -25,7 +26,8 @@
 //! **Tolerance.** fcylrolbear stops when `|F_r − Σ Q_j cos ψ_j| ≤ max_dif F_r` (max_dif =
 //! 1e-9 here). Its roller loads are those of its discrete equations at a ring displacement
 //! off by dδ_r; each roller changes by `k_j cos ψ_j dδ_r` while the load sum changes by
-//! `Σ k_j cos² ψ_j dδ_r`, and the roller at ψ = 0 (present here) is the stiffest, so every
+//! `Σ k_j cos² ψ_j dδ_r`, and the roller at ψ = 0 (present here) is the stiffest (its
+//! approach is the largest, also under preload), so every
 //! roller load is within `|ΔF| ≤ max_dif F_r` of the exact solution. kontakt converges to
 //! 1e-11 F_r. Every roller must agree to `(max_dif + 1e-10) F_r`; the test also checks
 //! that halving kontakt's clearance (the radial-vs-diametral mix-up) misses by far more.
@@ -138,7 +140,7 @@ fn the_file_is_what_the_test_assumes() {
         "the header must state max_dif = {MAX_DIF}"
     );
     let cases = cases();
-    assert_eq!(cases.len(), 24, "2 profiles x 3 clearances x 4 loads");
+    assert_eq!(cases.len(), 32, "2 profiles x 4 clearances x 4 loads");
     for c in &cases {
         assert_eq!(c.len(), ROLLERS, "{}", c[0].case);
         for (j, r) in c.iter().enumerate() {
