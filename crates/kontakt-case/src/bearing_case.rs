@@ -37,8 +37,8 @@ use crate::validity::{ContactSize, Size, checked, checked_report};
 use kontakt::hertz::validity::point_size;
 use kontakt::solve::{SolveStatus, Termination};
 use kontakt::{Error, Result};
-use kontakt_bearing::equilibrium::{Dof, RingLoad, RollerBearingSolver};
 use kontakt_bearing::ball_equilibrium::BallBearingSolver;
+use kontakt_bearing::equilibrium::{Dof, RingLoad, RollerBearingSolver};
 use kontakt_bearing::geometry::{
     BallBearing, BallBearingKind, DEFAULT_SLICES, RollerBearing, RollerBearingKind,
 };
@@ -988,12 +988,7 @@ struct GrooveKeys {
 }
 
 /// A groove's osculation f = r/D from exactly one of its two keys.
-fn osculation(
-    f: Option<f64>,
-    r: Option<f64>,
-    ring: &str,
-    d: f64,
-) -> Result<(f64, &'static str)> {
+fn osculation(f: Option<f64>, r: Option<f64>, ring: &str, d: f64) -> Result<(f64, &'static str)> {
     let (f_key, r_key): (&'static str, &'static str) = if ring == "inner" {
         ("inner_osculation", "inner_groove_radius_mm")
     } else {
@@ -1062,7 +1057,13 @@ fn ball_bearing(
                 key: "bearing.contact_angle_deg".into(),
                 message: "missing key `bearing.contact_angle_deg`: an angular-contact ball bearing needs its free contact angle [deg], 0 < angle < 90".into(),
             })?;
-            BallBearing::angular_contact(s.pitch_diameter_mm, s.balls, d, [f_i, f_o], a.to_radians())
+            BallBearing::angular_contact(
+                s.pitch_diameter_mm,
+                s.balls,
+                d,
+                [f_i, f_o],
+                a.to_radians(),
+            )
         }
     };
     b.first_ball_azimuth_rad = s.first_ball_azimuth_deg.to_radians();
@@ -1161,7 +1162,10 @@ fn run_ball(
         let pair = b
             .contacts(b.stiffness_contact_angle())
             .map_err(|e| map_ball_field(e, s, &keys, [0.0; 2]))?;
-        for (c, ring, key) in [(&pair[0], "inner", keys.inner), (&pair[1], "outer", keys.outer)] {
+        for (c, ring, key) in [
+            (&pair[0], "inner", keys.inner),
+            (&pair[1], "outer", keys.outer),
+        ] {
             let hs = c.solve_force(sol.max_ball_load_n)?;
             contacts.push(
                 ContactSize::new(

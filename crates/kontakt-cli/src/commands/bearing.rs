@@ -99,7 +99,12 @@ pub fn print_report(out: &mut impl Write, r: &BearingReport, json: bool) -> Resu
     crate::output::print_warnings(out, &r.warnings)
 }
 
-fn roller_header(out: &mut impl Write, r: &BearingReport, p: &RollerPart, name: &str) -> Result<()> {
+fn roller_header(
+    out: &mut impl Write,
+    r: &BearingReport,
+    p: &RollerPart,
+    name: &str,
+) -> Result<()> {
     writeln!(
         out,
         "kontakt {} — {} roller bearing{name}",
