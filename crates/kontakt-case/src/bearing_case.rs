@@ -1,7 +1,9 @@
 //! Whole-bearing cases (`method = "bearing"`, `schema_version = 1`): the load distribution
-//! of a roller bearing (cylindrical, tapered, cylindrical roller thrust) under forces and
-//! moments or prescribed displacements of its inner ring, on [`kontakt_bearing`]'s
-//! five-degree-of-freedom equilibrium with the ISO/TS 16281 (2008) slice law.
+//! of a roller bearing (cylindrical, tapered, cylindrical roller thrust) or a ball bearing
+//! (deep groove, angular contact) under forces and moments or prescribed displacements of
+//! its inner ring, on [`kontakt_bearing`]'s five-degree-of-freedom equilibrium: the
+//! ISO/TS 16281 (2008) slice law for rollers, two Hertz point contacts in series with a
+//! load-dependent contact angle for balls (Jones 1960, Harris & Kotzalas 2006).
 //!
 //! ```toml
 //! method = "bearing"
@@ -23,8 +25,26 @@
 //!
 //! Frames and signs are those of `docs/bearing-model.md`: the outer ring is fixed, z is
 //! the bearing axis, the inner ring moves by `(δx, δy, δz, θx, θy)` (mm, rad) under
-//! `(Fx, Fy, Fz, Mx, My)` (N, N·mm). A bearing type is a tag (`type`), so the ball
-//! bearings of a later step are a variant with their own keys.
+//! `(Fx, Fy, Fz, Mx, My)` (N, N·mm). A bearing type is a tag (`type`); the ball bearings
+//! are variants with their own keys:
+//!
+//! ```toml
+//! [bearing]
+//! type = "deep_groove_ball"   # or "angular_contact_ball" with contact_angle_deg = 40.0
+//! pitch_diameter_mm = 38.5
+//! balls = 9
+//! ball_diameter_mm = 7.938
+//! inner_osculation = 0.52     # or inner_groove_radius_mm (exactly one per groove)
+//! outer_osculation = 0.53
+//! clearance_mm = 0.015        # deep groove: diametral; negative: preload
+//! [bearing.ball_material]     # optional, default steel; also [bearing.ring_material]
+//! e_mpa = 210000.0
+//! nu = 0.3
+//! ```
+//!
+//! Materials: the library's `BallBearing` takes kontakt's `ElasticMaterial`; the case gives
+//! it as the `e_mpa`/`nu` table every other schema uses for its bodies
+//! (`MaterialSpec`), errors named `bearing.ball_material.nu`.
 //!
 //! **Not converged.** The report is one equilibrium: a solve that ends at the iteration
 //! limit or diverges (a load the bearing cannot carry) is refused as
