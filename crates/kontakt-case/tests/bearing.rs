@@ -49,13 +49,7 @@ fn roller_loads_balance_the_applied_load() {
             f[2] += row.outer_load_n * sa;
         }
         let case: toml::Table = toml::from_str(&example(name)).unwrap();
-        let applied: Vec<f64> = case["load"]["force_n"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|v| v.as_float().unwrap())
-            .collect();
-        let scale = applied.iter().fold(0.0, |m: f64, x| m.max(x.abs()));
+        let (applied, scale) = applied_force(&case);
         for i in 0..3 {
             assert!(
                 (f[i] - applied[i]).abs() <= 1e-9 * scale,
@@ -73,6 +67,18 @@ fn roller_loads_balance_the_applied_load() {
         assert_symmetric(&report.stiffness_matrix, name);
         assert!(report.warnings.is_empty(), "{name}: {:?}", report.warnings);
     }
+}
+
+/// The case's `load.force_n` and its largest magnitude.
+fn applied_force(case: &toml::Table) -> (Vec<f64>, f64) {
+    let applied: Vec<f64> = case["load"]["force_n"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_float().unwrap())
+        .collect();
+    let scale = applied.iter().fold(0.0, |m: f64, x| m.max(x.abs()));
+    (applied, scale)
 }
 
 fn assert_symmetric(k: &[[f64; 5]; 5], name: &str) {
@@ -145,13 +151,7 @@ fn ball_loads_balance_the_applied_load() {
             m[0] += q * (pr * s * n[2] - pz * n[1]);
             m[1] += q * (pz * n[0] - pr * c * n[2]);
         }
-        let applied: Vec<f64> = case["load"]["force_n"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|v| v.as_float().unwrap())
-            .collect();
-        let scale = applied.iter().fold(0.0, |a: f64, x| a.max(x.abs()));
+        let (applied, scale) = applied_force(&case);
         for i in 0..3 {
             assert!(
                 (f[i] - report.force_n[i]).abs() <= 1e-9 * scale,
@@ -246,32 +246,51 @@ fn ball_errors_name_the_case_key() {
         e.to_string().contains("= 95:") && e.to_string().contains("90 deg"),
         "{e}"
     );
-    let e = err(&acbb.replace("contact_angle_deg = 40.0\n", ""));
-    assert_eq!(e.field(), Some("bearing.contact_angle_deg"), "{e}");
-    let e = err(&acbb.replace(
-        "contact_angle_deg = 40.0",
-        "contact_angle_deg = 40.0\nclearance_mm = 0.01",
-    ));
-    assert_eq!(e.field(), Some("bearing.clearance_mm"), "{e}");
-    let e = err(&dgbb.replace(
-        "clearance_mm = 0.015",
-        "clearance_mm = 0.015\ncontact_angle_deg = 15.0",
-    ));
-    assert_eq!(e.field(), Some("bearing.contact_angle_deg"), "{e}");
-    let e = err(&dgbb.replace("clearance_mm = 0.015", "clearance_mm = 0.5"));
-    assert_eq!(e.field(), Some("bearing.clearance_mm"), "{e}");
-    let e = err(&acbb.replace(
-        "force_n = [2000.0, 0.0, 2000.0]",
-        "force_n = [2000.0, 0.0, -2000.0]",
-    ));
-    assert_eq!(e.field(), Some("load.force_n[2]"), "{e}");
-    let e = err(&acbb.replace("nu = 0.3", "nu = 0.7"));
-    assert_eq!(e.field(), Some("bearing.ball_material.nu"), "{e}");
-    let e = err(&dgbb.replace(
-        "clearance_mm = 0.015",
-        "clearance_mm = 0.015\nfirst_ball_azimuth_deg = nan",
-    ));
-    assert_eq!(e.field(), Some("bearing.first_ball_azimuth_deg"), "{e}");
+    // (case text, replaced, by, the key the error names)
+    let named = [
+        (
+            &acbb,
+            "contact_angle_deg = 40.0\n",
+            "",
+            "bearing.contact_angle_deg",
+        ),
+        (
+            &acbb,
+            "contact_angle_deg = 40.0",
+            "contact_angle_deg = 40.0\nclearance_mm = 0.01",
+            "bearing.clearance_mm",
+        ),
+        (
+            &dgbb,
+            "clearance_mm = 0.015",
+            "clearance_mm = 0.015\ncontact_angle_deg = 15.0",
+            "bearing.contact_angle_deg",
+        ),
+        (
+            &dgbb,
+            "clearance_mm = 0.015",
+            "clearance_mm = 0.5",
+            "bearing.clearance_mm",
+        ),
+        (
+            &acbb,
+            "force_n = [2000.0, 0.0, 2000.0]",
+            "force_n = [2000.0, 0.0, -2000.0]",
+            "load.force_n[2]",
+        ),
+        (&acbb, "nu = 0.3", "nu = 0.7", "bearing.ball_material.nu"),
+        (
+            &dgbb,
+            "clearance_mm = 0.015",
+            "clearance_mm = 0.015\nfirst_ball_azimuth_deg = nan",
+            "bearing.first_ball_azimuth_deg",
+        ),
+    ];
+    for (text, from, to, key) in named {
+        assert!(text.contains(from), "{from}");
+        let e = err(&text.replace(from, to));
+        assert_eq!(e.field(), Some(key), "{to}: {e}");
+    }
     // a radial load without axial load on the angular-contact bearing: refused, not a number
     let e = err(&acbb.replace(
         "force_n = [2000.0, 0.0, 2000.0]",

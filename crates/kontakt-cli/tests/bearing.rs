@@ -21,6 +21,25 @@ fn edited_example(dir: &std::path::Path, name: &str, from: &str, to: &str) -> Pa
     p
 }
 
+/// Run `kontakt args`, which must succeed.
+fn succeeds(args: &[&std::ffi::OsStr]) {
+    let out = kontakt().args(args).output().unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+/// The rows of the text table under the header line holding `header`.
+fn table_rows(text: &str, header: &str) -> usize {
+    text.lines()
+        .skip_while(|l| !l.contains(header))
+        .skip(1)
+        .take_while(|l| !l.trim().is_empty())
+        .count()
+}
+
 /// The table: the header, the solver line and one row per roller (16 for the 32216).
 #[test]
 fn table_of_the_32216() {
@@ -33,13 +52,7 @@ fn table_of_the_32216() {
     assert!(text.contains("tapered roller bearing: 32216"), "{text}");
     assert!(text.contains("solver:       converged"), "{text}");
     assert!(text.contains("load zone ε = "), "{text}");
-    let rows = text
-        .lines()
-        .skip_while(|l| !l.contains("Q_rib N"))
-        .skip(1)
-        .take_while(|l| !l.trim().is_empty())
-        .count();
-    assert_eq!(rows, 16, "{text}");
+    assert_eq!(table_rows(&text, "Q_rib N"), 16, "{text}");
     assert!(text.contains("stiffness matrix"), "{text}");
 }
 
@@ -183,22 +196,14 @@ fn input_errors_name_the_case_key() {
 fn plots_are_written() {
     let dir = support::tempdir("bearing", "plots");
     let (load, slices) = (dir.join("load.svg"), dir.join("slices.png"));
-    let out = kontakt()
-        .args([
-            "bearing",
-            example("bearing_32008x.toml").to_str().unwrap(),
-            "--plot",
-        ])
-        .arg(&load)
-        .arg("--slice-plot")
-        .arg(&slices)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    succeeds(&[
+        "bearing".as_ref(),
+        example("bearing_32008x.toml").as_os_str(),
+        "--plot".as_ref(),
+        load.as_os_str(),
+        "--slice-plot".as_ref(),
+        slices.as_os_str(),
+    ]);
     assert!(std::fs::read_to_string(&load).unwrap().contains("<svg"));
     assert!(std::fs::metadata(&slices).unwrap().len() > 1000);
     let e = bad(&[
@@ -230,13 +235,7 @@ fn ball_bearing_table_json_csv_and_plots() {
     assert!(text.contains("9 balls, free contact angle"), "{text}");
     assert!(text.contains("solver:       converged"), "{text}");
     assert!(text.contains("largest ball load"), "{text}");
-    let rows = text
-        .lines()
-        .skip_while(|l| !l.contains("p_out MPa"))
-        .skip(1)
-        .take_while(|l| !l.trim().is_empty())
-        .count();
-    assert_eq!(rows, 9, "{text}");
+    assert_eq!(table_rows(&text, "p_out MPa"), 9, "{text}");
     assert!(text.contains("stiffness matrix"), "{text}");
 
     let acbb = example("bearing_7205.toml");
@@ -283,18 +282,14 @@ fn ball_bearing_table_json_csv_and_plots() {
     assert_eq!(solved, v);
 
     let (csv, plot) = (dir.join("balls.csv"), dir.join("balls.svg"));
-    let out = kontakt()
-        .args(["bearing", acbb.to_str().unwrap(), "--csv"])
-        .arg(&csv)
-        .arg("--plot")
-        .arg(&plot)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    succeeds(&[
+        "bearing".as_ref(),
+        acbb.as_os_str(),
+        "--csv".as_ref(),
+        csv.as_os_str(),
+        "--plot".as_ref(),
+        plot.as_os_str(),
+    ]);
     let text = std::fs::read_to_string(&csv).unwrap();
     let mut lines = text.lines();
     assert_eq!(
