@@ -1158,8 +1158,8 @@ fn run_ball(
 ) -> Result<BearingReport> {
     let (bearing, keys) = ball_bearing(kind, s, label)?;
     let load = ring_load(&case.load)?;
-    let mut solver =
-        BallBearingSolver::new(bearing).map_err(|e| map_ball_field(e, s, &keys, [0.0; 2]))?;
+    let f = [bearing.inner_osculation, bearing.outer_osculation];
+    let mut solver = BallBearingSolver::new(bearing).map_err(|e| map_ball_field(e, s, &keys, f))?;
     let sol = solver.solve(&load).map_err(map_load)?;
     let warnings = solver_warnings(&sol.status, sol.note)?;
     let b = solver.bearing();
@@ -1181,7 +1181,7 @@ fn run_ball(
     if sol.max_ball_load_n > 0.0 {
         let pair = b
             .contacts(b.stiffness_contact_angle())
-            .map_err(|e| map_ball_field(e, s, &keys, [0.0; 2]))?;
+            .map_err(|e| map_ball_field(e, s, &keys, f))?;
         for (c, ring, key) in [
             (&pair[0], "inner", keys.inner),
             (&pair[1], "outer", keys.outer),
