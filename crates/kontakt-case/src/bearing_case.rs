@@ -1,7 +1,9 @@
 //! Whole-bearing cases (`method = "bearing"`, `schema_version = 1`): the load distribution
-//! of a roller bearing (cylindrical, tapered, cylindrical roller thrust) under forces and
-//! moments or prescribed displacements of its inner ring, on [`kontakt_bearing`]'s
-//! five-degree-of-freedom equilibrium with the ISO/TS 16281 (2008) slice law.
+//! of a roller bearing (cylindrical, tapered, cylindrical roller thrust) or a ball bearing
+//! (deep groove, angular contact) under forces and moments or prescribed displacements of
+//! its inner ring, on [`kontakt_bearing`]'s five-degree-of-freedom equilibrium: the
+//! ISO/TS 16281 (2008) slice law for rollers, two Hertz point contacts in series with a
+//! load-dependent contact angle for balls (Jones 1960, Harris & Kotzalas 2006).
 //!
 //! ```toml
 //! method = "bearing"
@@ -23,8 +25,26 @@
 //!
 //! Frames and signs are those of `docs/bearing-model.md`: the outer ring is fixed, z is
 //! the bearing axis, the inner ring moves by `(δx, δy, δz, θx, θy)` (mm, rad) under
-//! `(Fx, Fy, Fz, Mx, My)` (N, N·mm). A bearing type is a tag (`type`), so the ball
-//! bearings of a later step are a variant with their own keys.
+//! `(Fx, Fy, Fz, Mx, My)` (N, N·mm). A bearing type is a tag (`type`); the ball bearings
+//! are variants with their own keys:
+//!
+//! ```toml
+//! [bearing]
+//! type = "deep_groove_ball"   # or "angular_contact_ball" with contact_angle_deg = 40.0
+//! pitch_diameter_mm = 38.5
+//! balls = 9
+//! ball_diameter_mm = 7.938
+//! inner_osculation = 0.52     # or inner_groove_radius_mm (exactly one per groove)
+//! outer_osculation = 0.53
+//! clearance_mm = 0.015        # deep groove: diametral; negative: preload
+//! [bearing.ball_material]     # optional, default steel; also [bearing.ring_material]
+//! e_mpa = 210000.0
+//! nu = 0.3
+//! ```
+//!
+//! Materials: the library's `BallBearing` takes kontakt's `ElasticMaterial`; the case gives
+//! it as the `e_mpa`/`nu` table every other schema uses for its bodies
+//! (`MaterialSpec`), errors named `bearing.ball_material.nu`.
 //!
 //! **Not converged.** The report is one equilibrium: a solve that ends at the iteration
 //! limit or diverges (a load the bearing cannot carry) is refused as
@@ -32,12 +52,16 @@
 //! methods; a solve that stagnates at the round-off floor (residual at most 1e-8 of the
 //! load, 1000 times the tolerance) is reported with a warning.
 
-use crate::common::{SCHEMA_VERSION, in_degrees, parse_toml};
-use crate::validity::{ContactSize, checked, checked_report};
-use kontakt::solve::Termination;
+use crate::common::{MaterialSpec, SCHEMA_VERSION, in_degrees, material, parse_toml};
+use crate::validity::{ContactSize, Size, checked, checked_report};
+use kontakt::hertz::validity::point_size;
+use kontakt::solve::{SolveStatus, Termination};
 use kontakt::{Error, Result};
+use kontakt_bearing::ball_equilibrium::BallBearingSolver;
 use kontakt_bearing::equilibrium::{Dof, RingLoad, RollerBearingSolver};
-use kontakt_bearing::geometry::{DEFAULT_SLICES, RollerBearing, RollerBearingKind};
+use kontakt_bearing::geometry::{
+    BallBearing, BallBearingKind, DEFAULT_SLICES, RollerBearing, RollerBearingKind,
+};
 use kontakt_bearing::profile::{Profile, TabulatedProfile};
 use serde::{Deserialize, Serialize};
 
@@ -75,6 +99,55 @@ pub enum BearingSpec {
     Tapered(RollerSpec),
     /// A cylindrical roller thrust bearing, 81xxx (contact angle 90°; no radial load).
     Thrust(RollerSpec),
+    /// A single-row deep-groove ball bearing (60xx, 62xx, ...), given by its diametral
+    /// clearance.
+    DeepGrooveBall(BallSpec),
+    /// A single-row angular-contact ball bearing (72xx B, ...), given by its free contact
+    /// angle (`contact_angle_deg` required); carries axial load in +z only.
+    AngularContactBall(BallSpec),
+}
+
+/// The internal geometry of a ball bearing (`docs/bearing-model.md` §8). Lengths in mm,
+/// angles in degrees. Each groove is given by its osculation `f = r/D` or by its curvature
+/// radius r, one of the two.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BallSpec {
+    /// Pitch diameter d_m through the ball centres, mm.
+    pub pitch_diameter_mm: f64,
+    /// Number of balls Z, 3..=10000.
+    pub balls: usize,
+    /// Ball diameter D, mm.
+    pub ball_diameter_mm: f64,
+    /// Inner groove osculation f_i = r_i/D, 0.5 < f_i <= 1 (or `inner_groove_radius_mm`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub inner_osculation: Option<f64>,
+    /// Outer groove osculation f_o = r_o/D, 0.5 < f_o <= 1 (or `outer_groove_radius_mm`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub outer_osculation: Option<f64>,
+    /// Inner groove curvature radius r_i, mm (or `inner_osculation`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub inner_groove_radius_mm: Option<f64>,
+    /// Outer groove curvature radius r_o, mm (or `outer_osculation`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub outer_groove_radius_mm: Option<f64>,
+    /// Deep groove only: the diametral clearance P_d, mm (default 0; negative: preload),
+    /// |P_d| < (f_i + f_o − 1) D.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub clearance_mm: Option<f64>,
+    /// Angular contact only (required there): the free contact angle α0, degrees,
+    /// 0 < α0 < 90.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub contact_angle_deg: Option<f64>,
+    /// Azimuth of ball 0 from the x axis toward y, degrees, default 0.
+    #[serde(default)]
+    pub first_ball_azimuth_deg: f64,
+    /// The balls' material (`e_mpa`, `nu`), default steel (210 000 MPa, 0.3).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ball_material: Option<MaterialSpec>,
+    /// The rings' material (`e_mpa`, `nu`), default steel (210 000 MPa, 0.3).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ring_material: Option<MaterialSpec>,
 }
 
 /// The internal geometry of a roller bearing. Lengths in mm, angles in degrees.
@@ -419,7 +492,9 @@ pub struct BearingSolverEcho {
     pub residual: f64,
 }
 
-/// The result of a whole-bearing case. Keys carry their units.
+/// The result of a whole-bearing case. Keys carry their units; the keys of the rolling
+/// elements are those of [`RollerPart`] (roller bearings) or [`BallPart`] (ball bearings),
+/// at the top level of the JSON.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct BearingReport {
     /// Version of kontakt that produced the record.
@@ -430,41 +505,28 @@ pub struct BearingReport {
     pub name: Option<String>,
     /// `"bearing"`.
     pub method: &'static str,
-    /// `"cylindrical"`, `"tapered"` or `"thrust"`.
+    /// `"cylindrical"`, `"tapered"`, `"thrust"`, `"deep_groove_ball"` or
+    /// `"angular_contact_ball"`.
     pub bearing_type: &'static str,
-    /// Number of rollers Z.
-    pub rollers: usize,
-    /// Slices per roller.
-    pub slices: usize,
-    /// The contact angle (cup angle) α, degrees.
-    pub contact_angle_deg: f64,
-    /// The cone angle α_i, degrees.
-    pub cone_angle_deg: f64,
-    /// The ISO/TS 16281 stiffness of one roller, `35948 L_we^(8/9)`, N/mm^(10/9).
-    pub roller_stiffness_n_per_mm10_9: f64,
+    /// The rolling elements: rollers or balls.
+    #[serde(flatten)]
+    pub elements: BearingElements,
     /// Inner-ring displacement `[δx, δy, δz]`, mm.
     pub displacement_mm: [f64; 3],
     /// Inner-ring tilt `[θx, θy]`, rad.
     pub tilt_rad: [f64; 2],
-    /// The force the rollers carry `[Fx, Fy, Fz]`, N: the applied force on force-controlled
-    /// components (to the residual), the reaction on prescribed ones.
+    /// The force the rolling elements carry `[Fx, Fy, Fz]`, N: the applied force on
+    /// force-controlled components (to the residual), the reaction on prescribed ones.
     pub force_n: [f64; 3],
-    /// The moment the rollers carry `[Mx, My]`, N·mm (as `force_n`).
+    /// The moment the rolling elements carry `[Mx, My]`, N·mm (as `force_n`).
     pub moment_nmm: [f64; 2],
     /// How the equilibrium solve ended.
     pub solver: BearingSolverEcho,
     /// The load-zone parameter ε (Sjövall 1933) from the ring displacement; absent without
-    /// a radial displacement and for thrust bearings. Exact for rigid rings without tilt.
+    /// a radial displacement, for thrust bearings and for ball bearings. Exact for rigid
+    /// rings without tilt.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub load_zone_epsilon: Option<f64>,
-    /// The largest roller (outer raceway) load, N.
-    pub max_roller_load_n: f64,
-    /// The largest slice load per unit length of any roller, N/mm.
-    pub max_load_per_length_n_per_mm: f64,
-    /// Per roller, in azimuth order.
-    pub roller_loads: Vec<RollerRow>,
-    /// The slices of the most loaded roller.
-    pub most_loaded_roller: SliceTable,
     /// The names of the degrees of freedom, the order of the stiffness matrix's rows and
     /// columns.
     pub stiffness_dofs: [&'static str; 5],
@@ -476,10 +538,103 @@ pub struct BearingReport {
     /// Results to treat with care. Absent when none applies.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<String>,
-    /// No Hertz or half-space contact is sized in the slice model (the validity check has
-    /// only the finiteness of the report to check); not in the JSON.
+    /// The Hertz contacts of the most loaded ball, inner and outer raceway, sized for the
+    /// validity check; none for a roller bearing (no Hertz or half-space contact is sized
+    /// in the slice model: the check has only the finiteness of the report to check). Not
+    /// in the JSON.
     #[serde(skip)]
     pub contacts: Vec<ContactSize>,
+}
+
+/// The rolling elements of a [`BearingReport`], their keys flattened into the report.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+#[serde(untagged)]
+pub enum BearingElements {
+    /// A roller bearing (cylindrical, tapered, thrust).
+    Rollers(RollerPart),
+    /// A ball bearing (deep groove, angular contact).
+    Balls(BallPart),
+}
+
+impl BearingReport {
+    /// The rollers of a roller bearing (`None` for a ball bearing).
+    pub fn rollers(&self) -> Option<&RollerPart> {
+        match &self.elements {
+            BearingElements::Rollers(r) => Some(r),
+            BearingElements::Balls(_) => None,
+        }
+    }
+
+    /// The balls of a ball bearing (`None` for a roller bearing).
+    pub fn balls(&self) -> Option<&BallPart> {
+        match &self.elements {
+            BearingElements::Balls(b) => Some(b),
+            BearingElements::Rollers(_) => None,
+        }
+    }
+}
+
+/// The report keys of a roller bearing.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RollerPart {
+    /// Number of rollers Z.
+    pub rollers: usize,
+    /// Slices per roller.
+    pub slices: usize,
+    /// The contact angle (cup angle) α, degrees.
+    pub contact_angle_deg: f64,
+    /// The cone angle α_i, degrees.
+    pub cone_angle_deg: f64,
+    /// The ISO/TS 16281 stiffness of one roller, `35948 L_we^(8/9)`, N/mm^(10/9).
+    pub roller_stiffness_n_per_mm10_9: f64,
+    /// The largest roller (outer raceway) load, N.
+    pub max_roller_load_n: f64,
+    /// The largest slice load per unit length of any roller, N/mm.
+    pub max_load_per_length_n_per_mm: f64,
+    /// Per roller, in azimuth order.
+    pub roller_loads: Vec<RollerRow>,
+    /// The slices of the most loaded roller.
+    pub most_loaded_roller: SliceTable,
+}
+
+/// The report keys of a ball bearing.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct BallPart {
+    /// Number of balls Z.
+    pub balls: usize,
+    /// The free contact angle α0, degrees: the given one of an angular-contact bearing,
+    /// `acos(1 − P_d/(2 B D))` of a deep-groove one (0 with no clearance or a preload).
+    pub free_contact_angle_deg: f64,
+    /// The ball's load coefficient K_n of both Hertz contacts in series, `Q = K_n δ^1.5`,
+    /// N/mm^1.5.
+    pub ball_stiffness_n_per_mm1_5: f64,
+    /// The largest ball load, N.
+    pub max_ball_load_n: f64,
+    /// The largest Hertz pressure on the inner raceway, MPa.
+    pub max_inner_pressure_mpa: f64,
+    /// The largest Hertz pressure on the outer raceway, MPa.
+    pub max_outer_pressure_mpa: f64,
+    /// Per ball, in azimuth order.
+    pub ball_loads: Vec<BallRow>,
+}
+
+/// One ball of the report.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize)]
+pub struct BallRow {
+    /// Azimuth ψ from x toward y, degrees.
+    pub azimuth_deg: f64,
+    /// The ball's load Q, N: the same on both raceways (no speed effects).
+    pub load_n: f64,
+    /// The loaded contact angle α, degrees, the same at both raceways (no speed effects;
+    /// negative: a deep groove's other shoulder). The balls carry the applied force as
+    /// `Σ Q (cos α cos ψ, cos α sin ψ, sin α)`.
+    pub contact_angle_deg: f64,
+    /// The total approach of both contacts, mm (negative: lifted off by that much).
+    pub approach_mm: f64,
+    /// Maximum Hertz pressure on the inner raceway, MPa.
+    pub inner_max_pressure_mpa: f64,
+    /// Maximum Hertz pressure on the outer raceway, MPa.
+    pub outer_max_pressure_mpa: f64,
 }
 
 checked_report!(BearingReport);
@@ -509,12 +664,11 @@ impl BearingCase {
 }
 
 /// The case's bearing as the library's [`RollerBearing`]: errors named by the case key.
-fn roller_bearing(spec: &BearingSpec) -> Result<(RollerBearing, &'static str)> {
-    let (kind, s, label) = match spec {
-        BearingSpec::Cylindrical(s) => (RollerBearingKind::Cylindrical, s, "cylindrical"),
-        BearingSpec::Tapered(s) => (RollerBearingKind::Tapered, s, "tapered"),
-        BearingSpec::Thrust(s) => (RollerBearingKind::Thrust, s, "thrust"),
-    };
+fn roller_bearing(
+    kind: RollerBearingKind,
+    s: &RollerSpec,
+    label: &'static str,
+) -> Result<RollerBearing> {
     let (l, d) = (s.roller_length_mm, s.roller_diameter_mm);
     let mut b = match kind {
         RollerBearingKind::Cylindrical => {
@@ -622,7 +776,7 @@ fn roller_bearing(spec: &BearingSpec) -> Result<(RollerBearing, &'static str)> {
             s.first_roller_azimuth_deg,
         )
     })?;
-    Ok((b, label))
+    Ok(b)
 }
 
 /// The library's field names of [`RollerBearing`] as the case file's keys.
@@ -659,58 +813,27 @@ pub(crate) fn run_bearing_case_unchecked(case: &BearingCase) -> Result<BearingRe
             "\"bearing\" for this schema",
         ));
     }
-    let (bearing, label) = roller_bearing(&case.bearing)?;
-    let l = &case.load;
-    let applied = [
-        l.force_n[0],
-        l.force_n[1],
-        l.force_n[2],
-        l.moment_nmm[0],
-        l.moment_nmm[1],
-    ];
-    let prescribed = l.prescribed.dofs();
-    let mut dofs = [Dof::Force(0.0); 5];
-    for i in 0..5 {
-        dofs[i] = match prescribed[i] {
-            Some(u) => {
-                if applied[i] != 0.0 {
-                    return Err(Error::invalid(
-                        force_key(i),
-                        applied[i],
-                        format!(
-                            "0 where load.prescribed.{} holds the displacement (a degree of freedom is force- or displacement-controlled)",
-                            kontakt_bearing::equilibrium::DISPLACEMENT_NAMES[i]
-                        ),
-                    ));
-                }
-                Dof::Displacement(u)
-            }
-            None => Dof::Force(applied[i]),
-        };
-    }
-    let map_load = |e: Error| e.map_field(|f| load_key(f).unwrap_or_else(|| f.to_string()));
-    let mut solver = RollerBearingSolver::new(bearing).map_err(map_bearing_field)?;
-    let sol = solver.solve(&RingLoad { dofs }).map_err(map_load)?;
-    let mut warnings = Vec::new();
-    match sol.status.termination {
-        Termination::Converged => {}
-        Termination::Stagnated => warnings.push(format!(
-            "the equilibrium stagnated at the round-off floor after {} iterations (residual {:.1e} of the load, tolerance 1e-11)",
-            sol.status.iterations, sol.status.residual
-        )),
-        _ => {
-            let what = format!(
-                "bearing equilibrium: {}",
-                sol.note.unwrap_or("no equilibrium")
-            );
-            sol.status.require_converged(what)?;
+    let (kind, s, label) = match &case.bearing {
+        BearingSpec::Cylindrical(s) => (RollerBearingKind::Cylindrical, s, "cylindrical"),
+        BearingSpec::Tapered(s) => (RollerBearingKind::Tapered, s, "tapered"),
+        BearingSpec::Thrust(s) => (RollerBearingKind::Thrust, s, "thrust"),
+        BearingSpec::DeepGrooveBall(s) => {
+            return run_ball(case, BallBearingKind::DeepGroove, s, "deep_groove_ball");
         }
-    }
-    if let Some(note) = sol.note
-        && sol.status.termination == Termination::Converged
-    {
-        warnings.push(note.to_string());
-    }
+        BearingSpec::AngularContactBall(s) => {
+            return run_ball(
+                case,
+                BallBearingKind::AngularContact,
+                s,
+                "angular_contact_ball",
+            );
+        }
+    };
+    let bearing = roller_bearing(kind, s, label)?;
+    let load = ring_load(&case.load)?;
+    let mut solver = RollerBearingSolver::new(bearing).map_err(map_bearing_field)?;
+    let sol = solver.solve(&load).map_err(map_load)?;
+    let mut warnings = solver_warnings(&sol.status, sol.note)?;
     let b = solver.bearing();
     if b.slices < DEFAULT_SLICES {
         warnings.push(format!(
@@ -751,29 +874,12 @@ pub(crate) fn run_bearing_case_unchecked(case: &BearingCase) -> Result<BearingRe
         load_n: slice_loads,
         approach_mm: approaches[most * ns..(most + 1) * ns].to_vec(),
     };
-    let u = sol.displacement;
-    Ok(BearingReport {
-        kontakt_version: kontakt::VERSION,
-        schema_version: SCHEMA_VERSION,
-        name: case.name.clone(),
-        method: "bearing",
-        bearing_type: label,
+    let elements = BearingElements::Rollers(RollerPart {
         rollers: b.rollers,
         slices: ns,
         contact_angle_deg: b.contact_angle_rad.to_degrees(),
         cone_angle_deg: b.cone_angle_rad.to_degrees(),
         roller_stiffness_n_per_mm10_9: b.roller_stiffness(),
-        displacement_mm: [u[0], u[1], u[2]],
-        tilt_rad: [u[3], u[4]],
-        force_n: [sol.load[0], sol.load[1], sol.load[2]],
-        moment_nmm: [sol.load[3], sol.load[4]],
-        solver: BearingSolverEcho {
-            converged: sol.status.converged(),
-            termination: sol.status.termination.as_str(),
-            iterations: sol.status.iterations,
-            residual: sol.status.residual,
-        },
-        load_zone_epsilon: sol.load_zone,
         max_roller_load_n: sol.max_roller_load_n,
         max_load_per_length_n_per_mm: rows
             .iter()
@@ -781,10 +887,328 @@ pub(crate) fn run_bearing_case_unchecked(case: &BearingCase) -> Result<BearingRe
             .fold(0.0, f64::max),
         roller_loads: rows,
         most_loaded_roller: most_loaded,
+    });
+    let mut report = report(case, label, elements, sol.displacement, sol.load);
+    report.solver = solver_echo(&sol.status);
+    report.load_zone_epsilon = sol.load_zone;
+    report.stiffness_matrix = sol.stiffness;
+    report.warnings = warnings;
+    Ok(report)
+}
+
+/// The library's load-field errors (`load.fz_n`) as the case file's keys.
+fn map_load(e: Error) -> Error {
+    e.map_field(|f| load_key(f).unwrap_or_else(|| f.to_string()))
+}
+
+/// `[load]` as the library's [`RingLoad`]: a prescribed degree of freedom must have no
+/// force entry.
+fn ring_load(l: &BearingLoadSpec) -> Result<RingLoad> {
+    let applied = [
+        l.force_n[0],
+        l.force_n[1],
+        l.force_n[2],
+        l.moment_nmm[0],
+        l.moment_nmm[1],
+    ];
+    let prescribed = l.prescribed.dofs();
+    let mut dofs = [Dof::Force(0.0); 5];
+    for i in 0..5 {
+        dofs[i] = match prescribed[i] {
+            Some(u) => {
+                if applied[i] != 0.0 {
+                    return Err(Error::invalid(
+                        force_key(i),
+                        applied[i],
+                        format!(
+                            "0 where load.prescribed.{} holds the displacement (a degree of freedom is force- or displacement-controlled)",
+                            kontakt_bearing::equilibrium::DISPLACEMENT_NAMES[i]
+                        ),
+                    ));
+                }
+                Dof::Displacement(u)
+            }
+            None => Dof::Force(applied[i]),
+        };
+    }
+    Ok(RingLoad { dofs })
+}
+
+/// The warnings of a solve's status (stagnated, the library's note), or the refusal of a
+/// solve that did not converge.
+fn solver_warnings(status: &SolveStatus, note: Option<&'static str>) -> Result<Vec<String>> {
+    let mut warnings = Vec::new();
+    match status.termination {
+        Termination::Converged => {}
+        Termination::Stagnated => warnings.push(format!(
+            "the equilibrium stagnated at the round-off floor after {} iterations (residual {:.1e} of the load, tolerance 1e-11)",
+            status.iterations, status.residual
+        )),
+        _ => {
+            let what = format!("bearing equilibrium: {}", note.unwrap_or("no equilibrium"));
+            status.require_converged(what)?;
+        }
+    }
+    if let Some(note) = note
+        && status.termination == Termination::Converged
+    {
+        warnings.push(note.to_string());
+    }
+    Ok(warnings)
+}
+
+fn solver_echo(status: &SolveStatus) -> BearingSolverEcho {
+    BearingSolverEcho {
+        converged: status.converged(),
+        termination: status.termination.as_str(),
+        iterations: status.iterations,
+        residual: status.residual,
+    }
+}
+
+/// The report's common keys; the caller sets the solver, ε, stiffness and warnings.
+fn report(
+    case: &BearingCase,
+    label: &'static str,
+    elements: BearingElements,
+    u: [f64; 5],
+    load: [f64; 5],
+) -> BearingReport {
+    BearingReport {
+        kontakt_version: kontakt::VERSION,
+        schema_version: SCHEMA_VERSION,
+        name: case.name.clone(),
+        method: "bearing",
+        bearing_type: label,
+        elements,
+        displacement_mm: [u[0], u[1], u[2]],
+        tilt_rad: [u[3], u[4]],
+        force_n: [load[0], load[1], load[2]],
+        moment_nmm: [load[3], load[4]],
+        solver: BearingSolverEcho {
+            converged: false,
+            termination: "",
+            iterations: 0,
+            residual: 0.0,
+        },
+        load_zone_epsilon: None,
         stiffness_dofs: DOFS,
-        stiffness_matrix: sol.stiffness,
+        stiffness_matrix: [[0.0; 5]; 5],
         stiffness_units: stiffness_units(),
-        warnings,
+        warnings: Vec::new(),
         contacts: Vec::new(),
-    })
+    }
+}
+
+/// The case keys of a ball bearing's grooves, as the file gives them: the osculation key
+/// or the groove-radius key of the inner and the outer ring.
+struct GrooveKeys {
+    inner: &'static str,
+    outer: &'static str,
+}
+
+/// A groove's osculation f = r/D from exactly one of its two keys.
+fn osculation(f: Option<f64>, r: Option<f64>, ring: &str, d: f64) -> Result<(f64, &'static str)> {
+    let (f_key, r_key): (&'static str, &'static str) = if ring == "inner" {
+        ("inner_osculation", "inner_groove_radius_mm")
+    } else {
+        ("outer_osculation", "outer_groove_radius_mm")
+    };
+    match (f, r) {
+        (Some(f), None) => Ok((f, f_key)),
+        (None, Some(r)) => Ok((r / d, r_key)),
+        (Some(_), Some(_)) => Err(Error::CaseFile {
+            line: None,
+            key: format!("bearing.{f_key}, bearing.{r_key}").into(),
+            message: format!(
+                "both `bearing.{f_key}` and `bearing.{r_key}` given: the {ring} groove takes exactly one of them (the osculation f = r/D or the groove radius r [mm])"
+            ),
+        }),
+        (None, None) => Err(Error::CaseFile {
+            line: None,
+            key: format!("bearing.{f_key}").into(),
+            message: format!(
+                "missing key `bearing.{f_key}` (or `bearing.{r_key}`): a ball bearing's {ring} groove needs its osculation f = r/D or its groove radius r [mm], exactly one"
+            ),
+        }),
+    }
+}
+
+/// The case's ball bearing as the library's [`BallBearing`]: errors named by the case key.
+fn ball_bearing(
+    kind: BallBearingKind,
+    s: &BallSpec,
+    label: &'static str,
+) -> Result<(BallBearing, GrooveKeys)> {
+    let d = s.ball_diameter_mm;
+    let (f_i, inner) = osculation(s.inner_osculation, s.inner_groove_radius_mm, "inner", d)?;
+    let (f_o, outer) = osculation(s.outer_osculation, s.outer_groove_radius_mm, "outer", d)?;
+    let keys = GrooveKeys { inner, outer };
+    let wrong_key = |key: &str, v: f64, why: &str| {
+        Error::invalid(
+            format!("bearing.{key}"),
+            v,
+            format!("no {key} for type = \"{label}\" ({why})"),
+        )
+    };
+    let mut b = match kind {
+        BallBearingKind::DeepGroove => {
+            if let Some(a) = s.contact_angle_deg {
+                return Err(wrong_key(
+                    "contact_angle_deg",
+                    a,
+                    "its free contact angle follows from clearance_mm; the angle is for type = \"angular_contact_ball\"",
+                ));
+            }
+            let mut b = BallBearing::deep_groove(s.pitch_diameter_mm, s.balls, d, [f_i, f_o]);
+            b.clearance_mm = s.clearance_mm.unwrap_or(0.0);
+            b
+        }
+        BallBearingKind::AngularContact => {
+            if let Some(c) = s.clearance_mm {
+                return Err(wrong_key(
+                    "clearance_mm",
+                    c,
+                    "its free contact angle contact_angle_deg sets the play; clearance_mm is for type = \"deep_groove_ball\"",
+                ));
+            }
+            let a = s.contact_angle_deg.ok_or_else(|| Error::CaseFile {
+                line: None,
+                key: "bearing.contact_angle_deg".into(),
+                message: "missing key `bearing.contact_angle_deg`: an angular-contact ball bearing needs its free contact angle [deg], 0 < angle < 90".into(),
+            })?;
+            BallBearing::angular_contact(
+                s.pitch_diameter_mm,
+                s.balls,
+                d,
+                [f_i, f_o],
+                a.to_radians(),
+            )
+        }
+    };
+    b.first_ball_azimuth_rad = s.first_ball_azimuth_deg.to_radians();
+    if let Some(m) = &s.ball_material {
+        b.ball_material = material(m, "bearing.ball_material")?;
+    }
+    if let Some(m) = &s.ring_material {
+        b.ring_material = material(m, "bearing.ring_material")?;
+    }
+    b.validate()
+        .map_err(|e| map_ball_field(e, s, &keys, [f_i, f_o]))?;
+    Ok((b, keys))
+}
+
+/// The library's field names of [`BallBearing`] as the case file's keys, in the units the
+/// file gives them (degrees, a groove radius in mm).
+fn map_ball_field(e: Error, s: &BallSpec, keys: &GrooveKeys, f: [f64; 2]) -> Error {
+    let d = s.ball_diameter_mm;
+    // a groove typed as a radius: its value and range in mm
+    let e = match e {
+        Error::InvalidInput { field, .. }
+            if (field == "inner_osculation" && keys.inner.ends_with("_mm"))
+                || (field == "outer_osculation" && keys.outer.ends_with("_mm")) =>
+        {
+            let (key, r, f) = if field == "inner_osculation" {
+                (keys.inner, s.inner_groove_radius_mm, f[0])
+            } else {
+                (keys.outer, s.outer_groove_radius_mm, f[1])
+            };
+            Error::invalid(
+                format!("bearing.{key}"),
+                r.unwrap_or(f64::NAN),
+                format!(
+                    "a groove radius 0.5 D < r <= D with D = ball_diameter_mm = {d} mm (here r/D = {f}; typically 0.515 D to 0.54 D)"
+                ),
+            )
+        }
+        other => other,
+    };
+    let e = e.map_field(|f| {
+        let key = match f {
+            "inner_osculation" => keys.inner,
+            "outer_osculation" => keys.outer,
+            "contact_angle_rad" => "contact_angle_deg",
+            "first_ball_azimuth_rad" => "first_ball_azimuth_deg",
+            other if other.starts_with("bearing.") => return other.to_string(),
+            other => other,
+        };
+        format!("bearing.{key}")
+    });
+    let e = in_degrees(
+        e,
+        "bearing.contact_angle_deg",
+        "bearing.contact_angle_deg",
+        s.contact_angle_deg.unwrap_or(0.0),
+    );
+    in_degrees(
+        e,
+        "bearing.first_ball_azimuth_deg",
+        "bearing.first_ball_azimuth_deg",
+        s.first_ball_azimuth_deg,
+    )
+}
+
+/// Run a ball-bearing case: the library's quasi-static equilibrium (Jones 1960, Harris &
+/// Kotzalas 2006) and the Hertz contacts of the most loaded ball for the validity check.
+fn run_ball(
+    case: &BearingCase,
+    kind: BallBearingKind,
+    s: &BallSpec,
+    label: &'static str,
+) -> Result<BearingReport> {
+    let (bearing, keys) = ball_bearing(kind, s, label)?;
+    let load = ring_load(&case.load)?;
+    let f = [bearing.inner_osculation, bearing.outer_osculation];
+    let mut solver = BallBearingSolver::new(bearing).map_err(|e| map_ball_field(e, s, &keys, f))?;
+    let sol = solver.solve(&load).map_err(map_load)?;
+    let warnings = solver_warnings(&sol.status, sol.note)?;
+    let b = solver.bearing();
+    let rows: Vec<BallRow> = solver
+        .ball_loads()
+        .iter()
+        .map(|q| BallRow {
+            azimuth_deg: q.azimuth_rad.to_degrees(),
+            load_n: q.load_n,
+            contact_angle_deg: q.contact_angle_rad.to_degrees(),
+            approach_mm: q.approach_mm,
+            inner_max_pressure_mpa: q.inner_max_pressure_mpa,
+            outer_max_pressure_mpa: q.outer_max_pressure_mpa,
+        })
+        .collect();
+    // The pressures are those of the library's Hertz contacts at the stiffness contact
+    // angle: size the most loaded ball's two contacts against the ball and the groove.
+    let mut contacts = Vec::new();
+    if sol.max_ball_load_n > 0.0 {
+        let pair = b
+            .contacts(b.stiffness_contact_angle())
+            .map_err(|e| map_ball_field(e, s, &keys, f))?;
+        for (c, ring, key) in [
+            (&pair[0], "inner", keys.inner),
+            (&pair[1], "outer", keys.outer),
+        ] {
+            let hs = c.solve_force(sol.max_ball_load_n)?;
+            contacts.push(
+                ContactSize::new(
+                    Size::Hertz(point_size(c.geometry(), &hs)),
+                    ["bearing.ball_diameter_mm", &format!("bearing.{key}")],
+                )
+                .at(format!("the most loaded ball on the {ring} raceway")),
+            );
+        }
+    }
+    let elements = BearingElements::Balls(BallPart {
+        balls: b.balls,
+        free_contact_angle_deg: b.free_contact_angle().to_degrees(),
+        ball_stiffness_n_per_mm1_5: solver.ball_stiffness(),
+        max_ball_load_n: sol.max_ball_load_n,
+        max_inner_pressure_mpa: sol.max_pressure_mpa[0],
+        max_outer_pressure_mpa: sol.max_pressure_mpa[1],
+        ball_loads: rows,
+    });
+    let mut report = report(case, label, elements, sol.displacement, sol.load);
+    report.solver = solver_echo(&sol.status);
+    report.stiffness_matrix = sol.stiffness;
+    report.warnings = warnings;
+    report.contacts = contacts;
+    Ok(report)
 }

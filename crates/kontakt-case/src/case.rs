@@ -43,7 +43,7 @@ pub enum Case {
     /// `method = "rough"`: a periodic rough surface on the half-space solver
     /// ([`crate::rough_case`]).
     Rough(Box<crate::rough_case::RoughCase>),
-    /// `method = "bearing"`: the load distribution of a whole roller bearing
+    /// `method = "bearing"`: the load distribution of a whole roller or ball bearing
     /// ([`crate::bearing_case`]).
     Bearing(Box<crate::bearing_case::BearingCase>),
 }

@@ -98,10 +98,12 @@ pub enum Command {
     /// patches and mean gap per nominal pressure (TOML case, method = "rough";
     /// docs/case-schema.md, docs/rough.md).
     Rough(RoughArgs),
-    /// The load distribution of a whole roller bearing (cylindrical, tapered, thrust) under
-    /// forces, moments or prescribed displacements: ring displacement and tilt, roller loads,
-    /// slices of the most loaded roller, load zone, 5 × 5 stiffness (TOML case, method =
-    /// "bearing"; docs/case-schema.md, docs/bearing-model.md).
+    /// The load distribution of a whole roller bearing (cylindrical, tapered, thrust) or ball
+    /// bearing (deep groove, angular contact) under forces, moments or prescribed
+    /// displacements: ring displacement and tilt, roller loads with the slices of the most
+    /// loaded roller and the load zone, or ball loads with contact angles and Hertz
+    /// pressures, 5 × 5 stiffness (TOML case, method = "bearing"; docs/case-schema.md,
+    /// docs/bearing-model.md).
     Bearing(BearingArgs),
     #[command(about = friction_about())]
     Friction(FrictionArgs),
@@ -295,13 +297,17 @@ pub struct MindlinArgs {
 #[derive(Debug, Args)]
 pub struct BearingArgs {
     /// Write one row per roller to this CSV file (azimuth_deg, inner_load_n, outer_load_n,
-    /// rib_load_n, max_load_per_length_n_per_mm, approach_mm).
+    /// rib_load_n, max_load_per_length_n_per_mm, approach_mm), or one row per ball
+    /// (azimuth_deg, load_n, contact_angle_deg, approach_mm, inner_max_pressure_mpa,
+    /// outer_max_pressure_mpa).
     #[arg(long, value_name = "FILE.csv")]
     pub csv: Option<PathBuf>,
-    /// Draw the load distribution: every roller's load against its azimuth (.png or .svg).
+    /// Draw the load distribution: every roller's or ball's load against its azimuth (.png
+    /// or .svg).
     #[arg(long, value_name = "FILE.png|svg")]
     pub plot: Option<PathBuf>,
-    /// Draw the load per length along the most loaded roller, slice by slice (.png or .svg).
+    /// Draw the load per length along the most loaded roller, slice by slice (.png or .svg;
+    /// roller bearings only).
     #[arg(long, value_name = "FILE.png|svg")]
     pub slice_plot: Option<PathBuf>,
     #[command(flatten)]

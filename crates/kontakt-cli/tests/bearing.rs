@@ -21,6 +21,25 @@ fn edited_example(dir: &std::path::Path, name: &str, from: &str, to: &str) -> Pa
     p
 }
 
+/// Run `kontakt args`, which must succeed.
+fn succeeds(args: &[&std::ffi::OsStr]) {
+    let out = kontakt().args(args).output().unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+/// The rows of the text table under the header line holding `header`.
+fn table_rows(text: &str, header: &str) -> usize {
+    text.lines()
+        .skip_while(|l| !l.contains(header))
+        .skip(1)
+        .take_while(|l| !l.trim().is_empty())
+        .count()
+}
+
 /// The table: the header, the solver line and one row per roller (16 for the 32216).
 #[test]
 fn table_of_the_32216() {
@@ -33,13 +52,7 @@ fn table_of_the_32216() {
     assert!(text.contains("tapered roller bearing: 32216"), "{text}");
     assert!(text.contains("solver:       converged"), "{text}");
     assert!(text.contains("load zone ε = "), "{text}");
-    let rows = text
-        .lines()
-        .skip_while(|l| !l.contains("Q_rib N"))
-        .skip(1)
-        .take_while(|l| !l.trim().is_empty())
-        .count();
-    assert_eq!(rows, 16, "{text}");
+    assert_eq!(table_rows(&text, "Q_rib N"), 16, "{text}");
     assert!(text.contains("stiffness matrix"), "{text}");
 }
 
@@ -183,22 +196,14 @@ fn input_errors_name_the_case_key() {
 fn plots_are_written() {
     let dir = support::tempdir("bearing", "plots");
     let (load, slices) = (dir.join("load.svg"), dir.join("slices.png"));
-    let out = kontakt()
-        .args([
-            "bearing",
-            example("bearing_32008x.toml").to_str().unwrap(),
-            "--plot",
-        ])
-        .arg(&load)
-        .arg("--slice-plot")
-        .arg(&slices)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    succeeds(&[
+        "bearing".as_ref(),
+        example("bearing_32008x.toml").as_os_str(),
+        "--plot".as_ref(),
+        load.as_os_str(),
+        "--slice-plot".as_ref(),
+        slices.as_os_str(),
+    ]);
     assert!(std::fs::read_to_string(&load).unwrap().contains("<svg"));
     assert!(std::fs::metadata(&slices).unwrap().len() > 1000);
     let e = bad(&[
@@ -208,4 +213,107 @@ fn plots_are_written() {
         dir.join("load.gif").to_str().unwrap(),
     ]);
     assert!(e.contains("load.gif"), "{e}");
+}
+
+/// Ball bearings: the table (header, one row per ball), the JSON keys (the common ones,
+/// `ball_loads` rows, no roller keys), the per-ball CSV, the load plot, and `--slice-plot`
+/// refused as an input error naming the flag (exit 2, nothing solved).
+#[test]
+fn ball_bearing_table_json_csv_and_plots() {
+    let dir = support::tempdir("bearing", "balls");
+    let path = example("bearing_6205.toml");
+    let out = kontakt()
+        .args(["bearing", path.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        text.contains("deep groove ball bearing: 6205 class DGBB"),
+        "{text}"
+    );
+    assert!(text.contains("9 balls, free contact angle"), "{text}");
+    assert!(text.contains("solver:       converged"), "{text}");
+    assert!(text.contains("largest ball load"), "{text}");
+    assert_eq!(table_rows(&text, "p_out MPa"), 9, "{text}");
+    assert!(text.contains("stiffness matrix"), "{text}");
+
+    let acbb = example("bearing_7205.toml");
+    let v = run_json(&["bearing", acbb.to_str().unwrap()]);
+    for key in [
+        "schema_version",
+        "bearing_type",
+        "balls",
+        "free_contact_angle_deg",
+        "ball_stiffness_n_per_mm1_5",
+        "displacement_mm",
+        "tilt_rad",
+        "force_n",
+        "moment_nmm",
+        "solver",
+        "max_ball_load_n",
+        "max_inner_pressure_mpa",
+        "max_outer_pressure_mpa",
+        "ball_loads",
+        "stiffness_dofs",
+        "stiffness_matrix",
+        "stiffness_units",
+    ] {
+        assert!(v.get(key).is_some(), "{key} missing: {v}");
+    }
+    for key in ["rollers", "roller_loads", "most_loaded_roller", "slices"] {
+        assert!(v.get(key).is_none(), "{key} in a ball report: {v}");
+    }
+    assert_eq!(v["bearing_type"], "angular_contact_ball");
+    assert_eq!(v["ball_loads"].as_array().unwrap().len(), 12);
+    let row = &v["ball_loads"][0];
+    for key in [
+        "azimuth_deg",
+        "load_n",
+        "contact_angle_deg",
+        "approach_mm",
+        "inner_max_pressure_mpa",
+        "outer_max_pressure_mpa",
+    ] {
+        assert!(row.get(key).is_some(), "{key} missing: {row}");
+    }
+    assert!(num(&v["max_ball_load_n"]) > 0.0);
+    let solved = run_json(&["solve", acbb.to_str().unwrap()]);
+    assert_eq!(solved, v);
+
+    let (csv, plot) = (dir.join("balls.csv"), dir.join("balls.svg"));
+    succeeds(&[
+        "bearing".as_ref(),
+        acbb.as_os_str(),
+        "--csv".as_ref(),
+        csv.as_os_str(),
+        "--plot".as_ref(),
+        plot.as_os_str(),
+    ]);
+    let text = std::fs::read_to_string(&csv).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        "azimuth_deg,load_n,contact_angle_deg,approach_mm,inner_max_pressure_mpa,outer_max_pressure_mpa"
+    );
+    assert_eq!(lines.count(), 12);
+    let svg = std::fs::read_to_string(&plot).unwrap();
+    assert!(svg.contains("<svg") && svg.contains("ball load"), "{svg}");
+
+    let e = bad(&[
+        "bearing",
+        path.to_str().unwrap(),
+        "--slice-plot",
+        dir.join("slices.png").to_str().unwrap(),
+    ]);
+    assert!(
+        e.contains("--slice-plot") && e.contains("ball bearing"),
+        "{e}"
+    );
+    assert!(!dir.join("slices.png").exists());
+
+    // a ball that does not fit, named by its key (exit 2)
+    let p = edited_example(&dir, "bearing_6205.toml", "balls = 9", "balls = 16");
+    let e = bad(&["bearing", p.to_str().unwrap()]);
+    assert!(e.contains("bearing.balls"), "{e}");
 }

@@ -201,12 +201,14 @@ fn every_example_solves() {
             let v = json(&["solve", path.to_str().unwrap()]);
             // Friction and rough reports carry the pressure per row (model × speed, load);
             // impact reports in their normal impact; a whole bearing (the ISO/TS 16281 slice
-            // law) gives roller loads, its contact pressures are a later step of issue 28.
+            // law) gives roller loads, its contact pressures are a later step of issue 28; a
+            // ball bearing gives the Hertz pressure of its most loaded ball.
             let p = v["max_pressure_mpa"]
                 .as_f64()
                 .or_else(|| v["rows"][0]["max_pressure_mpa"].as_f64())
                 .or_else(|| v["normal"]["max_pressure_mpa"].as_f64())
-                .or_else(|| v["max_roller_load_n"].as_f64());
+                .or_else(|| v["max_roller_load_n"].as_f64())
+                .or_else(|| v["max_inner_pressure_mpa"].as_f64());
             assert!(p.unwrap() > 0.0, "{}", path.display());
             n += 1;
         }

@@ -1,11 +1,14 @@
-//! `kontakt bearing CASE.toml`: the load distribution of a whole roller bearing (a
-//! `method = "bearing"` case): ring displacement and tilt, the load of every roller, the
-//! slices of the most loaded one and the 5 × 5 stiffness matrix, as a table, JSON and a
-//! per-roller CSV, and plots of the load distribution and of the most loaded roller. The physics is `kontakt_case::run_bearing_case`.
+//! `kontakt bearing CASE.toml`: the load distribution of a whole roller or ball bearing (a
+//! `method = "bearing"` case): ring displacement and tilt, the load of every roller or
+//! ball (with the slices of the most loaded roller, the contact angle and Hertz pressures
+//! of every ball) and the 5 × 5 stiffness matrix, as a table, JSON and a per-element CSV,
+//! and plots of the load distribution and of the most loaded roller. The physics is
+//! `kontakt_case::run_bearing_case`.
 
 use crate::cli::BearingArgs;
 use crate::output::Num;
 use anyhow::{Context, Result};
+use kontakt_case::bearing_case::{BallPart, BearingElements, BearingSpec, RollerPart};
 use kontakt_case::{BearingCase, BearingReport, run_bearing_case};
 use kontakt_plot::{LinePlot, LineStyle, PALETTE, Series};
 use std::io::Write;
@@ -15,6 +18,17 @@ use std::path::Path;
 pub fn run(args: &BearingArgs, out: &mut impl Write) -> Result<()> {
     let (label, text) = args.input.read("bearing")?;
     let case = BearingCase::from_toml_str(&text).with_context(|| label.clone())?;
+    if args.slice_plot.is_some()
+        && matches!(
+            case.bearing,
+            BearingSpec::DeepGrooveBall(_) | BearingSpec::AngularContactBall(_)
+        )
+    {
+        return Err(crate::commands::InputError(format!(
+            "--slice-plot: {label} is a ball bearing; the slice plot draws the slices along a roller (use --plot for the ball loads)"
+        ))
+        .into());
+    }
     let report = run_bearing_case(&case).with_context(|| label.clone())?;
     if let Some(path) = &args.csv {
         write_csv(path, &report)?;
@@ -34,25 +48,10 @@ pub fn print_report(out: &mut impl Write, r: &BearingReport, json: bool) -> Resu
         return crate::output::print_json(out, r);
     }
     let name = crate::output::name_suffix(r.name.as_deref());
-    writeln!(
-        out,
-        "kontakt {} — {} roller bearing{name}",
-        r.kontakt_version, r.bearing_type
-    )?;
-    let angles = if r.bearing_type == "tapered" {
-        format!(
-            ", cup {:.2} deg, cone {:.2} deg",
-            Num(r.contact_angle_deg),
-            Num(r.cone_angle_deg)
-        )
-    } else {
-        String::new()
-    };
-    writeln!(
-        out,
-        "  {} rollers × {} slices{angles} (ISO/TS 16281 slice law)",
-        r.rollers, r.slices
-    )?;
+    match &r.elements {
+        BearingElements::Rollers(p) => roller_header(out, r, p, &name)?,
+        BearingElements::Balls(p) => ball_header(out, r, p, &name)?,
+    }
     let f = r.force_n.iter().chain(&r.moment_nmm);
     let scale = f.fold(0.0, |m: f64, x| m.max(x.abs()));
     let [fx, fy, fz] = r.force_n.map(|x| clean(x, scale));
@@ -75,32 +74,9 @@ pub fn print_report(out: &mut impl Write, r: &BearingReport, json: bool) -> Resu
         "  solver:       {} after {} iterations (residual {:.1e})",
         s.termination, s.iterations, s.residual
     )?;
-    let eps = r
-        .load_zone_epsilon
-        .map_or_else(|| "-".to_string(), |e| format!("{:.4}", Num(e)));
-    writeln!(
-        out,
-        "  load zone ε = {eps}; largest roller load {:.1} N, largest load per length {:.1} N/mm",
-        Num(r.max_roller_load_n),
-        Num(r.max_load_per_length_n_per_mm)
-    )?;
-    writeln!(out)?;
-    writeln!(
-        out,
-        "  {:>6} {:>10} {:>10} {:>10} {:>10} {:>12}",
-        "ψ deg", "Q_in N", "Q_out N", "Q_rib N", "q_max N/mm", "approach mm"
-    )?;
-    for row in &r.roller_loads {
-        writeln!(
-            out,
-            "  {:>6.1} {:>10.1} {:>10.1} {:>10.1} {:>10.1} {:>12.6}",
-            Num(row.azimuth_deg),
-            Num(row.inner_load_n),
-            Num(row.outer_load_n),
-            Num(row.rib_load_n),
-            Num(row.max_load_per_length_n_per_mm),
-            Num(row.approach_mm)
-        )?;
+    match &r.elements {
+        BearingElements::Rollers(p) => roller_table(out, r, p)?,
+        BearingElements::Balls(p) => ball_table(out, p)?,
     }
     writeln!(out)?;
     writeln!(
@@ -123,17 +99,131 @@ pub fn print_report(out: &mut impl Write, r: &BearingReport, json: bool) -> Resu
     crate::output::print_warnings(out, &r.warnings)
 }
 
+fn roller_header(
+    out: &mut impl Write,
+    r: &BearingReport,
+    p: &RollerPart,
+    name: &str,
+) -> Result<()> {
+    writeln!(
+        out,
+        "kontakt {} — {} roller bearing{name}",
+        r.kontakt_version, r.bearing_type
+    )?;
+    let angles = if r.bearing_type == "tapered" {
+        format!(
+            ", cup {:.2} deg, cone {:.2} deg",
+            Num(p.contact_angle_deg),
+            Num(p.cone_angle_deg)
+        )
+    } else {
+        String::new()
+    };
+    writeln!(
+        out,
+        "  {} rollers × {} slices{angles} (ISO/TS 16281 slice law)",
+        p.rollers, p.slices
+    )?;
+    Ok(())
+}
+
+fn ball_header(out: &mut impl Write, r: &BearingReport, p: &BallPart, name: &str) -> Result<()> {
+    writeln!(
+        out,
+        "kontakt {} — {} bearing{name}",
+        r.kontakt_version,
+        r.bearing_type.replace('_', " ")
+    )?;
+    writeln!(
+        out,
+        "  {} balls, free contact angle {:.2} deg, K_n = {:.1} N/mm^1.5 (Hertz point contacts)",
+        p.balls,
+        Num(p.free_contact_angle_deg),
+        Num(p.ball_stiffness_n_per_mm1_5)
+    )?;
+    Ok(())
+}
+
+fn roller_table(out: &mut impl Write, r: &BearingReport, p: &RollerPart) -> Result<()> {
+    let eps = r
+        .load_zone_epsilon
+        .map_or_else(|| "-".to_string(), |e| format!("{:.4}", Num(e)));
+    writeln!(
+        out,
+        "  load zone ε = {eps}; largest roller load {:.1} N, largest load per length {:.1} N/mm",
+        Num(p.max_roller_load_n),
+        Num(p.max_load_per_length_n_per_mm)
+    )?;
+    writeln!(out)?;
+    writeln!(
+        out,
+        "  {:>6} {:>10} {:>10} {:>10} {:>10} {:>12}",
+        "ψ deg", "Q_in N", "Q_out N", "Q_rib N", "q_max N/mm", "approach mm"
+    )?;
+    for row in &p.roller_loads {
+        writeln!(
+            out,
+            "  {:>6.1} {:>10.1} {:>10.1} {:>10.1} {:>10.1} {:>12.6}",
+            Num(row.azimuth_deg),
+            Num(row.inner_load_n),
+            Num(row.outer_load_n),
+            Num(row.rib_load_n),
+            Num(row.max_load_per_length_n_per_mm),
+            Num(row.approach_mm)
+        )?;
+    }
+    Ok(())
+}
+
+fn ball_table(out: &mut impl Write, p: &BallPart) -> Result<()> {
+    writeln!(
+        out,
+        "  largest ball load {:.1} N; largest Hertz pressure {:.0} MPa inner, {:.0} MPa outer raceway",
+        Num(p.max_ball_load_n),
+        Num(p.max_inner_pressure_mpa),
+        Num(p.max_outer_pressure_mpa)
+    )?;
+    writeln!(out)?;
+    writeln!(
+        out,
+        "  {:>6} {:>10} {:>8} {:>12} {:>10} {:>10}",
+        "ψ deg", "Q N", "α deg", "approach mm", "p_in MPa", "p_out MPa"
+    )?;
+    for row in &p.ball_loads {
+        writeln!(
+            out,
+            "  {:>6.1} {:>10.1} {:>8.2} {:>12.6} {:>10.0} {:>10.0}",
+            Num(row.azimuth_deg),
+            Num(row.load_n),
+            Num(row.contact_angle_deg),
+            Num(row.approach_mm),
+            Num(row.inner_max_pressure_mpa),
+            Num(row.outer_max_pressure_mpa)
+        )?;
+    }
+    Ok(())
+}
+
 /// `x` for the table, with round-off below 1e-9 of the group's largest magnitude `scale`
 /// shown as 0 (a 1e-13 N reaction of a symmetric load); the JSON keeps the raw numbers.
 fn clean(x: f64, scale: f64) -> Num {
     Num(if x.abs() < 1e-9 * scale { 0.0 } else { x })
 }
 
-/// One row per roller: the report's `roller_loads` keys.
+/// One row per roller or ball: the report's `roller_loads` or `ball_loads` keys.
 pub fn write_csv(path: &Path, r: &BearingReport) -> Result<()> {
     let mut w = crate::commands::CsvFile::create(path)?;
-    for row in &r.roller_loads {
-        w.serialize(row)?;
+    match &r.elements {
+        BearingElements::Rollers(p) => {
+            for row in &p.roller_loads {
+                w.serialize(row)?;
+            }
+        }
+        BearingElements::Balls(p) => {
+            for row in &p.ball_loads {
+                w.serialize(row)?;
+            }
+        }
     }
     w.finish()
 }
@@ -157,18 +247,38 @@ fn draw(path: &Path, title: &str, axes: [&str; 2], series: &[Series]) -> Result<
     .with_context(|| format!("drawing {}", path.display()))
 }
 
-/// The load distribution: every roller's raceway load (and rib load) against its azimuth.
+/// The load distribution: every roller's raceway load (and rib load) or every ball's load
+/// against its azimuth.
 pub fn write_load_plot(path: &Path, r: &BearingReport) -> Result<()> {
-    let mut rows: Vec<_> = r.roller_loads.iter().collect();
-    rows.sort_by(|a, b| a.azimuth_deg.total_cmp(&b.azimuth_deg));
-    let outer: Vec<(f64, f64)> = rows
-        .iter()
-        .map(|w| (w.azimuth_deg, w.outer_load_n))
-        .collect();
-    let rib: Vec<(f64, f64)> = rows.iter().map(|w| (w.azimuth_deg, w.rib_load_n)).collect();
+    // (azimuth, load, rib load) per element, sorted by azimuth
+    let (mut rows, count, noun): (Vec<(f64, f64, f64)>, usize, &str) = match &r.elements {
+        BearingElements::Rollers(p) => (
+            p.roller_loads
+                .iter()
+                .map(|w| (w.azimuth_deg, w.outer_load_n, w.rib_load_n))
+                .collect(),
+            p.rollers,
+            "roller",
+        ),
+        BearingElements::Balls(p) => (
+            p.ball_loads
+                .iter()
+                .map(|w| (w.azimuth_deg, w.load_n, 0.0))
+                .collect(),
+            p.balls,
+            "ball",
+        ),
+    };
+    rows.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let load: Vec<(f64, f64)> = rows.iter().map(|w| (w.0, w.1)).collect();
+    let rib: Vec<(f64, f64)> = rows.iter().map(|w| (w.0, w.2)).collect();
     let mut series = vec![Series {
-        label: "outer raceway load",
-        points: &outer,
+        label: if noun == "ball" {
+            "ball load"
+        } else {
+            "outer raceway load"
+        },
+        points: &load,
         color: PALETTE[0],
         style: LineStyle::Markers,
     }];
@@ -183,22 +293,24 @@ pub fn write_load_plot(path: &Path, r: &BearingReport) -> Result<()> {
     let eps = r
         .load_zone_epsilon
         .map_or_else(String::new, |e| format!(", ε = {e:.3}"));
+    let default_title = format!("{noun} loads");
     let title = format!(
-        "{}: {} rollers{eps}",
-        r.name.as_deref().unwrap_or("roller loads"),
-        r.rollers
+        "{}: {count} {noun}s{eps}",
+        r.name.as_deref().unwrap_or(&default_title)
     );
-    draw(
-        path,
-        &title,
-        ["azimuth ψ [deg]", "roller load [N]"],
-        &series,
-    )
+    let y_label = format!("{noun} load [N]");
+    draw(path, &title, ["azimuth ψ [deg]", &y_label], &series)
 }
 
 /// The load per unit length along the most loaded roller, slice by slice.
 pub fn write_slice_plot(path: &Path, r: &BearingReport) -> Result<()> {
-    let m = &r.most_loaded_roller;
+    let Some(p) = r.rollers() else {
+        return Err(crate::commands::InputError(
+            "--slice-plot: a ball bearing has no slices (use --plot for the ball loads)".into(),
+        )
+        .into());
+    };
+    let m = &p.most_loaded_roller;
     let points: Vec<(f64, f64)> = m
         .position_mm
         .iter()
@@ -215,8 +327,8 @@ pub fn write_slice_plot(path: &Path, r: &BearingReport) -> Result<()> {
         "{}: roller {} at ψ = {:.1}°, Q = {:.0} N",
         r.name.as_deref().unwrap_or("most loaded roller"),
         m.roller,
-        r.roller_loads[m.roller].azimuth_deg,
-        r.max_roller_load_n
+        p.roller_loads[m.roller].azimuth_deg,
+        p.max_roller_load_n
     );
     draw(
         path,
