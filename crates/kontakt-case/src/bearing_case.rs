@@ -52,6 +52,7 @@
 //! methods; a solve that stagnates at the round-off floor (residual at most 1e-8 of the
 //! load, 1000 times the tolerance) is reported with a warning.
 
+use crate::bearing_model::BearingModel;
 use crate::common::{MaterialSpec, SCHEMA_VERSION, in_degrees, material, parse_toml};
 use crate::validity::{ContactSize, Size, checked, checked_report};
 use kontakt::hertz::validity::point_size;
@@ -804,8 +805,27 @@ pub fn run_bearing_case(case: &BearingCase) -> Result<BearingReport> {
     checked(run_bearing_case_unchecked(case)?)
 }
 
-/// [`run_bearing_case`] before the validity check of [`crate::validity::checked`].
+/// [`run_bearing_case`] before the validity check of [`crate::validity::checked`]: a cold
+/// solve of a [`BearingModel`].
 pub(crate) fn run_bearing_case_unchecked(case: &BearingCase) -> Result<BearingReport> {
+    BearingModel::new(case)?.solve_unchecked(&case.load)
+}
+
+/// The solver of a bearing case, planned once (the state of a [`BearingModel`]).
+#[derive(Debug, Clone)]
+pub(crate) enum Planned {
+    /// A roller bearing.
+    Roller(RollerBearingSolver),
+    /// A ball bearing, with its case keys for the errors of a solve.
+    Ball {
+        solver: BallBearingSolver,
+        spec: Box<BallSpec>,
+        keys: GrooveKeys,
+    },
+}
+
+/// Plan the solver of `case`'s bearing: errors named by the case key.
+pub(crate) fn plan(case: &BearingCase) -> Result<(Planned, &'static str)> {
     if case.method != "bearing" {
         return Err(Error::invalid(
             "method",
@@ -818,21 +838,48 @@ pub(crate) fn run_bearing_case_unchecked(case: &BearingCase) -> Result<BearingRe
         BearingSpec::Tapered(s) => (RollerBearingKind::Tapered, s, "tapered"),
         BearingSpec::Thrust(s) => (RollerBearingKind::Thrust, s, "thrust"),
         BearingSpec::DeepGrooveBall(s) => {
-            return run_ball(case, BallBearingKind::DeepGroove, s, "deep_groove_ball");
+            return plan_ball(BallBearingKind::DeepGroove, s, "deep_groove_ball");
         }
         BearingSpec::AngularContactBall(s) => {
-            return run_ball(
-                case,
-                BallBearingKind::AngularContact,
-                s,
-                "angular_contact_ball",
-            );
+            return plan_ball(BallBearingKind::AngularContact, s, "angular_contact_ball");
         }
     };
     let bearing = roller_bearing(kind, s, label)?;
-    let load = ring_load(&case.load)?;
-    let mut solver = RollerBearingSolver::new(bearing).map_err(map_bearing_field)?;
-    let sol = solver.solve(&load).map_err(map_load)?;
+    let solver = RollerBearingSolver::new(bearing).map_err(map_bearing_field)?;
+    Ok((Planned::Roller(solver), label))
+}
+
+/// Solve a planned bearing under `load` from `start` (the closed forms when `None`) and
+/// report it.
+pub(crate) fn solve_planned(
+    case: &BearingCase,
+    label: &'static str,
+    planned: &mut Planned,
+    load: &BearingLoadSpec,
+    start: Option<[f64; 5]>,
+) -> Result<BearingReport> {
+    let load = ring_load(load)?;
+    match planned {
+        Planned::Roller(solver) => roller_report(case, label, solver, &load, start),
+        Planned::Ball { solver, spec, keys } => {
+            ball_report(case, label, solver, spec, keys, &load, start)
+        }
+    }
+}
+
+/// The report of a roller bearing's solve.
+fn roller_report(
+    case: &BearingCase,
+    label: &'static str,
+    solver: &mut RollerBearingSolver,
+    load: &RingLoad,
+    start: Option<[f64; 5]>,
+) -> Result<BearingReport> {
+    let sol = match start {
+        Some(u) => solver.solve_from(load, u),
+        None => solver.solve(load),
+    }
+    .map_err(map_load)?;
     let mut warnings = solver_warnings(&sol.status, sol.note)?;
     let b = solver.bearing();
     if b.slices < DEFAULT_SLICES {
@@ -1002,7 +1049,8 @@ fn report(
 
 /// The case keys of a ball bearing's grooves, as the file gives them: the osculation key
 /// or the groove-radius key of the inner and the outer ring.
-struct GrooveKeys {
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct GrooveKeys {
     inner: &'static str,
     outer: &'static str,
 }
@@ -1148,19 +1196,39 @@ fn map_ball_field(e: Error, s: &BallSpec, keys: &GrooveKeys, f: [f64; 2]) -> Err
     )
 }
 
-/// Run a ball-bearing case: the library's quasi-static equilibrium (Jones 1960, Harris &
-/// Kotzalas 2006) and the Hertz contacts of the most loaded ball for the validity check.
-fn run_ball(
-    case: &BearingCase,
+/// Plan a ball bearing's solver: errors named by the case key.
+fn plan_ball(
     kind: BallBearingKind,
     s: &BallSpec,
     label: &'static str,
-) -> Result<BearingReport> {
+) -> Result<(Planned, &'static str)> {
     let (bearing, keys) = ball_bearing(kind, s, label)?;
-    let load = ring_load(&case.load)?;
     let f = [bearing.inner_osculation, bearing.outer_osculation];
-    let mut solver = BallBearingSolver::new(bearing).map_err(|e| map_ball_field(e, s, &keys, f))?;
-    let sol = solver.solve(&load).map_err(map_load)?;
+    let solver = BallBearingSolver::new(bearing).map_err(|e| map_ball_field(e, s, &keys, f))?;
+    let spec = Box::new(s.clone());
+    Ok((Planned::Ball { solver, spec, keys }, label))
+}
+
+/// The report of a ball bearing's solve: the library's quasi-static equilibrium (Jones 1960, Harris &
+/// Kotzalas 2006) and the Hertz contacts of the most loaded ball for the validity check.
+fn ball_report(
+    case: &BearingCase,
+    label: &'static str,
+    solver: &mut BallBearingSolver,
+    s: &BallSpec,
+    keys: &GrooveKeys,
+    load: &RingLoad,
+    start: Option<[f64; 5]>,
+) -> Result<BearingReport> {
+    let f = {
+        let b = solver.bearing();
+        [b.inner_osculation, b.outer_osculation]
+    };
+    let sol = match start {
+        Some(u) => solver.solve_from(load, u),
+        None => solver.solve(load),
+    }
+    .map_err(map_load)?;
     let warnings = solver_warnings(&sol.status, sol.note)?;
     let b = solver.bearing();
     let rows: Vec<BallRow> = solver

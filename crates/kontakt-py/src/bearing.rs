@@ -5,7 +5,9 @@
 use crate::args;
 use crate::case::{dict_toml, json_to_py, parse_dict_text};
 use crate::errors::{invalid, to_py, to_py_with};
-use kontakt_case::bearing_case::{BearingLoadSpec, PrescribedSpec};
+use kontakt_case::bearing_case::{
+    BallRow, BearingElements, BearingLoadSpec, PrescribedSpec, RollerRow,
+};
 use kontakt_case::{BearingModel, BearingReport, Case};
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1, PyArray2};
@@ -94,7 +96,8 @@ impl Bearing {
             .map_err(to_py)
     }
 
-    /// The bearing type of the case: "cylindrical", "tapered" or "thrust".
+    /// The bearing type of the case: "cylindrical", "tapered", "thrust",
+    /// "deep_groove_ball" or "angular_contact_ball".
     #[getter]
     fn bearing_type(&self) -> &'static str {
         self.inner.bearing_type()
@@ -225,18 +228,29 @@ impl BearingResult {
         Ok(BearingResult { report })
     }
 
+    /// A column of the element table: `roller` of a roller bearing's row, `ball` of a ball
+    /// bearing's.
     fn column<'py>(
         &self,
         py: Python<'py>,
-        f: impl Fn(&kontakt_case::bearing_case::RollerRow) -> f64,
+        roller: impl Fn(&RollerRow) -> f64,
+        ball: impl Fn(&BallRow) -> f64,
     ) -> Bound<'py, PyArray1<f64>> {
-        let v: Vec<f64> = self.report.roller_loads.iter().map(f).collect();
+        let v: Vec<f64> = match &self.report.elements {
+            BearingElements::Rollers(r) => r.roller_loads.iter().map(roller).collect(),
+            BearingElements::Balls(b) => b.ball_loads.iter().map(ball).collect(),
+        };
         v.into_pyarray(py)
     }
 }
 
 #[pymethods]
 impl BearingResult {
+    /// The bearing type (the report's `bearing_type`).
+    #[getter]
+    fn bearing_type(&self) -> &'static str {
+        self.report.bearing_type
+    }
     /// The inner ring's displacement (δx, δy, δz [mm], θx, θy [rad]), shape (5,).
     #[getter]
     fn displacement<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
@@ -258,42 +272,87 @@ impl BearingResult {
         let k = &self.report.stiffness_matrix;
         Array2::from_shape_fn((5, 5), |(i, j)| k[i][j]).into_pyarray(py)
     }
-    /// Azimuth of each roller from x toward y [deg], shape (Z,).
+    /// Azimuth of each rolling element from x toward y [deg], shape (Z,).
     #[getter]
     fn azimuth_deg<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        self.column(py, |r| r.azimuth_deg)
+        self.column(py, |r| r.azimuth_deg, |b| b.azimuth_deg)
     }
-    /// Inner raceway (cone) load of each roller [N], shape (Z,).
+    /// Inner raceway load of each element [N] (a ball's load is the same on both
+    /// raceways), shape (Z,).
     #[getter]
     fn inner_load_n<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        self.column(py, |r| r.inner_load_n)
+        self.column(py, |r| r.inner_load_n, |b| b.load_n)
     }
-    /// Outer raceway (cup) load of each roller [N], shape (Z,).
+    /// Outer raceway load of each element [N], shape (Z,).
     #[getter]
     fn outer_load_n<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        self.column(py, |r| r.outer_load_n)
+        self.column(py, |r| r.outer_load_n, |b| b.load_n)
     }
-    /// Rib load of each roller [N] (tapered rollers; 0 otherwise), shape (Z,).
+    /// Rib load of each element [N] (tapered rollers; 0 otherwise), shape (Z,).
     #[getter]
     fn rib_load_n<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        self.column(py, |r| r.rib_load_n)
+        self.column(py, |r| r.rib_load_n, |_| 0.0)
     }
-    /// The largest slice load per unit length of each roller [N/mm], shape (Z,).
+    /// The contact angle of each element [deg] (a ball's loaded angle; a roller's cup
+    /// angle), shape (Z,).
     #[getter]
-    fn max_load_per_length_n_per_mm<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        self.column(py, |r| r.max_load_per_length_n_per_mm)
+    fn contact_angle_deg<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        let cup = self.report.rollers().map_or(0.0, |r| r.contact_angle_deg);
+        self.column(py, |_| cup, |b| b.contact_angle_deg)
     }
-    /// The largest slice approach of each roller [mm] (negative: lifted off), shape (Z,).
+    /// The approach of each element [mm] (a roller's largest slice approach; negative:
+    /// lifted off), shape (Z,).
     #[getter]
     fn approach_mm<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        self.column(py, |r| r.approach_mm)
+        self.column(py, |r| r.approach_mm, |b| b.approach_mm)
+    }
+    /// Every column of the report's element table (`roller_loads` or `ball_loads`) as an
+    /// array of shape (Z,), by its report key.
+    #[getter]
+    fn elements<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let rows = match &self.report.elements {
+            BearingElements::Rollers(r) => serde_json::to_value(&r.roller_loads),
+            BearingElements::Balls(b) => serde_json::to_value(&b.ball_loads),
+        }
+        .map_err(|e| pyo3::exceptions::PyRuntimeError::new_err(format!("report: {e}")))?;
+        let d = PyDict::new(py);
+        let rows = rows.as_array().cloned().unwrap_or_default();
+        if let Some(serde_json::Value::Object(first)) = rows.first() {
+            for key in first.keys() {
+                let v: Vec<f64> = rows
+                    .iter()
+                    .map(|r| r[key].as_f64().unwrap_or(f64::NAN))
+                    .collect();
+                d.set_item(key, v.into_pyarray(py))?;
+            }
+        }
+        Ok(d)
+    }
+    /// The largest slice load per unit length of each roller [N/mm], shape (Z,); None for
+    /// a ball bearing.
+    #[getter]
+    fn max_load_per_length_n_per_mm<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> Option<Bound<'py, PyArray1<f64>>> {
+        self.report.rollers().map(|r| {
+            let v: Vec<f64> = r
+                .roller_loads
+                .iter()
+                .map(|r| r.max_load_per_length_n_per_mm)
+                .collect();
+            v.into_pyarray(py)
+        })
     }
     /// The slices of the most loaded roller: a dict with "roller" (its index) and arrays
     /// "position_mm" (slice centres from the roller centre [mm]), "load_n" [N],
-    /// "load_per_length_n_per_mm" [N/mm], "approach_mm" [mm].
+    /// "load_per_length_n_per_mm" [N/mm], "approach_mm" [mm]; None for a ball bearing.
     #[getter]
-    fn slices<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let s = &self.report.most_loaded_roller;
+    fn slices<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
+        let Some(r) = self.report.rollers() else {
+            return Ok(None);
+        };
+        let s = &r.most_loaded_roller;
         let d = PyDict::new(py);
         d.set_item("roller", s.roller)?;
         d.set_item("position_mm", PyArray1::from_slice(py, &s.position_mm))?;
@@ -303,12 +362,12 @@ impl BearingResult {
             PyArray1::from_slice(py, &s.load_per_length_n_per_mm),
         )?;
         d.set_item("approach_mm", PyArray1::from_slice(py, &s.approach_mm))?;
-        Ok(d)
+        Ok(Some(d))
     }
-    /// The largest roller (outer raceway) load [N].
+    /// The largest rolling-element load [N] (a roller's outer raceway load, a ball's load).
     #[getter]
-    fn max_roller_load_n(&self) -> f64 {
-        self.report.max_roller_load_n
+    fn max_element_load_n(&self) -> f64 {
+        max_load(&self.report)
     }
     /// The load-zone parameter ε (Sjövall 1933); None without a radial displacement and
     /// for thrust bearings.
@@ -359,12 +418,21 @@ impl BearingResult {
         .map(|x| format!("{x:.6e}"))
         .collect();
         format!(
-            "BearingResult(status={:?}, iterations={}, displacement=[{}], max_roller_load_n={:.6}, warnings={:?})",
+            "BearingResult(bearing_type={:?}, status={:?}, iterations={}, displacement=[{}], max_element_load_n={:.6}, warnings={:?})",
+            r.bearing_type,
             r.solver.termination,
             r.solver.iterations,
             u.join(", "),
-            r.max_roller_load_n,
+            max_load(r),
             r.warnings
         )
+    }
+}
+
+/// The largest rolling-element load of a report, N.
+fn max_load(r: &BearingReport) -> f64 {
+    match &r.elements {
+        BearingElements::Rollers(p) => p.max_roller_load_n,
+        BearingElements::Balls(p) => p.max_ball_load_n,
     }
 }

@@ -14,8 +14,22 @@ fn examples() -> Vec<(PathBuf, BearingCase)> {
         }
     }
     out.sort_by(|a, b| a.0.cmp(&b.0));
-    assert!(out.len() >= 4, "the example bearings: {out:?}");
+    assert!(out.len() >= 6, "the example bearings: {out:?}");
     out
+}
+
+/// The largest element load of a report, N.
+fn max_load(r: &BearingReport) -> f64 {
+    r.rollers().map_or(0.0, |p| p.max_roller_load_n) + r.balls().map_or(0.0, |p| p.max_ball_load_n)
+}
+
+/// The load of every element (a roller's outer raceway load, a ball's load), N.
+fn element_loads(r: &BearingReport) -> Vec<f64> {
+    match (r.rollers(), r.balls()) {
+        (Some(p), _) => p.roller_loads.iter().map(|q| q.outer_load_n).collect(),
+        (_, Some(p)) => p.ball_loads.iter().map(|q| q.load_n).collect(),
+        _ => Vec::new(),
+    }
 }
 
 /// The model's first (cold) solve is the case runner's report, bit for bit: the two must
@@ -36,8 +50,8 @@ fn a_cold_solve_is_the_case_report() {
     }
 }
 
-/// After a 1 % load change the warm solve needs fewer iterations than a cold one and
-/// lands on the same equilibrium.
+/// After a 1 % load change the warm solve of a roller bearing needs fewer iterations than
+/// a cold one (a ball bearing's no more) and lands on the same equilibrium.
 #[test]
 fn a_warm_solve_after_a_small_load_change_is_shorter_and_the_same() {
     for (path, case) in examples() {
@@ -50,11 +64,16 @@ fn a_warm_solve_after_a_small_load_change_is_shorter_and_the_same() {
         model.reset();
         let cold = model.solve(&load).unwrap();
         let what = path.display();
+        // a ball bearing's closed-form start is as good (3 iterations, measured): not worse
+        let shorter = if cold.rollers().is_some() {
+            warm.solver.iterations < cold.solver.iterations
+        } else {
+            warm.solver.iterations <= cold.solver.iterations
+        };
         assert!(
-            warm.solver.iterations < cold.solver.iterations,
+            shorter,
             "{what}: warm {} cold {}",
-            warm.solver.iterations,
-            cold.solver.iterations
+            warm.solver.iterations, cold.solver.iterations
         );
         for i in 0..3 {
             let (w, c) = (warm.displacement_mm[i], cold.displacement_mm[i]);
@@ -63,12 +82,10 @@ fn a_warm_solve_after_a_small_load_change_is_shorter_and_the_same() {
                 "{what}: δ[{i}] {w} {c}"
             );
         }
-        for (w, c) in warm.roller_loads.iter().zip(&cold.roller_loads) {
-            let scale = cold.max_roller_load_n;
-            assert!(
-                (w.outer_load_n - c.outer_load_n).abs() <= 1e-9 * scale,
-                "{what}"
-            );
+        let scale = max_load(&cold);
+        assert!(scale > 0.0, "{what}");
+        for (w, c) in element_loads(&warm).iter().zip(element_loads(&cold)) {
+            assert!((w - c).abs() <= 1e-9 * scale, "{what}: {w} {c}");
         }
     }
 }
@@ -116,7 +133,7 @@ fn a_solve_with_every_roller_lifted_off_leaves_no_warm_start() {
                 prescribed: crate::bearing_case::PrescribedSpec::default(),
             })
             .unwrap();
-        assert_eq!(zero.max_roller_load_n, 0.0, "{}", path.display());
+        assert_eq!(max_load(&zero), 0.0, "{}", path.display());
         assert!(zero.warnings.iter().any(|w| w.contains("lifted off")));
         assert_eq!(model.warm_start(), None, "{}", path.display());
         assert_eq!(model.solve(&case.load).unwrap(), cold, "{}", path.display());
