@@ -19,7 +19,7 @@ CRB = REPO / "examples/bearing_nu_crb.toml"
 
 
 def test_there_are_example_bearings():
-    assert len(EXAMPLES) >= 4
+    assert len(EXAMPLES) >= 6
 
 
 def solve_args(case: dict) -> dict:
@@ -63,23 +63,39 @@ def test_every_example_is_kontakt_run(path):
         close(r.to_dict(), reference)
     # the arrays are the report's
     d = r.to_dict()
+    assert r.bearing_type == d["bearing_type"]
     np.testing.assert_array_equal(r.displacement, d["displacement_mm"] + d["tilt_rad"])
     np.testing.assert_array_equal(r.load_carried, d["force_n"] + d["moment_nmm"])
     np.testing.assert_array_equal(r.stiffness, np.array(d["stiffness_matrix"]))
     assert r.stiffness.shape == (5, 5) and r.displacement.shape == (5,)
-    rows = d["roller_loads"]
-    for key in ("azimuth_deg", "inner_load_n", "outer_load_n", "rib_load_n",
-                "max_load_per_length_n_per_mm", "approach_mm"):
-        np.testing.assert_array_equal(getattr(r, key), [row[key] for row in rows])
-        assert getattr(r, key).shape == (d["rollers"],)
-    s = r.slices
-    assert s["roller"] == d["most_loaded_roller"]["roller"]
-    for key in ("position_mm", "load_n", "load_per_length_n_per_mm", "approach_mm"):
-        np.testing.assert_array_equal(s[key], d["most_loaded_roller"][key])
+    if "roller_loads" in d:
+        rows = d["roller_loads"]
+        z = d["rollers"]
+        same = {key: key for key in ("azimuth_deg", "inner_load_n", "outer_load_n", "rib_load_n",
+                                     "max_load_per_length_n_per_mm", "approach_mm")}
+        assert r.max_element_load_n == d["max_roller_load_n"]
+        np.testing.assert_array_equal(r.contact_angle_deg, np.full(z, d["contact_angle_deg"]))
+        s = r.slices
+        assert s["roller"] == d["most_loaded_roller"]["roller"]
+        for key in ("position_mm", "load_n", "load_per_length_n_per_mm", "approach_mm"):
+            np.testing.assert_array_equal(s[key], d["most_loaded_roller"][key])
+    else:
+        rows = d["ball_loads"]
+        z = d["balls"]
+        same = {"azimuth_deg": "azimuth_deg", "inner_load_n": "load_n", "outer_load_n": "load_n",
+                "contact_angle_deg": "contact_angle_deg", "approach_mm": "approach_mm"}
+        assert r.max_element_load_n == d["max_ball_load_n"]
+        np.testing.assert_array_equal(r.rib_load_n, np.zeros(z))
+        assert r.slices is None and r.max_load_per_length_n_per_mm is None
+    for attr, key in same.items():
+        np.testing.assert_array_equal(getattr(r, attr), [row[key] for row in rows])
+        assert getattr(r, attr).shape == (z,)
+    assert r.elements.keys() == rows[0].keys()
+    for key, column in r.elements.items():
+        np.testing.assert_array_equal(column, [row[key] for row in rows])
     assert r.status == d["solver"]["termination"] == "converged"
     assert r.iterations == d["solver"]["iterations"]
     assert r.residual == d["solver"]["residual"]
-    assert r.max_roller_load_n == d["max_roller_load_n"]
     assert r.load_zone_epsilon == d.get("load_zone_epsilon")
     assert r.warnings == d.get("warnings", [])
     assert r.to_json().startswith("{") and "BearingResult(" in repr(r)
@@ -106,9 +122,10 @@ def test_a_warm_start_after_a_one_percent_load_change(path):
     warm = b.solve(**changed)
     b.reset()
     cold = b.solve(**changed)
-    assert warm.iterations < cold.iterations
+    # a ball bearing's closed-form start is as good (3 iterations): not worse
+    assert warm.iterations < cold.iterations if "roller_loads" in cold.to_dict() else warm.iterations <= cold.iterations
     np.testing.assert_allclose(warm.displacement, cold.displacement, rtol=1e-9, atol=1e-9 * np.abs(cold.displacement).max())
-    np.testing.assert_allclose(warm.outer_load_n, cold.outer_load_n, rtol=0, atol=1e-9 * cold.max_roller_load_n)
+    np.testing.assert_allclose(warm.outer_load_n, cold.outer_load_n, rtol=0, atol=1e-9 * cold.max_element_load_n)
 
 
 def test_a_failed_solve_keeps_the_warm_start():

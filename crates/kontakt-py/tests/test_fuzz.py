@@ -501,7 +501,7 @@ def test_contact_element(p1, p2, t1, t2, text, reset):
 
 # --- whole bearing --------------------------------------------------------------------------
 
-BEARINGS = [kt.Bearing(REPO / f"examples/{name}.toml") for name in ("bearing_32008x", "bearing_nu_crb")]
+BEARINGS = [kt.Bearing(REPO / f"examples/{name}.toml") for name in ("bearing_32008x", "bearing_nu_crb", "bearing_7205")]
 load = st.one_of(
     st.floats(min_value=-2e4, max_value=2e4),
     st.floats(min_value=0.0, max_value=2e4),
