@@ -52,7 +52,6 @@
 //! methods; a solve that stagnates at the round-off floor (residual at most 1e-8 of the
 //! load, 1000 times the tolerance) is reported with a warning.
 
-use crate::bearing_model::BearingModel;
 use crate::common::{MaterialSpec, SCHEMA_VERSION, in_degrees, material, parse_toml};
 use crate::validity::{ContactSize, Size, checked, checked_report};
 use kontakt::hertz::validity::point_size;
@@ -806,12 +805,13 @@ pub fn run_bearing_case(case: &BearingCase) -> Result<BearingReport> {
 }
 
 /// [`run_bearing_case`] before the validity check of [`crate::validity::checked`]: a cold
-/// solve of a [`BearingModel`].
+/// solve, the first solve of a [`crate::BearingModel`].
 pub(crate) fn run_bearing_case_unchecked(case: &BearingCase) -> Result<BearingReport> {
-    BearingModel::new(case)?.solve_unchecked(&case.load)
+    let (mut planned, label) = plan(case)?;
+    solve_planned(case, label, &mut planned, &case.load, None)
 }
 
-/// The solver of a bearing case, planned once (the state of a [`BearingModel`]).
+/// The solver of a bearing case, planned once (the state of a [`crate::BearingModel`]).
 #[derive(Debug, Clone)]
 pub(crate) enum Planned {
     /// A roller bearing.
@@ -1249,7 +1249,7 @@ fn ball_report(
     if sol.max_ball_load_n > 0.0 {
         let pair = b
             .contacts(b.stiffness_contact_angle())
-            .map_err(|e| map_ball_field(e, s, &keys, f))?;
+            .map_err(|e| map_ball_field(e, s, keys, f))?;
         for (c, ring, key) in [
             (&pair[0], "inner", keys.inner),
             (&pair[1], "outer", keys.outer),
