@@ -44,9 +44,9 @@ fn parse(case: &Bound<'_, PyAny>) -> PyResult<Case> {
         };
         return parse_dict_text(&with_load(dict_toml(&dict, "case")?));
     }
-    let text = if case.is_instance_of::<PyString>() && args::text(case, "case", "")?.contains('\n')
-    {
-        args::text(case, "case", "")?
+    let inline = case.is_instance_of::<PyString>() && case.extract::<String>()?.contains('\n');
+    let text = if inline {
+        case.extract::<String>()?
     } else if case.is_instance_of::<PyString>() || case.hasattr("__fspath__")? {
         let path = args::path(case, "case")?;
         kontakt_case::read_case_file(&path).map_err(to_py)?
