@@ -14,7 +14,6 @@
 //! part of a complex array; nothing here does.
 
 use crate::errors::invalid;
-use crate::hertz::Material;
 use numpy::{AllowTypeChange, PyArrayLikeDyn};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
@@ -58,7 +57,7 @@ fn is_complex(v: &Bound<'_, PyAny>) -> bool {
 }
 
 /// `v` unless it is omitted or Python's `None`.
-fn given<'a, 'py>(v: Option<&'a Bound<'py, PyAny>>) -> Option<&'a Bound<'py, PyAny>> {
+pub fn given<'a, 'py>(v: Option<&'a Bound<'py, PyAny>>) -> Option<&'a Bound<'py, PyAny>> {
     v.filter(|v| !v.is_none())
 }
 
@@ -211,16 +210,6 @@ pub fn path(v: &Bound<'_, PyAny>, name: &str) -> PyResult<PathBuf> {
 /// An optional path.
 pub fn opt_path(v: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<Option<PathBuf>> {
     given(v).map(|v| path(v, name)).transpose()
-}
-
-/// An optional `kontakt.Material`.
-pub fn material(v: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<Option<Material>> {
-    given(v)
-        .map(|v| {
-            v.extract::<Material>()
-                .map_err(|_| wrong_type(name, v, "a kontakt.Material or None"))
-        })
-        .transpose()
 }
 
 /// A bool among the items of nested lists and tuples (NumPy would make it 0.0 or 1.0 in an

@@ -45,8 +45,8 @@ impl HalfSpace {
         let physical_sizes =
             args::reals::<2>(physical_sizes, "physical_sizes", "a finite size > 0 mm")?;
         let e_star = args::opt_real(e_star, "e_star", "a finite contact modulus > 0 MPa")?;
-        let material1 = args::material(material1, "material1")?;
-        let material2 = args::material(material2, "material2")?;
+        let material1 = crate::hertz::material_arg(material1, "material1")?;
+        let material2 = crate::hertz::material_arg(material2, "material2")?;
         let boundary = args::text_or(boundary, "boundary", BOUNDARIES, "free")?;
         for (i, &n) in nb_grid_pts.iter().enumerate() {
             if !(8..=4096).contains(&n) {

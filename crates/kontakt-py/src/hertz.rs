@@ -15,6 +15,17 @@ use numpy::{AllowTypeChange, IntoPyArray, PyArrayDyn, PyArrayLikeDyn};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
+/// An optional `kontakt.Material` argument (here beside the class, so that the argument
+/// converter `args` need not import the classes that use it).
+pub(crate) fn material_arg(v: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<Option<Material>> {
+    args::given(v)
+        .map(|v| {
+            v.extract::<Material>()
+                .map_err(|_| args::wrong_type(name, v, "a kontakt.Material or None"))
+        })
+        .transpose()
+}
+
 /// A linear-elastic isotropic material: Young's modulus `e` [MPa] (finite, > 0) and
 /// Poisson's ratio `nu` (-1 < nu <= 0.5).
 #[pyclass(frozen, module = "kontakt._kontakt", from_py_object)]
@@ -72,7 +83,7 @@ impl Material {
     /// Contact modulus E* [MPa] of this material against `other`:
     /// 1/E* = (1 - nu1²)/E1 + (1 - nu2²)/E2.
     fn e_star(&self, other: &Bound<'_, PyAny>) -> PyResult<f64> {
-        let other = args::material(Some(other), "other")?
+        let other = material_arg(Some(other), "other")?
             .ok_or_else(|| args::wrong_type("other", other, "a kontakt.Material"))?;
         Ok(effective_modulus(&self.inner, &other.inner))
     }
@@ -241,8 +252,8 @@ impl HertzPoint {
     ) -> PyResult<Self> {
         let radii1 = args::reals::<2>(radii1, "radii1", RADIUS)?;
         let radii2 = args::reals::<2>(radii2, "radii2", RADIUS)?;
-        let material1 = args::material(material1, "material1")?;
-        let material2 = args::material(material2, "material2")?;
+        let material1 = material_arg(material1, "material1")?;
+        let material2 = material_arg(material2, "material2")?;
         let angle = args::opt_real(angle, "angle", "a finite angle in rad")?.unwrap_or(0.0);
         let g =
             PointGeometry::new(radii1, radii2, angle).map_err(|e| to_py_with(e, point_field))?;
@@ -518,8 +529,8 @@ impl HertzLine {
     ) -> PyResult<Self> {
         let radius1 = args::real(radius1, "radius1", RADIUS)?;
         let radius2 = args::real(radius2, "radius2", RADIUS)?;
-        let material1 = args::material(material1, "material1")?;
-        let material2 = args::material(material2, "material2")?;
+        let material1 = material_arg(material1, "material1")?;
+        let material2 = material_arg(material2, "material2")?;
         let length = args::opt_real(length, "length", "a finite length > 0 mm")?;
         if let Some(l) = length {
             kontakt::error::positive_as("length", l, "a finite length > 0 mm").map_err(to_py)?;
