@@ -70,36 +70,6 @@ pub fn relative_load(psi: f64, eps: f64, n: f64) -> f64 {
     if b > 0.0 { b.powf(n) } else { 0.0 }
 }
 
-/// Gauss-Legendre nodes and weights on [0, 1], 10 points (computed by Newton's method on
-/// the Legendre polynomial; no table to mistype).
-fn gauss_legendre_01() -> ([f64; 10], [f64; 10]) {
-    const N: usize = 10;
-    let mut x = [0.0; N];
-    let mut w = [0.0; N];
-    for i in 0..N {
-        let mut t = (PI * (i as f64 + 0.75) / (N as f64 + 0.5)).cos();
-        let mut dp = 1.0;
-        for _ in 0..100 {
-            let (mut p0, mut p1) = (1.0, t);
-            for k in 2..=N {
-                let k = k as f64;
-                let p2 = ((2.0 * k - 1.0) * t * p1 - (k - 1.0) * p0) / k;
-                p0 = p1;
-                p1 = p2;
-            }
-            dp = N as f64 * (t * p1 - p0) / (t * t - 1.0);
-            let dt = p1 / dp;
-            t -= dt;
-            if dt.abs() < 1e-16 {
-                break;
-            }
-        }
-        x[i] = 0.5 * (1.0 - t);
-        w[i] = 1.0 / ((1.0 - t * t) * dp * dp);
-    }
-    (x, w)
-}
-
 /// Sjövall's integrals J_r(ε) and J_a(ε) for the load exponent `n`, by Gauss-Legendre
 /// quadrature over the loaded arc `|ψ| < ψ_l`, `cos ψ_l = max(1 − 2ε, −1)`, after the
 /// substitution `ψ = ψ_l (1 − s²)` that smooths the `(ψ_l − ψ)ⁿ` end of the integrand
@@ -110,12 +80,16 @@ fn gauss_legendre_01() -> ([f64; 10], [f64; 10]) {
 pub fn sjovall(eps: f64, n: f64) -> Result<LoadZoneIntegrals> {
     check(eps, n)?;
     let psi_l = (1.0 - 2.0 * eps).max(-1.0).acos();
-    let (xs, ws) = gauss_legendre_01();
+    // 10 Gauss-Legendre points mapped from [−1, 1] to [0, 1]
+    let rule: Vec<(f64, f64)> = kontakt::quadrature::gauss_legendre(10)
+        .into_iter()
+        .map(|(t, w)| (0.5 * (1.0 - t), 0.5 * w))
+        .collect();
     const PANELS: usize = 64;
     let (mut jr, mut ja) = (0.0, 0.0);
     for p in 0..PANELS {
         let (s0, h) = (p as f64 / PANELS as f64, 1.0 / PANELS as f64);
-        for (x, w) in xs.iter().zip(&ws) {
+        for &(x, w) in &rule {
             let s = s0 + h * x;
             let psi = psi_l * (1.0 - s * s);
             let f = relative_load(psi, eps, n) * w * h * 2.0 * psi_l * s;

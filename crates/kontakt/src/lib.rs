@@ -107,6 +107,7 @@ pub mod load;
 pub mod lubrication;
 pub mod material;
 pub mod pimp;
+pub mod quadrature;
 pub mod rolling;
 pub mod rough;
 pub mod solve;

@@ -48,35 +48,9 @@ fn log_uniform(lo: f64, hi: f64) -> impl Strategy<Value = f64> {
 // Independent numerical tools
 // ---------------------------------------------------------------------------------------
 
-/// Gauss-Legendre nodes and weights on [-1, 1] (Newton on P_n, Golub-Welsch-free).
-fn gauss_legendre(n: usize) -> Vec<(f64, f64)> {
-    let mut out = Vec::with_capacity(n);
-    for i in 0..n {
-        let mut x = (PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
-        let mut dp = 0.0;
-        for _ in 0..100 {
-            let (mut p0, mut p1) = (1.0, x);
-            for k in 2..=n {
-                let kf = k as f64;
-                let p2 = ((2.0 * kf - 1.0) * x * p1 - (kf - 1.0) * p0) / kf;
-                p0 = p1;
-                p1 = p2;
-            }
-            dp = n as f64 * (x * p1 - p0) / (x * x - 1.0);
-            let dx = p1 / dp;
-            x -= dx;
-            if dx.abs() < 1e-16 {
-                break;
-            }
-        }
-        out.push((x, 2.0 / ((1.0 - x * x) * dp * dp)));
-    }
-    out
-}
-
 /// Composite Gauss-Legendre (`panels` x 20 points) of `f` over [lo, hi].
 fn integrate(f: impl Fn(f64) -> f64, lo: f64, hi: f64, panels: usize) -> f64 {
-    let rule = gauss_legendre(20);
+    let rule = kontakt::quadrature::gauss_legendre(20);
     let h = (hi - lo) / panels as f64;
     let mut sum = 0.0;
     for p in 0..panels {

@@ -42,34 +42,6 @@ pub struct EllipseRule {
     weight: Vec<f64>,
 }
 
-/// Gauss-Legendre nodes and weights on [−1, 1] (Newton on the Legendre recurrence).
-fn gauss_legendre(n: usize) -> Vec<(f64, f64)> {
-    let mut out = Vec::with_capacity(n);
-    for i in 0..n {
-        let mut x = (std::f64::consts::PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
-        let mut dp = 1.0;
-        for _ in 0..100 {
-            let (mut p0, mut p1) = (1.0, x);
-            for k in 2..=n {
-                let k = k as f64;
-                let p2 = ((2.0 * k - 1.0) * x * p1 - (k - 1.0) * p0) / k;
-                p0 = p1;
-                p1 = p2;
-            }
-            let pn = if n == 0 { 1.0 } else { p1 };
-            let pm = if n == 0 { 0.0 } else { p0 };
-            dp = n as f64 * (x * pn - pm) / (x * x - 1.0);
-            let step = pn / dp;
-            x -= step;
-            if step.abs() < 1e-16 {
-                break;
-            }
-        }
-        out.push((x, 2.0 / ((1.0 - x * x) * dp * dp)));
-    }
-    out
-}
-
 impl EllipseRule {
     /// A rule of `radial` × `angular` nodes.
     ///
@@ -85,11 +57,13 @@ impl EllipseRule {
         }
         let half = std::f64::consts::FRAC_PI_4;
         let dtheta = std::f64::consts::TAU / angular as f64;
-        let rings = gauss_legendre(radial).into_iter().map(|(t, w)| {
-            // φ = π/4 (t + 1) on [0, π/2].
-            let (sp, cp) = (half * (t + 1.0)).sin_cos();
-            (sp, cp, w * half * sp * cp * cp * dtheta)
-        });
+        let rings = crate::quadrature::gauss_legendre(radial)
+            .into_iter()
+            .map(|(t, w)| {
+                // φ = π/4 (t + 1) on [0, π/2].
+                let (sp, cp) = (half * (t + 1.0)).sin_cos();
+                (sp, cp, w * half * sp * cp * cp * dtheta)
+            });
         // The radial rule integrates sin φ cos² φ to 1e-8 (6 nodes) or better; the weights
         // are scaled to sum to 2π/3 exactly, so that a uniform Coulomb stress (any sliding
         // without spin) gives μ F to round-off.
