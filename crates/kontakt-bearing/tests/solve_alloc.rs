@@ -3,62 +3,41 @@
 //! every element kind (the cases of benches/bearing.rs).
 
 // The allocation counter of the kontakt crate's tests, shared rather than copied.
+#[path = "support/cases.rs"]
+mod cases;
 #[path = "../../kontakt/tests/support/counting_alloc.rs"]
 mod counting_alloc;
 
+use cases::{crb, crb_load, dgbb, dgbb_load, trb, trb_load};
 use counting_alloc::allocations;
 use kontakt_bearing::ball_equilibrium::BallBearingSolver;
-use kontakt_bearing::equilibrium::{RingLoad, RollerBearingSolver};
-use kontakt_bearing::geometry::{BallBearing, RollerBearing};
+use kontakt_bearing::equilibrium::RollerBearingSolver;
 
 #[test]
 fn roller_bearing_solves_allocate_nothing_cold_or_warm() {
-    let trb = RollerBearing::tapered(
-        108.5,
-        20,
-        17.0,
-        20.7,
-        16.0_f64.to_radians(),
-        11.7_f64.to_radians(),
-    );
-    let mut solver = RollerBearingSolver::new(trb).expect("valid TRB");
-    let load = RingLoad::forces([20_000.0, 0.0, 10_000.0, 0.0, 0.0]).with_tilts_held();
-    let load_1pc = RingLoad::forces([20_200.0, 0.0, 10_100.0, 0.0, 0.0]).with_tilts_held();
-    let (cold, n) = allocations(|| solver.solve(&load).expect("solve"));
+    let mut solver = RollerBearingSolver::new(trb()).expect("valid TRB");
+    let (cold, n) = allocations(|| solver.solve(&trb_load(1.0)).expect("solve"));
     assert!(cold.status.converged());
     assert_eq!(n, 0, "cold TRB solve");
-    let (warm, n) = allocations(|| {
-        solver
-            .solve_from(&load_1pc, cold.displacement)
-            .expect("solve")
-    });
+    let start = cold.displacement;
+    let (warm, n) = allocations(|| solver.solve_from(&trb_load(1.01), start).expect("solve"));
     assert!(warm.status.converged());
     assert_eq!(n, 0, "warm TRB solve");
 
-    let mut crb = RollerBearing::cylindrical(60.0, 14, 10.0, 12.0);
-    crb.clearance_mm = 0.01;
-    let mut solver = RollerBearingSolver::new(crb).expect("valid CRB");
-    let load = RingLoad::forces([10_000.0, 0.0, 0.0, 0.0, 0.0]);
-    let (s, n) = allocations(|| solver.solve(&load).expect("solve"));
+    let mut solver = RollerBearingSolver::new(crb()).expect("valid CRB");
+    let (s, n) = allocations(|| solver.solve(&crb_load()).expect("solve"));
     assert!(s.status.converged());
     assert_eq!(n, 0, "CRB solve");
 }
 
 #[test]
 fn ball_bearing_solves_allocate_nothing_cold_or_warm() {
-    let mut b = BallBearing::deep_groove(70.0, 10, 12.7, [0.52, 0.53]);
-    b.clearance_mm = 0.01;
-    let mut solver = BallBearingSolver::new(b).expect("valid ball bearing");
-    let load = RingLoad::forces([5_000.0, 0.0, 2_000.0, 0.0, 0.0]);
-    let (cold, n) = allocations(|| solver.solve(&load).expect("solve"));
+    let mut solver = BallBearingSolver::new(dgbb()).expect("valid ball bearing");
+    let (cold, n) = allocations(|| solver.solve(&dgbb_load(1.0)).expect("solve"));
     assert!(cold.status.converged());
     assert_eq!(n, 0, "cold ball solve");
-    let load_1pc = RingLoad::forces([5_050.0, 0.0, 2_020.0, 0.0, 0.0]);
-    let (warm, n) = allocations(|| {
-        solver
-            .solve_from(&load_1pc, cold.displacement)
-            .expect("solve")
-    });
+    let start = cold.displacement;
+    let (warm, n) = allocations(|| solver.solve_from(&dgbb_load(1.01), start).expect("solve"));
     assert!(warm.status.converged());
     assert_eq!(n, 0, "warm ball solve");
 }
