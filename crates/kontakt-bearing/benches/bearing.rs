@@ -1,0 +1,81 @@
+//! Criterion benchmarks of the bearing solvers (issue 28, "Speed"): a tapered roller
+//! bearing of 20 rollers × 31 slices (ISO/TS 16281 slice law) under a combined load with
+//! the tilts held, cold (from the closed-form start) and warm after a 1 % load change
+//! (`solve_from` the previous displacement); a deep-groove ball bearing with 10 balls under
+//! a combined load, cold; a cylindrical roller bearing of 14 rollers × 31 slices under a
+//! radial load, cold, for reference. The solvers are built once outside the timed closure;
+//! the timed call is the solve. The Newton iterations of each case are printed once
+//! (stderr). Figures in docs/PERFORMANCE.md, "Bearing load distribution (issue 28)".
+
+#[path = "../tests/support/cases.rs"]
+mod cases;
+
+use cases::{crb, crb_load, dgbb, dgbb_load, trb, trb_load};
+use criterion::{Criterion, criterion_group, criterion_main};
+use kontakt_bearing::ball_equilibrium::BallBearingSolver;
+use kontakt_bearing::equilibrium::RollerBearingSolver;
+use std::hint::black_box;
+
+fn bench_bearing(c: &mut Criterion) {
+    let mut group = c.benchmark_group("bearing");
+
+    // TRB, cold and warm.
+    let mut trb_solver = RollerBearingSolver::new(trb()).expect("valid TRB");
+    let (load, load_1pc) = (trb_load(1.0), trb_load(1.01));
+    let previous = trb_solver.solve(&load).expect("solve");
+    assert!(previous.status.converged(), "{:?}", previous.status);
+    let warm = trb_solver
+        .solve_from(&load_1pc, previous.displacement)
+        .expect("solve");
+    assert!(warm.status.converged(), "{:?}", warm.status);
+    eprintln!(
+        "trb_20x31: cold {} iterations (residual {:.1e}), warm after +1 % {} iterations (residual {:.1e}), load zone {:?}, Q_max {:.0} N",
+        previous.status.iterations,
+        previous.status.residual,
+        warm.status.iterations,
+        warm.status.residual,
+        previous.load_zone,
+        previous.max_roller_load_n,
+    );
+    group.bench_function("trb_20x31_cold", |b| {
+        b.iter(|| trb_solver.solve(black_box(&load)).expect("solve"))
+    });
+    let start = previous.displacement;
+    group.bench_function("trb_20x31_warm_1pc", |b| {
+        b.iter(|| {
+            trb_solver
+                .solve_from(black_box(&load_1pc), black_box(start))
+                .expect("solve")
+        })
+    });
+
+    // Deep-groove ball bearing, 10 balls, combined load, cold.
+    let mut ball_solver = BallBearingSolver::new(dgbb()).expect("valid ball bearing");
+    let ball_load = dgbb_load(1.0);
+    let s = ball_solver.solve(&ball_load).expect("solve");
+    assert!(s.status.converged(), "{:?}", s.status);
+    eprintln!(
+        "dgbb_10: cold {} iterations (residual {:.1e}), Q_max {:.0} N",
+        s.status.iterations, s.status.residual, s.max_ball_load_n,
+    );
+    group.bench_function("dgbb_10_combined_cold", |b| {
+        b.iter(|| ball_solver.solve(black_box(&ball_load)).expect("solve"))
+    });
+
+    // CRB, 14 rollers × 31 slices, radial load, cold.
+    let mut crb_solver = RollerBearingSolver::new(crb()).expect("valid CRB");
+    let crb_load = crb_load();
+    let s = crb_solver.solve(&crb_load).expect("solve");
+    assert!(s.status.converged(), "{:?}", s.status);
+    eprintln!(
+        "crb_14x31: cold {} iterations (residual {:.1e}), load zone {:?}, Q_max {:.0} N",
+        s.status.iterations, s.status.residual, s.load_zone, s.max_roller_load_n,
+    );
+    group.bench_function("crb_14x31_radial_cold", |b| {
+        b.iter(|| crb_solver.solve(black_box(&crb_load)).expect("solve"))
+    });
+    group.finish();
+}
+
+criterion_group!(benches, bench_bearing);
+criterion_main!(benches);

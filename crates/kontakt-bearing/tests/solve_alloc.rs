@@ -1,0 +1,43 @@
+//! Issue 28, "Speed": the bearing solves allocate nothing per call — the solvers own their
+//! per-roller and per-slice buffers and the solutions are `Copy` — cold, warm and for
+//! every element kind (the cases of benches/bearing.rs).
+
+// The allocation counter of the kontakt crate's tests, shared rather than copied.
+#[path = "support/cases.rs"]
+mod cases;
+#[path = "../../kontakt/tests/support/counting_alloc.rs"]
+mod counting_alloc;
+
+use cases::{crb, crb_load, dgbb, dgbb_load, trb, trb_load};
+use counting_alloc::allocations;
+use kontakt_bearing::ball_equilibrium::BallBearingSolver;
+use kontakt_bearing::equilibrium::RollerBearingSolver;
+
+#[test]
+fn roller_bearing_solves_allocate_nothing_cold_or_warm() {
+    let mut solver = RollerBearingSolver::new(trb()).expect("valid TRB");
+    let (cold, n) = allocations(|| solver.solve(&trb_load(1.0)).expect("solve"));
+    assert!(cold.status.converged());
+    assert_eq!(n, 0, "cold TRB solve");
+    let start = cold.displacement;
+    let (warm, n) = allocations(|| solver.solve_from(&trb_load(1.01), start).expect("solve"));
+    assert!(warm.status.converged());
+    assert_eq!(n, 0, "warm TRB solve");
+
+    let mut solver = RollerBearingSolver::new(crb()).expect("valid CRB");
+    let (s, n) = allocations(|| solver.solve(&crb_load()).expect("solve"));
+    assert!(s.status.converged());
+    assert_eq!(n, 0, "CRB solve");
+}
+
+#[test]
+fn ball_bearing_solves_allocate_nothing_cold_or_warm() {
+    let mut solver = BallBearingSolver::new(dgbb()).expect("valid ball bearing");
+    let (cold, n) = allocations(|| solver.solve(&dgbb_load(1.0)).expect("solve"));
+    assert!(cold.status.converged());
+    assert_eq!(n, 0, "cold ball solve");
+    let start = cold.displacement;
+    let (warm, n) = allocations(|| solver.solve_from(&dgbb_load(1.01), start).expect("solve"));
+    assert!(warm.status.converged());
+    assert_eq!(n, 0, "warm ball solve");
+}
