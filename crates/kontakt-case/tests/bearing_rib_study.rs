@@ -6,9 +6,9 @@
 #![allow(clippy::unwrap_used)] // tests: a panic is a failure with its message
 
 use kontakt::bearing::{RollerRib, RollerSet, TaperedKinematics, roller_loads};
-use kontakt_case::{Case, Outcome};
 use kontakt_case::friction_case::FrictionCase;
 use kontakt_case::pimp_case::roller_rib_from_spec;
+use kontakt_case::{Case, Outcome};
 use std::path::PathBuf;
 
 fn examples() -> PathBuf {
@@ -131,7 +131,10 @@ fn the_example_states_the_rib_studys_geometry() {
             num(key)
         );
     }
-    assert_eq!(b["rollers"].as_integer().unwrap(), case.rollers.count as i64);
+    assert_eq!(
+        b["rollers"].as_integer().unwrap(),
+        case.rollers.count as i64
+    );
     let force = file["load"]["force_n"].as_array().unwrap();
     let f: Vec<f64> = force.iter().map(|v| v.as_float().unwrap()).collect();
     assert_eq!(f, [0.0, 0.0, case.load.axial_n]);
