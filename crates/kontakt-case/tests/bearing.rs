@@ -24,10 +24,11 @@ fn example(name: &str) -> String {
     std::fs::read_to_string(examples().join(name)).unwrap()
 }
 
-const EXAMPLES: [&str; 4] = [
+const EXAMPLES: [&str; 5] = [
     "bearing_nu_crb.toml",
     "bearing_32008x.toml",
     "bearing_32216.toml",
+    "bearing_rib_study_60mm.toml",
     "bearing_81107_thrust.toml",
 ];
 
