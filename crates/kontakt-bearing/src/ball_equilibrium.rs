@@ -292,8 +292,15 @@ impl BallBearingSolver {
             iterations,
             residual,
             mut note,
+            f,
+            k,
+            buffers_at_u,
         } = newton(self, free, target, u, f_ref, r, tolerance, max_iterations);
-        let (f, k, _) = self.evaluate(&u);
+        // the per-element buffers hold the last evaluation: at u unless a line search
+        // failed (Newton's last trial was elsewhere), the only case evaluated again
+        if !buffers_at_u {
+            self.evaluate(&u);
+        }
         let mut qmax: f64 = 0.0;
         let mut pmax = [0.0f64; 2];
         let mut over_shoulder = false;

@@ -479,9 +479,15 @@ impl RollerBearingSolver {
             iterations,
             residual: res,
             mut note,
+            f,
+            k,
+            buffers_at_u,
         } = newton(self, free, target, u, f_ref, r, tolerance, max_iterations);
-        // evaluate once more at the final u so that the buffers match the solution
-        let (f, k, _) = self.evaluate(&u);
+        // the per-element buffers hold the last evaluation: at u unless a line search
+        // failed (Newton's last trial was elsewhere), the only case evaluated again
+        if !buffers_at_u {
+            self.evaluate(&u);
+        }
         let ns = self.x.len();
         let mut qmax: f64 = 0.0;
         for (j, fr) in self.frames.iter().enumerate() {

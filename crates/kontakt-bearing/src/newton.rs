@@ -31,6 +31,12 @@ pub(crate) struct Outcome {
     pub iterations: usize,
     pub residual: f64,
     pub note: Option<&'static str>,
+    /// The load carried at `u` and its stiffness.
+    pub f: Vector5<f64>,
+    pub k: Matrix5<f64>,
+    /// Whether the model's last evaluation was at `u` (its per-element buffers describe the
+    /// solution); false only after a failed line search, whose last trial was elsewhere.
+    pub buffers_at_u: bool,
 }
 
 /// The largest residual of a free component relative to the load scale: forces to
@@ -90,6 +96,7 @@ pub(crate) fn newton<M: ConvexRing>(
     }
     let (d_ref, scale) = model.reference(f_ref);
     let probe = *model.probe();
+    let mut buffers_at_u = true;
     while termination == Termination::MaxIterations && iterations < max_iterations {
         if res <= tolerance {
             termination = Termination::Converged;
@@ -159,6 +166,7 @@ pub(crate) fn newton<M: ConvexRing>(
             t *= 0.5;
         }
         if !accepted {
+            buffers_at_u = false;
             termination = if res <= 1e3 * tolerance {
                 Termination::Stagnated
             } else {
@@ -189,6 +197,9 @@ pub(crate) fn newton<M: ConvexRing>(
         iterations,
         residual: res,
         note,
+        f,
+        k,
+        buffers_at_u,
     }
 }
 
