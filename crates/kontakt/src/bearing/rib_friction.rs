@@ -625,8 +625,12 @@ impl RibFrictionModel {
 
     /// [`RibFrictionModel::friction_on`] with the bearing totals (`bearing_power`,
     /// `bearing_torque`, `ring_axis_moment`) of `z` rollers each carrying `loads`: the
-    /// roller count for a bearing under pure axial load, 1 for one roller's share.
-    fn friction_share<D>(
+    /// roller count for a bearing under pure axial load, 1 for one roller's share (as
+    /// [`RibFrictionModel::evaluate_rollers`] gives every roller). Allocates nothing.
+    ///
+    /// # Errors
+    /// Those of [`RibFrictionModel::friction_on`].
+    pub fn friction_share<D>(
         &self,
         model: PressureModel,
         field: &NormalSolution<D>,
