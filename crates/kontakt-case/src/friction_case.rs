@@ -718,16 +718,21 @@ pub struct FrictionBearing {
     pub roller_diameter_mm: f64,
     /// Cup angle \[deg\].
     pub cup_angle_deg: f64,
+    /// Pure axial load: every roller's cup load is `F_a / (Z sin α)`, the cups' axial
+    /// balance by symmetry (the equilibrium's solution, to 1e-10; no solve, so the rib
+    /// loads do not depend on the rollers' stiffness law). The fields below are then
+    /// absent.
+    pub closed_form: bool,
     /// Inner-ring displacement `(δx, δy, δz)` \[mm\].
-    pub displacement_mm: [f64; 3],
+    pub displacement_mm: Option<[f64; 3]>,
     /// Inner-ring tilt `(θx, θy)` \[rad\] (0 where held).
-    pub tilt_rad: [f64; 2],
+    pub tilt_rad: Option<[f64; 2]>,
     /// The moments `(Mx, My)` the rollers carry \[N·mm\]: the applied one where the tilt
     /// is free, the shaft's reaction where it is held.
-    pub moment_nmm: [f64; 2],
+    pub moment_nmm: Option<[f64; 2]>,
     /// The load-zone parameter ε (absent without radial displacement).
     pub load_zone: Option<f64>,
-    /// Newton iterations of the equilibrium.
+    /// Newton iterations of the equilibrium (0 in closed form).
     pub iterations: usize,
 }
 
@@ -762,6 +767,35 @@ fn bearing_loads(
         bearing.roller_diameter_mm,
         bearing.contact_angle_rad.to_degrees(),
     );
+    bearing.validate().map_err(|e| {
+        e.map_field(|f| match f {
+            "rollers" => "rollers.count".to_string(),
+            other => format!("rollers ({other})"),
+        })
+    })?;
+    let z = bearing.rollers;
+    if l.radial_n == 0.0 && l.moment_nmm.is_none() {
+        let q = l.axial_n / (z as f64 * bearing.contact_angle_rad.sin());
+        let cups = (0..z)
+            .map(|j| RollerCup {
+                azimuth: bearing.first_roller_azimuth_rad
+                    + 2.0 * std::f64::consts::PI * j as f64 / z as f64,
+                outer_raceway: q,
+            })
+            .collect();
+        let b = FrictionBearing {
+            pitch_diameter_mm: summary.0,
+            roller_diameter_mm: summary.1,
+            cup_angle_deg: summary.2,
+            closed_form: true,
+            displacement_mm: None,
+            tilt_rad: None,
+            moment_nmm: None,
+            load_zone: None,
+            iterations: 0,
+        };
+        return Ok((cups, b, Vec::new()));
+    }
     let mut solver = RollerBearingSolver::new(bearing).map_err(|e| {
         e.map_field(|f| match f {
             "rollers" => "rollers.count".to_string(),
@@ -814,9 +848,10 @@ fn bearing_loads(
             pitch_diameter_mm: summary.0,
             roller_diameter_mm: summary.1,
             cup_angle_deg: summary.2,
-            displacement_mm: [u[0], u[1], u[2]],
-            tilt_rad: [u[3], u[4]],
-            moment_nmm: [sol.load[3], sol.load[4]],
+            closed_form: false,
+            displacement_mm: Some([u[0], u[1], u[2]]),
+            tilt_rad: Some([u[3], u[4]]),
+            moment_nmm: Some([sol.load[3], sol.load[4]]),
             load_zone: sol.load_zone,
             iterations: sol.status.iterations,
         },
