@@ -51,8 +51,6 @@ use kontakt::bearing::{
     BearingRibFriction, Operating, PressureModel, RibFriction, RibFrictionModel, RibLubrication,
     RollerCup, RollerRib, RollerSet,
 };
-use kontakt_bearing::equilibrium::{Dof, RingLoad, RollerBearingSolver};
-use kontakt_bearing::geometry::RollerBearing;
 use kontakt::field::NormalSolution;
 use kontakt::friction::{
     FluidShear, FrictionLaw, LoadSharing, power_density as power_density_into,
@@ -61,6 +59,8 @@ use kontakt::geometry::VelocityField;
 use kontakt::hertz::{HertzPointContact, PointGeometry};
 use kontakt::lubrication::{FilmFormula, Lubricant};
 use kontakt::{Error, Result};
+use kontakt_bearing::equilibrium::{Dof, RingLoad, RollerBearingSolver};
+use kontakt_bearing::geometry::RollerBearing;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeSet;
 
@@ -753,7 +753,11 @@ fn bearing_loads(
     if let Some(m) = l.moment_nmm
         && !m.is_finite()
     {
-        return Err(Error::invalid("load.moment_nmm", m, "a finite moment in N·mm"));
+        return Err(Error::invalid(
+            "load.moment_nmm",
+            m,
+            "a finite moment in N·mm",
+        ));
     }
     let bearing = RollerBearing::of_roller_rib(pair, &case.rollers).map_err(|e| {
         e.map_field(|f| match f {

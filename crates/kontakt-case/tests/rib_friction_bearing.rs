@@ -149,12 +149,15 @@ fn the_friction_case_under_axial_load_reports_todays_numbers() {
 
 /// The force of roller `j` (loads `q`) on the inner ring, `−(Q_i n_i + Q_f d)` turned to
 /// its azimuth, in the rib study's frame (x radial at azimuth 0, z its axial direction).
-fn on_inner_ring(k: &TaperedKinematics, d: &Vector3<f64>, psi: f64, qi: f64, qf: f64) -> Vector3<f64> {
+fn on_inner_ring(
+    k: &TaperedKinematics,
+    d: &Vector3<f64>,
+    psi: f64,
+    qi: f64,
+    qf: f64,
+) -> Vector3<f64> {
     let ai = k.inner_raceway_angle;
-    let (x, z) = (
-        -(qi * ai.cos() + qf * d.x),
-        -(-qi * ai.sin() + qf * d.z),
-    );
+    let (x, z) = (-(qi * ai.cos() + qf * d.x), -(-qi * ai.sin() + qf * d.z));
     Vector3::new(x * psi.cos(), x * psi.sin(), z)
 }
 
@@ -284,7 +287,9 @@ fn leaving_the_cone_is_continuous() {
     let at = roller_loads_on_cup(&k, &n, off.outer_raceway, fc).unwrap();
     assert!(at.inner_raceway.abs() < 1e-12 * off.outer_raceway);
     assert!(rel(at.rib, off.rib) < 1e-12, "{} {}", at.rib, off.rib);
-    let e = roller_loads_on_cup(&k, &n, -1.0, fc).unwrap_err().to_string();
+    let e = roller_loads_on_cup(&k, &n, -1.0, fc)
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("cup_load"), "{e}");
 }
 
@@ -316,4 +321,34 @@ fn under_combined_load_the_total_is_not_z_times_one_roller() {
     let z = case.rollers.count as f64;
     eprintln!("sum {:.4} W, Z x most loaded {:.4} W", b.power, z * most);
     assert!(b.power < 0.8 * z * most);
+}
+
+/// The tilt held or free: applying as `moment_nmm` the moment the shaft takes with the
+/// tilts held gives zero tilt and the same rib loads (1e-6), so the moment reaches the
+/// rollers through the bearing model; a different moment changes them.
+#[test]
+fn an_applied_moment_equal_to_the_held_reaction_changes_nothing() {
+    let mut case = example();
+    case.load.radial_n = 8000.0;
+    case.models = vec![PressureModel::Hertz];
+    case.speed = toml::from_str("rpm = [900.0]").unwrap();
+    let held = run_friction_case(&case).unwrap().report;
+    let m = held.bearing.moment_nmm.unwrap()[1];
+    assert!(m.abs() > 1e4, "{m}");
+    case.load.moment_nmm = Some(m);
+    let free = run_friction_case(&case).unwrap().report;
+    let tilt = free.bearing.tilt_rad.unwrap()[1];
+    assert!(tilt.abs() < 1e-9, "{tilt}");
+    let worst = held
+        .roller_table
+        .iter()
+        .zip(&free.roller_table)
+        .map(|(a, b)| rel(b.roller_rib_load_n, a.roller_rib_load_n))
+        .fold(0.0, f64::max);
+    eprintln!("moment {m:.1} N·mm applied: tilt {tilt:.2e} rad, rib loads within {worst:.2e}");
+    assert!(worst < 1e-6, "{worst:e}");
+    case.load.moment_nmm = Some(0.0);
+    let zero = run_friction_case(&case).unwrap().report;
+    assert!(zero.bearing.tilt_rad.unwrap()[1].abs() > 1e-4);
+    assert!(rel(zero.rows[0].rib_load_n, held.rows[0].rib_load_n) > 0.1);
 }

@@ -309,7 +309,10 @@ pub fn roller_loads(
 /// # Errors
 /// [`Error::InvalidInput`] (field `rib_normal`) unless finite, mostly in the section plane
 /// and pointing back along the roller axis.
-fn rib_direction(kinematics: &TaperedKinematics, rib_normal: &Vector3<f64>) -> Result<Vector3<f64>> {
+fn rib_direction(
+    kinematics: &TaperedKinematics,
+    rib_normal: &Vector3<f64>,
+) -> Result<Vector3<f64>> {
     let d = Vector3::new(rib_normal.x, 0.0, rib_normal.z);
     let n = d.norm();
     let e_r = kinematics.directions(0.0).roller_axis;

@@ -103,7 +103,9 @@ impl RollerRibFriction {
 
     /// Magnitude of the rib friction force on the roller \[N\] (0 without rib load).
     pub fn friction_force(&self) -> f64 {
-        self.friction.as_ref().map_or(0.0, |f| f.contact.force.norm())
+        self.friction
+            .as_ref()
+            .map_or(0.0, |f| f.contact.force.norm())
     }
 }
 
