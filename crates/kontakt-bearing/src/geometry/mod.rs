@@ -16,6 +16,7 @@
 //! design from the boundary dimensions, materials other than steel.
 
 mod ball;
+pub mod design;
 mod rib_study;
 
 pub use ball::{BallBearing, BallBearingKind};

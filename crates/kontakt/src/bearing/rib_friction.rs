@@ -37,6 +37,11 @@
 //! which Aihara's (1987) `μ e cos β F_a` matches to first order: the two differ by the factor
 //! `cos² β` (relative `sin² β`, 0.27 % at β = 3°). docs/friction.md §5 has the derivation.
 //!
+//! Under any other load (radial load, moment) every roller has its own cup load from a
+//! bearing model; [`RibFrictionModel::evaluate_rollers`] and
+//! [`RibFrictionModel::sweep_rollers`] take each roller's loads and sum the rollers'
+//! powers (module `rollers`, `docs/bearing-model.md` §9).
+//!
 //! Units: mm, N, MPa, rad/s (speeds), °C, kg/m³ (roller density); torque N·mm, power W.
 //!
 //! ```
