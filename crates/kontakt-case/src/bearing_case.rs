@@ -52,7 +52,7 @@
 //! methods; a solve that stagnates at the round-off floor (residual at most 1e-8 of the
 //! load, 1000 times the tolerance) is reported with a warning.
 
-use crate::common::{MaterialSpec, SCHEMA_VERSION, in_degrees, material, parse_toml};
+use crate::common::{MaterialSpec, SCHEMA_VERSION, in_degrees, material};
 use crate::validity::{ContactSize, Size, checked, checked_report};
 use kontakt::hertz::validity::point_size;
 use kontakt::solve::{SolveStatus, Termination};
@@ -148,6 +148,10 @@ pub struct BallSpec {
     /// The rings' material (`e_mpa`, `nu`), default steel (210 000 MPa, 0.3).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub ring_material: Option<MaterialSpec>,
+    /// The boundary dimensions the missing keys above were generated from
+    /// ([`crate::bearing_design`]); absent: every key given.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub boundary: Option<crate::bearing_design::BoundarySpec>,
 }
 
 /// The internal geometry of a roller bearing. Lengths in mm, angles in degrees.
@@ -192,6 +196,10 @@ pub struct RollerSpec {
     /// The outer raceway's profile; default straight.
     #[serde(default = "ProfileSpec::straight")]
     pub outer_profile: ProfileSpec,
+    /// The boundary dimensions the missing keys above were generated from
+    /// ([`crate::bearing_design`]); absent: every key given.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub boundary: Option<crate::bearing_design::BoundarySpec>,
 }
 
 fn default_slices() -> usize {
@@ -659,7 +667,7 @@ impl BearingCase {
     /// [`Error::CaseFile`] (line, key path, what the schema takes) for malformed TOML,
     /// unknown keys or wrong types.
     pub fn from_toml_str(text: &str) -> Result<Self> {
-        parse_toml(text)
+        crate::bearing_design::parse_bearing_case(text)
     }
 }
 

@@ -26,6 +26,7 @@
 //! `docs/case-schema.md` and shown by the files in `examples/`.
 
 pub mod bearing_case;
+pub mod bearing_design;
 pub mod bearing_model;
 pub mod bem_case;
 pub mod case;
