@@ -58,9 +58,10 @@ pub(crate) fn parse_bearing_case(text: &str) -> Result<BearingCase> {
 /// The case table with the internal keys a `[bearing] boundary` generates, where absent.
 ///
 /// # Errors
-/// [`Error::InvalidInput`] naming `bearing.boundary` (not a table of numbers d_mm, D_mm,
-/// B_mm, e) or its key (`bearing.boundary.D_mm`: out of range, `bearing.boundary.e`:
-/// missing for a tapered bearing).
+/// [`Error::InvalidInput`] naming the boundary's key (`bearing.boundary.D_mm`: out of
+/// range, `bearing.boundary.e`: missing for a tapered bearing), or `bearing.boundary` when
+/// the design leaves no room for 3 elements. A boundary that is not a table of numbers is
+/// left unexpanded: the case reader then names the key.
 pub(crate) fn expanded(mut table: toml::Table) -> Result<toml::Table> {
     let Some(bearing) = table.get_mut("bearing").and_then(toml::Value::as_table_mut) else {
         return Ok(table);
@@ -68,13 +69,36 @@ pub(crate) fn expanded(mut table: toml::Table) -> Result<toml::Table> {
     let Some(raw) = bearing.get("boundary") else {
         return Ok(table);
     };
-    let spec: BoundarySpec = raw.clone().try_into().map_err(|e: toml::de::Error| {
-        Error::invalid(
-            "bearing.boundary",
-            e.message().replace('\n', " "),
-            "a table { d_mm, D_mm, B_mm } of numbers in mm (and e for a tapered bearing)",
-        )
-    })?;
+    // Only numbers are read here; a boundary the schema refuses (a key missing, not a
+    // number, or unknown) is left to the case reader, whose message names the key.
+    let number = |v: Option<&toml::Value>| match v {
+        Some(toml::Value::Float(x)) => Some(*x),
+        Some(toml::Value::Integer(x)) => Some(*x as f64),
+        _ => None,
+    };
+    let Some(raw) = raw.as_table() else {
+        return Ok(table);
+    };
+    let (Some(d), Some(outside), Some(width)) = (
+        number(raw.get("d_mm")),
+        number(raw.get("D_mm")),
+        number(raw.get("B_mm")),
+    ) else {
+        return Ok(table);
+    };
+    let e = match raw.get("e") {
+        None => None,
+        Some(v) => match number(Some(v)) {
+            Some(e) => Some(e),
+            None => return Ok(table),
+        },
+    };
+    let spec = BoundarySpec {
+        d_mm: d,
+        outside_mm: outside,
+        width_mm: width,
+        e,
+    };
     let kind = match bearing.get("type").and_then(toml::Value::as_str) {
         Some("tapered") => DesignKind::Tapered,
         Some("cylindrical") => DesignKind::Cylindrical,

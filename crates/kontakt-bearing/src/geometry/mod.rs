@@ -12,8 +12,8 @@
 //!
 //! Not yet here (later steps of issue 28): the rib geometry and roller end face (today in
 //! `kontakt::bearing::roller_rib`), the NU/NJ/NUP/N rib arrangement of cylindrical roller
-//! bearings, paired and double-row bearings, the generator of an internal
-//! design from the boundary dimensions, materials other than steel.
+//! bearings, paired and double-row bearings, materials other than steel. A
+//! representative internal design from the boundary dimensions: [`design`].
 
 mod ball;
 pub mod design;

@@ -120,12 +120,20 @@ pub fn print_report(out: &mut impl Write, r: &FrictionReport, json: bool) -> Res
             num(row.bearing_drag_torque_nmm)
         )?;
     }
-    writeln!(
-        out,
-        "\n  M: the rib friction's share of the bearing's drag torque, Σ_j P_j/|ω_i − ω_o| over \
-         the rollers (bearing_drag_torque_nmm; docs/friction.md §5.2); Q_f, p, mu, P_1: the \
-         most loaded roller"
-    )?;
+    if r.bearing.closed_form {
+        writeln!(
+            out,
+            "\n  M: the rib friction's share of the bearing's drag torque, Z·P_1/|ω_i − ω_o| \
+             (bearing_drag_torque_nmm; docs/friction.md §5.2)"
+        )?;
+    } else {
+        writeln!(
+            out,
+            "\n  M: the rib friction's share of the bearing's drag torque, Σ_j P_j/|ω_i − ω_o| \
+             over the rollers (bearing_drag_torque_nmm; docs/friction.md §5.2); Q_f, p, mu, \
+             P_1: the most loaded roller"
+        )?;
+    }
     print_rollers(out, r)?;
     if !r.model_difference.is_empty() {
         writeln!(out, "\n  rib torque relative to Hertz:")?;
