@@ -11,9 +11,8 @@
 //! thrust bearing. `e` (the catalogue factor, ISO 281 `e = 1.5 tan α`) is required for a
 //! tapered bearing unless `cup_angle_deg` is given.
 
-use crate::bearing_case::BearingCase;
 use crate::common::{parse_table, parse_toml};
-use kontakt::{Error, Result};
+use kontakt::Result;
 use kontakt_bearing::geometry::design::{Boundary, DesignKind, DesignRules, Given, design};
 use serde::{Deserialize, Serialize};
 
@@ -42,11 +41,14 @@ fn has_boundary(table: &toml::Table) -> bool {
         .is_some_and(|b| b.contains_key("boundary"))
 }
 
-/// Read a bearing case from its text, generating the internal keys of a `boundary`.
+/// Read a bearing case (`T`: `BearingCase`) from its text, generating the internal keys of
+/// a `boundary`.
 ///
 /// # Errors
 /// Those of the case reader; those of [`expanded`].
-pub(crate) fn parse_bearing_case(text: &str) -> Result<BearingCase> {
+pub(crate) fn parse_bearing_case<T: serde::de::DeserializeOwned + Serialize>(
+    text: &str,
+) -> Result<T> {
     let table: toml::Table = parse_toml(text)?;
     if has_boundary(&table) {
         parse_table(expanded(table)?)
@@ -58,7 +60,7 @@ pub(crate) fn parse_bearing_case(text: &str) -> Result<BearingCase> {
 /// The case table with the internal keys a `[bearing] boundary` generates, where absent.
 ///
 /// # Errors
-/// [`Error::InvalidInput`] naming the boundary's key (`bearing.boundary.D_mm`: out of
+/// `Error::InvalidInput` naming the boundary's key (`bearing.boundary.D_mm`: out of
 /// range, `bearing.boundary.e`: missing for a tapered bearing), or `bearing.boundary` when
 /// the design leaves no room for 3 elements. A boundary that is not a table of numbers is
 /// left unexpanded: the case reader then names the key.
