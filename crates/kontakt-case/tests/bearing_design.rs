@@ -14,6 +14,24 @@
 use kontakt_case::{Case, Outcome};
 use std::path::PathBuf;
 
+/// The keys the rules generate for a tapered bearing.
+const TAPERED: [&str; 6] = [
+    "pitch_diameter_mm",
+    "rollers",
+    "roller_diameter_mm",
+    "roller_length_mm",
+    "cup_angle_deg",
+    "cone_angle_deg",
+];
+
+/// The keys the rules generate for a cylindrical or thrust bearing.
+const ROLLER: [&str; 4] = [
+    "pitch_diameter_mm",
+    "rollers",
+    "roller_diameter_mm",
+    "roller_length_mm",
+];
+
 fn examples() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples")
 }
@@ -72,22 +90,12 @@ fn the_representative_examples_come_back_from_their_boundary_dimensions() {
         ),
         (
             "bearing_nu_crb.toml",
-            &[
-                "pitch_diameter_mm",
-                "rollers",
-                "roller_diameter_mm",
-                "roller_length_mm",
-            ][..],
+            &ROLLER[..],
             "{ d_mm = 40.0, D_mm = 80.0, B_mm = 18.0 }",
         ),
         (
             "bearing_81107_thrust.toml",
-            &[
-                "pitch_diameter_mm",
-                "rollers",
-                "roller_diameter_mm",
-                "roller_length_mm",
-            ][..],
+            &ROLLER[..],
             "{ d_mm = 35.0, D_mm = 52.0, B_mm = 12.0 }",
         ),
     ] {
@@ -110,14 +118,7 @@ fn published_trbs_from_boundary_solve_and_given_keys_win() {
     let base = example("bearing_32008x.toml");
     let generated = from_boundary(
         "bearing_32008x.toml",
-        &[
-            "pitch_diameter_mm",
-            "rollers",
-            "roller_diameter_mm",
-            "roller_length_mm",
-            "cup_angle_deg",
-            "cone_angle_deg",
-        ],
+        &TAPERED,
         "{ d_mm = 40.0, D_mm = 68.0, B_mm = 19.0, e = 0.38 }",
     );
     let r = report(&generated);
@@ -149,14 +150,7 @@ fn published_trbs_from_boundary_solve_and_given_keys_win() {
     assert_eq!(report(&both), report(&base));
     let r = report(&from_boundary(
         "bearing_32216.toml",
-        &[
-            "pitch_diameter_mm",
-            "rollers",
-            "roller_diameter_mm",
-            "roller_length_mm",
-            "cup_angle_deg",
-            "cone_angle_deg",
-        ],
+        &TAPERED,
         "{ d_mm = 80.0, D_mm = 140.0, B_mm = 33.0, e = 0.43 }",
     ));
     assert!(r["solver"]["converged"].as_bool().unwrap());
@@ -167,12 +161,7 @@ fn published_trbs_from_boundary_solve_and_given_keys_win() {
 fn a_table_with_a_boundary_reads_as_the_text() {
     let text = from_boundary(
         "bearing_nu_crb.toml",
-        &[
-            "pitch_diameter_mm",
-            "rollers",
-            "roller_diameter_mm",
-            "roller_length_mm",
-        ],
+        &ROLLER[..],
         "{ d_mm = 40.0, D_mm = 80.0, B_mm = 18.0 }",
     );
     let table: toml::Table = toml::from_str(&text).unwrap();
@@ -185,14 +174,7 @@ fn a_table_with_a_boundary_reads_as_the_text() {
 fn bad_boundaries_are_one_line_naming_the_key() {
     let base = from_boundary(
         "bearing_32008x.toml",
-        &[
-            "pitch_diameter_mm",
-            "rollers",
-            "roller_diameter_mm",
-            "roller_length_mm",
-            "cup_angle_deg",
-            "cone_angle_deg",
-        ],
+        &TAPERED,
         "{ d_mm = 40.0, D_mm = 68.0, B_mm = 19.0, e = 0.38 }",
     );
     for (from, to, key) in [

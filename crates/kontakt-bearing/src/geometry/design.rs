@@ -429,24 +429,23 @@ mod tests {
         (a - b) / b
     }
 
-    /// 32008 X (40 × 68 × 19, e = 0.38) against Liu (2022): d_m 54 (the example's own
-    /// assumption; exact), Z 23, D_we 6.4885 (mean of 6.131 and 6.846), L 13.66, α 14.17°,
-    /// α_i 11.17°.
-    #[test]
-    fn tapered_32008x_against_liu_2022() {
-        let g = generated(DesignKind::Tapered, 40.0, 68.0, 19.0, Some(0.38));
-        let (dm, dw, l, z) = (
-            rel(g.pitch_diameter_mm, 54.0),
-            rel(g.element_diameter_mm, 6.4885),
-            rel(g.element_length_mm, 13.66),
-            rel(g.elements as f64, 23.0),
+    /// A published TRB `(name, d, D, B, e)` against its internal data `(d_m, Z, D_we, L,
+    /// α°, α_i°)`: within 2 % (d_m), 20 % (Z), 12 % (D_we), 5 % (L), 0.1° (α), 0.5° (α_i).
+    fn check_trb(name: &str, boundary: [f64; 4], data: (f64, f64, f64, f64, f64, f64)) {
+        let [d, outside, b, e] = boundary;
+        let g = generated(DesignKind::Tapered, d, outside, b, Some(e));
+        let (dm, z, dw, l) = (
+            rel(g.pitch_diameter_mm, data.0),
+            rel(g.elements as f64, data.1),
+            rel(g.element_diameter_mm, data.2),
+            rel(g.element_length_mm, data.3),
         );
         let (a, ai) = (
-            g.contact_angle_rad.to_degrees() - 14.17,
-            g.cone_angle_rad.to_degrees() - 11.17,
+            g.contact_angle_rad.to_degrees() - data.4,
+            g.cone_angle_rad.to_degrees() - data.5,
         );
         eprintln!(
-            "32008 X: d_m {dm:+.3}, D_we {dw:+.3}, L {l:+.3}, Z {} ({z:+.3}), alpha {a:+.3} deg, alpha_i {ai:+.3} deg",
+            "{name}: d_m {dm:+.3}, D_we {dw:+.3}, L {l:+.3}, Z {} ({z:+.3}), alpha {a:+.3} deg, alpha_i {ai:+.3} deg",
             g.elements
         );
         assert!(dm.abs() < 0.02 && dw.abs() < 0.12 && l.abs() < 0.05 && z.abs() < 0.20);
@@ -454,29 +453,28 @@ mod tests {
         g.roller_bearing().unwrap().validate().unwrap();
     }
 
+    /// 32008 X (40 × 68 × 19, e = 0.38) against Liu (2022): d_m 54 (the example's own
+    /// assumption; exact), Z 23, D_we 6.4885 (mean of 6.131 and 6.846), L 13.66, α 14.17°,
+    /// α_i 11.17°.
+    #[test]
+    fn tapered_32008x_against_liu_2022() {
+        check_trb(
+            "32008 X",
+            [40.0, 68.0, 19.0, 0.38],
+            (54.0, 23.0, 6.4885, 13.66, 14.17, 11.17),
+        );
+    }
+
     /// 32216 (80 × 140, cone width 33, e = 0.43) against Wingertszahn et al. (2023): d_m
     /// 108.5, Z 16, D_we 17, roller length 22.7; cup and cone angle against the example's
     /// (derived from e and the common apex: 16.0°, 11.7°).
     #[test]
     fn tapered_32216_against_wingertszahn_2023() {
-        let g = generated(DesignKind::Tapered, 80.0, 140.0, 33.0, Some(0.43));
-        let (dm, dw, l, z) = (
-            rel(g.pitch_diameter_mm, 108.5),
-            rel(g.element_diameter_mm, 17.0),
-            rel(g.element_length_mm, 22.7),
-            rel(g.elements as f64, 16.0),
+        check_trb(
+            "32216",
+            [80.0, 140.0, 33.0, 0.43],
+            (108.5, 16.0, 17.0, 22.7, 16.0, 11.7),
         );
-        let (a, ai) = (
-            g.contact_angle_rad.to_degrees() - 16.0,
-            g.cone_angle_rad.to_degrees() - 11.7,
-        );
-        eprintln!(
-            "32216: d_m {dm:+.3}, D_we {dw:+.3}, L {l:+.3}, Z {} ({z:+.3}), alpha {a:+.3} deg, alpha_i {ai:+.3} deg",
-            g.elements
-        );
-        assert!(dm.abs() < 0.02 && dw.abs() < 0.12 && l.abs() < 0.05 && z.abs() < 0.20);
-        assert!(a.abs() < 0.1 && ai.abs() < 0.5);
-        g.roller_bearing().unwrap().validate().unwrap();
     }
 
     /// The representative examples (6205, 7205 B, NU 208, 81107) come out as written
