@@ -453,28 +453,27 @@ mod tests {
         g.roller_bearing().unwrap().validate().unwrap();
     }
 
-    /// 32008 X (40 × 68 × 19, e = 0.38) against Liu (2022): d_m 54 (the example's own
-    /// assumption; exact), Z 23, D_we 6.4885 (mean of 6.131 and 6.846), L 13.66, α 14.17°,
-    /// α_i 11.17°.
+    /// The published TRBs: 32008 X (40 × 68 × 19, e = 0.38) against Liu (2022): d_m 54
+    /// (the example's own assumption; exact), Z 23, D_we 6.4885 (mean of 6.131 and 6.846),
+    /// L 13.66, α 14.17°, α_i 11.17°; 32216 (80 × 140, cone width 33, e = 0.43) against
+    /// Wingertszahn et al. (2023): d_m 108.5, Z 16, D_we 17, roller length 22.7, cup and
+    /// cone angle against the example's (derived from e and the common apex: 16.0°, 11.7°).
     #[test]
-    fn tapered_32008x_against_liu_2022() {
-        check_trb(
-            "32008 X",
-            [40.0, 68.0, 19.0, 0.38],
-            (54.0, 23.0, 6.4885, 13.66, 14.17, 11.17),
-        );
-    }
-
-    /// 32216 (80 × 140, cone width 33, e = 0.43) against Wingertszahn et al. (2023): d_m
-    /// 108.5, Z 16, D_we 17, roller length 22.7; cup and cone angle against the example's
-    /// (derived from e and the common apex: 16.0°, 11.7°).
-    #[test]
-    fn tapered_32216_against_wingertszahn_2023() {
-        check_trb(
-            "32216",
-            [80.0, 140.0, 33.0, 0.43],
-            (108.5, 16.0, 17.0, 22.7, 16.0, 11.7),
-        );
+    fn published_trbs_within_the_stated_tolerances() {
+        for (name, boundary, data) in [
+            (
+                "32008 X (Liu 2022)",
+                [40.0, 68.0, 19.0, 0.38],
+                (54.0, 23.0, 6.4885, 13.66, 14.17, 11.17),
+            ),
+            (
+                "32216 (Wingertszahn et al. 2023)",
+                [80.0, 140.0, 33.0, 0.43],
+                (108.5, 16.0, 17.0, 22.7, 16.0, 11.7),
+            ),
+        ] {
+            check_trb(name, boundary, data);
+        }
     }
 
     /// The representative examples (6205, 7205 B, NU 208, 81107) come out as written
