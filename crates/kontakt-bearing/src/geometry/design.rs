@@ -490,28 +490,24 @@ mod tests {
         assert_eq!((g.pitch_diameter_mm, g.elements), (38.5, 12));
         assert!((g.contact_angle_rad.to_degrees() - 40.0).abs() < 1e-12);
         g.ball_bearing().unwrap().validate().unwrap();
-        let g = generated(DesignKind::Cylindrical, 40.0, 80.0, 18.0, None);
-        assert_eq!(
+        for (kind, [d, outside, b], expected) in [
             (
+                DesignKind::Cylindrical,
+                [40.0, 80.0, 18.0],
+                (60.0, 14, 11.0, 11.0),
+            ),
+            (DesignKind::Thrust, [35.0, 52.0, 12.0], (43.5, 18, 5.0, 5.5)),
+        ] {
+            let g = generated(kind, d, outside, b, None);
+            let got = (
                 g.pitch_diameter_mm,
                 g.elements,
                 g.element_diameter_mm,
-                g.element_length_mm
-            ),
-            (60.0, 14, 11.0, 11.0)
-        );
-        g.roller_bearing().unwrap().validate().unwrap();
-        let g = generated(DesignKind::Thrust, 35.0, 52.0, 12.0, None);
-        assert_eq!(
-            (
-                g.pitch_diameter_mm,
-                g.elements,
-                g.element_diameter_mm,
-                g.element_length_mm
-            ),
-            (43.5, 18, 5.0, 5.5)
-        );
-        g.roller_bearing().unwrap().validate().unwrap();
+                g.element_length_mm,
+            );
+            assert_eq!(got, expected, "{kind:?}");
+            g.roller_bearing().unwrap().validate().unwrap();
+        }
     }
 
     /// A given value replaces the generated one, and what depends on it follows: a given
