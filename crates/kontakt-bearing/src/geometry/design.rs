@@ -245,6 +245,10 @@ pub fn design(
             ))
         }
     };
+    // a given count, or the generated one
+    let elements = |n: f64| given.elements.map_or_else(|| count(n), Ok);
+    // a given roller size, or the generated one on the rollers' grading
+    let graded = |given: Option<f64>, x: f64| given.unwrap_or(round_to(x, rules.roller_grading_mm));
     let out = match kind {
         DesignKind::Tapered => {
             let alpha = match (given.contact_angle_rad, boundary.e) {
@@ -263,10 +267,7 @@ pub fn design(
             let dw = given
                 .element_diameter_mm
                 .unwrap_or(rules.tapered_diameter_ratio * section);
-            let z = match given.elements {
-                Some(z) => z,
-                None => count(PI * dm / (rules.tapered_spacing * dw))?,
-            };
+            let z = elements(PI * dm / (rules.tapered_spacing * dw))?;
             Design {
                 kind,
                 pitch_diameter_mm: dm,
@@ -283,43 +284,34 @@ pub fn design(
             }
         }
         DesignKind::Cylindrical => {
-            let dw = given.element_diameter_mm.unwrap_or(round_to(
+            let dw = graded(
+                given.element_diameter_mm,
                 rules.cylindrical_diameter_ratio * section,
-                rules.roller_grading_mm,
-            ));
+            );
             Design {
                 kind,
                 pitch_diameter_mm: dm,
-                elements: match given.elements {
-                    Some(z) => z,
-                    None => count(PI * dm / (rules.cylindrical_spacing * dw))?,
-                },
+                elements: elements(PI * dm / (rules.cylindrical_spacing * dw))?,
                 element_diameter_mm: dw,
-                element_length_mm: given.element_length_mm.unwrap_or(round_to(
+                element_length_mm: graded(
+                    given.element_length_mm,
                     rules.cylindrical_length_ratio * b,
-                    rules.roller_grading_mm,
-                )),
+                ),
                 contact_angle_rad: 0.0,
                 cone_angle_rad: 0.0,
                 osculations: [0.0; 2],
             }
         }
         DesignKind::Thrust => {
-            let l = given.element_length_mm.unwrap_or(round_to(
+            let l = graded(
+                given.element_length_mm,
                 rules.thrust_length_ratio * 0.5 * section,
-                rules.roller_grading_mm,
-            ));
-            let dw = given.element_diameter_mm.unwrap_or(round_to(
-                rules.thrust_diameter_ratio * b,
-                rules.roller_grading_mm,
-            ));
+            );
+            let dw = graded(given.element_diameter_mm, rules.thrust_diameter_ratio * b);
             Design {
                 kind,
                 pitch_diameter_mm: dm,
-                elements: match given.elements {
-                    Some(z) => z,
-                    None => count(PI * (dm - l) / (rules.thrust_spacing * dw))?,
-                },
+                elements: elements(PI * (dm - l) / (rules.thrust_spacing * dw))?,
                 element_diameter_mm: dw,
                 element_length_mm: l,
                 contact_angle_rad: 0.5 * PI,
