@@ -98,5 +98,8 @@ impl BearingModel {
     }
 }
 
+mod element;
+pub use element::{BearingElement, BearingElementOutput, BearingElementStatus};
+
 #[cfg(test)]
 mod tests;
