@@ -267,6 +267,11 @@ fn bad_input_names_the_argument() {
     tilt[4] = 0.5;
     let err = expect_err(&mut e, tilt, [0.0; 5], "displacement[4] = 0.5");
     assert!(err.contains("0.41236"), "{err}");
+    // finite but overflowing: a damping force beyond f64 is refused, never inf
+    e.set_damping(1e300).unwrap();
+    let err = expect_err(&mut e, u, [1e300, 0.0, 0.0, 0.0, 0.0], "velocity");
+    assert!(err.contains("overflows"), "{err}");
+    e.set_damping(0.0).unwrap();
     // the element still works, from the same warm start
     assert_eq!(e.evaluate(u, [0.0; 5]).unwrap(), ok);
     // a case that is no bearing case, and an invalid bearing

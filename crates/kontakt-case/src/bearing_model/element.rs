@@ -265,8 +265,11 @@ impl BearingElement {
         {
             return Err(Error::invalid(
                 "velocity",
-                "(a non-finite damping force)",
-                "a velocity whose damping force beta K v is finite",
+                format!("{v:?}"),
+                format!(
+                    "a velocity whose damping force beta K v is finite (beta = damping_s = {} s; the force overflows)",
+                    self.damping_s
+                ),
             ));
         }
         let loaded = max_load > 0.0;
