@@ -202,10 +202,10 @@ const char *kontakt_version(void);
 // `*out` is the new element (release it with [`kontakt_bearing_element_free`]); on failure
 // `*out` is set to null. The element starts undamped (β = 0).
 //
-// Returns [`crate::KONTAKT_OK`], [`crate::KONTAKT_INVALID_INPUT`] (a TOML error or a key
+// Returns `KONTAKT_OK`, `KONTAKT_INVALID_INPUT` (a TOML error or a key
 // out of range, named in the message: `bearing.roller_diameter_mm`),
-// [`crate::KONTAKT_FAILED`], [`crate::KONTAKT_NULL_OR_UTF8`] (`toml` or `out` null,
-// `toml` not UTF-8) or [`crate::KONTAKT_PANIC`].
+// `KONTAKT_FAILED`, `KONTAKT_NULL_OR_UTF8` (`toml` or `out` null,
+// `toml` not UTF-8) or `KONTAKT_PANIC`.
 //
 // # Safety
 // `toml` is null or a NUL-terminated string; `out` is null or writable.
@@ -213,7 +213,7 @@ int32_t kontakt_bearing_element_from_toml(const char *toml, struct KontaktBearin
 
 // Create a bearing element from a bearing case file (UTF-8 path). As
 // [`kontakt_bearing_element_from_toml`]; a file that cannot be read is
-// [`crate::KONTAKT_INVALID_INPUT`] with field `path`.
+// `KONTAKT_INVALID_INPUT` with field `path`.
 //
 // # Safety
 // `path` is null or a NUL-terminated string; `out` is null or writable.
@@ -222,9 +222,9 @@ int32_t kontakt_bearing_element_from_file(const char *path, struct KontaktBearin
 // Set the viscous damping of the element: the damping matrix is `damping_s` times the
 // stiffness (stiffness-proportional damping; β in s, finite, ≥ 0; default 0).
 //
-// Returns [`crate::KONTAKT_OK`], [`crate::KONTAKT_INVALID_INPUT`] (field `damping_s`,
-// negative or not finite: the element keeps its β), [`crate::KONTAKT_NULL_OR_UTF8`] or
-// [`crate::KONTAKT_PANIC`].
+// Returns `KONTAKT_OK`, `KONTAKT_INVALID_INPUT` (field `damping_s`,
+// negative or not finite: the element keeps its β), `KONTAKT_NULL_OR_UTF8` or
+// `KONTAKT_PANIC`.
 //
 // # Safety
 // `element` is null or an element from this API, not yet freed and not used by another
@@ -238,13 +238,13 @@ int32_t kontakt_bearing_element_set_damping(struct KontaktBearingElement *elemen
 // `*out` (left unchanged on failure). Warm-started from the element's previous call;
 // allocates nothing.
 //
-// Returns [`crate::KONTAKT_OK`] (also when every rolling element is lifted off: then
+// Returns `KONTAKT_OK` (also when every rolling element is lifted off: then
 // `status` is [`KONTAKT_BEARING_LIFTED_OFF`], force and stiffness zero),
-// [`crate::KONTAKT_INVALID_INPUT`] (field `displacement[i]` or `velocity[i]`: not finite,
+// `KONTAKT_INVALID_INPUT` (field `displacement[i]` or `velocity[i]`: not finite,
 // or a displacement beyond the model's validity — a translation above the rolling
 // element's diameter, or a tilt moving the ring by more than that at the pitch radius),
-// [`crate::KONTAKT_FAILED`] (the solver did not converge), [`crate::KONTAKT_NULL_OR_UTF8`]
-// or [`crate::KONTAKT_PANIC`].
+// `KONTAKT_FAILED` (the solver did not converge), `KONTAKT_NULL_OR_UTF8`
+// or `KONTAKT_PANIC`.
 //
 // # Safety
 // `element` is null or an element from this API, not yet freed and not used by another
@@ -256,7 +256,7 @@ int32_t kontakt_bearing_element_evaluate(struct KontaktBearingElement *element,
                                          struct KontaktBearingResult *out);
 
 // Forget the element's last equilibrium (the next evaluation starts from the closed
-// forms). Returns [`crate::KONTAKT_OK`] or [`crate::KONTAKT_NULL_OR_UTF8`].
+// forms). Returns `KONTAKT_OK` or `KONTAKT_NULL_OR_UTF8`.
 //
 // # Safety
 // `element` is null or an element from this API, not yet freed and not used by another

@@ -14,8 +14,8 @@
 //!   (s, default 0: no effect). No friction torque yet (`moment[2]` is 0).
 
 use crate::{
-    Failure, KONTAKT_MESSAGE_LEN, c_message, create, doubles, from_case_file, guard,
-    library_error, null, release, text,
+    Failure, KONTAKT_MESSAGE_LEN, c_message, create, doubles, from_case_file, guard, library_error,
+    null, release, text,
 };
 use kontakt_case::bearing_model::{BearingElement, BearingElementOutput, BearingElementStatus};
 use std::ffi::c_char;
@@ -137,7 +137,9 @@ pub unsafe extern "C" fn kontakt_bearing_element_from_file(
 /// # Safety
 /// `element` is null (refused) or from this API, alive and not used by another thread
 /// during the call.
-unsafe fn element<'a>(element: *mut KontaktBearingElement) -> Result<&'a mut BearingElement, Failure> {
+unsafe fn element<'a>(
+    element: *mut KontaktBearingElement,
+) -> Result<&'a mut BearingElement, Failure> {
     if element.is_null() {
         return Err(null("element"));
     }

@@ -48,11 +48,22 @@ fn bearing_element_evaluation_allocates_nothing() {
         let e = element(name);
         let v = [3.0, -1.0, 2.0, 0.05, -0.02];
         let loaded = KONTAKT_BEARING_LOADED;
-        assert_eq!(counted(e, u, [0.0; 5]), (KONTAKT_OK, loaded, 0), "{name} cold");
+        assert_eq!(
+            counted(e, u, [0.0; 5]),
+            (KONTAKT_OK, loaded, 0),
+            "{name} cold"
+        );
         let nearby = u.map(|x| 1.01 * x);
-        assert_eq!(counted(e, nearby, v), (KONTAKT_OK, loaded, 0), "{name} warm");
+        assert_eq!(
+            counted(e, nearby, v),
+            (KONTAKT_OK, loaded, 0),
+            "{name} warm"
+        );
         // SAFETY: a live element.
-        assert_eq!(unsafe { kontakt_bearing_element_set_damping(e, 1e-4) }, KONTAKT_OK);
+        assert_eq!(
+            unsafe { kontakt_bearing_element_set_damping(e, 1e-4) },
+            KONTAKT_OK
+        );
         assert_eq!(counted(e, u, v), (KONTAKT_OK, loaded, 0), "{name} damped");
         let out = [0.0, 0.0, -0.2, 0.0, 0.0];
         let lifted = KONTAKT_BEARING_LIFTED_OFF;
@@ -60,7 +71,11 @@ fn bearing_element_evaluation_allocates_nothing() {
         // a failed call writes its message (allocating); the next success reuses the buffer
         let (code, _, _) = counted(e, [f64::NAN; 5], v);
         assert_eq!(code, KONTAKT_INVALID_INPUT);
-        assert_eq!(counted(e, u, v), (KONTAKT_OK, loaded, 0), "{name} after an error");
+        assert_eq!(
+            counted(e, u, v),
+            (KONTAKT_OK, loaded, 0),
+            "{name} after an error"
+        );
         // SAFETY: created above, freed once.
         unsafe { kontakt_bearing_element_free(e) };
     }

@@ -36,7 +36,14 @@ fn run(text: &CString, fail: bool) -> (Vec<[f64; 6]>, bool) {
         // SAFETY: a live element of this thread, arrays of 5 doubles, a writable result.
         let code = unsafe { kontakt_bearing_element_evaluate(e, u.as_ptr(), v.as_ptr(), &mut r) };
         if code == KONTAKT_OK {
-            out.push([r.force[0], r.force[1], r.force[2], r.moment[0], r.moment[1], r.stiffness[2][2]]);
+            out.push([
+                r.force[0],
+                r.force[1],
+                r.force[2],
+                r.moment[0],
+                r.moment[1],
+                r.stiffness[2][2],
+            ]);
         } else {
             assert!(fail && step == 20);
         }
@@ -64,7 +71,11 @@ fn one_element_per_thread_gives_the_single_thread_results() {
             .collect();
         for (t, h) in handles.into_iter().enumerate() {
             let (results, empty) = h.join().unwrap();
-            let want = if t % 2 == 1 { &with_failure } else { &reference };
+            let want = if t % 2 == 1 {
+                &with_failure
+            } else {
+                &reference
+            };
             assert_eq!(&results, want, "thread {t}");
             assert!(empty, "thread {t}: the message of the last successful call");
         }

@@ -14,10 +14,9 @@ mod c_program;
 
 use c_program::{Section, numbers, run_c_program, sections};
 use kontakt_capi::{
-    KONTAKT_BEARING_LIFTED_OFF, KONTAKT_BEARING_LOADED, KONTAKT_INVALID_INPUT,
-    KONTAKT_NULL_OR_UTF8,
+    KONTAKT_BEARING_LIFTED_OFF, KONTAKT_BEARING_LOADED, KONTAKT_INVALID_INPUT, KONTAKT_NULL_OR_UTF8,
 };
-use kontakt_case::bearing_case::{BearingLoadSpec, PrescribedSpec};
+use kontakt_case::bearing_model::prescribed_load;
 use kontakt_case::{BearingCase, BearingModel};
 use std::path::PathBuf;
 
@@ -31,30 +30,12 @@ fn example(name: &str) -> PathBuf {
 /// with every degree of freedom prescribed at `u`.
 fn rust_solution(path: &PathBuf, u: &[f64]) -> ([f64; 5], [[f64; 5]; 5]) {
     let text = std::fs::read_to_string(path).unwrap();
-    let case = BearingCase::from_toml_str(&text).unwrap();
-    let mut model = BearingModel::new(&case).unwrap();
-    let load = BearingLoadSpec {
-        force_n: [0.0; 3],
-        moment_nmm: [0.0; 2],
-        prescribed: PrescribedSpec {
-            dx_mm: Some(u[0]),
-            dy_mm: Some(u[1]),
-            dz_mm: Some(u[2]),
-            tilt_x_rad: Some(u[3]),
-            tilt_y_rad: Some(u[4]),
-        },
-    };
-    let r = model.solve(&load).unwrap();
-    (
-        [
-            r.force_n[0],
-            r.force_n[1],
-            r.force_n[2],
-            r.moment_nmm[0],
-            r.moment_nmm[1],
-        ],
-        r.stiffness_matrix,
-    )
+    let mut model = BearingModel::new(&BearingCase::from_toml_str(&text).unwrap()).unwrap();
+    let r = model
+        .solve(&prescribed_load([u[0], u[1], u[2], u[3], u[4]]))
+        .unwrap();
+    let (f, m) = (r.force_n, r.moment_nmm);
+    ([f[0], f[1], f[2], m[0], m[1]], r.stiffness_matrix)
 }
 
 /// The section's force and moment as `(Fx, Fy, Fz, Mx, My)`, and its `Mz`.
@@ -109,7 +90,10 @@ fn c_bearing_element_matches_the_rust_bearing_model() {
         // 1. minus the prescribed-displacement solution, to 1e-12
         let s = section(&format!("{name} loaded"));
         assert_eq!(code(s), 0);
-        assert_eq!(numbers(s, "status"), vec![f64::from(KONTAKT_BEARING_LOADED)]);
+        assert_eq!(
+            numbers(s, "status"),
+            vec![f64::from(KONTAKT_BEARING_LOADED)]
+        );
         let u = numbers(s, "displacement");
         let (load, k) = rust_solution(path, &u);
         let (r, mz) = reaction(s);
@@ -135,7 +119,10 @@ fn c_bearing_element_matches_the_rust_bearing_model() {
         assert!(r[2] < -100.0 && r[0] < 0.0, "{name}: {r:?}");
 
         // 2. the stiffness against the C program's central differences of the force
-        let fd = numbers(section(&format!("{name} central differences")), "fd_stiffness");
+        let fd = numbers(
+            section(&format!("{name} central differences")),
+            "fd_stiffness",
+        );
         let mut worst: f64 = 0.0;
         for i in 0..5 {
             for j in 0..5 {
@@ -211,12 +198,23 @@ fn c_bearing_element_matches_the_rust_bearing_model() {
 
         // 6. the errors left the element as it was
         let again = section(&format!("{name} again"));
-        assert_eq!(reaction(again), reaction(section(&format!("{name} damped"))));
+        assert_eq!(
+            reaction(again),
+            reaction(section(&format!("{name} damped")))
+        );
     }
     assert_error(section("bad case"), KONTAKT_INVALID_INPUT, &["bearing"]);
     assert_eq!(section("bad case")["out_is_null"], "1");
-    assert_error(section("null toml"), KONTAKT_NULL_OR_UTF8, &["toml is a null pointer"]);
-    assert_error(section("null out"), KONTAKT_NULL_OR_UTF8, &["out is a null pointer"]);
+    assert_error(
+        section("null toml"),
+        KONTAKT_NULL_OR_UTF8,
+        &["toml is a null pointer"],
+    );
+    assert_error(
+        section("null out"),
+        KONTAKT_NULL_OR_UTF8,
+        &["out is a null pointer"],
+    );
     assert_error(
         section("missing file"),
         KONTAKT_INVALID_INPUT,

@@ -99,7 +99,7 @@ impl BearingModel {
 }
 
 mod element;
-pub use element::{BearingElement, BearingElementOutput, BearingElementStatus};
+pub use element::{BearingElement, BearingElementOutput, BearingElementStatus, prescribed_load};
 
 #[cfg(test)]
 mod tests;

@@ -5,23 +5,24 @@
 //! not an error; bad input is refused naming the argument.
 
 #![allow(clippy::unwrap_used)] // tests: a panic is a failure with its message
+#![allow(clippy::needless_range_loop)] // matrix entries by their indices, as in the formulas
 
-use kontakt_case::bearing_case::{BearingLoadSpec, PrescribedSpec};
-use kontakt_case::bearing_model::{BearingElement, BearingElementStatus};
+use kontakt_case::bearing_model::{BearingElement, BearingElementStatus, prescribed_load};
 use kontakt_case::{BearingCase, BearingModel, run_bearing_case};
 use std::path::PathBuf;
 
 /// Every example bearing: its file name and text.
 fn examples() -> Vec<(String, String)> {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples");
-    let mut out = Vec::new();
-    for entry in std::fs::read_dir(&dir).unwrap() {
-        let path = entry.unwrap().path();
-        let name = path.file_name().unwrap().to_string_lossy().to_string();
-        if name.starts_with("bearing_") && name.ends_with(".toml") {
-            out.push((name, std::fs::read_to_string(&path).unwrap()));
-        }
-    }
+    let mut out: Vec<(String, String)> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|entry| entry.unwrap().path())
+        .filter_map(|p| {
+            let name = p.file_name()?.to_string_lossy().into_owned();
+            (name.starts_with("bearing_") && name.ends_with(".toml"))
+                .then(|| (name, std::fs::read_to_string(&p).unwrap()))
+        })
+        .collect();
     out.sort();
     assert!(out.len() >= 6, "the example bearings: {out:?}");
     out
@@ -54,28 +55,9 @@ fn loaded_displacement(text: &str) -> [f64; 5] {
 /// The load of a `BearingModel` solve with all five degrees of freedom prescribed at `u`:
 /// `(Fx, Fy, Fz, Mx, My)` and the stiffness.
 fn prescribed(model: &mut BearingModel, u: [f64; 5]) -> ([f64; 5], [[f64; 5]; 5]) {
-    let load = BearingLoadSpec {
-        force_n: [0.0; 3],
-        moment_nmm: [0.0; 2],
-        prescribed: PrescribedSpec {
-            dx_mm: Some(u[0]),
-            dy_mm: Some(u[1]),
-            dz_mm: Some(u[2]),
-            tilt_x_rad: Some(u[3]),
-            tilt_y_rad: Some(u[4]),
-        },
-    };
-    let r = model.solve(&load).unwrap();
-    (
-        [
-            r.force_n[0],
-            r.force_n[1],
-            r.force_n[2],
-            r.moment_nmm[0],
-            r.moment_nmm[1],
-        ],
-        r.stiffness_matrix,
-    )
+    let r = model.solve(&prescribed_load(u)).unwrap();
+    let (f, m) = (r.force_n, r.moment_nmm);
+    ([f[0], f[1], f[2], m[0], m[1]], r.stiffness_matrix)
 }
 
 fn reaction(o: &kontakt_case::bearing_model::BearingElementOutput) -> [f64; 5] {
@@ -164,9 +146,7 @@ fn stiffness_is_the_central_difference_of_the_reaction() {
             let rm = reaction(&e.evaluate(down, [0.0; 5]).unwrap());
             for i in 0..5 {
                 let fd = -(rp[i] - rm[i]) / (2.0 * h);
-                let scale = (k[i][i] * k[j][j])
-                    .sqrt()
-                    .max(1e-9 * k_ref / (d[i] * d[j]));
+                let scale = (k[i][i] * k[j][j]).sqrt().max(1e-9 * k_ref / (d[i] * d[j]));
                 let err = (fd - k[i][j]).abs() / scale;
                 worst = worst.max(err);
                 assert!(
@@ -262,7 +242,10 @@ fn bad_input_names_the_argument() {
     let mut far = u;
     far[0] = 8.0;
     let err = expect_err(&mut e, far, [0.0; 5], "displacement[0] = 8");
-    assert!(err.contains("7.938") && err.contains("bearing.ball_diameter_mm"), "{err}");
+    assert!(
+        err.contains("7.938") && err.contains("bearing.ball_diameter_mm"),
+        "{err}"
+    );
     let mut tilt = u;
     tilt[4] = 0.5;
     let err = expect_err(&mut e, tilt, [0.0; 5], "displacement[4] = 0.5");

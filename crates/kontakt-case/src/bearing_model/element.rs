@@ -34,7 +34,7 @@
 //! allocates nothing.
 
 use super::BearingModel;
-use crate::bearing_case::{BearingCase, Planned};
+use crate::bearing_case::{BearingCase, BearingLoadSpec, Planned, PrescribedSpec};
 use kontakt::solve::Termination;
 use kontakt::{Error, Result};
 use kontakt_bearing::equilibrium::RingLoad;
@@ -81,6 +81,23 @@ pub struct BearingElementOutput {
 pub struct BearingElement {
     model: BearingModel,
     damping_s: f64,
+}
+
+/// The `[load]` that holds all five degrees of freedom of the inner ring at `u`
+/// (`δx, δy, δz` mm, `θx, θy` rad): a [`BearingModel`] solve under it gives minus the
+/// elastic reaction of [`BearingElement::evaluate`] at `u`, and the same stiffness.
+pub fn prescribed_load(u: [f64; 5]) -> BearingLoadSpec {
+    BearingLoadSpec {
+        force_n: [0.0; 3],
+        moment_nmm: [0.0; 2],
+        prescribed: PrescribedSpec {
+            dx_mm: Some(u[0]),
+            dy_mm: Some(u[1]),
+            dz_mm: Some(u[2]),
+            tilt_x_rad: Some(u[3]),
+            tilt_y_rad: Some(u[4]),
+        },
+    }
 }
 
 /// The names of the five components, as the element's arguments name them.
@@ -185,7 +202,11 @@ impl BearingElement {
     pub fn evaluate(&mut self, u: [f64; 5], v: [f64; 5]) -> Result<BearingElementOutput> {
         for i in 0..5 {
             if !u[i].is_finite() {
-                return Err(Error::invalid(DISPLACEMENT_ARGS[i], u[i], "a finite number"));
+                return Err(Error::invalid(
+                    DISPLACEMENT_ARGS[i],
+                    u[i],
+                    "a finite number",
+                ));
             }
             if !v[i].is_finite() {
                 return Err(Error::invalid(VELOCITY_ARGS[i], v[i], "a finite number"));
