@@ -1,4 +1,5 @@
-//! The bearing element's evaluation through the C function allocates nothing per call —
+//! The bearing element's evaluation, through the C function and through the Rust
+//! `BearingElement::evaluate` under it, allocates nothing per call —
 //! cold (the first call, from the closed forms), warm (from the previous call), damped,
 //! lifted off, and after a failed call (the thread's message buffer is reused) — for a
 //! ball and a tapered roller bearing (issue 28, "Speed": hot loops allocate nothing).
@@ -78,5 +79,19 @@ fn bearing_element_evaluation_allocates_nothing() {
         );
         // SAFETY: created above, freed once.
         unsafe { kontakt_bearing_element_free(e) };
+    }
+}
+
+#[test]
+fn rust_bearing_element_evaluation_allocates_nothing() {
+    use kontakt_case::bearing_model::BearingElement;
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/bearing_32216.toml");
+    let mut e = BearingElement::from_toml(&std::fs::read_to_string(path).unwrap()).unwrap();
+    e.set_damping(1e-4).unwrap();
+    let u = [0.01, 0.0, 0.02, 0.0, 1e-4];
+    for (i, du) in [1.0, 1.01, 0.99].into_iter().enumerate() {
+        let (o, n) = allocations(|| e.evaluate(u.map(|x| du * x), [1.0; 5]).unwrap());
+        assert!(o.max_element_load_n > 0.0);
+        assert_eq!(n, 0, "call {i}");
     }
 }
