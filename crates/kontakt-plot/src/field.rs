@@ -236,7 +236,7 @@ fn ellipse_points(e: &crate::Ellipse, n: usize) -> Vec<(f64, f64)> {
 }
 
 /// The maximum's marker at pixel `at`: a black dot in a white disc with a black ring.
-fn draw_marker<DB: DrawingBackend>(
+pub(crate) fn draw_marker<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     at: (i32, i32),
     m: &Metrics,
@@ -723,7 +723,7 @@ fn clip_segment(
 }
 
 /// Colour bar with its ticks on the right and its label (rotated) beyond them.
-fn draw_colorbar<DB: DrawingBackend>(
+pub(crate) fn draw_colorbar<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     (x, y, bar_w, bar_h, right): (i32, i32, i32, i32, i32),
     (lo, top): (f64, f64),

@@ -1,5 +1,6 @@
 //! Line plots.
 
+use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use plotters::style::text_anchor::{HPos, Pos, VPos};
@@ -36,12 +37,72 @@ pub(crate) fn from_zero(lo: f64, hi: f64) -> (f64, f64) {
 
 impl Figure for LineFigure<'_> {
     fn draw<DB: DrawingBackend>(&self, target: &Target<DB>) -> Result<(), PlotError> {
-        let plot = self.0;
-        let root = &target.root;
+        let m = Metrics::new(target.root.dim_in_pixel());
+        draw_plot(self.0, &target.root, &m)
+    }
+}
+
+/// Several [`LinePlot`]s stacked from top to bottom, each in an equal share of the height,
+/// with the fonts of the whole image.
+pub(crate) struct Panels<'a>(pub &'a [LinePlot<'a>]);
+
+impl Figure for Panels<'_> {
+    fn draw<DB: DrawingBackend>(&self, target: &Target<DB>) -> Result<(), PlotError> {
+        let m = Metrics::new(target.root.dim_in_pixel());
+        let areas = target.root.split_evenly((self.0.len().max(1), 1));
+        for (plot, area) in self.0.iter().zip(&areas) {
+            draw_plot(plot, area, &m)?;
+        }
+        Ok(())
+    }
+}
+
+/// Where the bars of the bar series stand: the offset of each bar series' bars from their
+/// x (in the order of the series; 0 for the others) and the bars' width, both in x units;
+/// the bars of all bar series at one x take 80 % of the smallest spacing of their x values.
+pub(crate) fn bar_slots(series: &[Series], data: &[Vec<(f64, f64)>]) -> (Vec<f64>, f64) {
+    let bars: Vec<usize> = (0..series.len())
+        .filter(|&k| series[k].style == LineStyle::Bars)
+        .collect();
+    let mut offsets = vec![0.0; series.len()];
+    if bars.is_empty() {
+        return (offsets, 0.0);
+    }
+    let mut xs: Vec<f64> = bars
+        .iter()
+        .flat_map(|&k| data[k].iter().map(|p| p.0))
+        .collect();
+    xs.sort_by(f64::total_cmp);
+    let spacing = xs
+        .windows(2)
+        .map(|p| p[1] - p[0])
+        .filter(|d| *d > 1e-12 * (1.0 + p_abs(&xs)))
+        .fold(f64::INFINITY, f64::min);
+    let spacing = if spacing.is_finite() { spacing } else { 1.0 };
+    let group = 0.8 * spacing;
+    let width = group / bars.len() as f64;
+    for (slot, &k) in bars.iter().enumerate() {
+        offsets[k] = -0.5 * group + (slot as f64 + 0.5) * width;
+    }
+    (offsets, width)
+}
+
+/// The largest magnitude of `xs` (for a relative spacing tolerance).
+fn p_abs(xs: &[f64]) -> f64 {
+    xs.iter().fold(0.0, |m: f64, x| m.max(x.abs()))
+}
+
+/// Draw `plot` on `root` with the fonts and lines of `m`.
+fn draw_plot<DB: DrawingBackend>(
+    plot: &LinePlot,
+    root: &DrawingArea<DB, Shift>,
+    m: &Metrics,
+) -> Result<(), PlotError> {
+    {
+        let m = *m;
         root.fill(&WHITE).de()?;
         let (w, h) = root.dim_in_pixel();
         let (wi, hi) = (w as i32, h as i32);
-        let m = Metrics::new((w, h));
 
         // On a logarithmic x axis the curves are drawn over log10 x.
         let tx = |x: f64| if plot.x_log { x.log10() } else { x };
@@ -50,12 +111,26 @@ impl Figure for LineFigure<'_> {
             .iter()
             .map(|s| s.points.iter().map(|&(x, y)| (tx(x), y)).collect())
             .collect();
+        let (bar_offsets, bar_w) = bar_slots(plot.series, &data);
         let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
-        for &(x, y) in data.iter().flatten() {
-            x0 = x0.min(x);
-            x1 = x1.max(x);
-            y0 = y0.min(y);
-            y1 = y1.max(y);
+        for (k, pts) in data.iter().enumerate() {
+            let half = if plot.series[k].style == LineStyle::Bars {
+                0.5 * bar_w
+            } else {
+                0.0
+            };
+            for &(x, y) in pts {
+                let x = x + bar_offsets[k];
+                x0 = x0.min(x - half);
+                x1 = x1.max(x + half);
+                y0 = y0.min(y);
+                y1 = y1.max(y);
+                if half > 0.0 {
+                    // a bar stands on 0
+                    y0 = y0.min(0.0);
+                    y1 = y1.max(0.0);
+                }
+            }
         }
         let (x0, x1) = padded(x0, x1);
         let (y0, y1) = if plot.y_from_zero {
@@ -146,12 +221,24 @@ impl Figure for LineFigure<'_> {
             let units: Vec<(LineStyle, Vec<(f64, f64)>)> = data
                 .iter()
                 .zip(plot.series)
-                .map(|(pts, s)| {
-                    let unit = pts
-                        .iter()
-                        .map(|&(x, y)| ((x - x0) / (x1 - x0), (y - y0) / (y1 - y0)))
-                        .collect();
-                    (s.style, unit)
+                .zip(&bar_offsets)
+                .map(|((pts, s), off)| {
+                    let unit = |x: f64, y: f64| ((x - x0) / (x1 - x0), (y - y0) / (y1 - y0));
+                    if s.style == LineStyle::Bars {
+                        // the bar's area, sampled: its edges and middle from 0 up
+                        let mut samples = Vec::new();
+                        for &(x, y) in pts {
+                            for k in 0..=20 {
+                                let v = y * f64::from(k) / 20.0;
+                                for dx in [-0.5, 0.0, 0.5] {
+                                    samples.push(unit(x + off + dx * bar_w, v));
+                                }
+                            }
+                        }
+                        (LineStyle::Markers, samples)
+                    } else {
+                        (s.style, pts.iter().map(|&(x, y)| unit(x, y)).collect())
+                    }
                 })
                 .collect();
             let margin_fraction = (
@@ -196,7 +283,7 @@ impl Figure for LineFigure<'_> {
         let radius = ((3.5 * m.scale).round() as i32).max(3);
         let dash = ((9.0 * m.scale).round() as i32).max(5);
         let space = ((6.0 * m.scale).round() as i32).max(3);
-        for (series, pts) in plot.series.iter().zip(&data) {
+        for (k, (series, pts)) in plot.series.iter().zip(&data).enumerate() {
             let color = rgb(series.color);
             let line = color.stroke_width(lw);
             let points = pts.iter().copied();
@@ -212,6 +299,18 @@ impl Figure for LineFigure<'_> {
                 LineStyle::Markers => {
                     chart
                         .draw_series(points.map(|p| Circle::new(p, radius, color.filled())))
+                        .de()?;
+                }
+                LineStyle::Bars => {
+                    let off = bar_offsets[k];
+                    let base = 0.0f64.clamp(y0, y1);
+                    chart
+                        .draw_series(points.map(|(x, y)| {
+                            Rectangle::new(
+                                [(x + off - 0.5 * bar_w, base), (x + off + 0.5 * bar_w, y)],
+                                color.filled(),
+                            )
+                        }))
                         .de()?;
                 }
             }
@@ -292,6 +391,14 @@ impl Figure for LineFigure<'_> {
                     LineStyle::Markers => {
                         root.draw(&Circle::new((x + sample / 2, y), radius, color.filled()))
                             .de()?;
+                    }
+                    LineStyle::Bars => {
+                        let hh = row_h / 3;
+                        root.draw(&Rectangle::new(
+                            [(x + sample / 4, y - hh), (x + 3 * sample / 4, y + hh)],
+                            color.filled(),
+                        ))
+                        .de()?;
                     }
                 }
                 root.draw_text(s.label, &label_style, (x + sample + pad, y))
