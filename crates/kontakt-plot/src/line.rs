@@ -325,9 +325,12 @@ fn draw_plot<DB: DrawingBackend>(
             .de()?;
 
         if !labelled.is_empty() {
+            // The plotting area's pixels are the image's; `root` draws relative to its own
+            // corner, which is not the image's in a panel of [`Panels`].
             let (px, py) = {
                 let (xr, yr) = chart.plotting_area().get_pixel_range();
-                (xr, yr)
+                let (ox, oy) = root.get_base_pixel();
+                (xr.start - ox..xr.end - ox, yr.start - oy..yr.end - oy)
             };
             let (bx, by) = match place {
                 LegendPlace::Outside => (px.end + gap, py.start),

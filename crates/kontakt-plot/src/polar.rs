@@ -137,38 +137,42 @@ fn tint((r, g, b): (u8, u8, u8), amount: f64) -> RGBColor {
     RGBColor(mix(r), mix(g), mix(b))
 }
 
-/// The angle of the ray that carries the radial tick labels: opposite the largest value,
-/// halfway between the two points around it (so that no spoke runs under the labels).
+/// The angle of the ray that carries the radial tick labels: halfway between two
+/// neighbouring points (so that no spoke runs under the labels), on the half away from the
+/// largest value, the most nearly vertical such ray (the labels, written horizontally,
+/// then stack without touching each other or the angle labels at the rim).
 fn label_ray(points: &[(f64, f64)]) -> f64 {
     let (a_max, _) = points
         .iter()
         .copied()
         .fold((0.0, f64::MIN), |b, p| if p.1 > b.1 { p } else { b });
-    let target = a_max + 180.0;
     let mut angles: Vec<f64> = points.iter().map(|p| p.0.rem_euclid(360.0)).collect();
     angles.sort_by(f64::total_cmp);
     angles.dedup();
-    if angles.len() < 2 {
-        return target + 15.0;
-    }
-    // the gap between neighbours (cyclic) whose middle is nearest to the target
-    let dist = |a: f64| ((a - target).rem_euclid(360.0)).min((target - a).rem_euclid(360.0));
-    let mut best = (f64::MAX, target);
-    for k in 0..angles.len() {
-        let (a, b) = (
-            angles[k],
-            if k + 1 < angles.len() {
-                angles[k + 1]
-            } else {
-                angles[0] + 360.0
-            },
-        );
-        let mid = 0.5 * (a + b);
-        if dist(mid) < best.0 {
-            best = (dist(mid), mid);
-        }
-    }
-    best.1
+    let from_max = |a: f64| {
+        let d = (a - a_max).rem_euclid(360.0);
+        d.min(360.0 - d)
+    };
+    let mids: Vec<f64> = if angles.len() < 2 {
+        (0..12).map(|k| 15.0 + 30.0 * f64::from(k)).collect()
+    } else {
+        (0..angles.len())
+            .map(|k| {
+                let next = angles.get(k + 1).copied().unwrap_or(angles[0] + 360.0);
+                0.5 * (angles[k] + next)
+            })
+            .collect()
+    };
+    // away from the maximum first, then as vertical as possible
+    let score = |a: f64| {
+        let back = if from_max(a) >= 90.0 { 1.0 } else { 0.0 };
+        let below = if a.to_radians().sin() < 0.0 { 1e-4 } else { 0.0 };
+        2.0 * back + a.to_radians().sin().abs() + 1e-3 * from_max(a) / 180.0 + below
+    };
+    mids.iter()
+        .copied()
+        .fold((f64::MIN, 0.0), |b, a| if score(a) > b.0 { (score(a), a) } else { b })
+        .1
 }
 
 /// The label of an angle tick in (-180, 180] degrees.
@@ -335,7 +339,7 @@ impl Figure for PolarFigure<'_> {
                     let centre = (f64::from(x) + r, f64::from(y));
                     let mut small = m;
                     small.scale = m.scale.min(1.0);
-                    draw_arrow_from(root, (centre.0 - r, centre.1), 2.0 * r, 0.0, &small)?;
+                    draw_arrow(root, (centre.0 - r, centre.1), 2.0 * r, 0.0, &small)?;
                 }
             }
             root.draw_text(label, &style, (x + sample + pad, y)).de()?;
@@ -344,18 +348,8 @@ impl Figure for PolarFigure<'_> {
     }
 }
 
-/// A black arrow from `c` of `length` pixels at `angle_deg`.
+/// A black arrow from `from` of `length` pixels toward `angle_deg`.
 fn draw_arrow<DB: DrawingBackend>(
-    root: &DrawingArea<DB, Shift>,
-    c: (f64, f64),
-    length: f64,
-    angle_deg: f64,
-    m: &Metrics,
-) -> Result<(), PlotError> {
-    draw_arrow_from(root, c, length, angle_deg, m)
-}
-
-fn draw_arrow_from<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     from: (f64, f64),
     length: f64,
@@ -410,11 +404,15 @@ mod tests {
 
     #[test]
     fn the_scale_ray_lies_between_spokes_opposite_the_maximum() {
-        let pts: Vec<(f64, f64)> = (0..12).map(|k| (30.0 * f64::from(k), 1.0)).collect();
-        let mut pts = pts;
-        pts[2].1 = 9.0; // maximum at 60°: the labels near 240°, between 225 and 255
-        let ray = label_ray(&pts);
-        assert!((ray - 225.0).abs() < 1e-9 || (ray - 255.0).abs() < 1e-9, "{ray}");
+        let mut pts: Vec<(f64, f64)> = (0..12).map(|k| (30.0 * f64::from(k), 1.0)).collect();
+        pts[2].1 = 9.0; // maximum at 60°: the labels on the far side, near vertical, at 255°
+        assert_eq!(label_ray(&pts), 255.0);
+        // 9 balls, the largest at 0°: not on the 180° ray (the rim's label is there), but
+        // at 260°, between the balls at 240° and 280°
+        let pts: Vec<(f64, f64)> = (0..9)
+            .map(|k| (40.0 * f64::from(k), if k == 0 { 5.0 } else { 1.0 }))
+            .collect();
+        assert_eq!(label_ray(&pts), 260.0);
     }
 
     /// The picture is right in the image's own pixel frame: the spoke pixel farthest from
