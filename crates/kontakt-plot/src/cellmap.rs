@@ -105,7 +105,13 @@ impl Figure for &CellFigure<'_> {
         for n in 2..=10 {
             x_tick_w = x_tick_w.max(width_of(&nice_ticks(x0, x1, n))?);
         }
-        let x_ticks = ticks_fitting(x0, x1, f64::from(pw), f64::from(x_tick_w) + 1.5 * m.tick, 10);
+        let x_ticks = ticks_fitting(
+            x0,
+            x1,
+            f64::from(pw),
+            f64::from(x_tick_w) + 1.5 * m.tick,
+            10,
+        );
 
         draw_title(root, map.title, &m, m.margin)?;
         draw_line_of_text(root, map.caption, m.tick, &m, m.margin + title_h)?;

@@ -654,11 +654,13 @@ pub fn cell_map(path: &Path, map: &CellMap, size: (u32, u32)) -> Result<(), Plot
     }
     let x_max = map.x_min + map.nx as f64 * map.dx;
     let y_max = map.y_min + map.ny as f64 * map.dy;
-    if !(x_max.is_finite() && y_max.is_finite() && map.x_min.is_finite() && map.y_min.is_finite())
-    {
+    if !(x_max.is_finite() && y_max.is_finite() && map.x_min.is_finite() && map.y_min.is_finite()) {
         return Err(PlotError::invalid(
             "grid extent",
-            format!("x from {} to {x_max}, y from {} to {y_max}", map.x_min, map.y_min),
+            format!(
+                "x from {} to {x_max}, y from {} to {y_max}",
+                map.x_min, map.y_min
+            ),
             "a finite grid",
         ));
     }

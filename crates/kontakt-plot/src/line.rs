@@ -38,7 +38,7 @@ pub(crate) fn from_zero(lo: f64, hi: f64) -> (f64, f64) {
 impl Figure for LineFigure<'_> {
     fn draw<DB: DrawingBackend>(&self, target: &Target<DB>) -> Result<(), PlotError> {
         let m = Metrics::new(target.root.dim_in_pixel());
-        draw_plot(self.0, &target.root, &m)
+        draw_plot(self.0, &target.root, &m, None)
     }
 }
 
@@ -49,9 +49,52 @@ pub(crate) struct Panels<'a>(pub &'a [LinePlot<'a>]);
 impl Figure for Panels<'_> {
     fn draw<DB: DrawingBackend>(&self, target: &Target<DB>) -> Result<(), PlotError> {
         let m = Metrics::new(target.root.dim_in_pixel());
-        let areas = target.root.split_evenly((self.0.len().max(1), 1));
+        let root = &target.root;
+        // one x range, and room left of each plot for the widest y labels of them all
+        let (mut x0, mut x1, mut left, mut legend_w) = (f64::MAX, f64::MIN, 0, 0);
+        let style = text(m.tick);
+        for plot in self.0 {
+            let e = extent(plot);
+            x0 = x0.min(e.x.0);
+            x1 = x1.max(e.x.1);
+            let (y0, y1) = if plot.y_from_zero {
+                from_zero(e.y.0, e.y.1)
+            } else {
+                padded(e.y.0, e.y.1)
+            };
+            let mut widest = 0;
+            for n in 2..=13 {
+                let t = nice_ticks(y0, y1, n);
+                if t.values.len() <= 10 {
+                    for label in t.labels() {
+                        widest = widest.max(text_size(root, &label, &style)?.0);
+                    }
+                }
+            }
+            let desc = if plot.y_label.is_empty() {
+                0
+            } else {
+                (m.label * 1.35).round() as i32
+            };
+            left = left.max(widest + 2 * m.tick_len + desc + m.tick_len);
+            // the legend box as draw_plot sizes it
+            let mut label_w = 0;
+            for series in plot.series.iter().filter(|s| !s.label.is_empty()) {
+                label_w = label_w.max(text_size(root, series.label, &style)?.0);
+            }
+            if label_w > 0 {
+                let sample = (2.5 * m.tick).round() as i32;
+                legend_w = legend_w.max(sample + label_w + 4 * m.tick_len + 2 * m.tick_len);
+            }
+        }
+        let shared = Shared {
+            x: (x0, x1),
+            left,
+            legend_w,
+        };
+        let areas = root.split_evenly((self.0.len().max(1), 1));
         for (plot, area) in self.0.iter().zip(&areas) {
-            draw_plot(plot, area, &m)?;
+            draw_plot(plot, area, &m, Some(shared))?;
         }
         Ok(())
     }
@@ -92,11 +135,70 @@ fn p_abs(xs: &[f64]) -> f64 {
     xs.iter().fold(0.0, |m: f64, x| m.max(x.abs()))
 }
 
+/// The data of a plot (over log10 x on a logarithmic axis), where its bars stand, and the
+/// ranges it covers (bars included, which stand on 0), before padding.
+struct Extent {
+    data: Vec<Vec<(f64, f64)>>,
+    bar_offsets: Vec<f64>,
+    bar_w: f64,
+    x: (f64, f64),
+    y: (f64, f64),
+}
+
+fn extent(plot: &LinePlot) -> Extent {
+    // On a logarithmic x axis the curves are drawn over log10 x.
+    let tx = |x: f64| if plot.x_log { x.log10() } else { x };
+    let data: Vec<Vec<(f64, f64)>> = plot
+        .series
+        .iter()
+        .map(|s| s.points.iter().map(|&(x, y)| (tx(x), y)).collect())
+        .collect();
+    let (bar_offsets, bar_w) = bar_slots(plot.series, &data);
+    let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+    for (k, pts) in data.iter().enumerate() {
+        let half = if plot.series[k].style == LineStyle::Bars {
+            0.5 * bar_w
+        } else {
+            0.0
+        };
+        for &(x, y) in pts {
+            let x = x + bar_offsets[k];
+            x0 = x0.min(x - half);
+            x1 = x1.max(x + half);
+            y0 = y0.min(y);
+            y1 = y1.max(y);
+            if half > 0.0 {
+                // a bar stands on 0
+                y0 = y0.min(0.0);
+                y1 = y1.max(0.0);
+            }
+        }
+    }
+    Extent {
+        data,
+        bar_offsets,
+        bar_w,
+        x: (x0, x1),
+        y: (y0, y1),
+    }
+}
+
+/// What the panels of [`Panels`] share: the x range (before padding) and the smallest
+/// width left of the plot area in pixels, so that their x axes line up.
+#[derive(Debug, Clone, Copy)]
+struct Shared {
+    x: (f64, f64),
+    left: i32,
+    /// Room right of each plot for the widest legend of them all, with its gap.
+    legend_w: i32,
+}
+
 /// Draw `plot` on `root` with the fonts and lines of `m`.
 fn draw_plot<DB: DrawingBackend>(
     plot: &LinePlot,
     root: &DrawingArea<DB, Shift>,
     m: &Metrics,
+    shared: Option<Shared>,
 ) -> Result<(), PlotError> {
     {
         let m = *m;
@@ -104,34 +206,14 @@ fn draw_plot<DB: DrawingBackend>(
         let (w, h) = root.dim_in_pixel();
         let (wi, hi) = (w as i32, h as i32);
 
-        // On a logarithmic x axis the curves are drawn over log10 x.
-        let tx = |x: f64| if plot.x_log { x.log10() } else { x };
-        let data: Vec<Vec<(f64, f64)>> = plot
-            .series
-            .iter()
-            .map(|s| s.points.iter().map(|&(x, y)| (tx(x), y)).collect())
-            .collect();
-        let (bar_offsets, bar_w) = bar_slots(plot.series, &data);
-        let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
-        for (k, pts) in data.iter().enumerate() {
-            let half = if plot.series[k].style == LineStyle::Bars {
-                0.5 * bar_w
-            } else {
-                0.0
-            };
-            for &(x, y) in pts {
-                let x = x + bar_offsets[k];
-                x0 = x0.min(x - half);
-                x1 = x1.max(x + half);
-                y0 = y0.min(y);
-                y1 = y1.max(y);
-                if half > 0.0 {
-                    // a bar stands on 0
-                    y0 = y0.min(0.0);
-                    y1 = y1.max(0.0);
-                }
-            }
-        }
+        let Extent {
+            data,
+            bar_offsets,
+            bar_w,
+            x: (x0, x1),
+            y: (y0, y1),
+        } = extent(plot);
+        let (x0, x1) = shared.map_or((x0, x1), |s| s.x);
         let (x0, x1) = padded(x0, x1);
         let (y0, y1) = if plot.y_from_zero {
             from_zero(y0, y1)
@@ -204,7 +286,8 @@ fn draw_plot<DB: DrawingBackend>(
             let area_h = (hi - top - m.margin).max(20);
             let ph = (area_h - bottom).max(2);
             let y_ticks = ticks_fitting(y0, y1, f64::from(ph), 1.6 * f64::from(tick_h), 10);
-            let left = width_of(&y_ticks)? + label_dist + desc_h(plot.y_label) + m.tick_len;
+            let left = (width_of(&y_ticks)? + label_dist + desc_h(plot.y_label) + m.tick_len)
+                .max(shared.map_or(0, |s| s.left));
             let pw = (area_w - left).max(2);
             let x_spacing = f64::from(x_tick_w) + 1.5 * m.tick;
             let x_ticks = if plot.x_log {
@@ -217,7 +300,12 @@ fn draw_plot<DB: DrawingBackend>(
         let (mut area_w, mut area_h, mut left, pw, mut x_ticks, mut y_ticks) = layout(0)?;
         let ph = (area_h - bottom).max(2);
         let mut place = LegendPlace::Corner(0);
-        if !labelled.is_empty() {
+        if let Some(s) = shared {
+            // panels: every legend right of its plot, in room of one width for all, so
+            // that the plot areas and x axes line up
+            place = LegendPlace::Outside;
+            (area_w, area_h, left, _, x_ticks, y_ticks) = layout(s.legend_w)?;
+        } else if !labelled.is_empty() {
             let units: Vec<(LineStyle, Vec<(f64, f64)>)> = data
                 .iter()
                 .zip(plot.series)

@@ -118,7 +118,11 @@ fn sector_polygon(c: (f64, f64), r0: f64, r1: f64, a0: f64, a1: f64) -> Vec<(i32
     let mut pts: Vec<(i32, i32)> = (0..=n)
         .map(|k| at(r1, a0 + (a1 - a0) * k as f64 / n as f64))
         .collect();
-    pts.extend((0..=n).rev().map(|k| at(r0, a0 + (a1 - a0) * k as f64 / n as f64)));
+    pts.extend(
+        (0..=n)
+            .rev()
+            .map(|k| at(r0, a0 + (a1 - a0) * k as f64 / n as f64)),
+    );
     pts
 }
 
@@ -166,12 +170,18 @@ fn label_ray(points: &[(f64, f64)]) -> f64 {
     // away from the maximum first, then as vertical as possible
     let score = |a: f64| {
         let back = if from_max(a) >= 90.0 { 1.0 } else { 0.0 };
-        let below = if a.to_radians().sin() < 0.0 { 1e-4 } else { 0.0 };
+        let below = if a.to_radians().sin() < 0.0 {
+            1e-4
+        } else {
+            0.0
+        };
         2.0 * back + a.to_radians().sin().abs() + 1e-3 * from_max(a) / 180.0 + below
     };
     mids.iter()
         .copied()
-        .fold((f64::MIN, 0.0), |b, a| if score(a) > b.0 { (score(a), a) } else { b })
+        .fold((f64::MIN, 0.0), |b, a| {
+            if score(a) > b.0 { (score(a), a) } else { b }
+        })
         .1
 }
 
@@ -253,8 +263,11 @@ impl Figure for PolarFigure<'_> {
         if order.len() > 2 {
             let mut env: Vec<(i32, i32)> = order.iter().map(|&(a, v)| px(l.pixel(a, v))).collect();
             env.push(env[0]);
-            root.draw(&PathElement::new(env, tint(plot.color, 0.55).stroke_width(1)))
-                .de()?;
+            root.draw(&PathElement::new(
+                env,
+                tint(plot.color, 0.55).stroke_width(1),
+            ))
+            .de()?;
         }
         for &(a, v) in &order {
             let base = px(l.pixel(a, 0.0));
@@ -470,7 +483,10 @@ mod tests {
             }
         }
         let angle = far.2.atan2(far.1).to_degrees();
-        assert!((angle - 72.0).abs() < 2.0, "farthest spoke pixel at {angle}°");
+        assert!(
+            (angle - 72.0).abs() < 2.0,
+            "farthest spoke pixel at {angle}°"
+        );
         let r_expected = l.radius(4000.0);
         assert!(
             (far.0 - r_expected).abs() < 6.0,

@@ -989,6 +989,19 @@ fn stacked_panels_keep_their_legends() {
             .count();
         assert!(n > 20_000, "{n} bar pixels of {c:?}");
     }
+    // one x axis: the first bar starts at the same pixel column in both panels (the y
+    // labels "100" and "10" once gave the panels different left edges)
+    let first_column = |c: (u8, u8, u8), rows: std::ops::Range<u32>| {
+        img.enumerate_pixels()
+            .filter(|(_, y, p)| rows.contains(y) && near(p, c, 4))
+            .map(|(x, _, _)| x)
+            .min()
+            .unwrap()
+    };
+    assert_eq!(
+        first_column(PALETTE[0], 0..500),
+        first_column(PALETTE[1], 500..1000)
+    );
     // no panels: an error naming the argument
     let e = kontakt_plot::line_plots(&png, &[], (800, 600)).unwrap_err();
     assert!(e.to_string().contains("plots"), "{e}");

@@ -6,13 +6,13 @@
 //! physics is `kontakt_case::run_bearing_case`.
 
 use crate::cli::BearingArgs;
+pub use crate::commands::bearing_plot::{
+    write_element_plot, write_load_plot, write_slice_map, write_slice_plot,
+};
 use crate::output::Num;
 use anyhow::{Context, Result};
 use kontakt_case::bearing_case::{BallPart, BearingElements, BearingSpec, RollerPart};
 use kontakt_case::{BearingCase, BearingReport, run_bearing_case};
-pub use crate::commands::bearing_plot::{
-    write_element_plot, write_load_plot, write_slice_map, write_slice_plot,
-};
 use std::io::Write;
 use std::path::Path;
 

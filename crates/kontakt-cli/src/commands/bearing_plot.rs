@@ -72,9 +72,9 @@ fn slice_quantity(p: &RollerPart) -> SliceQuantity<'_> {
 
 /// The bearing's name for titles.
 fn bearing_name(r: &BearingReport) -> String {
-    r.name.clone().unwrap_or_else(|| {
-        format!("{} bearing", r.bearing_type.replace('_', " "))
-    })
+    r.name
+        .clone()
+        .unwrap_or_else(|| format!("{} bearing", r.bearing_type.replace('_', " ")))
 }
 
 /// Check the format of a plot file before anything is drawn (an input error naming it).
@@ -323,7 +323,12 @@ pub fn write_element_plot(path: &Path, r: &BearingReport) -> Result<()> {
 /// roller's mean value (the reference of a uniform distribution).
 pub fn slice_curve(q: &SliceQuantity) -> (Vec<(f64, f64)>, f64) {
     let row = q.every_roller.get(q.roller).map_or(&[][..], Vec::as_slice);
-    let pts: Vec<(f64, f64)> = q.position_mm.iter().copied().zip(row.iter().copied()).collect();
+    let pts: Vec<(f64, f64)> = q
+        .position_mm
+        .iter()
+        .copied()
+        .zip(row.iter().copied())
+        .collect();
     let mean = row.iter().sum::<f64>() / row.len().max(1) as f64;
     (pts, mean)
 }
@@ -463,9 +468,9 @@ pub fn map_data(p: &RollerPart, q: &SliceQuantity) -> MapData {
         shifted(p.roller_loads[a].azimuth_deg).total_cmp(&shifted(p.roller_loads[b].azimuth_deg))
     });
     let dy = 360.0 / z.max(1) as f64;
-    let y_min = rows
-        .first()
-        .map_or(-180.0, |&k| shifted(p.roller_loads[k].azimuth_deg) - 0.5 * dy);
+    let y_min = rows.first().map_or(-180.0, |&k| {
+        shifted(p.roller_loads[k].azimuth_deg) - 0.5 * dy
+    });
     let mut values = Vec::with_capacity(nx * z);
     for &k in &rows {
         let row = &q.every_roller[k];
@@ -574,8 +579,14 @@ mod tests {
             assert_eq!(a, hot.azimuth_deg, "{name}");
             let (dir, label) = d.arrow.clone().unwrap();
             let f = r.force_n;
-            assert!((dir - f[1].atan2(f[0]).to_degrees()).abs() < 1e-12, "{name}");
-            assert!(label.contains(&format!("{:.0} N", f[0].hypot(f[1]))), "{label}");
+            assert!(
+                (dir - f[1].atan2(f[0]).to_degrees()).abs() < 1e-12,
+                "{name}"
+            );
+            assert!(
+                label.contains(&format!("{:.0} N", f[0].hypot(f[1]))),
+                "{label}"
+            );
             let (c, half, _) = d.arc.clone().unwrap();
             let eps = r.load_zone_epsilon.unwrap();
             assert_eq!(half >= 180.0, eps >= 1.0, "{name}: ε = {eps}");
@@ -601,7 +612,11 @@ mod tests {
     /// by azimuth upwards, one row height (360°/Z) apart, the load zone in the middle.
     #[test]
     fn the_map_is_hottest_at_the_most_loaded_slice() {
-        for name in ["bearing_32008x.toml", "bearing_32216.toml", "bearing_nu_crb.toml"] {
+        for name in [
+            "bearing_32008x.toml",
+            "bearing_32216.toml",
+            "bearing_nu_crb.toml",
+        ] {
             let r = example(name);
             let p = r.rollers().unwrap();
             let q = slice_quantity(p);
@@ -643,10 +658,16 @@ mod tests {
                 );
             }
             let hot = d.y_min + (j as f64 + 0.5) * d.dy;
-            assert!(hot > d.y_min + 90.0 && hot < d.y_min + 270.0, "{name}: {hot}");
+            assert!(
+                hot > d.y_min + 90.0 && hot < d.y_min + 270.0,
+                "{name}: {hot}"
+            );
             // the slice columns cover the roller: the centres are the report's positions
             for (i, x) in m.position_mm.iter().enumerate() {
-                assert!((d.x_min + (i as f64 + 0.5) * d.dx - x).abs() < 1e-9, "{name}");
+                assert!(
+                    (d.x_min + (i as f64 + 0.5) * d.dx - x).abs() < 1e-9,
+                    "{name}"
+                );
             }
         }
     }
