@@ -222,7 +222,8 @@ pub fn write_load_plot(path: &Path, r: &BearingReport) -> Result<()> {
 }
 
 /// Every element's load as a bar at its azimuth; below it the rib load of a tapered roller
-/// bearing or the loaded contact angle of a ball bearing (with the free contact angle).
+/// bearing or the contact angle of every loaded ball of a ball bearing (with the free
+/// contact angle).
 pub fn write_element_plot(path: &Path, r: &BearingReport) -> Result<()> {
     check_format(path)?;
     let mut loads = element_loads(r);
@@ -258,9 +259,11 @@ pub fn write_element_plot(path: &Path, r: &BearingReport) -> Result<()> {
             None,
         ),
         BearingElements::Rollers(_) => (Vec::new(), None),
+        // a ball without load touches neither raceway: it has no contact angle
         BearingElements::Balls(p) => (
             p.ball_loads
                 .iter()
+                .filter(|w| w.load_n > 0.0)
                 .map(|w| (w.azimuth_deg, w.contact_angle_deg))
                 .collect(),
             Some(p.free_contact_angle_deg),
@@ -278,7 +281,7 @@ pub fn write_element_plot(path: &Path, r: &BearingReport) -> Result<()> {
         let free_line = [(x.0, free), (x.1, free)];
         let series = [
             Series {
-                label: "loaded contact angle",
+                label: "contact angle of a loaded ball",
                 points: &second,
                 color: ANGLE_COLOR,
                 style: LineStyle::Markers,
