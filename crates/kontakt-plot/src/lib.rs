@@ -562,7 +562,7 @@ pub fn polar_plot(path: &Path, plot: &PolarPlot, size: (u32, u32)) -> Result<(),
     if let Some(k) = plot
         .points
         .iter()
-        .position(|&(a, v)| !a.is_finite() || !(v.is_finite() && v >= 0.0))
+        .position(|&(a, v)| !(a.is_finite() && v.is_finite() && v >= 0.0))
     {
         let (a, v) = plot.points[k];
         return Err(PlotError::invalid(
