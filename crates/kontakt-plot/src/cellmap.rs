@@ -10,8 +10,8 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use crate::colormap::viridis;
 use crate::field::{draw_colorbar, draw_marker};
 use crate::render::{
-    DrawResultExt, Figure, Metrics, Target, draw_line_of_text, draw_title, rgb, text, text_size,
-    title_height,
+    DrawResultExt, Figure, Metrics, Target, desc_height, draw_line_of_text, draw_title,
+    labels_width, rgb, text, text_size, title_height,
 };
 use crate::ticks::{TickAxis, Ticks, nice_ticks, ticks_fitting};
 use crate::{CellMap, PlotError};
@@ -59,13 +59,7 @@ impl Figure for &CellFigure<'_> {
         let (y0, y1) = (map.y_min, map.y_min + map.ny as f64 * map.dy);
 
         let tick_style = text(m.tick);
-        let desc_h = |s: &str| {
-            if s.is_empty() {
-                0
-            } else {
-                (m.label * 1.35).round() as i32
-            }
-        };
+        let desc_h = |s: &str| desc_height(s, &m);
         let tick_h = (m.tick * 1.25).round() as i32;
         let label_dist = 2 * m.tick_len;
         let title_h = title_height(map.title, &m);
@@ -74,13 +68,7 @@ impl Figure for &CellFigure<'_> {
         } else {
             (m.tick * 1.5).round() as i32
         };
-        let width_of = |t: &Ticks| -> Result<i32, PlotError> {
-            let mut wmax = 0;
-            for s in t.labels() {
-                wmax = wmax.max(text_size(root, &s, &tick_style)?.0);
-            }
-            Ok(wmax)
-        };
+        let width_of = |t: &Ticks| labels_width(root, t, &tick_style);
         let legend_h = if map.max_marker.is_some() {
             (m.tick * 2.2).round() as i32
         } else {

@@ -7,8 +7,8 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use crate::colormap::viridis;
 use crate::contour::contour_zero;
 use crate::render::{
-    DrawResultExt, Figure, Metrics, Target, draw_centered, draw_line_of_text, draw_title, rgb,
-    text, text_size, title_height,
+    DrawResultExt, Figure, Metrics, Target, desc_height, draw_centered, draw_line_of_text,
+    draw_title, labels_width, rgb, text, text_size, title_height,
 };
 use crate::ticks::{TickAxis, Ticks, nice_ticks, ticks_fitting};
 use crate::{Arrow, FieldMap, PlotError};
@@ -311,13 +311,7 @@ impl Figure for FieldFigure<'_> {
 
         let tick_style = text(m.tick);
         let desc_style = text(m.label);
-        let desc_h = |s: &str| {
-            if s.is_empty() {
-                0
-            } else {
-                (m.label * 1.35).round() as i32
-            }
-        };
+        let desc_h = |s: &str| desc_height(s, &m);
         let tick_h = (m.tick * 1.25).round() as i32;
         let label_dist = 2 * m.tick_len;
         let title_h = title_height(map.title, &m);
@@ -335,13 +329,7 @@ impl Figure for FieldFigure<'_> {
         // Title and captions above the figure.
         let head_h = title_h + caption_h + note_h;
 
-        let width_of = |t: &Ticks| -> Result<i32, PlotError> {
-            let mut wmax = 0;
-            for s in t.labels() {
-                wmax = wmax.max(text_size(root, &s, &tick_style)?.0);
-            }
-            Ok(wmax)
-        };
+        let width_of = |t: &Ticks| labels_width(root, t, &tick_style);
         // Widest tick labels over the tick sets we may end up using.
         let widest = |lo: f64, hi: f64, max_count: usize| -> Result<i32, PlotError> {
             let mut wmax = 0;

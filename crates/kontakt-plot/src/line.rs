@@ -6,7 +6,8 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use crate::render::{
-    DrawResultExt, Figure, Metrics, Target, draw_title, rgb, text, text_size, title_height,
+    DrawResultExt, Figure, Metrics, Target, desc_height, draw_title, labels_width, rgb, text,
+    text_size, title_height,
 };
 use crate::ticks::{TickAxis, Ticks, log_ticks, nice_ticks, ticks_fitting};
 use crate::{LinePlot, LineStyle, PlotError, Series};
@@ -231,22 +232,10 @@ fn draw_plot<DB: DrawingBackend>(
         draw_title(root, plot.title, &m, m.margin)?;
         let title_bottom = m.margin + title_height(plot.title, &m);
         let tick_style = text(m.tick);
-        let desc_h = |s: &str| {
-            if s.is_empty() {
-                0
-            } else {
-                (m.label * 1.35).round() as i32
-            }
-        };
+        let desc_h = |s: &str| desc_height(s, &m);
         let tick_h = (m.tick * 1.25).round() as i32;
         let label_dist = 2 * m.tick_len;
-        let width_of = |t: &Ticks| -> Result<i32, PlotError> {
-            let mut wmax = 0;
-            for s in t.labels() {
-                wmax = wmax.max(text_size(root, &s, &tick_style)?.0);
-            }
-            Ok(wmax)
-        };
+        let width_of = |t: &Ticks| labels_width(root, t, &tick_style);
         // Widest x tick labels over the tick sets we may end up using.
         let mut x_tick_w = 0;
         if plot.x_log {

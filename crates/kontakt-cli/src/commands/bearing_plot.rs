@@ -70,6 +70,23 @@ fn slice_quantity(p: &RollerPart) -> SliceQuantity<'_> {
     SliceQuantity::load_per_length(p)
 }
 
+/// The rollers of `r`, or an input error naming `flag` for a ball bearing (it has no slices).
+fn rollers_of<'a>(r: &'a BearingReport, flag: &str) -> Result<&'a RollerPart> {
+    r.rollers().ok_or_else(|| {
+        crate::commands::InputError(format!(
+            "{flag}: a ball bearing has no slices (use --plot for the ball loads)"
+        ))
+        .into()
+    })
+}
+
+/// The index and value of the largest of `values` (the first of equal ones).
+fn largest(values: impl Iterator<Item = f64>) -> (usize, f64) {
+    values
+        .enumerate()
+        .fold((0, f64::MIN), |b, (k, v)| if v > b.1 { (k, v) } else { b })
+}
+
 /// The bearing's name for titles.
 fn bearing_name(r: &BearingReport) -> String {
     r.name
@@ -143,10 +160,8 @@ pub fn polar_data(r: &BearingReport) -> PolarData {
         .into_iter()
         .map(|(a, q)| (a, q.max(0.0)))
         .collect();
-    let (a_max, q_max) = points
-        .iter()
-        .copied()
-        .fold((0.0, f64::MIN), |b, p| if p.1 > b.1 { p } else { b });
+    let (k, q_max) = largest(points.iter().map(|p| p.1));
+    let a_max = points.get(k).map_or(0.0, |p| p.0);
     let label = format!(
         "{} load [N], largest {:.0} N at ψ = {:.1}°",
         noun(r),
@@ -340,12 +355,7 @@ pub fn slice_curve(q: &SliceQuantity) -> (Vec<(f64, f64)>, f64) {
 /// slice, with the roller's mean as a dashed line: the edge peaks and the crowning show
 /// against it.
 pub fn write_slice_plot(path: &Path, r: &BearingReport) -> Result<()> {
-    let Some(p) = r.rollers() else {
-        return Err(crate::commands::InputError(
-            "--slice-plot: a ball bearing has no slices (use --plot for the ball loads)".into(),
-        )
-        .into());
-    };
+    let p = rollers_of(r, "--slice-plot")?;
     check_format(path)?;
     let q = slice_quantity(p);
     let (points, mean) = slice_curve(&q);
@@ -494,21 +504,11 @@ pub fn map_data(p: &RollerPart, q: &SliceQuantity) -> MapData {
 /// A per-slice quantity (today the load per length) over every roller's slices: position
 /// along the roller × the roller's azimuth, with the largest value marked.
 pub fn write_slice_map(path: &Path, r: &BearingReport) -> Result<()> {
-    let Some(p) = r.rollers() else {
-        return Err(crate::commands::InputError(
-            "--map: a ball bearing has no slices (use --plot for the ball loads)".into(),
-        )
-        .into());
-    };
+    let p = rollers_of(r, "--map")?;
     check_format(path)?;
     let q = slice_quantity(p);
     let d = map_data(p, &q);
-    let (k, v) = d
-        .values
-        .iter()
-        .copied()
-        .enumerate()
-        .fold((0, f64::MIN), |b, (k, v)| if v > b.1 { (k, v) } else { b });
+    let (k, v) = largest(d.values.iter().copied());
     let at_roller = d.rows.get(k / d.nx.max(1)).copied().unwrap_or(0);
     let marker = format!(
         "largest {} {v:.1} {}: roller at ψ = {:.1}°, {:.2} mm from its middle",
@@ -572,11 +572,8 @@ mod tests {
             let p = r.rollers().unwrap();
             let d = polar_data(&r);
             assert_eq!(d.points.len(), p.rollers, "{name}");
-            let (a, q) = d
-                .points
-                .iter()
-                .copied()
-                .fold((0.0, f64::MIN), |b, x| if x.1 > b.1 { x } else { b });
+            let (k, q) = largest(d.points.iter().map(|x| x.1));
+            let a = d.points[k].0;
             assert_eq!(q, p.max_roller_load_n, "{name}");
             let hot = &p.roller_loads[p.most_loaded_roller.roller];
             assert_eq!(a, hot.azimuth_deg, "{name}");
@@ -625,23 +622,11 @@ mod tests {
             let q = slice_quantity(p);
             let d = map_data(p, &q);
             assert_eq!((d.nx, d.ny), (p.slices, p.rollers), "{name}");
-            let k = d
-                .values
-                .iter()
-                .copied()
-                .enumerate()
-                .fold((0, f64::MIN), |b, (k, v)| if v > b.1 { (k, v) } else { b })
-                .0;
+            let k = largest(d.values.iter().copied()).0;
             let (i, j) = (k % d.nx, k / d.nx);
             let m = &p.most_loaded_roller;
             assert_eq!(d.rows[j], m.roller, "{name}");
-            let slice = m
-                .load_per_length_n_per_mm
-                .iter()
-                .copied()
-                .enumerate()
-                .fold((0, f64::MIN), |b, (k, v)| if v > b.1 { (k, v) } else { b })
-                .0;
+            let slice = largest(m.load_per_length_n_per_mm.iter().copied()).0;
             assert_eq!(
                 d.values[k], m.load_per_length_n_per_mm[slice],
                 "{name}: the map's largest value"
