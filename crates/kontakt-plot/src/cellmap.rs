@@ -26,12 +26,7 @@ pub(crate) struct CellFigure<'a> {
 /// The index and the centre of the cell with the largest value (the first of equal ones),
 /// if any is > 0.
 pub(crate) fn hottest(map: &CellMap) -> Option<(usize, (f64, f64))> {
-    let (k, v) =
-        map.values.iter().enumerate().fold(
-            (0, f64::MIN),
-            |best, (k, &v)| if v > best.1 { (k, v) } else { best },
-        );
-    (v > 0.0).then(|| {
+    crate::field::argmax_positive(map.values).map(|k| {
         (
             k,
             (

@@ -208,14 +208,19 @@ fn cell_value(map: &FieldMap, x: f64, y: f64, fill_edge: bool) -> f64 {
     best.1
 }
 
-/// Centre of the cell with the largest value (the first of equal ones), if any is > 0.
-pub(crate) fn argmax_centre(map: &FieldMap) -> Option<(f64, f64)> {
+/// The index of the largest of `values` (the first of equal ones), if any is > 0.
+pub(crate) fn argmax_positive(values: &[f64]) -> Option<usize> {
     let (k, v) =
-        map.values.iter().enumerate().fold(
+        values.iter().enumerate().fold(
             (0, f64::MIN),
             |best, (k, &v)| if v > best.1 { (k, v) } else { best },
         );
-    (v > 0.0).then(|| {
+    (v > 0.0).then_some(k)
+}
+
+/// Centre of the cell with the largest value (the first of equal ones), if any is > 0.
+pub(crate) fn argmax_centre(map: &FieldMap) -> Option<(f64, f64)> {
+    argmax_positive(map.values).map(|k| {
         (
             map.x_min + ((k % map.nx) as f64 + 0.5) * map.dx,
             map.y_min + ((k / map.nx) as f64 + 0.5) * map.dy,
