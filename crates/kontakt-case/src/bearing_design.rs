@@ -5,7 +5,7 @@
 //! `kontakt_bearing::geometry::design` before the case is read; every key written in the
 //! file wins over the generated one, and what depends on it is generated from it (a given
 //! roller diameter sets the count). The rules and how representative they are:
-//! `docs/bearing-model.md` §10.
+//! `docs/bearing-model.md` §11.
 //!
 //! `B_mm` is the width: the cone width B of a tapered roller bearing, the height H of a
 //! thrust bearing. `e` (the catalogue factor, ISO 281 `e = 1.5 tan α`) is required for a

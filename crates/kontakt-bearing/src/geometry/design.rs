@@ -42,7 +42,7 @@
 //! # How representative
 //!
 //! The ratios were set on the bearings with internal data in `examples/` and are checked
-//! against them (tests in this module, `docs/bearing-model.md` §10): published, 32008 X
+//! against them (tests in this module, `docs/bearing-model.md` §11): published, 32008 X
 //! (Liu 2022: d_m 54, Z 23, D_we 6.4885, L 13.66, α 14.17°, α_i 11.17°) and 32216
 //! (Wingertszahn et al. 2023: d_m 108.5, Z 16, D_we 17, L 22.7); representative (the
 //! examples' own assumptions), 6205, 7205, NU 208, 81107. A generated design is a

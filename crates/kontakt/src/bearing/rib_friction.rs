@@ -40,7 +40,7 @@
 //! Under any other load (radial load, moment) every roller has its own cup load from a
 //! bearing model; [`RibFrictionModel::evaluate_rollers`] and
 //! [`RibFrictionModel::sweep_rollers`] take each roller's loads and sum the rollers'
-//! powers (module `rollers`, `docs/bearing-model.md` §9).
+//! powers (module `rollers`, `docs/bearing-model.md` §10).
 //!
 //! Units: mm, N, MPa, rad/s (speeds), °C, kg/m³ (roller density); torque N·mm, power W.
 //!
