@@ -634,5 +634,7 @@ impl ConvexRing for RollerBearingSolver {
     }
 }
 
+pub mod coupled;
+
 #[cfg(test)]
 mod tests;
