@@ -4,8 +4,8 @@
 //! (`solve_from` the previous displacement); a deep-groove ball bearing with 10 balls under
 //! a combined load, cold; a cylindrical roller bearing of 14 rollers × 31 slices under a
 //! radial load, cold, for reference; the TRB with coupled slices (half-space strips),
-//! cold. The solvers are built once outside the timed closure; the timed call is the solve. The Newton iterations of each case are printed once
-//! (stderr). Figures in docs/PERFORMANCE.md, "Bearing load distribution (issue 28)".
+//! cold. The solvers are built once outside the timed closure; the timed call is the
+//! solve. The Newton iterations of each case are printed once (stderr). Figures in docs/PERFORMANCE.md, "Bearing load distribution (issue 28)".
 
 #[path = "../tests/support/cases.rs"]
 mod cases;
