@@ -58,6 +58,8 @@ use kontakt::hertz::validity::point_size;
 use kontakt::solve::{SolveStatus, Termination};
 use kontakt::{Error, Result};
 use kontakt_bearing::ball_equilibrium::BallBearingSolver;
+use crate::bearing_slices::{SliceModel, SliceSolver, pressure_map};
+use kontakt_bearing::equilibrium::coupled::CoupledSliceSolver;
 use kontakt_bearing::equilibrium::{Dof, RingLoad, RollerBearingSolver};
 use kontakt_bearing::geometry::{
     BallBearing, BallBearingKind, DEFAULT_SLICES, RollerBearing, RollerBearingKind,
@@ -192,6 +194,10 @@ pub struct RollerSpec {
     /// The outer raceway's profile; default straight.
     #[serde(default = "ProfileSpec::straight")]
     pub outer_profile: ProfileSpec,
+    /// How the slices carry load: `"iso"` (ISO/TS 16281, default) or `"coupled"`
+    /// (half-space strips; reports the pressure of every slice).
+    #[serde(default)]
+    pub slice_model: SliceModel,
 }
 
 fn default_slices() -> usize {
@@ -460,6 +466,9 @@ pub struct RollerRow {
     pub max_load_per_length_n_per_mm: f64,
     /// The largest slice approach, mm (negative: lifted off by that much).
     pub approach_mm: f64,
+    /// `slice_model = "coupled"`: the largest slice pressure of either raceway, MPa.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_pressure_mpa: Option<f64>,
 }
 
 /// The slices of the most loaded roller.
@@ -476,6 +485,12 @@ pub struct SliceTable {
     pub load_per_length_n_per_mm: Vec<f64>,
     /// Slice approaches, mm.
     pub approach_mm: Vec<f64>,
+    /// `slice_model = "coupled"`: the peak pressure of every slice on the inner raceway, MPa.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub inner_pressure_mpa: Option<Vec<f64>>,
+    /// `slice_model = "coupled"`: the same on the outer raceway, MPa.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub outer_pressure_mpa: Option<Vec<f64>>,
 }
 
 /// The solver's status.
@@ -595,6 +610,13 @@ pub struct RollerPart {
     pub roller_loads: Vec<RollerRow>,
     /// The slices of the most loaded roller.
     pub most_loaded_roller: SliceTable,
+    /// `slice_model = "coupled"`: the largest slice pressure of any roller, MPa.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_pressure_mpa: Option<f64>,
+    /// `slice_model = "coupled"`: the pressure along every roller, slice by slice (the
+    /// larger of the two raceways), `[roller][slice]`, MPa.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub slice_pressure_mpa: Option<Vec<Vec<f64>>>,
 }
 
 /// The report keys of a ball bearing.
@@ -816,6 +838,8 @@ pub(crate) fn run_bearing_case_unchecked(case: &BearingCase) -> Result<BearingRe
 pub(crate) enum Planned {
     /// A roller bearing.
     Roller(RollerBearingSolver),
+    /// A roller bearing with coupled slices.
+    Coupled(Box<CoupledSliceSolver>),
     /// A ball bearing, with its case keys for the errors of a solve.
     Ball {
         solver: BallBearingSolver,
@@ -845,6 +869,10 @@ pub(crate) fn plan(case: &BearingCase) -> Result<(Planned, &'static str)> {
         }
     };
     let bearing = roller_bearing(kind, s, label)?;
+    if s.slice_model == SliceModel::Coupled {
+        let solver = CoupledSliceSolver::new(bearing).map_err(map_bearing_field)?;
+        return Ok((Planned::Coupled(Box::new(solver)), label));
+    }
     let solver = RollerBearingSolver::new(bearing).map_err(map_bearing_field)?;
     Ok((Planned::Roller(solver), label))
 }
@@ -861,6 +889,7 @@ pub(crate) fn solve_planned(
     let load = ring_load(load)?;
     match planned {
         Planned::Roller(solver) => roller_report(case, label, solver, &load, start),
+        Planned::Coupled(solver) => roller_report(case, label, solver.as_mut(), &load, start),
         Planned::Ball { solver, spec, keys } => {
             ball_report(case, label, solver, spec, keys, &load, start)
         }
@@ -868,10 +897,10 @@ pub(crate) fn solve_planned(
 }
 
 /// The report of a roller bearing's solve.
-fn roller_report(
+fn roller_report<S: SliceSolver>(
     case: &BearingCase,
     label: &'static str,
-    solver: &mut RollerBearingSolver,
+    solver: &mut S,
     load: &RingLoad,
     start: Option<[f64; 5]>,
 ) -> Result<BearingReport> {
@@ -892,6 +921,7 @@ fn roller_report(
     let width = b.effective_length_mm / ns as f64;
     let loads = solver.slice_loads();
     let approaches = solver.slice_approaches();
+    let pressures = pressure_map(solver);
     let mut rows = Vec::with_capacity(b.rollers);
     let mut most = 0;
     let mut q_max = f64::NEG_INFINITY;
@@ -911,6 +941,7 @@ fn roller_report(
             rib_load_n: r.rib_n,
             max_load_per_length_n_per_mm: slice_max / width,
             approach_mm: r.max_approach_mm,
+            max_pressure_mpa: pressures.as_ref().map(|(_, m)| m[j]),
         });
     }
     let slice_loads = loads[most * ns..(most + 1) * ns].to_vec();
@@ -920,6 +951,12 @@ fn roller_report(
         load_per_length_n_per_mm: slice_loads.iter().map(|q| q / width).collect(),
         load_n: slice_loads,
         approach_mm: approaches[most * ns..(most + 1) * ns].to_vec(),
+        inner_pressure_mpa: solver
+            .slice_pressures()
+            .map(|(i, _)| i[most * ns..(most + 1) * ns].to_vec()),
+        outer_pressure_mpa: solver
+            .slice_pressures()
+            .map(|(_, o)| o[most * ns..(most + 1) * ns].to_vec()),
     };
     let elements = BearingElements::Rollers(RollerPart {
         rollers: b.rollers,
@@ -934,6 +971,10 @@ fn roller_report(
             .fold(0.0, f64::max),
         roller_loads: rows,
         most_loaded_roller: most_loaded,
+        max_pressure_mpa: pressures
+            .as_ref()
+            .map(|(_, m)| m.iter().copied().fold(0.0, f64::max)),
+        slice_pressure_mpa: pressures.map(|(map, _)| map),
     });
     let mut report = report(case, label, elements, sol.displacement, sol.load);
     report.solver = solver_echo(&sol.status);
