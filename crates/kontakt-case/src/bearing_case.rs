@@ -52,13 +52,13 @@
 //! methods; a solve that stagnates at the round-off floor (residual at most 1e-8 of the
 //! load, 1000 times the tolerance) is reported with a warning.
 
+use crate::bearing_slices::{SliceModel, SliceSolver, pressure_map};
 use crate::common::{MaterialSpec, SCHEMA_VERSION, in_degrees, material, parse_toml};
 use crate::validity::{ContactSize, Size, checked, checked_report};
 use kontakt::hertz::validity::point_size;
 use kontakt::solve::{SolveStatus, Termination};
 use kontakt::{Error, Result};
 use kontakt_bearing::ball_equilibrium::BallBearingSolver;
-use crate::bearing_slices::{SliceModel, SliceSolver, pressure_map};
 use kontakt_bearing::equilibrium::coupled::CoupledSliceSolver;
 use kontakt_bearing::equilibrium::{Dof, RingLoad, RollerBearingSolver};
 use kontakt_bearing::geometry::{

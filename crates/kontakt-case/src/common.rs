@@ -512,7 +512,9 @@ fn find_bad_value(
     }
     // the value serde quotes is before ", expected ...": a valid name listed after it
     // (`slice_model = "fem"`: expected `iso` or `coupled`) is not the bad value
-    let message = message.split_once(", expected ").map_or(message, |(m, _)| m);
+    let message = message
+        .split_once(", expected ")
+        .map_or(message, |(m, _)| m);
     let quoted = |v: &toml::Value| match v {
         toml::Value::String(s) => {
             message.contains(&format!("{s:?}")) || message.contains(&format!("`{s}`"))

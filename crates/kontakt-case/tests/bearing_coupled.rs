@@ -22,7 +22,10 @@ fn run(text: &str) -> kontakt::Result<BearingReport> {
 fn example_32216(value: Option<&str>) -> String {
     let text = std::fs::read_to_string(examples().join("bearing_32216.toml")).unwrap();
     match value {
-        Some(v) => text.replace("slices = 31\n", &format!("slices = 31\nslice_model = {v}\n")),
+        Some(v) => text.replace(
+            "slices = 31\n",
+            &format!("slices = 31\nslice_model = {v}\n"),
+        ),
         None => text,
     }
 }
@@ -85,7 +88,9 @@ fn the_default_is_the_iso_slice_law_and_reports_as_before() {
 
 #[test]
 fn a_bad_slice_model_is_named() {
-    let e = run(&example_32216(Some("\"fem\""))).unwrap_err().to_string();
+    let e = run(&example_32216(Some("\"fem\"")))
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("slice_model"), "{e}");
     assert!(e.contains("iso") && e.contains("coupled"), "{e}");
     let e = run(&example_32216(Some("3"))).unwrap_err().to_string();

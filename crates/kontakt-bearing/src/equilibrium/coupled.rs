@@ -40,8 +40,8 @@
 //! solution; its Jacobian also gives the roller's stiffness for the ring's Newton.
 
 use super::{
-    RingLoad, RollerBearingSolver, RollerLoad, RollerSolution, free_and_target,
-    load_scale, warm_start,
+    RingLoad, RollerBearingSolver, RollerLoad, RollerSolution, free_and_target, load_scale,
+    warm_start,
 };
 use crate::geometry::RollerBearingKind;
 use crate::newton::{relative_residual, to_rows};
@@ -380,7 +380,11 @@ impl SliceContact {
         if q.iter().all(|&v| v <= 0.0) {
             // a cold start: the ISO slice law
             for (qi, &d) in q.iter_mut().zip(delta) {
-                *qi = if d > 0.0 { c_start * d.powf(10.0 / 9.0) } else { 0.0 };
+                *qi = if d > 0.0 {
+                    c_start * d.powf(10.0 / 9.0)
+                } else {
+                    0.0
+                };
             }
         }
         let tol = 1e-14 * dmax;
@@ -391,9 +395,9 @@ impl SliceContact {
             self.g.iter_mut().for_each(|v| *v = 0.0);
             // columns of every loaded slice and of every penetrating one
             let (dref, dref_q) = self.reference(tab, q_total);
-            for j in 0..n {
-                if q[j] > 0.0 {
-                    self.column(tab, j, q[j], q_floor);
+            for (j, &qj) in q.iter().enumerate() {
+                if qj > 0.0 {
+                    self.column(tab, j, qj, q_floor);
                 }
             }
             let mut worst: f64 = 0.0;
@@ -406,9 +410,9 @@ impl SliceContact {
                     worst = worst.max((-self.gap[i]).max(0.0));
                 }
             }
-            for i in 0..n {
-                if q[i] > 0.0 || self.gap[i] < -tol {
-                    if q[i] <= 0.0 {
+            for (i, &qi) in q.iter().enumerate() {
+                if qi > 0.0 || self.gap[i] < -tol {
+                    if qi <= 0.0 {
                         // a slice closing: its half-width from a small fraction of the mean
                         self.column(tab, i, 0.0, 1e-2 * q_total / n as f64);
                     }
@@ -437,7 +441,13 @@ impl SliceContact {
             for a in 0..m {
                 self.rhs[a] = -self.gap[self.idx[a]];
             }
-            lu_solve(&self.lu[..m * m], m, &self.perm[..m], &mut self.rhs[..m], false);
+            lu_solve(
+                &self.lu[..m * m],
+                m,
+                &self.perm[..m],
+                &mut self.rhs[..m],
+                false,
+            );
             for a in 0..m {
                 let i = self.idx[a];
                 q[i] = (q[i] + self.rhs[a]).max(0.0);
@@ -445,7 +455,11 @@ impl SliceContact {
             if q.iter().all(|&v| v <= 0.0) {
                 // everything let go in one step: restart from the ISO law
                 for (qi, &d) in q.iter_mut().zip(delta) {
-                    *qi = if d > 0.0 { c_start * d.powf(10.0 / 9.0) } else { 0.0 };
+                    *qi = if d > 0.0 {
+                        c_start * d.powf(10.0 / 9.0)
+                    } else {
+                        0.0
+                    };
                 }
             }
         }
@@ -486,11 +500,9 @@ impl SliceContact {
 }
 
 /// In-place LU factorisation with partial pivoting of the row-major `m × m` matrix `a`:
-/// `P A = L U`, `perm[i]` the original row at position i. False when singular.
-fn lu_factor(a: &mut [f64], m: usize, perm: &mut [usize]) -> bool {
-    for (i, p) in perm.iter_mut().enumerate() {
-        *p = i;
-    }
+/// `P A = L U`, with `swaps[k]` the row exchanged with row k at step k (LAPACK's `ipiv`).
+/// False when singular.
+fn lu_factor(a: &mut [f64], m: usize, swaps: &mut [usize]) -> bool {
     for k in 0..m {
         let mut piv = k;
         let mut big = a[k * m + k].abs();
@@ -503,11 +515,11 @@ fn lu_factor(a: &mut [f64], m: usize, perm: &mut [usize]) -> bool {
         if !(big > 0.0) || !big.is_finite() {
             return false;
         }
+        swaps[k] = piv;
         if piv != k {
             for c in 0..m {
                 a.swap(k * m + c, piv * m + c);
             }
-            perm.swap(k, piv);
         }
         let d = a[k * m + k];
         for i in k + 1..m {
@@ -524,89 +536,33 @@ fn lu_factor(a: &mut [f64], m: usize, perm: &mut [usize]) -> bool {
 }
 
 /// Solve `A x = b` (or `Aᵀ x = b` when `transposed`) in place with the factors of
-/// [`lu_factor`]; uses `b`'s storage only (a permutation is applied through a cycle-free
-/// second pass over `b`).
-fn lu_solve(lu: &[f64], m: usize, perm: &[usize], b: &mut [f64], transposed: bool) {
+/// [`lu_factor`].
+fn lu_solve(lu: &[f64], m: usize, swaps: &[usize], b: &mut [f64], transposed: bool) {
     if !transposed {
-        // b ← P b: the permutation in place by cycles would need marks; m is small, so
-        // apply it with swaps that follow the recorded row exchanges' net result
-        permute(b, perm, false);
+        // P b, then L (unit) forward and U backward
+        for (k, &p) in swaps.iter().enumerate() {
+            b.swap(k, p);
+        }
         for i in 0..m {
-            let mut s = b[i];
-            for c in 0..i {
-                s -= lu[i * m + c] * b[c];
-            }
-            b[i] = s;
+            let s: f64 = (0..i).map(|c| lu[i * m + c] * b[c]).sum();
+            b[i] -= s;
         }
         for i in (0..m).rev() {
-            let mut s = b[i];
-            for c in i + 1..m {
-                s -= lu[i * m + c] * b[c];
-            }
-            b[i] = s / lu[i * m + i];
+            let s: f64 = (i + 1..m).map(|c| lu[i * m + c] * b[c]).sum();
+            b[i] = (b[i] - s) / lu[i * m + i];
         }
     } else {
-        // Uᵀ w = b, Lᵀ v = w, x = Pᵀ v
+        // Aᵀ = Uᵀ Lᵀ P: Uᵀ forward, Lᵀ (unit) backward, then Pᵀ
         for i in 0..m {
-            let mut s = b[i];
-            for c in 0..i {
-                s -= lu[c * m + i] * b[c];
-            }
-            b[i] = s / lu[i * m + i];
+            let s: f64 = (0..i).map(|c| lu[c * m + i] * b[c]).sum();
+            b[i] = (b[i] - s) / lu[i * m + i];
         }
         for i in (0..m).rev() {
-            let mut s = b[i];
-            for c in i + 1..m {
-                s -= lu[c * m + i] * b[c];
-            }
-            b[i] = s;
+            let s: f64 = (i + 1..m).map(|c| lu[c * m + i] * b[c]).sum();
+            b[i] -= s;
         }
-        permute(b, perm, true);
-    }
-}
-
-/// `b ← P b` (`b'[i] = b[perm[i]]`) or `b ← Pᵀ b` (`b'[perm[i]] = b[i]`) in place, by
-/// following the permutation's cycles (each cycle once: its smallest index leads).
-fn permute(b: &mut [f64], perm: &[usize], transposed: bool) {
-    let m = perm.len();
-    for start in 0..m {
-        // lead only from the smallest index of each cycle
-        let mut j = perm[start];
-        let mut smallest = true;
-        while j != start {
-            if j < start {
-                smallest = false;
-                break;
-            }
-            j = perm[j];
-        }
-        if !smallest {
-            continue;
-        }
-        if !transposed {
-            let first = b[start];
-            let mut i = start;
-            loop {
-                let nxt = perm[i];
-                if nxt == start {
-                    b[i] = first;
-                    break;
-                }
-                b[i] = b[nxt];
-                i = nxt;
-            }
-        } else {
-            let mut carry = b[start];
-            let mut i = perm[start];
-            loop {
-                let tmp = b[i];
-                b[i] = carry;
-                carry = tmp;
-                if i == start {
-                    break;
-                }
-                i = perm[i];
-            }
+        for (k, &p) in swaps.iter().enumerate().rev() {
+            b.swap(k, p);
         }
     }
 }
@@ -863,7 +819,9 @@ impl CoupledSliceSolver {
                 } else {
                     Termination::Diverged
                 };
-                note = Some("the line search found no decrease (round-off floor or a load the bearing cannot carry)");
+                note = Some(
+                    "the line search found no decrease (round-off floor or a load the bearing cannot carry)",
+                );
                 self.evaluate(&u)?;
                 break;
             }

@@ -68,7 +68,13 @@ fn strip_function_matches_its_integral_and_asymptotes() {
     println!("strip function Φ(t): table against quadrature, worst {worst:.1e}");
     // the exact asymptotes outside the table and their continuity at its ends
     let big = |t: f64| 0.25 * PI * ((4.0 * t).ln() + 0.5) + PI / (64.0 * t * t);
-    for t in [1e3, 1e5, U_MAX.exp() * 0.999_999, U_MAX.exp() * 1.000_001, 1e9] {
+    for t in [
+        1e3,
+        1e5,
+        U_MAX.exp() * 0.999_999,
+        U_MAX.exp() * 1.000_001,
+        1e9,
+    ] {
         assert!((strip_function(t) / big(t) - 1.0).abs() < 1e-10, "t = {t}");
     }
     let small = |t: f64| t * (4.0 / t).ln();
@@ -108,7 +114,11 @@ fn lu_solves_plain_and_transposed() {
         let mut b = [0.0; 4];
         for i in 0..m {
             for j in 0..m {
-                let aij = if transposed { a0[j * m + i] } else { a0[i * m + j] };
+                let aij = if transposed {
+                    a0[j * m + i]
+                } else {
+                    a0[i * m + j]
+                };
                 b[i] += aij * x[j];
             }
         }
@@ -181,7 +191,7 @@ fn fft_roller(
         threads: Some(1),
         ..SolverOptions::default()
     };
-    let mut solver = HalfSpaceSolver::new(grid.clone(), E_STAR, options).unwrap();
+    let mut solver = HalfSpaceSolver::new(grid, E_STAR, options).unwrap();
     let report = solver
         .solve(&gap, Control::Force(load), Start::Cold)
         .unwrap();
@@ -207,8 +217,14 @@ fn fft_roller(
 /// The crowned roller of the half-space comparison: D = 10 mm on a flat (R = 5 mm),
 /// L = 10 mm, the ISO/TS 16281 logarithmic profile, 31 slices.
 fn crowned(slices: usize) -> (SliceContact, Profile) {
-    let c = SliceContact::new(10.0, slices, &[5.0], E_STAR, 35_948.0 * 10f64.powf(8.0 / 9.0))
-        .unwrap();
+    let c = SliceContact::new(
+        10.0,
+        slices,
+        &[5.0],
+        E_STAR,
+        35_948.0 * 10f64.powf(8.0 / 9.0),
+    )
+    .unwrap();
     (c, Profile::iso(10.0, 10.0))
 }
 
@@ -316,7 +332,6 @@ fn straight_roller_shows_the_edge_peak_and_the_2d_hertz_pressure_inside() {
     assert!(seen[0] < seen[1] && seen[1] < seen[2]);
 }
 
-
 #[test]
 fn uniform_load_on_a_straight_roller_has_the_iso_mean_approach() {
     // G for uniform slice loads, averaged over the slices, is the ISO law's approach
@@ -404,7 +419,11 @@ fn trb_combined_load_converges_with_the_residual_and_stiffness_checked() {
     // per-slice pressures: the most loaded roller's peak and its end slices
     let ns = 31;
     let j = (0..20)
-        .max_by(|&a, &b| s.roller_loads()[a].outer_n.total_cmp(&s.roller_loads()[b].outer_n))
+        .max_by(|&a, &b| {
+            s.roller_loads()[a]
+                .outer_n
+                .total_cmp(&s.roller_loads()[b].outer_n)
+        })
         .unwrap();
     let p = &s.inner_pressures()[j * ns..(j + 1) * ns];
     println!(
@@ -421,7 +440,9 @@ fn trb_combined_load_converges_with_the_residual_and_stiffness_checked() {
     println!("  stiffness: central differences within 1e-6, asymmetry {asym:.1e}");
     let tilted = [u[0], u[1], u[2], 2e-4, -1e-4];
     let asym = stiffness_against_central_differences(&mut s, tilted);
-    println!("  tilted by (2e-4, -1e-4) rad: central differences within 1e-6, asymmetry {asym:.1e}");
+    println!(
+        "  tilted by (2e-4, -1e-4) rad: central differences within 1e-6, asymmetry {asym:.1e}"
+    );
     assert!(asym < 1e-2);
 }
 
