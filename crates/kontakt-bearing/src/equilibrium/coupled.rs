@@ -41,10 +41,10 @@
 
 use super::{
     RingLoad, RollerBearingSolver, RollerLoad, RollerSolution, free_and_target, load_scale,
-    warm_start,
+    load_zone, roller_solution, warm_start,
 };
 use crate::geometry::RollerBearingKind;
-use crate::newton::{relative_residual, to_rows};
+use crate::newton::{reaction_scale, relative_residual, to_rows};
 use kontakt::solve::{SolveStatus, Termination};
 use kontakt::{Error, Result};
 use nalgebra::{Matrix5, Vector5};
@@ -750,9 +750,7 @@ impl CoupledSliceSolver {
         }
         let (mut f, mut k) = self.evaluate(&u)?;
         if f_ref == 0.0 {
-            f_ref = (0..5)
-                .map(|i| if i < 3 { f[i].abs() } else { f[i].abs() / r })
-                .fold(0.0, f64::max);
+            f_ref = reaction_scale(&f, r);
         }
         let scaled = |f: &Vector5<f64>| -> f64 {
             (0..5)
@@ -763,13 +761,13 @@ impl CoupledSliceSolver {
                 })
                 .sum()
         };
+        let mut termination = if f_ref == 0.0 {
+            Termination::Converged
+        } else {
+            Termination::MaxIterations
+        };
+        let (mut note, mut iterations) = (None, 0);
         let mut res = relative_residual(&f, &target, &free, f_ref, r);
-        let mut termination = Termination::MaxIterations;
-        let mut note = None;
-        let mut iterations = 0;
-        if f_ref == 0.0 {
-            termination = Termination::Converged;
-        }
         while termination == Termination::MaxIterations && iterations < self.max_iterations {
             if res <= self.tolerance {
                 termination = Termination::Converged;
@@ -844,7 +842,7 @@ impl CoupledSliceSolver {
         termination: Termination,
         iterations: usize,
         res: f64,
-        mut note: Option<&'static str>,
+        note: Option<&'static str>,
     ) -> RollerSolution {
         let ns = self.delta.len();
         let mut qmax: f64 = 0.0;
@@ -868,28 +866,15 @@ impl CoupledSliceSolver {
             };
             qmax = qmax.max(q);
         }
-        if termination == Termination::Converged && qmax == 0.0 {
-            note = Some("every roller is lifted off: zero load");
-        }
         let bearing = self.iso.bearing();
-        let (sa, ca) = bearing.contact_angle_rad.sin_cos();
-        let dr = u[0].hypot(u[1]) * ca;
-        let tiny = 1e-12 * u[0].abs().max(u[1].abs()).max(u[2].abs());
-        let load_zone = if bearing.kind != RollerBearingKind::Thrust && dr > tiny {
-            let eps = (u[2] * sa + dr - 0.5 * bearing.clearance_mm) / (2.0 * dr);
-            (eps.is_finite() && eps > 0.0).then_some(eps)
-        } else {
-            None
-        };
-        RollerSolution {
-            displacement: u.into(),
-            load: f.into(),
-            stiffness: to_rows(&k),
-            status: SolveStatus::new(termination, iterations, res),
-            note,
-            load_zone,
-            max_roller_load_n: qmax,
-        }
+        let load_zone = load_zone(
+            &u,
+            bearing.contact_angle_rad,
+            bearing.clearance_mm,
+            bearing.kind == RollerBearingKind::Thrust,
+        );
+        let status = SolveStatus::new(termination, iterations, res);
+        roller_solution(u, f, &k, status, note, qmax, load_zone)
     }
 }
 
