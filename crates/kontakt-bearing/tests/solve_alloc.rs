@@ -43,7 +43,7 @@ fn ball_bearing_solves_allocate_nothing_cold_or_warm() {
     assert_eq!(n, 0, "warm ball solve");
 }
 
-/// The coupled slices (docs/bearing-model.md §9) on the TRB: none after the first solve,
+/// The coupled slices (docs/bearing-model.md §10) on the TRB: none after the first solve,
 /// which builds the process-wide strip table.
 #[test]
 fn coupled_slice_solves_allocate_nothing_cold_or_warm() {

@@ -52,7 +52,9 @@
 //! methods; a solve that stagnates at the round-off floor (residual at most 1e-8 of the
 //! load, 1000 times the tolerance) is reported with a warning.
 
-use crate::bearing_slices::{SliceModel, SliceSolver, pressure_map};
+use crate::bearing_slices::{
+    RollerPressures, SliceModel, SlicePressures, SliceSolver, pressure_map,
+};
 use crate::common::{MaterialSpec, SCHEMA_VERSION, in_degrees, material, parse_toml};
 use crate::validity::{ContactSize, Size, checked, checked_report};
 use kontakt::hertz::validity::point_size;
@@ -485,12 +487,10 @@ pub struct SliceTable {
     pub load_per_length_n_per_mm: Vec<f64>,
     /// Slice approaches, mm.
     pub approach_mm: Vec<f64>,
-    /// `slice_model = "coupled"`: the peak pressure of every slice on the inner raceway, MPa.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub inner_pressure_mpa: Option<Vec<f64>>,
-    /// `slice_model = "coupled"`: the same on the outer raceway, MPa.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub outer_pressure_mpa: Option<Vec<f64>>,
+    /// `slice_model = "coupled"`: the slice pressures (keys `inner_pressure_mpa`,
+    /// `outer_pressure_mpa`).
+    #[serde(flatten)]
+    pub pressure: Option<Box<SlicePressures>>,
 }
 
 /// The solver's status.
@@ -610,13 +610,14 @@ pub struct RollerPart {
     pub roller_loads: Vec<RollerRow>,
     /// The slices of the most loaded roller.
     pub most_loaded_roller: SliceTable,
-    /// `slice_model = "coupled"`: the largest slice pressure of any roller, MPa.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub max_pressure_mpa: Option<f64>,
-    /// `slice_model = "coupled"`: the pressure along every roller, slice by slice (the
-    /// larger of the two raceways), `[roller][slice]`, MPa.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub slice_pressure_mpa: Option<Vec<Vec<f64>>>,
+    /// Every roller's slice loads per unit length, N/mm: one row per roller (in the order
+    /// of `roller_loads`), one value per slice (at `most_loaded_roller.position_mm`); 0
+    /// where a slice is lifted off. The map of `kontakt bearing --map`.
+    pub slice_load_per_length_n_per_mm: Vec<Vec<f64>>,
+    /// `slice_model = "coupled"`: the pressure along every roller (keys
+    /// `max_pressure_mpa`, `slice_pressure_mpa`).
+    #[serde(flatten)]
+    pub pressure: Option<Box<RollerPressures>>,
 }
 
 /// The report keys of a ball bearing.
@@ -951,12 +952,12 @@ fn roller_report<S: SliceSolver>(
         load_per_length_n_per_mm: slice_loads.iter().map(|q| q / width).collect(),
         load_n: slice_loads,
         approach_mm: approaches[most * ns..(most + 1) * ns].to_vec(),
-        inner_pressure_mpa: solver
-            .slice_pressures()
-            .map(|(i, _)| i[most * ns..(most + 1) * ns].to_vec()),
-        outer_pressure_mpa: solver
-            .slice_pressures()
-            .map(|(_, o)| o[most * ns..(most + 1) * ns].to_vec()),
+        pressure: solver.slice_pressures().map(|(i, o)| {
+            Box::new(SlicePressures {
+                inner_pressure_mpa: i[most * ns..(most + 1) * ns].to_vec(),
+                outer_pressure_mpa: o[most * ns..(most + 1) * ns].to_vec(),
+            })
+        }),
     };
     let elements = BearingElements::Rollers(RollerPart {
         rollers: b.rollers,
@@ -971,10 +972,17 @@ fn roller_report<S: SliceSolver>(
             .fold(0.0, f64::max),
         roller_loads: rows,
         most_loaded_roller: most_loaded,
-        max_pressure_mpa: pressures
-            .as_ref()
-            .map(|(_, m)| m.iter().copied().fold(0.0, f64::max)),
-        slice_pressure_mpa: pressures.map(|(map, _)| map),
+        slice_load_per_length_n_per_mm: loads
+            .chunks_exact(ns)
+            .take(b.rollers)
+            .map(|c| c.iter().map(|q| q / width).collect())
+            .collect(),
+        pressure: pressures.map(|(map, m)| {
+            Box::new(RollerPressures {
+                max_pressure_mpa: m.iter().copied().fold(0.0, f64::max),
+                slice_pressure_mpa: map,
+            })
+        }),
     });
     let mut report = report(case, label, elements, sol.displacement, sol.load);
     report.solver = solver_echo(&sol.status);

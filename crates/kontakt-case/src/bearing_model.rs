@@ -98,5 +98,8 @@ impl BearingModel {
     }
 }
 
+mod element;
+pub use element::{BearingElement, BearingElementOutput, BearingElementStatus, prescribed_load};
+
 #[cfg(test)]
 mod tests;

@@ -1,7 +1,7 @@
 //! The slice model of a roller bearing case, `[bearing] slice_model`: the ISO/TS 16281
 //! slice law (independent slices, the default) or coupled slices (the slices of a roller
 //! interact through the elastic half-space, so that the pressure along a crowned or tilted
-//! roller and the edge peak at its ends come out; `docs/bearing-model.md` §9). Both
+//! roller and the edge peak at its ends come out; `docs/bearing-model.md` §10). Both
 //! solvers answer the report's questions through [`SliceSolver`].
 
 use kontakt::Result;
@@ -23,6 +23,25 @@ pub enum SliceModel {
     /// the mean approach of a uniformly loaded roller fixed by the ISO law; reports the
     /// peak pressure of every slice (MPa). Steel on steel.
     Coupled,
+}
+
+/// The slice pressures of one roller in the report (`slice_model = "coupled"`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SlicePressures {
+    /// The peak pressure of every slice on the inner raceway, MPa.
+    pub inner_pressure_mpa: Vec<f64>,
+    /// The same on the outer raceway, MPa.
+    pub outer_pressure_mpa: Vec<f64>,
+}
+
+/// The pressure along every roller in the report (`slice_model = "coupled"`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RollerPressures {
+    /// The largest slice pressure of any roller, MPa.
+    pub max_pressure_mpa: f64,
+    /// The pressure along every roller, slice by slice (the larger of the two raceways),
+    /// `[roller][slice]`, MPa.
+    pub slice_pressure_mpa: Vec<Vec<f64>>,
 }
 
 /// What a roller bearing report needs of a solver.

@@ -405,7 +405,7 @@ fn prescribed_displacement_returns_the_force() {
     assert_eq!(p.displacement_mm[0], dx);
 }
 
-// `[bearing] slice_model = "coupled"` (docs/bearing-model.md §9): the pressure along every
+// `[bearing] slice_model = "coupled"` (docs/bearing-model.md §10): the pressure along every
 // roller, the default left as it was, a bad value named.
 
 /// The 32216 example with `slice_model = value` in `[bearing]`.
@@ -425,7 +425,7 @@ fn coupled_slices_report_the_pressure_along_every_roller() {
     let report = run(&example_32216(Some("\"coupled\""))).unwrap();
     assert!(report.solver.converged);
     let r = report.rollers().unwrap();
-    let map = r.slice_pressure_mpa.as_ref().unwrap();
+    let map = &r.pressure.as_ref().unwrap().slice_pressure_mpa;
     assert_eq!(map.len(), 16);
     assert!(map.iter().all(|row| row.len() == 31));
     // the rollers balance the applied force (20 kN radial, 10 kN axial)
@@ -439,12 +439,12 @@ fn coupled_slices_report_the_pressure_along_every_roller() {
         assert!((f[i] - want).abs() <= 1e-9 * 20_000.0, "F[{i}] = {}", f[i]);
     }
     // the largest pressure is the map's, and the most loaded roller's slices are in it
-    let pmax = r.max_pressure_mpa.unwrap();
+    let pmax = r.pressure.as_ref().unwrap().max_pressure_mpa;
     let from_map = map.iter().flatten().copied().fold(0.0, f64::max);
     assert_eq!(pmax, from_map);
     let most = &r.most_loaded_roller;
-    let inner = most.inner_pressure_mpa.as_ref().unwrap();
-    let outer = most.outer_pressure_mpa.as_ref().unwrap();
+    let inner = &most.pressure.as_ref().unwrap().inner_pressure_mpa;
+    let outer = &most.pressure.as_ref().unwrap().outer_pressure_mpa;
     for k in 0..31 {
         assert_eq!(map[most.roller][k], inner[k].max(outer[k]));
     }

@@ -1,7 +1,7 @@
 //! Coupled slices: the slices of one roller contact interact through the elastic
 //! half-space, so that the pressure along a crowned or tilted roller and the edge peak at
 //! its ends come out (strip model in the manner of de Mul, Kalker & Vree 1998 and Teutsch &
-//! Sauer 2004; derivation in `docs/bearing-model.md` §9).
+//! Sauer 2004; derivation in `docs/bearing-model.md` §10).
 //!
 //! **Strips.** Slice j (width `w = L/n`, centre `x_j`) carries the load `q_j` (N) as a
 //! pressure uniform along the slice and semi-elliptical across it,
