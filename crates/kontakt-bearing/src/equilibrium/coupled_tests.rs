@@ -130,22 +130,27 @@ fn lu_solves_plain_and_transposed() {
 }
 
 /// The rigid interference of a roller on a flat at the approach `a0`: `a0 − drop(x)`.
-fn interference(c: &SliceContact, profile: &Profile, a0: f64) -> Vec<f64> {
+fn interference(c: &SliceContact, profile: &Profile, a0: f64, tilt: f64) -> Vec<f64> {
     c.positions()
         .iter()
-        .map(|&x| a0 - profile.drop(x))
+        .map(|&x| a0 + tilt * x - profile.drop(x))
         .collect()
 }
 
 /// Solve one roller contact for the roller load `load` (N) by a scalar Newton on the
 /// approach; the slice loads.
-fn solve_for_load(c: &mut SliceContact, profile: &Profile, load: f64) -> (f64, Vec<f64>) {
+fn solve_for_load(
+    c: &mut SliceContact,
+    profile: &Profile,
+    load: f64,
+    tilt: f64,
+) -> (f64, Vec<f64>) {
     let n = c.positions().len();
     let mut q = vec![0.0; n];
     let c_s = 35_948.0 * 10f64.powf(8.0 / 9.0) / n as f64;
     let mut a0 = (load / (c_s * n as f64)).powf(0.9);
     for _ in 0..100 {
-        let d = interference(c, profile, a0);
+        let d = interference(c, profile, a0, tilt);
         let r = c.solve(&d, &mut q, c_s).expect("slice solve");
         let err = r.load_n - load;
         if err.abs() <= 1e-12 * load {
@@ -162,8 +167,7 @@ fn solve_for_load(c: &mut SliceContact, profile: &Profile, load: f64) -> (f64, V
 /// (MPa).
 fn fft_roller(
     c: &SliceContact,
-    radius: f64,
-    profile: &Profile,
+    (radius, profile, tilt): (f64, &Profile, f64),
     load: f64,
     cells_per_slice: usize,
     cells_across: usize,
@@ -172,7 +176,7 @@ fn fft_roller(
     let w = c.width();
     let length = w * n as f64;
     // the widest half-width: the largest line load at most 2.5 times the mean
-    let b = c.half_width(2.5 * load / n as f64, 0);
+    let b = c.half_width(if tilt == 0.0 { 2.5 } else { 6.0 } * load / n as f64, 0);
     let nx = n * cells_per_slice + 8;
     let half_x = 0.5 * nx as f64 * w / cells_per_slice as f64;
     let grid = Grid2::centered(half_x, 1.2 * b, nx, cells_across).unwrap();
@@ -182,7 +186,7 @@ fn fft_roller(
             if x.abs() > 0.5 * length {
                 f64::INFINITY
             } else {
-                y * y / (2.0 * radius) + profile.drop(x).min(1.0)
+                y * y / (2.0 * radius) + profile.drop(x).min(1.0) + tilt * (0.5 * length - x)
             }
         })
         .collect();
@@ -238,10 +242,11 @@ fn compare(
     c: &mut SliceContact,
     profile: &Profile,
     load: f64,
+    tilt: f64,
 ) -> (Vec<f64>, Vec<f64>, Vec<f64>, f64) {
-    let (_, q) = solve_for_load(c, profile, load);
+    let (_, q) = solve_for_load(c, profile, load, tilt);
     let ours: Vec<f64> = q.iter().map(|&qi| c.pressure(qi, 0)).collect();
-    let (line, peak, pmax) = fft_roller(c, 5.0, profile, load, 8, 48);
+    let (line, peak, pmax) = fft_roller(c, (5.0, profile, tilt), load, 8, 48);
     let fft: Vec<f64> = line
         .iter()
         .map(|&p| (p * E_STAR / (PI * 5.0)).sqrt())
@@ -261,7 +266,7 @@ fn crowned_roller_pressure_against_the_fft_half_space() {
     ] {
         let (mut c, profile) = crowned(slices);
         let n = c.positions().len();
-        let (ours, fft, peak, pmax) = compare(&mut c, &profile, load);
+        let (ours, fft, peak, pmax) = compare(&mut c, &profile, load, 0.0);
         let our_peak = ours.iter().copied().fold(0.0, f64::max);
         // the edge: the outermost slice entirely inside the FFT's contact (its outer
         // neighbour loaded too)
@@ -295,7 +300,7 @@ fn straight_roller_shows_the_edge_peak_and_the_2d_hertz_pressure_inside() {
     let mut seen = Vec::new();
     for slices in [31, 61, 121] {
         let mut c = roller_on_flat(slices);
-        let (_, q) = solve_for_load(&mut c, &profile, 5_000.0);
+        let (_, q) = solve_for_load(&mut c, &profile, 5_000.0, 0.0);
         let n = slices;
         let p: Vec<f64> = q.iter().map(|&qi| c.pressure(qi, 0)).collect();
         let (centre, end) = (p[n / 2], p[n - 1]);
@@ -309,7 +314,7 @@ fn straight_roller_shows_the_edge_peak_and_the_2d_hertz_pressure_inside() {
         assert!(end > 1.2 * centre && end > inner_min);
         seen.push(end);
         if slices == 31 {
-            let (ours, fft, peak, _) = compare(&mut c, &profile, 5_000.0);
+            let (ours, fft, peak, _) = compare(&mut c, &profile, 5_000.0, 0.0);
             println!(
                 "  against the FFT half-space: end slice ours {:.1}, FFT {:.1} MPa ({:+.2} %), centre ours {:.1}, FFT cell max {:.1} MPa ({:+.2} %)",
                 ours[n - 1],
@@ -357,5 +362,41 @@ fn uniform_load_on_a_straight_roller_has_the_iso_mean_approach() {
             q[n - 1] / q[n / 2]
         );
         assert!(r.load_n > q_total && r.load_n < 1.1 * q_total);
+    }
+}
+
+#[test]
+fn tilted_crowned_roller_against_the_fft_half_space() {
+    // the ISO-crowned roller tilted by 0.5 and 1 mrad at 3 kN: the load moves to one end
+    for (slices, tilt) in [(31, 5e-4), (61, 5e-4), (31, 1e-3), (61, 1e-3)] {
+        let (mut c, profile) = crowned(slices);
+        let n = c.positions().len();
+        let (ours, fft, _, pmax) = compare(&mut c, &profile, 3_000.0, tilt);
+        let our_peak = ours.iter().copied().fold(0.0, f64::max);
+        let k_peak = (0..n).max_by(|&a, &b| ours[a].total_cmp(&ours[b])).unwrap();
+        // slices entirely inside the FFT's contact (both neighbours loaded); the outermost
+        // of them at each end, next to where the contact ends, apart
+        let inside: Vec<usize> = (1..n - 1)
+            .filter(|&k| fft[k - 1] > 0.0 && fft[k + 1] > 0.0)
+            .collect();
+        let (first, last) = (inside[0], inside[inside.len() - 1]);
+        let dev = |k: usize| (ours[k] / fft[k] - 1.0).abs();
+        let interior = inside
+            .iter()
+            .filter(|&&k| k != first && k != last)
+            .map(|&k| dev(k))
+            .fold(0.0, f64::max);
+        let edge = dev(first).max(dev(last));
+        println!(
+            "ISO crowned roller, {n} slices, tilted {:.1} mrad, 3 kN: peak ours {our_peak:.1} MPa at slice {k_peak}, FFT {pmax:.1} MPa ({:+.2} %); slices inside the contact within {:.2} %, the outermost ones (slices {first}, {last}) within {:.2} %",
+            tilt * 1e3,
+            100.0 * (our_peak / pmax - 1.0),
+            100.0 * interior,
+            100.0 * edge
+        );
+        assert!(k_peak > n / 2, "the load moves toward +x");
+        assert!((our_peak / pmax - 1.0).abs() < 0.02);
+        assert!(interior < 0.02);
+        assert!(edge < 0.04);
     }
 }
