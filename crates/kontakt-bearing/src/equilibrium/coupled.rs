@@ -367,8 +367,10 @@ impl SliceContact {
     /// `c_start` (N/mm^(10/9)) is the ISO slice stiffness of a cold start.
     ///
     /// # Errors
-    /// [`Error::InvalidInput`] naming `slices` when the iteration does not settle or the
-    /// system is singular (not expected; reported rather than returning a wrong load).
+    /// [`Error::NotConverged`] when the iteration does not settle within 100 steps (its
+    /// residual the largest gap over the largest interference), [`Error::InvalidInput`]
+    /// naming `slices` when the system is singular (neither expected; reported rather than
+    /// returning a wrong load).
     pub fn solve(&mut self, delta: &[f64], q: &mut [f64], c_start: f64) -> Result<ContactResponse> {
         let n = self.n;
         let tab = table();
@@ -463,11 +465,11 @@ impl SliceContact {
                 }
             }
         }
-        Err(Error::invalid(
-            "slices",
-            n as f64,
-            "a coupled slice solve that converges within 100 iterations",
-        ))
+        Err(Error::NotConverged {
+            what: "the coupled slice solve of a roller".into(),
+            iterations: 100,
+            residual: best / dmax,
+        })
     }
 
     /// Load, moment and their derivatives from the factorised active-set Jacobian.
@@ -714,13 +716,20 @@ impl CoupledSliceSolver {
     }
 
     /// Solve the inner ring's equilibrium under `load`, starting from the ISO slice
-    /// solution (the same bearing, the same load).
+    /// solution (the same bearing, the same load). A load the ISO model ends with
+    /// `Diverged` or `MaxIterations` on returns that solution, its status and note (the
+    /// slice buffers are then not the coupled model's).
     ///
     /// # Errors
-    /// As [`RollerBearingSolver::solve`]; a roller's slice solve that does not converge.
+    /// As [`RollerBearingSolver::solve`]; [`Error::NotConverged`] for a roller's slice
+    /// solve that does not converge.
     pub fn solve(&mut self, load: &RingLoad) -> Result<RollerSolution> {
         let start = self.iso.solve(load)?;
-        if !start.status.converged() {
+        if !matches!(
+            start.status.termination,
+            Termination::Converged | Termination::Stagnated
+        ) {
+            // a load the ISO model cannot carry: its status and note
             return Ok(start);
         }
         self.q.copy_from_slice(self.iso.slice_loads());
