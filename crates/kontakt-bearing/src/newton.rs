@@ -83,9 +83,7 @@ pub(crate) fn newton<M: ConvexRing>(
         // every component (filtered to the free ones it was round-off, 1e-13 N, and a
         // prescribed dx on a cylindrical bearing never converged; case test
         // `prescribed_displacement_returns_the_force`)
-        f_ref = (0..5)
-            .map(|i| if i < 3 { f[i].abs() } else { f[i].abs() / r })
-            .fold(0.0, f64::max);
+        f_ref = reaction_scale(&f, r);
     }
     let mut res = relative_residual(&f, &target, &free, f_ref, r);
     let mut termination = Termination::MaxIterations;
@@ -201,6 +199,13 @@ pub(crate) fn newton<M: ConvexRing>(
         k,
         buffers_at_u,
     }
+}
+
+/// The load scale of a reaction `f`: its largest force, or moment over `r` (mm).
+pub(crate) fn reaction_scale(f: &Vector5<f64>, r: f64) -> f64 {
+    (0..5)
+        .map(|i| if i < 3 { f[i].abs() } else { f[i].abs() / r })
+        .fold(0.0, f64::max)
 }
 
 /// A nalgebra matrix as rows.

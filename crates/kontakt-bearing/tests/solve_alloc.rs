@@ -12,6 +12,7 @@ use cases::{crb, crb_load, dgbb, dgbb_load, trb, trb_load};
 use counting_alloc::allocations;
 use kontakt_bearing::ball_equilibrium::BallBearingSolver;
 use kontakt_bearing::equilibrium::RollerBearingSolver;
+use kontakt_bearing::equilibrium::coupled::CoupledSliceSolver;
 
 #[test]
 fn roller_bearing_solves_allocate_nothing_cold_or_warm() {
@@ -40,4 +41,20 @@ fn ball_bearing_solves_allocate_nothing_cold_or_warm() {
     let (warm, n) = allocations(|| solver.solve_from(&dgbb_load(1.01), start).expect("solve"));
     assert!(warm.status.converged());
     assert_eq!(n, 0, "warm ball solve");
+}
+
+/// The coupled slices (docs/bearing-model.md §12) on the TRB: none after the first solve,
+/// which builds the process-wide strip table.
+#[test]
+fn coupled_slice_solves_allocate_nothing_cold_or_warm() {
+    let mut solver = CoupledSliceSolver::new(trb()).expect("valid TRB");
+    let first = solver.solve(&trb_load(1.0)).expect("solve");
+    assert!(first.status.converged());
+    let (cold, n) = allocations(|| solver.solve(&trb_load(1.0)).expect("solve"));
+    assert!(cold.status.converged());
+    assert_eq!(n, 0, "cold coupled TRB solve");
+    let start = cold.displacement;
+    let (warm, n) = allocations(|| solver.solve_from(&trb_load(1.01), start).expect("solve"));
+    assert!(warm.status.converged());
+    assert_eq!(n, 0, "warm coupled TRB solve");
 }

@@ -52,12 +52,16 @@
 //! methods; a solve that stagnates at the round-off floor (residual at most 1e-8 of the
 //! load, 1000 times the tolerance) is reported with a warning.
 
-use crate::common::{MaterialSpec, SCHEMA_VERSION, in_degrees, material};
+use crate::bearing_slices::{
+    RollerPressures, SliceModel, SlicePressures, SliceSolver, pressure_map,
+};
+use crate::common::{MaterialSpec, SCHEMA_VERSION, in_degrees, material, parse_toml};
 use crate::validity::{ContactSize, Size, checked, checked_report};
 use kontakt::hertz::validity::point_size;
 use kontakt::solve::{SolveStatus, Termination};
 use kontakt::{Error, Result};
 use kontakt_bearing::ball_equilibrium::BallBearingSolver;
+use kontakt_bearing::equilibrium::coupled::CoupledSliceSolver;
 use kontakt_bearing::equilibrium::{Dof, RingLoad, RollerBearingSolver};
 use kontakt_bearing::geometry::{
     BallBearing, BallBearingKind, DEFAULT_SLICES, RollerBearing, RollerBearingKind,
@@ -200,6 +204,10 @@ pub struct RollerSpec {
     /// ([`crate::bearing_design`]); absent: every key given.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub boundary: Option<crate::bearing_design::BoundarySpec>,
+    /// How the slices carry load: `"iso"` (ISO/TS 16281, default) or `"coupled"`
+    /// (half-space strips; reports the pressure of every slice).
+    #[serde(default)]
+    pub slice_model: SliceModel,
 }
 
 fn default_slices() -> usize {
@@ -468,6 +476,9 @@ pub struct RollerRow {
     pub max_load_per_length_n_per_mm: f64,
     /// The largest slice approach, mm (negative: lifted off by that much).
     pub approach_mm: f64,
+    /// `slice_model = "coupled"`: the largest slice pressure of either raceway, MPa.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_pressure_mpa: Option<f64>,
 }
 
 /// The slices of the most loaded roller.
@@ -484,6 +495,10 @@ pub struct SliceTable {
     pub load_per_length_n_per_mm: Vec<f64>,
     /// Slice approaches, mm.
     pub approach_mm: Vec<f64>,
+    /// `slice_model = "coupled"`: the slice pressures (keys `inner_pressure_mpa`,
+    /// `outer_pressure_mpa`).
+    #[serde(flatten)]
+    pub pressure: Option<Box<SlicePressures>>,
 }
 
 /// The solver's status.
@@ -607,6 +622,10 @@ pub struct RollerPart {
     /// of `roller_loads`), one value per slice (at `most_loaded_roller.position_mm`); 0
     /// where a slice is lifted off. The map of `kontakt bearing --map`.
     pub slice_load_per_length_n_per_mm: Vec<Vec<f64>>,
+    /// `slice_model = "coupled"`: the pressure along every roller (keys
+    /// `max_pressure_mpa`, `slice_pressure_mpa`).
+    #[serde(flatten)]
+    pub pressure: Option<Box<RollerPressures>>,
 }
 
 /// The report keys of a ball bearing.
@@ -828,6 +847,8 @@ pub(crate) fn run_bearing_case_unchecked(case: &BearingCase) -> Result<BearingRe
 pub(crate) enum Planned {
     /// A roller bearing.
     Roller(RollerBearingSolver),
+    /// A roller bearing with coupled slices.
+    Coupled(Box<CoupledSliceSolver>),
     /// A ball bearing, with its case keys for the errors of a solve.
     Ball {
         solver: BallBearingSolver,
@@ -857,6 +878,10 @@ pub(crate) fn plan(case: &BearingCase) -> Result<(Planned, &'static str)> {
         }
     };
     let bearing = roller_bearing(kind, s, label)?;
+    if s.slice_model == SliceModel::Coupled {
+        let solver = CoupledSliceSolver::new(bearing).map_err(map_bearing_field)?;
+        return Ok((Planned::Coupled(Box::new(solver)), label));
+    }
     let solver = RollerBearingSolver::new(bearing).map_err(map_bearing_field)?;
     Ok((Planned::Roller(solver), label))
 }
@@ -873,6 +898,7 @@ pub(crate) fn solve_planned(
     let load = ring_load(load)?;
     match planned {
         Planned::Roller(solver) => roller_report(case, label, solver, &load, start),
+        Planned::Coupled(solver) => roller_report(case, label, solver.as_mut(), &load, start),
         Planned::Ball { solver, spec, keys } => {
             ball_report(case, label, solver, spec, keys, &load, start)
         }
@@ -880,10 +906,10 @@ pub(crate) fn solve_planned(
 }
 
 /// The report of a roller bearing's solve.
-fn roller_report(
+fn roller_report<S: SliceSolver>(
     case: &BearingCase,
     label: &'static str,
-    solver: &mut RollerBearingSolver,
+    solver: &mut S,
     load: &RingLoad,
     start: Option<[f64; 5]>,
 ) -> Result<BearingReport> {
@@ -904,6 +930,7 @@ fn roller_report(
     let width = b.effective_length_mm / ns as f64;
     let loads = solver.slice_loads();
     let approaches = solver.slice_approaches();
+    let pressures = pressure_map(solver);
     let mut rows = Vec::with_capacity(b.rollers);
     let mut most = 0;
     let mut q_max = f64::NEG_INFINITY;
@@ -923,6 +950,7 @@ fn roller_report(
             rib_load_n: r.rib_n,
             max_load_per_length_n_per_mm: slice_max / width,
             approach_mm: r.max_approach_mm,
+            max_pressure_mpa: pressures.as_ref().map(|(_, m)| m[j]),
         });
     }
     let slice_loads = loads[most * ns..(most + 1) * ns].to_vec();
@@ -932,6 +960,12 @@ fn roller_report(
         load_per_length_n_per_mm: slice_loads.iter().map(|q| q / width).collect(),
         load_n: slice_loads,
         approach_mm: approaches[most * ns..(most + 1) * ns].to_vec(),
+        pressure: solver.slice_pressures().map(|(i, o)| {
+            Box::new(SlicePressures {
+                inner_pressure_mpa: i[most * ns..(most + 1) * ns].to_vec(),
+                outer_pressure_mpa: o[most * ns..(most + 1) * ns].to_vec(),
+            })
+        }),
     };
     let elements = BearingElements::Rollers(RollerPart {
         rollers: b.rollers,
@@ -951,6 +985,12 @@ fn roller_report(
             .take(b.rollers)
             .map(|c| c.iter().map(|q| q / width).collect())
             .collect(),
+        pressure: pressures.map(|(map, m)| {
+            Box::new(RollerPressures {
+                max_pressure_mpa: m.iter().copied().fold(0.0, f64::max),
+                slice_pressure_mpa: map,
+            })
+        }),
     });
     let mut report = report(case, label, elements, sol.displacement, sol.load);
     report.solver = solver_echo(&sol.status);

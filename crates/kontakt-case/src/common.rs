@@ -516,6 +516,11 @@ fn find_bad_value(
     if leaves.len() <= 1 && !matches!(node_mut(&mut doc.clone(), at), Some(toml::Value::Table(_))) {
         return at.to_vec();
     }
+    // the value serde quotes is before ", expected ...": a valid name listed after it
+    // (`slice_model = "fem"`: expected `iso` or `coupled`) is not the bad value
+    let message = message
+        .split_once(", expected ")
+        .map_or(message, |(m, _)| m);
     let quoted = |v: &toml::Value| match v {
         toml::Value::String(s) => {
             message.contains(&format!("{s:?}")) || message.contains(&format!("`{s}`"))

@@ -35,9 +35,11 @@
 
 use super::BearingModel;
 use crate::bearing_case::{BearingCase, BearingLoadSpec, Planned, PrescribedSpec};
-use kontakt::solve::Termination;
+use crate::bearing_slices::SliceSolver;
+use kontakt::solve::{SolveStatus, Termination};
 use kontakt::{Error, Result};
 use kontakt_bearing::equilibrium::RingLoad;
+use kontakt_bearing::geometry::RollerBearing;
 
 /// What the rolling elements of an evaluated bearing do.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -172,14 +174,8 @@ impl BearingElement {
     /// rolling element's diameter; and the pitch radius, mm.
     fn limits(&self) -> (f64, f64, &'static str) {
         match &self.model.planned {
-            Planned::Roller(s) => {
-                let b = s.bearing();
-                (
-                    b.roller_diameter_mm,
-                    0.5 * b.pitch_diameter_mm,
-                    "bearing.roller_diameter_mm",
-                )
-            }
+            Planned::Roller(s) => roller_limits(s.bearing()),
+            Planned::Coupled(s) => roller_limits(s.bearing()),
             Planned::Ball { solver, .. } => {
                 let b = solver.bearing();
                 (
@@ -237,19 +233,8 @@ impl BearingElement {
         let load = RingLoad::displacements(u);
         let start = self.model.last;
         let (force, stiffness, status, note, max_load) = match &mut self.model.planned {
-            Planned::Roller(s) => {
-                let sol = match start {
-                    Some(w) => s.solve_from(&load, w),
-                    None => s.solve(&load),
-                }?;
-                (
-                    sol.load,
-                    sol.stiffness,
-                    sol.status,
-                    sol.note,
-                    sol.max_roller_load_n,
-                )
-            }
+            Planned::Roller(s) => roller_step(s, &load, start)?,
+            Planned::Coupled(s) => roller_step(s.as_mut(), &load, start)?,
             Planned::Ball { solver, .. } => {
                 let sol = match start {
                     Some(w) => solver.solve_from(&load, w),
@@ -314,4 +299,41 @@ impl BearingElement {
             },
         })
     }
+}
+
+/// The largest translation (the roller diameter), the pitch radius and the key naming the
+/// former, of a roller bearing.
+fn roller_limits(b: &RollerBearing) -> (f64, f64, &'static str) {
+    (
+        b.roller_diameter_mm,
+        0.5 * b.pitch_diameter_mm,
+        "bearing.roller_diameter_mm",
+    )
+}
+
+/// The load, stiffness, status, note and largest roller load of a roller bearing's solve
+/// under `load`, from `start` when given; either slice model.
+#[allow(clippy::type_complexity)]
+fn roller_step<S: SliceSolver>(
+    s: &mut S,
+    load: &RingLoad,
+    start: Option<[f64; 5]>,
+) -> Result<(
+    [f64; 5],
+    [[f64; 5]; 5],
+    SolveStatus,
+    Option<&'static str>,
+    f64,
+)> {
+    let sol = match start {
+        Some(w) => s.solve_from(load, w),
+        None => s.solve(load),
+    }?;
+    Ok((
+        sol.load,
+        sol.stiffness,
+        sol.status,
+        sol.note,
+        sol.max_roller_load_n,
+    ))
 }

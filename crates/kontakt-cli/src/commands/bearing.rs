@@ -129,9 +129,14 @@ fn roller_header(
     } else {
         String::new()
     };
+    let model = if p.pressure.is_some() {
+        "coupled slices: half-space strips, ISO/TS 16281 mean approach"
+    } else {
+        "ISO/TS 16281 slice law"
+    };
     writeln!(
         out,
-        "  {} rollers × {} slices{angles} (ISO/TS 16281 slice law)",
+        "  {} rollers × {} slices{angles} ({model})",
         p.rollers, p.slices
     )?;
     Ok(())
@@ -180,6 +185,20 @@ fn roller_table(out: &mut impl Write, r: &BearingReport, p: &RollerPart) -> Resu
             Num(row.rib_load_n),
             Num(row.max_load_per_length_n_per_mm),
             Num(row.approach_mm)
+        )?;
+    }
+    if let (Some(all), Some(most)) = (&p.pressure, &p.most_loaded_roller.pressure) {
+        let (pmax, inner) = (all.max_pressure_mpa, &most.inner_pressure_mpa);
+        let (first, last) = (inner[0], inner[inner.len() - 1]);
+        let centre = inner[inner.len() / 2];
+        writeln!(out)?;
+        writeln!(
+            out,
+            "  largest slice pressure {:.0} MPa; most loaded roller, inner raceway: {:.0} MPa at the centre, {:.0} / {:.0} MPa at the end slices (every slice in --json: slice_pressure_mpa)",
+            Num(pmax),
+            Num(centre),
+            Num(first),
+            Num(last)
         )?;
     }
     Ok(())
