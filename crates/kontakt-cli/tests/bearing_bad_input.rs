@@ -24,13 +24,16 @@ fn case(dir: &Path, file: &str, name: &str, edits: &[(&str, &str)], load: &str) 
     p
 }
 
+/// One bad case: the example, its edits (from, to), its `[load]` tables, the error's start.
+type BadCase<'a> = (&'a str, &'a [(&'a str, &'a str)], String, &'a str);
+
 /// Each item of the list, with the error's start: the key, the value and the
 /// reason. Those marked "was" ran before (a silent number, or exit 1 "did not converge").
 #[test]
 fn loads_and_geometries_a_bearing_cannot_take_are_named() {
     let dir = support::tempdir("bearing_bad_input", "named");
     let tilts_held = "[load.prescribed]\ntilt_x_rad = 0.0\ntilt_y_rad = 0.0";
-    let cases: [(&str, &[(&str, &str)], String, &str); 10] = [
+    let cases: [BadCase; 10] = [
         // a roller longer than its raceway (was: solved silently)
         (
             "bearing_nu_crb.toml",
