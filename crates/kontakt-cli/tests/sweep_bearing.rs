@@ -8,24 +8,7 @@ mod support;
 
 use std::collections::HashMap;
 use std::path::Path;
-use support::{run_json, tempdir};
-
-/// The rows of a results.csv as maps column → text, and the header.
-fn read_csv(path: &Path) -> (Vec<String>, Vec<HashMap<String, String>>) {
-    let mut r = csv::Reader::from_path(path).unwrap();
-    let header: Vec<String> = r.headers().unwrap().iter().map(str::to_string).collect();
-    let rows = r
-        .records()
-        .map(|rec| {
-            header
-                .iter()
-                .cloned()
-                .zip(rec.unwrap().iter().map(str::to_string))
-                .collect()
-        })
-        .collect();
-    (header, rows)
-}
+use support::{read_csv, run_json, tempdir};
 
 fn sweep(name: &str, out: &Path) -> (serde_json::Value, Vec<String>, Vec<HashMap<String, String>>) {
     let file = support::example(&format!("sweeps/{name}"));
@@ -38,8 +21,10 @@ fn sweep(name: &str, out: &Path) -> (serde_json::Value, Vec<String>, Vec<HashMap
         "csv",
         "--quiet",
     ]);
-    let (header, rows) = read_csv(&out.join("results.csv"));
-    (v, header, rows)
+    let path = out.join("results.csv");
+    let mut r = csv::Reader::from_path(&path).unwrap();
+    let header = r.headers().unwrap().iter().map(str::to_string).collect();
+    (v, header, read_csv(&path))
 }
 
 fn num(row: &HashMap<String, String>, key: &str) -> f64 {

@@ -63,20 +63,6 @@ def test_lifted_off_is_a_row_not_an_error(tmp_path: Path) -> None:
             assert r["warnings"] == "every roller is lifted off: zero load"
 
 
-@pytest.fixture(scope="module")
-def client():
-    # dask.distributed is pinned by tools/test: a missing install fails here, never skips.
-    from dask.distributed import Client, LocalCluster
-
-    cluster = LocalCluster(
-        n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None
-    )
-    c = Client(cluster)
-    yield c
-    c.close()
-    cluster.close()
-
-
 def test_dask_bearing_sweep_equals_the_local_one(client, tmp_path: Path) -> None:
     # chunks of 40 cases: 5 Dask tasks, each chunk cut across the warm-start blocks the
     # same way locally and remotely, so the rows are equal bit for bit

@@ -265,12 +265,11 @@ impl BlockModel {
             Ok(r) => r,
             Err(e) => return BearingRow::failed(Status::Invalid, e.to_string()),
         };
-        let p = &l.prescribed;
-        let unloaded = l.force_n.iter().chain(&l.moment_nmm).all(|f| *f == 0.0)
-            && [p.dx_mm, p.dy_mm, p.dz_mm, p.tilt_x_rad, p.tilt_y_rad]
-                .iter()
-                .all(|u| u.is_none_or(|u| u == 0.0));
-        let start = if unloaded { None } else { self.last };
+        let start = if crate::bearing_model::unloaded(l) {
+            None
+        } else {
+            self.last
+        };
         let solved = match &mut self.planned {
             Planned::Roller(solver) => match start {
                 Some(u) => solver.solve_from(&ring, u),

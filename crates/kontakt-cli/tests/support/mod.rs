@@ -56,3 +56,18 @@ pub fn bad(args: &[&str]) -> String {
     assert_eq!(lines.len(), 1, "not one line: {err}");
     lines[0].to_string()
 }
+
+/// The rows of a CSV file (a sweep's results.csv) as maps column → text.
+pub fn read_csv(path: &std::path::Path) -> Vec<std::collections::HashMap<String, String>> {
+    let mut r = csv::Reader::from_path(path).unwrap();
+    let header: Vec<String> = r.headers().unwrap().iter().map(str::to_string).collect();
+    r.records()
+        .map(|rec| {
+            header
+                .iter()
+                .cloned()
+                .zip(rec.unwrap().iter().map(str::to_string))
+                .collect()
+        })
+        .collect()
+}
