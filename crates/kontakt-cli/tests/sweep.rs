@@ -10,7 +10,7 @@ use serde_json::Value;
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant, SystemTime};
-use support::read_csv;
+use support::{cell as num, read_csv, sweep_csv};
 
 fn kontakt() -> Command {
     Command::cargo_bin("kontakt").expect("binary built")
@@ -36,25 +36,6 @@ fn run_json(args: &[&str]) -> Value {
         String::from_utf8_lossy(&out.stderr)
     );
     serde_json::from_slice(&out.stdout).unwrap()
-}
-
-/// Run the sweep `file` into `out` as CSV: the JSON summary and the rows.
-fn sweep_csv(file: &Path, out: &Path) -> (Value, Vec<HashMap<String, String>>) {
-    let v = run_json(&[
-        "sweep",
-        file.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-        "--format",
-        "csv",
-    ]);
-    (v, read_csv(&out.join("results.csv")))
-}
-
-fn num(row: &HashMap<String, String>, key: &str) -> f64 {
-    row[key]
-        .parse()
-        .unwrap_or_else(|_| panic!("{key} = {:?}", row[key]))
 }
 
 /// Run, expect exit status 2 and one stderr line; return it.

@@ -8,29 +8,13 @@ mod support;
 
 use std::collections::HashMap;
 use std::path::Path;
-use support::{read_csv, run_json, tempdir};
+use support::{cell as num, run_json, sweep_csv, tempdir};
 
 fn sweep(name: &str, out: &Path) -> (serde_json::Value, Vec<String>, Vec<HashMap<String, String>>) {
-    let file = support::example(&format!("sweeps/{name}"));
-    let v = run_json(&[
-        "sweep",
-        file.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-        "--format",
-        "csv",
-        "--quiet",
-    ]);
-    let path = out.join("results.csv");
-    let mut r = csv::Reader::from_path(&path).unwrap();
+    let (v, rows) = sweep_csv(&support::example(&format!("sweeps/{name}")), out);
+    let mut r = csv::Reader::from_path(out.join("results.csv")).unwrap();
     let header = r.headers().unwrap().iter().map(str::to_string).collect();
-    (v, header, read_csv(&path))
-}
-
-fn num(row: &HashMap<String, String>, key: &str) -> f64 {
-    row[key]
-        .parse()
-        .unwrap_or_else(|_| panic!("{key} = {:?}", row[key]))
+    (v, header, rows)
 }
 
 #[test]
