@@ -734,6 +734,11 @@ impl Sweep {
         if self.fields != Fields::None {
             let _ = writeln!(s, "fields = {}", self.fields.as_str());
         }
+        // A bearing sweep's rows are the fixed bearing columns: a folder written before
+        // (the report flattened) is another sweep, not resumed with other columns.
+        if self.bearing.is_some() {
+            let _ = writeln!(s, "rows = bearing 1");
+        }
         for p in &self.parameters {
             let _ = write!(s, "parameter {} keys [{}] ", p.name, p.keys().join(", "));
             match &p.values {

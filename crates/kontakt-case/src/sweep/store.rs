@@ -326,7 +326,9 @@ impl Sweep {
             .collect())
     }
 
-    /// Run case `index` (never panics: a panic of a solver becomes status `panic`).
+    /// Run case `index` (never panics: a panic of a solver becomes status `panic`): its
+    /// report flattened, as a chunk's rows are but for a bearing sweep, whose chunks hold
+    /// the bearing columns of [`super::bearing::COLUMNS`] (a warm-started solve).
     pub fn evaluate(&self, index: u64) -> Row {
         // Without a fields folder nothing is written, so nothing can fail.
         self.evaluate_case(index, None)
