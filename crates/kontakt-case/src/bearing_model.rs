@@ -102,5 +102,8 @@ pub(crate) fn unloaded(l: &BearingLoadSpec) -> bool {
             .all(|u| u.is_none_or(|u| u == 0.0))
 }
 
+mod element;
+pub use element::{BearingElement, BearingElementOutput, BearingElementStatus, prescribed_load};
+
 #[cfg(test)]
 mod tests;
