@@ -239,10 +239,22 @@ fn crb_through_its_clearance_lifts_off_as_a_row() {
 fn ball_bearing_and_refused_loads_in_the_middle() {
     let s = sweep(
         "bearing_6205.toml",
-        "[[parameter]]\nkey = \"load.force_n[0]\"\nvalues = [0.0, 500.0, 1000.0, 2000.0, 4000.0]\n\
+        "[[parameter]]\nkey = \"load.force_n[0]\"\nvalues = [0.0, 500.0, 1000.0, 2000.0, 4000.0, 20000.0, 60000.0]\n\
          [[parameter]]\nkey = \"load.force_n[2]\"\nvalues = [0.0, 300.0, -300.0]\n",
     );
     rows_match_the_cold_reports(&s, 1e-9);
+    // the validity check of the most loaded ball's Hertz contacts: warned at 20 kN, refused
+    // at 60 kN (docs/case-schema.md), the same texts as the report's
+    let batch = &tables(&s, 1)[0];
+    let status = strs(batch, "status");
+    assert_eq!(status[15].as_deref(), Some("warning"));
+    assert!(
+        strs(batch, "warnings")[15]
+            .as_deref()
+            .unwrap()
+            .contains("contact size")
+    );
+    assert_eq!(status[18].as_deref(), Some("invalid"));
     let s = sweep(
         "bearing_32008x.toml",
         "[[parameter]]\nkey = \"load.force_n[2]\"\nvalues = [3000.0, 1000.0, 3000.0]\n",

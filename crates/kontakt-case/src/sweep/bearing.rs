@@ -366,25 +366,29 @@ impl BlockModel {
         if q_max <= 0.0 {
             return Ok(());
         }
+        let mut size = Vec::new();
         for (c, ring, key) in [
             (&pair[0], "inner", keys.inner),
             (&pair[1], "outer", keys.outer),
         ] {
-            let size = point_size(c.geometry(), &c.solve_force(q_max)?);
+            let check = point_size(c.geometry(), &c.solve_force(q_max)?);
             // texts only for a contact the check speaks about
-            if size.ratio > kontakt::hertz::validity::WARN_SIZE_RATIO {
+            if check.ratio > kontakt::hertz::validity::WARN_SIZE_RATIO {
                 let c = ContactSize::new(
-                    Size::Hertz(size),
+                    Size::Hertz(check),
                     ["bearing.ball_diameter_mm", &format!("bearing.{key}")],
                 )
                 .at(format!("the most loaded ball on the {ring} raceway"));
                 if let Some(w) = c.verdict()?
-                    && !warnings.contains(&w)
+                    && !size.contains(&w)
                 {
-                    warnings.insert(0, w);
+                    size.push(w);
                 }
             }
         }
+        // first in the warnings, in the contacts' order, as `checked` puts them
+        size.retain(|w| !warnings.contains(w));
+        warnings.splice(0..0, size);
         Ok(())
     }
 }
