@@ -595,6 +595,10 @@ pub struct RollerPart {
     pub roller_loads: Vec<RollerRow>,
     /// The slices of the most loaded roller.
     pub most_loaded_roller: SliceTable,
+    /// Every roller's slice loads per unit length, N/mm: one row per roller (in the order
+    /// of `roller_loads`), one value per slice (at `most_loaded_roller.position_mm`); 0
+    /// where a slice is lifted off. The map of `kontakt bearing --map`.
+    pub slice_load_per_length_n_per_mm: Vec<Vec<f64>>,
 }
 
 /// The report keys of a ball bearing.
@@ -929,6 +933,11 @@ fn roller_report(
             .fold(0.0, f64::max),
         roller_loads: rows,
         most_loaded_roller: most_loaded,
+        slice_load_per_length_n_per_mm: loads
+            .chunks_exact(ns)
+            .take(b.rollers)
+            .map(|c| c.iter().map(|q| q / width).collect())
+            .collect(),
     });
     let mut report = report(case, label, elements, sol.displacement, sol.load);
     report.solver = solver_echo(&sol.status);

@@ -206,6 +206,30 @@ fn plots_are_written() {
     ]);
     assert!(std::fs::read_to_string(&load).unwrap().contains("<svg"));
     assert!(std::fs::metadata(&slices).unwrap().len() > 1000);
+    // the polar diagram names the loaded arc and the load; the bars and the map
+    let svg = std::fs::read_to_string(&load).unwrap();
+    for text in [
+        "loaded arc",
+        "radial load 5000 N",
+        "roller load [N]",
+        "0°",
+        "180°",
+    ] {
+        assert!(svg.contains(text), "{text} not in the polar diagram");
+    }
+    let (bars, map) = (dir.join("bars.svg"), dir.join("map.svg"));
+    succeeds(&[
+        "bearing".as_ref(),
+        example("bearing_32008x.toml").as_os_str(),
+        "--element-plot".as_ref(),
+        bars.as_os_str(),
+        "--map".as_ref(),
+        map.as_os_str(),
+    ]);
+    let svg = std::fs::read_to_string(&bars).unwrap();
+    assert!(svg.contains("rib load [N]") && svg.contains("roller load [N]"));
+    let svg = std::fs::read_to_string(&map).unwrap();
+    assert!(svg.contains("load per length [N/mm]") && svg.contains("azimuth ψ [deg]"));
     let e = bad(&[
         "bearing",
         example("bearing_32008x.toml").to_str().unwrap(),
@@ -300,17 +324,26 @@ fn ball_bearing_table_json_csv_and_plots() {
     let svg = std::fs::read_to_string(&plot).unwrap();
     assert!(svg.contains("<svg") && svg.contains("ball load"), "{svg}");
 
-    let e = bad(&[
-        "bearing",
-        path.to_str().unwrap(),
-        "--slice-plot",
-        dir.join("slices.png").to_str().unwrap(),
+    for flag in ["--slice-plot", "--map"] {
+        let e = bad(&[
+            "bearing",
+            path.to_str().unwrap(),
+            flag,
+            dir.join("slices.png").to_str().unwrap(),
+        ]);
+        assert!(e.contains(flag) && e.contains("ball bearing"), "{e}");
+        assert!(!dir.join("slices.png").exists());
+    }
+    // the ball loads and contact angles as bars
+    let bars = dir.join("bars.svg");
+    succeeds(&[
+        "bearing".as_ref(),
+        acbb.as_os_str(),
+        "--element-plot".as_ref(),
+        bars.as_os_str(),
     ]);
-    assert!(
-        e.contains("--slice-plot") && e.contains("ball bearing"),
-        "{e}"
-    );
-    assert!(!dir.join("slices.png").exists());
+    let svg = std::fs::read_to_string(&bars).unwrap();
+    assert!(svg.contains("contact angle α [deg]") && svg.contains("free contact angle"));
 
     // a ball that does not fit, named by its key (exit 2)
     let p = edited_example(&dir, "bearing_6205.toml", "balls = 9", "balls = 16");

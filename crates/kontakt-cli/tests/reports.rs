@@ -15,7 +15,13 @@ use serde_json::Value;
 use std::path::{Path, PathBuf};
 
 /// Keys that a report may gain over its baseline (anywhere in the tree).
-const NEW_KEYS: &[&str] = &["status", "warnings", "difference_parameter"];
+const NEW_KEYS: &[&str] = &[
+    "status",
+    "warnings",
+    "difference_parameter",
+    // issue 28: every roller's slices, for `kontakt bearing --map`
+    "slice_load_per_length_n_per_mm",
+];
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..")
