@@ -288,6 +288,12 @@ fn geometry_parameters_plan_the_bearing_again() {
     );
     let (warm, cold) = rows_match_the_cold_reports(&s, 1e-9);
     assert!(warm < cold, "warm {warm} cold {cold}");
+    // a whole load array as one parameter: read through the case reader, same bearing
+    let s = sweep(
+        "bearing_nu_crb.toml",
+        "[[parameter]]\nkey = \"load.force_n\"\nvalues = [[1000.0, 0.0, 0.0], [0.0, 5000.0, 0.0], [7000.0, 7000.0, 0.0]]\n",
+    );
+    rows_match_the_cold_reports(&s, 1e-9);
 }
 
 /// The blocks of warm starts are fixed by the case indices: 1 and 3 threads, and chunks
