@@ -202,6 +202,24 @@ impl BallBearingSolver {
                 "a load >= 0 N: a single-row angular-contact ball bearing carries axial load in +z only (pushing the inner ring into the outer)",
             ));
         }
+        // issue 28, bad input: every loaded ball of a single row pushes in +z, so without
+        // an axial load no ball is loaded and no radial load or moment is carried
+        if self.bearing.kind == BallBearingKind::AngularContact && load.dofs[2] == Dof::Force(0.0) {
+            let f = |i: usize| match load.dofs[i] {
+                Dof::Force(v) => v,
+                Dof::Displacement(_) => 0.0,
+            };
+            if let Some(i) = [0, 1, 3, 4].into_iter().find(|&i| f(i) != 0.0) {
+                let what = if i < 3 { "a radial load" } else { "a moment" };
+                return Err(Error::invalid(
+                    "load.fz_n",
+                    0.0,
+                    format!(
+                        "an axial load > 0 N: a single-row angular-contact ball bearing carries {what} only together with an axial load pushing the inner ring into the outer (or prescribe dz_mm)"
+                    ),
+                ));
+            }
+        }
         Ok(())
     }
 

@@ -375,6 +375,28 @@ impl RollerBearingSolver {
                     ));
                 }
             }
+            // issue 28, bad input: every roller pushes in +z, so the moment it carries is
+            // at most its axial force times the arm R sin(alpha) + L_we/2 of its farthest
+            // slice: |M| < F_z (R + L_we/(2 sin alpha)), 0 without an axial load
+            let m = [f(3).unwrap_or(0.0), f(4).unwrap_or(0.0)];
+            let arm = 0.5 * self.bearing.pitch_diameter_mm
+                + 0.5 * self.bearing.effective_length_mm / self.bearing.contact_angle_rad.sin();
+            if m[0].hypot(m[1]) > 0.0 && !(m[0].hypot(m[1]) < fz * arm) {
+                let i = if m[0].abs() >= m[1].abs() { 3 } else { 4 };
+                let label = if kind == RollerBearingKind::Thrust {
+                    "cylindrical roller thrust"
+                } else {
+                    "tapered roller"
+                };
+                return Err(Error::invalid(
+                    format!("load.{}", FORCE_NAMES[i]),
+                    m[i - 3],
+                    format!(
+                        "|M| < F_z (d_m/2 + L_we/(2 sin alpha)) = {:.6} N mm: a single-row {label} bearing carries a moment only through its axial load, here F_z = {fz} N (add axial load, or hold the tilts: prescribe tilt_x_rad and tilt_y_rad)",
+                        fz * arm
+                    ),
+                ));
+            }
         }
         Ok(())
     }

@@ -920,12 +920,7 @@ fn roller_report<S: SliceSolver>(
     .map_err(map_load)?;
     let mut warnings = solver_warnings(&sol.status, sol.note)?;
     let b = solver.bearing();
-    if b.slices < DEFAULT_SLICES {
-        warnings.push(format!(
-            "{} slices per roller: fewer than the recommended {DEFAULT_SLICES}, the roller loads are coarse (docs/bearing-model.md §6)",
-            b.slices
-        ));
-    }
+    warnings.extend(coarse_slices_warning(b.slices));
     let ns = b.slices;
     let width = b.effective_length_mm / ns as f64;
     let loads = solver.slice_loads();
@@ -1000,14 +995,24 @@ fn roller_report<S: SliceSolver>(
     Ok(report)
 }
 
+/// The warning of a roller bearing with fewer slices than the default (a property of the
+/// bearing, the same for every load).
+pub(crate) fn coarse_slices_warning(slices: usize) -> Option<String> {
+    (slices < DEFAULT_SLICES).then(|| {
+        format!(
+            "{slices} slices per roller: fewer than the recommended {DEFAULT_SLICES}, the roller loads are coarse (docs/bearing-model.md §6)"
+        )
+    })
+}
+
 /// The library's load-field errors (`load.fz_n`) as the case file's keys.
-fn map_load(e: Error) -> Error {
+pub(crate) fn map_load(e: Error) -> Error {
     e.map_field(|f| load_key(f).unwrap_or_else(|| f.to_string()))
 }
 
 /// `[load]` as the library's [`RingLoad`]: a prescribed degree of freedom must have no
 /// force entry.
-fn ring_load(l: &BearingLoadSpec) -> Result<RingLoad> {
+pub(crate) fn ring_load(l: &BearingLoadSpec) -> Result<RingLoad> {
     let applied = [
         l.force_n[0],
         l.force_n[1],
@@ -1040,7 +1045,10 @@ fn ring_load(l: &BearingLoadSpec) -> Result<RingLoad> {
 
 /// The warnings of a solve's status (stagnated, the library's note), or the refusal of a
 /// solve that did not converge.
-fn solver_warnings(status: &SolveStatus, note: Option<&'static str>) -> Result<Vec<String>> {
+pub(crate) fn solver_warnings(
+    status: &SolveStatus,
+    note: Option<&'static str>,
+) -> Result<Vec<String>> {
     let mut warnings = Vec::new();
     match status.termination {
         Termination::Converged => {}
@@ -1108,8 +1116,8 @@ fn report(
 /// or the groove-radius key of the inner and the outer ring.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct GrooveKeys {
-    inner: &'static str,
-    outer: &'static str,
+    pub(crate) inner: &'static str,
+    pub(crate) outer: &'static str,
 }
 
 /// A groove's osculation f = r/D from exactly one of its two keys.
