@@ -55,7 +55,7 @@
 use crate::bearing_slices::{
     RollerPressures, SliceModel, SlicePressures, SliceSolver, pressure_map,
 };
-use crate::common::{MaterialSpec, SCHEMA_VERSION, in_degrees, material, parse_toml};
+use crate::common::{MaterialSpec, SCHEMA_VERSION, in_degrees, material};
 use crate::validity::{ContactSize, Size, checked, checked_report};
 use kontakt::hertz::validity::point_size;
 use kontakt::solve::{SolveStatus, Termination};
