@@ -105,6 +105,15 @@ impl RollerStress {
         })
     }
 
+    /// The line contact of slice `k` on the inner (`ring = 0`) or outer (`ring = 1`)
+    /// raceway.
+    ///
+    /// # Panics
+    /// When `k` is not a slice or `ring > 1`.
+    pub fn contact(&self, k: usize, ring: usize) -> &LineContact {
+        &self.contacts[k][ring]
+    }
+
     /// The slice width `L_we/n`, mm.
     pub fn slice_width(&self) -> f64 {
         self.width

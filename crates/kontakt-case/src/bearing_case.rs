@@ -52,7 +52,9 @@
 //! methods; a solve that stagnates at the round-off floor (residual at most 1e-8 of the
 //! load, 1000 times the tolerance) is reported with a warning.
 
+use crate::bearing_rating::{RatingReport, RatingSpec, checked_spec, rating, roller_pressures};
 use crate::common::{MaterialSpec, SCHEMA_VERSION, in_degrees, material, parse_toml};
+use kontakt_bearing::life::RatingType;
 use crate::validity::{ContactSize, Size, checked, checked_report};
 use kontakt::hertz::validity::point_size;
 use kontakt::solve::{SolveStatus, Termination};
@@ -148,6 +150,10 @@ pub struct BallSpec {
     /// The rings' material (`e_mpa`, `nu`), default steel (210 000 MPa, 0.3).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub ring_material: Option<MaterialSpec>,
+    /// `[bearing.rating]`: the catalogue's C and C0 for the ISO 281 life and ISO 76 static
+    /// safety (`docs/bearing-model.md` §10).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rating: Option<RatingSpec>,
 }
 
 /// The internal geometry of a roller bearing. Lengths in mm, angles in degrees.
@@ -192,6 +198,10 @@ pub struct RollerSpec {
     /// The outer raceway's profile; default straight.
     #[serde(default = "ProfileSpec::straight")]
     pub outer_profile: ProfileSpec,
+    /// `[bearing.rating]`: the catalogue's C and C0 for the ISO 281 life, the ISO/TS 16281
+    /// lamina life and the ISO 76 static safety (`docs/bearing-model.md` §10).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rating: Option<RatingSpec>,
 }
 
 fn default_slices() -> usize {
@@ -460,6 +470,10 @@ pub struct RollerRow {
     pub max_load_per_length_n_per_mm: f64,
     /// The largest slice approach, mm (negative: lifted off by that much).
     pub approach_mm: f64,
+    /// The largest Hertz pressure of the roller's slices on the inner raceway, MPa.
+    pub inner_max_pressure_mpa: f64,
+    /// The largest Hertz pressure of the roller's slices on the outer raceway, MPa.
+    pub outer_max_pressure_mpa: f64,
 }
 
 /// The slices of the most loaded roller.
@@ -476,6 +490,10 @@ pub struct SliceTable {
     pub load_per_length_n_per_mm: Vec<f64>,
     /// Slice approaches, mm.
     pub approach_mm: Vec<f64>,
+    /// Maximum Hertz pressure of each slice on the inner raceway, MPa.
+    pub inner_pressure_mpa: Vec<f64>,
+    /// Maximum Hertz pressure of each slice on the outer raceway, MPa.
+    pub outer_pressure_mpa: Vec<f64>,
 }
 
 /// The solver's status.
@@ -544,6 +562,8 @@ pub struct BearingReport {
     /// in the JSON.
     #[serde(skip)]
     pub contacts: Vec<ContactSize>,
+    /// Static safety and rating lives (`docs/bearing-model.md` §10).
+    pub rating: RatingReport,
 }
 
 /// The rolling elements of a [`BearingReport`], their keys flattened into the report.
@@ -595,6 +615,10 @@ pub struct RollerPart {
     pub roller_loads: Vec<RollerRow>,
     /// The slices of the most loaded roller.
     pub most_loaded_roller: SliceTable,
+    /// The largest Hertz pressure of any slice on the inner raceway, MPa.
+    pub max_inner_pressure_mpa: f64,
+    /// The largest Hertz pressure of any slice on the outer raceway, MPa.
+    pub max_outer_pressure_mpa: f64,
 }
 
 /// The report keys of a ball bearing.
@@ -892,18 +916,27 @@ fn roller_report(
     let width = b.effective_length_mm / ns as f64;
     let loads = solver.slice_loads();
     let approaches = solver.slice_approaches();
+    let spec = match &case.bearing {
+        BearingSpec::Cylindrical(s) | BearingSpec::Tapered(s) | BearingSpec::Thrust(s) => {
+            s.rating.as_ref()
+        }
+        _ => None,
+    };
+    let spec = checked_spec(spec, false)?;
+    let most = (0..b.rollers).fold(0, |m, j| {
+        if solver.roller_loads()[j].outer_n > solver.roller_loads()[m].outer_n {
+            j
+        } else {
+            m
+        }
+    });
+    let pressures = roller_pressures(b, solver.roller_loads(), loads, most)?;
     let mut rows = Vec::with_capacity(b.rollers);
-    let mut most = 0;
-    let mut q_max = f64::NEG_INFINITY;
     for (j, r) in solver.roller_loads().iter().enumerate() {
         let slice_max = loads[j * ns..(j + 1) * ns]
             .iter()
             .copied()
             .fold(0.0, f64::max);
-        if r.outer_n > q_max {
-            q_max = r.outer_n;
-            most = j;
-        }
         rows.push(RollerRow {
             azimuth_deg: r.azimuth_rad.to_degrees(),
             inner_load_n: r.inner_n,
@@ -911,6 +944,8 @@ fn roller_report(
             rib_load_n: r.rib_n,
             max_load_per_length_n_per_mm: slice_max / width,
             approach_mm: r.max_approach_mm,
+            inner_max_pressure_mpa: pressures.per_roller[j][0],
+            outer_max_pressure_mpa: pressures.per_roller[j][1],
         });
     }
     let slice_loads = loads[most * ns..(most + 1) * ns].to_vec();
@@ -920,7 +955,34 @@ fn roller_report(
         load_per_length_n_per_mm: slice_loads.iter().map(|q| q / width).collect(),
         load_n: slice_loads,
         approach_mm: approaches[most * ns..(most + 1) * ns].to_vec(),
+        inner_pressure_mpa: pressures.most_inner,
+        outer_pressure_mpa: pressures.most_outer,
     };
+    let p_max = pressures
+        .per_roller
+        .iter()
+        .fold([0.0_f64; 2], |m, p| [m[0].max(p[0]), m[1].max(p[1])]);
+    let kind = match b.kind {
+        RollerBearingKind::Cylindrical => RatingType::Cylindrical,
+        RollerBearingKind::Thrust => RatingType::Thrust,
+        RollerBearingKind::Tapered => RatingType::Tapered {
+            contact_angle_rad: b.contact_angle_rad,
+        },
+    };
+    let r_most = solver.roller_loads()[most];
+    let inner_ratio = if r_most.outer_n > 0.0 {
+        r_most.inner_n / r_most.outer_n
+    } else {
+        1.0
+    };
+    let rated = rating(
+        kind,
+        &spec,
+        sol.load,
+        p_max[0].max(p_max[1]),
+        Some((b, loads, inner_ratio)),
+        &mut warnings,
+    )?;
     let elements = BearingElements::Rollers(RollerPart {
         rollers: b.rollers,
         slices: ns,
@@ -934,12 +996,16 @@ fn roller_report(
             .fold(0.0, f64::max),
         roller_loads: rows,
         most_loaded_roller: most_loaded,
+        max_inner_pressure_mpa: p_max[0],
+        max_outer_pressure_mpa: p_max[1],
     });
     let mut report = report(case, label, elements, sol.displacement, sol.load);
     report.solver = solver_echo(&sol.status);
     report.load_zone_epsilon = sol.load_zone;
     report.stiffness_matrix = sol.stiffness;
     report.warnings = warnings;
+    report.contacts = pressures.contacts;
+    report.rating = rated;
     Ok(report)
 }
 
@@ -1044,6 +1110,7 @@ fn report(
         stiffness_units: stiffness_units(),
         warnings: Vec::new(),
         contacts: Vec::new(),
+        rating: RatingReport::default(),
     }
 }
 
@@ -1229,8 +1296,17 @@ fn ball_report(
         None => solver.solve(load),
     }
     .map_err(map_load)?;
-    let warnings = solver_warnings(&sol.status, sol.note)?;
+    let mut warnings = solver_warnings(&sol.status, sol.note)?;
+    let spec = checked_spec(s.rating.as_ref(), true)?;
     let b = solver.bearing();
+    let kind = match b.kind {
+        BallBearingKind::DeepGroove => RatingType::DeepGrooveBall,
+        BallBearingKind::AngularContact => RatingType::AngularContactBall {
+            contact_angle_rad: b.contact_angle_rad,
+        },
+    };
+    let p_max = sol.max_pressure_mpa[0].max(sol.max_pressure_mpa[1]);
+    let rated = rating(kind, &spec, sol.load, p_max, None, &mut warnings)?;
     let rows: Vec<BallRow> = solver
         .ball_loads()
         .iter()
@@ -1278,5 +1354,6 @@ fn ball_report(
     report.stiffness_matrix = sol.stiffness;
     report.warnings = warnings;
     report.contacts = contacts;
+    report.rating = rated;
     Ok(report)
 }
