@@ -556,9 +556,8 @@ pub struct BearingReport {
     /// Results to treat with care. Absent when none applies.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<String>,
-    /// The Hertz contacts of the most loaded ball, inner and outer raceway, sized for the
-    /// validity check; none for a roller bearing (no Hertz or half-space contact is sized
-    /// in the slice model: the check has only the finiteness of the report to check). Not
+    /// The Hertz contacts of the most loaded ball, inner and outer raceway, or of the most
+    /// loaded roller's most loaded slice on each raceway, sized for the validity check. Not
     /// in the JSON.
     #[serde(skip)]
     pub contacts: Vec<ContactSize>,
@@ -979,6 +978,7 @@ fn roller_report(
         kind,
         &spec,
         sol.load,
+        applied_moment(load),
         p_max[0].max(p_max[1]),
         Some((b, loads, inner_ratio)),
         &mut warnings,
@@ -1007,6 +1007,15 @@ fn roller_report(
     report.contacts = pressures.contacts;
     report.rating = rated;
     Ok(report)
+}
+
+/// The magnitude of the applied (force-controlled) moment, N·mm.
+fn applied_moment(load: &RingLoad) -> f64 {
+    let m = |d: Dof| match d {
+        Dof::Force(v) => v,
+        Dof::Displacement(_) => 0.0,
+    };
+    m(load.dofs[3]).hypot(m(load.dofs[4]))
 }
 
 /// The library's load-field errors (`load.fz_n`) as the case file's keys.
@@ -1306,7 +1315,8 @@ fn ball_report(
         },
     };
     let p_max = sol.max_pressure_mpa[0].max(sol.max_pressure_mpa[1]);
-    let rated = rating(kind, &spec, sol.load, p_max, None, &mut warnings)?;
+    let moment = applied_moment(load);
+    let rated = rating(kind, &spec, sol.load, moment, p_max, None, &mut warnings)?;
     let rows: Vec<BallRow> = solver
         .ball_loads()
         .iter()
