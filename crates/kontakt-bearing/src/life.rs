@@ -3,7 +3,7 @@
 //! the computed contact pressure, and the ISO/TS 16281 (2008) modified reference rating life
 //! of roller bearings by the lamina (slice) method. Loads in N, pressures in MPa, lives in
 //! millions of revolutions. The derivations and what was verified against which source are
-//! in `docs/bearing-model.md` §10.
+//! in `docs/bearing-model.md`, "Life and static safety".
 //!
 //! **Basic rating life** (ISO 281; Lundberg & Palmgren 1947, 1952): `L10 = (C/P)^p`,
 //! `p = 10/3` for roller and 3 for ball bearings, with the dynamic equivalent load
@@ -54,7 +54,7 @@ pub const LAMBDA_NU_RADIAL: f64 = 0.83;
 /// λν of thrust roller bearings.
 pub const LAMBDA_NU_THRUST: f64 = 0.73;
 /// ISO/TS 16281's ratio `J_r/J_1` of a radial roller bearing's rotating inner ring at
-/// ε = 0.5 (our quadrature of the Sjövall integrals: `docs/bearing-model.md` §10).
+/// ε = 0.5 (our quadrature of the Sjövall integrals: `docs/bearing-model.md`, "Life and static safety").
 pub const RADIAL_RATIO_ROTATING: f64 = 0.378;
 /// ISO/TS 16281's ratio `J_r/J_2` of the stationary outer ring at ε = 0.5.
 pub const RADIAL_RATIO_STATIONARY: f64 = 0.364;
@@ -301,7 +301,7 @@ pub struct LaminaOptions {
     /// Apply ISO/TS 16281's edge-stress factor `f_k = 1 − 0.01/ln(1.985 |u_k|)`,
     /// `u_k = (2k − n − 1)/(2n − 2)` (k = 1..n), to the lamina loads. Off by default: it is
     /// 2.33 at the outermost laminae whatever the slice count, so a life with it depends on
-    /// the slice count (`docs/bearing-model.md` §10).
+    /// the slice count (`docs/bearing-model.md`, "Life and static safety").
     pub edge_factor: bool,
 }
 

@@ -151,7 +151,7 @@ pub struct BallSpec {
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub ring_material: Option<MaterialSpec>,
     /// `[bearing.rating]`: the catalogue's C and C0 for the ISO 281 life and ISO 76 static
-    /// safety (`docs/bearing-model.md` §10).
+    /// safety (`docs/bearing-model.md`, "Life and static safety").
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub rating: Option<RatingSpec>,
 }
@@ -199,7 +199,7 @@ pub struct RollerSpec {
     #[serde(default = "ProfileSpec::straight")]
     pub outer_profile: ProfileSpec,
     /// `[bearing.rating]`: the catalogue's C and C0 for the ISO 281 life, the ISO/TS 16281
-    /// lamina life and the ISO 76 static safety (`docs/bearing-model.md` §10).
+    /// lamina life and the ISO 76 static safety (`docs/bearing-model.md`, "Life and static safety").
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub rating: Option<RatingSpec>,
 }
@@ -561,7 +561,7 @@ pub struct BearingReport {
     /// in the JSON.
     #[serde(skip)]
     pub contacts: Vec<ContactSize>,
-    /// Static safety and rating lives (`docs/bearing-model.md` §10).
+    /// Static safety and rating lives (`docs/bearing-model.md`, "Life and static safety").
     pub rating: RatingReport,
 }
 

@@ -3,7 +3,7 @@
 //! pressure and from a given C0, the ISO 281 basic rating life from a given C and the
 //! ISO/TS 16281 lamina life of roller bearings, on [`kontakt_bearing::stress`] and
 //! [`kontakt_bearing::life`]. Loads in N, pressures in MPa, lives in millions of
-//! revolutions; `docs/bearing-model.md` §10.
+//! revolutions; `docs/bearing-model.md`, "Life and static safety".
 //!
 //! ```toml
 //! [bearing.rating]
@@ -43,7 +43,7 @@ pub struct RatingSpec {
     #[serde(default)]
     pub rotating_ring: RotatingRingSpec,
     /// Roller bearings: apply ISO/TS 16281's edge-stress factor to the lamina loads
-    /// (default false; it depends on the slice count, `docs/bearing-model.md` §10).
+    /// (default false; it depends on the slice count, `docs/bearing-model.md`, "Life and static safety").
     #[serde(default)]
     pub edge_stress_factor: bool,
 }
