@@ -397,3 +397,24 @@ fn prescribed_displacement_returns_the_force() {
     );
     assert_eq!(p.displacement_mm[0], dx);
 }
+
+/// The 6205 example with the catalogue's C_r 14.0 kN and C_0r 7.85 kN (NSK table) at 2 kN
+/// radial: ISO 281's L10 = (14/2)^3 = 343 Mrev and ISO 76's C0/P0 = 3.925 from the
+/// catalogue; the static safety from the computed pressure (ISO 76's 4200 MPa criterion on
+/// the representative internal design, (4200/p_max)^3) is 3.986, within 2 % of the
+/// catalogue's: the pressure criterion and the catalogue's C0 agree for this design (a
+/// cubed pressure ratio magnifies a pressure error three times: 2 % is 0.7 % in pressure).
+#[test]
+fn the_6205_rating_agrees_with_its_catalogue_static_capacity() {
+    let r = run(&example("bearing_6205.toml")).unwrap();
+    let g = &r.rating;
+    assert!((g.l10_mrev.unwrap() - 343.0).abs() < 1e-9, "{g:?}");
+    let s0 = g.static_safety.unwrap();
+    assert!((s0 - 7850.0 / 2000.0).abs() < 1e-12);
+    let s0p = g.static_safety_from_pressure.unwrap();
+    assert!((s0p / s0 - 1.0).abs() < 0.02, "{s0p} vs {s0}");
+    let balls = r.balls().unwrap();
+    let p = balls.max_inner_pressure_mpa.max(balls.max_outer_pressure_mpa);
+    assert!((s0p - (4200.0 / p).powi(3)).abs() < 1e-12 * s0p);
+    assert!(r.warnings.is_empty(), "{:?}", r.warnings);
+}
