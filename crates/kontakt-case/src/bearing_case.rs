@@ -54,7 +54,6 @@
 
 use crate::bearing_rating::{RatingReport, RatingSpec, checked_spec, rating, roller_pressures};
 use crate::common::{MaterialSpec, SCHEMA_VERSION, in_degrees, material, parse_toml};
-use kontakt_bearing::life::RatingType;
 use crate::validity::{ContactSize, Size, checked, checked_report};
 use kontakt::hertz::validity::point_size;
 use kontakt::solve::{SolveStatus, Termination};
@@ -64,6 +63,7 @@ use kontakt_bearing::equilibrium::{Dof, RingLoad, RollerBearingSolver};
 use kontakt_bearing::geometry::{
     BallBearing, BallBearingKind, DEFAULT_SLICES, RollerBearing, RollerBearingKind,
 };
+use kontakt_bearing::life::RatingType;
 use kontakt_bearing::profile::{Profile, TabulatedProfile};
 use serde::{Deserialize, Serialize};
 

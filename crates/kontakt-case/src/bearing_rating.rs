@@ -20,8 +20,8 @@ use kontakt_bearing::equilibrium::RollerLoad;
 use kontakt_bearing::geometry::RollerBearing;
 use kontakt_bearing::life::{
     BALL_PRESSURE_LIMIT_MPA, Contact, LaminaOptions, ROLLER_PRESSURE_LIMIT_MPA, RatingType,
-    RotatingRing, basic_rating_life, dynamic_equivalent_load, lamina_life,
-    static_equivalent_load, static_safety_from_pressure,
+    RotatingRing, basic_rating_life, dynamic_equivalent_load, lamina_life, static_equivalent_load,
+    static_safety_from_pressure,
 };
 use kontakt_bearing::stress::RollerStress;
 use serde::{Deserialize, Serialize};

@@ -414,7 +414,9 @@ fn the_6205_rating_agrees_with_its_catalogue_static_capacity() {
     let s0p = g.static_safety_from_pressure.unwrap();
     assert!((s0p / s0 - 1.0).abs() < 0.02, "{s0p} vs {s0}");
     let balls = r.balls().unwrap();
-    let p = balls.max_inner_pressure_mpa.max(balls.max_outer_pressure_mpa);
+    let p = balls
+        .max_inner_pressure_mpa
+        .max(balls.max_outer_pressure_mpa);
     assert!((s0p - (4200.0 / p).powi(3)).abs() < 1e-12 * s0p);
     assert!(r.warnings.is_empty(), "{:?}", r.warnings);
 }

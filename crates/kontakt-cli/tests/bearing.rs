@@ -362,14 +362,29 @@ fn rating_lives_and_static_safety() {
     let v = run_json(&["bearing", p.to_str().unwrap()]);
     let r = &v["rating"];
     // a CRB: P = F_r, L10 = (C/P)^(10/3), s0 = C0/F_r
-    assert!((num(&r["equivalent_dynamic_load_n"]) - 10_000.0).abs() < 1e-6, "{r}");
-    assert!((num(&r["l10_mrev"]) - 6f64.powf(10.0 / 3.0)).abs() < 1e-6, "{r}");
+    assert!(
+        (num(&r["equivalent_dynamic_load_n"]) - 10_000.0).abs() < 1e-6,
+        "{r}"
+    );
+    assert!(
+        (num(&r["l10_mrev"]) - 6f64.powf(10.0 / 3.0)).abs() < 1e-6,
+        "{r}"
+    );
     assert!((num(&r["static_safety"]) - 5.5).abs() < 1e-9, "{r}");
-    assert!(num(&r["l10r_mrev"]) > 0.0 && num(&r["reference_load_n"]) > 0.0, "{r}");
+    assert!(
+        num(&r["l10r_mrev"]) > 0.0 && num(&r["reference_load_n"]) > 0.0,
+        "{r}"
+    );
     assert!(v.get("warnings").is_none(), "{v}");
-    let out = kontakt().args(["bearing", p.to_str().unwrap()]).output().unwrap();
+    let out = kontakt()
+        .args(["bearing", p.to_str().unwrap()])
+        .output()
+        .unwrap();
     let text = String::from_utf8(out.stdout).unwrap();
-    assert!(text.contains("L10 = ") && text.contains("L10r = "), "{text}");
+    assert!(
+        text.contains("L10 = ") && text.contains("L10r = "),
+        "{text}"
+    );
     assert!(text.contains("C0/P0 = 5.5"), "{text}");
     // 20 times the load: the pressure exceeds 4000 MPa and C0/P0 < 1, both warned
     let p = edited_example(
@@ -379,8 +394,15 @@ fn rating_lives_and_static_safety() {
         "slices = 31\n[bearing.rating]\ndynamic_n = 60000.0\nstatic_n = 55000.0",
     );
     let text = std::fs::read_to_string(&p).unwrap();
-    std::fs::write(&p, text.replace("[10000.0, 0.0, 0.0]", "[200000.0, 0.0, 0.0]")).unwrap();
+    std::fs::write(
+        &p,
+        text.replace("[10000.0, 0.0, 0.0]", "[200000.0, 0.0, 0.0]"),
+    )
+    .unwrap();
     let v = run_json(&["bearing", p.to_str().unwrap()]);
     let w = v["warnings"].to_string();
-    assert!(w.contains("exceeds ISO 76's 4000 MPa") && w.contains("C0/P0"), "{w}");
+    assert!(
+        w.contains("exceeds ISO 76's 4000 MPa") && w.contains("C0/P0"),
+        "{w}"
+    );
 }

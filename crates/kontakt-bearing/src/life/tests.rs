@@ -87,7 +87,11 @@ fn the_standards_ratios_are_sjovall_integrals() {
             (j1 / m as f64).powf(0.25),
             (j2 / m as f64).powf(1.0 / 4.5),
         );
-        eprintln!("n = {n}: J_r = {jr:.5}, J_1 = {j1:.5}, J_2 = {j2:.5}, J_r/J_1 = {:.5}, J_r/J_2 = {:.5}", jr / j1, jr / j2);
+        eprintln!(
+            "n = {n}: J_r = {jr:.5}, J_1 = {j1:.5}, J_2 = {j2:.5}, J_r/J_1 = {:.5}, J_r/J_2 = {:.5}",
+            jr / j1,
+            jr / j2
+        );
         (jr / j1, jr / j2)
     };
     for n in [LINE_EXPONENT, 1.1] {
@@ -129,20 +133,26 @@ fn uniform_straight_rollers_reduce_to_the_iso_281_form() {
             let l = lamina_life(&b, c, &q, ratio, LaminaOptions::default()).unwrap();
             // the per-roller form, from the roller loads
             let rollers: Vec<f64> = q.chunks(n).map(|s| s.iter().sum()).collect();
-            let mean = |w: f64| {
-                (rollers.iter().map(|x| x.powf(w)).sum::<f64>() / z as f64).powf(1.0 / w)
-            };
+            let mean =
+                |w: f64| (rollers.iter().map(|x| x.powf(w)).sum::<f64>() / z as f64).powf(1.0 / w);
             let want = ((mean(4.0) / l.inner_capacity_n).powf(4.5)
                 + (mean(4.5) / l.outer_capacity_n).powf(4.5))
             .powf(-8.0 / 9.0);
-            assert!((l.l10r_mrev / want - 1.0).abs() < 1e-9, "{} {want}", l.l10r_mrev);
+            assert!(
+                (l.l10r_mrev / want - 1.0).abs() < 1e-9,
+                "{} {want}",
+                l.l10r_mrev
+            );
             lives.push(l.l10r_mrev);
         }
         assert!((lives[1] / lives[0] - 1.0).abs() < 1e-9);
         assert!((lives[2] / lives[0] - 1.0).abs() < 1e-9);
         let iso = (c / (LAMBDA_NU_RADIAL * f)).powi(4);
         let ratio = lives[0] / iso;
-        eprintln!("Z = {z}: L10r = {:.4} Mrev, (C/(λν F_r))^4 = {iso:.4}, ratio {ratio:.4}", lives[0]);
+        eprintln!(
+            "Z = {z}: L10r = {:.4} Mrev, (C/(λν F_r))^4 = {iso:.4}, ratio {ratio:.4}",
+            lives[0]
+        );
         assert!((ratio - 1.0).abs() < tol, "Z = {z}: ratio {ratio}");
     }
 }
@@ -313,12 +323,12 @@ fn equivalent_loads() {
     assert_eq!(th.load_n, 3000.0);
 
     // F_a/C0 = 0.07, halfway between 0.056 and 0.084: e = 0.27, Y = 1.63
-    let d = dynamic_equivalent_load(RatingType::DeepGrooveBall, 1000.0, 700.0, Some(10_000.0))
-        .unwrap();
+    let d =
+        dynamic_equivalent_load(RatingType::DeepGrooveBall, 1000.0, 700.0, Some(10_000.0)).unwrap();
     assert!((d.e - 0.27).abs() < 1e-12 && (d.y - 1.63).abs() < 1e-12);
     assert!((d.load_n - (560.0 + 1.63 * 700.0)).abs() < 1e-9);
-    let small = dynamic_equivalent_load(RatingType::DeepGrooveBall, 1000.0, 100.0, Some(10_000.0))
-        .unwrap();
+    let small =
+        dynamic_equivalent_load(RatingType::DeepGrooveBall, 1000.0, 100.0, Some(10_000.0)).unwrap();
     assert_eq!(small.load_n, 1000.0); // 0.1 < e = 0.19..0.22
     let e = dynamic_equivalent_load(RatingType::DeepGrooveBall, 1000.0, 100.0, None).unwrap_err();
     assert!(e.to_string().contains("static_n"), "{e}");
@@ -360,13 +370,19 @@ fn static_safety_exponent_matches_hertz() {
     let p = line.solve(q).unwrap().max_pressure;
     let s0 = static_safety_from_pressure(ROLLER_PRESSURE_LIMIT_MPA, p, Contact::Line).unwrap();
     let p_at = line.solve(q * s0).unwrap().max_pressure;
-    assert!((p_at / ROLLER_PRESSURE_LIMIT_MPA - 1.0).abs() < 1e-12, "{p_at}");
+    assert!(
+        (p_at / ROLLER_PRESSURE_LIMIT_MPA - 1.0).abs() < 1e-12,
+        "{p_at}"
+    );
 
     let ball = HertzPointContact::new(PointGeometry::sphere_on_flat(4.0).unwrap(), s, s).unwrap();
     let qb = 500.0;
     let pb = ball.solve_force(qb).unwrap().max_pressure;
     let s0b = static_safety_from_pressure(BALL_PRESSURE_LIMIT_MPA, pb, Contact::Point).unwrap();
     let pb_at = ball.solve_force(qb * s0b).unwrap().max_pressure;
-    assert!((pb_at / BALL_PRESSURE_LIMIT_MPA - 1.0).abs() < 1e-9, "{pb_at}");
+    assert!(
+        (pb_at / BALL_PRESSURE_LIMIT_MPA - 1.0).abs() < 1e-9,
+        "{pb_at}"
+    );
     assert!(static_safety_from_pressure(4000.0, 0.0, Contact::Line).is_none());
 }
