@@ -460,7 +460,7 @@ pub fn ball_raceway_capacities(
 ) -> Result<(f64, f64)> {
     kontakt::error::positive_as("dynamic_n", c, "a finite capacity > 0 N")?;
     b.validate()?;
-    if !(nominal_angle_rad >= 0.0 && nominal_angle_rad < std::f64::consts::FRAC_PI_2) {
+    if !(0.0..std::f64::consts::FRAC_PI_2).contains(&nominal_angle_rad) {
         return Err(Error::invalid(
             "contact_angle_rad",
             nominal_angle_rad,
@@ -512,7 +512,8 @@ pub fn ball_reference_life(
         RotatingRing::Inner => (3.0, 10.0 / 3.0),
         RotatingRing::Outer => (10.0 / 3.0, 3.0),
     };
-    let mean = |w: f64| (ball_loads.iter().map(|q| q.powf(w)).sum::<f64>() / z as f64).powf(1.0 / w);
+    let mean =
+        |w: f64| (ball_loads.iter().map(|q| q.powf(w)).sum::<f64>() / z as f64).powf(1.0 / w);
     let e = 10.0 / 3.0;
     let sum = (mean(w_i) / q_ci).powf(e) + (mean(w_e) / q_ce).powf(e);
     let l10r = if sum > 0.0 {

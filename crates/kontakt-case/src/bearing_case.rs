@@ -52,7 +52,9 @@
 //! methods; a solve that stagnates at the round-off floor (residual at most 1e-8 of the
 //! load, 1000 times the tolerance) is reported with a warning.
 
-use crate::bearing_rating::{RatingReport, RatingSpec, checked_spec, rating, roller_pressures};
+use crate::bearing_rating::{
+    LifeInput, RatingReport, RatingSpec, checked_spec, rating, roller_pressures,
+};
 use crate::common::{MaterialSpec, SCHEMA_VERSION, in_degrees, material, parse_toml};
 use crate::validity::{ContactSize, Size, checked, checked_report};
 use kontakt::hertz::validity::point_size;
@@ -980,7 +982,7 @@ fn roller_report(
         sol.load,
         applied_moment(load),
         p_max[0].max(p_max[1]),
-        Some((b, loads, inner_ratio)),
+        LifeInput::Rollers(b, loads, inner_ratio),
         &mut warnings,
     )?;
     let elements = BearingElements::Rollers(RollerPart {
@@ -1316,7 +1318,13 @@ fn ball_report(
     };
     let p_max = sol.max_pressure_mpa[0].max(sol.max_pressure_mpa[1]);
     let moment = applied_moment(load);
-    let rated = rating(kind, &spec, sol.load, moment, p_max, None, &mut warnings)?;
+    let nominal = match b.kind {
+        BallBearingKind::DeepGroove => 0.0,
+        BallBearingKind::AngularContact => b.contact_angle_rad,
+    };
+    let q: Vec<f64> = solver.ball_loads().iter().map(|q| q.load_n).collect();
+    let life = LifeInput::Balls(b, nominal, &q);
+    let rated = rating(kind, &spec, sol.load, moment, p_max, life, &mut warnings)?;
     let rows: Vec<BallRow> = solver
         .ball_loads()
         .iter()

@@ -1,7 +1,8 @@
 //! The rating part of a whole-bearing report (`[bearing.rating]` in, `rating` out): the
 //! raceway pressures of every roller slice, the ISO 76 static safety from the contact
 //! pressure and from a given C0, the ISO 281 basic rating life from a given C and the
-//! ISO/TS 16281 lamina life of roller bearings, on [`kontakt_bearing::stress`] and
+//! ISO/TS 16281 reference life (the lamina method of roller bearings, the ball loads of ball
+//! bearings), on [`kontakt_bearing::stress`] and
 //! [`kontakt_bearing::life`]. Loads in N, pressures in MPa, lives in millions of
 //! revolutions; `docs/bearing-model.md`, "Life and static safety".
 //!
@@ -17,11 +18,11 @@ use crate::validity::{ContactSize, Size};
 use kontakt::hertz::validity::line_size;
 use kontakt::{Error, Result};
 use kontakt_bearing::equilibrium::RollerLoad;
-use kontakt_bearing::geometry::RollerBearing;
+use kontakt_bearing::geometry::{BallBearing, RollerBearing};
 use kontakt_bearing::life::{
     BALL_PRESSURE_LIMIT_MPA, Contact, LaminaOptions, ROLLER_PRESSURE_LIMIT_MPA, RatingType,
-    RotatingRing, basic_rating_life, dynamic_equivalent_load, lamina_life, static_equivalent_load,
-    static_safety_from_pressure,
+    RotatingRing, ball_reference_life, basic_rating_life, dynamic_equivalent_load, lamina_life,
+    static_equivalent_load, static_safety_from_pressure,
 };
 use kontakt_bearing::stress::RollerStress;
 use serde::{Deserialize, Serialize};
@@ -111,14 +112,16 @@ pub struct RatingReport {
     /// ISO 76's static safety C0/P0 (absent at P0 = 0).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub static_safety: Option<f64>,
-    /// Roller bearings with C: the ISO/TS 16281 modified reference rating life L10r by the
-    /// lamina method, millions of revolutions (absent without load).
+    /// With C: the ISO/TS 16281 modified reference rating life L10r, millions of revolutions
+    /// (roller bearings by the lamina method, ball bearings from the ball loads; absent
+    /// without load).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub l10r_mrev: Option<f64>,
-    /// The dynamic equivalent reference load `P_ref = C L10r^(−3/10)`, N.
+    /// The dynamic equivalent reference load, N: `P_ref = C L10r^(−3/10)` (rollers),
+    /// `C L10r^(−1/3)` (balls).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub reference_load_n: Option<f64>,
-    /// The raceway capacities `[Q_ci, Q_ce]` of one roller, N.
+    /// The raceway capacities `[Q_ci, Q_ce]` of one rolling element, N.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub raceway_capacities_n: Option<[f64; 2]>,
     /// The ring that rotates (the lamina life's exponents).
@@ -222,23 +225,29 @@ pub(crate) fn roller_pressures(
     })
 }
 
+/// The rolling elements' loads for the reference life L10r.
+pub(crate) enum LifeInput<'a> {
+    /// A roller bearing: its slice loads (outer raceway, roller-major) and `Q_i/Q_o`.
+    Rollers(&'a RollerBearing, &'a [f64], f64),
+    /// A ball bearing: its nominal contact angle (rad) and the ball loads.
+    Balls(&'a BallBearing, f64, &'a [f64]),
+}
+
 /// The rating of a solved bearing of type `t` carrying `load` (N, N·mm) with the largest
-/// raceway pressure `p_max` (MPa); `lamina`: a roller bearing's slice loads and inner/outer
-/// ratio of its most loaded roller, for L10r; `moment` the applied moment (N·mm, the
-/// force-controlled components). Adds its warnings to `warnings`.
+/// raceway pressure `p_max` (MPa); `life`: the element loads for L10r; `moment` the applied
+/// moment (N·mm, the force-controlled components). Adds its warnings to `warnings`.
 pub(crate) fn rating(
     t: RatingType,
     spec: &RatingSpec,
     load: [f64; 5],
     moment: f64,
     p_max: f64,
-    lamina: Option<(&RollerBearing, &[f64], f64)>,
+    life: LifeInput<'_>,
     warnings: &mut Vec<String>,
 ) -> Result<RatingReport> {
-    let contact = if lamina.is_some() {
-        Contact::Line
-    } else {
-        Contact::Point
+    let contact = match life {
+        LifeInput::Rollers(..) => Contact::Line,
+        LifeInput::Balls(..) => Contact::Point,
     };
     let limit = match contact {
         Contact::Line => ROLLER_PRESSURE_LIMIT_MPA,
@@ -275,7 +284,7 @@ pub(crate) fn rating(
     };
     if (spec.dynamic_n.is_some() || spec.static_n.is_some()) && moment > 0.0 {
         warnings.push(format!(
-            "ISO 281 and ISO 76 take the radial and axial load only: the moment {moment:.1} N mm is not in P and P0 (the lamina life L10r includes it)"
+            "ISO 281 and ISO 76 take the radial and axial load only: the moment {moment:.1} N mm is not in P and P0 (the reference life L10r includes it)"
         ));
     }
     if let Some(c) = spec.dynamic_n {
@@ -287,18 +296,24 @@ pub(crate) fn rating(
             }
             Err(e) => warnings.push(format!("no ISO 281 life L10: {}", case_key(e))),
         }
-        if let Some((b, loads, ratio)) = lamina {
-            let opts = LaminaOptions {
-                rotating: spec.rotating_ring.ring(),
-                edge_factor: spec.edge_stress_factor,
-            };
-            let l = lamina_life(b, c, loads, ratio, opts)?;
-            if l.l10r_mrev.is_finite() {
-                r.l10r_mrev = Some(l.l10r_mrev);
-                r.reference_load_n = Some(l.reference_load_n);
+        let rotating = spec.rotating_ring.ring();
+        let l = match life {
+            LifeInput::Rollers(b, loads, ratio) => {
+                let opts = LaminaOptions {
+                    rotating,
+                    edge_factor: spec.edge_stress_factor,
+                };
+                lamina_life(b, c, loads, ratio, opts)?
             }
-            r.raceway_capacities_n = Some([l.inner_capacity_n, l.outer_capacity_n]);
+            LifeInput::Balls(b, alpha, loads) => {
+                ball_reference_life(b, alpha, c, loads, rotating).map_err(case_key)?
+            }
+        };
+        if l.l10r_mrev.is_finite() {
+            r.l10r_mrev = Some(l.l10r_mrev);
+            r.reference_load_n = Some(l.reference_load_n);
         }
+        r.raceway_capacities_n = Some([l.inner_capacity_n, l.outer_capacity_n]);
     }
     if let Some(c0) = spec.static_n {
         match static_equivalent_load(t, fr, fa) {

@@ -187,7 +187,16 @@ fn ball_loads_balance_the_applied_load() {
         }
         assert!(b.max_ball_load_n > 0.0, "{name}");
         assert_symmetric(&report.stiffness_matrix, &name);
-        assert!(report.warnings.is_empty(), "{name}: {:?}", report.warnings);
+        // the only warning: an applied moment is not in ISO 281's P (the 6205 has its C)
+        let moment = case["load"].get("moment_nmm").is_some();
+        assert!(
+            report
+                .warnings
+                .iter()
+                .all(|w| moment && w.starts_with("ISO 281 and ISO 76 take the radial")),
+            "{name}: {:?}",
+            report.warnings
+        );
         // the Hertz contacts of the most loaded ball are recorded for the validity check
         assert_eq!(report.contacts.len(), 2, "{name}");
         let ratios: Vec<f64> = report.contacts.iter().map(|c| c.ratio()).collect();
@@ -419,4 +428,9 @@ fn the_6205_rating_agrees_with_its_catalogue_static_capacity() {
         .max(balls.max_outer_pressure_mpa);
     assert!((s0p - (4200.0 / p).powi(3)).abs() < 1e-12 * s0p);
     assert!(r.warnings.is_empty(), "{:?}", r.warnings);
+    // ISO/TS 16281's ball life: with 15 µm clearance fewer balls carry the load than in ISO
+    // 281's ε = 0.5, so L10r is below (C/F_r)^3 = 343 Mrev; P_ref = C L10r^(-1/3)
+    let l = g.l10r_mrev.unwrap();
+    assert!(l > 100.0 && l < 343.0, "{l}");
+    assert!((14_000.0 * l.powf(-1.0 / 3.0) / g.reference_load_n.unwrap() - 1.0).abs() < 1e-12);
 }

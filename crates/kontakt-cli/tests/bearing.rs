@@ -201,8 +201,8 @@ fn input_errors_name_the_case_key() {
         ),
         (
             "bearing_6205.toml",
-            "clearance_mm = 0.015",
-            "clearance_mm = 0.015\n[bearing.rating]\nedge_stress_factor = true",
+            "static_n = 7850.0",
+            "static_n = 7850.0\nedge_stress_factor = true",
             "bearing.rating.edge_stress_factor",
         ),
     ];

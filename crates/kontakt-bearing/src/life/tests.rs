@@ -408,7 +408,10 @@ fn ball_raceway_capacities_recombine_to_the_dynamic_capacity() {
         let c = 14_000.0;
         let (qi, qe) = ball_raceway_capacities(&b, alpha, c).unwrap();
         let zc = b.balls as f64 * alpha.cos().powf(0.7);
-        let (c1, c2) = (BALL_RATIO_ROTATING * zc * qi, BALL_RATIO_STATIONARY * zc * qe);
+        let (c1, c2) = (
+            BALL_RATIO_ROTATING * zc * qi,
+            BALL_RATIO_STATIONARY * zc * qe,
+        );
         let back = (c1.powf(-10.0 / 3.0) + c2.powf(-10.0 / 3.0)).powf(-0.3);
         assert!((back / c - 1.0).abs() < 1e-12, "{back}");
         let g = b.ball_diameter_mm * alpha.cos() / b.pitch_diameter_mm;

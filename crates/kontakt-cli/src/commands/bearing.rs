@@ -240,7 +240,7 @@ fn rating_lines(out: &mut impl Write, r: &RatingReport) -> Result<()> {
     }
     if let (Some(l), Some(p)) = (r.l10r_mrev, r.reference_load_n) {
         lives.push(format!(
-            "L10r = {:.1} Mrev (ISO/TS 16281 laminae, P_ref = {:.1} N)",
+            "L10r = {:.1} Mrev (ISO/TS 16281, P_ref = {:.1} N)",
             Num(l),
             Num(p)
         ));
