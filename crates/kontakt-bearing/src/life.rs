@@ -386,16 +386,7 @@ pub fn lamina_life(
 ) -> Result<LaminaLife> {
     let (q_ci, q_ce) = raceway_capacities(b, c)?;
     let (z, n) = (b.rollers, b.slices);
-    if slice_loads.len() != z * n {
-        return Err(Error::invalid(
-            "slice_loads",
-            format!("{} values", slice_loads.len()),
-            format!("rollers × slices = {} values", z * n),
-        ));
-    }
-    if let Some(q) = slice_loads.iter().find(|q| !(q.is_finite() && **q >= 0.0)) {
-        return Err(Error::invalid("slice_loads", q, "finite loads >= 0 N"));
-    }
+    check_element_loads("slice_loads", slice_loads, z * n, "rollers × slices")?;
     kontakt::error::positive("inner_ratio", inner_ratio)?;
     let lamina = (n as f64).powf(-7.0 / 9.0);
     let (lc_i, lc_e) = (q_ci * lamina, q_ce * lamina);
@@ -420,21 +411,49 @@ pub fn lamina_life(
         let qe_e = (se / z as f64).powf(1.0 / w_e);
         sum += (qe_i / lc_i).powf(4.5) + (qe_e / lc_e).powf(4.5);
     }
+    Ok(reference_life(
+        sum,
+        8.0 / 9.0,
+        Contact::Line,
+        c,
+        [q_ci, q_ce],
+    ))
+}
+
+/// The life `sum^(−combine)` (infinite for an empty sum) with its reference load
+/// `c L^(−1/p)`, p the ISO 281 exponent of `contact`, and the raceway capacities.
+fn reference_life(sum: f64, combine: f64, contact: Contact, c: f64, q_c: [f64; 2]) -> LaminaLife {
     let l10r = if sum > 0.0 {
-        sum.powf(-8.0 / 9.0)
+        sum.powf(-combine)
     } else {
         f64::INFINITY
     };
-    Ok(LaminaLife {
+    LaminaLife {
         l10r_mrev: l10r,
-        inner_capacity_n: q_ci,
-        outer_capacity_n: q_ce,
+        inner_capacity_n: q_c[0],
+        outer_capacity_n: q_c[1],
         reference_load_n: if l10r.is_finite() {
-            c * l10r.powf(-0.3)
+            c * l10r.powf(-1.0 / contact.life_exponent())
         } else {
             0.0
         },
-    })
+    }
+}
+
+/// `loads` has `count` entries (else an error naming `field` and `what`), each finite and
+/// >= 0.
+fn check_element_loads(field: &'static str, loads: &[f64], count: usize, what: &str) -> Result<()> {
+    if loads.len() != count {
+        return Err(Error::invalid(
+            field,
+            format!("{} values", loads.len()),
+            format!("{what} = {count} values"),
+        ));
+    }
+    if let Some(q) = loads.iter().find(|q| !(q.is_finite() && **q >= 0.0)) {
+        return Err(Error::invalid(field, q, "finite loads >= 0 N"));
+    }
+    Ok(())
 }
 
 /// The raceway capacities `(Q_ci, Q_ce)` (N) of a single-row radial ball bearing of basic
@@ -498,16 +517,7 @@ pub fn ball_reference_life(
 ) -> Result<LaminaLife> {
     let (q_ci, q_ce) = ball_raceway_capacities(b, nominal_angle_rad, c)?;
     let z = b.balls;
-    if ball_loads.len() != z {
-        return Err(Error::invalid(
-            "ball_loads",
-            format!("{} values", ball_loads.len()),
-            format!("one per ball, {z} values"),
-        ));
-    }
-    if let Some(q) = ball_loads.iter().find(|q| !(q.is_finite() && **q >= 0.0)) {
-        return Err(Error::invalid("ball_loads", q, "finite loads >= 0 N"));
-    }
+    check_element_loads("ball_loads", ball_loads, z, "one per ball")?;
     let (w_i, w_e) = match rotating {
         RotatingRing::Inner => (3.0, 10.0 / 3.0),
         RotatingRing::Outer => (10.0 / 3.0, 3.0),
@@ -516,21 +526,7 @@ pub fn ball_reference_life(
         |w: f64| (ball_loads.iter().map(|q| q.powf(w)).sum::<f64>() / z as f64).powf(1.0 / w);
     let e = 10.0 / 3.0;
     let sum = (mean(w_i) / q_ci).powf(e) + (mean(w_e) / q_ce).powf(e);
-    let l10r = if sum > 0.0 {
-        sum.powf(-0.9)
-    } else {
-        f64::INFINITY
-    };
-    Ok(LaminaLife {
-        l10r_mrev: l10r,
-        inner_capacity_n: q_ci,
-        outer_capacity_n: q_ce,
-        reference_load_n: if l10r.is_finite() {
-            c * l10r.powf(-1.0 / 3.0)
-        } else {
-            0.0
-        },
-    })
+    Ok(reference_life(sum, 0.9, Contact::Point, c, [q_ci, q_ce]))
 }
 
 #[cfg(test)]
