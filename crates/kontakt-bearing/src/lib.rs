@@ -35,9 +35,11 @@
 pub mod ball_equilibrium;
 pub mod equilibrium;
 pub mod geometry;
+pub mod life;
 pub mod load_zone;
 mod newton;
 pub mod profile;
+pub mod stress;
 #[cfg(test)]
 mod test_support;
 

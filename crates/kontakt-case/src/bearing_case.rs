@@ -52,9 +52,10 @@
 //! methods; a solve that stagnates at the round-off floor (residual at most 1e-8 of the
 //! load, 1000 times the tolerance) is reported with a warning.
 
-use crate::bearing_slices::{
-    RollerPressures, SliceModel, SlicePressures, SliceSolver, pressure_map,
+use crate::bearing_rating::{
+    LifeInput, RatingReport, RatingSpec, checked_spec, rating, roller_pressures,
 };
+use crate::bearing_slices::{RollerPressures, SliceModel, SliceSolver, pressure_map};
 use crate::common::{MaterialSpec, SCHEMA_VERSION, in_degrees, material};
 use crate::validity::{ContactSize, Size, checked, checked_report};
 use kontakt::hertz::validity::point_size;
@@ -66,6 +67,7 @@ use kontakt_bearing::equilibrium::{Dof, RingLoad, RollerBearingSolver};
 use kontakt_bearing::geometry::{
     BallBearing, BallBearingKind, DEFAULT_SLICES, RollerBearing, RollerBearingKind,
 };
+use kontakt_bearing::life::RatingType;
 use kontakt_bearing::profile::{Profile, TabulatedProfile};
 use serde::{Deserialize, Serialize};
 
@@ -156,6 +158,10 @@ pub struct BallSpec {
     /// ([`crate::bearing_design`]); absent: every key given.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub boundary: Option<crate::bearing_design::BoundarySpec>,
+    /// `[bearing.rating]`: the catalogue's C and C0 for the ISO 281 life and ISO 76 static
+    /// safety (`docs/bearing-model.md`, "Life and static safety").
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rating: Option<RatingSpec>,
 }
 
 /// The internal geometry of a roller bearing. Lengths in mm, angles in degrees.
@@ -208,6 +214,10 @@ pub struct RollerSpec {
     /// (half-space strips; reports the pressure of every slice).
     #[serde(default)]
     pub slice_model: SliceModel,
+    /// `[bearing.rating]`: the catalogue's C and C0 for the ISO 281 life, the ISO/TS 16281
+    /// lamina life and the ISO 76 static safety (`docs/bearing-model.md`, "Life and static safety").
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rating: Option<RatingSpec>,
 }
 
 fn default_slices() -> usize {
@@ -476,9 +486,10 @@ pub struct RollerRow {
     pub max_load_per_length_n_per_mm: f64,
     /// The largest slice approach, mm (negative: lifted off by that much).
     pub approach_mm: f64,
-    /// `slice_model = "coupled"`: the largest slice pressure of either raceway, MPa.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub max_pressure_mpa: Option<f64>,
+    /// The largest Hertz pressure of the roller's slices on the inner raceway, MPa.
+    pub inner_max_pressure_mpa: f64,
+    /// The largest Hertz pressure of the roller's slices on the outer raceway, MPa.
+    pub outer_max_pressure_mpa: f64,
 }
 
 /// The slices of the most loaded roller.
@@ -495,10 +506,10 @@ pub struct SliceTable {
     pub load_per_length_n_per_mm: Vec<f64>,
     /// Slice approaches, mm.
     pub approach_mm: Vec<f64>,
-    /// `slice_model = "coupled"`: the slice pressures (keys `inner_pressure_mpa`,
-    /// `outer_pressure_mpa`).
-    #[serde(flatten)]
-    pub pressure: Option<Box<SlicePressures>>,
+    /// Maximum Hertz pressure of each slice on the inner raceway, MPa.
+    pub inner_pressure_mpa: Vec<f64>,
+    /// Maximum Hertz pressure of each slice on the outer raceway, MPa.
+    pub outer_pressure_mpa: Vec<f64>,
 }
 
 /// The solver's status.
@@ -561,12 +572,13 @@ pub struct BearingReport {
     /// Results to treat with care. Absent when none applies.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<String>,
-    /// The Hertz contacts of the most loaded ball, inner and outer raceway, sized for the
-    /// validity check; none for a roller bearing (no Hertz or half-space contact is sized
-    /// in the slice model: the check has only the finiteness of the report to check). Not
+    /// The Hertz contacts of the most loaded ball, inner and outer raceway, or of the most
+    /// loaded roller's most loaded slice on each raceway, sized for the validity check. Not
     /// in the JSON.
     #[serde(skip)]
     pub contacts: Vec<ContactSize>,
+    /// Static safety and rating lives (`docs/bearing-model.md`, "Life and static safety").
+    pub rating: RatingReport,
 }
 
 /// The rolling elements of a [`BearingReport`], their keys flattened into the report.
@@ -626,6 +638,10 @@ pub struct RollerPart {
     /// `max_pressure_mpa`, `slice_pressure_mpa`).
     #[serde(flatten)]
     pub pressure: Option<Box<RollerPressures>>,
+    /// The largest Hertz pressure of any slice on the inner raceway, MPa.
+    pub max_inner_pressure_mpa: f64,
+    /// The largest Hertz pressure of any slice on the outer raceway, MPa.
+    pub max_outer_pressure_mpa: f64,
 }
 
 /// The report keys of a ball bearing.
@@ -925,19 +941,41 @@ fn roller_report<S: SliceSolver>(
     let width = b.effective_length_mm / ns as f64;
     let loads = solver.slice_loads();
     let approaches = solver.slice_approaches();
-    let pressures = pressure_map(solver);
+    let map = pressure_map(solver);
+    let spec = match &case.bearing {
+        BearingSpec::Cylindrical(s) | BearingSpec::Tapered(s) | BearingSpec::Thrust(s) => {
+            s.rating.as_ref()
+        }
+        _ => None,
+    };
+    let spec = checked_spec(spec, false)?;
+    let most = (0..b.rollers).fold(0, |m, j| {
+        if solver.roller_loads()[j].outer_n > solver.roller_loads()[m].outer_n {
+            j
+        } else {
+            m
+        }
+    });
+    // Hertz line contacts of the independent slices (and the most loaded slice's contact
+    // for the validity check); a model with its own slice pressures (coupled slices)
+    // reports those instead.
+    let mut pressures = roller_pressures(b, solver.roller_loads(), loads, most)?;
+    if let Some((inner, outer)) = solver.slice_pressures() {
+        let peak = |p: &[f64]| p.iter().copied().fold(0.0, f64::max);
+        pressures.per_roller = inner
+            .chunks_exact(ns)
+            .zip(outer.chunks_exact(ns))
+            .map(|(i, o)| [peak(i), peak(o)])
+            .collect();
+        pressures.most_inner = inner[most * ns..(most + 1) * ns].to_vec();
+        pressures.most_outer = outer[most * ns..(most + 1) * ns].to_vec();
+    }
     let mut rows = Vec::with_capacity(b.rollers);
-    let mut most = 0;
-    let mut q_max = f64::NEG_INFINITY;
     for (j, r) in solver.roller_loads().iter().enumerate() {
         let slice_max = loads[j * ns..(j + 1) * ns]
             .iter()
             .copied()
             .fold(0.0, f64::max);
-        if r.outer_n > q_max {
-            q_max = r.outer_n;
-            most = j;
-        }
         rows.push(RollerRow {
             azimuth_deg: r.azimuth_rad.to_degrees(),
             inner_load_n: r.inner_n,
@@ -945,7 +983,8 @@ fn roller_report<S: SliceSolver>(
             rib_load_n: r.rib_n,
             max_load_per_length_n_per_mm: slice_max / width,
             approach_mm: r.max_approach_mm,
-            max_pressure_mpa: pressures.as_ref().map(|(_, m)| m[j]),
+            inner_max_pressure_mpa: pressures.per_roller[j][0],
+            outer_max_pressure_mpa: pressures.per_roller[j][1],
         });
     }
     let slice_loads = loads[most * ns..(most + 1) * ns].to_vec();
@@ -955,13 +994,35 @@ fn roller_report<S: SliceSolver>(
         load_per_length_n_per_mm: slice_loads.iter().map(|q| q / width).collect(),
         load_n: slice_loads,
         approach_mm: approaches[most * ns..(most + 1) * ns].to_vec(),
-        pressure: solver.slice_pressures().map(|(i, o)| {
-            Box::new(SlicePressures {
-                inner_pressure_mpa: i[most * ns..(most + 1) * ns].to_vec(),
-                outer_pressure_mpa: o[most * ns..(most + 1) * ns].to_vec(),
-            })
-        }),
+        inner_pressure_mpa: pressures.most_inner,
+        outer_pressure_mpa: pressures.most_outer,
     };
+    let p_max = pressures
+        .per_roller
+        .iter()
+        .fold([0.0_f64; 2], |m, p| [m[0].max(p[0]), m[1].max(p[1])]);
+    let kind = match b.kind {
+        RollerBearingKind::Cylindrical => RatingType::Cylindrical,
+        RollerBearingKind::Thrust => RatingType::Thrust,
+        RollerBearingKind::Tapered => RatingType::Tapered {
+            contact_angle_rad: b.contact_angle_rad,
+        },
+    };
+    let r_most = solver.roller_loads()[most];
+    let inner_ratio = if r_most.outer_n > 0.0 {
+        r_most.inner_n / r_most.outer_n
+    } else {
+        1.0
+    };
+    let rated = rating(
+        kind,
+        &spec,
+        sol.load,
+        applied_moment(load),
+        p_max[0].max(p_max[1]),
+        LifeInput::Rollers(b, loads, inner_ratio),
+        &mut warnings,
+    )?;
     let elements = BearingElements::Rollers(RollerPart {
         rollers: b.rollers,
         slices: ns,
@@ -980,18 +1041,22 @@ fn roller_report<S: SliceSolver>(
             .take(b.rollers)
             .map(|c| c.iter().map(|q| q / width).collect())
             .collect(),
-        pressure: pressures.map(|(map, m)| {
+        pressure: map.map(|(map, m)| {
             Box::new(RollerPressures {
                 max_pressure_mpa: m.iter().copied().fold(0.0, f64::max),
                 slice_pressure_mpa: map,
             })
         }),
+        max_inner_pressure_mpa: p_max[0],
+        max_outer_pressure_mpa: p_max[1],
     });
     let mut report = report(case, label, elements, sol.displacement, sol.load);
     report.solver = solver_echo(&sol.status);
     report.load_zone_epsilon = sol.load_zone;
     report.stiffness_matrix = sol.stiffness;
     report.warnings = warnings;
+    report.contacts = pressures.contacts;
+    report.rating = rated;
     Ok(report)
 }
 
@@ -1003,6 +1068,15 @@ pub(crate) fn coarse_slices_warning(slices: usize) -> Option<String> {
             "{slices} slices per roller: fewer than the recommended {DEFAULT_SLICES}, the roller loads are coarse (docs/bearing-model.md §6)"
         )
     })
+}
+
+/// The magnitude of the applied (force-controlled) moment, N·mm.
+fn applied_moment(load: &RingLoad) -> f64 {
+    let m = |d: Dof| match d {
+        Dof::Force(v) => v,
+        Dof::Displacement(_) => 0.0,
+    };
+    m(load.dofs[3]).hypot(m(load.dofs[4]))
 }
 
 /// The library's load-field errors (`load.fz_n`) as the case file's keys.
@@ -1109,6 +1183,7 @@ fn report(
         stiffness_units: stiffness_units(),
         warnings: Vec::new(),
         contacts: Vec::new(),
+        rating: RatingReport::default(),
     }
 }
 
@@ -1294,8 +1369,24 @@ fn ball_report(
         None => solver.solve(load),
     }
     .map_err(map_load)?;
-    let warnings = solver_warnings(&sol.status, sol.note)?;
+    let mut warnings = solver_warnings(&sol.status, sol.note)?;
+    let spec = checked_spec(s.rating.as_ref(), true)?;
     let b = solver.bearing();
+    let kind = match b.kind {
+        BallBearingKind::DeepGroove => RatingType::DeepGrooveBall,
+        BallBearingKind::AngularContact => RatingType::AngularContactBall {
+            contact_angle_rad: b.contact_angle_rad,
+        },
+    };
+    let p_max = sol.max_pressure_mpa[0].max(sol.max_pressure_mpa[1]);
+    let moment = applied_moment(load);
+    let nominal = match b.kind {
+        BallBearingKind::DeepGroove => 0.0,
+        BallBearingKind::AngularContact => b.contact_angle_rad,
+    };
+    let q: Vec<f64> = solver.ball_loads().iter().map(|q| q.load_n).collect();
+    let life = LifeInput::Balls(b, nominal, &q);
+    let rated = rating(kind, &spec, sol.load, moment, p_max, life, &mut warnings)?;
     let rows: Vec<BallRow> = solver
         .ball_loads()
         .iter()
@@ -1343,5 +1434,6 @@ fn ball_report(
     report.stiffness_matrix = sol.stiffness;
     report.warnings = warnings;
     report.contacts = contacts;
+    report.rating = rated;
     Ok(report)
 }

@@ -25,15 +25,6 @@ pub enum SliceModel {
     Coupled,
 }
 
-/// The slice pressures of one roller in the report (`slice_model = "coupled"`).
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct SlicePressures {
-    /// The peak pressure of every slice on the inner raceway, MPa.
-    pub inner_pressure_mpa: Vec<f64>,
-    /// The same on the outer raceway, MPa.
-    pub outer_pressure_mpa: Vec<f64>,
-}
-
 /// The pressure along every roller in the report (`slice_model = "coupled"`).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct RollerPressures {

@@ -91,9 +91,19 @@ fn json_keys_solve_and_csv() {
         "rib_load_n",
         "max_load_per_length_n_per_mm",
         "approach_mm",
+        "inner_max_pressure_mpa",
+        "outer_max_pressure_mpa",
     ] {
         assert!(row[key].is_number(), "{key}: {row}");
     }
+    // the pressures: a CRB's inner raceway is the more stressed (convex), and the static
+    // safety from the pressure is (4000 MPa / p_max)^2
+    let p_in = num(&v["max_inner_pressure_mpa"]);
+    assert!(p_in > num(&v["max_outer_pressure_mpa"]) && p_in > 500.0);
+    let rating = &v["rating"];
+    assert_eq!(num(&rating["pressure_limit_mpa"]), 4000.0);
+    let s0 = num(&rating["static_safety_from_pressure"]);
+    assert!((s0 - (4000.0 / p_in).powi(2)).abs() < 1e-9 * s0, "{rating}");
     assert_eq!(v["stiffness_units"][0][0], "N/mm");
     assert_eq!(v["stiffness_units"][3][4], "N*mm/rad");
     assert!((num(&v["force_n"][0]) - 10_000.0).abs() < 1e-6);
@@ -111,7 +121,7 @@ fn json_keys_solve_and_csv() {
     let mut lines = text.lines();
     assert_eq!(
         lines.next().unwrap(),
-        "azimuth_deg,inner_load_n,outer_load_n,rib_load_n,max_load_per_length_n_per_mm,approach_mm"
+        "azimuth_deg,inner_load_n,outer_load_n,rib_load_n,max_load_per_length_n_per_mm,approach_mm,inner_max_pressure_mpa,outer_max_pressure_mpa"
     );
     assert_eq!(lines.count(), 14);
     // `kontakt solve` has no per-roller CSV: an input error pointing at `kontakt bearing`
@@ -176,6 +186,25 @@ fn input_errors_name_the_case_key() {
         ),
         // a force and a prescribed displacement on the same degree of freedom
         ("bearing_nu_crb.toml", crb_load, &both, "load.moment_nmm[0]"),
+        // a load rating out of range, an unknown rating key
+        (
+            "bearing_nu_crb.toml",
+            "slices = 31",
+            "slices = 31\n[bearing.rating]\ndynamic_n = -1.0",
+            "bearing.rating.dynamic_n = -1",
+        ),
+        (
+            "bearing_nu_crb.toml",
+            "slices = 31",
+            "slices = 31\n[bearing.rating]\ndynamic = 1.0",
+            "bearing.rating.dynamic",
+        ),
+        (
+            "bearing_6205.toml",
+            "static_n = 7850.0",
+            "static_n = 7850.0\nedge_stress_factor = true",
+            "bearing.rating.edge_stress_factor",
+        ),
     ];
     for (name, from, to, names) in cases {
         let p = edited_example(&dir, name, from, to);
@@ -349,4 +378,64 @@ fn ball_bearing_table_json_csv_and_plots() {
     let p = edited_example(&dir, "bearing_6205.toml", "balls = 9", "balls = 16");
     let e = bad(&["bearing", p.to_str().unwrap()]);
     assert!(e.contains("bearing.balls"), "{e}");
+}
+
+/// `[bearing.rating]`: with C and C0 the table and the JSON give the ISO 281 life, the
+/// ISO 76 static safety and (rollers) the lamina life; a load above the static capacity is
+/// a warning, not an error.
+#[test]
+fn rating_lives_and_static_safety() {
+    let dir = support::tempdir("bearing", "rating");
+    let p = edited_example(
+        &dir,
+        "bearing_nu_crb.toml",
+        "slices = 31",
+        "slices = 31\n[bearing.rating]\ndynamic_n = 60000.0\nstatic_n = 55000.0",
+    );
+    let v = run_json(&["bearing", p.to_str().unwrap()]);
+    let r = &v["rating"];
+    // a CRB: P = F_r, L10 = (C/P)^(10/3), s0 = C0/F_r
+    assert!(
+        (num(&r["equivalent_dynamic_load_n"]) - 10_000.0).abs() < 1e-6,
+        "{r}"
+    );
+    assert!(
+        (num(&r["l10_mrev"]) - 6f64.powf(10.0 / 3.0)).abs() < 1e-6,
+        "{r}"
+    );
+    assert!((num(&r["static_safety"]) - 5.5).abs() < 1e-9, "{r}");
+    assert!(
+        num(&r["l10r_mrev"]) > 0.0 && num(&r["reference_load_n"]) > 0.0,
+        "{r}"
+    );
+    assert!(v.get("warnings").is_none(), "{v}");
+    let out = kontakt()
+        .args(["bearing", p.to_str().unwrap()])
+        .output()
+        .unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        text.contains("L10 = ") && text.contains("L10r = "),
+        "{text}"
+    );
+    assert!(text.contains("C0/P0 = 5.5"), "{text}");
+    // 20 times the load: the pressure exceeds 4000 MPa and C0/P0 < 1, both warned
+    let p = edited_example(
+        &dir,
+        "bearing_nu_crb.toml",
+        "slices = 31",
+        "slices = 31\n[bearing.rating]\ndynamic_n = 60000.0\nstatic_n = 55000.0",
+    );
+    let text = std::fs::read_to_string(&p).unwrap();
+    std::fs::write(
+        &p,
+        text.replace("[10000.0, 0.0, 0.0]", "[200000.0, 0.0, 0.0]"),
+    )
+    .unwrap();
+    let v = run_json(&["bearing", p.to_str().unwrap()]);
+    let w = v["warnings"].to_string();
+    assert!(
+        w.contains("exceeds ISO 76's 4000 MPa") && w.contains("C0/P0"),
+        "{w}"
+    );
 }

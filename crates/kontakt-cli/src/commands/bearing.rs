@@ -12,6 +12,7 @@ pub use crate::commands::bearing_plot::{
 use crate::output::Num;
 use anyhow::{Context, Result};
 use kontakt_case::bearing_case::{BallPart, BearingElements, BearingSpec, RollerPart};
+use kontakt_case::bearing_rating::RatingReport;
 use kontakt_case::{BearingCase, BearingReport, run_bearing_case};
 use std::io::Write;
 use std::path::Path;
@@ -88,6 +89,7 @@ pub fn print_report(out: &mut impl Write, r: &BearingReport, json: bool) -> Resu
         BearingElements::Rollers(p) => roller_table(out, r, p)?,
         BearingElements::Balls(p) => ball_table(out, p)?,
     }
+    rating_lines(out, &r.rating)?;
     writeln!(out)?;
     writeln!(
         out,
@@ -172,23 +174,35 @@ fn roller_table(out: &mut impl Write, r: &BearingReport, p: &RollerPart) -> Resu
     writeln!(out)?;
     writeln!(
         out,
-        "  {:>6} {:>10} {:>10} {:>10} {:>10} {:>12}",
-        "ψ deg", "Q_in N", "Q_out N", "Q_rib N", "q_max N/mm", "approach mm"
+        "  {:>6} {:>10} {:>10} {:>10} {:>10} {:>12} {:>10} {:>10}",
+        "ψ deg",
+        "Q_in N",
+        "Q_out N",
+        "Q_rib N",
+        "q_max N/mm",
+        "approach mm",
+        "p_in MPa",
+        "p_out MPa"
     )?;
     for row in &p.roller_loads {
         writeln!(
             out,
-            "  {:>6.1} {:>10.1} {:>10.1} {:>10.1} {:>10.1} {:>12.6}",
+            "  {:>6.1} {:>10.1} {:>10.1} {:>10.1} {:>10.1} {:>12.6} {:>10.0} {:>10.0}",
             Num(row.azimuth_deg),
             Num(row.inner_load_n),
             Num(row.outer_load_n),
             Num(row.rib_load_n),
             Num(row.max_load_per_length_n_per_mm),
-            Num(row.approach_mm)
+            Num(row.approach_mm),
+            Num(row.inner_max_pressure_mpa),
+            Num(row.outer_max_pressure_mpa)
         )?;
     }
-    if let (Some(all), Some(most)) = (&p.pressure, &p.most_loaded_roller.pressure) {
-        let (pmax, inner) = (all.max_pressure_mpa, &most.inner_pressure_mpa);
+    if let Some(all) = &p.pressure {
+        let (pmax, inner) = (
+            all.max_pressure_mpa,
+            &p.most_loaded_roller.inner_pressure_mpa,
+        );
         let (first, last) = (inner[0], inner[inner.len() - 1]);
         let centre = inner[inner.len() / 2];
         writeln!(out)?;
@@ -229,6 +243,42 @@ fn ball_table(out: &mut impl Write, p: &BallPart) -> Result<()> {
             Num(row.inner_max_pressure_mpa),
             Num(row.outer_max_pressure_mpa)
         )?;
+    }
+    Ok(())
+}
+
+/// The static safety and the lives of the report's `rating`.
+fn rating_lines(out: &mut impl Write, r: &RatingReport) -> Result<()> {
+    writeln!(out)?;
+    let s0 = r
+        .static_safety_from_pressure
+        .map_or_else(|| "-".to_string(), |s| format!("{:.3}", Num(s)));
+    let mut line = format!(
+        "  static safety: {s0} from the largest pressure {:.0} MPa (ISO 76 limit {:.0} MPa)",
+        Num(r.max_pressure_mpa),
+        Num(r.pressure_limit_mpa)
+    );
+    if let (Some(s), Some(p0)) = (r.static_safety, r.equivalent_static_load_n) {
+        line += &format!("; C0/P0 = {:.3} (P0 = {:.1} N)", Num(s), Num(p0));
+    }
+    writeln!(out, "{line}")?;
+    let mut lives = Vec::new();
+    if let (Some(l), Some(p)) = (r.l10_mrev, r.equivalent_dynamic_load_n) {
+        lives.push(format!(
+            "L10 = {:.1} Mrev (ISO 281, P = {:.1} N)",
+            Num(l),
+            Num(p)
+        ));
+    }
+    if let (Some(l), Some(p)) = (r.l10r_mrev, r.reference_load_n) {
+        lives.push(format!(
+            "L10r = {:.1} Mrev (ISO/TS 16281, P_ref = {:.1} N)",
+            Num(l),
+            Num(p)
+        ));
+    }
+    if !lives.is_empty() {
+        writeln!(out, "  life:          {}", lives.join("; "))?;
     }
     Ok(())
 }
