@@ -52,13 +52,11 @@
 //! methods; a solve that stagnates at the round-off floor (residual at most 1e-8 of the
 //! load, 1000 times the tolerance) is reported with a warning.
 
-use crate::bearing_rating::{
-    LifeInput, RatingReport, RatingSpec, checked_spec, rating, roller_pressures,
-};
+use crate::bearing_post::{BallPost, RollerPost};
+use crate::bearing_rating::{RatingReport, RatingSpec};
 use crate::bearing_slices::{RollerPressures, SliceModel, SliceSolver, pressure_map};
 use crate::common::{MaterialSpec, SCHEMA_VERSION, in_degrees, material};
-use crate::validity::{ContactSize, Size, checked, checked_report};
-use kontakt::hertz::validity::point_size;
+use crate::validity::{ContactSize, checked, checked_report};
 use kontakt::solve::{SolveStatus, Termination};
 use kontakt::{Error, Result};
 use kontakt_bearing::ball_equilibrium::BallBearingSolver;
@@ -67,7 +65,6 @@ use kontakt_bearing::equilibrium::{Dof, RingLoad, RollerBearingSolver};
 use kontakt_bearing::geometry::{
     BallBearing, BallBearingKind, DEFAULT_SLICES, RollerBearing, RollerBearingKind,
 };
-use kontakt_bearing::life::RatingType;
 use kontakt_bearing::profile::{Profile, TabulatedProfile};
 use serde::{Deserialize, Serialize};
 
@@ -936,7 +933,6 @@ fn roller_report<S: SliceSolver>(
     .map_err(map_load)?;
     let mut warnings = solver_warnings(&sol.status, sol.note)?;
     let b = solver.bearing();
-    warnings.extend(coarse_slices_warning(b.slices));
     let ns = b.slices;
     let width = b.effective_length_mm / ns as f64;
     let loads = solver.slice_loads();
@@ -948,28 +944,24 @@ fn roller_report<S: SliceSolver>(
         }
         _ => None,
     };
-    let spec = checked_spec(spec, false)?;
-    let most = (0..b.rollers).fold(0, |m, j| {
-        if solver.roller_loads()[j].outer_n > solver.roller_loads()[m].outer_n {
-            j
-        } else {
-            m
-        }
-    });
-    // Hertz line contacts of the independent slices (and the most loaded slice's contact
-    // for the validity check); a model with its own slice pressures (coupled slices)
-    // reports those instead.
-    let mut pressures = roller_pressures(b, solver.roller_loads(), loads, most)?;
-    if let Some((inner, outer)) = solver.slice_pressures() {
-        let peak = |p: &[f64]| p.iter().copied().fold(0.0, f64::max);
-        pressures.per_roller = inner
-            .chunks_exact(ns)
-            .zip(outer.chunks_exact(ns))
-            .map(|(i, o)| [peak(i), peak(o)])
-            .collect();
-        pressures.most_inner = inner[most * ns..(most + 1) * ns].to_vec();
-        pressures.most_outer = outer[most * ns..(most + 1) * ns].to_vec();
-    }
+    // pressures, rating and the most loaded slice's contacts: the one post-solve path of
+    // the report and the sweep's rows (crate::bearing_post)
+    let mut per_roller = Vec::with_capacity(b.rollers);
+    let (mut most, mut most_inner, mut most_outer) = (0, Vec::new(), Vec::new());
+    let post = RollerPost::new(b, spec)?.run(
+        &*solver,
+        &sol,
+        applied_moment(load),
+        &mut warnings,
+        |j, peaks, inner, outer, is_most| {
+            per_roller.push(peaks);
+            if is_most {
+                most = j;
+                most_inner = inner.to_vec();
+                most_outer = outer.to_vec();
+            }
+        },
+    )?;
     let mut rows = Vec::with_capacity(b.rollers);
     for (j, r) in solver.roller_loads().iter().enumerate() {
         let slice_max = loads[j * ns..(j + 1) * ns]
@@ -983,8 +975,8 @@ fn roller_report<S: SliceSolver>(
             rib_load_n: r.rib_n,
             max_load_per_length_n_per_mm: slice_max / width,
             approach_mm: r.max_approach_mm,
-            inner_max_pressure_mpa: pressures.per_roller[j][0],
-            outer_max_pressure_mpa: pressures.per_roller[j][1],
+            inner_max_pressure_mpa: per_roller[j][0],
+            outer_max_pressure_mpa: per_roller[j][1],
         });
     }
     let slice_loads = loads[most * ns..(most + 1) * ns].to_vec();
@@ -994,35 +986,10 @@ fn roller_report<S: SliceSolver>(
         load_per_length_n_per_mm: slice_loads.iter().map(|q| q / width).collect(),
         load_n: slice_loads,
         approach_mm: approaches[most * ns..(most + 1) * ns].to_vec(),
-        inner_pressure_mpa: pressures.most_inner,
-        outer_pressure_mpa: pressures.most_outer,
+        inner_pressure_mpa: most_inner,
+        outer_pressure_mpa: most_outer,
     };
-    let p_max = pressures
-        .per_roller
-        .iter()
-        .fold([0.0_f64; 2], |m, p| [m[0].max(p[0]), m[1].max(p[1])]);
-    let kind = match b.kind {
-        RollerBearingKind::Cylindrical => RatingType::Cylindrical,
-        RollerBearingKind::Thrust => RatingType::Thrust,
-        RollerBearingKind::Tapered => RatingType::Tapered {
-            contact_angle_rad: b.contact_angle_rad,
-        },
-    };
-    let r_most = solver.roller_loads()[most];
-    let inner_ratio = if r_most.outer_n > 0.0 {
-        r_most.inner_n / r_most.outer_n
-    } else {
-        1.0
-    };
-    let rated = rating(
-        kind,
-        &spec,
-        sol.load,
-        applied_moment(load),
-        p_max[0].max(p_max[1]),
-        LifeInput::Rollers(b, loads, inner_ratio),
-        &mut warnings,
-    )?;
+    let p_max = post.max_pressure_mpa;
     let elements = BearingElements::Rollers(RollerPart {
         rollers: b.rollers,
         slices: ns,
@@ -1055,8 +1022,8 @@ fn roller_report<S: SliceSolver>(
     report.load_zone_epsilon = sol.load_zone;
     report.stiffness_matrix = sol.stiffness;
     report.warnings = warnings;
-    report.contacts = pressures.contacts;
-    report.rating = rated;
+    report.contacts = post.contact_sizes();
+    report.rating = post.rating;
     Ok(report)
 }
 
@@ -1071,7 +1038,7 @@ pub(crate) fn coarse_slices_warning(slices: usize) -> Option<String> {
 }
 
 /// The magnitude of the applied (force-controlled) moment, N·mm.
-fn applied_moment(load: &RingLoad) -> f64 {
+pub(crate) fn applied_moment(load: &RingLoad) -> f64 {
     let m = |d: Dof| match d {
         Dof::Force(v) => v,
         Dof::Displacement(_) => 0.0,
@@ -1288,7 +1255,7 @@ fn ball_bearing(
 
 /// The library's field names of [`BallBearing`] as the case file's keys, in the units the
 /// file gives them (degrees, a groove radius in mm).
-fn map_ball_field(e: Error, s: &BallSpec, keys: &GrooveKeys, f: [f64; 2]) -> Error {
+pub(crate) fn map_ball_field(e: Error, s: &BallSpec, keys: &GrooveKeys, f: [f64; 2]) -> Error {
     let d = s.ball_diameter_mm;
     // a groove typed as a radius: its value and range in mm
     let e = match e {
@@ -1370,23 +1337,16 @@ fn ball_report(
     }
     .map_err(map_load)?;
     let mut warnings = solver_warnings(&sol.status, sol.note)?;
-    let spec = checked_spec(s.rating.as_ref(), true)?;
+    // rating and the most loaded ball's contacts: the one post-solve path of the report
+    // and the sweep's rows (crate::bearing_post)
+    let post = BallPost::new(solver, s.rating.as_ref(), [keys.inner, keys.outer])?.run(
+        solver,
+        &sol,
+        applied_moment(load),
+        &mut warnings,
+        |e| map_ball_field(e, s, keys, f),
+    )?;
     let b = solver.bearing();
-    let kind = match b.kind {
-        BallBearingKind::DeepGroove => RatingType::DeepGrooveBall,
-        BallBearingKind::AngularContact => RatingType::AngularContactBall {
-            contact_angle_rad: b.contact_angle_rad,
-        },
-    };
-    let p_max = sol.max_pressure_mpa[0].max(sol.max_pressure_mpa[1]);
-    let moment = applied_moment(load);
-    let nominal = match b.kind {
-        BallBearingKind::DeepGroove => 0.0,
-        BallBearingKind::AngularContact => b.contact_angle_rad,
-    };
-    let q: Vec<f64> = solver.ball_loads().iter().map(|q| q.load_n).collect();
-    let life = LifeInput::Balls(b, nominal, &q);
-    let rated = rating(kind, &spec, sol.load, moment, p_max, life, &mut warnings)?;
     let rows: Vec<BallRow> = solver
         .ball_loads()
         .iter()
@@ -1399,27 +1359,6 @@ fn ball_report(
             outer_max_pressure_mpa: q.outer_max_pressure_mpa,
         })
         .collect();
-    // The pressures are those of the library's Hertz contacts at the stiffness contact
-    // angle: size the most loaded ball's two contacts against the ball and the groove.
-    let mut contacts = Vec::new();
-    if sol.max_ball_load_n > 0.0 {
-        let pair = b
-            .contacts(b.stiffness_contact_angle())
-            .map_err(|e| map_ball_field(e, s, keys, f))?;
-        for (c, ring, key) in [
-            (&pair[0], "inner", keys.inner),
-            (&pair[1], "outer", keys.outer),
-        ] {
-            let hs = c.solve_force(sol.max_ball_load_n)?;
-            contacts.push(
-                ContactSize::new(
-                    Size::Hertz(point_size(c.geometry(), &hs)),
-                    ["bearing.ball_diameter_mm", &format!("bearing.{key}")],
-                )
-                .at(format!("the most loaded ball on the {ring} raceway")),
-            );
-        }
-    }
     let elements = BearingElements::Balls(BallPart {
         balls: b.balls,
         free_contact_angle_deg: b.free_contact_angle().to_degrees(),
@@ -1433,7 +1372,7 @@ fn ball_report(
     report.solver = solver_echo(&sol.status);
     report.stiffness_matrix = sol.stiffness;
     report.warnings = warnings;
-    report.contacts = contacts;
-    report.rating = rated;
+    report.contacts = post.contact_sizes();
+    report.rating = post.rating;
     Ok(report)
 }

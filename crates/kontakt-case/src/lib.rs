@@ -28,6 +28,7 @@
 pub mod bearing_case;
 pub mod bearing_design;
 pub mod bearing_model;
+mod bearing_post;
 pub mod bearing_rating;
 pub mod bearing_slices;
 pub mod bem_case;

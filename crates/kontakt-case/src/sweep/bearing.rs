@@ -19,22 +19,26 @@
 //!   every row (null where a value does not apply). A case whose elements all lift off is
 //!   status `lifted_off` with zero force and its message in `warnings`, not an error.
 //!
-//! A case allocates nothing on the way (the solver owns its buffers; a row is `Copy` data
-//! but for its warnings and error texts, which exist only when there are any).
+//! - **After the solve** a row goes through the report's own post-solve path
+//!   ([`crate::bearing_post`], planned once per block): raceway pressures, rating
+//!   (`[bearing.rating]`) with its warnings, and the validity check of the most loaded
+//!   contacts, so that the row's warnings and refusals are the report's.
+//!
+//! A case allocates nothing on the way (the solver and the post own their buffers; a row is
+//! `Copy` data but for its warnings and error texts, which exist only when there are any).
 
 use super::table::Status;
 use super::{Sweep, ValueKind};
 use crate::bearing_case::{
-    BearingCase, BearingLoadSpec, Planned, coarse_slices_warning, map_load, plan, ring_load,
-    solver_warnings,
+    BearingCase, BearingLoadSpec, BearingSpec, Planned, applied_moment, map_ball_field, map_load,
+    plan, ring_load, solver_warnings,
 };
+use crate::bearing_post::{BallPost, Post, RollerPost};
 use crate::bearing_slices::SliceSolver;
 use crate::case::Case;
-use crate::validity::{ContactSize, Size};
 use arrow_array::{ArrayRef, BooleanArray, Float64Array, Int64Array, StringArray};
-use kontakt::hertz::HertzPointContact;
-use kontakt::hertz::validity::point_size;
 use kontakt::solve::SolveStatus;
+use kontakt_bearing::ball_equilibrium::BallBearingSolver;
 use kontakt_bearing::equilibrium::RingLoad;
 use std::ops::Range;
 use std::sync::Arc;
@@ -138,6 +142,12 @@ pub(crate) struct BearingOut {
     load_zone_epsilon: Option<f64>,
     /// The diagonal of the stiffness matrix: N/mm (x, y, z), N·mm/rad (tilts).
     stiffness: [f64; 5],
+    /// The rating (`[bearing.rating]`, the report's `rating`): ISO 76's static safety from
+    /// the pressure and C0/P0, ISO 281's L10 and ISO/TS 16281's L10r (Mrev).
+    static_safety_from_pressure: Option<f64>,
+    static_safety: Option<f64>,
+    l10_mrev: Option<f64>,
+    l10r_mrev: Option<f64>,
     converged: bool,
     termination: &'static str,
     iterations: usize,
@@ -166,7 +176,7 @@ impl BearingRow {
 
 /// The output columns of a bearing sweep, after `case`, the parameters, `status` and
 /// `error`, with their units.
-pub const COLUMNS: [(&str, &str); 30] = [
+pub const COLUMNS: [(&str, &str); 34] = [
     (
         "bearing_type",
         "cylindrical, tapered, thrust, deep_groove_ball, angular_contact_ball",
@@ -197,11 +207,11 @@ pub const COLUMNS: [(&str, &str); 30] = [
     ),
     (
         "max_inner_pressure_mpa",
-        "largest Hertz pressure, inner raceway, MPa (balls)",
+        "largest raceway pressure, inner raceway, MPa",
     ),
     (
         "max_outer_pressure_mpa",
-        "largest Hertz pressure, outer raceway, MPa (balls)",
+        "largest raceway pressure, outer raceway, MPa",
     ),
     (
         "load_zone_epsilon",
@@ -224,6 +234,22 @@ pub const COLUMNS: [(&str, &str); 30] = [
         "the report's warnings joined by \"; \" (null: none)",
     ),
     ("lifted_off", "every element lifted off (zero force)"),
+    (
+        "static_safety_from_pressure",
+        "ISO 76 static safety from the largest raceway pressure (null without load)",
+    ),
+    (
+        "static_safety",
+        "ISO 76 static safety C0/P0 (null without bearing.rating.static_n or load)",
+    ),
+    (
+        "l10_mrev",
+        "ISO 281 basic rating life L10, 1e6 rev (null without bearing.rating.dynamic_n or load)",
+    ),
+    (
+        "l10r_mrev",
+        "ISO/TS 16281 reference rating life L10r, 1e6 rev (null without bearing.rating.dynamic_n or load)",
+    ),
 ];
 
 /// A bearing planned for a block of cases: the solver, the warm start and what the rows
@@ -233,22 +259,39 @@ struct BlockModel {
     label: &'static str,
     planned: Planned,
     last: Option<[f64; 5]>,
-    /// The warning of a roller bearing with few slices, the same for every load.
-    coarse: Option<String>,
-    /// A ball bearing's two Hertz contacts at its stiffness contact angle, for the
-    /// validity check of the most loaded ball.
-    contacts: Option<[HertzPointContact; 2]>,
+    /// What follows the equilibrium (pressures, rating, contact sizes), planned once, the
+    /// report's own ([`crate::bearing_post`]); its error is the row's after the solve, as
+    /// in the report.
+    post: Result<PostPlan, kontakt::Error>,
 }
+
+/// The post-solve plan of a block's bearing.
+enum PostPlan {
+    Roller(RollerPost),
+    Ball(BallPost),
+}
+
+/// A row's failure: its status and error text.
+type Failure = (Status, String);
 
 impl BlockModel {
     fn new(case: BearingCase) -> kontakt::Result<Self> {
         let (planned, label) = plan(&case)?;
-        let (coarse, contacts) = match &planned {
-            Planned::Roller(s) => (coarse_slices_warning(s.bearing().slices), None),
-            Planned::Coupled(s) => (coarse_slices_warning(s.bearing().slices), None),
-            Planned::Ball { solver, .. } => {
-                let b = solver.bearing();
-                (None, Some(b.contacts(b.stiffness_contact_angle())?))
+        let roller = |b: &kontakt_bearing::geometry::RollerBearing| {
+            let spec = match &case.bearing {
+                BearingSpec::Cylindrical(s) | BearingSpec::Tapered(s) | BearingSpec::Thrust(s) => {
+                    s.rating.as_ref()
+                }
+                _ => None,
+            };
+            RollerPost::new(b, spec).map(PostPlan::Roller)
+        };
+        let post = match &planned {
+            Planned::Roller(s) => roller(s.bearing()),
+            Planned::Coupled(s) => roller(s.bearing()),
+            Planned::Ball { solver, spec, keys } => {
+                BallPost::new(solver, spec.rating.as_ref(), [keys.inner, keys.outer])
+                    .map(PostPlan::Ball)
             }
         };
         Ok(BlockModel {
@@ -256,8 +299,7 @@ impl BlockModel {
             label,
             planned,
             last: None,
-            coarse,
-            contacts,
+            post,
         })
     }
 
@@ -273,44 +315,24 @@ impl BlockModel {
         } else {
             self.last
         };
+        let label = self.label;
+        let post = &mut self.post;
         let solved = match &mut self.planned {
-            Planned::Roller(solver) => roller_out(solver, self.label, &ring, start),
-            Planned::Coupled(solver) => roller_out(solver.as_mut(), self.label, &ring, start),
-            Planned::Ball { solver, .. } => match start {
-                Some(u) => solver.solve_from(&ring, u),
-                None => solver.solve(&ring),
-            }
-            .map(|sol| {
-                let balls = solver.ball_loads();
-                let out = BearingOut {
-                    bearing_type: self.label,
-                    elements: balls.len(),
-                    displacement: sol.displacement,
-                    load: sol.load,
-                    max_element_load_n: sol.max_ball_load_n,
-                    loaded_elements: balls.iter().filter(|b| b.load_n > 0.0).count(),
-                    max_rib_load_n: None,
-                    max_load_per_length_n_per_mm: None,
-                    max_pressure_mpa: Some(sol.max_pressure_mpa),
-                    load_zone_epsilon: None,
-                    stiffness: std::array::from_fn(|i| sol.stiffness[i][i]),
-                    ..status_out(&sol.status)
+            Planned::Roller(solver) => roller_out(solver, label, &ring, start, post),
+            Planned::Coupled(solver) => roller_out(solver.as_mut(), label, &ring, start, post),
+            Planned::Ball { solver, spec, keys } => {
+                let f = {
+                    let b = solver.bearing();
+                    [b.inner_osculation, b.outer_osculation]
                 };
-                (out, sol.status, sol.note)
-            }),
+                let field = |e| map_ball_field(e, spec, keys, f);
+                ball_out(solver, label, &ring, start, post, field)
+            }
         };
-        let (out, status, note) = match solved.map_err(map_load) {
+        let (out, warnings) = match solved {
             Ok(s) => s,
-            Err(e) => return BearingRow::failed(Status::Invalid, e.to_string()),
+            Err((status, e)) => return BearingRow::failed(status, e),
         };
-        let mut warnings = match solver_warnings(&status, note) {
-            Ok(w) => w,
-            Err(e) => return BearingRow::failed(Status::Failed, e.to_string()),
-        };
-        warnings.extend(self.coarse.iter().cloned());
-        if let Err(e) = self.size_warnings(out.max_element_load_n, &mut warnings) {
-            return BearingRow::failed(Status::Invalid, e.to_string());
-        }
         if let Some(name) = non_finite(&out) {
             return BearingRow::failed(
                 Status::Invalid,
@@ -334,41 +356,78 @@ impl BlockModel {
             warnings,
         }
     }
+}
 
-    /// The validity check of the report path (`crate::validity::checked`) for the most
-    /// loaded ball's two Hertz contacts: a warning above 0.4 of a radius, a refusal at 1.
-    fn size_warnings(&self, q_max: f64, warnings: &mut Vec<String>) -> kontakt::Result<()> {
-        let (Some(pair), Planned::Ball { keys, .. }) = (&self.contacts, &self.planned) else {
-            return Ok(());
-        };
-        if q_max <= 0.0 {
-            return Ok(());
-        }
-        let mut size = Vec::new();
-        for (c, ring, key) in [
-            (&pair[0], "inner", keys.inner),
-            (&pair[1], "outer", keys.outer),
-        ] {
-            let check = point_size(c.geometry(), &c.solve_force(q_max)?);
-            // texts only for a contact the check speaks about
-            if check.ratio > kontakt::hertz::validity::WARN_SIZE_RATIO {
-                let c = ContactSize::new(
-                    Size::Hertz(check),
-                    ["bearing.ball_diameter_mm", &format!("bearing.{key}")],
-                )
-                .at(format!("the most loaded ball on the {ring} raceway"));
-                if let Some(w) = c.verdict()?
-                    && !size.contains(&w)
-                {
-                    size.push(w);
-                }
-            }
-        }
-        // first in the warnings, in the contacts' order, as `checked` puts them
-        size.retain(|w| !warnings.contains(w));
-        warnings.splice(0..0, size);
-        Ok(())
+/// The solver's warnings (a failure to converge is the row's `failed`), then the one
+/// post-solve path of the report ([`crate::bearing_post`]) with the validity check of its
+/// contacts, as [`crate::validity::checked`] makes it: the row's warnings and rating.
+fn post_row(
+    status: &SolveStatus,
+    note: Option<&'static str>,
+    post: &mut Result<PostPlan, kontakt::Error>,
+    run: impl FnOnce(&mut PostPlan, &mut Vec<String>) -> kontakt::Result<Post>,
+) -> Result<(Post, Vec<String>), Failure> {
+    let mut warnings =
+        solver_warnings(status, note).map_err(|e| (Status::Failed, e.to_string()))?;
+    let invalid = |e: kontakt::Error| (Status::Invalid, e.to_string());
+    let plan = post.as_mut().map_err(|e| invalid(e.clone()))?;
+    let post = run(plan, &mut warnings).map_err(invalid)?;
+    post.check_sizes(&mut warnings).map_err(invalid)?;
+    Ok((post, warnings))
+}
+
+/// The row numbers of a post: the largest raceway pressures and the rating.
+fn with_post(out: BearingOut, post: &Post) -> BearingOut {
+    let r = &post.rating;
+    BearingOut {
+        max_pressure_mpa: Some(post.max_pressure_mpa),
+        static_safety_from_pressure: r.static_safety_from_pressure,
+        static_safety: r.static_safety,
+        l10_mrev: r.l10_mrev,
+        l10r_mrev: r.l10r_mrev,
+        ..out
     }
+}
+
+/// The row of a ball bearing's solve from `start` (the closed forms when `None`).
+fn ball_out(
+    solver: &mut BallBearingSolver,
+    label: &'static str,
+    ring: &RingLoad,
+    start: Option<[f64; 5]>,
+    post: &mut Result<PostPlan, kontakt::Error>,
+    field: impl Fn(kontakt::Error) -> kontakt::Error,
+) -> Result<(BearingOut, Vec<String>), Failure> {
+    let sol = match start {
+        Some(u) => solver.solve_from(ring, u),
+        None => solver.solve(ring),
+    }
+    .map_err(|e| (Status::Invalid, map_load(e).to_string()))?;
+    let (post, warnings) = post_row(&sol.status, sol.note, post, |p, w| match p {
+        PostPlan::Ball(p) => p.run(solver, &sol, applied_moment(ring), w, field),
+        PostPlan::Roller(_) => Err(wrong_post(label)),
+    })?;
+    let balls = solver.ball_loads();
+    let out = BearingOut {
+        bearing_type: label,
+        elements: balls.len(),
+        displacement: sol.displacement,
+        load: sol.load,
+        max_element_load_n: sol.max_ball_load_n,
+        loaded_elements: balls.iter().filter(|b| b.load_n > 0.0).count(),
+        stiffness: std::array::from_fn(|i| sol.stiffness[i][i]),
+        ..status_out(&sol.status)
+    };
+    Ok((with_post(out, &post), warnings))
+}
+
+/// A post planned for another bearing type (a defect: the plan makes both together).
+fn wrong_post(label: &str) -> kontakt::Error {
+    kontakt::Error::invalid(
+        "bearing.type",
+        label,
+        "the bearing type the sweep's block was planned for",
+    )
 }
 
 /// The solver status part of a row (the rest filled by the caller).
@@ -385,6 +444,10 @@ fn status_out(s: &SolveStatus) -> BearingOut {
         max_pressure_mpa: None,
         load_zone_epsilon: None,
         stiffness: [0.0; 5],
+        static_safety_from_pressure: None,
+        static_safety: None,
+        l10_mrev: None,
+        l10r_mrev: None,
         converged: s.converged(),
         termination: s.termination.as_str(),
         iterations: s.iterations,
@@ -419,11 +482,16 @@ fn non_finite(o: &BearingOut) -> Option<&'static str> {
         o.stiffness[3],
         o.stiffness[4],
         o.residual,
+        opt(o.static_safety_from_pressure),
+        opt(o.static_safety),
+        opt(o.l10_mrev),
+        opt(o.l10r_mrev),
     ];
     // the numeric columns in COLUMNS order, skipping bearing_type, elements (integers),
-    // loaded_elements and the solver's flags
-    const NAMES: [usize; 22] = [
-        2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 27,
+    // loaded_elements, the solver's flags, the warnings and lifted_off
+    const NAMES: [usize; 26] = [
+        2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 27, 30, 31, 32,
+        33,
     ];
     values
         .iter()
@@ -618,6 +686,10 @@ pub(crate) fn bearing_columns(rows: &[BearingRow]) -> Vec<(&'static str, ArrayRe
             .map(|r| r.out.as_ref().map(|o| o.max_element_load_n == 0.0))
             .collect::<Vec<_>>(),
     )));
+    arrays.push(f(&|o| o.static_safety_from_pressure));
+    arrays.push(f(&|o| o.static_safety));
+    arrays.push(f(&|o| o.l10_mrev));
+    arrays.push(f(&|o| o.l10r_mrev));
     COLUMNS.iter().map(|(name, _)| *name).zip(arrays).collect()
 }
 
@@ -668,18 +740,20 @@ fn roller_out<S: SliceSolver>(
     label: &'static str,
     ring: &RingLoad,
     start: Option<[f64; 5]>,
-) -> kontakt::Result<(BearingOut, SolveStatus, Option<&'static str>)> {
+    post: &mut Result<PostPlan, kontakt::Error>,
+) -> Result<(BearingOut, Vec<String>), Failure> {
     let sol = match start {
         Some(u) => solver.solve_from(ring, u),
         None => solver.solve(ring),
-    }?;
+    }
+    .map_err(|e| (Status::Invalid, map_load(e).to_string()))?;
+    let (post, warnings) = post_row(&sol.status, sol.note, post, |p, w| match p {
+        PostPlan::Roller(p) => p.run(&*solver, &sol, applied_moment(ring), w, |_, _, _, _, _| {}),
+        PostPlan::Ball(_) => Err(wrong_post(label)),
+    })?;
     let ns = solver.bearing().slices;
     let width = solver.bearing().effective_length_mm / ns as f64;
     let per_length = solver.slice_loads().iter().copied().fold(0.0, f64::max) / width;
-    let max_pressure_mpa = solver.slice_pressures().map(|(inner, outer)| {
-        let peak = |p: &[f64]| p.iter().copied().fold(0.0, f64::max);
-        [peak(inner), peak(outer)]
-    });
     let rollers = solver.roller_loads();
     let rib = rollers.iter().map(|r| r.rib_n).fold(0.0, f64::max);
     let loaded = rollers.iter().filter(|r| r.outer_n > 0.0).count();
@@ -692,10 +766,9 @@ fn roller_out<S: SliceSolver>(
         loaded_elements: loaded,
         max_rib_load_n: Some(rib),
         max_load_per_length_n_per_mm: Some(per_length),
-        max_pressure_mpa,
         load_zone_epsilon: sol.load_zone,
         stiffness: std::array::from_fn(|i| sol.stiffness[i][i]),
         ..status_out(&sol.status)
     };
-    Ok((out, sol.status, sol.note))
+    Ok((with_post(out, &post), warnings))
 }
