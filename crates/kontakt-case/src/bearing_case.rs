@@ -581,6 +581,7 @@ pub struct BearingReport {
 /// The rolling elements of a [`BearingReport`], their keys flattened into the report.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(untagged)]
+#[allow(clippy::large_enum_variant)] // one per report, moved rarely: a box buys nothing
 pub enum BearingElements {
     /// A roller bearing (cylindrical, tapered, thrust).
     Rollers(RollerPart),

@@ -268,7 +268,7 @@ struct BlockModel {
 /// The post-solve plan of a block's bearing.
 enum PostPlan {
     Roller(RollerPost),
-    Ball(BallPost),
+    Ball(Box<BallPost>),
 }
 
 /// A row's failure: its status and error text.
@@ -291,7 +291,7 @@ impl BlockModel {
             Planned::Coupled(s) => roller(s.bearing()),
             Planned::Ball { solver, spec, keys } => {
                 BallPost::new(solver, spec.rating.as_ref(), [keys.inner, keys.outer])
-                    .map(PostPlan::Ball)
+                    .map(|p| PostPlan::Ball(Box::new(p)))
             }
         };
         Ok(BlockModel {
@@ -693,46 +693,6 @@ pub(crate) fn bearing_columns(rows: &[BearingRow]) -> Vec<(&'static str, ArrayRe
     COLUMNS.iter().map(|(name, _)| *name).zip(arrays).collect()
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// The load keys set directly, and the keys read through the case reader (`None`).
-    #[test]
-    fn load_keys_map_to_their_slots() {
-        assert_eq!(Slot::parse("load.force_n[2]"), Some(Slot::Force(2)));
-        assert_eq!(Slot::parse("load.moment_nmm[1]"), Some(Slot::Moment(1)));
-        assert_eq!(
-            Slot::parse("load.prescribed.tilt_y_rad"),
-            Some(Slot::Prescribed(4))
-        );
-        assert_eq!(
-            Slot::parse("load.prescribed.dx_mm"),
-            Some(Slot::Prescribed(0))
-        );
-        for read in [
-            "load.force_n",
-            "load.force_n[3]",
-            "load.moment_nmm[2]",
-            "load.force_n[0][0]",
-            "load.prescribed.dw_mm",
-            "bearing.clearance_mm",
-            "name",
-        ] {
-            assert_eq!(Slot::parse(read), None, "{read}");
-        }
-        let mut l = BearingLoadSpec {
-            force_n: [0.0; 3],
-            moment_nmm: [0.0; 2],
-            prescribed: Default::default(),
-        };
-        Slot::Prescribed(2).set(&mut l, 0.01);
-        Slot::Moment(0).set(&mut l, 5.0);
-        assert_eq!(l.prescribed.dz_mm, Some(0.01));
-        assert_eq!(l.moment_nmm, [5.0, 0.0]);
-    }
-}
-
 /// The row of a roller bearing's solve from `start` (the closed forms when `None`), for
 /// either slice model.
 fn roller_out<S: SliceSolver>(
@@ -771,4 +731,44 @@ fn roller_out<S: SliceSolver>(
         ..status_out(&sol.status)
     };
     Ok((with_post(out, &post), warnings))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The load keys set directly, and the keys read through the case reader (`None`).
+    #[test]
+    fn load_keys_map_to_their_slots() {
+        assert_eq!(Slot::parse("load.force_n[2]"), Some(Slot::Force(2)));
+        assert_eq!(Slot::parse("load.moment_nmm[1]"), Some(Slot::Moment(1)));
+        assert_eq!(
+            Slot::parse("load.prescribed.tilt_y_rad"),
+            Some(Slot::Prescribed(4))
+        );
+        assert_eq!(
+            Slot::parse("load.prescribed.dx_mm"),
+            Some(Slot::Prescribed(0))
+        );
+        for read in [
+            "load.force_n",
+            "load.force_n[3]",
+            "load.moment_nmm[2]",
+            "load.force_n[0][0]",
+            "load.prescribed.dw_mm",
+            "bearing.clearance_mm",
+            "name",
+        ] {
+            assert_eq!(Slot::parse(read), None, "{read}");
+        }
+        let mut l = BearingLoadSpec {
+            force_n: [0.0; 3],
+            moment_nmm: [0.0; 2],
+            prescribed: Default::default(),
+        };
+        Slot::Prescribed(2).set(&mut l, 0.01);
+        Slot::Moment(0).set(&mut l, 5.0);
+        assert_eq!(l.prescribed.dz_mm, Some(0.01));
+        assert_eq!(l.moment_nmm, [5.0, 0.0]);
+    }
 }
