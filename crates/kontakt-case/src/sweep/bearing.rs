@@ -38,8 +38,8 @@ use crate::bearing_slices::SliceSolver;
 use crate::case::Case;
 use arrow_array::{ArrayRef, BooleanArray, Float64Array, Int64Array, StringArray};
 use kontakt::solve::SolveStatus;
-use kontakt_bearing::ball_equilibrium::BallBearingSolver;
-use kontakt_bearing::equilibrium::RingLoad;
+use kontakt_bearing::ball_equilibrium::{BallBearingSolver, BallSolution};
+use kontakt_bearing::equilibrium::{RingLoad, RollerSolution};
 use std::ops::Range;
 use std::sync::Arc;
 
@@ -317,16 +317,19 @@ impl BlockModel {
         };
         let label = self.label;
         let post = &mut self.post;
+        let same = |e| e;
         let solved = match &mut self.planned {
-            Planned::Roller(solver) => roller_out(solver, label, &ring, start, post),
-            Planned::Coupled(solver) => roller_out(solver.as_mut(), label, &ring, start, post),
+            Planned::Roller(solver) => element_row(solver, label, &ring, start, post, &same),
+            Planned::Coupled(solver) => {
+                element_row(solver.as_mut(), label, &ring, start, post, &same)
+            }
             Planned::Ball { solver, spec, keys } => {
                 let f = {
                     let b = solver.bearing();
                     [b.inner_osculation, b.outer_osculation]
                 };
                 let field = |e| map_ball_field(e, spec, keys, f);
-                ball_out(solver, label, &ring, start, post, field)
+                element_row(solver, label, &ring, start, post, &field)
             }
         };
         let (out, warnings) = match solved {
@@ -358,67 +361,65 @@ impl BlockModel {
     }
 }
 
-/// The solver's warnings (a failure to converge is the row's `failed`), then the one
-/// post-solve path of the report ([`crate::bearing_post`]) with the validity check of its
-/// contacts, as [`crate::validity::checked`] makes it: the row's warnings and rating.
-fn post_row(
-    status: &SolveStatus,
-    note: Option<&'static str>,
-    post: &mut Result<PostPlan, kontakt::Error>,
-    run: impl FnOnce(&mut PostPlan, &mut Vec<String>) -> kontakt::Result<Post>,
-) -> Result<(Post, Vec<String>), Failure> {
-    let mut warnings =
-        solver_warnings(status, note).map_err(|e| (Status::Failed, e.to_string()))?;
-    let invalid = |e: kontakt::Error| (Status::Invalid, e.to_string());
-    let plan = post.as_mut().map_err(|e| invalid(e.clone()))?;
-    let post = run(plan, &mut warnings).map_err(invalid)?;
-    post.check_sizes(&mut warnings).map_err(invalid)?;
-    Ok((post, warnings))
+/// A planned solver of a sweep's block: a roller bearing (either slice model) or a ball
+/// bearing.
+trait Element {
+    type Solution;
+    /// Solve from `start` (the closed forms when `None`).
+    fn solve_at(
+        &mut self,
+        ring: &RingLoad,
+        start: Option<[f64; 5]>,
+    ) -> kontakt::Result<Self::Solution>;
+    /// The solver's status and note.
+    fn status(sol: &Self::Solution) -> (&SolveStatus, Option<&'static str>);
+    /// The post-solve path of the report ([`crate::bearing_post`]); `field` names a
+    /// geometry error by its case key.
+    fn post(
+        &self,
+        plan: &mut PostPlan,
+        sol: &Self::Solution,
+        moment: f64,
+        warnings: &mut Vec<String>,
+        field: &dyn Fn(kontakt::Error) -> kontakt::Error,
+    ) -> kontakt::Result<Post>;
+    /// The row's numbers but for the post's.
+    fn out(&self, label: &'static str, sol: &Self::Solution) -> BearingOut;
 }
 
-/// The row numbers of a post: the largest raceway pressures and the rating.
-fn with_post(out: BearingOut, post: &Post) -> BearingOut {
+/// The row of a case: the solve from `start`, the solver's warnings (a failure to
+/// converge is the row's `failed`), then the one post-solve path of the report with the
+/// validity check of its contacts as [`crate::validity::checked`] makes it.
+fn element_row<E: Element>(
+    solver: &mut E,
+    label: &'static str,
+    ring: &RingLoad,
+    start: Option<[f64; 5]>,
+    post: &mut Result<PostPlan, kontakt::Error>,
+    field: &dyn Fn(kontakt::Error) -> kontakt::Error,
+) -> Result<(BearingOut, Vec<String>), Failure> {
+    let invalid = |e: kontakt::Error| (Status::Invalid, e.to_string());
+    let sol = solver
+        .solve_at(ring, start)
+        .map_err(|e| invalid(map_load(e)))?;
+    let (status, note) = E::status(&sol);
+    let mut warnings =
+        solver_warnings(status, note).map_err(|e| (Status::Failed, e.to_string()))?;
+    let plan = post.as_mut().map_err(|e| invalid(e.clone()))?;
+    let post = solver
+        .post(plan, &sol, applied_moment(ring), &mut warnings, field)
+        .map_err(invalid)?;
+    post.check_sizes(&mut warnings).map_err(invalid)?;
     let r = &post.rating;
-    BearingOut {
+    let out = BearingOut {
         max_pressure_mpa: Some(post.max_pressure_mpa),
         static_safety_from_pressure: r.static_safety_from_pressure,
         static_safety: r.static_safety,
         l10_mrev: r.l10_mrev,
         l10r_mrev: r.l10r_mrev,
-        ..out
-    }
-}
-
-/// The row of a ball bearing's solve from `start` (the closed forms when `None`).
-fn ball_out(
-    solver: &mut BallBearingSolver,
-    label: &'static str,
-    ring: &RingLoad,
-    start: Option<[f64; 5]>,
-    post: &mut Result<PostPlan, kontakt::Error>,
-    field: impl Fn(kontakt::Error) -> kontakt::Error,
-) -> Result<(BearingOut, Vec<String>), Failure> {
-    let sol = match start {
-        Some(u) => solver.solve_from(ring, u),
-        None => solver.solve(ring),
-    }
-    .map_err(|e| (Status::Invalid, map_load(e).to_string()))?;
-    let (post, warnings) = post_row(&sol.status, sol.note, post, |p, w| match p {
-        PostPlan::Ball(p) => p.run(solver, &sol, applied_moment(ring), w, field),
-        PostPlan::Roller(_) => Err(wrong_post(label)),
-    })?;
-    let balls = solver.ball_loads();
-    let out = BearingOut {
-        bearing_type: label,
-        elements: balls.len(),
-        displacement: sol.displacement,
-        load: sol.load,
-        max_element_load_n: sol.max_ball_load_n,
-        loaded_elements: balls.iter().filter(|b| b.load_n > 0.0).count(),
-        stiffness: std::array::from_fn(|i| sol.stiffness[i][i]),
-        ..status_out(&sol.status)
+        ..solver.out(label, &sol)
     };
-    Ok((with_post(out, &post), warnings))
+    Ok((out, warnings))
 }
 
 /// A post planned for another bearing type (a defect: the plan makes both together).
@@ -428,6 +429,107 @@ fn wrong_post(label: &str) -> kontakt::Error {
         label,
         "the bearing type the sweep's block was planned for",
     )
+}
+
+impl<S: SliceSolver> Element for S {
+    type Solution = RollerSolution;
+
+    fn solve_at(
+        &mut self,
+        ring: &RingLoad,
+        start: Option<[f64; 5]>,
+    ) -> kontakt::Result<RollerSolution> {
+        match start {
+            Some(u) => self.solve_from(ring, u),
+            None => self.solve(ring),
+        }
+    }
+
+    fn status(sol: &RollerSolution) -> (&SolveStatus, Option<&'static str>) {
+        (&sol.status, sol.note)
+    }
+
+    fn post(
+        &self,
+        plan: &mut PostPlan,
+        sol: &RollerSolution,
+        moment: f64,
+        warnings: &mut Vec<String>,
+        _: &dyn Fn(kontakt::Error) -> kontakt::Error,
+    ) -> kontakt::Result<Post> {
+        match plan {
+            PostPlan::Roller(p) => p.run(self, sol, moment, warnings, |_, _, _, _, _| {}),
+            PostPlan::Ball(_) => Err(wrong_post("roller")),
+        }
+    }
+
+    fn out(&self, label: &'static str, sol: &RollerSolution) -> BearingOut {
+        let ns = self.bearing().slices;
+        let width = self.bearing().effective_length_mm / ns as f64;
+        let per_length = self.slice_loads().iter().copied().fold(0.0, f64::max) / width;
+        let rollers = self.roller_loads();
+        let rib = rollers.iter().map(|r| r.rib_n).fold(0.0, f64::max);
+        BearingOut {
+            bearing_type: label,
+            elements: rollers.len(),
+            displacement: sol.displacement,
+            load: sol.load,
+            max_element_load_n: sol.max_roller_load_n,
+            loaded_elements: rollers.iter().filter(|r| r.outer_n > 0.0).count(),
+            max_rib_load_n: Some(rib),
+            max_load_per_length_n_per_mm: Some(per_length),
+            load_zone_epsilon: sol.load_zone,
+            stiffness: std::array::from_fn(|i| sol.stiffness[i][i]),
+            ..status_out(&sol.status)
+        }
+    }
+}
+
+impl Element for BallBearingSolver {
+    type Solution = BallSolution;
+
+    fn solve_at(
+        &mut self,
+        ring: &RingLoad,
+        start: Option<[f64; 5]>,
+    ) -> kontakt::Result<BallSolution> {
+        match start {
+            Some(u) => self.solve_from(ring, u),
+            None => self.solve(ring),
+        }
+    }
+
+    fn status(sol: &BallSolution) -> (&SolveStatus, Option<&'static str>) {
+        (&sol.status, sol.note)
+    }
+
+    fn post(
+        &self,
+        plan: &mut PostPlan,
+        sol: &BallSolution,
+        moment: f64,
+        warnings: &mut Vec<String>,
+        field: &dyn Fn(kontakt::Error) -> kontakt::Error,
+    ) -> kontakt::Result<Post> {
+        match plan {
+            PostPlan::Ball(p) => p.run(self, sol, moment, warnings, field),
+            PostPlan::Roller(_) => Err(wrong_post("ball")),
+        }
+    }
+
+    fn out(&self, label: &'static str, sol: &BallSolution) -> BearingOut {
+        let balls = self.ball_loads();
+        BearingOut {
+            bearing_type: label,
+            elements: balls.len(),
+            displacement: sol.displacement,
+            load: sol.load,
+            max_element_load_n: sol.max_ball_load_n,
+            loaded_elements: balls.iter().filter(|b| b.load_n > 0.0).count(),
+            stiffness: std::array::from_fn(|i| sol.stiffness[i][i]),
+            ..status_out(&sol.status)
+        }
+    }
 }
 
 /// The solver status part of a row (the rest filled by the caller).
@@ -691,46 +793,6 @@ pub(crate) fn bearing_columns(rows: &[BearingRow]) -> Vec<(&'static str, ArrayRe
     arrays.push(f(&|o| o.l10_mrev));
     arrays.push(f(&|o| o.l10r_mrev));
     COLUMNS.iter().map(|(name, _)| *name).zip(arrays).collect()
-}
-
-/// The row of a roller bearing's solve from `start` (the closed forms when `None`), for
-/// either slice model.
-fn roller_out<S: SliceSolver>(
-    solver: &mut S,
-    label: &'static str,
-    ring: &RingLoad,
-    start: Option<[f64; 5]>,
-    post: &mut Result<PostPlan, kontakt::Error>,
-) -> Result<(BearingOut, Vec<String>), Failure> {
-    let sol = match start {
-        Some(u) => solver.solve_from(ring, u),
-        None => solver.solve(ring),
-    }
-    .map_err(|e| (Status::Invalid, map_load(e).to_string()))?;
-    let (post, warnings) = post_row(&sol.status, sol.note, post, |p, w| match p {
-        PostPlan::Roller(p) => p.run(&*solver, &sol, applied_moment(ring), w, |_, _, _, _, _| {}),
-        PostPlan::Ball(_) => Err(wrong_post(label)),
-    })?;
-    let ns = solver.bearing().slices;
-    let width = solver.bearing().effective_length_mm / ns as f64;
-    let per_length = solver.slice_loads().iter().copied().fold(0.0, f64::max) / width;
-    let rollers = solver.roller_loads();
-    let rib = rollers.iter().map(|r| r.rib_n).fold(0.0, f64::max);
-    let loaded = rollers.iter().filter(|r| r.outer_n > 0.0).count();
-    let out = BearingOut {
-        bearing_type: label,
-        elements: rollers.len(),
-        displacement: sol.displacement,
-        load: sol.load,
-        max_element_load_n: sol.max_roller_load_n,
-        loaded_elements: loaded,
-        max_rib_load_n: Some(rib),
-        max_load_per_length_n_per_mm: Some(per_length),
-        load_zone_epsilon: sol.load_zone,
-        stiffness: std::array::from_fn(|i| sol.stiffness[i][i]),
-        ..status_out(&sol.status)
-    };
-    Ok((with_post(out, &post), warnings))
 }
 
 #[cfg(test)]
