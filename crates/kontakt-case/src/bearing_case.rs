@@ -52,7 +52,7 @@
 //! methods; a solve that stagnates at the round-off floor (residual at most 1e-8 of the
 //! load, 1000 times the tolerance) is reported with a warning.
 
-use crate::bearing_post::{BallPost, RollerPost};
+use crate::bearing_post::{BallPost, RollerPost, applied_moment};
 use crate::bearing_rating::{RatingReport, RatingSpec};
 use crate::bearing_slices::{RollerPressures, SliceModel, SliceSolver, pressure_map};
 use crate::common::{MaterialSpec, SCHEMA_VERSION, in_degrees, material};
@@ -1026,25 +1026,6 @@ fn roller_report<S: SliceSolver>(
     report.contacts = post.contact_sizes();
     report.rating = post.rating;
     Ok(report)
-}
-
-/// The warning of a roller bearing with fewer slices than the default (a property of the
-/// bearing, the same for every load).
-pub(crate) fn coarse_slices_warning(slices: usize) -> Option<String> {
-    (slices < DEFAULT_SLICES).then(|| {
-        format!(
-            "{slices} slices per roller: fewer than the recommended {DEFAULT_SLICES}, the roller loads are coarse (docs/bearing-model.md §6)"
-        )
-    })
-}
-
-/// The magnitude of the applied (force-controlled) moment, N·mm.
-pub(crate) fn applied_moment(load: &RingLoad) -> f64 {
-    let m = |d: Dof| match d {
-        Dof::Force(v) => v,
-        Dof::Displacement(_) => 0.0,
-    };
-    m(load.dofs[3]).hypot(m(load.dofs[4]))
 }
 
 /// The library's load-field errors (`load.fz_n`) as the case file's keys.

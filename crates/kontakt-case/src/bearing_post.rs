@@ -9,7 +9,6 @@
 //! allocates nothing per solve but for the texts of its warnings, which exist only when
 //! there are any. Pressures in MPa, loads in N, moments in N·mm.
 
-use crate::bearing_case::coarse_slices_warning;
 use crate::bearing_rating::{LifeInput, RatingReport, RatingSpec, checked_spec, rating};
 use crate::bearing_slices::SliceSolver;
 use crate::validity::{ContactSize, Size, add_size_warnings, size_verdicts};
@@ -17,8 +16,10 @@ use kontakt::hertz::HertzPointContact;
 use kontakt::hertz::validity::{SizeCheck, WARN_SIZE_RATIO, line_size, point_size};
 use kontakt::{Error, Result};
 use kontakt_bearing::ball_equilibrium::{BallBearingSolver, BallSolution};
-use kontakt_bearing::equilibrium::{RollerLoad, RollerSolution};
-use kontakt_bearing::geometry::{BallBearingKind, RollerBearing, RollerBearingKind};
+use kontakt_bearing::equilibrium::{Dof, RingLoad, RollerLoad, RollerSolution};
+use kontakt_bearing::geometry::{
+    BallBearingKind, DEFAULT_SLICES, RollerBearing, RollerBearingKind,
+};
 use kontakt_bearing::life::RatingType;
 use kontakt_bearing::stress::RollerStress;
 
@@ -90,12 +91,34 @@ impl Post {
     }
 }
 
+/// A bearing's rating spec and type.
+#[derive(Debug, Clone, Copy)]
+struct Rater {
+    spec: RatingSpec,
+    kind: RatingType,
+}
+
+impl Rater {
+    /// [`rating`] of a solve that carries `load` under the applied moment `moment` with the
+    /// largest raceway pressures `p_max` (MPa).
+    fn rate(
+        &self,
+        load: [f64; 5],
+        moment: f64,
+        p_max: [f64; 2],
+        life: LifeInput<'_>,
+        warnings: &mut Vec<String>,
+    ) -> Result<RatingReport> {
+        let p = p_max[0].max(p_max[1]);
+        rating(self.kind, &self.spec, load, moment, p, life, warnings)
+    }
+}
+
 /// The post of a roller bearing, planned once.
 #[derive(Debug, Clone)]
 pub(crate) struct RollerPost {
     stress: RollerStress,
-    spec: RatingSpec,
-    kind: RatingType,
+    rater: Rater,
     coarse: Option<String>,
     /// One roller's slice pressures, inner and outer raceway, MPa.
     inner: Vec<f64>,
@@ -118,8 +141,7 @@ impl RollerPost {
         };
         Ok(RollerPost {
             stress: RollerStress::new(b)?,
-            spec,
-            kind,
+            rater: Rater { spec, kind },
             coarse: coarse_slices_warning(b.slices),
             inner: vec![0.0; b.slices],
             outer: vec![0.0; b.slices],
@@ -205,15 +227,8 @@ impl RollerPost {
             });
         }
         let inner_ratio = rollers.get(most).map_or(1.0, ratio);
-        let rated = rating(
-            self.kind,
-            &self.spec,
-            sol.load,
-            moment,
-            p_max[0].max(p_max[1]),
-            LifeInput::Rollers(b, loads, inner_ratio),
-            warnings,
-        )?;
+        let life = LifeInput::Rollers(b, loads, inner_ratio);
+        let rated = self.rater.rate(sol.load, moment, p_max, life, warnings)?;
         Ok(Post {
             max_pressure_mpa: p_max,
             rating: rated,
@@ -234,8 +249,7 @@ fn ratio(r: &RollerLoad) -> f64 {
 /// The post of a ball bearing, planned once.
 #[derive(Debug, Clone)]
 pub(crate) struct BallPost {
-    spec: RatingSpec,
-    kind: RatingType,
+    rater: Rater,
     /// The nominal contact angle of the reference life, rad.
     nominal: f64,
     /// The two Hertz contacts at the stiffness contact angle (`None`: their error, made
@@ -270,8 +284,7 @@ impl BallPost {
             ),
         };
         Ok(BallPost {
-            spec,
-            kind,
+            rater: Rater { spec, kind },
             nominal,
             pair: b.contacts(b.stiffness_contact_angle()).ok(),
             keys,
@@ -301,15 +314,7 @@ impl BallPost {
         }
         let p_max = sol.max_pressure_mpa;
         let life = LifeInput::Balls(b, self.nominal, &self.loads);
-        let rated = rating(
-            self.kind,
-            &self.spec,
-            sol.load,
-            moment,
-            p_max[0].max(p_max[1]),
-            life,
-            warnings,
-        )?;
+        let rated = self.rater.rate(sol.load, moment, p_max, life, warnings)?;
         let mut contacts = [None; 2];
         if sol.max_ball_load_n > 0.0 {
             let pair = match self.pair {
@@ -332,4 +337,23 @@ impl BallPost {
             contacts,
         })
     }
+}
+
+/// The warning of a roller bearing with fewer slices than the default (a property of the
+/// bearing, the same for every load).
+fn coarse_slices_warning(slices: usize) -> Option<String> {
+    (slices < DEFAULT_SLICES).then(|| {
+        format!(
+            "{slices} slices per roller: fewer than the recommended {DEFAULT_SLICES}, the roller loads are coarse (docs/bearing-model.md §6)"
+        )
+    })
+}
+
+/// The magnitude of the applied (force-controlled) moment, N·mm.
+pub(crate) fn applied_moment(load: &RingLoad) -> f64 {
+    let m = |d: Dof| match d {
+        Dof::Force(v) => v,
+        Dof::Displacement(_) => 0.0,
+    };
+    m(load.dofs[3]).hypot(m(load.dofs[4]))
 }

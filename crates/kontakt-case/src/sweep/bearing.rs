@@ -30,10 +30,10 @@
 use super::table::Status;
 use super::{Sweep, ValueKind};
 use crate::bearing_case::{
-    BearingCase, BearingLoadSpec, BearingSpec, Planned, applied_moment, map_ball_field, map_load,
-    plan, ring_load, solver_warnings,
+    BearingCase, BearingLoadSpec, BearingSpec, Planned, map_ball_field, map_load, plan, ring_load,
+    solver_warnings,
 };
-use crate::bearing_post::{BallPost, Post, RollerPost};
+use crate::bearing_post::{BallPost, Post, RollerPost, applied_moment};
 use crate::bearing_slices::SliceSolver;
 use crate::case::Case;
 use arrow_array::{ArrayRef, BooleanArray, Float64Array, Int64Array, StringArray};
