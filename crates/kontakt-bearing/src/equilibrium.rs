@@ -255,6 +255,11 @@ impl RollerBearingSolver {
         &self.bearing
     }
 
+    /// The directions the bearing has stiffness in.
+    pub(crate) fn stiff(&self) -> &[bool; 5] {
+        &self.stiff
+    }
+
     /// Slice centres from the roller centre, mm.
     pub fn slice_positions(&self) -> &[f64] {
         &self.x
@@ -322,7 +327,7 @@ impl RollerBearingSolver {
     }
 
     /// Check the load against what the bearing can carry.
-    fn check_load(&self, load: &RingLoad) -> Result<()> {
+    pub(crate) fn check_load(&self, load: &RingLoad) -> Result<()> {
         check_finite(load)?;
         for (i, d) in load.dofs.iter().enumerate() {
             let name = FORCE_NAMES[i];
@@ -407,7 +412,7 @@ impl RollerBearingSolver {
     /// A start from the closed forms: the radial displacement for Q_max = 4.08 F_r/(Z cos α),
     /// the axial one for Q = F_a/(Z sin α), the tilts for the moment carried by the axial
     /// components (or by the slices of a cylindrical roller).
-    fn start(&self, load: &RingLoad) -> Vector5<f64> {
+    pub(crate) fn start(&self, load: &RingLoad) -> Vector5<f64> {
         let b = &self.bearing;
         let z = b.rollers as f64;
         let cl = b.roller_stiffness();

@@ -1,0 +1,887 @@
+//! Tapered roller bearings with every roller in its own equilibrium and the roller-end/rib
+//! contact in the loop (issue 28 §2, "the roller's force and moment balance with the rib
+//! contact included"): the option next to the fast ISO/TS 16281 model of
+//! [`crate::equilibrium`], which stays the default. Derivation, frames and signs:
+//! `docs/bearing-model.md` §9.
+//!
+//! **The roller.** Roller j has three degrees of freedom in its axial plane (2-D
+//! coordinates `(r, z)`: radial along `e_r(ψ_j)`, axial along z; origin the roller centre
+//! `O = R e_r` on its axis): a translation `a` along the cup normal
+//! `n_o = (cos α, sin α)`, a translation `b` along the cup line `t_o = (−sin α, cos α)`
+//! (toward the small end), and a tilt φ (rad, counter-clockwise in `(r, z)`: a positive
+//! tilt turns the small end toward the bearing axis). It touches
+//!
+//! - the cup in `n` slices at `x_k` along the cup line: approach
+//!   `δ_ok = a − φ x̃_k − e_ok` (mm), `x̃_k = x_k − (D/2) sin β_r` the moment arm about O,
+//!   `β_r = (α − α_i)/2` the roller half-angle, `e_ok = s/4 + P_roller(x_k) + P_outer(x_k)`;
+//! - the cone in `n` slices along the cone line: approach
+//!   `δ_ik = g_ik · u − a cos γ + b sin γ + φ x̃_k − e_ik`, `γ = α − α_i`,
+//!   `e_ik = s/4 + P_roller(x_k) + P_inner(x_k)`, `g_ik` the cone normal's 5-vector of the
+//!   ring motion `u` (as in [`crate::equilibrium`], with the cone normal
+//!   `n_i = (cos α_i, sin α_i)`);
+//! - the rib at one point `s_f` (from O) with the rib normal `n_f` (rib into roller):
+//!   approach `δ_f = g_f · u − (a n_o + b t_o) · n_f − φ (s_f × n_f)`.
+//!
+//! Each raceway slice carries `q = c δ₊^(10/9)` with `c = 2^(10/9) c_s`: two such
+//! contacts in series at equal load have the approach `2 (q/c)^(9/10)`, which is the
+//! ISO/TS 16281 slice law `q = c_s δ^(10/9)` of both contacts (`c_s = 35948 L^(8/9)/n`).
+//! The rib carries Hertz's `Q_f = K_f δ_f₊^(3/2)` of the face/rib pair of
+//! `kontakt::bearing::roller_rib` at its contact point (`kontakt::hertz`, steel on steel).
+//! A given centrifugal force `F_c` (N per roller, along `+e_r`, at O) loads the roller.
+//!
+//! **Solver.** The total potential
+//! `Π(u, ρ) = Σ_contacts W(δ) − F_c (a cos α − b sin α) − F · u` with
+//! `W = c (9/19) δ₊^(19/9)` (slices) and `(2/5) K_f δ₊^(5/2)` (rib) is convex in the ring
+//! motion u and all roller motions ρ (every approach is affine in them). For a given u,
+//! each roller's three equations `∂Π/∂ρ_j = 0` (its force and moment balance) are solved
+//! by Newton with an Armijo line search on Π, warm-started from the roller's last
+//! position; the ring sees the reduced potential `Φ(u) = min_ρ Π`, its gradient the
+//! carried load `F(u) = Σ q_ik g_ik + Q_f g_f` and its Hessian the statically condensed
+//! stiffness `K = K_uu − K_uρ K_ρρ⁻¹ K_ρu`, consistent with the solution. The ring
+//! iteration is the one of [`crate::equilibrium`] (`newton.rs`). A roller without contact
+//! (and without centrifugal force) carries nothing and floats at the position where its
+//! cup, cone and rib gaps are equal and it is not tilted. Buffers are allocated once in
+//! [`RibContactSolver::new`]; a solve allocates nothing.
+//!
+//! **Not modelled.** Friction (so the skew moment about the cup normal is zero: reported
+//! as 0), the cage, the roller's gyroscopic moment, the centrifugal force's offset from O,
+//! the change of the rib's contact point with the roller's tilt (the point and normal are
+//! those of the unloaded construction; the approach is linear in the motions), coupled
+//! slices, ring deformation. The rib's curvature about the bearing axis is that of the
+//! common-apex construction of `roller_rib` for this roller (see §9 of the docs).
+
+use crate::equilibrium::{RingLoad, RollerBearingSolver, free_and_target, load_scale, warm_start};
+use crate::geometry::{RollerBearing, RollerBearingKind};
+use crate::newton::{ConvexRing, Outcome, newton, to_rows};
+use kontakt::bearing::{FaceShape, RibShape, RollerRib, RollerRibSpec, TaperedRollerBearing};
+use kontakt::gap::GapSource;
+use kontakt::hertz::{HertzPointContact, PointGeometry};
+use kontakt::material::ElasticMaterial;
+use kontakt::solve::{SolveStatus, Termination};
+use kontakt::{Error, Result};
+use nalgebra::{Matrix3, Matrix5, Matrix5x3, Vector2, Vector3, Vector5};
+use std::f64::consts::PI;
+
+/// The roller-end/rib pair of a tapered roller bearing, in the vocabulary of the rib study
+/// (`kontakt::bearing::roller_rib`, Wirsching et al. 2020): the roller's large-end face, the
+/// cone's rib and the height of their contact point above the roller axis.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct RibContact {
+    /// The roller's end face (sphere or torus), mm.
+    pub face: FaceShape,
+    /// The rib (cone or torus), mm.
+    pub rib: RibShape,
+    /// Distance h of the contact point from the roller axis, mm (toward the cone).
+    pub contact_height_mm: f64,
+}
+
+/// One roller of the rib-contact model at the solution.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct RibRollerLoad {
+    /// Azimuth ψ_j, rad.
+    pub azimuth_rad: f64,
+    /// Cup (outer raceway) load, the sum of the cup slices, N.
+    pub outer_n: f64,
+    /// Cone (inner raceway) load, the sum of the cone slices, N.
+    pub inner_n: f64,
+    /// Rib load Q_f, N.
+    pub rib_n: f64,
+    /// The roller's tilt φ in its axial plane, rad (positive: the small end toward the
+    /// bearing axis).
+    pub tilt_rad: f64,
+    /// The roller's translation `(a, b)` along the cup normal and the cup line, mm.
+    pub translation_mm: [f64; 2],
+    /// Maximum Hertz pressure of the rib contact, MPa (0 without rib load).
+    pub rib_max_pressure_mpa: f64,
+    /// The skew moment about the cup normal, N·mm: 0 in this frictionless model.
+    pub skew_moment_nmm: f64,
+    /// The rib contact's approach, mm (negative: open).
+    pub rib_approach_mm: f64,
+    /// The largest cup slice approach plus the largest cone slice approach, mm (negative:
+    /// lifted off by that much in total).
+    pub max_approach_mm: f64,
+    /// Newton iterations of the roller's own balance at the last evaluation.
+    pub iterations: usize,
+}
+
+/// The result of a solve of the rib-contact model (the per-roller loads are in
+/// [`RibContactSolver::roller_loads`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct RibContactSolution {
+    /// Inner-ring displacement `(δx, δy, δz, θx, θy)`, mm and rad.
+    pub displacement: [f64; 5],
+    /// The load the rollers carry, `(Fx, Fy, Fz, Mx, My)`, N and N·mm.
+    pub load: [f64; 5],
+    /// The condensed 5 × 5 stiffness matrix (N/mm, N, N·mm/rad).
+    pub stiffness: [[f64; 5]; 5],
+    /// How the ring solve ended (residual relative to the load scale as in
+    /// [`crate::equilibrium::RollerSolution`]).
+    pub status: SolveStatus,
+    /// A message when the status is not plain convergence or every roller lifted off.
+    pub note: Option<&'static str>,
+    /// The largest cup load of a roller, N.
+    pub max_roller_load_n: f64,
+    /// The largest rib load of a roller, N.
+    pub max_rib_load_n: f64,
+    /// The largest Hertz pressure on the rib, MPa.
+    pub max_rib_pressure_mpa: f64,
+}
+
+/// Per roller: the cone slices' `g = g0 + x g1` and the rib's `g_f`.
+#[derive(Debug, Clone, Copy)]
+struct Frame {
+    psi: f64,
+    g0: Vector5<f64>,
+    g1: Vector5<f64>,
+    gf: Vector5<f64>,
+}
+
+/// One evaluation of a roller at its position ρ.
+#[derive(Debug, Clone, Copy, Default)]
+struct RollerEval {
+    grad: Vector3<f64>,
+    hess: Matrix3<f64>,
+    pi: f64,
+    /// Σ q_o, Σ q_i, Σ q_i x, the cone's Σ k, Σ k x, Σ k x².
+    qo: f64,
+    qi0: f64,
+    qi1: f64,
+    s0: f64,
+    s1: f64,
+    s2: f64,
+    qf: f64,
+    kf: f64,
+    df: f64,
+    max_o: f64,
+    max_i: f64,
+}
+
+const EXP: f64 = 10.0 / 9.0;
+
+/// The tapered roller bearing solver with every roller in its own equilibrium and the
+/// rib contact in the loop.
+#[derive(Debug, Clone)]
+pub struct RibContactSolver {
+    iso: RollerBearingSolver,
+    pair: RollerRib,
+    frames: Vec<Frame>,
+    x: Vec<f64>,
+    /// Moment arm offset `(D/2) sin β_r`, mm: `x̃ = x − arm0`.
+    arm0: f64,
+    e_o: Vec<f64>,
+    e_i: Vec<f64>,
+    /// Per-contact slice constant `2^(10/9) c_s`, N/mm^(10/9).
+    c: f64,
+    /// Hertz load coefficient of the rib contact, N/mm^1.5.
+    k_rib: f64,
+    p0_unit: f64,
+    /// cos γ, sin γ.
+    cg: f64,
+    sg: f64,
+    /// `∂δ_f/∂ρ`.
+    d_f: Vector3<f64>,
+    /// 2-D unit vectors and the rib point (from O) in the roller's axial plane.
+    n_o: Vector2<f64>,
+    n_i: Vector2<f64>,
+    t_o: Vector2<f64>,
+    t_i: Vector2<f64>,
+    n_f: Vector2<f64>,
+    s_f: Vector2<f64>,
+    rho: Vec<Vector3<f64>>,
+    cup_load: Vec<f64>,
+    cone_load: Vec<f64>,
+    series_approach: Vec<f64>,
+    rollers: Vec<RibRollerLoad>,
+    probe: Matrix5<f64>,
+    centrifugal_n: f64,
+    /// The force scale of one roller for the roller's own tolerance, N (set per solve).
+    roller_scale: f64,
+    /// Multiplies the rib's Hertz load coefficient (1 by default; a large factor makes the
+    /// rib rigid, a study and test device).
+    pub rib_stiffness_factor: f64,
+    /// Hold every roller's tilt at 0 (false by default; a study and test device).
+    pub hold_roller_tilt: bool,
+    /// Largest relative residual of the ring accepted as converged (default 1e-11).
+    pub tolerance: f64,
+    /// Iteration limit of the ring (default 100).
+    pub max_iterations: usize,
+}
+
+/// The 2-D vector `(cos a, sin a)`.
+fn unit(a: f64) -> Vector2<f64> {
+    Vector2::new(a.cos(), a.sin())
+}
+
+/// 2-D cross product `a × b = a_r b_z − a_z b_r`.
+fn cross(a: &Vector2<f64>, b: &Vector2<f64>) -> f64 {
+    a.x * b.y - a.y * b.x
+}
+
+/// The ring's 5-vector of a load along the 2-D normal `n` at the 2-D point `p` (from the
+/// bearing axis, in the axial plane at azimuth ψ): `(n, (p × n)_x, (p × n)_y)`.
+fn ring_vector(psi: f64, p: &Vector2<f64>, n: &Vector2<f64>) -> Vector5<f64> {
+    let (s, c) = psi.sin_cos();
+    let w = cross(p, n);
+    Vector5::new(n.x * c, n.x * s, n.y, w * s, -w * c)
+}
+
+impl RibContactSolver {
+    /// Set up the solver of the tapered roller bearing `bearing` with the rib pair `rib`.
+    ///
+    /// # Errors
+    /// As [`RollerBearing::validate`]; `kind` unless tapered; `slices` below 3 (a roller's
+    /// tilt needs slices to balance it); the rib pair's errors of
+    /// `kontakt::bearing::RollerRib::new` named `rib_contact.<field>`
+    /// (`rib_contact.contact_height_mm`, `rib_contact.face.radius_mm`, ...);
+    /// `rib_angle_rad` when it is given and differs from the rib normal of the pair by more
+    /// than 1e-8 rad.
+    pub fn new(bearing: RollerBearing, rib: RibContact) -> Result<Self> {
+        bearing.validate()?;
+        if bearing.kind != RollerBearingKind::Tapered {
+            return Err(Error::invalid(
+                "kind",
+                format!("{:?}", bearing.kind).to_lowercase(),
+                "a tapered roller bearing (the rib-contact roller model is for tapered rollers; cylindrical NJ/NUP rib arrangements are not modelled yet)",
+            ));
+        }
+        if bearing.slices < 3 {
+            return Err(Error::invalid(
+                "slices",
+                bearing.slices,
+                "at least 3 slices for the rib-contact roller model (the roller's tilt is balanced by its slices)",
+            ));
+        }
+        let (a, ai) = (bearing.contact_angle_rad, bearing.cone_angle_rad);
+        let gamma = a - ai;
+        let beta_r = 0.5 * gamma;
+        let am = 0.5 * (a + ai);
+        let d = bearing.roller_diameter_mm;
+        let l = bearing.effective_length_mm;
+        let r = 0.5 * bearing.pitch_diameter_mm;
+        let pair = rib_pair(&bearing, &rib)?;
+        // roller_rib's section plane (X radial, Z toward the large end) is (r, −z) here
+        let nf3 = pair.contact.normal.into_inner();
+        let n_f = Vector2::new(nf3.x, -nf3.z).normalize();
+        let u = pair.roller_axis.into_inner();
+        let rho_l = pair.spec.bearing.roller_large_end_radius;
+        let mid = pair.apex + u * (rho_l / beta_r.tan() - 0.5 * l);
+        let rel = pair.contact.point - mid;
+        let s_f = Vector2::new(rel.x, -rel.z);
+        let built = n_f.y.atan2(n_f.x);
+        if let Some(given) = bearing.rib_angle_rad
+            && !((given - built).abs() <= 1e-8)
+        {
+            return Err(Error::invalid(
+                "rib_angle_rad",
+                given,
+                format!(
+                    "the rib normal of the roller end/rib pair, {built:.12} rad ({:.9} deg), or none: with the rib contact the face and the contact height set it",
+                    built.to_degrees()
+                ),
+            ));
+        }
+        let n_o = unit(a);
+        let n_i = unit(ai);
+        let t_o = Vector2::new(-a.sin(), a.cos());
+        let t_i = Vector2::new(-ai.sin(), ai.cos());
+        let d_f = -Vector3::new(n_o.dot(&n_f), t_o.dot(&n_f), cross(&s_f, &n_f));
+        let steel = ElasticMaterial::STEEL;
+        let gap = pair.gap()?;
+        let hertz =
+            HertzPointContact::new(PointGeometry::from_curvature(gap.curvature()), steel, steel)?;
+        let z = bearing.rollers;
+        let arm0 = 0.5 * d * beta_r.sin();
+        // the cone line's midpoint O − (D/2) n_m, n_m the roller's normal
+        let o = Vector2::new(r, 0.0);
+        let p_i = o - unit(am) * (0.5 * d);
+        let p_f = o + s_f;
+        let frames: Vec<Frame> = (0..z)
+            .map(|j| {
+                let psi = bearing.first_roller_azimuth_rad + 2.0 * PI * j as f64 / z as f64;
+                let (s, c) = psi.sin_cos();
+                Frame {
+                    psi,
+                    g0: ring_vector(psi, &p_i, &n_i),
+                    g1: Vector5::new(0.0, 0.0, 0.0, -s, c),
+                    gf: ring_vector(psi, &p_f, &n_f),
+                }
+            })
+            .collect();
+        let x: Vec<f64> = bearing.slice_positions().collect();
+        let quarter = 0.25 * bearing.clearance_mm;
+        let e_o = x
+            .iter()
+            .map(|&xk| quarter + bearing.roller_profile.drop(xk) + bearing.outer_profile.drop(xk))
+            .collect();
+        let e_i = x
+            .iter()
+            .map(|&xk| quarter + bearing.roller_profile.drop(xk) + bearing.inner_profile.drop(xk))
+            .collect();
+        let c_s = bearing.roller_stiffness() / bearing.slices as f64;
+        let mut probe = Matrix5::zeros();
+        for f in &frames {
+            for &xk in &x {
+                let g = f.g0 + f.g1 * xk;
+                probe += g * g.transpose();
+            }
+        }
+        let n = z * bearing.slices;
+        let iso = RollerBearingSolver::new(bearing)?;
+        Ok(RibContactSolver {
+            iso,
+            pair,
+            frames,
+            arm0,
+            e_o,
+            e_i,
+            c: c_s * 2f64.powf(EXP),
+            k_rib: hertz.load_coefficient(),
+            p0_unit: hertz.max_pressure_at_unit_force(),
+            cg: gamma.cos(),
+            sg: gamma.sin(),
+            d_f,
+            n_o,
+            n_i,
+            t_o,
+            t_i,
+            n_f,
+            s_f,
+            rho: vec![Vector3::zeros(); z],
+            cup_load: vec![0.0; n],
+            cone_load: vec![0.0; n],
+            series_approach: vec![0.0; n],
+            rollers: vec![RibRollerLoad::default(); z],
+            probe,
+            centrifugal_n: 0.0,
+            roller_scale: 0.0,
+            x,
+            rib_stiffness_factor: 1.0,
+            hold_roller_tilt: false,
+            tolerance: 1e-11,
+            max_iterations: 100,
+        })
+    }
+
+    /// The bearing.
+    pub fn bearing(&self) -> &RollerBearing {
+        self.iso.bearing()
+    }
+
+    /// The roller end/rib pair as built by `kontakt::bearing::RollerRib` (the contact point,
+    /// its normal, the surfaces).
+    pub fn rib_pair(&self) -> &RollerRib {
+        &self.pair
+    }
+
+    /// The rib normal's direction (rib into roller) in the roller's axial plane, measured
+    /// like the contact angles, rad.
+    pub fn rib_normal_angle(&self) -> f64 {
+        self.n_f.y.atan2(self.n_f.x)
+    }
+
+    /// The rib contact point from the roller centre in the axial plane `(r, z)`, mm.
+    pub fn rib_point(&self) -> [f64; 2] {
+        [self.s_f.x, self.s_f.y]
+    }
+
+    /// The Hertz load coefficient of the rib contact (before `rib_stiffness_factor`),
+    /// `Q = K_f δ^(3/2)`, N/mm^1.5.
+    pub fn rib_load_coefficient(&self) -> f64 {
+        self.k_rib
+    }
+
+    /// The centrifugal force on every roller, N (default 0).
+    pub fn centrifugal_n(&self) -> f64 {
+        self.centrifugal_n
+    }
+
+    /// Set the centrifugal force on every roller, N (along the roller's radial direction,
+    /// at its centre).
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] naming `centrifugal_n` unless finite and >= 0.
+    pub fn set_centrifugal_n(&mut self, f: f64) -> Result<()> {
+        if !(f.is_finite() && f >= 0.0) {
+            return Err(Error::invalid(
+                "centrifugal_n",
+                f,
+                "a finite force >= 0 N per roller",
+            ));
+        }
+        self.centrifugal_n = f;
+        Ok(())
+    }
+
+    /// Slice centres along the raceway lines from their midpoints, mm.
+    pub fn slice_positions(&self) -> &[f64] {
+        &self.x
+    }
+
+    /// Cup slice loads of the last evaluation, N, roller-major.
+    pub fn cup_slice_loads(&self) -> &[f64] {
+        &self.cup_load
+    }
+
+    /// Cone slice loads of the last evaluation, N, roller-major.
+    pub fn cone_slice_loads(&self) -> &[f64] {
+        &self.cone_load
+    }
+
+    /// Per-slice sum of the cup and cone approaches of the last evaluation, mm.
+    pub fn slice_approaches(&self) -> &[f64] {
+        &self.series_approach
+    }
+
+    /// Per-roller results of the last solve.
+    pub fn roller_loads(&self) -> &[RibRollerLoad] {
+        &self.rollers
+    }
+
+    /// The net force `(r, z)` (N) and moment about the roller centre (N·mm) on roller `j`
+    /// from its cup and cone slices, its rib contact and the centrifugal force at the last
+    /// evaluation, summed from the contact points and normals (zero in equilibrium).
+    pub fn roller_balance(&self, j: usize) -> [f64; 3] {
+        let ns = self.x.len();
+        let b = self.bearing();
+        let half_d = 0.5 * b.roller_diameter_mm;
+        let am = 0.5 * (b.contact_angle_rad + b.cone_angle_rad);
+        let n_m = unit(am);
+        let mut f = Vector2::zeros();
+        let mut m = 0.0;
+        for k in 0..ns {
+            let (qo, qi) = (self.cup_load[j * ns + k], self.cone_load[j * ns + k]);
+            let po = n_m * half_d + self.t_o * self.x[k];
+            let pi = -n_m * half_d + self.t_i * self.x[k];
+            let fo = -self.n_o * qo;
+            let fi = self.n_i * qi;
+            f += fo + fi;
+            m += cross(&po, &fo) + cross(&pi, &fi);
+        }
+        let ff = self.n_f * self.rollers[j].rib_n;
+        f += ff + Vector2::new(self.centrifugal_n, 0.0);
+        m += cross(&self.s_f, &ff);
+        [f.x, f.y, m]
+    }
+
+    /// Evaluate roller j at ρ with the ring approaches `(G0, G1, G_f)`; fills its slice
+    /// buffers.
+    fn eval_roller(&mut self, j: usize, rho: &Vector3<f64>, gi: (f64, f64, f64)) -> RollerEval {
+        let ns = self.x.len();
+        let (a, b, phi) = (rho[0], rho[1], rho[2]);
+        let mut e = RollerEval::default();
+        let (mut h00, mut h02, mut h22) = (0.0, 0.0, 0.0);
+        let (mut max_o, mut max_i) = (f64::NEG_INFINITY, f64::NEG_INFINITY);
+        let base_i = gi.0 - a * self.cg + b * self.sg;
+        let c = self.c;
+        for k in 0..ns {
+            let xk = self.x[k];
+            let xt = xk - self.arm0;
+            let d_o = a - phi * xt - self.e_o[k];
+            let d_i = base_i + gi.1 * xk + phi * xt - self.e_i[k];
+            max_o = max_o.max(d_o);
+            max_i = max_i.max(d_i);
+            self.series_approach[j * ns + k] = d_o + d_i;
+            let mut qo = 0.0;
+            if d_o > 0.0 {
+                let r9 = d_o.powf(1.0 / 9.0);
+                qo = c * d_o * r9;
+                let ko = EXP * c * r9;
+                e.pi += qo * d_o * (9.0 / 19.0);
+                e.qo += qo;
+                e.grad[2] -= qo * xt;
+                h00 += ko;
+                h02 -= ko * xt;
+                h22 += ko * xt * xt;
+            }
+            self.cup_load[j * ns + k] = qo;
+            let mut qi = 0.0;
+            if d_i > 0.0 {
+                let r9 = d_i.powf(1.0 / 9.0);
+                qi = c * d_i * r9;
+                let ki = EXP * c * r9;
+                e.pi += qi * d_i * (9.0 / 19.0);
+                e.qi0 += qi;
+                e.qi1 += qi * xk;
+                e.s0 += ki;
+                e.s1 += ki * xk;
+                e.s2 += ki * xk * xk;
+            }
+            self.cone_load[j * ns + k] = qi;
+        }
+        // cone: ∂δ_i/∂ρ = (−cos γ, sin γ, x − arm0)
+        let (cg, sg, a0) = (self.cg, self.sg, self.arm0);
+        let m_i = e.qi1 - a0 * e.qi0; // Σ q x̃
+        e.grad[0] += e.qo - cg * e.qi0;
+        e.grad[1] += sg * e.qi0;
+        e.grad[2] += m_i;
+        let (k0, k1) = (e.s0, e.s1 - a0 * e.s0); // Σk, Σk x̃
+        let k2 = e.s2 - 2.0 * a0 * e.s1 + a0 * a0 * e.s0; // Σk x̃²
+        let mut h = Matrix3::new(
+            h00 + cg * cg * k0,
+            -cg * sg * k0,
+            h02 - cg * k1,
+            -cg * sg * k0,
+            sg * sg * k0,
+            sg * k1,
+            h02 - cg * k1,
+            sg * k1,
+            h22 + k2,
+        );
+        // rib
+        e.df = gi.2 + self.d_f.dot(rho);
+        if e.df > 0.0 {
+            let kf = self.k_rib * self.rib_stiffness_factor;
+            let sq = e.df.sqrt();
+            e.qf = kf * e.df * sq;
+            e.kf = 1.5 * kf * sq;
+            e.pi += 0.4 * e.qf * e.df;
+            e.grad += self.d_f * e.qf;
+            h += self.d_f * self.d_f.transpose() * e.kf;
+        }
+        // centrifugal force along +e_r: its work F_c (a cos α − b sin α)
+        let fc = self.centrifugal_n;
+        if fc != 0.0 {
+            e.pi -= fc * (a * self.n_o.x + b * self.t_o.x);
+            e.grad[0] -= fc * self.n_o.x;
+            e.grad[1] -= fc * self.t_o.x;
+        }
+        if self.hold_roller_tilt {
+            e.grad[2] = 0.0;
+            for i in 0..3 {
+                h[(i, 2)] = 0.0;
+                h[(2, i)] = 0.0;
+            }
+            h[(2, 2)] = 1.0;
+        }
+        e.hess = h;
+        e.max_o = max_o;
+        e.max_i = max_i;
+        e
+    }
+
+    /// The position where a roller without contact floats: no tilt, its cup, cone and rib
+    /// gaps (at the slice midpoints) equal.
+    fn floating(&self, gi: (f64, f64, f64)) -> Vector3<f64> {
+        let mid = self.x.len() / 2;
+        let (eo, ei) = (self.e_o[mid], self.e_i[mid]);
+        // a − eo = G_i − a cγ + b sγ − ei,  a − eo = G_f + d_f0 a + d_f1 b
+        let (m00, m01, r0) = (1.0 + self.cg, -self.sg, gi.0 + gi.1 * self.x[mid] - ei + eo);
+        let (m10, m11, r1) = (1.0 - self.d_f[0], -self.d_f[1], gi.2 + eo);
+        let det = m00 * m11 - m01 * m10;
+        Vector3::new(
+            (r0 * m11 - m01 * r1) / det,
+            (m00 * r1 - m10 * r0) / det,
+            0.0,
+        )
+    }
+
+    /// Solve roller j's balance for the ring approaches `gi`, from its stored position.
+    fn solve_roller(&mut self, j: usize, gi: (f64, f64, f64)) -> (RollerEval, usize) {
+        let l = self.bearing().effective_length_mm;
+        let mut rho = self.rho[j];
+        if self.hold_roller_tilt {
+            rho[2] = 0.0;
+        }
+        let mut e = self.eval_roller(j, &rho, gi);
+        // without the cone and the rib (and without centrifugal force) nothing can hold
+        // the roller on the cup: it floats where it touches nothing, if it can
+        if self.centrifugal_n == 0.0 && e.qi0 == 0.0 && e.qf == 0.0 && e.qo > 0.0 {
+            let float = self.floating(gi);
+            let ef = self.eval_roller(j, &float, gi);
+            if ef.qo + ef.qi0 + ef.qf == 0.0 {
+                self.rho[j] = float;
+                return (ef, 0);
+            }
+            e = self.eval_roller(j, &rho, gi);
+        }
+        if e.qo + e.qi0 + e.qf == 0.0 {
+            // no contact at the stored position: start from (or stay at) the float
+            let float = self.floating(gi);
+            let ef = self.eval_roller(j, &float, gi);
+            rho = float;
+            e = ef;
+            if self.centrifugal_n == 0.0 && e.qo + e.qi0 + e.qf == 0.0 {
+                self.rho[j] = rho;
+                return (e, 0);
+            }
+        }
+        let scale = self
+            .roller_scale
+            .max(e.qo + e.qi0 + e.qf + self.centrifugal_n);
+        let tol = 1e-13 * scale;
+        let mut iterations = 0;
+        for _ in 0..100 {
+            if e.grad[0].abs() <= tol && e.grad[1].abs() <= tol && e.grad[2].abs() <= tol * l {
+                break;
+            }
+            iterations += 1;
+            // regularise directions without contact stiffness (a descent direction still)
+            let k_ref = e.hess[(0, 0)]
+                .max(e.hess[(1, 1)])
+                .max(e.hess[(2, 2)] * 4.0 / (l * l))
+                .max(self.c * 1e-3);
+            let mut h = e.hess;
+            h[(0, 0)] += 1e-12 * k_ref;
+            h[(1, 1)] += 1e-12 * k_ref;
+            h[(2, 2)] += 1e-12 * k_ref * 0.25 * l * l;
+            let step = match h.cholesky() {
+                Some(ch) => -ch.solve(&e.grad),
+                None => -e.grad / k_ref,
+            };
+            let slope = e.grad.dot(&step);
+            let mut t = 1.0;
+            let mut accepted = false;
+            for _ in 0..60 {
+                let trial = rho + step * t;
+                let et = self.eval_roller(j, &trial, gi);
+                if et.pi <= e.pi + 1e-4 * t * slope + 1e-15 * e.pi.abs() {
+                    rho = trial;
+                    e = et;
+                    accepted = true;
+                    break;
+                }
+                t *= 0.5;
+            }
+            if !accepted {
+                e = self.eval_roller(j, &rho, gi);
+                break;
+            }
+        }
+        self.rho[j] = rho;
+        (e, iterations)
+    }
+
+    /// Evaluate every roller in its own equilibrium at the ring displacement `u`: the
+    /// carried load, the condensed stiffness and the reduced potential.
+    fn evaluate(&mut self, u: &Vector5<f64>) -> (Vector5<f64>, Matrix5<f64>, f64) {
+        let mut f = Vector5::zeros();
+        let mut k = Matrix5::zeros();
+        let mut phi = 0.0;
+        let (cg, sg, a0) = (self.cg, self.sg, self.arm0);
+        for j in 0..self.frames.len() {
+            let fr = self.frames[j];
+            let gi = (fr.g0.dot(u), fr.g1.dot(u), fr.gf.dot(u));
+            let (e, iterations) = self.solve_roller(j, gi);
+            phi += e.pi;
+            f += fr.g0 * e.qi0 + fr.g1 * e.qi1 + fr.gf * e.qf;
+            let g0g1 = fr.g0 * fr.g1.transpose();
+            let mut kuu = fr.g0 * fr.g0.transpose() * e.s0
+                + (g0g1 + g0g1.transpose()) * e.s1
+                + fr.g1 * fr.g1.transpose() * e.s2;
+            // K_uρ = Σ k g dᵀ, d_i = (−cos γ, sin γ, x − arm0); the rib k_f g_f d_fᵀ
+            let mut kur = Matrix5x3::zeros();
+            let tilt = if self.hold_roller_tilt { 0.0 } else { 1.0 };
+            let r0 = Vector3::new(-cg * e.s0, sg * e.s0, tilt * (e.s1 - a0 * e.s0));
+            let r1 = Vector3::new(-cg * e.s1, sg * e.s1, tilt * (e.s2 - a0 * e.s1));
+            kur += fr.g0 * r0.transpose() + fr.g1 * r1.transpose();
+            if e.kf > 0.0 {
+                kuu += fr.gf * fr.gf.transpose() * e.kf;
+                let mut df = self.d_f;
+                df[2] *= tilt;
+                kur += fr.gf * df.transpose() * e.kf;
+            }
+            if e.s0 + e.kf > 0.0 {
+                // static condensation; a roller with contacts has a positive definite K_ρρ
+                // up to directions without stiffness, which the regularisation covers
+                let l = self.iso.bearing().effective_length_mm;
+                let k_ref = e.hess[(0, 0)].max(e.hess[(1, 1)]).max(self.c * 1e-3);
+                let mut h = e.hess;
+                h[(0, 0)] += 1e-12 * k_ref;
+                h[(1, 1)] += 1e-12 * k_ref;
+                h[(2, 2)] += 1e-12 * k_ref * 0.25 * l * l;
+                if let Some(ch) = h.cholesky() {
+                    let x = ch.solve(&kur.transpose());
+                    kuu -= kur * x;
+                }
+            }
+            k += kuu;
+            let rho = self.rho[j];
+            self.rollers[j] = RibRollerLoad {
+                azimuth_rad: fr.psi,
+                outer_n: e.qo,
+                inner_n: e.qi0,
+                rib_n: e.qf,
+                tilt_rad: rho[2],
+                translation_mm: [rho[0], rho[1]],
+                rib_max_pressure_mpa: if e.qf > 0.0 {
+                    self.p0_unit * e.qf.cbrt()
+                } else {
+                    0.0
+                },
+                skew_moment_nmm: 0.0,
+                rib_approach_mm: e.df,
+                max_approach_mm: e.max_o + e.max_i,
+                iterations,
+            };
+        }
+        // symmetrise the round-off of the condensation
+        let k = (k + k.transpose()) * 0.5;
+        (f, k, phi)
+    }
+
+    /// The load `(Fx, Fy, Fz, Mx, My)` (N, N·mm) the rollers carry at the inner-ring
+    /// displacement `u` (mm, rad), each roller in its own equilibrium, and the condensed
+    /// stiffness there.
+    ///
+    /// # Errors
+    /// `u` must be finite (named `start.<component>`).
+    pub fn load_at(&mut self, u: [f64; 5]) -> Result<([f64; 5], [[f64; 5]; 5])> {
+        warm_start(&RingLoad::displacements(u), u, &[true; 5])?;
+        self.roller_scale = 0.0;
+        let (f, k, _) = self.evaluate(&Vector5::from(u));
+        Ok((f.into(), to_rows(&k)))
+    }
+
+    /// Solve the inner ring's equilibrium under `load` from the closed-form start of the
+    /// ISO model; every roller starts floating.
+    ///
+    /// # Errors
+    /// As [`RollerBearingSolver::solve`].
+    pub fn solve(&mut self, load: &RingLoad) -> Result<RibContactSolution> {
+        self.iso.check_load(load)?;
+        let start = self.iso.start(load);
+        for r in &mut self.rho {
+            *r = Vector3::zeros();
+        }
+        Ok(self.iterate(load, start))
+    }
+
+    /// Solve from the ring displacement `start` (mm, rad), each roller from its last
+    /// position (a warm start after a small load change).
+    ///
+    /// # Errors
+    /// As [`RollerBearingSolver::solve_from`].
+    pub fn solve_from(&mut self, load: &RingLoad, start: [f64; 5]) -> Result<RibContactSolution> {
+        self.iso.check_load(load)?;
+        let u = warm_start(load, start, self.iso.stiff())?;
+        Ok(self.iterate(load, u))
+    }
+
+    fn iterate(&mut self, load: &RingLoad, u: Vector5<f64>) -> RibContactSolution {
+        let b = self.iso.bearing();
+        let z = b.rollers as f64;
+        let r = 0.5 * b.pitch_diameter_mm;
+        let (free, target) = free_and_target(load, self.iso.stiff());
+        let mut f_ref = load_scale(&target, r);
+        if b.clearance_mm < 0.0 {
+            f_ref = f_ref.max(z * b.roller_stiffness() * (-0.5 * b.clearance_mm).powf(EXP));
+        }
+        self.roller_scale = (f_ref / z).max(self.centrifugal_n);
+        let (tolerance, max_iterations) = (self.tolerance, self.max_iterations);
+        let Outcome {
+            u,
+            termination,
+            iterations,
+            residual,
+            mut note,
+            f,
+            k,
+            buffers_at_u,
+        } = newton(self, free, target, u, f_ref, r, tolerance, max_iterations);
+        if !buffers_at_u {
+            self.evaluate(&u);
+        }
+        let q_max = self.rollers.iter().map(|r| r.outer_n).fold(0.0, f64::max);
+        let rib_max = self.rollers.iter().map(|r| r.rib_n).fold(0.0, f64::max);
+        let p_max = self
+            .rollers
+            .iter()
+            .map(|r| r.rib_max_pressure_mpa)
+            .fold(0.0, f64::max);
+        if termination == Termination::Converged && q_max == 0.0 {
+            note = Some("every roller is lifted off: zero load");
+        }
+        RibContactSolution {
+            displacement: u.into(),
+            load: f.into(),
+            stiffness: to_rows(&k),
+            status: SolveStatus::new(termination, iterations, residual),
+            note,
+            max_roller_load_n: q_max,
+            max_rib_load_n: rib_max,
+            max_rib_pressure_mpa: p_max,
+        }
+    }
+}
+
+/// The roller end/rib pair of `rib` on the roller of `bearing`, built by
+/// `kontakt::bearing::RollerRib` with the common-apex section that has the bearing's cone
+/// angle and roller half-angle: large-end radius `ρ_L = D/2 + (L/2) tan β_r` (the roller
+/// `L_we` long, `D_we` its diameter at mid-length), inner raceway radius at the large end
+/// `ρ_L sin α_i / tan β_r` (the true-rolling condition of `roller_rib` solved for it), bore
+/// and outside diameter wide enough that their checks pass (no result depends on them).
+fn rib_pair(bearing: &RollerBearing, rib: &RibContact) -> Result<RollerRib> {
+    let beta_r = 0.5 * (bearing.contact_angle_rad - bearing.cone_angle_rad);
+    let rho_l = 0.5 * bearing.roller_diameter_mm + 0.5 * bearing.effective_length_mm * beta_r.tan();
+    let r_i = rho_l * bearing.cone_angle_rad.sin() / beta_r.tan();
+    let section = TaperedRollerBearing {
+        bore: r_i,
+        outside_diameter: 2.0 * (r_i + 2.0 * rho_l + bearing.effective_length_mm) + 2.0,
+        roller_half_angle_deg: beta_r.to_degrees(),
+        roller_large_end_radius: rho_l,
+        inner_raceway_radius: r_i,
+    };
+    let spec = RollerRibSpec {
+        bearing: section,
+        face: rib.face,
+        rib: rib.rib,
+        contact_height: rib.contact_height_mm,
+    };
+    RollerRib::new(spec).map_err(|e| {
+        e.map_field(|f| {
+            let key = match f {
+                "contact_height" => "contact_height_mm",
+                "face.radius" => "face.radius_mm",
+                "face.eccentricity" => "face.eccentricity_mm",
+                "rib.radius" => "rib.radius_mm",
+                "bearing.roller_half_angle_deg" => "cup_angle_deg",
+                "bearing.roller_large_end_radius" => "roller_diameter_mm",
+                other => other,
+            };
+            format!("rib_contact.{key}")
+        })
+    })
+}
+
+impl ConvexRing for RibContactSolver {
+    fn evaluate(&mut self, u: &Vector5<f64>) -> (Vector5<f64>, Matrix5<f64>, f64) {
+        RibContactSolver::evaluate(self, u)
+    }
+
+    fn probe(&self) -> &Matrix5<f64> {
+        &self.probe
+    }
+
+    fn reference(&self, f_ref: f64) -> (f64, f64) {
+        let b = self.iso.bearing();
+        let d = (f_ref / (b.rollers as f64 * b.roller_stiffness())).powf(0.9);
+        let c_s = b.roller_stiffness() / b.slices as f64;
+        (d, EXP * c_s * d.powf(1.0 / 9.0))
+    }
+
+    fn touch(&self, step: &Vector5<f64>, d_ref: f64) -> f64 {
+        let ns = self.x.len();
+        let mut t_touch = f64::INFINITY;
+        for (j, fr) in self.frames.iter().enumerate() {
+            let (s0, s1) = (fr.g0.dot(step), fr.g1.dot(step));
+            for (kk, &xk) in self.x.iter().enumerate() {
+                let gd = s0 + s1 * xk;
+                if gd > 0.0 {
+                    let need = d_ref - self.series_approach[j * ns + kk];
+                    t_touch = t_touch.min(need / gd);
+                }
+            }
+        }
+        t_touch
+    }
+
+    fn limit(&self) -> f64 {
+        self.iso.bearing().roller_diameter_mm
+    }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,365 @@
+//! Validation of the rib-contact roller model (docs/VALIDATION.md, bearing rows;
+//! docs/bearing-model.md §9).
+
+use super::*;
+use crate::equilibrium::RollerBearingSolver;
+use crate::test_support::assert_stiffness_matches_central_differences;
+use kontakt::bearing::{TaperedKinematics, roller_loads};
+
+/// The rib study's bearing (examples/bearing_rib_study_60mm.toml, its numbers).
+fn rib_study_bearing() -> RollerBearing {
+    let mut b = RollerBearing::tapered(
+        74.141904,
+        17,
+        10.161476,
+        16.0,
+        25.481595648_f64.to_radians(),
+        19.481595648_f64.to_radians(),
+    );
+    b.rib_angle_rad = Some(109.716252089_f64.to_radians());
+    b
+}
+
+/// The rib study's pairing sphere-torus-57 at its contact height 2.75 mm.
+fn sphere_torus_57() -> RibContact {
+    RibContact {
+        face: FaceShape::Sphere { radius: 57.0 },
+        rib: RibShape::Torus { radius: 30.0 },
+        contact_height_mm: 2.75,
+    }
+}
+
+/// The bench's TRB (32216 geometry, 20 rollers × 31 slices) with a spherical face.
+fn trb() -> RollerBearing {
+    let mut b = RollerBearing::tapered(
+        108.5,
+        20,
+        17.0,
+        20.7,
+        16.0_f64.to_radians(),
+        11.7_f64.to_radians(),
+    );
+    b.slices = 31;
+    b
+}
+
+fn trb_rib() -> RibContact {
+    RibContact {
+        face: FaceShape::Sphere { radius: 80.0 },
+        rib: RibShape::Cone,
+        contact_height_mm: 4.5,
+    }
+}
+
+fn rel(a: f64, b: f64) -> f64 {
+    (a - b).abs() / b.abs()
+}
+
+/// The 2-D balance of the rib study (`kontakt::bearing::roller_loads`) on its own pair.
+fn study_loads(axial: f64, centrifugal: f64) -> kontakt::bearing::RollerLoads {
+    let pair = RollerRib::new(RollerRibSpec::builtin("sphere-torus-57").unwrap()).unwrap();
+    let k = TaperedKinematics::of_roller_rib(&pair, 0.0, 0.0).unwrap();
+    roller_loads(
+        &k,
+        &pair.contact.normal.into_inner(),
+        axial,
+        17,
+        centrifugal,
+    )
+    .unwrap()
+}
+
+/// Pure axial load on the rib study's bearing: every roller's cup, cone and rib load equal
+/// the rib study's 2-D balance to 1e-9 relative, also with a centrifugal force; the
+/// rollers tilt (the rib force's moment) and stay in balance.
+#[test]
+fn pure_axial_load_gives_the_rib_studys_roller_loads() {
+    for fc in [0.0, 150.0] {
+        let mut s = RibContactSolver::new(rib_study_bearing(), sphere_torus_57()).unwrap();
+        s.set_centrifugal_n(fc).unwrap();
+        let sol = s
+            .solve(&RingLoad::forces([0.0, 0.0, 15_000.0, 0.0, 0.0]).with_tilts_held())
+            .unwrap();
+        assert!(sol.status.converged(), "{sol:?}");
+        let want = study_loads(15_000.0, fc);
+        let mut worst: f64 = 0.0;
+        for r in s.roller_loads() {
+            worst = worst
+                .max(rel(r.outer_n, want.outer_raceway))
+                .max(rel(r.inner_n, want.inner_raceway))
+                .max(rel(r.rib_n, want.rib));
+            assert!(r.tilt_rad.abs() > 1e-7, "{r:?}");
+        }
+        eprintln!(
+            "F_c {fc} N: rib {:.6} N (2-D {:.6}), tilt {:.3e} rad, p_rib {:.1} MPa, worst {worst:.2e}, {} iterations",
+            s.roller_loads()[0].rib_n,
+            want.rib,
+            s.roller_loads()[0].tilt_rad,
+            s.roller_loads()[0].rib_max_pressure_mpa,
+            sol.status.iterations
+        );
+        assert!(worst < 1e-9, "{worst:e}");
+    }
+}
+
+/// The comparison can fail: the rib normal of another pairing (sphere-cone-29, another
+/// face radius) moves the rib load far beyond 1e-9.
+#[test]
+fn another_rib_normal_is_caught() {
+    let mut b = rib_study_bearing();
+    b.rib_angle_rad = None;
+    let rib = RibContact {
+        face: FaceShape::Sphere { radius: 29.0 },
+        ..sphere_torus_57()
+    };
+    let mut s = RibContactSolver::new(b, rib).unwrap();
+    s.solve(&RingLoad::forces([0.0, 0.0, 15_000.0, 0.0, 0.0]).with_tilts_held())
+        .unwrap();
+    let want = study_loads(15_000.0, 0.0);
+    let dev = rel(s.roller_loads()[0].rib_n, want.rib);
+    eprintln!(
+        "sphere r_R = 29 mm: rib load {} vs {} N ({dev:.2e})",
+        s.roller_loads()[0].rib_n,
+        want.rib
+    );
+    assert!(dev > 1e-6, "{dev:e}");
+}
+
+/// Under a combined load with free tilts of the rollers every roller's net force and moment
+/// (summed from the contact points and normals, independently of the solver's
+/// derivatives) vanish to 1e-9 of the largest roller load (moments: times L_we), and the
+/// ring carries the applied load to 1e-9.
+#[test]
+fn every_roller_is_in_force_and_moment_balance() {
+    for fc in [0.0, 80.0] {
+        let mut s = RibContactSolver::new(trb(), trb_rib()).unwrap();
+        s.set_centrifugal_n(fc).unwrap();
+        // F_a / (F_r tan α) = 1.14: a load zone of about half the ring
+        let load = [20_000.0, 0.0, 6_500.0, 0.0, 0.0];
+        let sol = s.solve(&RingLoad::forces(load).with_tilts_held()).unwrap();
+        assert!(sol.status.converged(), "{sol:?}");
+        assert!(sol.status.residual <= 1e-9);
+        for i in 0..3 {
+            assert!((sol.load[i] - load[i]).abs() <= 1e-9 * 20_000.0);
+        }
+        let q = sol.max_roller_load_n;
+        let l = s.bearing().effective_length_mm;
+        let mut worst: f64 = 0.0;
+        for j in 0..s.roller_loads().len() {
+            let [fr, fz, m] = s.roller_balance(j);
+            worst = worst
+                .max(fr.abs() / q)
+                .max(fz.abs() / q)
+                .max(m.abs() / (q * l));
+        }
+        let lifted = s
+            .roller_loads()
+            .iter()
+            .filter(|r| r.outer_n == 0.0 && r.inner_n == 0.0 && r.rib_n == 0.0)
+            .count();
+        let inner = s.roller_loads().iter().map(|r| r.iterations).max();
+        eprintln!(
+            "F_c {fc}: worst roller residual {worst:.2e}, {lifted} rollers without cup load, {} iterations, roller iterations at most {inner:?}",
+            sol.status.iterations
+        );
+
+        assert!(worst < 1e-9, "{worst:e}");
+        if fc == 0.0 {
+            assert!(lifted > 0, "the load zone should not cover the ring");
+        } else {
+            assert_eq!(
+                lifted, 0,
+                "the centrifugal force holds every roller on the cup"
+            );
+        }
+    }
+}
+
+/// The balance check can fail: a roller's rib load changed by 1 % leaves a residual.
+#[test]
+fn a_roller_out_of_balance_is_caught() {
+    let mut s = RibContactSolver::new(trb(), trb_rib()).unwrap();
+    s.solve(&RingLoad::forces([20_000.0, 0.0, 10_000.0, 0.0, 0.0]).with_tilts_held())
+        .unwrap();
+    s.rollers[0].rib_n *= 1.01;
+    let [fr, fz, _] = s.roller_balance(0);
+    assert!(fr.hypot(fz) > 1e-4 * s.rollers[0].outer_n);
+}
+
+/// The condensed ring stiffness equals central differences of the carried load (each
+/// roller re-solved) to 1e-6, at a combined load with a ring tilt.
+#[test]
+fn condensed_stiffness_matches_central_differences() {
+    let mut s = RibContactSolver::new(trb(), trb_rib()).unwrap();
+    let sol = s
+        .solve(&RingLoad::forces([20_000.0, 5_000.0, 12_000.0, 0.0, 0.0]).with_tilts_held())
+        .unwrap();
+    let mut u = sol.displacement;
+    u[3] = 2e-5;
+    u[4] = -1e-5;
+    assert_stiffness_matches_central_differences(|u| s.load_at(u).unwrap(), u);
+}
+
+/// The check can fail: the uncondensed K_uu (rollers held) is stiffer than the solution's
+/// derivative.
+#[test]
+fn the_uncondensed_stiffness_would_be_caught() {
+    let mut s = RibContactSolver::new(trb(), trb_rib()).unwrap();
+    let sol = s
+        .solve(&RingLoad::forces([20_000.0, 0.0, 12_000.0, 0.0, 0.0]).with_tilts_held())
+        .unwrap();
+    let u = sol.displacement;
+    let (_, k) = s.load_at(u).unwrap();
+    let h = 1e-7;
+    let (mut up, mut um) = (u, u);
+    up[2] += h;
+    um[2] -= h;
+    let fp = s.load_at(up).unwrap().0[2];
+    let fm = s.load_at(um).unwrap().0[2];
+    let fd = (fp - fm) / (2.0 * h);
+    // the condensed entry matches; the cone slices' stiffness alone would not
+    assert!(rel(k[2][2], fd) < 1e-6);
+    let b = s.bearing().clone();
+    let mut iso = RollerBearingSolver::new(b).unwrap();
+    let (_, k_iso) = iso.load_at(u);
+    assert!(rel(k_iso[2][2], fd) > 1e-3);
+}
+
+/// With the rib made very stiff (× 1e8) and the rollers' tilt held, the model approaches
+/// the ISO model: the same ring load gives roller loads within the measured tolerance.
+#[test]
+fn a_rigid_rib_without_tilt_approaches_the_iso_model() {
+    let load = RingLoad::forces([20_000.0, 0.0, 12_000.0, 0.0, 0.0]).with_tilts_held();
+    let mut iso = RollerBearingSolver::new(trb()).unwrap();
+    let iso_sol = iso.solve(&load).unwrap();
+    let deviation = |factor: f64, hold: bool| {
+        let mut s = RibContactSolver::new(trb(), trb_rib()).unwrap();
+        s.rib_stiffness_factor = factor;
+        s.hold_roller_tilt = hold;
+        // the ISO model's rib direction is the pair's
+        let mut b = trb();
+        b.rib_angle_rad = Some(s.rib_normal_angle());
+        let mut iso = RollerBearingSolver::new(b).unwrap();
+        iso.solve(&load).unwrap();
+        let sol = s.solve(&load).unwrap();
+        assert!(sol.status.converged(), "{sol:?}");
+        let q = iso_sol.max_roller_load_n;
+        let mut worst: f64 = 0.0;
+        for (r, i) in s.roller_loads().iter().zip(iso.roller_loads()) {
+            worst = worst
+                .max((r.outer_n - i.outer_n).abs() / q)
+                .max((r.inner_n - i.inner_n).abs() / q)
+                .max((r.rib_n - i.rib_n).abs() / q);
+        }
+        let du = (sol.displacement[0] - iso_sol.displacement[0]).abs() / iso_sol.displacement[0];
+        (worst, du)
+    };
+    let (stiff, du_stiff) = deviation(1e8, true);
+    let (soft, du_soft) = deviation(1.0, false);
+    eprintln!(
+        "rigid rib, no tilt: roller loads within {stiff:.3e} of Q_max, dx {du_stiff:.3e}; Hertz rib, free tilt: {soft:.3e}, dx {du_soft:.3e}"
+    );
+    // measured: 3.9e-5 of Q_max and 3.6e-3 of δx (the cone approach is taken along the
+    // cone normal, the ISO model's along the cup normal); the Hertz rib with free tilts
+    // 1.7e-4 and 1.1e-2
+    assert!(stiff < 1e-4, "{stiff:e}");
+    assert!(du_stiff < 5e-3, "{du_stiff:e}");
+    assert!(soft > stiff && du_soft > du_stiff);
+}
+
+/// Symmetry: a load in the x–z plane on a roller set symmetric about x gives mirrored
+/// rollers (ψ and −ψ) with equal loads and tilts, and no y displacement.
+#[test]
+fn mirrored_rollers_carry_equal_loads() {
+    let mut s = RibContactSolver::new(trb(), trb_rib()).unwrap();
+    let sol = s
+        .solve(&RingLoad::forces([20_000.0, 0.0, 12_000.0, 0.0, 0.0]).with_tilts_held())
+        .unwrap();
+    assert!(sol.displacement[1].abs() < 1e-12, "{:?}", sol.displacement);
+    let r = s.roller_loads();
+    let z = r.len();
+    let q = sol.max_roller_load_n;
+    for j in 1..z {
+        let (a, b) = (r[j], r[z - j]);
+        for (x, y) in [
+            (a.outer_n, b.outer_n),
+            (a.inner_n, b.inner_n),
+            (a.rib_n, b.rib_n),
+        ] {
+            assert!((x - y).abs() <= 1e-9 * q, "{j}: {x} vs {y}");
+        }
+        assert!((a.tilt_rad - b.tilt_rad).abs() <= 1e-9 * r[0].tilt_rad.abs());
+    }
+    // the load along y gives the loads of the x load turned by 90°: same largest load
+    let mut s2 = RibContactSolver::new(trb(), trb_rib()).unwrap();
+    let sol2 = s2
+        .solve(&RingLoad::forces([0.0, 20_000.0, 12_000.0, 0.0, 0.0]).with_tilts_held())
+        .unwrap();
+    assert!(rel(sol2.max_roller_load_n, q) < 1e-9);
+    assert!(rel(sol2.displacement[1], sol.displacement[0]) < 1e-9);
+}
+
+/// Zero load: every roller lifted off, a converged status with a note, zero force.
+#[test]
+fn zero_load_lifts_every_roller_with_a_clear_status() {
+    let mut b = trb();
+    b.clearance_mm = 0.02;
+    let mut s = RibContactSolver::new(b, trb_rib()).unwrap();
+    let sol = s
+        .solve(&RingLoad::forces([0.0; 5]).with_tilts_held())
+        .unwrap();
+    assert!(sol.status.converged(), "{sol:?}");
+    assert_eq!(sol.note, Some("every roller is lifted off: zero load"));
+    assert_eq!(sol.load, [0.0; 5]);
+    assert!(s.roller_loads().iter().all(|r| r.outer_n == 0.0
+        && r.inner_n == 0.0
+        && r.rib_n == 0.0
+        && r.max_approach_mm < 0.0));
+}
+
+/// A warm start after a 1 % load change converges in fewer ring iterations.
+#[test]
+fn a_warm_start_needs_fewer_iterations() {
+    let mut s = RibContactSolver::new(trb(), trb_rib()).unwrap();
+    let load =
+        |f: f64| RingLoad::forces([20_000.0 * f, 0.0, 10_000.0 * f, 0.0, 0.0]).with_tilts_held();
+    let cold = s.solve(&load(1.0)).unwrap();
+    let warm = s.solve_from(&load(1.01), cold.displacement).unwrap();
+    eprintln!(
+        "cold {} iterations, warm {}",
+        cold.status.iterations, warm.status.iterations
+    );
+    assert!(warm.status.converged());
+    assert!(warm.status.iterations < cold.status.iterations);
+}
+
+/// Bad input is named: a cylindrical bearing, a rib angle that contradicts the pair, too
+/// few slices, a negative centrifugal force, a contact height above the large end.
+#[test]
+fn bad_input_is_named() {
+    let msg = |r: Result<RibContactSolver>| r.unwrap_err().to_string();
+    let e = msg(RibContactSolver::new(
+        RollerBearing::cylindrical(60.0, 14, 10.0, 12.0),
+        trb_rib(),
+    ));
+    assert!(e.contains("invalid kind = cylindrical"), "{e}");
+    let mut b = rib_study_bearing();
+    b.rib_angle_rad = Some(110.0_f64.to_radians());
+    let e = msg(RibContactSolver::new(b, sphere_torus_57()));
+    assert!(e.starts_with("invalid rib_angle_rad"), "{e}");
+    let mut b = trb();
+    b.slices = 1;
+    let e = msg(RibContactSolver::new(b, trb_rib()));
+    assert!(e.starts_with("invalid slices = 1"), "{e}");
+    let e = msg(RibContactSolver::new(
+        trb(),
+        RibContact {
+            contact_height_mm: 20.0,
+            ..trb_rib()
+        },
+    ));
+    assert!(e.contains("rib_contact.contact_height_mm"), "{e}");
+    let mut s = RibContactSolver::new(trb(), trb_rib()).unwrap();
+    let e = s.set_centrifugal_n(-1.0).unwrap_err().to_string();
+    assert!(e.starts_with("invalid centrifugal_n = -1"), "{e}");
+}
