@@ -192,6 +192,32 @@ pub struct RollerSpec {
     /// The outer raceway's profile; default straight.
     #[serde(default = "ProfileSpec::straight")]
     pub outer_profile: ProfileSpec,
+    /// Tapered only: `"iso"` (the default: the ISO/TS 16281 slice law of both contacts in
+    /// series, the rib load from the roller's force balance) or `"rib_contact"` (every
+    /// roller in its own force and moment balance, the rib a Hertz contact;
+    /// `docs/bearing-model.md` §9; needs `[bearing.rib_contact]`).
+    #[serde(default, skip_serializing_if = "RollerModel::is_iso")]
+    pub roller_model: RollerModel,
+    /// With `roller_model = "rib_contact"`: the roller end/rib pair.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rib_contact: Option<crate::bearing_rib::RibContactSpec>,
+}
+
+/// `bearing.roller_model`: how a tapered roller is held.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum RollerModel {
+    /// The ISO/TS 16281 slice law of both raceway contacts in series (the default).
+    #[default]
+    Iso,
+    /// Every roller in its own force and moment balance with a Hertz rib contact.
+    RibContact,
+}
+
+impl RollerModel {
+    fn is_iso(&self) -> bool {
+        *self == RollerModel::Iso
+    }
 }
 
 fn default_slices() -> usize {
@@ -460,6 +486,17 @@ pub struct RollerRow {
     pub max_load_per_length_n_per_mm: f64,
     /// The largest slice approach, mm (negative: lifted off by that much).
     pub approach_mm: f64,
+    /// `roller_model = "rib_contact"` only: the roller's tilt in its axial plane, rad
+    /// (positive: the small end toward the bearing axis).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub roller_tilt_rad: Option<f64>,
+    /// `roller_model = "rib_contact"` only: the maximum Hertz pressure on the rib, MPa.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rib_max_pressure_mpa: Option<f64>,
+    /// `roller_model = "rib_contact"` only: the skew moment about the cup normal, N·mm
+    /// (0: the model has no friction).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub skew_moment_nmm: Option<f64>,
 }
 
 /// The slices of the most loaded roller.
@@ -476,6 +513,10 @@ pub struct SliceTable {
     pub load_per_length_n_per_mm: Vec<f64>,
     /// Slice approaches, mm.
     pub approach_mm: Vec<f64>,
+    /// `roller_model = "rib_contact"` only: the cone (inner raceway) slice loads, N;
+    /// `load_n` is then the cup's and `approach_mm` the sum of both contacts' approaches.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub inner_load_n: Option<Vec<f64>>,
 }
 
 /// The solver's status.
@@ -595,6 +636,17 @@ pub struct RollerPart {
     pub roller_loads: Vec<RollerRow>,
     /// The slices of the most loaded roller.
     pub most_loaded_roller: SliceTable,
+    /// `"rib_contact"` when the rollers are in their own balance with a Hertz rib contact
+    /// (absent for the default ISO model).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub roller_model: Option<&'static str>,
+    /// `roller_model = "rib_contact"` only: the largest Hertz pressure on the rib, MPa.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_rib_pressure_mpa: Option<f64>,
+    /// `roller_model = "rib_contact"` only: the rib normal's direction (rib into roller)
+    /// of the roller end/rib pair, measured like the contact angles, degrees.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rib_normal_deg: Option<f64>,
 }
 
 /// The report keys of a ball bearing.
@@ -780,7 +832,7 @@ fn roller_bearing(
 }
 
 /// The library's field names of [`RollerBearing`] as the case file's keys.
-fn map_bearing_field(e: Error) -> Error {
+pub(crate) fn map_bearing_field(e: Error) -> Error {
     e.map_field(|f| {
         let key = match f {
             "effective_length_mm" => "roller_length_mm",
@@ -816,6 +868,8 @@ pub(crate) fn run_bearing_case_unchecked(case: &BearingCase) -> Result<BearingRe
 pub(crate) enum Planned {
     /// A roller bearing.
     Roller(RollerBearingSolver),
+    /// A tapered roller bearing with `roller_model = "rib_contact"`.
+    RibRoller(Box<kontakt_bearing::roller_equilibrium::RibContactSolver>),
     /// A ball bearing, with its case keys for the errors of a solve.
     Ball {
         solver: BallBearingSolver,
@@ -845,6 +899,9 @@ pub(crate) fn plan(case: &BearingCase) -> Result<(Planned, &'static str)> {
         }
     };
     let bearing = roller_bearing(kind, s, label)?;
+    if let Some(planned) = crate::bearing_rib::plan_rib(s, label, &bearing)? {
+        return Ok((planned, label));
+    }
     let solver = RollerBearingSolver::new(bearing).map_err(map_bearing_field)?;
     Ok((Planned::Roller(solver), label))
 }
@@ -861,6 +918,9 @@ pub(crate) fn solve_planned(
     let load = ring_load(load)?;
     match planned {
         Planned::Roller(solver) => roller_report(case, label, solver, &load, start),
+        Planned::RibRoller(solver) => {
+            crate::bearing_rib::rib_roller_report(case, label, solver, &load, start)
+        }
         Planned::Ball { solver, spec, keys } => {
             ball_report(case, label, solver, spec, keys, &load, start)
         }
@@ -911,6 +971,9 @@ fn roller_report(
             rib_load_n: r.rib_n,
             max_load_per_length_n_per_mm: slice_max / width,
             approach_mm: r.max_approach_mm,
+            roller_tilt_rad: None,
+            rib_max_pressure_mpa: None,
+            skew_moment_nmm: None,
         });
     }
     let slice_loads = loads[most * ns..(most + 1) * ns].to_vec();
@@ -920,6 +983,7 @@ fn roller_report(
         load_per_length_n_per_mm: slice_loads.iter().map(|q| q / width).collect(),
         load_n: slice_loads,
         approach_mm: approaches[most * ns..(most + 1) * ns].to_vec(),
+        inner_load_n: None,
     };
     let elements = BearingElements::Rollers(RollerPart {
         rollers: b.rollers,
@@ -934,6 +998,9 @@ fn roller_report(
             .fold(0.0, f64::max),
         roller_loads: rows,
         most_loaded_roller: most_loaded,
+        roller_model: None,
+        max_rib_pressure_mpa: None,
+        rib_normal_deg: None,
     });
     let mut report = report(case, label, elements, sol.displacement, sol.load);
     report.solver = solver_echo(&sol.status);
@@ -944,7 +1011,7 @@ fn roller_report(
 }
 
 /// The library's load-field errors (`load.fz_n`) as the case file's keys.
-fn map_load(e: Error) -> Error {
+pub(crate) fn map_load(e: Error) -> Error {
     e.map_field(|f| load_key(f).unwrap_or_else(|| f.to_string()))
 }
 
@@ -983,7 +1050,10 @@ fn ring_load(l: &BearingLoadSpec) -> Result<RingLoad> {
 
 /// The warnings of a solve's status (stagnated, the library's note), or the refusal of a
 /// solve that did not converge.
-fn solver_warnings(status: &SolveStatus, note: Option<&'static str>) -> Result<Vec<String>> {
+pub(crate) fn solver_warnings(
+    status: &SolveStatus,
+    note: Option<&'static str>,
+) -> Result<Vec<String>> {
     let mut warnings = Vec::new();
     match status.termination {
         Termination::Converged => {}
@@ -1004,7 +1074,7 @@ fn solver_warnings(status: &SolveStatus, note: Option<&'static str>) -> Result<V
     Ok(warnings)
 }
 
-fn solver_echo(status: &SolveStatus) -> BearingSolverEcho {
+pub(crate) fn solver_echo(status: &SolveStatus) -> BearingSolverEcho {
     BearingSolverEcho {
         converged: status.converged(),
         termination: status.termination.as_str(),
@@ -1014,7 +1084,7 @@ fn solver_echo(status: &SolveStatus) -> BearingSolverEcho {
 }
 
 /// The report's common keys; the caller sets the solver, ε, stiffness and warnings.
-fn report(
+pub(crate) fn report(
     case: &BearingCase,
     label: &'static str,
     elements: BearingElements,

@@ -27,6 +27,7 @@
 
 pub mod bearing_case;
 pub mod bearing_model;
+pub mod bearing_rib;
 pub mod bem_case;
 pub mod case;
 mod common;

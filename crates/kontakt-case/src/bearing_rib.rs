@@ -1,0 +1,241 @@
+//! `[bearing] roller_model = "rib_contact"`: a tapered roller bearing whose rollers are each
+//! in their own force and moment balance, with the roller end/rib contact as a Hertz point
+//! contact (`kontakt_bearing::roller_equilibrium`, `docs/bearing-model.md` §9). The pair is
+//! given in the vocabulary of the rib study (`examples/rib_friction.toml`,
+//! `examples/roller_rib_custom_bearing.toml`):
+//!
+//! ```toml
+//! [bearing]
+//! type = "tapered"
+//! roller_model = "rib_contact"     # default "iso"
+//! # ...
+//! [bearing.rib_contact]
+//! pairing = "sphere-torus-57"      # a pairing of Wirsching et al. (2020) Table 1, or:
+//! # face = { shape = "sphere", radius_mm = 57.0 }
+//! # rib = { shape = "torus", radius_mm = 30.0 }
+//! contact_height_mm = 2.75         # above the roller axis; default 2.75 with a pairing
+//! ```
+//!
+//! The rib normal then follows from the face and the contact height; a `rib_angle_deg`
+//! given as well must agree with it (1e-8 rad). Units: mm, N, MPa, rad.
+
+use crate::bearing_case::{
+    BearingCase, BearingElements, BearingReport, Planned, RollerModel, RollerPart, RollerRow,
+    RollerSpec, SliceTable, map_bearing_field, map_load, report, solver_echo, solver_warnings,
+};
+use kontakt::bearing::{CONTACT_HEIGHT, FaceShape, RibShape, RollerRibSpec};
+use kontakt::{Error, Result};
+use kontakt_bearing::equilibrium::RingLoad;
+use kontakt_bearing::geometry::{DEFAULT_SLICES, RollerBearing};
+use kontakt_bearing::roller_equilibrium::{RibContact, RibContactSolver};
+use serde::{Deserialize, Serialize};
+
+/// `[bearing.rib_contact]`: the roller's large-end face and the cone's rib, by a built-in
+/// pairing or by `face` and `rib`, and the contact height (mm).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RibContactSpec {
+    /// A built-in pairing of Wirsching et al. (2020) Table 1 (`"sphere-torus-57"`, ...), or
+    /// none with `face` and `rib`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pairing: Option<String>,
+    /// The roller's end face: `{ shape = "sphere", radius_mm }` or
+    /// `{ shape = "torus", radius_mm, eccentricity_mm }`, mm.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub face: Option<FaceShape>,
+    /// The rib: `{ shape = "cone" }` or `{ shape = "torus", radius_mm }`, mm.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rib: Option<RibShape>,
+    /// Distance of the contact point from the roller axis, mm; default 2.75 (the rib
+    /// study's) with a pairing, required with `face` and `rib`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub contact_height_mm: Option<f64>,
+}
+
+const KEY: &str = "bearing.rib_contact";
+
+impl RibContactSpec {
+    /// The library's pair: errors named by the case key.
+    fn pair(&self) -> Result<RibContact> {
+        let (face, rib, height) = match (&self.pairing, self.face, self.rib) {
+            (Some(p), None, None) => {
+                let spec = RollerRibSpec::builtin(p)
+                    .map_err(|e| e.map_field(|_| format!("{KEY}.pairing")))?;
+                (
+                    spec.face,
+                    spec.rib,
+                    self.contact_height_mm.unwrap_or(CONTACT_HEIGHT),
+                )
+            }
+            (None, Some(face), Some(rib)) => {
+                let h = self.contact_height_mm.ok_or_else(|| Error::CaseFile {
+                    line: None,
+                    key: format!("{KEY}.contact_height_mm").into(),
+                    message: format!(
+                        "missing key `{KEY}.contact_height_mm`: with face and rib the contact height above the roller axis [mm] is required"
+                    ),
+                })?;
+                (face, rib, h)
+            }
+            _ => {
+                return Err(Error::invalid(
+                    format!("{KEY}.pairing"),
+                    self.pairing.as_deref().unwrap_or("none"),
+                    "either `pairing` or both `face` and `rib`",
+                ));
+            }
+        };
+        Ok(RibContact {
+            face,
+            rib,
+            contact_height_mm: height,
+        })
+    }
+}
+
+/// The solver of a `roller_model = "rib_contact"` bearing, `None` for the ISO model.
+///
+/// # Errors
+/// `bearing.rib_contact` given with the ISO model; `bearing.roller_model` on a bearing that
+/// is not tapered; `bearing.rib_contact` missing; the pair's and the solver's errors named
+/// by their case keys (`bearing.rib_contact.contact_height_mm`, `bearing.rib_angle_deg`).
+pub(crate) fn plan_rib(
+    s: &RollerSpec,
+    label: &str,
+    bearing: &RollerBearing,
+) -> Result<Option<Planned>> {
+    if s.roller_model == RollerModel::Iso {
+        if s.rib_contact.is_some() {
+            return Err(Error::invalid(
+                KEY,
+                "given",
+                "no [bearing.rib_contact] with roller_model = \"iso\" (the pair is used by roller_model = \"rib_contact\")",
+            ));
+        }
+        return Ok(None);
+    }
+    if label != "tapered" {
+        return Err(Error::invalid(
+            "bearing.roller_model",
+            "rib_contact",
+            format!(
+                "\"iso\" for type = \"{label}\": the rib-contact roller model is for tapered roller bearings (the NJ/NUP rib contacts of cylindrical ones are not modelled yet)"
+            ),
+        ));
+    }
+    let spec = s.rib_contact.as_ref().ok_or_else(|| Error::CaseFile {
+        line: None,
+        key: KEY.into(),
+        message: format!(
+            "missing table `[{KEY}]`: roller_model = \"rib_contact\" needs the roller end/rib pair (pairing or face and rib)"
+        ),
+    })?;
+    let pair = spec.pair()?;
+    let solver = RibContactSolver::new(bearing.clone(), pair).map_err(|e| match e {
+        Error::InvalidInput {
+            field, expected, ..
+        } if field == "rib_angle_rad" => Error::invalid(
+            "bearing.rib_angle_deg",
+            s.rib_angle_deg.unwrap_or(f64::NAN),
+            expected.replace("rad (", "rad = "),
+        ),
+        e => {
+            let e = e.map_field(|f| {
+                f.strip_prefix("rib_contact.")
+                    .map(|k| format!("{KEY}.{k}"))
+                    .unwrap_or_else(|| f.to_string())
+            });
+            if e.field().is_some_and(|f| f.starts_with(KEY)) {
+                e
+            } else {
+                map_bearing_field(e)
+            }
+        }
+    })?;
+    Ok(Some(Planned::RibRoller(Box::new(solver))))
+}
+
+/// The report of a rib-contact solve: the ISO report's keys (cup load as `outer_load_n`,
+/// cone load as `inner_load_n`) with the roller's tilt, the rib pressure and the skew
+/// moment per roller, the cone slices of the most loaded roller.
+pub(crate) fn rib_roller_report(
+    case: &BearingCase,
+    label: &'static str,
+    solver: &mut RibContactSolver,
+    load: &RingLoad,
+    start: Option<[f64; 5]>,
+) -> Result<BearingReport> {
+    let sol = match start {
+        Some(u) => solver.solve_from(load, u),
+        None => solver.solve(load),
+    }
+    .map_err(map_load)?;
+    let mut warnings = solver_warnings(&sol.status, sol.note)?;
+    let b = solver.bearing();
+    if b.slices < DEFAULT_SLICES {
+        warnings.push(format!(
+            "{} slices per roller: fewer than the recommended {DEFAULT_SLICES}, the roller loads are coarse (docs/bearing-model.md §6)",
+            b.slices
+        ));
+    }
+    let ns = b.slices;
+    let width = b.effective_length_mm / ns as f64;
+    let (cup, cone) = (solver.cup_slice_loads(), solver.cone_slice_loads());
+    let mut rows = Vec::with_capacity(b.rollers);
+    let mut most = 0;
+    let mut q_max = f64::NEG_INFINITY;
+    for (j, r) in solver.roller_loads().iter().enumerate() {
+        let slice_max = cup[j * ns..(j + 1) * ns]
+            .iter()
+            .chain(&cone[j * ns..(j + 1) * ns])
+            .copied()
+            .fold(0.0, f64::max);
+        if r.outer_n > q_max {
+            q_max = r.outer_n;
+            most = j;
+        }
+        rows.push(RollerRow {
+            azimuth_deg: r.azimuth_rad.to_degrees(),
+            inner_load_n: r.inner_n,
+            outer_load_n: r.outer_n,
+            rib_load_n: r.rib_n,
+            max_load_per_length_n_per_mm: slice_max / width,
+            approach_mm: r.max_approach_mm,
+            roller_tilt_rad: Some(r.tilt_rad),
+            rib_max_pressure_mpa: Some(r.rib_max_pressure_mpa),
+            skew_moment_nmm: Some(r.skew_moment_nmm),
+        });
+    }
+    let range = most * ns..(most + 1) * ns;
+    let cup_slices = cup[range.clone()].to_vec();
+    let most_loaded = SliceTable {
+        roller: most,
+        position_mm: solver.slice_positions().to_vec(),
+        load_per_length_n_per_mm: cup_slices.iter().map(|q| q / width).collect(),
+        load_n: cup_slices,
+        approach_mm: solver.slice_approaches()[range.clone()].to_vec(),
+        inner_load_n: Some(cone[range].to_vec()),
+    };
+    let elements = BearingElements::Rollers(RollerPart {
+        rollers: b.rollers,
+        slices: ns,
+        contact_angle_deg: b.contact_angle_rad.to_degrees(),
+        cone_angle_deg: b.cone_angle_rad.to_degrees(),
+        roller_stiffness_n_per_mm10_9: b.roller_stiffness(),
+        max_roller_load_n: sol.max_roller_load_n,
+        max_load_per_length_n_per_mm: rows
+            .iter()
+            .map(|r| r.max_load_per_length_n_per_mm)
+            .fold(0.0, f64::max),
+        roller_loads: rows,
+        most_loaded_roller: most_loaded,
+        roller_model: Some("rib_contact"),
+        max_rib_pressure_mpa: Some(sol.max_rib_pressure_mpa),
+        rib_normal_deg: Some(solver.rib_normal_angle().to_degrees()),
+    });
+    let mut report = report(case, label, elements, sol.displacement, sol.load);
+    report.solver = solver_echo(&sol.status);
+    report.stiffness_matrix = sol.stiffness;
+    report.warnings = warnings;
+    Ok(report)
+}
