@@ -131,27 +131,34 @@ pub(crate) fn plan_rib(
         ),
     })?;
     let pair = spec.pair()?;
-    let solver = RibContactSolver::new(bearing.clone(), pair).map_err(|e| match e {
-        Error::InvalidInput {
-            field, expected, ..
-        } if field == "rib_angle_rad" => Error::invalid(
-            "bearing.rib_angle_deg",
-            s.rib_angle_deg.unwrap_or(f64::NAN),
-            expected.replace("rad (", "rad = "),
-        ),
-        e => {
-            let e = e.map_field(|f| {
-                f.strip_prefix("rib_contact.")
-                    .map(|k| format!("{KEY}.{k}"))
-                    .unwrap_or_else(|| f.to_string())
-            });
-            if e.field().is_some_and(|f| f.starts_with(KEY)) {
-                e
-            } else {
-                map_bearing_field(e)
-            }
+    // the rib normal comes from the pair; a rib_angle_deg given as well must agree
+    let mut free = bearing.clone();
+    free.rib_angle_rad = None;
+    let solver = RibContactSolver::new(free, pair).map_err(|e| {
+        let e = e.map_field(|f| {
+            f.strip_prefix("rib_contact.")
+                .map(|k| format!("{KEY}.{k}"))
+                .unwrap_or_else(|| f.to_string())
+        });
+        if e.field().is_some_and(|f| f.starts_with(KEY)) {
+            e
+        } else {
+            map_bearing_field(e)
         }
     })?;
+    let built = solver.rib_normal_angle();
+    if let Some(given) = s.rib_angle_deg
+        && !((given.to_radians() - built).abs() <= 1e-8)
+    {
+        return Err(Error::invalid(
+            "bearing.rib_angle_deg",
+            given,
+            format!(
+                "{:.9} deg (the rib normal of the roller end/rib pair, to 1e-8 rad) or no rib_angle_deg: with roller_model = \"rib_contact\" the face and the contact height set it",
+                built.to_degrees()
+            ),
+        ));
+    }
     Ok(Some(Planned::RibRoller(Box::new(solver))))
 }
 

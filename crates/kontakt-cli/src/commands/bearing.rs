@@ -119,9 +119,13 @@ fn roller_header(
     } else {
         String::new()
     };
+    let law = match p.roller_model {
+        Some(_) => "ISO/TS 16281 slice law per raceway, rollers in their own balance",
+        None => "ISO/TS 16281 slice law",
+    };
     writeln!(
         out,
-        "  {} rollers × {} slices{angles} (ISO/TS 16281 slice law)",
+        "  {} rollers × {} slices{angles} ({law})",
         p.rollers, p.slices
     )?;
     Ok(())
@@ -154,6 +158,9 @@ fn roller_table(out: &mut impl Write, r: &BearingReport, p: &RollerPart) -> Resu
         Num(p.max_roller_load_n),
         Num(p.max_load_per_length_n_per_mm)
     )?;
+    if p.roller_model.is_some() {
+        return crate::commands::bearing_rib::rib_roller_table(out, p);
+    }
     writeln!(out)?;
     writeln!(
         out,

@@ -10,6 +10,7 @@ use kontakt_case::case::{
 use kontakt_case::{Case, Outcome, run_case};
 
 pub mod bearing;
+pub mod bearing_rib;
 pub mod friction;
 pub mod impact;
 pub mod mbs;
