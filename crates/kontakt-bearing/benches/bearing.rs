@@ -68,7 +68,7 @@ fn bench_bearing(c: &mut Criterion) {
         warm.status.iterations,
         warm.status.residual,
         previous.max_roller_load_n,
-        previous.max_rib_load_n,
+        rib_solver.max_rib_load_n(),
     );
     group.bench_function("trb_rib_20x31_cold", |b| {
         b.iter(|| rib_solver.solve(black_box(&load)).expect("solve"))

@@ -514,16 +514,7 @@ impl RollerBearingSolver {
         if termination == Termination::Converged && qmax == 0.0 {
             note = Some("every roller is lifted off: zero load");
         }
-        let (sa, ca) = b.contact_angle_rad.sin_cos();
-        let dr = u[0].hypot(u[1]) * ca;
-        // a radial displacement at the round-off level of the axial one is none
-        let tiny = 1e-12 * u[0].abs().max(u[1].abs()).max(u[2].abs());
-        let load_zone = if !b.thrust && dr > tiny {
-            let eps = (u[2] * sa + dr - 0.5 * b.clearance_mm) / (2.0 * dr);
-            (eps.is_finite() && eps > 0.0).then_some(eps)
-        } else {
-            None
-        };
+        let load_zone = load_zone_of(&u, b.contact_angle_rad, b.clearance_mm, b.thrust);
         RollerSolution {
             displacement: u.into(),
             load: f.into(),
@@ -533,6 +524,26 @@ impl RollerBearingSolver {
             load_zone,
             max_roller_load_n: qmax,
         }
+    }
+}
+
+/// The load-zone parameter ε of [`RollerSolution::load_zone`] from the ring displacement u
+/// (mm, rad), the contact angle (rad) and the clearance (mm); `None` for a thrust bearing.
+pub(crate) fn load_zone_of(
+    u: &Vector5<f64>,
+    contact_angle_rad: f64,
+    clearance_mm: f64,
+    thrust: bool,
+) -> Option<f64> {
+    let (sa, ca) = contact_angle_rad.sin_cos();
+    let dr = u[0].hypot(u[1]) * ca;
+    // a radial displacement at the round-off level of the axial one is none
+    let tiny = 1e-12 * u[0].abs().max(u[1].abs()).max(u[2].abs());
+    if !thrust && dr > tiny {
+        let eps = (u[2] * sa + dr - 0.5 * clearance_mm) / (2.0 * dr);
+        (eps.is_finite() && eps > 0.0).then_some(eps)
+    } else {
+        None
     }
 }
 

@@ -50,7 +50,10 @@
 //! slices, ring deformation. The rib's curvature about the bearing axis is that of the
 //! common-apex construction of `roller_rib` for this roller (see §9 of the docs).
 
-use crate::equilibrium::{RingLoad, RollerBearingSolver, free_and_target, load_scale, warm_start};
+use crate::equilibrium::{
+    RingLoad, RollerBearingSolver, RollerSolution, free_and_target, load_scale, load_zone_of,
+    warm_start,
+};
 use crate::geometry::{RollerBearing, RollerBearingKind};
 use crate::newton::{ConvexRing, Outcome, newton, to_rows};
 use kontakt::bearing::{FaceShape, RibShape, RollerRib, RollerRibSpec, TaperedRollerBearing};
@@ -104,30 +107,6 @@ pub struct RibRollerLoad {
     pub max_approach_mm: f64,
     /// Newton iterations of the roller's own balance at the last evaluation.
     pub iterations: usize,
-}
-
-/// The result of a solve of the rib-contact model (the per-roller loads are in
-/// [`RibContactSolver::roller_loads`]).
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
-pub struct RibContactSolution {
-    /// Inner-ring displacement `(δx, δy, δz, θx, θy)`, mm and rad.
-    pub displacement: [f64; 5],
-    /// The load the rollers carry, `(Fx, Fy, Fz, Mx, My)`, N and N·mm.
-    pub load: [f64; 5],
-    /// The condensed 5 × 5 stiffness matrix (N/mm, N, N·mm/rad).
-    pub stiffness: [[f64; 5]; 5],
-    /// How the ring solve ended (residual relative to the load scale as in
-    /// [`crate::equilibrium::RollerSolution`]).
-    pub status: SolveStatus,
-    /// A message when the status is not plain convergence or every roller lifted off.
-    pub note: Option<&'static str>,
-    /// The largest cup load of a roller, N.
-    pub max_roller_load_n: f64,
-    /// The largest rib load of a roller, N.
-    pub max_rib_load_n: f64,
-    /// The largest Hertz pressure on the rib, MPa.
-    pub max_rib_pressure_mpa: f64,
 }
 
 /// Per roller: the cone slices' `g = g0 + x g1` and the rib's `g_f`.
@@ -740,7 +719,7 @@ impl RibContactSolver {
     ///
     /// # Errors
     /// As [`RollerBearingSolver::solve`].
-    pub fn solve(&mut self, load: &RingLoad) -> Result<RibContactSolution> {
+    pub fn solve(&mut self, load: &RingLoad) -> Result<RollerSolution> {
         self.iso.check_load(load)?;
         let start = self.iso.start(load);
         for r in &mut self.rho {
@@ -754,13 +733,13 @@ impl RibContactSolver {
     ///
     /// # Errors
     /// As [`RollerBearingSolver::solve_from`].
-    pub fn solve_from(&mut self, load: &RingLoad, start: [f64; 5]) -> Result<RibContactSolution> {
+    pub fn solve_from(&mut self, load: &RingLoad, start: [f64; 5]) -> Result<RollerSolution> {
         self.iso.check_load(load)?;
         let u = warm_start(load, start, self.iso.stiff())?;
         Ok(self.iterate(load, u))
     }
 
-    fn iterate(&mut self, load: &RingLoad, u: Vector5<f64>) -> RibContactSolution {
+    fn iterate(&mut self, load: &RingLoad, u: Vector5<f64>) -> RollerSolution {
         let b = self.iso.bearing();
         let z = b.rollers as f64;
         let r = 0.5 * b.pitch_diameter_mm;
@@ -785,25 +764,32 @@ impl RibContactSolver {
             self.evaluate(&u);
         }
         let q_max = self.rollers.iter().map(|r| r.outer_n).fold(0.0, f64::max);
-        let rib_max = self.rollers.iter().map(|r| r.rib_n).fold(0.0, f64::max);
-        let p_max = self
-            .rollers
-            .iter()
-            .map(|r| r.rib_max_pressure_mpa)
-            .fold(0.0, f64::max);
         if termination == Termination::Converged && q_max == 0.0 {
             note = Some("every roller is lifted off: zero load");
         }
-        RibContactSolution {
+        let b = self.iso.bearing();
+        RollerSolution {
             displacement: u.into(),
             load: f.into(),
             stiffness: to_rows(&k),
             status: SolveStatus::new(termination, iterations, residual),
             note,
+            load_zone: load_zone_of(&u, b.contact_angle_rad, b.clearance_mm, false),
             max_roller_load_n: q_max,
-            max_rib_load_n: rib_max,
-            max_rib_pressure_mpa: p_max,
         }
+    }
+
+    /// The largest rib load of the last solve, N.
+    pub fn max_rib_load_n(&self) -> f64 {
+        self.rollers.iter().map(|r| r.rib_n).fold(0.0, f64::max)
+    }
+
+    /// The largest Hertz pressure on the rib in the last solve, MPa.
+    pub fn max_rib_pressure_mpa(&self) -> f64 {
+        self.rollers
+            .iter()
+            .map(|r| r.rib_max_pressure_mpa)
+            .fold(0.0, f64::max)
     }
 }
 

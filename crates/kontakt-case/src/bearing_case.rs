@@ -58,7 +58,7 @@ use kontakt::hertz::validity::point_size;
 use kontakt::solve::{SolveStatus, Termination};
 use kontakt::{Error, Result};
 use kontakt_bearing::ball_equilibrium::BallBearingSolver;
-use kontakt_bearing::equilibrium::{Dof, RingLoad, RollerBearingSolver};
+use kontakt_bearing::equilibrium::{Dof, RingLoad, RollerBearingSolver, RollerSolution};
 use kontakt_bearing::geometry::{
     BallBearing, BallBearingKind, DEFAULT_SLICES, RollerBearing, RollerBearingKind,
 };
@@ -940,14 +940,7 @@ fn roller_report(
         None => solver.solve(load),
     }
     .map_err(map_load)?;
-    let mut warnings = solver_warnings(&sol.status, sol.note)?;
     let b = solver.bearing();
-    if b.slices < DEFAULT_SLICES {
-        warnings.push(format!(
-            "{} slices per roller: fewer than the recommended {DEFAULT_SLICES}, the roller loads are coarse (docs/bearing-model.md §6)",
-            b.slices
-        ));
-    }
     let ns = b.slices;
     let width = b.effective_length_mm / ns as f64;
     let loads = solver.slice_loads();
@@ -985,9 +978,29 @@ fn roller_report(
         approach_mm: approaches[most * ns..(most + 1) * ns].to_vec(),
         inner_load_n: None,
     };
+    roller_part_report(case, label, b, &sol, rows, most_loaded)
+}
+
+/// The report of a roller bearing from its solution, its rows and the slices of its most
+/// loaded roller (the ISO and the rib-contact model alike; the rib-contact keys unset).
+pub(crate) fn roller_part_report(
+    case: &BearingCase,
+    label: &'static str,
+    b: &RollerBearing,
+    sol: &RollerSolution,
+    rows: Vec<RollerRow>,
+    most_loaded: SliceTable,
+) -> Result<BearingReport> {
+    let mut warnings = solver_warnings(&sol.status, sol.note)?;
+    if b.slices < DEFAULT_SLICES {
+        warnings.push(format!(
+            "{} slices per roller: fewer than the recommended {DEFAULT_SLICES}, the roller loads are coarse (docs/bearing-model.md §6)",
+            b.slices
+        ));
+    }
     let elements = BearingElements::Rollers(RollerPart {
         rollers: b.rollers,
-        slices: ns,
+        slices: b.slices,
         contact_angle_deg: b.contact_angle_rad.to_degrees(),
         cone_angle_deg: b.cone_angle_rad.to_degrees(),
         roller_stiffness_n_per_mm10_9: b.roller_stiffness(),
@@ -1050,10 +1063,7 @@ fn ring_load(l: &BearingLoadSpec) -> Result<RingLoad> {
 
 /// The warnings of a solve's status (stagnated, the library's note), or the refusal of a
 /// solve that did not converge.
-pub(crate) fn solver_warnings(
-    status: &SolveStatus,
-    note: Option<&'static str>,
-) -> Result<Vec<String>> {
+fn solver_warnings(status: &SolveStatus, note: Option<&'static str>) -> Result<Vec<String>> {
     let mut warnings = Vec::new();
     match status.termination {
         Termination::Converged => {}
@@ -1074,7 +1084,7 @@ pub(crate) fn solver_warnings(
     Ok(warnings)
 }
 
-pub(crate) fn solver_echo(status: &SolveStatus) -> BearingSolverEcho {
+fn solver_echo(status: &SolveStatus) -> BearingSolverEcho {
     BearingSolverEcho {
         converged: status.converged(),
         termination: status.termination.as_str(),
@@ -1084,7 +1094,7 @@ pub(crate) fn solver_echo(status: &SolveStatus) -> BearingSolverEcho {
 }
 
 /// The report's common keys; the caller sets the solver, ε, stiffness and warnings.
-pub(crate) fn report(
+fn report(
     case: &BearingCase,
     label: &'static str,
     elements: BearingElements,

@@ -20,13 +20,13 @@
 //! given as well must agree with it (1e-8 rad). Units: mm, N, MPa, rad.
 
 use crate::bearing_case::{
-    BearingCase, BearingElements, BearingReport, Planned, RollerModel, RollerPart, RollerRow,
-    RollerSpec, SliceTable, map_bearing_field, map_load, report, solver_echo, solver_warnings,
+    BearingCase, BearingElements, BearingReport, Planned, RollerModel, RollerRow, RollerSpec,
+    SliceTable, map_bearing_field, map_load, roller_part_report,
 };
 use kontakt::bearing::{CONTACT_HEIGHT, FaceShape, RibShape, RollerRibSpec};
 use kontakt::{Error, Result};
 use kontakt_bearing::equilibrium::RingLoad;
-use kontakt_bearing::geometry::{DEFAULT_SLICES, RollerBearing};
+use kontakt_bearing::geometry::RollerBearing;
 use kontakt_bearing::roller_equilibrium::{RibContact, RibContactSolver};
 use serde::{Deserialize, Serialize};
 
@@ -177,28 +177,18 @@ pub(crate) fn rib_roller_report(
         None => solver.solve(load),
     }
     .map_err(map_load)?;
-    let mut warnings = solver_warnings(&sol.status, sol.note)?;
     let b = solver.bearing();
-    if b.slices < DEFAULT_SLICES {
-        warnings.push(format!(
-            "{} slices per roller: fewer than the recommended {DEFAULT_SLICES}, the roller loads are coarse (docs/bearing-model.md §6)",
-            b.slices
-        ));
-    }
     let ns = b.slices;
     let width = b.effective_length_mm / ns as f64;
     let (cup, cone) = (solver.cup_slice_loads(), solver.cone_slice_loads());
     let mut rows = Vec::with_capacity(b.rollers);
     let mut most = 0;
-    let mut q_max = f64::NEG_INFINITY;
     for (j, r) in solver.roller_loads().iter().enumerate() {
         let slice_max = cup[j * ns..(j + 1) * ns]
             .iter()
             .chain(&cone[j * ns..(j + 1) * ns])
-            .copied()
-            .fold(0.0, f64::max);
-        if r.outer_n > q_max {
-            q_max = r.outer_n;
+            .fold(0.0, |m: f64, q| m.max(*q));
+        if r.outer_n > solver.roller_loads()[most].outer_n {
             most = j;
         }
         rows.push(RollerRow {
@@ -223,26 +213,11 @@ pub(crate) fn rib_roller_report(
         approach_mm: solver.slice_approaches()[range.clone()].to_vec(),
         inner_load_n: Some(cone[range].to_vec()),
     };
-    let elements = BearingElements::Rollers(RollerPart {
-        rollers: b.rollers,
-        slices: ns,
-        contact_angle_deg: b.contact_angle_rad.to_degrees(),
-        cone_angle_deg: b.cone_angle_rad.to_degrees(),
-        roller_stiffness_n_per_mm10_9: b.roller_stiffness(),
-        max_roller_load_n: sol.max_roller_load_n,
-        max_load_per_length_n_per_mm: rows
-            .iter()
-            .map(|r| r.max_load_per_length_n_per_mm)
-            .fold(0.0, f64::max),
-        roller_loads: rows,
-        most_loaded_roller: most_loaded,
-        roller_model: Some("rib_contact"),
-        max_rib_pressure_mpa: Some(sol.max_rib_pressure_mpa),
-        rib_normal_deg: Some(solver.rib_normal_angle().to_degrees()),
-    });
-    let mut report = report(case, label, elements, sol.displacement, sol.load);
-    report.solver = solver_echo(&sol.status);
-    report.stiffness_matrix = sol.stiffness;
-    report.warnings = warnings;
+    let mut report = roller_part_report(case, label, b, &sol, rows, most_loaded)?;
+    if let BearingElements::Rollers(p) = &mut report.elements {
+        p.roller_model = Some("rib_contact");
+        p.max_rib_pressure_mpa = Some(solver.max_rib_pressure_mpa());
+        p.rib_normal_deg = Some(solver.rib_normal_angle().to_degrees());
+    }
     Ok(report)
 }

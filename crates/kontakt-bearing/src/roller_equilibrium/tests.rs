@@ -139,8 +139,8 @@ fn every_roller_is_in_force_and_moment_balance() {
         let sol = s.solve(&RingLoad::forces(load).with_tilts_held()).unwrap();
         assert!(sol.status.converged(), "{sol:?}");
         assert!(sol.status.residual <= 1e-9);
-        for i in 0..3 {
-            assert!((sol.load[i] - load[i]).abs() <= 1e-9 * 20_000.0);
+        for (got, applied) in sol.load.iter().zip(&load).take(3) {
+            assert!((got - applied).abs() <= 1e-9 * 20_000.0);
         }
         let q = sol.max_roller_load_n;
         let l = s.bearing().effective_length_mm;
