@@ -196,28 +196,14 @@ pub struct RollerSpec {
     /// series, the rib load from the roller's force balance) or `"rib_contact"` (every
     /// roller in its own force and moment balance, the rib a Hertz contact;
     /// `docs/bearing-model.md` §9; needs `[bearing.rib_contact]`).
-    #[serde(default, skip_serializing_if = "RollerModel::is_iso")]
-    pub roller_model: RollerModel,
+    #[serde(
+        default,
+        skip_serializing_if = "crate::bearing_rib::RollerModel::is_iso"
+    )]
+    pub roller_model: crate::bearing_rib::RollerModel,
     /// With `roller_model = "rib_contact"`: the roller end/rib pair.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub rib_contact: Option<crate::bearing_rib::RibContactSpec>,
-}
-
-/// `bearing.roller_model`: how a tapered roller is held.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
-pub enum RollerModel {
-    /// The ISO/TS 16281 slice law of both raceway contacts in series (the default).
-    #[default]
-    Iso,
-    /// Every roller in its own force and moment balance with a Hertz rib contact.
-    RibContact,
-}
-
-impl RollerModel {
-    fn is_iso(&self) -> bool {
-        *self == RollerModel::Iso
-    }
 }
 
 fn default_slices() -> usize {
@@ -832,7 +818,7 @@ fn roller_bearing(
 }
 
 /// The library's field names of [`RollerBearing`] as the case file's keys.
-pub(crate) fn map_bearing_field(e: Error) -> Error {
+fn map_bearing_field(e: Error) -> Error {
     e.map_field(|f| {
         let key = match f {
             "effective_length_mm" => "roller_length_mm",
@@ -899,8 +885,11 @@ pub(crate) fn plan(case: &BearingCase) -> Result<(Planned, &'static str)> {
         }
     };
     let bearing = roller_bearing(kind, s, label)?;
-    if let Some(planned) = crate::bearing_rib::plan_rib(s, label, &bearing)? {
-        return Ok((planned, label));
+    let rib = s.rib_contact.as_ref();
+    if let Some(solver) =
+        crate::bearing_rib::plan_rib(s.roller_model, rib, s.rib_angle_deg, label, &bearing)?
+    {
+        return Ok((Planned::RibRoller(Box::new(solver)), label));
     }
     let solver = RollerBearingSolver::new(bearing).map_err(map_bearing_field)?;
     Ok((Planned::Roller(solver), label))
@@ -918,9 +907,7 @@ pub(crate) fn solve_planned(
     let load = ring_load(load)?;
     match planned {
         Planned::Roller(solver) => roller_report(case, label, solver, &load, start),
-        Planned::RibRoller(solver) => {
-            crate::bearing_rib::rib_roller_report(case, label, solver, &load, start)
-        }
+        Planned::RibRoller(solver) => rib_roller_report(case, label, solver, &load, start),
         Planned::Ball { solver, spec, keys } => {
             ball_report(case, label, solver, spec, keys, &load, start)
         }
@@ -983,7 +970,7 @@ fn roller_report(
 
 /// The report of a roller bearing from its solution, its rows and the slices of its most
 /// loaded roller (the ISO and the rib-contact model alike; the rib-contact keys unset).
-pub(crate) fn roller_part_report(
+fn roller_part_report(
     case: &BearingCase,
     label: &'static str,
     b: &RollerBearing,
@@ -1023,8 +1010,68 @@ pub(crate) fn roller_part_report(
     Ok(report)
 }
 
+/// The report of a rib-contact solve: the ISO report's keys (cup load as `outer_load_n`,
+/// cone load as `inner_load_n`) with the roller's tilt, the rib pressure and the skew
+/// moment per roller, the cone slices of the most loaded roller.
+fn rib_roller_report(
+    case: &BearingCase,
+    label: &'static str,
+    solver: &mut kontakt_bearing::roller_equilibrium::RibContactSolver,
+    load: &RingLoad,
+    start: Option<[f64; 5]>,
+) -> Result<BearingReport> {
+    let sol = match start {
+        Some(u) => solver.solve_from(load, u),
+        None => solver.solve(load),
+    }
+    .map_err(map_load)?;
+    let b = solver.bearing();
+    let ns = b.slices;
+    let width = b.effective_length_mm / ns as f64;
+    let (cup, cone) = (solver.cup_slice_loads(), solver.cone_slice_loads());
+    let mut rows = Vec::with_capacity(b.rollers);
+    let mut most = 0;
+    for (j, r) in solver.roller_loads().iter().enumerate() {
+        let slice_max = cup[j * ns..(j + 1) * ns]
+            .iter()
+            .chain(&cone[j * ns..(j + 1) * ns])
+            .fold(0.0, |m: f64, q| m.max(*q));
+        if r.outer_n > solver.roller_loads()[most].outer_n {
+            most = j;
+        }
+        rows.push(RollerRow {
+            azimuth_deg: r.azimuth_rad.to_degrees(),
+            inner_load_n: r.inner_n,
+            outer_load_n: r.outer_n,
+            rib_load_n: r.rib_n,
+            max_load_per_length_n_per_mm: slice_max / width,
+            approach_mm: r.max_approach_mm,
+            roller_tilt_rad: Some(r.tilt_rad),
+            rib_max_pressure_mpa: Some(r.rib_max_pressure_mpa),
+            skew_moment_nmm: Some(r.skew_moment_nmm),
+        });
+    }
+    let range = most * ns..(most + 1) * ns;
+    let cup_slices = cup[range.clone()].to_vec();
+    let most_loaded = SliceTable {
+        roller: most,
+        position_mm: solver.slice_positions().to_vec(),
+        load_per_length_n_per_mm: cup_slices.iter().map(|q| q / width).collect(),
+        load_n: cup_slices,
+        approach_mm: solver.slice_approaches()[range.clone()].to_vec(),
+        inner_load_n: Some(cone[range].to_vec()),
+    };
+    let mut report = roller_part_report(case, label, b, &sol, rows, most_loaded)?;
+    if let BearingElements::Rollers(p) = &mut report.elements {
+        p.roller_model = Some("rib_contact");
+        p.max_rib_pressure_mpa = Some(solver.max_rib_pressure_mpa());
+        p.rib_normal_deg = Some(solver.rib_normal_angle().to_degrees());
+    }
+    Ok(report)
+}
+
 /// The library's load-field errors (`load.fz_n`) as the case file's keys.
-pub(crate) fn map_load(e: Error) -> Error {
+fn map_load(e: Error) -> Error {
     e.map_field(|f| load_key(f).unwrap_or_else(|| f.to_string()))
 }
 

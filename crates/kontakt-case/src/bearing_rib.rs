@@ -19,16 +19,28 @@
 //! The rib normal then follows from the face and the contact height; a `rib_angle_deg`
 //! given as well must agree with it (1e-8 rad). Units: mm, N, MPa, rad.
 
-use crate::bearing_case::{
-    BearingCase, BearingElements, BearingReport, Planned, RollerModel, RollerRow, RollerSpec,
-    SliceTable, map_bearing_field, map_load, roller_part_report,
-};
 use kontakt::bearing::{CONTACT_HEIGHT, FaceShape, RibShape, RollerRibSpec};
 use kontakt::{Error, Result};
-use kontakt_bearing::equilibrium::RingLoad;
 use kontakt_bearing::geometry::RollerBearing;
 use kontakt_bearing::roller_equilibrium::{RibContact, RibContactSolver};
 use serde::{Deserialize, Serialize};
+
+/// `bearing.roller_model`: how a tapered roller is held.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum RollerModel {
+    /// The ISO/TS 16281 slice law of both raceway contacts in series (the default).
+    #[default]
+    Iso,
+    /// Every roller in its own force and moment balance with a Hertz rib contact.
+    RibContact,
+}
+
+impl RollerModel {
+    pub(crate) fn is_iso(&self) -> bool {
+        *self == RollerModel::Iso
+    }
+}
 
 /// `[bearing.rib_contact]`: the roller's large-end face and the cone's rib, by a built-in
 /// pairing or by `face` and `rib`, and the contact height (mm).
@@ -93,19 +105,24 @@ impl RibContactSpec {
     }
 }
 
-/// The solver of a `roller_model = "rib_contact"` bearing, `None` for the ISO model.
+/// The solver of a `roller_model = "rib_contact"` bearing of type `label` (with the
+/// `[bearing]` keys `roller_model`, `rib_contact`, `rib_angle_deg`), `None` for the ISO
+/// model.
 ///
 /// # Errors
 /// `bearing.rib_contact` given with the ISO model; `bearing.roller_model` on a bearing that
 /// is not tapered; `bearing.rib_contact` missing; the pair's and the solver's errors named
-/// by their case keys (`bearing.rib_contact.contact_height_mm`, `bearing.rib_angle_deg`).
+/// by their case keys (`bearing.rib_contact.contact_height_mm`, `bearing.rib_angle_deg`,
+/// `bearing.slices`).
 pub(crate) fn plan_rib(
-    s: &RollerSpec,
+    model: RollerModel,
+    rib_contact: Option<&RibContactSpec>,
+    rib_angle_deg: Option<f64>,
     label: &str,
     bearing: &RollerBearing,
-) -> Result<Option<Planned>> {
-    if s.roller_model == RollerModel::Iso {
-        if s.rib_contact.is_some() {
+) -> Result<Option<RibContactSolver>> {
+    if model == RollerModel::Iso {
+        if rib_contact.is_some() {
             return Err(Error::invalid(
                 KEY,
                 "given",
@@ -123,7 +140,7 @@ pub(crate) fn plan_rib(
             ),
         ));
     }
-    let spec = s.rib_contact.as_ref().ok_or_else(|| Error::CaseFile {
+    let spec = rib_contact.ok_or_else(|| Error::CaseFile {
         line: None,
         key: KEY.into(),
         message: format!(
@@ -135,19 +152,13 @@ pub(crate) fn plan_rib(
     let mut free = bearing.clone();
     free.rib_angle_rad = None;
     let solver = RibContactSolver::new(free, pair).map_err(|e| {
-        let e = e.map_field(|f| {
-            f.strip_prefix("rib_contact.")
-                .map(|k| format!("{KEY}.{k}"))
-                .unwrap_or_else(|| f.to_string())
-        });
-        if e.field().is_some_and(|f| f.starts_with(KEY)) {
-            e
-        } else {
-            map_bearing_field(e)
-        }
+        e.map_field(|f| match f.strip_prefix("rib_contact.") {
+            Some(k) => format!("{KEY}.{k}"),
+            None => format!("bearing.{f}"),
+        })
     })?;
     let built = solver.rib_normal_angle();
-    if let Some(given) = s.rib_angle_deg
+    if let Some(given) = rib_angle_deg
         && !((given.to_radians() - built).abs() <= 1e-8)
     {
         return Err(Error::invalid(
@@ -159,65 +170,5 @@ pub(crate) fn plan_rib(
             ),
         ));
     }
-    Ok(Some(Planned::RibRoller(Box::new(solver))))
-}
-
-/// The report of a rib-contact solve: the ISO report's keys (cup load as `outer_load_n`,
-/// cone load as `inner_load_n`) with the roller's tilt, the rib pressure and the skew
-/// moment per roller, the cone slices of the most loaded roller.
-pub(crate) fn rib_roller_report(
-    case: &BearingCase,
-    label: &'static str,
-    solver: &mut RibContactSolver,
-    load: &RingLoad,
-    start: Option<[f64; 5]>,
-) -> Result<BearingReport> {
-    let sol = match start {
-        Some(u) => solver.solve_from(load, u),
-        None => solver.solve(load),
-    }
-    .map_err(map_load)?;
-    let b = solver.bearing();
-    let ns = b.slices;
-    let width = b.effective_length_mm / ns as f64;
-    let (cup, cone) = (solver.cup_slice_loads(), solver.cone_slice_loads());
-    let mut rows = Vec::with_capacity(b.rollers);
-    let mut most = 0;
-    for (j, r) in solver.roller_loads().iter().enumerate() {
-        let slice_max = cup[j * ns..(j + 1) * ns]
-            .iter()
-            .chain(&cone[j * ns..(j + 1) * ns])
-            .fold(0.0, |m: f64, q| m.max(*q));
-        if r.outer_n > solver.roller_loads()[most].outer_n {
-            most = j;
-        }
-        rows.push(RollerRow {
-            azimuth_deg: r.azimuth_rad.to_degrees(),
-            inner_load_n: r.inner_n,
-            outer_load_n: r.outer_n,
-            rib_load_n: r.rib_n,
-            max_load_per_length_n_per_mm: slice_max / width,
-            approach_mm: r.max_approach_mm,
-            roller_tilt_rad: Some(r.tilt_rad),
-            rib_max_pressure_mpa: Some(r.rib_max_pressure_mpa),
-            skew_moment_nmm: Some(r.skew_moment_nmm),
-        });
-    }
-    let range = most * ns..(most + 1) * ns;
-    let cup_slices = cup[range.clone()].to_vec();
-    let most_loaded = SliceTable {
-        roller: most,
-        position_mm: solver.slice_positions().to_vec(),
-        load_per_length_n_per_mm: cup_slices.iter().map(|q| q / width).collect(),
-        load_n: cup_slices,
-        approach_mm: solver.slice_approaches()[range.clone()].to_vec(),
-        inner_load_n: Some(cone[range].to_vec()),
-    };
-    let mut report = roller_part_report(case, label, b, &sol, rows, most_loaded)?;
-    if let BearingElements::Rollers(p) = &mut report.elements {
-        p.roller_model = Some("rib_contact");
-        p.max_rib_pressure_mpa = Some(solver.max_rib_pressure_mpa());
-        p.rib_normal_deg = Some(solver.rib_normal_angle().to_degrees());
-    }
-    Ok(report)
+    Ok(Some(solver))
 }
