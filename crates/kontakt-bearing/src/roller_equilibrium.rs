@@ -557,6 +557,22 @@ impl RibContactSolver {
         )
     }
 
+    /// A roller's `K_ρρ` with 1e-12 of its largest contact stiffness added on the diagonal
+    /// (the tilt's scaled by (L/2)²): directions without contact stiffness stay solvable
+    /// and the step a descent direction. Also the reference stiffness, N/mm.
+    fn regularised(&self, hess: &Matrix3<f64>) -> (Matrix3<f64>, f64) {
+        let l = self.iso.bearing().effective_length_mm;
+        let k_ref = hess[(0, 0)]
+            .max(hess[(1, 1)])
+            .max(hess[(2, 2)] * 4.0 / (l * l))
+            .max(self.c * 1e-3);
+        let mut h = *hess;
+        h[(0, 0)] += 1e-12 * k_ref;
+        h[(1, 1)] += 1e-12 * k_ref;
+        h[(2, 2)] += 1e-12 * k_ref * 0.25 * l * l;
+        (h, k_ref)
+    }
+
     /// Solve roller j's balance for the ring approaches `gi`, from its stored position.
     fn solve_roller(&mut self, j: usize, gi: (f64, f64, f64)) -> (RollerEval, usize) {
         let l = self.bearing().effective_length_mm;
@@ -598,14 +614,7 @@ impl RibContactSolver {
             }
             iterations += 1;
             // regularise directions without contact stiffness (a descent direction still)
-            let k_ref = e.hess[(0, 0)]
-                .max(e.hess[(1, 1)])
-                .max(e.hess[(2, 2)] * 4.0 / (l * l))
-                .max(self.c * 1e-3);
-            let mut h = e.hess;
-            h[(0, 0)] += 1e-12 * k_ref;
-            h[(1, 1)] += 1e-12 * k_ref;
-            h[(2, 2)] += 1e-12 * k_ref * 0.25 * l * l;
+            let (h, k_ref) = self.regularised(&e.hess);
             let step = match h.cholesky() {
                 Some(ch) => -ch.solve(&e.grad),
                 None => -e.grad / k_ref,
@@ -665,13 +674,7 @@ impl RibContactSolver {
             if e.s0 + e.kf > 0.0 {
                 // static condensation; a roller with contacts has a positive definite K_ρρ
                 // up to directions without stiffness, which the regularisation covers
-                let l = self.iso.bearing().effective_length_mm;
-                let k_ref = e.hess[(0, 0)].max(e.hess[(1, 1)]).max(self.c * 1e-3);
-                let mut h = e.hess;
-                h[(0, 0)] += 1e-12 * k_ref;
-                h[(1, 1)] += 1e-12 * k_ref;
-                h[(2, 2)] += 1e-12 * k_ref * 0.25 * l * l;
-                if let Some(ch) = h.cholesky() {
+                if let Some(ch) = self.regularised(&e.hess).0.cholesky() {
                     let x = ch.solve(&kur.transpose());
                     kuu -= kur * x;
                 }
