@@ -154,6 +154,8 @@ pub struct RibContactSolver {
     e_i: Vec<f64>,
     /// Per-contact slice constant `2^(10/9) c_s`, N/mm^(10/9).
     c: f64,
+    /// The rib's Hertz contact (steel on steel).
+    hertz: HertzPointContact,
     /// Hertz load coefficient of the rib contact, N/mm^1.5.
     k_rib: f64,
     p0_unit: f64,
@@ -319,6 +321,7 @@ impl RibContactSolver {
             c: c_s * 2f64.powf(EXP),
             k_rib: hertz.load_coefficient(),
             p0_unit: hertz.max_pressure_at_unit_force(),
+            hertz,
             cg: gamma.cos(),
             sg: gamma.sin(),
             d_f,
@@ -364,6 +367,12 @@ impl RibContactSolver {
     /// The rib contact point from the roller centre in the axial plane `(r, z)`, mm.
     pub fn rib_point(&self) -> [f64; 2] {
         [self.s_f.x, self.s_f.y]
+    }
+
+    /// The rib's Hertz contact (face and rib curvatures at the contact point, steel on
+    /// steel), before `rib_stiffness_factor`.
+    pub fn rib_hertz(&self) -> &HertzPointContact {
+        &self.hertz
     }
 
     /// The Hertz load coefficient of the rib contact (before `rib_stiffness_factor`),

@@ -1062,6 +1062,19 @@ fn rib_roller_report(
         inner_load_n: Some(cone[range].to_vec()),
     };
     let mut report = roller_part_report(case, label, b, &sol, rows, most_loaded)?;
+    // the most loaded rib contact, sized against the face's and the rib's radii
+    let rib_max = solver.max_rib_load_n();
+    if rib_max > 0.0 {
+        let hertz = solver.rib_hertz();
+        let hs = hertz.solve_force(rib_max)?;
+        report.contacts.push(
+            ContactSize::new(
+                Size::Hertz(point_size(hertz.geometry(), &hs)),
+                ["bearing.rib_contact.face", "bearing.rib_contact.rib"],
+            )
+            .at("the most loaded roller's rib contact"),
+        );
+    }
     if let BearingElements::Rollers(p) = &mut report.elements {
         p.roller_model = Some("rib_contact");
         p.max_rib_pressure_mpa = Some(solver.max_rib_pressure_mpa());
