@@ -51,7 +51,7 @@
 //! common-apex construction of `roller_rib` for this roller (see §9 of the docs).
 
 use crate::equilibrium::{
-    RingLoad, RollerBearingSolver, RollerSolution, free_and_target, load_scale, load_zone_of,
+    Dof, RingLoad, RollerBearingSolver, RollerSolution, free_and_target, load_scale, load_zone_of,
     warm_start,
 };
 use crate::geometry::{RollerBearing, RollerBearingKind};
@@ -79,6 +79,70 @@ pub struct RibContact {
     pub contact_height_mm: f64,
 }
 
+/// Which rings of a cylindrical roller bearing have ribs (ISO 15 / catalogue type codes):
+/// they decide whether an axial load passes through the roller end/rib contacts.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "lowercase"))]
+pub enum RibArrangement {
+    /// Outer ring ribs at both ends, none on the inner ring: no axial load.
+    Nu,
+    /// Outer ring ribs at both ends, one inner ring rib at the −z end: axial load in +z
+    /// (the inner ring pushed toward +z).
+    Nj,
+    /// Ribs at both ends of both rings (NJ with a loose rib washer): axial load both ways.
+    Nup,
+    /// Inner ring ribs at both ends, none on the outer ring: no axial load.
+    N,
+}
+
+impl RibArrangement {
+    /// The catalogue's name: `NU`, `NJ`, `NUP`, `N`.
+    pub fn name(&self) -> &'static str {
+        match self {
+            RibArrangement::Nu => "NU",
+            RibArrangement::Nj => "NJ",
+            RibArrangement::Nup => "NUP",
+            RibArrangement::N => "N",
+        }
+    }
+
+    /// The ribs: (on the inner ring, at the +z (1) or the −z (−1) end).
+    fn ribs(&self) -> Vec<(bool, f64)> {
+        let outer = [(false, 1.0), (false, -1.0)];
+        let inner = [(true, 1.0), (true, -1.0)];
+        match self {
+            RibArrangement::Nu => outer.to_vec(),
+            RibArrangement::Nj => vec![outer[0], outer[1], inner[1]],
+            RibArrangement::Nup => [outer, inner].concat(),
+            RibArrangement::N => inner.to_vec(),
+        }
+    }
+
+    /// Whether the ribs carry an axial load on the inner ring toward +z and toward −z: +z
+    /// needs an inner ring rib at the −z end and an outer ring rib at the +z end.
+    pub fn axial_directions(&self) -> (bool, bool) {
+        match self {
+            RibArrangement::Nu | RibArrangement::N => (false, false),
+            RibArrangement::Nj => (true, false),
+            RibArrangement::Nup => (true, true),
+        }
+    }
+}
+
+/// The roller end faces and the rib faces of a cylindrical roller bearing, the same at
+/// every rib: a spherical end face of radius r_R centred on the roller axis, touching a rib
+/// whose face is straight in the axial plane at the height h from the roller axis (toward
+/// the rib's ring); the rib's normal there leans by `asin(h/r_R)` from the roller axis.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub struct CylindricalRibs {
+    /// The end face's sphere radius r_R, mm (>= L_we/2).
+    pub face_radius_mm: f64,
+    /// The contact height h above (toward the ring) the roller axis, mm (0 < h < D_we/2).
+    pub contact_height_mm: f64,
+}
+
 /// One roller of the rib-contact model at the solution.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -89,18 +153,20 @@ pub struct RibRollerLoad {
     pub outer_n: f64,
     /// Cone (inner raceway) load, the sum of the cone slices, N.
     pub inner_n: f64,
-    /// Rib load Q_f, N.
+    /// Rib load Q_f on the inner ring's rib(s) (the cone's rib of a tapered roller), N.
     pub rib_n: f64,
+    /// Load on the outer ring's rib(s), N (cylindrical NU/NJ/NUP bearings; 0 otherwise).
+    pub outer_rib_n: f64,
     /// The roller's tilt φ in its axial plane, rad (positive: the small end toward the
     /// bearing axis).
     pub tilt_rad: f64,
     /// The roller's translation `(a, b)` along the cup normal and the cup line, mm.
     pub translation_mm: [f64; 2],
-    /// Maximum Hertz pressure of the rib contact, MPa (0 without rib load).
+    /// The largest Hertz pressure of the roller's rib contacts, MPa (0 without rib load).
     pub rib_max_pressure_mpa: f64,
     /// The skew moment about the cup normal, N·mm: 0 in this frictionless model.
     pub skew_moment_nmm: f64,
-    /// The rib contact's approach, mm (negative: open).
+    /// The largest approach of the roller's rib contacts, mm (negative: open).
     pub rib_approach_mm: f64,
     /// The largest cup slice approach plus the largest cone slice approach, mm (negative:
     /// lifted off by that much in total).
@@ -109,13 +175,43 @@ pub struct RibRollerLoad {
     pub iterations: usize,
 }
 
-/// Per roller: the cone slices' `g = g0 + x g1` and the rib's `g_f`.
+/// Most rib contacts of a roller: an NUP roller touches the inner and the outer ring's
+/// ribs at both ends.
+const MAX_RIBS: usize = 4;
+
+/// Per roller: the cone slices' `g = g0 + x g1` and each rib's `g_f` (zero for a rib of
+/// the fixed outer ring).
 #[derive(Debug, Clone, Copy)]
 struct Frame {
     psi: f64,
     g0: Vector5<f64>,
     g1: Vector5<f64>,
-    gf: Vector5<f64>,
+    gf: [Vector5<f64>; MAX_RIBS],
+}
+
+/// One roller end/rib contact, the same on every roller, in the roller's axial plane.
+#[derive(Debug, Clone)]
+struct Rib {
+    /// On the inner ring (it moves with u) or the outer ring (fixed).
+    inner: bool,
+    /// Normal, rib into roller.
+    n: Vector2<f64>,
+    /// Contact point from the roller centre O, mm.
+    s: Vector2<f64>,
+    /// `∂δ/∂ρ`.
+    d: Vector3<f64>,
+    /// Hertz contact, its load coefficient (N/mm^1.5) and p0 at 1 N (MPa).
+    hertz: HertzPointContact,
+    k: f64,
+    p0: f64,
+}
+
+/// The ring approaches of one roller: the cone slices' `G0 + x G1` and each rib's.
+#[derive(Debug, Clone, Copy)]
+struct RingApproach {
+    g0: f64,
+    g1: f64,
+    gf: [f64; MAX_RIBS],
 }
 
 /// One evaluation of a roller at its position ρ.
@@ -131,11 +227,18 @@ struct RollerEval {
     s0: f64,
     s1: f64,
     s2: f64,
-    qf: f64,
-    kf: f64,
-    df: f64,
+    qf: [f64; MAX_RIBS],
+    kf: [f64; MAX_RIBS],
+    df: [f64; MAX_RIBS],
     max_o: f64,
     max_i: f64,
+}
+
+impl RollerEval {
+    /// Every contact's load together (0: the roller touches nothing).
+    fn total(&self) -> f64 {
+        self.qo + self.qi0 + self.qf.iter().sum::<f64>()
+    }
 }
 
 const EXP: f64 = 10.0 / 9.0;
@@ -145,7 +248,12 @@ const EXP: f64 = 10.0 / 9.0;
 #[derive(Debug, Clone)]
 pub struct RibContactSolver {
     iso: RollerBearingSolver,
-    pair: RollerRib,
+    pair: Option<RollerRib>,
+    ribs: Vec<Rib>,
+    /// Directions the bearing has stiffness in (a CRB's z through its ribs).
+    stiff: [bool; 5],
+    /// Cylindrical only: the rib arrangement.
+    arrangement: Option<RibArrangement>,
     frames: Vec<Frame>,
     x: Vec<f64>,
     /// Moment arm offset `(D/2) sin β_r`, mm: `x̃ = x − arm0`.
@@ -154,24 +262,17 @@ pub struct RibContactSolver {
     e_i: Vec<f64>,
     /// Per-contact slice constant `2^(10/9) c_s`, N/mm^(10/9).
     c: f64,
-    /// The rib's Hertz contact (steel on steel).
-    hertz: HertzPointContact,
-    /// Hertz load coefficient of the rib contact, N/mm^1.5.
-    k_rib: f64,
-    p0_unit: f64,
     /// cos γ, sin γ.
     cg: f64,
     sg: f64,
-    /// `∂δ_f/∂ρ`.
-    d_f: Vector3<f64>,
-    /// 2-D unit vectors and the rib point (from O) in the roller's axial plane.
+    /// 2-D unit vectors in the roller's axial plane.
     n_o: Vector2<f64>,
     n_i: Vector2<f64>,
     t_o: Vector2<f64>,
     t_i: Vector2<f64>,
-    n_f: Vector2<f64>,
-    s_f: Vector2<f64>,
     rho: Vec<Vector3<f64>>,
+    /// Each roller's rib loads of the last evaluation, N, `[j * MAX_RIBS + r]`.
+    rib_load: Vec<f64>,
     cup_load: Vec<f64>,
     cone_load: Vec<f64>,
     series_approach: Vec<f64>,
@@ -189,6 +290,40 @@ pub struct RibContactSolver {
     pub tolerance: f64,
     /// Iteration limit of the ring (default 100).
     pub max_iterations: usize,
+}
+
+/// A rib of the contact normal `n` (rib into roller) at `s` (from the roller centre) on
+/// the inner or the outer ring of a bearing with the cup angle `cup_angle` (rad).
+fn make_rib(
+    cup_angle: f64,
+    inner: bool,
+    n: Vector2<f64>,
+    s: Vector2<f64>,
+    hertz: HertzPointContact,
+) -> Rib {
+    let n_o = unit(cup_angle);
+    let t_o = Vector2::new(-cup_angle.sin(), cup_angle.cos());
+    Rib {
+        inner,
+        n,
+        s,
+        d: -Vector3::new(n_o.dot(&n), t_o.dot(&n), cross(&s, &n)),
+        k: hertz.load_coefficient(),
+        p0: hertz.max_pressure_at_unit_force(),
+        hertz,
+    }
+}
+
+/// At least 3 slices: a roller's tilt is balanced by its slices.
+fn check_slices(bearing: &RollerBearing) -> Result<()> {
+    if bearing.slices < 3 {
+        return Err(Error::invalid(
+            "slices",
+            bearing.slices,
+            "at least 3 slices for the rib-contact roller model (the roller's tilt is balanced by its slices)",
+        ));
+    }
+    Ok(())
 }
 
 /// The 2-D vector `(cos a, sin a)`.
@@ -225,23 +360,13 @@ impl RibContactSolver {
             return Err(Error::invalid(
                 "kind",
                 format!("{:?}", bearing.kind).to_lowercase(),
-                "a tapered roller bearing (the rib-contact roller model is for tapered rollers; cylindrical NJ/NUP rib arrangements are not modelled yet)",
+                "a tapered roller bearing (cylindrical ones: RibContactSolver::cylindrical with their rib arrangement)",
             ));
         }
-        if bearing.slices < 3 {
-            return Err(Error::invalid(
-                "slices",
-                bearing.slices,
-                "at least 3 slices for the rib-contact roller model (the roller's tilt is balanced by its slices)",
-            ));
-        }
+        check_slices(&bearing)?;
         let (a, ai) = (bearing.contact_angle_rad, bearing.cone_angle_rad);
-        let gamma = a - ai;
-        let beta_r = 0.5 * gamma;
-        let am = 0.5 * (a + ai);
-        let d = bearing.roller_diameter_mm;
+        let beta_r = 0.5 * (a - ai);
         let l = bearing.effective_length_mm;
-        let r = 0.5 * bearing.pitch_diameter_mm;
         let pair = rib_pair(&bearing, &rib)?;
         // roller_rib's section plane (X radial, Z toward the large end) is (r, −z) here
         let nf3 = pair.contact.normal.into_inner();
@@ -259,35 +384,135 @@ impl RibContactSolver {
                 "rib_angle_rad",
                 given,
                 format!(
-                    "the rib normal of the roller end/rib pair, {built:.12} rad ({:.9} deg), or none: with the rib contact the face and the contact height set it",
+                    "the rib normal of the roller end/rib pair, {built:.12} rad = {:.9} deg, or none: with the rib contact the face and the contact height set it",
                     built.to_degrees()
                 ),
             ));
         }
-        let n_o = unit(a);
-        let n_i = unit(ai);
-        let t_o = Vector2::new(-a.sin(), a.cos());
-        let t_i = Vector2::new(-ai.sin(), ai.cos());
-        let d_f = -Vector3::new(n_o.dot(&n_f), t_o.dot(&n_f), cross(&s_f, &n_f));
         let steel = ElasticMaterial::STEEL;
         let gap = pair.gap()?;
         let hertz =
             HertzPointContact::new(PointGeometry::from_curvature(gap.curvature()), steel, steel)?;
+        let ribs = vec![make_rib(a, true, n_f, s_f, hertz)];
+        let stiff = *RollerBearingSolver::new(bearing.clone())?.stiff();
+        Self::build(bearing, ribs, Some(pair), None, stiff)
+    }
+
+    /// Set up the solver of the cylindrical roller bearing `bearing` with the ribs of
+    /// `arrangement` (NU: outer ring ribs at both ends, NJ: and an inner ring rib at the
+    /// −z end, NUP: inner ring ribs at both ends too, N: inner ring ribs at both ends only)
+    /// and the roller end faces and rib faces `ribs` (the same at every rib).
+    ///
+    /// # Errors
+    /// As [`RollerBearing::validate`]; `kind` unless cylindrical; `slices` below 3;
+    /// `ribs.face_radius_mm`, `ribs.contact_height_mm` out of range (0 < h < D/2,
+    /// h < r_R, r_R >= L/2 ... see [`CylindricalRibs`]).
+    pub fn cylindrical(
+        bearing: RollerBearing,
+        arrangement: RibArrangement,
+        ribs: CylindricalRibs,
+    ) -> Result<Self> {
+        bearing.validate()?;
+        if bearing.kind != RollerBearingKind::Cylindrical {
+            return Err(Error::invalid(
+                "kind",
+                format!("{:?}", bearing.kind).to_lowercase(),
+                "a cylindrical roller bearing (tapered ones: RibContactSolver::new)",
+            ));
+        }
+        check_slices(&bearing)?;
+        let (d, l) = (bearing.roller_diameter_mm, bearing.effective_length_mm);
+        let rr = ribs.face_radius_mm;
+        let h = ribs.contact_height_mm;
+        if !(rr.is_finite() && rr >= 0.5 * l) {
+            return Err(Error::invalid(
+                "ribs.face_radius_mm",
+                rr,
+                format!(
+                    "a finite radius >= half the roller length, {} mm (the face's sphere centred on the roller axis)",
+                    0.5 * l
+                ),
+            ));
+        }
+        if !(h.is_finite() && h > 0.0 && h < 0.5 * d && h < rr) {
+            return Err(Error::invalid(
+                "ribs.contact_height_mm",
+                h,
+                format!(
+                    "0 < h < half the roller diameter, {} mm (and < face_radius_mm)",
+                    0.5 * d
+                ),
+            ));
+        }
+        let lean = (h / rr).asin();
+        let (sl, cl) = lean.sin_cos();
+        let r = 0.5 * bearing.pitch_diameter_mm;
+        let steel = ElasticMaterial::STEEL;
+        let mut list = Vec::new();
+        // (inner ring?, end: +1 the +z end, −1 the −z end)
+        for (inner, end) in arrangement.ribs() {
+            let side = if inner { -1.0 } else { 1.0 };
+            // the face's normal out of the roller leans by asin(h/r_R) toward the ring
+            let m = Vector2::new(side * sl, end * cl);
+            let centre = Vector2::new(0.0, end * (0.5 * l - rr));
+            let s_f = centre + m * rr;
+            let n_f = -m;
+            // the rib: straight in the axial plane, its parallel circle of radius R ± h
+            // curved by sin(lean)/(R ± h) about the normal (Meusnier): convex on the inner
+            // ring, concave on the outer
+            let rc = r + side * h;
+            let rib_radius = if sl > 0.0 {
+                -side * rc / sl
+            } else {
+                f64::INFINITY
+            };
+            let geometry = PointGeometry::new([rr, rr], [f64::INFINITY, rib_radius], 0.0)
+                .map_err(|e| e.map_field(|_| "ribs.contact_height_mm".to_string()))?;
+            let hertz = HertzPointContact::new(geometry, steel, steel)?;
+            list.push(make_rib(0.0, inner, n_f, s_f, hertz));
+        }
+        let mut stiff = *RollerBearingSolver::new(bearing.clone())?.stiff();
+        stiff[2] = arrangement.axial_directions() != (false, false);
+        Self::build(bearing, list, None, Some(arrangement), stiff)
+    }
+
+    fn build(
+        bearing: RollerBearing,
+        ribs: Vec<Rib>,
+        pair: Option<RollerRib>,
+        arrangement: Option<RibArrangement>,
+        stiff: [bool; 5],
+    ) -> Result<Self> {
+        let (a, ai) = (bearing.contact_angle_rad, bearing.cone_angle_rad);
+        let gamma = a - ai;
+        let beta_r = 0.5 * gamma;
+        let am = 0.5 * (a + ai);
+        let d = bearing.roller_diameter_mm;
+        let r = 0.5 * bearing.pitch_diameter_mm;
+        let n_o = unit(a);
+        let n_i = unit(ai);
+        let t_o = Vector2::new(-a.sin(), a.cos());
+        let t_i = Vector2::new(-ai.sin(), ai.cos());
         let z = bearing.rollers;
         let arm0 = 0.5 * d * beta_r.sin();
         // the cone line's midpoint O − (D/2) n_m, n_m the roller's normal
         let o = Vector2::new(r, 0.0);
         let p_i = o - unit(am) * (0.5 * d);
-        let p_f = o + s_f;
         let frames: Vec<Frame> = (0..z)
             .map(|j| {
                 let psi = bearing.first_roller_azimuth_rad + 2.0 * PI * j as f64 / z as f64;
                 let (s, c) = psi.sin_cos();
+                let mut gf = [Vector5::zeros(); MAX_RIBS];
+                for (g, rib) in gf.iter_mut().zip(&ribs) {
+                    if rib.inner {
+                        *g = ring_vector(psi, &(o + rib.s), &rib.n);
+                    }
+                }
                 Frame {
                     psi,
                     g0: ring_vector(psi, &p_i, &n_i),
                     g1: Vector5::new(0.0, 0.0, 0.0, -s, c),
-                    gf: ring_vector(psi, &p_f, &n_f),
+                    gf,
                 }
             })
             .collect();
@@ -308,30 +533,32 @@ impl RibContactSolver {
                 let g = f.g0 + f.g1 * xk;
                 probe += g * g.transpose();
             }
+            // the ribs carry a cylindrical bearing's axial load
+            for g in &f.gf {
+                probe += g * g.transpose() * (x.len() as f64);
+            }
         }
         let n = z * bearing.slices;
         let iso = RollerBearingSolver::new(bearing)?;
         Ok(RibContactSolver {
             iso,
             pair,
+            ribs,
+            stiff,
+            arrangement,
             frames,
             arm0,
             e_o,
             e_i,
             c: c_s * 2f64.powf(EXP),
-            k_rib: hertz.load_coefficient(),
-            p0_unit: hertz.max_pressure_at_unit_force(),
-            hertz,
             cg: gamma.cos(),
             sg: gamma.sin(),
-            d_f,
             n_o,
             n_i,
             t_o,
             t_i,
-            n_f,
-            s_f,
             rho: vec![Vector3::zeros(); z],
+            rib_load: vec![0.0; z * MAX_RIBS],
             cup_load: vec![0.0; n],
             cone_load: vec![0.0; n],
             series_approach: vec![0.0; n],
@@ -352,33 +579,41 @@ impl RibContactSolver {
         self.iso.bearing()
     }
 
-    /// The roller end/rib pair as built by `kontakt::bearing::RollerRib` (the contact point,
-    /// its normal, the surfaces).
-    pub fn rib_pair(&self) -> &RollerRib {
-        &self.pair
+    /// The roller end/rib pair of a tapered bearing as built by `kontakt::bearing::RollerRib`
+    /// (the contact point, its normal, the surfaces); `None` for a cylindrical bearing.
+    pub fn rib_pair(&self) -> Option<&RollerRib> {
+        self.pair.as_ref()
     }
 
-    /// The rib normal's direction (rib into roller) in the roller's axial plane, measured
-    /// like the contact angles, rad.
+    /// The rib arrangement of a cylindrical bearing (`None`: tapered).
+    pub fn arrangement(&self) -> Option<RibArrangement> {
+        self.arrangement
+    }
+
+    /// The first rib's normal direction (rib into roller) in the roller's axial plane,
+    /// measured like the contact angles, rad (a tapered bearing's only rib, on the cone).
     pub fn rib_normal_angle(&self) -> f64 {
-        self.n_f.y.atan2(self.n_f.x)
+        self.ribs.first().map_or(f64::NAN, |r| r.n.y.atan2(r.n.x))
     }
 
-    /// The rib contact point from the roller centre in the axial plane `(r, z)`, mm.
-    pub fn rib_point(&self) -> [f64; 2] {
-        [self.s_f.x, self.s_f.y]
+    /// Every rib contact: on the inner ring or not, its point from the roller centre and
+    /// its normal (rib into roller) in the axial plane `(r, z)`, mm.
+    pub fn rib_contacts(&self) -> impl Iterator<Item = (bool, [f64; 2], [f64; 2])> + '_ {
+        self.ribs
+            .iter()
+            .map(|r| (r.inner, [r.s.x, r.s.y], [r.n.x, r.n.y]))
     }
 
-    /// The rib's Hertz contact (face and rib curvatures at the contact point, steel on
-    /// steel), before `rib_stiffness_factor`.
+    /// The first rib's Hertz contact (face and rib curvatures at the contact point, steel
+    /// on steel), before `rib_stiffness_factor`; every rib of a bearing is alike.
     pub fn rib_hertz(&self) -> &HertzPointContact {
-        &self.hertz
+        &self.ribs[0].hertz
     }
 
     /// The Hertz load coefficient of the rib contact (before `rib_stiffness_factor`),
     /// `Q = K_f δ^(3/2)`, N/mm^1.5.
     pub fn rib_load_coefficient(&self) -> f64 {
-        self.k_rib
+        self.ribs[0].k
     }
 
     /// The centrifugal force on every roller, N (default 0).
@@ -448,27 +683,30 @@ impl RibContactSolver {
             f += fo + fi;
             m += cross(&po, &fo) + cross(&pi, &fi);
         }
-        let ff = self.n_f * self.rollers[j].rib_n;
-        f += ff + Vector2::new(self.centrifugal_n, 0.0);
-        m += cross(&self.s_f, &ff);
+        for (r, rib) in self.ribs.iter().enumerate() {
+            let ff = rib.n * self.rib_load[j * MAX_RIBS + r];
+            f += ff;
+            m += cross(&rib.s, &ff);
+        }
+        f += Vector2::new(self.centrifugal_n, 0.0);
         [f.x, f.y, m]
     }
 
-    /// Evaluate roller j at ρ with the ring approaches `(G0, G1, G_f)`; fills its slice
+    /// Evaluate roller j at ρ with the ring approaches `gi`; fills its slice and rib
     /// buffers.
-    fn eval_roller(&mut self, j: usize, rho: &Vector3<f64>, gi: (f64, f64, f64)) -> RollerEval {
+    fn eval_roller(&mut self, j: usize, rho: &Vector3<f64>, gi: &RingApproach) -> RollerEval {
         let ns = self.x.len();
         let (a, b, phi) = (rho[0], rho[1], rho[2]);
         let mut e = RollerEval::default();
         let (mut h00, mut h02, mut h22) = (0.0, 0.0, 0.0);
         let (mut max_o, mut max_i) = (f64::NEG_INFINITY, f64::NEG_INFINITY);
-        let base_i = gi.0 - a * self.cg + b * self.sg;
+        let base_i = gi.g0 - a * self.cg + b * self.sg;
         let c = self.c;
         for k in 0..ns {
             let xk = self.x[k];
             let xt = xk - self.arm0;
             let d_o = a - phi * xt - self.e_o[k];
-            let d_i = base_i + gi.1 * xk + phi * xt - self.e_i[k];
+            let d_i = base_i + gi.g1 * xk + phi * xt - self.e_i[k];
             max_o = max_o.max(d_o);
             max_i = max_i.max(d_i);
             self.series_approach[j * ns + k] = d_o + d_i;
@@ -518,16 +756,22 @@ impl RibContactSolver {
             sg * k1,
             h22 + k2,
         );
-        // rib
-        e.df = gi.2 + self.d_f.dot(rho);
-        if e.df > 0.0 {
-            let kf = self.k_rib * self.rib_stiffness_factor;
-            let sq = e.df.sqrt();
-            e.qf = kf * e.df * sq;
-            e.kf = 1.5 * kf * sq;
-            e.pi += 0.4 * e.qf * e.df;
-            e.grad += self.d_f * e.qf;
-            h += self.d_f * self.d_f.transpose() * e.kf;
+        // ribs: Hertz, δ = g_f·u + d·ρ
+        for (r, rib) in self.ribs.iter().enumerate() {
+            let df = gi.gf[r] + rib.d.dot(rho);
+            e.df[r] = df;
+            let mut qf = 0.0;
+            if df > 0.0 {
+                let kf = rib.k * self.rib_stiffness_factor;
+                let sq = df.sqrt();
+                qf = kf * df * sq;
+                e.qf[r] = qf;
+                e.kf[r] = 1.5 * kf * sq;
+                e.pi += 0.4 * qf * df;
+                e.grad += rib.d * qf;
+                h += rib.d * rib.d.transpose() * e.kf[r];
+            }
+            self.rib_load[j * MAX_RIBS + r] = qf;
         }
         // centrifugal force along +e_r: its work F_c (a cos α − b sin α)
         let fc = self.centrifugal_n;
@@ -550,20 +794,30 @@ impl RibContactSolver {
         e
     }
 
-    /// The position where a roller without contact floats: no tilt, its cup, cone and rib
-    /// gaps (at the slice midpoints) equal.
-    fn floating(&self, gi: (f64, f64, f64)) -> Vector3<f64> {
+    /// The position where a roller without contact floats: no tilt, its cup and cone gaps
+    /// at the slice midpoints equal, and along the cup line the mean of the positions
+    /// where each rib's gap equals them (0 without ribs).
+    fn floating(&self, gi: &RingApproach) -> Vector3<f64> {
         let mid = self.x.len() / 2;
         let (eo, ei) = (self.e_o[mid], self.e_i[mid]);
-        // a − eo = G_i − a cγ + b sγ − ei,  a − eo = G_f + d_f0 a + d_f1 b
-        let (m00, m01, r0) = (1.0 + self.cg, -self.sg, gi.0 + gi.1 * self.x[mid] - ei + eo);
-        let (m10, m11, r1) = (1.0 - self.d_f[0], -self.d_f[1], gi.2 + eo);
-        let det = m00 * m11 - m01 * m10;
-        Vector3::new(
-            (r0 * m11 - m01 * r1) / det,
-            (m00 * r1 - m10 * r0) / det,
-            0.0,
-        )
+        // cup = cone: a − eo = G_i − a cγ + b sγ − ei;  rib r: a − eo = G_f + d0 a + d1 b
+        let (m00, m01, r0) = (
+            1.0 + self.cg,
+            -self.sg,
+            gi.g0 + gi.g1 * self.x[mid] - ei + eo,
+        );
+        let mut ab = Vector2::zeros();
+        let ribs = self.ribs.len().max(1);
+        for r in 0..ribs {
+            let (m10, m11, r1) = match self.ribs.get(r) {
+                Some(rib) if rib.d[1].abs() > 1e-12 => (1.0 - rib.d[0], -rib.d[1], gi.gf[r] + eo),
+                _ => (0.0, 1.0, 0.0),
+            };
+            let det = m00 * m11 - m01 * m10;
+            ab += Vector2::new((r0 * m11 - m01 * r1) / det, (m00 * r1 - m10 * r0) / det);
+        }
+        ab /= ribs as f64;
+        Vector3::new(ab.x, ab.y, 0.0)
     }
 
     /// A roller's `K_ρρ` with 1e-12 of its largest contact stiffness added on the diagonal
@@ -583,7 +837,7 @@ impl RibContactSolver {
     }
 
     /// Solve roller j's balance for the ring approaches `gi`, from its stored position.
-    fn solve_roller(&mut self, j: usize, gi: (f64, f64, f64)) -> (RollerEval, usize) {
+    fn solve_roller(&mut self, j: usize, gi: &RingApproach) -> (RollerEval, usize) {
         let l = self.bearing().effective_length_mm;
         let mut rho = self.rho[j];
         if self.hold_roller_tilt {
@@ -592,29 +846,28 @@ impl RibContactSolver {
         let mut e = self.eval_roller(j, &rho, gi);
         // without the cone and the rib (and without centrifugal force) nothing can hold
         // the roller on the cup: it floats where it touches nothing, if it can
-        if self.centrifugal_n == 0.0 && e.qi0 == 0.0 && e.qf == 0.0 && e.qo > 0.0 {
+        let ribs: f64 = e.qf.iter().sum();
+        if self.centrifugal_n == 0.0 && e.qi0 == 0.0 && ribs == 0.0 && e.qo > 0.0 {
             let float = self.floating(gi);
             let ef = self.eval_roller(j, &float, gi);
-            if ef.qo + ef.qi0 + ef.qf == 0.0 {
+            if ef.total() == 0.0 {
                 self.rho[j] = float;
                 return (ef, 0);
             }
             e = self.eval_roller(j, &rho, gi);
         }
-        if e.qo + e.qi0 + e.qf == 0.0 {
+        if e.total() == 0.0 {
             // no contact at the stored position: start from (or stay at) the float
             let float = self.floating(gi);
             let ef = self.eval_roller(j, &float, gi);
             rho = float;
             e = ef;
-            if self.centrifugal_n == 0.0 && e.qo + e.qi0 + e.qf == 0.0 {
+            if self.centrifugal_n == 0.0 && e.total() == 0.0 {
                 self.rho[j] = rho;
                 return (e, 0);
             }
         }
-        let scale = self
-            .roller_scale
-            .max(e.qo + e.qi0 + e.qf + self.centrifugal_n);
+        let scale = self.roller_scale.max(e.total() + self.centrifugal_n);
         let tol = 1e-13 * scale;
         let mut iterations = 0;
         for _ in 0..100 {
@@ -660,27 +913,52 @@ impl RibContactSolver {
         let (cg, sg, a0) = (self.cg, self.sg, self.arm0);
         for j in 0..self.frames.len() {
             let fr = self.frames[j];
-            let gi = (fr.g0.dot(u), fr.g1.dot(u), fr.gf.dot(u));
-            let (e, iterations) = self.solve_roller(j, gi);
+            let mut gf = [0.0; MAX_RIBS];
+            for (g, v) in gf.iter_mut().zip(&fr.gf) {
+                *g = v.dot(u);
+            }
+            let gi = RingApproach {
+                g0: fr.g0.dot(u),
+                g1: fr.g1.dot(u),
+                gf,
+            };
+            let (e, iterations) = self.solve_roller(j, &gi);
             phi += e.pi;
-            f += fr.g0 * e.qi0 + fr.g1 * e.qi1 + fr.gf * e.qf;
+            f += fr.g0 * e.qi0 + fr.g1 * e.qi1;
             let g0g1 = fr.g0 * fr.g1.transpose();
             let mut kuu = fr.g0 * fr.g0.transpose() * e.s0
                 + (g0g1 + g0g1.transpose()) * e.s1
                 + fr.g1 * fr.g1.transpose() * e.s2;
-            // K_uρ = Σ k g dᵀ, d_i = (−cos γ, sin γ, x − arm0); the rib k_f g_f d_fᵀ
+            // K_uρ = Σ k g dᵀ, d_i = (−cos γ, sin γ, x − arm0); each rib's k_f g_f d_fᵀ
             let mut kur = Matrix5x3::zeros();
             let tilt = if self.hold_roller_tilt { 0.0 } else { 1.0 };
             let r0 = Vector3::new(-cg * e.s0, sg * e.s0, tilt * (e.s1 - a0 * e.s0));
             let r1 = Vector3::new(-cg * e.s1, sg * e.s1, tilt * (e.s2 - a0 * e.s1));
             kur += fr.g0 * r0.transpose() + fr.g1 * r1.transpose();
-            if e.kf > 0.0 {
-                kuu += fr.gf * fr.gf.transpose() * e.kf;
-                let mut df = self.d_f;
-                df[2] *= tilt;
-                kur += fr.gf * df.transpose() * e.kf;
+            let (mut inner_rib, mut outer_rib, mut p_rib) = (0.0, 0.0, 0.0_f64);
+            let mut rib_approach = f64::NEG_INFINITY;
+            let mut rib_stiff = 0.0;
+            for (r, rib) in self.ribs.iter().enumerate() {
+                let (q, k) = (e.qf[r], e.kf[r]);
+                rib_approach = rib_approach.max(e.df[r]);
+                if rib.inner {
+                    inner_rib += q;
+                    f += fr.gf[r] * q;
+                } else {
+                    outer_rib += q;
+                }
+                if q > 0.0 {
+                    p_rib = p_rib.max(rib.p0 * q.cbrt());
+                }
+                if k > 0.0 && rib.inner {
+                    rib_stiff += k;
+                    kuu += fr.gf[r] * fr.gf[r].transpose() * k;
+                    let mut d = rib.d;
+                    d[2] *= tilt;
+                    kur += fr.gf[r] * d.transpose() * k;
+                }
             }
-            if e.s0 + e.kf > 0.0 {
+            if e.s0 + rib_stiff > 0.0 {
                 // static condensation; a roller with contacts has a positive definite K_ρρ
                 // up to directions without stiffness, which the regularisation covers
                 if let Some(ch) = self.regularised(&e.hess).0.cholesky() {
@@ -694,16 +972,13 @@ impl RibContactSolver {
                 azimuth_rad: fr.psi,
                 outer_n: e.qo,
                 inner_n: e.qi0,
-                rib_n: e.qf,
+                rib_n: inner_rib,
+                outer_rib_n: outer_rib,
                 tilt_rad: rho[2],
                 translation_mm: [rho[0], rho[1]],
-                rib_max_pressure_mpa: if e.qf > 0.0 {
-                    self.p0_unit * e.qf.cbrt()
-                } else {
-                    0.0
-                },
+                rib_max_pressure_mpa: p_rib,
                 skew_moment_nmm: 0.0,
-                rib_approach_mm: e.df,
+                rib_approach_mm: rib_approach,
                 max_approach_mm: e.max_o + e.max_i,
                 iterations,
             };
@@ -732,8 +1007,13 @@ impl RibContactSolver {
     /// # Errors
     /// As [`RollerBearingSolver::solve`].
     pub fn solve(&mut self, load: &RingLoad) -> Result<RollerSolution> {
-        self.iso.check_load(load)?;
-        let start = self.iso.start(load);
+        let radial = self.check_load(load)?;
+        let mut start = self.iso.start(&radial);
+        if let (Some(_), Dof::Force(fz)) = (self.arrangement, load.dofs[2]) {
+            // a cylindrical bearing's axial load on its ribs: both ribs of a roller in series
+            let z = self.bearing().rollers as f64;
+            start[2] = 2.0 * (fz.abs() / (z * self.ribs[0].k)).powf(2.0 / 3.0) * fz.signum();
+        }
         for r in &mut self.rho {
             *r = Vector3::zeros();
         }
@@ -746,16 +1026,46 @@ impl RibContactSolver {
     /// # Errors
     /// As [`RollerBearingSolver::solve_from`].
     pub fn solve_from(&mut self, load: &RingLoad, start: [f64; 5]) -> Result<RollerSolution> {
-        self.iso.check_load(load)?;
-        let u = warm_start(load, start, self.iso.stiff())?;
+        self.check_load(load)?;
+        let u = warm_start(load, start, &self.stiff)?;
         Ok(self.iterate(load, u))
+    }
+
+    /// The ISO model's checks of the load; for a cylindrical bearing its axial force is
+    /// checked against the rib arrangement first and left out of the ISO check (returned
+    /// load).
+    fn check_load(&self, load: &RingLoad) -> Result<RingLoad> {
+        let mut radial = *load;
+        if let Some(arrangement) = self.arrangement {
+            crate::equilibrium::check_finite(load)?;
+            if let Dof::Force(fz) = load.dofs[2]
+                && fz != 0.0
+            {
+                let (plus, minus) = arrangement.axial_directions();
+                if !(if fz > 0.0 { plus } else { minus }) {
+                    let name = arrangement.name();
+                    let why = match arrangement {
+                        RibArrangement::Nj => format!(
+                            "a load >= 0 N: an {name} cylindrical roller bearing carries axial load in +z only (its one inner ring rib is at the −z end; NUP carries both ways)"
+                        ),
+                        _ => format!(
+                            "0: an {name} cylindrical roller bearing carries no axial load (its ribs are on one ring only; NJ or NUP carry it)"
+                        ),
+                    };
+                    return Err(Error::invalid("load.fz_n", fz, why));
+                }
+                radial.dofs[2] = Dof::Force(0.0);
+            }
+        }
+        self.iso.check_load(&radial)?;
+        Ok(radial)
     }
 
     fn iterate(&mut self, load: &RingLoad, u: Vector5<f64>) -> RollerSolution {
         let b = self.iso.bearing();
         let z = b.rollers as f64;
         let r = 0.5 * b.pitch_diameter_mm;
-        let (free, target) = free_and_target(load, self.iso.stiff());
+        let (free, target) = free_and_target(load, &self.stiff);
         let mut f_ref = load_scale(&target, r);
         if b.clearance_mm < 0.0 {
             f_ref = f_ref.max(z * b.roller_stiffness() * (-0.5 * b.clearance_mm).powf(EXP));
