@@ -141,6 +141,10 @@ pub struct CylindricalRibs {
     pub face_radius_mm: f64,
     /// The contact height h above (toward the ring) the roller axis, mm (0 < h < D_we/2).
     pub contact_height_mm: f64,
+    /// The roller's axial end play between the two ribs of one ring, mm (>= 0; half of it
+    /// on each side with the roller centred): with none, a radially loaded roller would
+    /// wedge between the leaning ribs.
+    pub end_play_mm: f64,
 }
 
 /// One roller of the rib-contact model at the solution.
@@ -200,6 +204,8 @@ struct Rib {
     s: Vector2<f64>,
     /// `∂δ/∂ρ`.
     d: Vector3<f64>,
+    /// The gap at zero motion, mm (a cylindrical roller's end play, half per rib).
+    gap: f64,
     /// Hertz contact, its load coefficient (N/mm^1.5) and p0 at 1 N (MPa).
     hertz: HertzPointContact,
     k: f64,
@@ -308,6 +314,7 @@ fn make_rib(
         n,
         s,
         d: -Vector3::new(n_o.dot(&n), t_o.dot(&n), cross(&s, &n)),
+        gap: 0.0,
         k: hertz.load_coefficient(),
         p0: hertz.max_pressure_at_unit_force(),
         hertz,
@@ -444,6 +451,14 @@ impl RibContactSolver {
                 ),
             ));
         }
+        let play = ribs.end_play_mm;
+        if !(play.is_finite() && play >= 0.0 && play < l) {
+            return Err(Error::invalid(
+                "ribs.end_play_mm",
+                play,
+                format!("a finite play, 0 <= play < the roller length {l} mm"),
+            ));
+        }
         let lean = (h / rr).asin();
         let (sl, cl) = lean.sin_cos();
         let r = 0.5 * bearing.pitch_diameter_mm;
@@ -469,7 +484,9 @@ impl RibContactSolver {
             let geometry = PointGeometry::new([rr, rr], [f64::INFINITY, rib_radius], 0.0)
                 .map_err(|e| e.map_field(|_| "ribs.contact_height_mm".to_string()))?;
             let hertz = HertzPointContact::new(geometry, steel, steel)?;
-            list.push(make_rib(0.0, inner, n_f, s_f, hertz));
+            let mut rib = make_rib(0.0, inner, n_f, s_f, hertz);
+            rib.gap = 0.5 * ribs.end_play_mm;
+            list.push(rib);
         }
         let mut stiff = *RollerBearingSolver::new(bearing.clone())?.stiff();
         stiff[2] = arrangement.axial_directions() != (false, false);
@@ -758,7 +775,7 @@ impl RibContactSolver {
         );
         // ribs: Hertz, δ = g_f·u + d·ρ
         for (r, rib) in self.ribs.iter().enumerate() {
-            let df = gi.gf[r] + rib.d.dot(rho);
+            let df = gi.gf[r] + rib.d.dot(rho) - rib.gap;
             e.df[r] = df;
             let mut qf = 0.0;
             if df > 0.0 {
@@ -810,7 +827,9 @@ impl RibContactSolver {
         let ribs = self.ribs.len().max(1);
         for r in 0..ribs {
             let (m10, m11, r1) = match self.ribs.get(r) {
-                Some(rib) if rib.d[1].abs() > 1e-12 => (1.0 - rib.d[0], -rib.d[1], gi.gf[r] + eo),
+                Some(rib) if rib.d[1].abs() > 1e-12 => {
+                    (1.0 - rib.d[0], -rib.d[1], gi.gf[r] - rib.gap + eo)
+                }
                 _ => (0.0, 1.0, 0.0),
             };
             let det = m00 * m11 - m01 * m10;
@@ -1012,7 +1031,9 @@ impl RibContactSolver {
         if let (Some(_), Dof::Force(fz)) = (self.arrangement, load.dofs[2]) {
             // a cylindrical bearing's axial load on its ribs: both ribs of a roller in series
             let z = self.bearing().rollers as f64;
-            start[2] = 2.0 * (fz.abs() / (z * self.ribs[0].k)).powf(2.0 / 3.0) * fz.signum();
+            let closing = 2.0 * self.ribs[0].gap;
+            start[2] =
+                (2.0 * (fz.abs() / (z * self.ribs[0].k)).powf(2.0 / 3.0) + closing) * fz.signum();
         }
         for r in &mut self.rho {
             *r = Vector3::zeros();

@@ -363,3 +363,175 @@ fn bad_input_is_named() {
     let e = s.set_centrifugal_n(-1.0).unwrap_err().to_string();
     assert!(e.starts_with("invalid centrifugal_n = -1"), "{e}");
 }
+
+// ---- cylindrical roller bearings with ribs (NU, NJ, NUP, N) ----
+
+/// The crate's CRB (14 rollers 10 × 12 mm on a 60 mm pitch circle, ISO profile).
+fn crb() -> RollerBearing {
+    RollerBearing::cylindrical(60.0, 14, 10.0, 12.0)
+}
+
+/// Spherical end faces r_R = 60 mm touching the ribs 3.5 mm from the roller axis, 20 µm
+/// end play.
+fn crb_ribs() -> CylindricalRibs {
+    CylindricalRibs {
+        face_radius_mm: 60.0,
+        contact_height_mm: 3.5,
+        end_play_mm: 0.02,
+    }
+}
+
+/// NJ under a pure axial load: every roller's inner and outer ring ribs carry
+/// `F_a/(Z cos λ)` (λ = asin(h/r_R), the raceways take no axial force), the cup and the cone
+/// the same radial load (the ribs' radial components cancel), and the raceway slices the
+/// couple of the two rib forces, whose lines pass through the face spheres' centres
+/// `±(L/2 − r_R)` on the roller axis: `2 Q (L/2 − r_R) sin λ` about the roller centre.
+#[test]
+fn nj_axial_load_passes_through_the_ribs_with_the_closed_form_couple() {
+    let mut s = RibContactSolver::cylindrical(crb(), RibArrangement::Nj, crb_ribs()).unwrap();
+    let fa = 3_000.0;
+    let sol = s
+        .solve(&RingLoad::forces([0.0, 0.0, fa, 0.0, 0.0]).with_tilts_held())
+        .unwrap();
+    assert!(sol.status.converged(), "{sol:?}");
+    let lam = (3.5_f64 / 60.0).asin();
+    let q = fa / (14.0 * lam.cos());
+    let couple = 2.0 * q * (6.0 - 60.0) * lam.sin();
+    let ns = s.slice_positions().len();
+    let mut worst: f64 = 0.0;
+    for (j, r) in s.roller_loads().iter().enumerate() {
+        worst = worst
+            .max(rel(r.rib_n, q))
+            .max(rel(r.outer_rib_n, q))
+            .max((r.outer_n - r.inner_n).abs() / q);
+        let raceway: f64 = (0..ns)
+            .map(|k| (s.cone_load[j * ns + k] - s.cup_load[j * ns + k]) * s.x[k])
+            .sum();
+        worst = worst.max(rel(raceway, couple));
+    }
+    eprintln!(
+        "NJ {fa} N axial: rib {:.6} N (closed form {q:.6}), raceway couple vs {couple:.4} N mm, tilt {:.3e} rad, p_rib {:.0} MPa, {} iterations; worst {worst:.2e}",
+        s.roller_loads()[0].rib_n,
+        s.roller_loads()[0].tilt_rad,
+        s.roller_loads()[0].rib_max_pressure_mpa,
+        sol.status.iterations
+    );
+    assert!(worst < 1e-9, "{worst:e}");
+}
+
+/// NUP carries an axial load both ways, mirror images of each other; NJ refuses −z, NU and
+/// N refuse any axial load, each naming `load.fz_n`.
+#[test]
+fn the_rib_arrangement_decides_the_axial_load() {
+    let load = |fz: f64| RingLoad::forces([5_000.0, 0.0, fz, 0.0, 0.0]).with_tilts_held();
+    let mut s = RibContactSolver::cylindrical(crb(), RibArrangement::Nup, crb_ribs()).unwrap();
+    let plus = s.solve(&load(2_000.0)).unwrap();
+    let a = s.roller_loads().to_vec();
+    let minus = s.solve(&load(-2_000.0)).unwrap();
+    assert!(plus.status.converged() && minus.status.converged());
+    assert!((plus.displacement[2] + minus.displacement[2]).abs() < 1e-12);
+    for (p, m) in a.iter().zip(s.roller_loads()) {
+        let scale = plus.max_roller_load_n;
+        assert!((p.rib_n - m.rib_n).abs() <= 1e-9 * scale);
+        assert!((p.outer_n - m.outer_n).abs() <= 1e-9 * scale);
+        // a roller that carries nothing (opposite the load: the ring moved away, the ribs
+        // released by its tilt) has no defined tilt
+        if p.outer_n + p.rib_n < 1e-6 * scale {
+            continue;
+        }
+        assert!(
+            (p.tilt_rad + m.tilt_rad).abs() <= 1e-9 * p.tilt_rad.abs().max(1e-12),
+            "{} {}",
+            p.tilt_rad,
+            m.tilt_rad
+        );
+    }
+    let msg = |arr: RibArrangement, fz: f64| {
+        let mut s = RibContactSolver::cylindrical(crb(), arr, crb_ribs()).unwrap();
+        s.solve(&load(fz)).unwrap_err().to_string()
+    };
+    let e = msg(RibArrangement::Nj, -1.0);
+    assert!(
+        e.starts_with("invalid load.fz_n = -1: expected a load >= 0 N: an NJ"),
+        "{e}"
+    );
+    for arr in [RibArrangement::Nu, RibArrangement::N] {
+        let e = msg(arr, 1.0);
+        assert!(
+            e.starts_with(&format!(
+                "invalid load.fz_n = 1: expected 0: an {} ",
+                arr.name()
+            )),
+            "{e}"
+        );
+    }
+    // radial load alone on NU and N: solved, the ribs idle
+    for arr in [RibArrangement::Nu, RibArrangement::N] {
+        let mut s = RibContactSolver::cylindrical(crb(), arr, crb_ribs()).unwrap();
+        let sol = s.solve(&load(0.0)).unwrap();
+        assert!(sol.status.converged(), "{arr:?} {sol:?}");
+        assert!(
+            s.roller_loads()
+                .iter()
+                .all(|r| r.rib_n + r.outer_rib_n < 1e-9 * 5_000.0)
+        );
+    }
+}
+
+/// NJ under radial and axial load: every roller in force and moment balance, the
+/// condensed stiffness (now with the axial direction through the ribs) against central
+/// differences.
+#[test]
+fn nj_combined_load_balance_and_stiffness() {
+    let mut s = RibContactSolver::cylindrical(crb(), RibArrangement::Nj, crb_ribs()).unwrap();
+    let sol = s
+        .solve(&RingLoad::forces([8_000.0, 0.0, 1_500.0, 0.0, 0.0]).with_tilts_held())
+        .unwrap();
+    assert!(sol.status.converged(), "{sol:?}");
+    let q = sol.max_roller_load_n;
+    let mut worst: f64 = 0.0;
+    for j in 0..14 {
+        let [fr, fz, m] = s.roller_balance(j);
+        worst = worst
+            .max(fr.abs() / q)
+            .max(fz.abs() / q)
+            .max(m.abs() / (q * 12.0));
+    }
+    eprintln!(
+        "NJ 8 kN radial + 1.5 kN axial: worst roller residual {worst:.2e}, {} iterations, K_zz {:.4e} N/mm",
+        sol.status.iterations, sol.stiffness[2][2]
+    );
+    assert!(worst < 1e-9, "{worst:e}");
+    assert!(sol.stiffness[2][2] > 0.0);
+    let u = sol.displacement;
+    assert_stiffness_matches_central_differences(|u| s.load_at(u).unwrap(), u);
+}
+
+/// Bad rib data is named.
+#[test]
+fn bad_cylindrical_ribs_are_named() {
+    let e = |r: CylindricalRibs| {
+        RibContactSolver::cylindrical(crb(), RibArrangement::Nj, r)
+            .unwrap_err()
+            .to_string()
+    };
+    let m = e(CylindricalRibs {
+        contact_height_mm: 5.0,
+        ..crb_ribs()
+    });
+    assert!(m.starts_with("invalid ribs.contact_height_mm = 5"), "{m}");
+    let m = e(CylindricalRibs {
+        face_radius_mm: 5.0,
+        ..crb_ribs()
+    });
+    assert!(m.starts_with("invalid ribs.face_radius_mm = 5"), "{m}");
+    let m = e(CylindricalRibs {
+        end_play_mm: -0.01,
+        ..crb_ribs()
+    });
+    assert!(m.starts_with("invalid ribs.end_play_mm = -0.01"), "{m}");
+    let m = RibContactSolver::cylindrical(trb(), RibArrangement::Nj, crb_ribs())
+        .unwrap_err()
+        .to_string();
+    assert!(m.starts_with("invalid kind = tapered"), "{m}");
+}
