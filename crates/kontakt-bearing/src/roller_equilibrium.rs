@@ -901,12 +901,18 @@ impl RibContactSolver {
                 None => -e.grad / k_ref,
             };
             let slope = e.grad.dot(&step);
+            // the gradient's size in force units (moments over L)
+            let size = |g: &Vector3<f64>| g[0].abs().max(g[1].abs()).max(g[2].abs() / l);
+            let g_now = size(&e.grad);
             let mut t = 1.0;
             let mut accepted = false;
             for _ in 0..60 {
                 let trial = rho + step * t;
                 let et = self.eval_roller(j, &trial, gi);
-                if et.pi <= e.pi + 1e-4 * t * slope + 1e-15 * e.pi.abs() {
+                // Armijo on Π, or (at Π's round-off floor) a halved gradient
+                if et.pi <= e.pi + 1e-4 * t * slope + 1e-15 * e.pi.abs()
+                    || size(&et.grad) < 0.5 * g_now
+                {
                     rho = trial;
                     e = et;
                     accepted = true;
@@ -1015,7 +1021,14 @@ impl RibContactSolver {
     /// `u` must be finite (named `start.<component>`).
     pub fn load_at(&mut self, u: [f64; 5]) -> Result<([f64; 5], [[f64; 5]; 5])> {
         warm_start(&RingLoad::displacements(u), u, &[true; 5])?;
-        self.roller_scale = 0.0;
+        // the rollers' tolerance: 1e-13 of the largest roller load of the last evaluation
+        // (relative to a vanishing roller's own load it would never be met)
+        let last = self
+            .rollers
+            .iter()
+            .map(|r| r.outer_n.max(r.rib_n))
+            .fold(0.0, f64::max);
+        self.roller_scale = self.roller_scale.max(last);
         let (f, k, _) = self.evaluate(&Vector5::from(u));
         Ok((f.into(), to_rows(&k)))
     }
