@@ -1,5 +1,5 @@
-//! Tapered roller bearings with every roller in its own equilibrium and the roller-end/rib
-//! contact in the loop (issue 28 §2, "the roller's force and moment balance with the rib
+//! Roller bearings (tapered; cylindrical with ribs) with every roller in its own equilibrium
+//! and the roller-end/rib contacts in the loop (issue 28 §2, "the roller's force and moment balance with the rib
 //! contact included"): the option next to the fast ISO/TS 16281 model of
 //! [`crate::equilibrium`], which stays the default. Derivation, frames and signs:
 //! `docs/bearing-model.md` §9.
@@ -42,6 +42,12 @@
 //! (and without centrifugal force) carries nothing and floats at the position where its
 //! cup, cone and rib gaps are equal and it is not tilted. Buffers are allocated once in
 //! [`RibContactSolver::new`]; a solve allocates nothing.
+//!
+//! **Cylindrical roller bearings** ([`RibContactSolver::cylindrical`]): the same balance
+//! with α = α_i = 0 and the ribs of the arrangement ([`RibArrangement`]: NU, NJ, NUP, N) on
+//! either ring, spherical roller ends against straight ribs ([`CylindricalRibs`]), so that
+//! NJ and NUP carry an axial load through the roller ends and NU and N refuse one
+//! (`docs/bearing-model.md` §9.5).
 //!
 //! **Not modelled.** Friction (so the skew moment about the cup normal is zero: reported
 //! as 0), the cage, the roller's gyroscopic moment, the centrifugal force's offset from O,

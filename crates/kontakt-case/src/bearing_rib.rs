@@ -136,7 +136,7 @@ pub(crate) fn plan_rib(
             "bearing.roller_model",
             "rib_contact",
             format!(
-                "\"iso\" for type = \"{label}\": the rib-contact roller model is for tapered roller bearings (the NJ/NUP rib contacts of cylindrical ones are not modelled yet)"
+                "\"iso\" for type = \"{label}\": a case's rib-contact roller model is for tapered roller bearings (the NJ/NUP ribs of cylindrical ones are in the library, RibContactSolver::cylindrical, not yet in the case schema)"
             ),
         ));
     }
