@@ -1,6 +1,7 @@
-//! Roller bearings (tapered; cylindrical with ribs) with every roller in its own equilibrium
-//! and the roller-end/rib contacts in the loop (issue 28 §2, "the roller's force and moment balance with the rib
-//! contact included"): the option next to the fast ISO/TS 16281 model of
+//! Roller bearings (tapered; cylindrical with ribs) with every roller in its own
+//! equilibrium and the roller-end/rib contacts in the loop (issue 28 §2, "the roller's force
+//! and moment balance with the rib contact included"): the option next to the fast
+//! ISO/TS 16281 model of
 //! [`crate::equilibrium`], which stays the default. Derivation, frames and signs:
 //! `docs/bearing-model.md` §9.
 //!
@@ -818,31 +819,48 @@ impl RibContactSolver {
     }
 
     /// The position where a roller without contact floats: no tilt, its cup and cone gaps
-    /// at the slice midpoints equal, and along the cup line the mean of the positions
-    /// where each rib's gap equals them (0 without ribs).
+    /// at the slice midpoints equal and, along the cup line, in the middle of the range
+    /// where no rib's gap is smaller than those (at the one bound there is, 0 without
+    /// ribs).
     fn floating(&self, gi: &RingApproach) -> Vector3<f64> {
         let mid = self.x.len() / 2;
         let (eo, ei) = (self.e_o[mid], self.e_i[mid]);
-        // cup = cone: a − eo = G_i − a cγ + b sγ − ei;  rib r: a − eo = G_f + d0 a + d1 b
+        // cup = cone: a − eo = G_i − a cγ + b sγ − ei;  rib r: a − eo = G_f + d0 a + d1 b − gap
         let (m00, m01, r0) = (
             1.0 + self.cg,
             -self.sg,
             gi.g0 + gi.g1 * self.x[mid] - ei + eo,
         );
-        let mut ab = Vector2::zeros();
-        let ribs = self.ribs.len().max(1);
-        for r in 0..ribs {
-            let (m10, m11, r1) = match self.ribs.get(r) {
-                Some(rib) if rib.d[1].abs() > 1e-12 => {
-                    (1.0 - rib.d[0], -rib.d[1], gi.gf[r] - rib.gap + eo)
-                }
-                _ => (0.0, 1.0, 0.0),
-            };
+        let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+        let (mut a_sum, mut n) = (0.0, 0.0);
+        for (r, rib) in self.ribs.iter().enumerate() {
+            if rib.d[1].abs() <= 1e-12 {
+                continue;
+            }
+            let (m10, m11, r1) = (1.0 - rib.d[0], -rib.d[1], gi.gf[r] - rib.gap + eo);
             let det = m00 * m11 - m01 * m10;
-            ab += Vector2::new((r0 * m11 - m01 * r1) / det, (m00 * r1 - m10 * r0) / det);
+            let (a, b) = ((r0 * m11 - m01 * r1) / det, (m00 * r1 - m10 * r0) / det);
+            a_sum += a;
+            n += 1.0;
+            // the rib's approach grows with b when d1 > 0: b may not exceed this one
+            if rib.d[1] > 0.0 {
+                hi = hi.min(b);
+            } else {
+                lo = lo.max(b);
+            }
         }
-        ab /= ribs as f64;
-        Vector3::new(ab.x, ab.y, 0.0)
+        let b = match (lo.is_finite(), hi.is_finite()) {
+            (true, true) => 0.5 * (lo + hi),
+            (true, false) => lo,
+            (false, true) => hi,
+            (false, false) => 0.0,
+        };
+        let a = if n > 0.0 && self.sg != 0.0 {
+            a_sum / n
+        } else {
+            (r0 - m01 * b) / m00
+        };
+        Vector3::new(a, b, 0.0)
     }
 
     /// A roller's `K_ρρ` with 1e-12 of its largest contact stiffness added on the diagonal
@@ -871,8 +889,11 @@ impl RibContactSolver {
         let mut e = self.eval_roller(j, &rho, gi);
         // without the cone and the rib (and without centrifugal force) nothing can hold
         // the roller on the cup: it floats where it touches nothing, if it can
+        // (nor can the ribs alone: without raceway contact their forces do not balance)
         let ribs: f64 = e.qf.iter().sum();
-        if self.centrifugal_n == 0.0 && e.qi0 == 0.0 && ribs == 0.0 && e.qo > 0.0 {
+        let cup_only = e.qi0 == 0.0 && ribs == 0.0 && e.qo > 0.0;
+        let ribs_only = e.qo + e.qi0 == 0.0 && ribs > 0.0;
+        if self.centrifugal_n == 0.0 && (cup_only || ribs_only) {
             let float = self.floating(gi);
             let ef = self.eval_roller(j, &float, gi);
             if ef.total() == 0.0 {

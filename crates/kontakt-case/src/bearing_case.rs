@@ -483,6 +483,10 @@ pub struct RollerRow {
     /// (0: the model has no friction).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub skew_moment_nmm: Option<f64>,
+    /// `roller_model = "rib_contact"`, cylindrical only: the load on the outer ring's ribs,
+    /// N (`rib_load_n` is then the inner ring's).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub outer_rib_load_n: Option<f64>,
 }
 
 /// The slices of the most loaded roller.
@@ -954,6 +958,7 @@ fn roller_report(
             roller_tilt_rad: None,
             rib_max_pressure_mpa: None,
             skew_moment_nmm: None,
+            outer_rib_load_n: None,
         });
     }
     let slice_loads = loads[most * ns..(most + 1) * ns].to_vec();
@@ -1049,6 +1054,7 @@ fn rib_roller_report(
             roller_tilt_rad: Some(r.tilt_rad),
             rib_max_pressure_mpa: Some(r.rib_max_pressure_mpa),
             skew_moment_nmm: Some(r.skew_moment_nmm),
+            outer_rib_load_n: solver.arrangement().map(|_| r.outer_rib_n),
         });
     }
     let range = most * ns..(most + 1) * ns;
@@ -1078,7 +1084,9 @@ fn rib_roller_report(
     if let BearingElements::Rollers(p) = &mut report.elements {
         p.roller_model = Some("rib_contact");
         p.max_rib_pressure_mpa = Some(solver.max_rib_pressure_mpa());
-        p.rib_normal_deg = Some(solver.rib_normal_angle().to_degrees());
+        p.rib_normal_deg = solver
+            .rib_pair()
+            .map(|_| solver.rib_normal_angle().to_degrees());
     }
     Ok(report)
 }

@@ -22,7 +22,9 @@
 use kontakt::bearing::{CONTACT_HEIGHT, FaceShape, RibShape, RollerRibSpec};
 use kontakt::{Error, Result};
 use kontakt_bearing::geometry::RollerBearing;
-use kontakt_bearing::roller_equilibrium::{RibContact, RibContactSolver};
+use kontakt_bearing::roller_equilibrium::{
+    CylindricalRibs, RibArrangement, RibContact, RibContactSolver,
+};
 use serde::{Deserialize, Serialize};
 
 /// `bearing.roller_model`: how a tapered roller is held.
@@ -58,10 +60,47 @@ pub struct RibContactSpec {
     /// The rib: `{ shape = "cone" }` or `{ shape = "torus", radius_mm }`, mm.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub rib: Option<RibShape>,
-    /// Distance of the contact point from the roller axis, mm; default 2.75 (the rib
-    /// study's) with a pairing, required with `face` and `rib`.
+    /// Distance of the contact point from the roller axis, mm; tapered: default 2.75 (the
+    /// rib study's) with a pairing, required with `face` and `rib`; cylindrical: required.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub contact_height_mm: Option<f64>,
+    /// Cylindrical only (required there): which rings have ribs, `"nu"`, `"nj"`, `"nup"`
+    /// or `"n"`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub arrangement: Option<ArrangementSpec>,
+    /// Cylindrical only (required there): the roller end face's sphere radius r_R, mm
+    /// (>= L_we/2).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub face_radius_mm: Option<f64>,
+    /// Cylindrical only (required there): the roller's axial end play between the ribs of
+    /// one ring, mm (>= 0).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub end_play_mm: Option<f64>,
+}
+
+/// `bearing.rib_contact.arrangement` of a cylindrical roller bearing.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum ArrangementSpec {
+    /// Ribs on the outer ring only: no axial load.
+    Nu,
+    /// Outer ring ribs at both ends, an inner ring rib at the −z end: axial load in +z.
+    Nj,
+    /// Ribs at both ends of both rings: axial load both ways.
+    Nup,
+    /// Ribs on the inner ring only: no axial load.
+    N,
+}
+
+impl ArrangementSpec {
+    fn library(self) -> RibArrangement {
+        match self {
+            ArrangementSpec::Nu => RibArrangement::Nu,
+            ArrangementSpec::Nj => RibArrangement::Nj,
+            ArrangementSpec::Nup => RibArrangement::Nup,
+            ArrangementSpec::N => RibArrangement::N,
+        }
+    }
 }
 
 const KEY: &str = "bearing.rib_contact";
@@ -131,12 +170,12 @@ pub(crate) fn plan_rib(
         }
         return Ok(None);
     }
-    if label != "tapered" {
+    if label != "tapered" && label != "cylindrical" {
         return Err(Error::invalid(
             "bearing.roller_model",
             "rib_contact",
             format!(
-                "\"iso\" for type = \"{label}\": a case's rib-contact roller model is for tapered roller bearings (the NJ/NUP ribs of cylindrical ones are in the library, RibContactSolver::cylindrical, not yet in the case schema)"
+                "\"iso\" for type = \"{label}\": the rib-contact roller model is for tapered and cylindrical roller bearings"
             ),
         ));
     }
@@ -147,6 +186,22 @@ pub(crate) fn plan_rib(
             "missing table `[{KEY}]`: roller_model = \"rib_contact\" needs the roller end/rib pair (pairing or face and rib)"
         ),
     })?;
+    if label == "cylindrical" {
+        return cylindrical(spec, bearing).map(Some);
+    }
+    for (key, given) in [
+        ("arrangement", spec.arrangement.is_some()),
+        ("face_radius_mm", spec.face_radius_mm.is_some()),
+        ("end_play_mm", spec.end_play_mm.is_some()),
+    ] {
+        if given {
+            return Err(Error::invalid(
+                format!("{KEY}.{key}"),
+                "given",
+                "none for type = \"tapered\" (the key is for cylindrical roller bearings; a tapered roller's pair is `pairing` or `face` and `rib`)",
+            ));
+        }
+    }
     let pair = spec.pair()?;
     // the rib normal comes from the pair; a rib_angle_deg given as well must agree
     let mut free = bearing.clone();
@@ -171,4 +226,54 @@ pub(crate) fn plan_rib(
         ));
     }
     Ok(Some(solver))
+}
+
+/// The solver of a cylindrical roller bearing with ribs: errors named by the case key.
+fn cylindrical(spec: &RibContactSpec, bearing: &RollerBearing) -> Result<RibContactSolver> {
+    let missing = |key: &str, what: &str| Error::CaseFile {
+        line: None,
+        key: format!("{KEY}.{key}").into(),
+        message: format!(
+            "missing key `{KEY}.{key}`: a cylindrical roller bearing's rib contacts need {what}"
+        ),
+    };
+    for (key, given) in [
+        ("pairing", spec.pairing.is_some()),
+        ("face", spec.face.is_some()),
+        ("rib", spec.rib.is_some()),
+    ] {
+        if given {
+            return Err(Error::invalid(
+                format!("{KEY}.{key}"),
+                "given",
+                "none for type = \"cylindrical\" (its ribs are `arrangement`, `face_radius_mm`, `contact_height_mm`, `end_play_mm`)",
+            ));
+        }
+    }
+    let arrangement = spec.arrangement.ok_or_else(|| {
+        missing(
+            "arrangement",
+            "the rib arrangement, \"nu\", \"nj\", \"nup\" or \"n\"",
+        )
+    })?;
+    let ribs = CylindricalRibs {
+        face_radius_mm: spec
+            .face_radius_mm
+            .ok_or_else(|| missing("face_radius_mm", "the roller end face's sphere radius [mm]"))?,
+        contact_height_mm: spec.contact_height_mm.ok_or_else(|| {
+            missing(
+                "contact_height_mm",
+                "the height of the contact above the roller axis [mm]",
+            )
+        })?,
+        end_play_mm: spec
+            .end_play_mm
+            .ok_or_else(|| missing("end_play_mm", "the roller's axial end play [mm]"))?,
+    };
+    RibContactSolver::cylindrical(bearing.clone(), arrangement.library(), ribs).map_err(|e| {
+        e.map_field(|f| match f.strip_prefix("ribs.") {
+            Some(k) => format!("{KEY}.{k}"),
+            None => format!("bearing.{f}"),
+        })
+    })
 }

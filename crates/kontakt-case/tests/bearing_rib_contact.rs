@@ -140,17 +140,72 @@ fn bad_input_is_named_by_its_case_key() {
         "slices = 31\n\n[bearing.rib_contact]\npairing = \"sphere-torus-57\"\n",
     ));
     assert!(e.starts_with("invalid bearing.rib_contact"), "{e}");
-    let crb = example("bearing_nu_crb.toml");
-    let crb = crb.replacen(
+    let thrust = example("bearing_81107_thrust.toml").replacen(
         "[bearing]\n",
         "[bearing]\nroller_model = \"rib_contact\"\n",
         1,
     );
-    let e = err(&crb);
+    let e = err(&thrust);
     assert!(
         e.starts_with("invalid bearing.roller_model = rib_contact"),
         "{e}"
     );
     let e = err(&text.replace("roller_model = \"rib_contact\"", "roller_model = \"ribs\""));
     assert!(e.contains("roller_model"), "{e}");
+}
+
+/// The NJ example: the cone loads and the inner ring ribs' radial components (`sin λ`)
+/// carry the radial force, the inner ring ribs' axial components (`cos λ`) the axial one, each roller's inner and outer rib
+/// loads are equal (the raceways take no axial force); NU and N refuse the axial load,
+/// NJ a negative one, naming `load.force_n[2]`.
+#[test]
+fn the_nj_example_carries_its_axial_load_on_the_ribs() {
+    let text = example("bearing_nj_crb_rib_contact.toml");
+    let report = run(&text).unwrap();
+    let r = report.rollers().unwrap();
+    let sin_lambda = 3.5_f64 / 60.0;
+    let cos_lambda = (1.0 - sin_lambda * sin_lambda).sqrt();
+    let (mut fx, mut fz) = (0.0, 0.0);
+    for row in &r.roller_loads {
+        // the cone and the inner ring's rib (its normal leans by λ) push the inner ring
+        let radial = row.inner_load_n + row.rib_load_n * sin_lambda;
+        fx += radial * row.azimuth_deg.to_radians().cos();
+        fz += row.rib_load_n * cos_lambda;
+        let outer = row.outer_rib_load_n.unwrap();
+        assert!((outer - row.rib_load_n).abs() <= 1e-9 * 1500.0);
+    }
+    assert!((fx - 10_000.0).abs() <= 1e-9 * 10_000.0, "{fx}");
+    assert!((fz - 1_500.0).abs() <= 1e-9 * 10_000.0, "{fz}");
+    assert_eq!(r.rib_normal_deg, None);
+    let err = |t: &str| run(t).unwrap_err().to_string();
+    for arr in ["nu", "n"] {
+        let e = err(&text.replace("arrangement = \"nj\"", &format!("arrangement = \"{arr}\"")));
+        assert!(
+            e.starts_with("invalid load.force_n[2] = 1500: expected 0: an N"),
+            "{e}"
+        );
+    }
+    let e = err(&text.replace("1500.0]", "-1500.0]"));
+    assert!(e.starts_with("invalid load.force_n[2] = -1500"), "{e}");
+    let e = err(&text.replace("end_play_mm = 0.02\n", ""));
+    assert!(e.contains("bearing.rib_contact.end_play_mm"), "{e}");
+    let e = err(&text.replace("contact_height_mm = 3.5", "contact_height_mm = 6.0"));
+    assert!(
+        e.starts_with("invalid bearing.rib_contact.contact_height_mm = 6"),
+        "{e}"
+    );
+    // tapered keys on a cylindrical bearing and back
+    let e = err(&text.replace(
+        "arrangement = \"nj\"",
+        "arrangement = \"nj\"\npairing = \"sphere-torus-57\"",
+    ));
+    assert!(e.starts_with("invalid bearing.rib_contact.pairing"), "{e}");
+    let e = err(&rib_study_with_rib_contact().replace(
+        "pairing = \"sphere-torus-57\"",
+        "pairing = \"sphere-torus-57\"\nend_play_mm = 0.01",
+    ));
+    assert!(
+        e.starts_with("invalid bearing.rib_contact.end_play_mm"),
+        "{e}"
+    );
 }
