@@ -547,6 +547,30 @@ pub(crate) fn load_zone_of(
     }
 }
 
+/// [`ConvexRing::touch`] of slices: the smallest step fraction at which a slice of a roller
+/// with `g = g0 + x g1` (`frames`, one per roller), at its last approach (`approach`,
+/// roller-major), reaches `d_ref` along `step`; `∞` when none approaches.
+pub(crate) fn slice_touch<'a>(
+    frames: impl Iterator<Item = (&'a Vector5<f64>, &'a Vector5<f64>)>,
+    x: &[f64],
+    approach: &[f64],
+    step: &Vector5<f64>,
+    d_ref: f64,
+) -> f64 {
+    let mut t_touch = f64::INFINITY;
+    for (j, (g0, g1)) in frames.enumerate() {
+        let (s0, s1) = (g0.dot(step), g1.dot(step));
+        for (kk, &xk) in x.iter().enumerate() {
+            let gd = s0 + s1 * xk;
+            if gd > 0.0 {
+                let need = d_ref - approach[j * x.len() + kk];
+                t_touch = t_touch.min(need / gd);
+            }
+        }
+    }
+    t_touch
+}
+
 /// The bearing's numbers the iteration needs (copied out, so the buffers can be borrowed).
 struct Scalars {
     rollers: f64,
@@ -631,18 +655,8 @@ impl ConvexRing for RollerBearingSolver {
     }
 
     fn touch(&self, step: &Vector5<f64>, d_ref: f64) -> f64 {
-        let mut t_touch = f64::INFINITY;
-        for (j, fr) in self.frames.iter().enumerate() {
-            let (s0, s1) = (fr.g0.dot(step), fr.g1.dot(step));
-            for (kk, &xk) in self.x.iter().enumerate() {
-                let gd = s0 + s1 * xk;
-                if gd > 0.0 {
-                    let need = d_ref - self.approach[j * self.x.len() + kk];
-                    t_touch = t_touch.min(need / gd);
-                }
-            }
-        }
-        t_touch
+        let frames = self.frames.iter().map(|f| (&f.g0, &f.g1));
+        slice_touch(frames, &self.x, &self.approach, step, d_ref)
     }
 
     fn limit(&self) -> f64 {

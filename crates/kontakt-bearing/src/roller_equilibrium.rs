@@ -59,7 +59,7 @@
 
 use crate::equilibrium::{
     Dof, RingLoad, RollerBearingSolver, RollerSolution, free_and_target, load_scale, load_zone_of,
-    warm_start,
+    slice_touch, warm_start,
 };
 use crate::geometry::{RollerBearing, RollerBearingKind};
 use crate::newton::{ConvexRing, Outcome, newton, to_rows};
@@ -1232,19 +1232,8 @@ impl ConvexRing for RibContactSolver {
     }
 
     fn touch(&self, step: &Vector5<f64>, d_ref: f64) -> f64 {
-        let ns = self.x.len();
-        let mut t_touch = f64::INFINITY;
-        for (j, fr) in self.frames.iter().enumerate() {
-            let (s0, s1) = (fr.g0.dot(step), fr.g1.dot(step));
-            for (kk, &xk) in self.x.iter().enumerate() {
-                let gd = s0 + s1 * xk;
-                if gd > 0.0 {
-                    let need = d_ref - self.series_approach[j * ns + kk];
-                    t_touch = t_touch.min(need / gd);
-                }
-            }
-        }
-        t_touch
+        let frames = self.frames.iter().map(|f| (&f.g0, &f.g1));
+        slice_touch(frames, &self.x, &self.series_approach, step, d_ref)
     }
 
     fn limit(&self) -> f64 {
