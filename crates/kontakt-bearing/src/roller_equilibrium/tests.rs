@@ -536,3 +536,25 @@ fn bad_cylindrical_ribs_are_named() {
         .to_string();
     assert!(m.starts_with("invalid kind = tapered"), "{m}");
 }
+
+/// The examples' warm starts (the Python test `test_a_warm_start_after_a_one_percent_load_change`
+/// requires warm < cold iterations and a converged warm solve): the NJ CRB under 10 kN
+/// radial and 1.5 kN axial, +1 %.
+#[test]
+fn nj_warm_start_after_a_one_percent_load_change() {
+    let mut b = RollerBearing::cylindrical(60.0, 14, 11.0, 11.0);
+    b.clearance_mm = 0.02;
+    let mut s = RibContactSolver::cylindrical(b, RibArrangement::Nj, crb_ribs()).unwrap();
+    let load =
+        |f: f64| RingLoad::forces([10_000.0 * f, 0.0, 1_500.0 * f, 0.0, 0.0]).with_tilts_held();
+    let first = s.solve(&load(1.0)).unwrap();
+    let warm = s.solve_from(&load(1.01), first.displacement).unwrap();
+    let cold = s.solve(&load(1.01)).unwrap();
+    eprintln!(
+        "NJ: cold {} iterations, warm {}, residual {:.1e}",
+        cold.status.iterations, warm.status.iterations, warm.status.residual
+    );
+    assert!(warm.status.converged() && cold.status.converged());
+    assert!(warm.status.iterations < cold.status.iterations);
+    assert!(warm.status.residual < 1e-9);
+}
