@@ -612,3 +612,33 @@ fn converges_over_four_decades_of_load() {
     eprintln!("{cases} cases converge, at most {worst_it} ring iterations");
     assert!(worst_it <= 40);
 }
+
+/// The rib contact point of the rib study's pair in the roller frame: h = 2.75 mm from the
+/// roller axis toward the cone, and along the axis where the spherical face (r_R = 57 mm,
+/// meeting the conical side at the large-end radius ρ_L = 5.5 mm) bulges past the large
+/// end: `−L/2 − (√(r_R² − h²) − √(r_R² − ρ_L²))` from the roller centre (toward the small
+/// end positive); the normal leans from the roller axis by asin(h/r_R).
+#[test]
+fn the_rib_contact_point_is_on_the_face_at_the_contact_height() {
+    let s = RibContactSolver::new(rib_study_bearing(), sphere_torus_57()).unwrap();
+    let b = s.bearing();
+    let am = 0.5 * (b.contact_angle_rad + b.cone_angle_rad);
+    let (t_m, n_m) = (
+        Vector2::new(-am.sin(), am.cos()),
+        Vector2::new(am.cos(), am.sin()),
+    );
+    let (_, point, _) = s.rib_contacts().next().unwrap();
+    let p = Vector2::from(point);
+    let (rr, h, rho_l, l): (f64, f64, f64, f64) = (57.0, 2.75, 5.5, 16.0);
+    let along = -0.5 * l - ((rr * rr - h * h).sqrt() - (rr * rr - rho_l * rho_l).sqrt());
+    eprintln!(
+        "rib point: {:.9} mm along the axis (closed form {along:.9}), {:.9} mm from it",
+        p.dot(&t_m),
+        p.dot(&n_m)
+    );
+    // ρ_L of the bearing's numbers is 5.5 to 1e-7 (the example's diameters are rounded)
+    assert!((p.dot(&t_m) - along).abs() < 1e-6);
+    assert!((p.dot(&n_m) + h).abs() < 1e-9);
+    let lean = (s.rib_normal_angle() - (am + std::f64::consts::FRAC_PI_2)).abs();
+    assert!((lean - (h / rr).asin()).abs() < 1e-9, "{lean}");
+}
