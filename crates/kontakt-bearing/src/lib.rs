@@ -39,6 +39,7 @@ pub mod life;
 pub mod load_zone;
 mod newton;
 pub mod profile;
+pub mod roller_equilibrium;
 pub mod stress;
 #[cfg(test)]
 mod test_support;
