@@ -34,6 +34,7 @@
 
 pub mod ball_equilibrium;
 pub mod equilibrium;
+pub mod friction;
 pub mod geometry;
 pub mod load_zone;
 mod newton;
