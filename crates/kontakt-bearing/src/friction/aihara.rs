@@ -58,21 +58,21 @@ pub const RIB_FILM_FACTOR: f64 = 1.25;
 pub struct AiharaBearing {
     /// Number of rollers z, ≥ 1.
     pub rollers: u32,
-    /// Mean roller diameter D_a [mm].
+    /// Mean roller diameter D_a \[mm\].
     pub roller_diameter_mm: f64,
-    /// Inner raceway radius at the roller centre R_i [mm].
+    /// Inner raceway radius at the roller centre R_i \[mm\].
     pub inner_radius_mm: f64,
-    /// Outer raceway radius at the roller centre R_o [mm], > D_a/2.
+    /// Outer raceway radius at the roller centre R_o \[mm\], > D_a/2.
     pub outer_radius_mm: f64,
-    /// Effective roller length l [mm].
+    /// Effective roller length l \[mm\].
     pub effective_length_mm: f64,
-    /// Outer raceway (cup) half angle α [rad], 0 < α < π/2.
+    /// Outer raceway (cup) half angle α \[rad\], 0 < α < π/2.
     pub cup_angle_rad: f64,
-    /// Roller half angle β [rad] (roller head angle 2β), 0 ≤ β < π/4.
+    /// Roller half angle β \[rad\] (roller head angle 2β), 0 ≤ β < π/4.
     pub roller_half_angle_rad: f64,
-    /// Height e of the roller-end/rib contact above the raceway [mm], ≥ 0.
+    /// Height e of the roller-end/rib contact above the raceway \[mm\], ≥ 0.
     pub rib_height_mm: f64,
-    /// Reduced modulus E' = 2/[(1 − ν₁²)/E₁ + (1 − ν₂²)/E₂] [MPa] (Hamrock-Dowson's E').
+    /// Reduced modulus E' = 2/\[(1 − ν₁²)/E₁ + (1 − ν₂²)/E₂\] \[MPa\] (Hamrock-Dowson's E').
     pub reduced_modulus_mpa: f64,
 }
 
@@ -80,13 +80,13 @@ pub struct AiharaBearing {
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct AiharaLubricant {
-    /// Dynamic viscosity at ambient pressure η0 [MPa·s].
+    /// Dynamic viscosity at ambient pressure η0 \[MPa·s\].
     pub viscosity_mpa_s: f64,
-    /// Pressure-viscosity coefficient α0 [1/MPa].
+    /// Pressure-viscosity coefficient α0 \[1/MPa\].
     pub pressure_viscosity_per_mpa: f64,
-    /// Temperature-viscosity coefficient β_T [1/K], ≥ 0 (0: isothermal).
+    /// Temperature-viscosity coefficient β_T \[1/K\], ≥ 0 (0: isothermal).
     pub temperature_viscosity_per_k: f64,
-    /// Thermal conductivity k [W/(m·K)].
+    /// Thermal conductivity k \[W/(m·K)\].
     pub thermal_conductivity_w_mk: f64,
 }
 
@@ -94,7 +94,7 @@ pub struct AiharaLubricant {
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct RacewayResistance {
-    /// Reduced radius in the rolling direction R_e [mm].
+    /// Reduced radius in the rolling direction R_e \[mm\].
     pub reduced_radius_mm: f64,
     /// Speed parameter U.
     pub u: f64,
@@ -102,7 +102,7 @@ pub struct RacewayResistance {
     pub w: f64,
     /// Thermal loading parameter L.
     pub thermal_loading: f64,
-    /// Rolling resistance moment M_i or M_o on one roller [N·mm].
+    /// Rolling resistance moment M_i or M_o on one roller \[N·mm\].
     pub moment_nmm: f64,
 }
 
@@ -110,9 +110,9 @@ pub struct RacewayResistance {
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct AiharaTorque {
-    /// Rolling (entrainment) speed at both raceways u [mm/s].
+    /// Rolling (entrainment) speed at both raceways u \[mm/s\].
     pub rolling_speed_mm_s: f64,
-    /// Roller load Q = F_a/(z sin α) [N].
+    /// Roller load Q = F_a/(z sin α) \[N\].
     pub roller_load_n: f64,
     /// Material parameter G = α0 E'.
     pub g: f64,
@@ -122,11 +122,11 @@ pub struct AiharaTorque {
     pub outer: RacewayResistance,
     /// Rib friction coefficient μ = μ0 exp(−1.8 Λ_r^1.2).
     pub rib_friction: f64,
-    /// Rolling resistance torque M_R [N·mm].
+    /// Rolling resistance torque M_R \[N·mm\].
     pub rolling_nmm: f64,
-    /// Rib sliding torque M_S [N·mm].
+    /// Rib sliding torque M_S \[N·mm\].
     pub rib_nmm: f64,
-    /// Total M [N·mm].
+    /// Total M \[N·mm\].
     pub total_nmm: f64,
 }
 

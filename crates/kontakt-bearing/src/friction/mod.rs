@@ -33,17 +33,17 @@ pub const RPM_PER_RAD_S: f64 = 60.0 / (2.0 * std::f64::consts::PI);
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Envelope {
-    /// Bore diameter d [mm].
+    /// Bore diameter d \[mm\].
     pub bore_mm: f64,
-    /// Outside diameter D [mm].
+    /// Outside diameter D \[mm\].
     pub outer_mm: f64,
-    /// Width B [mm] (for a tapered roller bearing the cup width C or the total width T;
+    /// Width B \[mm\] (for a tapered roller bearing the cup width C or the total width T;
     /// only the SKF drag term uses it).
     pub width_mm: f64,
 }
 
 impl Envelope {
-    /// An envelope d × D × B [mm].
+    /// An envelope d × D × B \[mm\].
     ///
     /// # Errors
     /// [`Error::InvalidInput`] naming `bore_mm`, `outer_mm` or `width_mm` unless
@@ -80,7 +80,7 @@ impl Envelope {
         Ok(())
     }
 
-    /// Mean diameter `d_m = (d + D)/2` [mm], the catalogues' size parameter.
+    /// Mean diameter `d_m = (d + D)/2` \[mm\], the catalogues' size parameter.
     pub fn mean_diameter_mm(&self) -> f64 {
         0.5 * (self.bore_mm + self.outer_mm)
     }
@@ -92,11 +92,11 @@ impl Envelope {
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Lubrication {
     /// Oil bath with the static oil level `level_mm` above the lowest point of the outer
-    /// ring raceway [mm] (SKF's `H`). SKF adds the drag of the rolling elements in the
+    /// ring raceway \[mm\] (SKF's `H`). SKF adds the drag of the rolling elements in the
     /// bath; a level above the bearing centre (`H > D/2`) is outside what the catalogue
     /// models were fitted for (flagged).
     OilBath {
-        /// Oil level H [mm], 0 ≤ H.
+        /// Oil level H \[mm\], 0 ≤ H.
         level_mm: f64,
     },
     /// Oil jet or circulating oil (no bath).
@@ -111,15 +111,15 @@ pub enum Lubrication {
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct OperatingPoint {
-    /// Speed of the rotating ring relative to the other [rad/s], ≥ 0; 0 is the
+    /// Speed of the rotating ring relative to the other \[rad/s\], ≥ 0; 0 is the
     /// starting (breakaway) condition.
     pub speed_rad_s: f64,
     /// Kinematic viscosity of the oil (of the base oil of a grease) at the operating
-    /// temperature [mm²/s], > 0.
+    /// temperature \[mm²/s\], > 0.
     pub viscosity_mm2_s: f64,
-    /// Radial load F_r [N], ≥ 0.
+    /// Radial load F_r \[N\], ≥ 0.
     pub radial_load_n: f64,
-    /// Axial load F_a [N], ≥ 0.
+    /// Axial load F_a \[N\], ≥ 0.
     pub axial_load_n: f64,
     /// Lubrication method.
     pub lubrication: Lubrication,

@@ -1,9 +1,9 @@
-//! The Schaeffler (INA/FAG) frictional torque after Palmgren: `M = M0 + M1` [N·mm].
+//! The Schaeffler (INA/FAG) frictional torque after Palmgren: `M = M0 + M1` \[N·mm\].
 //!
 //! - speed-dependent (no-load, hydrodynamic) part, n in r/min, ν in mm²/s, d_m in mm:
 //!   `M0 = f0 (ν n)^(2/3) d_m³ · 10⁻⁷` for `ν n ≥ 2000`,
 //!   `M0 = 160 · 10⁻⁷ f0 d_m³` for `ν n < 2000`;
-//! - load-dependent part: `M1 = f1 P1 d_m`, P1 [N] the bearing type's load for the
+//! - load-dependent part: `M1 = f1 P1 d_m`, P1 \[N\] the bearing type's load for the
 //!   frictional torque.
 //!
 //! Sources: the Schaeffler catalogue's "Friction and increases in temperature" chapter
@@ -26,7 +26,7 @@
 use super::{Envelope, OperatingPoint, finite_or, non_negative_as};
 use kontakt::Result;
 
-/// The threshold of ν n [mm²/s · r/min] below which M0 is constant.
+/// The threshold of ν n \[mm²/s · r/min\] below which M0 is constant.
 pub const NU_N_THRESHOLD: f64 = 2000.0;
 
 /// The relative jump of M0 at the threshold: `160 / 2000^(2/3) − 1` (≈ +0.794 %).
@@ -40,30 +40,30 @@ pub struct SchaefflerFactors {
     pub f0: f64,
     /// Bearing factor for the load-dependent torque f1.
     pub f1: f64,
-    /// Load for the frictional torque P1 [N] (per bearing type in the catalogue).
+    /// Load for the frictional torque P1 \[N\] (per bearing type in the catalogue).
     pub p1_n: f64,
 }
 
-/// The Schaeffler torque and its parts [N·mm].
+/// The Schaeffler torque and its parts \[N·mm\].
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct SchaefflerTorque {
-    /// Speed used [r/min].
+    /// Speed used \[r/min\].
     pub speed_rpm: f64,
-    /// ν n [mm²/s · r/min].
+    /// ν n \[mm²/s · r/min\].
     pub nu_n: f64,
-    /// Speed-dependent torque M0 [N·mm].
+    /// Speed-dependent torque M0 \[N·mm\].
     pub m0_nmm: f64,
-    /// Load-dependent torque M1 [N·mm].
+    /// Load-dependent torque M1 \[N·mm\].
     pub m1_nmm: f64,
-    /// Total M0 + M1 [N·mm].
+    /// Total M0 + M1 \[N·mm\].
     pub total_nmm: f64,
     /// ν n < 2000: M0 is the catalogue's low-speed constant (at standstill too: the model
     /// has no zero-speed limit).
     pub low_speed_branch: bool,
 }
 
-/// M0 [N·mm] for factor `f0`, ν n and mean diameter `dm` [mm].
+/// M0 \[N·mm\] for factor `f0`, ν n and mean diameter `dm` \[mm\].
 pub fn m0(f0: f64, nu_n: f64, dm: f64) -> f64 {
     if nu_n >= NU_N_THRESHOLD {
         1e-7 * f0 * nu_n.powf(2.0 / 3.0) * dm.powi(3)

@@ -2,7 +2,7 @@
 //! 6000 EN, 2005, chapter "Friction", and its successors 10000 EN 2013 and 17000 EN 2018;
 //! "SKF 2004" after the year the model was introduced).
 //!
-//! `M = φ_ish φ_rs M_rr + M_sl + M_seal + M_drag` [N·mm], with (n in r/min, ν in mm²/s,
+//! `M = φ_ish φ_rs M_rr + M_sl + M_seal + M_drag` \[N·mm\], with (n in r/min, ν in mm²/s,
 //! d_m = (d + D)/2 in mm, loads in N):
 //!
 //! - rolling: `M_rr = G_rr (ν n)^0.6`, `G_rr` from the type's formula and the series
@@ -279,12 +279,12 @@ pub enum SkfBearing {
         /// Series.
         series: CylindricalSeries,
     },
-    /// Deep groove ball bearing; `c0_n` is the basic static load rating [N], used by
-    /// α_F = 24.6 (F_a/C_0)^0.24 [°] when F_a > 0.
+    /// Deep groove ball bearing; `c0_n` is the basic static load rating \[N\], used by
+    /// α_F = 24.6 (F_a/C_0)^0.24 \[°\] when F_a > 0.
     DeepGrooveBall {
         /// Series.
         series: DeepGrooveSeries,
-        /// Basic static load rating C_0 [N], > 0.
+        /// Basic static load rating C_0 \[N\], > 0.
         c0_n: f64,
     },
     /// Single row angular contact ball bearing.
@@ -428,11 +428,11 @@ impl SkfWarnings {
     }
 }
 
-/// The SKF frictional moment and its parts [N·mm], with the factors that produced it.
+/// The SKF frictional moment and its parts \[N·mm\], with the factors that produced it.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct SkfTorque {
-    /// Speed used [r/min].
+    /// Speed used \[r/min\].
     pub speed_rpm: f64,
     /// Inlet shear heating reduction factor φ_ish.
     pub phi_ish: f64,
@@ -446,21 +446,21 @@ pub struct SkfTorque {
     pub g_rr: f64,
     /// Sliding variable G_sl.
     pub g_sl: f64,
-    /// Rolling moment φ_ish φ_rs M_rr [N·mm].
+    /// Rolling moment φ_ish φ_rs M_rr \[N·mm\].
     pub rolling_nmm: f64,
-    /// Sliding moment M_sl [N·mm].
+    /// Sliding moment M_sl \[N·mm\].
     pub sliding_nmm: f64,
-    /// Seal moment M_seal [N·mm] (0: open bearings).
+    /// Seal moment M_seal \[N·mm\] (0: open bearings).
     pub seal_nmm: f64,
-    /// Drag moment M_drag [N·mm].
+    /// Drag moment M_drag \[N·mm\].
     pub drag_nmm: f64,
-    /// Total M [N·mm].
+    /// Total M \[N·mm\].
     pub total_nmm: f64,
     /// Validity flags.
     pub warnings: SkfWarnings,
 }
 
-/// `(G_rr, G_sl)` of `bearing` at mean diameter `dm` [mm], speed `n` [r/min] and loads.
+/// `(G_rr, G_sl)` of `bearing` at mean diameter `dm` \[mm\], speed `n` \[r/min\] and loads.
 ///
 /// # Errors
 /// [`Error::InvalidInput`] naming `y` or `c0_n` if not finite and > 0.
@@ -537,7 +537,7 @@ pub fn k_rs(lubrication: &Lubrication) -> f64 {
     }
 }
 
-/// Drag moment in an oil bath [N·mm] (see the module documentation): oil level `h` [mm],
+/// Drag moment in an oil bath \[N·mm\] (see the module documentation): oil level `h` \[mm\],
 /// drag factor `vm`, type constants K_Z, K_L, `rows` ball rows.
 fn drag(bearing: &SkfBearing, env: &Envelope, n: f64, nu: f64, h: f64, vm: f64, rows: u32) -> f64 {
     if n == 0.0 {
