@@ -11,6 +11,27 @@
 //! of a later step is compared with. Their equations, constants, sources, ranges and
 //! omissions are in `docs/bearing-friction-catalogue.md`.
 //!
+//! ## Example
+//! The SKF torque of a 32008 X (40 × 68 × 19 mm, Y = 1.6) under 12.85 kN axial load at
+//! 1000 r/min, oil jet, ν = 70.11 mm²/s:
+//! ```
+//! use kontakt_bearing::friction::skf2004::{skf2004, SkfBearing, SkfOptions, TaperedSeries};
+//! use kontakt_bearing::friction::{Envelope, Lubrication, OperatingPoint, RPM_PER_RAD_S};
+//! let bearing = SkfBearing::TaperedRoller { series: TaperedSeries::S320X, y: 1.6 };
+//! let envelope = Envelope::new(40.0, 68.0, 19.0)?;
+//! let op = OperatingPoint {
+//!     speed_rad_s: 1000.0 / RPM_PER_RAD_S,
+//!     viscosity_mm2_s: 70.11,
+//!     radial_load_n: 0.0,
+//!     axial_load_n: 12_850.0,
+//!     lubrication: Lubrication::OilJet,
+//! };
+//! let m = skf2004(&bearing, &envelope, &op, &SkfOptions::default())?;
+//! assert!((m.total_nmm - 1077.46).abs() < 0.01); // N·mm: rolling 1046.8 + sliding 30.7
+//! assert!(m.warnings.unverified_constants); // the 320 X row has one public source
+//! # Ok::<(), kontakt::Error>(())
+//! ```
+//!
 //! ## Units and the operating point
 //! Lengths mm, forces N, moments N·mm, kinematic viscosity mm²/s, speed rad/s (the
 //! library's unit). The catalogues write the speed in r/min: `n = ω · 60 / (2π)`
