@@ -38,6 +38,7 @@ pub mod geometry;
 pub mod load_zone;
 mod newton;
 pub mod profile;
+pub mod raceway_losses;
 #[cfg(test)]
 mod test_support;
 
