@@ -27,8 +27,8 @@
 use kontakt::friction::{CellLaw, FilmState, FrictionLaw};
 use kontakt::lubrication::{
     LineFilm, LineFilmContact, LineFilmFormula, LineFilmWarnings, RollingResistanceModel,
-    biboulet_houpert_starvation, film_starvation_factor, line_film_thickness,
-    rolling_resistance, thermal_loading, zhu_cheng_thermal_factor,
+    biboulet_houpert_starvation, film_starvation_factor, line_film_thickness, rolling_resistance,
+    thermal_loading, zhu_cheng_thermal_factor,
 };
 use kontakt::{Error, Result};
 
@@ -393,7 +393,11 @@ mod tests {
         let m = RacewayLosses::new(lub(boundary(0.1, 0.0))).unwrap();
         let s = slice();
         let r = m.slice(&s).unwrap();
-        assert!(rel(r.sliding_force, -0.1 * 500.0 * 1.5) < 1e-13, "{}", r.sliding_force);
+        assert!(
+            rel(r.sliding_force, -0.1 * 500.0 * 1.5) < 1e-13,
+            "{}",
+            r.sliding_force
+        );
         assert!(rel(r.sliding_power, 75.0 * 50.0 * 1e-3) < 1e-13);
         let back = m
             .slice(&RacewaySlice {
@@ -460,7 +464,10 @@ mod tests {
                     cell.shear_stress(ph * (1.0 - x * x / (b * b)).sqrt(), v) * dx
                 })
                 .sum::<f64>();
-            println!("{fluid:?}: {got:.6} vs {want:.6} N/mm, rel {:.1e}", rel(got, want));
+            println!(
+                "{fluid:?}: {got:.6} vs {want:.6} N/mm, rel {:.1e}",
+                rel(got, want)
+            );
             assert!(rel(got, want) < 1e-4, "{fluid:?}: {got} vs {want}");
             if let FluidShear::LimitingShear { .. } = fluid {
                 let fast = m.traction_per_length(&cell, b, ph, 1e9);
@@ -520,7 +527,10 @@ mod tests {
                 ..s
             })
             .unwrap();
-        assert_eq!((z.central_film, z.rolling_force, z.asperity_share), (0.0, 0.0, 1.0));
+        assert_eq!(
+            (z.central_film, z.rolling_force, z.asperity_share),
+            (0.0, 0.0, 1.0)
+        );
         assert!(rel(-z.sliding_force, 0.12 * 750.0) < 1e-3);
         let e = m
             .slice(&RacewaySlice {
@@ -543,7 +553,10 @@ mod tests {
         assert_eq!(field(RacewayLosses::new(l).unwrap_err()), "viscosity_slope");
         let mut l = lub(law);
         l.film_starvation = 0.0;
-        assert_eq!(field(RacewayLosses::new(l).unwrap_err()), "starvation_factor");
+        assert_eq!(
+            field(RacewayLosses::new(l).unwrap_err()),
+            "starvation_factor"
+        );
         let m = RacewayLosses::new(lub(law)).unwrap();
         for (s, want) in [
             (

@@ -66,7 +66,11 @@ fn films_are_the_printed_dowson_higginson_and_dowson_toyoda_formulas() {
     assert!(f.warnings.is_empty(), "{:?}", f.warnings.lines(&f.regime));
     // A film of the order of a micrometre for these bearing-like numbers.
     assert!(f.minimum > 0.2e-3 && f.central < 2e-3, "{f:?}");
-    println!("h_c = {:.4} µm, h_min = {:.4} µm", f.central * 1e3, f.minimum * 1e3);
+    println!(
+        "h_c = {:.4} µm, h_min = {:.4} µm",
+        f.central * 1e3,
+        f.minimum * 1e3
+    );
 }
 
 /// Exact consequences of the power laws (1e-12): h_min ∝ u^0.70 η₀^0.70 α^0.54 w^−0.13
@@ -182,7 +186,10 @@ fn bad_input_names_the_field_and_extremes_never_give_nan() {
         (c, 0.0, ALPHA, "viscosity"),
         (c, ETA, f64::INFINITY, "alpha"),
     ] {
-        assert_eq!(field(line_film_thickness(&c, eta, alpha, DH).unwrap_err()), want);
+        assert_eq!(
+            field(line_film_thickness(&c, eta, alpha, DH).unwrap_err()),
+            want
+        );
     }
     for v in [1e-300, 1e300, f64::MAX] {
         for c in [
@@ -212,7 +219,10 @@ fn bad_input_names_the_field_and_extremes_never_give_nan() {
             }
         }
     }
-    assert_eq!(field(film_starvation_factor(1.5).unwrap_err()), "starvation_factor");
+    assert_eq!(
+        field(film_starvation_factor(1.5).unwrap_err()),
+        "starvation_factor"
+    );
     assert_eq!(
         field(biboulet_houpert_starvation(-1.0).unwrap_err()),
         "starvation_degree"
@@ -267,7 +277,11 @@ fn viscosity_slope_is_the_derivative_of_the_walther_line() {
 /// convention of either is mixed up (a factor 2^0.648 = 1.57).
 #[test]
 fn zhou_hoeprich_matches_the_biboulet_houpert_transcription() {
-    for (u, w, g) in [(1e-11, 1e-4, 4000.0), (3.5e-10, 2e-4, 3745.0), (2e-12, 1e-5, 5000.0)] {
+    for (u, w, g) in [
+        (1e-11, 1e-4, 4000.0),
+        (3.5e-10, 2e-4, 3745.0),
+        (2e-12, 1e-5, 5000.0),
+    ] {
         let ours = zhou_hoeprich_dimensionless(u, g, w);
         let bh = 18.62 * (2.0 * u).powf(0.648) * w.powf(0.246) * g.powf(-0.352);
         assert!(rel(ours, bh) < 1e-3, "{ours} vs {bh}");
@@ -288,7 +302,10 @@ fn biboulet_houpert_reproduces_their_printed_comparison_values() {
     // EHL asymptote: U_B = 1e-11, any large load (M = 3e3 and 3e4): load-independent.
     let e1 = biboulet_houpert_dimensionless(0.5e-11, 1e-2);
     let e2 = biboulet_houpert_dimensionless(0.5e-11, 1e-1);
-    assert!(rel(e1, 8.26e-9) < 5e-3 && rel(e1, e2) < 1e-9, "{e1:e} {e2:e}");
+    assert!(
+        rel(e1, 8.26e-9) < 5e-3 && rel(e1, e2) < 1e-9,
+        "{e1:e} {e2:e}"
+    );
     // Zhou-Hoeprich over the EHL asymptote 1.47 U_B^0.75 (their rounded constant).
     let zh = zhou_hoeprich_dimensionless(0.5e-11, 4000.0, 1e-4);
     let ratio = zh / (1.47 * 1e-11f64.powf(0.75));
@@ -377,7 +394,10 @@ fn rolling_resistance_dimensions() {
         assert!(rel(r.force_per_length, r.dimensionless * 230_000.0 * 6.0) < 1e-14);
         assert!(rel(r.moment_per_length, r.force_per_length * 6.0) < 1e-14);
         assert!(rel(r.power_per_length, 2.0 * r.force_per_length * 5.0) < 1e-14);
-        println!("{m:?}: f = {:.4} N/mm, P = {:.4} W/mm", r.force_per_length, r.power_per_length);
+        println!(
+            "{m:?}: f = {:.4} N/mm, P = {:.4} W/mm",
+            r.force_per_length, r.power_per_length
+        );
     }
     assert_eq!(
         field(rolling_resistance(&f.regime, -1.0, 1.0, 1.0, BH).unwrap_err()),

@@ -20,7 +20,8 @@
 //!
 //! Not here: the Chittenden et al. minimum film and the regime-spanning
 //! Nijenbanning-Venner-Moes (1994) formula, whose constants could not be found in two
-//! independent sources; thermal, starvation and roughness corrections. See `docs/film.md`.
+//! independent sources; thermal, starvation and roughness corrections of the point contact
+//! (the line contact has the first two). See `docs/film.md`.
 //!
 //! Units: kinematic viscosity mm²/s (= cSt), density kg/m³, dynamic viscosity MPa·s
 //! (1 MPa·s = 10⁶ Pa·s; 1 mPa·s = 1e-9 MPa·s), pressure-viscosity coefficient 1/MPa,
@@ -41,9 +42,9 @@ pub use line_film::{
     thermal_loading, viscosity_temperature_slope, zhu_cheng_thermal_factor,
 };
 pub use rolling_resistance::{
-    BIBOULET_HOUPERT_MIN_STARVATION, HERTZ_TO_CLASSICAL, RollingResistance,
-    RollingResistanceModel, biboulet_houpert_dimensionless, biboulet_houpert_moment,
-    biboulet_houpert_starvation, rolling_resistance, zhou_hoeprich_dimensionless,
+    BIBOULET_HOUPERT_MIN_STARVATION, HERTZ_TO_CLASSICAL, RollingResistance, RollingResistanceModel,
+    biboulet_houpert_dimensionless, biboulet_houpert_moment, biboulet_houpert_starvation,
+    rolling_resistance, zhou_hoeprich_dimensionless,
 };
 
 use crate::error::{Error, Result, positive_as};
