@@ -24,6 +24,7 @@
 //! Units: mm, N, N/mm, MPa, mm/s, MPa·s; moments N·mm; power W. Derivations, sources and
 //! validity: `docs/raceway-losses.md`.
 
+use kontakt::error::positive_as as positive;
 use kontakt::friction::{CellLaw, FilmState, FrictionLaw};
 use kontakt::lubrication::{
     LineFilm, LineFilmContact, LineFilmFormula, LineFilmWarnings, RollingResistanceModel,
@@ -138,14 +139,6 @@ impl SliceLosses {
 pub struct RacewayLosses {
     lubrication: RacewayLubrication,
     rule: [(f64, f64); TRACTION_POINTS],
-}
-
-fn positive(field: &'static str, v: f64, expected: &'static str) -> Result<f64> {
-    if v.is_finite() && v > 0.0 {
-        Ok(v)
-    } else {
-        Err(Error::invalid(field, v, expected))
-    }
 }
 
 impl RacewayLosses {

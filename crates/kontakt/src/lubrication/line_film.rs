@@ -22,7 +22,7 @@
 //! [`line_film_thickness`] allocates nothing; its validity limits are reported as
 //! [`LineFilmWarnings`], never hidden.
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, positive_as as positive};
 
 /// A lubricated line contact, per unit length.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -103,10 +103,7 @@ impl LineFilmWarnings {
     pub fn lines(&self, regime: &LineFilmRegime) -> Vec<String> {
         let mut out = Vec::new();
         if self.zero_entrainment {
-            out.push(
-                "zero entrainment speed: no hydrodynamic film, boundary lubrication, h = 0"
-                    .to_string(),
-            );
+            out.push(ZERO_ENTRAINMENT.to_string());
         }
         if self.outside_elastic_regime {
             out.push(format!(
@@ -144,15 +141,46 @@ pub struct LineFilm {
     pub warnings: LineFilmWarnings,
 }
 
+/// The warning line of a zero entrainment speed (point and line contacts).
+pub(crate) const ZERO_ENTRAINMENT: &str =
+    "zero entrainment speed: no hydrodynamic film, boundary lubrication, h = 0";
+
 /// M below which [`LineFilmWarnings::outside_elastic_regime`] is raised.
 pub const LINE_ELASTIC_REGIME_M: f64 = 10.0;
 
-fn positive(field: &'static str, value: f64, expected: &'static str) -> Result<f64> {
-    if value.is_finite() && value > 0.0 {
-        Ok(value)
-    } else {
-        Err(Error::invalid(field, value, expected))
+/// The checks that the point- and line-contact films share: `entrainment_speed` finite and
+/// ≥ 0 mm/s; `reduced_modulus`, `viscosity`, `alpha` finite and > 0. Returns
+/// (E*, η₀, α).
+pub(crate) fn check_speed_and_oil(
+    speed: f64,
+    reduced_modulus: f64,
+    viscosity: f64,
+    alpha: f64,
+) -> Result<(f64, f64, f64)> {
+    if !(speed.is_finite() && speed >= 0.0) {
+        return Err(Error::invalid(
+            "entrainment_speed",
+            speed,
+            "a finite mean surface speed >= 0 mm/s",
+        ));
     }
+    Ok((
+        positive(
+            "reduced_modulus",
+            reduced_modulus,
+            "a finite contact modulus E* > 0 MPa",
+        )?,
+        positive(
+            "viscosity",
+            viscosity,
+            "a finite dynamic viscosity > 0 MPa·s",
+        )?,
+        positive(
+            "alpha",
+            alpha,
+            "a finite pressure-viscosity coefficient > 0 1/MPa",
+        )?,
+    ))
 }
 
 /// The dimensionless groups of `contact` for an oil of viscosity `viscosity` η₀ \[MPa·s\]
@@ -168,33 +196,13 @@ pub fn line_film_regime(
 ) -> Result<LineFilmRegime> {
     let r = positive("radius", contact.radius, "a finite reduced radius > 0 mm")?;
     let speed = contact.entrainment_speed;
-    if !(speed.is_finite() && speed >= 0.0) {
-        return Err(Error::invalid(
-            "entrainment_speed",
-            speed,
-            "a finite mean surface speed >= 0 mm/s",
-        ));
-    }
     let load = positive(
         "load_per_length",
         contact.load_per_length,
         "a finite load per unit length > 0 N/mm",
     )?;
-    let e_star = positive(
-        "reduced_modulus",
-        contact.reduced_modulus,
-        "a finite contact modulus E* > 0 MPa",
-    )?;
-    let eta = positive(
-        "viscosity",
-        viscosity,
-        "a finite dynamic viscosity > 0 MPa·s",
-    )?;
-    let alpha = positive(
-        "alpha",
-        alpha,
-        "a finite pressure-viscosity coefficient > 0 1/MPa",
-    )?;
+    let (e_star, eta, alpha) =
+        check_speed_and_oil(speed, contact.reduced_modulus, viscosity, alpha)?;
     let e_prime = 2.0 * e_star;
     let u = eta * speed / (e_prime * r);
     let g = alpha * e_prime;

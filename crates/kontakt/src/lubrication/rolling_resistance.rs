@@ -25,7 +25,7 @@
 //! 1/MPa). Sources and validation: `docs/raceway-losses.md`.
 
 use super::line_film::LineFilmRegime;
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, positive_as};
 
 /// The rolling-resistance fit of an EHL line contact.
 #[non_exhaustive]
@@ -71,15 +71,17 @@ pub fn zhou_hoeprich_dimensionless(u: f64, g: f64, w: f64) -> f64 {
 /// The Biboulet & Houpert (2010) fully flooded moment T* = t/(p_h b²) as a function of
 /// their load parameter `m` M = W/√(2U) (eq. 42).
 pub fn biboulet_houpert_moment(m: f64) -> f64 {
-    let sm = m.sqrt();
-    let x = 1.4 / 1.45 * sm;
-    // (1 + x^10)^(1/10), written to stay finite for large x.
-    let d = if x > 1.0 {
+    m.powf(-1.5) * 1.4 * m.sqrt() / transition(m)
+}
+
+/// The blend (1 + ((1.4/1.45)√M)^10)^(1/10) of eq. 42, written to stay finite for large M.
+fn transition(m: f64) -> f64 {
+    let x = 1.4 / 1.45 * m.sqrt();
+    if x > 1.0 {
         x * (1.0 + x.powi(-10)).powf(0.1)
     } else {
         (1.0 + x.powi(10)).powf(0.1)
-    };
-    m.powf(-1.5) * 1.4 * sm / d
+    }
 }
 
 /// The Biboulet & Houpert (2010) dimensionless rolling force F̃ ≈ T̃ = t/(E′R²) for the
@@ -90,14 +92,7 @@ pub fn biboulet_houpert_dimensionless(u: f64, w: f64) -> f64 {
         return 0.0;
     }
     let ub = 2.0 * u;
-    let m = w / ub.sqrt();
-    let x = 1.4 / 1.45 * m.sqrt();
-    let d = if x > 1.0 {
-        x * (1.0 + x.powi(-10)).powf(0.1)
-    } else {
-        (1.0 + x.powi(10)).powf(0.1)
-    };
-    HERTZ_TO_CLASSICAL * 1.4 * (ub * w).sqrt() / d
+    HERTZ_TO_CLASSICAL * 1.4 * (ub * w).sqrt() / transition(w / ub.sqrt())
 }
 
 /// The rolling resistance of a line contact of reduced radius `radius` R \[mm\], contact
@@ -115,20 +110,12 @@ pub fn rolling_resistance(
     entrainment_speed: f64,
     model: RollingResistanceModel,
 ) -> Result<RollingResistance> {
-    if !(radius.is_finite() && radius > 0.0) {
-        return Err(Error::invalid(
-            "radius",
-            radius,
-            "a finite reduced radius > 0 mm",
-        ));
-    }
-    if !(reduced_modulus.is_finite() && reduced_modulus > 0.0) {
-        return Err(Error::invalid(
-            "reduced_modulus",
-            reduced_modulus,
-            "a finite contact modulus E* > 0 MPa",
-        ));
-    }
+    positive_as("radius", radius, "a finite reduced radius > 0 mm")?;
+    positive_as(
+        "reduced_modulus",
+        reduced_modulus,
+        "a finite contact modulus E* > 0 MPa",
+    )?;
     if !(entrainment_speed.is_finite() && entrainment_speed >= 0.0) {
         return Err(Error::invalid(
             "entrainment_speed",
