@@ -7,8 +7,12 @@
 //! - [`aihara`]: Aihara (1987) running torque of a tapered roller bearing under axial
 //!   load: EHL rolling resistance of the raceways plus rib sliding.
 //!
-//! These are fits, not contact mechanics: they are the baseline the contact-based friction
-//! of a later step is compared with. Their equations, constants, sources, ranges and
+//! - [`raceway`]: the contact-based losses of one raceway slice (line-contact EHL film,
+//!   rolling resistance after Zhou & Hoeprich 1991 and Biboulet & Houpert 2010, sliding
+//!   traction of the mixed law), the first brick of the contact-by-contact torque.
+//!
+//! The catalogue models are fits, not contact mechanics: they are the baseline the
+//! contact-based friction is compared with. Their equations, constants, sources, ranges and
 //! omissions are in `docs/bearing-friction-catalogue.md`.
 //!
 //! ## Example
@@ -41,6 +45,7 @@
 //! about its axis, the same on both rings (the models do not split it).
 
 pub mod aihara;
+pub mod raceway;
 pub mod schaeffler;
 pub mod skf2004;
 
