@@ -52,7 +52,7 @@
 //! methods; a solve that stagnates at the round-off floor (residual at most 1e-8 of the
 //! load, 1000 times the tolerance) is reported with a warning.
 
-use crate::bearing_post::{BallPost, RollerPost, applied_moment};
+use crate::bearing_post::{BallPost, Post, RollerPost, applied_moment};
 use crate::bearing_rating::{RatingReport, RatingSpec};
 use crate::bearing_slices::{RollerPressures, SliceModel, SliceSolver, pressure_map};
 use crate::common::{MaterialSpec, SCHEMA_VERSION, in_degrees, material};
@@ -61,7 +61,7 @@ use kontakt::solve::{SolveStatus, Termination};
 use kontakt::{Error, Result};
 use kontakt_bearing::ball_equilibrium::BallBearingSolver;
 use kontakt_bearing::equilibrium::coupled::CoupledSliceSolver;
-use kontakt_bearing::equilibrium::{Dof, RingLoad, RollerBearingSolver};
+use kontakt_bearing::equilibrium::{Dof, RingLoad, RollerBearingSolver, RollerSolution};
 use kontakt_bearing::geometry::{
     BallBearing, BallBearingKind, DEFAULT_SLICES, RollerBearing, RollerBearingKind,
 };
@@ -215,6 +215,18 @@ pub struct RollerSpec {
     /// lamina life and the ISO 76 static safety (`docs/bearing-model.md`, "Life and static safety").
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub rating: Option<RatingSpec>,
+    /// Tapered only: `"iso"` (the default: the ISO/TS 16281 slice law of both contacts in
+    /// series, the rib load from the roller's force balance) or `"rib_contact"` (every
+    /// roller in its own force and moment balance, the rib a Hertz contact;
+    /// `docs/bearing-model.md` §15; needs `[bearing.rib_contact]`).
+    #[serde(
+        default,
+        skip_serializing_if = "crate::bearing_rib::RollerModel::is_iso"
+    )]
+    pub roller_model: crate::bearing_rib::RollerModel,
+    /// With `roller_model = "rib_contact"`: the roller end/rib pair.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rib_contact: Option<crate::bearing_rib::RibContactSpec>,
 }
 
 fn default_slices() -> usize {
@@ -487,6 +499,21 @@ pub struct RollerRow {
     pub inner_max_pressure_mpa: f64,
     /// The largest Hertz pressure of the roller's slices on the outer raceway, MPa.
     pub outer_max_pressure_mpa: f64,
+    /// `roller_model = "rib_contact"` only: the roller's tilt in its axial plane, rad
+    /// (positive: the small end toward the bearing axis).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub roller_tilt_rad: Option<f64>,
+    /// `roller_model = "rib_contact"` only: the maximum Hertz pressure on the rib, MPa.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rib_max_pressure_mpa: Option<f64>,
+    /// `roller_model = "rib_contact"` only: the skew moment about the cup normal, N·mm
+    /// (0: the model has no friction).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub skew_moment_nmm: Option<f64>,
+    /// `roller_model = "rib_contact"`, cylindrical only: the load on the outer ring's ribs,
+    /// N (`rib_load_n` is then the inner ring's).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub outer_rib_load_n: Option<f64>,
 }
 
 /// The slices of the most loaded roller.
@@ -507,6 +534,10 @@ pub struct SliceTable {
     pub inner_pressure_mpa: Vec<f64>,
     /// Maximum Hertz pressure of each slice on the outer raceway, MPa.
     pub outer_pressure_mpa: Vec<f64>,
+    /// `roller_model = "rib_contact"` only: the cone (inner raceway) slice loads, N;
+    /// `load_n` is then the cup's and `approach_mm` the sum of both contacts' approaches.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub inner_load_n: Option<Vec<f64>>,
 }
 
 /// The solver's status.
@@ -640,6 +671,17 @@ pub struct RollerPart {
     pub max_inner_pressure_mpa: f64,
     /// The largest Hertz pressure of any slice on the outer raceway, MPa.
     pub max_outer_pressure_mpa: f64,
+    /// `"rib_contact"` when the rollers are in their own balance with a Hertz rib contact
+    /// (absent for the default ISO model).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub roller_model: Option<&'static str>,
+    /// `roller_model = "rib_contact"` only: the largest Hertz pressure on the rib, MPa.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_rib_pressure_mpa: Option<f64>,
+    /// `roller_model = "rib_contact"` only: the rib normal's direction (rib into roller)
+    /// of the roller end/rib pair, measured like the contact angles, degrees.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rib_normal_deg: Option<f64>,
 }
 
 /// The report keys of a ball bearing.
@@ -863,6 +905,8 @@ pub(crate) enum Planned {
     Roller(RollerBearingSolver),
     /// A roller bearing with coupled slices.
     Coupled(Box<CoupledSliceSolver>),
+    /// A tapered roller bearing with `roller_model = "rib_contact"`.
+    RibRoller(Box<kontakt_bearing::roller_equilibrium::RibContactSolver>),
     /// A ball bearing, with its case keys for the errors of a solve.
     Ball {
         solver: BallBearingSolver,
@@ -893,8 +937,21 @@ pub(crate) fn plan(case: &BearingCase) -> Result<(Planned, &'static str)> {
     };
     let bearing = roller_bearing(kind, s, label)?;
     if s.slice_model == SliceModel::Coupled {
+        if !s.roller_model.is_iso() {
+            return Err(Error::invalid(
+                "bearing.slice_model",
+                "coupled",
+                "\"iso\" with roller_model = \"rib_contact\" (the rib-contact roller model has independent slices; coupled slices with rollers in their own balance are not built yet)",
+            ));
+        }
         let solver = CoupledSliceSolver::new(bearing).map_err(map_bearing_field)?;
         return Ok((Planned::Coupled(Box::new(solver)), label));
+    }
+    let rib = s.rib_contact.as_ref();
+    if let Some(solver) =
+        crate::bearing_rib::plan_rib(s.roller_model, rib, s.rib_angle_deg, label, &bearing)?
+    {
+        return Ok((Planned::RibRoller(Box::new(solver)), label));
     }
     let solver = RollerBearingSolver::new(bearing).map_err(map_bearing_field)?;
     Ok((Planned::Roller(solver), label))
@@ -913,6 +970,7 @@ pub(crate) fn solve_planned(
     match planned {
         Planned::Roller(solver) => roller_report(case, label, solver, &load, start),
         Planned::Coupled(solver) => roller_report(case, label, solver.as_mut(), &load, start),
+        Planned::RibRoller(solver) => rib_roller_report(case, label, solver, &load, start),
         Planned::Ball { solver, spec, keys } => {
             ball_report(case, label, solver, spec, keys, &load, start)
         }
@@ -932,37 +990,23 @@ fn roller_report<S: SliceSolver>(
         None => solver.solve(load),
     }
     .map_err(map_load)?;
-    let mut warnings = solver_warnings(&sol.status, sol.note)?;
     let b = solver.bearing();
     let ns = b.slices;
     let width = b.effective_length_mm / ns as f64;
     let loads = solver.slice_loads();
     let approaches = solver.slice_approaches();
-    let map = pressure_map(solver);
-    let spec = match &case.bearing {
-        BearingSpec::Cylindrical(s) | BearingSpec::Tapered(s) | BearingSpec::Thrust(s) => {
-            s.rating.as_ref()
-        }
-        _ => None,
-    };
     // pressures, rating and the most loaded slice's contacts: the one post-solve path of
     // the report and the sweep's rows (crate::bearing_post)
-    let mut per_roller = Vec::with_capacity(b.rollers);
-    let (mut most, mut most_inner, mut most_outer) = (0, Vec::new(), Vec::new());
-    let post = RollerPost::new(b, spec)?.run(
+    let mut warnings = solver_warnings(&sol.status, sol.note)?;
+    let mut pressures = Pressures::default();
+    let post = RollerPost::new(b, roller_rating(case))?.run(
         &*solver,
         &sol,
         applied_moment(load),
         &mut warnings,
-        |j, peaks, inner, outer, is_most| {
-            per_roller.push(peaks);
-            if is_most {
-                most = j;
-                most_inner = inner.to_vec();
-                most_outer = outer.to_vec();
-            }
-        },
+        |j, peaks, inner, outer, is_most| pressures.add(j, peaks, inner, outer, is_most),
     )?;
+    let most = pressures.most;
     let mut rows = Vec::with_capacity(b.rollers);
     for (j, r) in solver.roller_loads().iter().enumerate() {
         let slice_max = loads[j * ns..(j + 1) * ns]
@@ -976,8 +1020,12 @@ fn roller_report<S: SliceSolver>(
             rib_load_n: r.rib_n,
             max_load_per_length_n_per_mm: slice_max / width,
             approach_mm: r.max_approach_mm,
-            inner_max_pressure_mpa: per_roller[j][0],
-            outer_max_pressure_mpa: per_roller[j][1],
+            inner_max_pressure_mpa: pressures.per_roller[j][0],
+            outer_max_pressure_mpa: pressures.per_roller[j][1],
+            roller_tilt_rad: None,
+            rib_max_pressure_mpa: None,
+            skew_moment_nmm: None,
+            outer_rib_load_n: None,
         });
     }
     let slice_loads = loads[most * ns..(most + 1) * ns].to_vec();
@@ -987,36 +1035,108 @@ fn roller_report<S: SliceSolver>(
         load_per_length_n_per_mm: slice_loads.iter().map(|q| q / width).collect(),
         load_n: slice_loads,
         approach_mm: approaches[most * ns..(most + 1) * ns].to_vec(),
-        inner_pressure_mpa: most_inner,
-        outer_pressure_mpa: most_outer,
+        inner_pressure_mpa: std::mem::take(&mut pressures.most_inner),
+        outer_pressure_mpa: std::mem::take(&mut pressures.most_outer),
+        inner_load_n: None,
     };
+    let map = pressure_map(solver).map(|(map, m)| {
+        Box::new(RollerPressures {
+            max_pressure_mpa: m.iter().copied().fold(0.0, f64::max),
+            slice_pressure_mpa: map,
+        })
+    });
+    let parts = RollerParts {
+        rows,
+        most_loaded,
+        slice_loads: loads,
+        pressure_map: map,
+    };
+    Ok(roller_part_report(
+        case, label, b, &sol, parts, post, warnings,
+    ))
+}
+
+/// The rating spec of a roller bearing case (`[bearing.rating]`).
+pub(crate) fn roller_rating(case: &BearingCase) -> Option<&crate::bearing_rating::RatingSpec> {
+    match &case.bearing {
+        BearingSpec::Cylindrical(s) | BearingSpec::Tapered(s) | BearingSpec::Thrust(s) => {
+            s.rating.as_ref()
+        }
+        _ => None,
+    }
+}
+
+/// The slice pressures the post gives a report: per roller `[inner, outer]` maxima and
+/// the slices of the most loaded roller, MPa.
+#[derive(Default)]
+struct Pressures {
+    per_roller: Vec<[f64; 2]>,
+    most: usize,
+    most_inner: Vec<f64>,
+    most_outer: Vec<f64>,
+}
+
+impl Pressures {
+    fn add(&mut self, j: usize, peaks: [f64; 2], inner: &[f64], outer: &[f64], most: bool) {
+        self.per_roller.push(peaks);
+        if most {
+            self.most = j;
+            self.most_inner = inner.to_vec();
+            self.most_outer = outer.to_vec();
+        }
+    }
+}
+
+/// What a roller model's solve gives the shared part of its report.
+struct RollerParts<'a> {
+    rows: Vec<RollerRow>,
+    most_loaded: SliceTable,
+    /// The outer raceway's slice loads, roller-major, N.
+    slice_loads: &'a [f64],
+    pressure_map: Option<Box<RollerPressures>>,
+}
+
+/// The report of a roller bearing from its solution, its rows and the slices of its most
+/// loaded roller, for every roller model: the solver's warnings, the static safety and the
+/// lives (`bearing_rating`), the contact sizes; the rib-contact keys unset.
+fn roller_part_report(
+    case: &BearingCase,
+    label: &'static str,
+    b: &RollerBearing,
+    sol: &RollerSolution,
+    parts: RollerParts<'_>,
+    post: Post,
+    warnings: Vec<String>,
+) -> BearingReport {
     let p_max = post.max_pressure_mpa;
+    let ns = b.slices;
+    let width = b.effective_length_mm / ns as f64;
     let elements = BearingElements::Rollers(RollerPart {
         rollers: b.rollers,
-        slices: ns,
+        slices: b.slices,
         contact_angle_deg: b.contact_angle_rad.to_degrees(),
         cone_angle_deg: b.cone_angle_rad.to_degrees(),
         roller_stiffness_n_per_mm10_9: b.roller_stiffness(),
         max_roller_load_n: sol.max_roller_load_n,
-        max_load_per_length_n_per_mm: rows
+        max_load_per_length_n_per_mm: parts
+            .rows
             .iter()
             .map(|r| r.max_load_per_length_n_per_mm)
             .fold(0.0, f64::max),
-        roller_loads: rows,
-        most_loaded_roller: most_loaded,
-        slice_load_per_length_n_per_mm: loads
+        roller_loads: parts.rows,
+        most_loaded_roller: parts.most_loaded,
+        slice_load_per_length_n_per_mm: parts
+            .slice_loads
             .chunks_exact(ns)
             .take(b.rollers)
             .map(|c| c.iter().map(|q| q / width).collect())
             .collect(),
-        pressure: map.map(|(map, m)| {
-            Box::new(RollerPressures {
-                max_pressure_mpa: m.iter().copied().fold(0.0, f64::max),
-                slice_pressure_mpa: map,
-            })
-        }),
+        pressure: parts.pressure_map,
         max_inner_pressure_mpa: p_max[0],
         max_outer_pressure_mpa: p_max[1],
+        roller_model: None,
+        max_rib_pressure_mpa: None,
+        rib_normal_deg: None,
     });
     let mut report = report(case, label, elements, sol.displacement, sol.load);
     report.solver = solver_echo(&sol.status);
@@ -1025,6 +1145,90 @@ fn roller_report<S: SliceSolver>(
     report.warnings = warnings;
     report.contacts = post.contact_sizes();
     report.rating = post.rating;
+    report
+}
+
+/// The report of a rib-contact solve: the ISO report's keys (cup load as `outer_load_n`,
+/// cone load as `inner_load_n`) with the roller's tilt, the rib pressure and the skew
+/// moment per roller, the cone slices of the most loaded roller. The raceway pressures
+/// are the Hertz line contacts of the cup slices, the cone's scaled by the roller's
+/// cone-to-cup load ratio (as the ISO model's); the cone's own slice distribution under
+/// the roller's tilt is not yet used for them.
+fn rib_roller_report(
+    case: &BearingCase,
+    label: &'static str,
+    solver: &mut kontakt_bearing::roller_equilibrium::RibContactSolver,
+    load: &RingLoad,
+    start: Option<[f64; 5]>,
+) -> Result<BearingReport> {
+    let sol = match start {
+        Some(u) => solver.solve_from(load, u),
+        None => solver.solve(load),
+    }
+    .map_err(map_load)?;
+    let b = solver.bearing();
+    let ns = b.slices;
+    let width = b.effective_length_mm / ns as f64;
+    let (cup, cone) = (solver.cup_slice_loads(), solver.cone_slice_loads());
+    // pressures, rating, the most loaded slice's and rib's contacts: the one post-solve
+    // path of the report and the sweep's rows (crate::bearing_post)
+    let mut warnings = solver_warnings(&sol.status, sol.note)?;
+    let mut pressures = Pressures::default();
+    let post = RollerPost::new(b, roller_rating(case))?.run_rib(
+        solver,
+        &sol,
+        applied_moment(load),
+        &mut warnings,
+        |j, peaks, inner, outer, is_most| pressures.add(j, peaks, inner, outer, is_most),
+    )?;
+    let most = pressures.most;
+    let mut rows = Vec::with_capacity(b.rollers);
+    for (j, r) in solver.roller_loads().iter().enumerate() {
+        let slice_max = cup[j * ns..(j + 1) * ns]
+            .iter()
+            .chain(&cone[j * ns..(j + 1) * ns])
+            .fold(0.0, |m: f64, q| m.max(*q));
+        rows.push(RollerRow {
+            azimuth_deg: r.azimuth_rad.to_degrees(),
+            inner_load_n: r.inner_n,
+            outer_load_n: r.outer_n,
+            rib_load_n: r.rib_n,
+            max_load_per_length_n_per_mm: slice_max / width,
+            approach_mm: r.max_approach_mm,
+            inner_max_pressure_mpa: pressures.per_roller[j][0],
+            outer_max_pressure_mpa: pressures.per_roller[j][1],
+            roller_tilt_rad: Some(r.tilt_rad),
+            rib_max_pressure_mpa: Some(r.rib_max_pressure_mpa),
+            skew_moment_nmm: Some(r.skew_moment_nmm),
+            outer_rib_load_n: solver.arrangement().map(|_| r.outer_rib_n),
+        });
+    }
+    let range = most * ns..(most + 1) * ns;
+    let cup_slices = cup[range.clone()].to_vec();
+    let most_loaded = SliceTable {
+        roller: most,
+        position_mm: solver.slice_positions().to_vec(),
+        load_per_length_n_per_mm: cup_slices.iter().map(|q| q / width).collect(),
+        load_n: cup_slices,
+        approach_mm: solver.slice_approaches()[range.clone()].to_vec(),
+        inner_pressure_mpa: std::mem::take(&mut pressures.most_inner),
+        outer_pressure_mpa: std::mem::take(&mut pressures.most_outer),
+        inner_load_n: Some(cone[range].to_vec()),
+    };
+    let parts = RollerParts {
+        rows,
+        most_loaded,
+        slice_loads: cup,
+        pressure_map: None,
+    };
+    let mut report = roller_part_report(case, label, b, &sol, parts, post, warnings);
+    if let BearingElements::Rollers(p) = &mut report.elements {
+        p.roller_model = Some("rib_contact");
+        p.max_rib_pressure_mpa = Some(solver.max_rib_pressure_mpa());
+        p.rib_normal_deg = solver
+            .rib_pair()
+            .map(|_| solver.rib_normal_angle().to_degrees());
+    }
     Ok(report)
 }
 

@@ -21,6 +21,7 @@ use kontakt_bearing::geometry::{
     BallBearingKind, DEFAULT_SLICES, RollerBearing, RollerBearingKind,
 };
 use kontakt_bearing::life::RatingType;
+use kontakt_bearing::roller_equilibrium::RibContactSolver;
 use kontakt_bearing::stress::RollerStress;
 
 /// The most loaded contact on one raceway, sized against its bodies (Copy data: the
@@ -28,22 +29,31 @@ use kontakt_bearing::stress::RollerStress;
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct MostLoaded {
     size: SizeCheck,
-    /// The roller it belongs to; `None` for the most loaded ball.
-    roller: Option<usize>,
-    ring: &'static str,
+    at: At,
     /// The case keys of the two bodies without their `bearing.` prefix.
     keys: [&'static str; 2],
+}
+
+/// Which contact a [`MostLoaded`] is.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum At {
+    /// The most loaded slice of roller `.0` on raceway `.1`.
+    Slice(usize, &'static str),
+    /// The most loaded ball on raceway `.0`.
+    Ball(&'static str),
+    /// The most loaded roller's rib contact.
+    Rib,
 }
 
 impl MostLoaded {
     /// As the validity check's contact, with its case keys and label.
     fn contact_size(&self) -> ContactSize {
-        let at = match self.roller {
-            Some(j) => format!(
-                "the most loaded slice of roller {j} on the {} raceway",
-                self.ring
-            ),
-            None => format!("the most loaded ball on the {} raceway", self.ring),
+        let at = match self.at {
+            At::Slice(j, ring) => {
+                format!("the most loaded slice of roller {j} on the {ring} raceway")
+            }
+            At::Ball(ring) => format!("the most loaded ball on the {ring} raceway"),
+            At::Rib => "the most loaded roller's rib contact".to_string(),
         };
         let [k1, k2] = self.keys.map(|k| format!("bearing.{k}"));
         ContactSize::new(Size::Hertz(self.size), [&k1, &k2]).at(at)
@@ -57,8 +67,9 @@ pub(crate) struct Post {
     pub(crate) max_pressure_mpa: [f64; 2],
     /// The rating (`[bearing.rating]`), its warnings already in the solve's warnings.
     pub(crate) rating: RatingReport,
-    /// The most loaded contact on the inner and on the outer raceway (none without load).
-    contacts: [Option<MostLoaded>; 2],
+    /// The most loaded contact on the inner and on the outer raceway, and on a rib (none
+    /// without load).
+    contacts: [Option<MostLoaded>; 3],
 }
 
 impl Post {
@@ -123,6 +134,8 @@ pub(crate) struct RollerPost {
     /// One roller's slice pressures, inner and outer raceway, MPa.
     inner: Vec<f64>,
     outer: Vec<f64>,
+    /// The raceway loads of a rib-contact model's rollers.
+    ring: Vec<RollerLoad>,
 }
 
 impl RollerPost {
@@ -145,6 +158,7 @@ impl RollerPost {
             coarse: coarse_slices_warning(b.slices),
             inner: vec![0.0; b.slices],
             outer: vec![0.0; b.slices],
+            ring: Vec::with_capacity(b.rollers),
         })
     }
 
@@ -162,13 +176,80 @@ impl RollerPost {
         sol: &RollerSolution,
         moment: f64,
         warnings: &mut Vec<String>,
+        each: impl FnMut(usize, [f64; 2], &[f64], &[f64], bool),
+    ) -> Result<Post> {
+        let slices = Slices {
+            bearing: solver.bearing(),
+            rollers: solver.roller_loads(),
+            loads: solver.slice_loads(),
+            own: solver.slice_pressures(),
+        };
+        self.run_with(&slices, sol.load, moment, warnings, each)
+    }
+
+    /// [`RollerPost::run`] for the rib-contact roller model: the raceway pressures are the
+    /// Hertz line contacts of the cup slices, the cone's scaled by the roller's
+    /// cone-to-cup load ratio, and the most loaded rib contact is sized against the roller
+    /// face's and the rib's radii.
+    ///
+    /// # Errors
+    /// As [`RollerPost::run`]; the rib's Hertz contact's errors.
+    pub(crate) fn run_rib(
+        &mut self,
+        solver: &RibContactSolver,
+        sol: &RollerSolution,
+        moment: f64,
+        warnings: &mut Vec<String>,
+        each: impl FnMut(usize, [f64; 2], &[f64], &[f64], bool),
+    ) -> Result<Post> {
+        // the raceway loads as the slice models give them, in a buffer planned once
+        let mut ring = std::mem::take(&mut self.ring);
+        ring.clear();
+        ring.extend(solver.roller_loads().iter().map(|r| RollerLoad {
+            azimuth_rad: r.azimuth_rad,
+            outer_n: r.outer_n,
+            inner_n: r.inner_n,
+            rib_n: r.rib_n,
+            max_approach_mm: r.max_approach_mm,
+        }));
+        let slices = Slices {
+            bearing: solver.bearing(),
+            rollers: &ring,
+            loads: solver.cup_slice_loads(),
+            own: None,
+        };
+        let post = self.run_with(&slices, sol.load, moment, warnings, each);
+        self.ring = ring;
+        let mut post = post?;
+        let rib_max = solver.max_rib_load_n();
+        if rib_max > 0.0 {
+            let hertz = solver.rib_hertz();
+            post.contacts[2] = Some(MostLoaded {
+                size: point_size(hertz.geometry(), &hertz.solve_force(rib_max)?),
+                at: At::Rib,
+                keys: ["rib_contact.face", "rib_contact.rib"],
+            });
+        }
+        Ok(post)
+    }
+
+    /// The post of a roller model's `slices` for the carried load `load` (N, N·mm).
+    fn run_with(
+        &mut self,
+        slices: &Slices<'_>,
+        load: [f64; 5],
+        moment: f64,
+        warnings: &mut Vec<String>,
         mut each: impl FnMut(usize, [f64; 2], &[f64], &[f64], bool),
     ) -> Result<Post> {
         warnings.extend(self.coarse.iter().cloned());
-        let b = solver.bearing();
+        let Slices {
+            bearing: b,
+            rollers,
+            loads,
+            own,
+        } = *slices;
         let ns = b.slices;
-        let loads = solver.slice_loads();
-        let rollers = solver.roller_loads();
         let most = (0..rollers.len()).fold(0, |m, j| {
             if rollers[j].outer_n > rollers[m].outer_n {
                 j
@@ -176,7 +257,6 @@ impl RollerPost {
                 m
             }
         });
-        let own = solver.slice_pressures();
         let peak = |p: &[f64]| p.iter().copied().fold(0.0, f64::max);
         let mut p_max = [0.0_f64; 2];
         // the most loaded slice of the most loaded roller on each raceway (Hertz)
@@ -206,7 +286,7 @@ impl RollerPost {
                 p_max = [p_max[0].max(m[0]), p_max[1].max(m[1])];
             }
         }
-        let mut contacts = [None; 2];
+        let mut contacts = [None; 3];
         for (ring, name) in [(0, "inner"), (1, "outer")] {
             let Some(k) = most_slice[ring] else {
                 continue;
@@ -221,20 +301,31 @@ impl RollerPost {
             let s = c.solve(load / self.stress.slice_width())?;
             contacts[ring] = Some(MostLoaded {
                 size: line_size(c.radii(), &s),
-                roller: Some(most),
-                ring: name,
+                at: At::Slice(most, name),
                 keys: ["roller_diameter_mm", "pitch_diameter_mm"],
             });
         }
         let inner_ratio = rollers.get(most).map_or(1.0, ratio);
         let life = LifeInput::Rollers(b, loads, inner_ratio);
-        let rated = self.rater.rate(sol.load, moment, p_max, life, warnings)?;
+        let rated = self.rater.rate(load, moment, p_max, life, warnings)?;
         Ok(Post {
             max_pressure_mpa: p_max,
             rating: rated,
             contacts,
         })
     }
+}
+
+/// What the post of a roller model reads of its solve.
+#[derive(Clone, Copy)]
+struct Slices<'a> {
+    bearing: &'a RollerBearing,
+    /// The raceway loads of every roller.
+    rollers: &'a [RollerLoad],
+    /// The outer raceway's slice loads, roller-major, N.
+    loads: &'a [f64],
+    /// The model's own slice pressures `(inner, outer)`, roller-major, MPa.
+    own: Option<(&'a [f64], &'a [f64])>,
 }
 
 /// `Q_i/Q_o` of a roller (1 without load).
@@ -315,7 +406,7 @@ impl BallPost {
         let p_max = sol.max_pressure_mpa;
         let life = LifeInput::Balls(b, self.nominal, &self.loads);
         let rated = self.rater.rate(sol.load, moment, p_max, life, warnings)?;
-        let mut contacts = [None; 2];
+        let mut contacts = [None; 3];
         if sol.max_ball_load_n > 0.0 {
             let pair = match self.pair {
                 Some(p) => p,
@@ -325,8 +416,7 @@ impl BallPost {
                 let c = &pair[ring];
                 contacts[ring] = Some(MostLoaded {
                     size: point_size(c.geometry(), &c.solve_force(sol.max_ball_load_n)?),
-                    roller: None,
-                    ring: name,
+                    at: At::Ball(name),
                     keys: ["ball_diameter_mm", self.keys[ring]],
                 });
             }

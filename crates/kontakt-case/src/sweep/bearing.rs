@@ -40,6 +40,7 @@ use arrow_array::{ArrayRef, BooleanArray, Float64Array, Int64Array, StringArray}
 use kontakt::solve::SolveStatus;
 use kontakt_bearing::ball_equilibrium::{BallBearingSolver, BallSolution};
 use kontakt_bearing::equilibrium::{RingLoad, RollerSolution};
+use kontakt_bearing::roller_equilibrium::RibContactSolver;
 use std::ops::Range;
 use std::sync::Arc;
 
@@ -289,6 +290,7 @@ impl BlockModel {
         let post = match &planned {
             Planned::Roller(s) => roller(s.bearing()),
             Planned::Coupled(s) => roller(s.bearing()),
+            Planned::RibRoller(s) => roller(s.bearing()),
             Planned::Ball { solver, spec, keys } => {
                 BallPost::new(solver, spec.rating.as_ref(), [keys.inner, keys.outer])
                     .map(|p| PostPlan::Ball(Box::new(p)))
@@ -321,6 +323,9 @@ impl BlockModel {
         let solved = match &mut self.planned {
             Planned::Roller(solver) => element_row(solver, label, &ring, start, post, &same),
             Planned::Coupled(solver) => {
+                element_row(solver.as_mut(), label, &ring, start, post, &same)
+            }
+            Planned::RibRoller(solver) => {
                 element_row(solver.as_mut(), label, &ring, start, post, &same)
             }
             Planned::Ball { solver, spec, keys } => {
@@ -477,6 +482,67 @@ impl<S: SliceSolver> Element for S {
             max_element_load_n: sol.max_roller_load_n,
             loaded_elements: rollers.iter().filter(|r| r.outer_n > 0.0).count(),
             max_rib_load_n: Some(rib),
+            max_load_per_length_n_per_mm: Some(per_length),
+            load_zone_epsilon: sol.load_zone,
+            stiffness: std::array::from_fn(|i| sol.stiffness[i][i]),
+            ..status_out(&sol.status)
+        }
+    }
+}
+
+/// The rib-contact roller model (`roller_model = "rib_contact"`): the cup and cone slices
+/// each with their own loads, the rib a Hertz contact.
+impl Element for RibContactSolver {
+    type Solution = RollerSolution;
+
+    fn solve_at(
+        &mut self,
+        ring: &RingLoad,
+        start: Option<[f64; 5]>,
+    ) -> kontakt::Result<RollerSolution> {
+        match start {
+            Some(u) => self.solve_from(ring, u),
+            None => self.solve(ring),
+        }
+    }
+
+    fn status(sol: &RollerSolution) -> (&SolveStatus, Option<&'static str>) {
+        (&sol.status, sol.note)
+    }
+
+    fn post(
+        &self,
+        plan: &mut PostPlan,
+        sol: &RollerSolution,
+        moment: f64,
+        warnings: &mut Vec<String>,
+        _: &dyn Fn(kontakt::Error) -> kontakt::Error,
+    ) -> kontakt::Result<Post> {
+        match plan {
+            PostPlan::Roller(p) => p.run_rib(self, sol, moment, warnings, |_, _, _, _, _| {}),
+            PostPlan::Ball(_) => Err(wrong_post("roller")),
+        }
+    }
+
+    fn out(&self, label: &'static str, sol: &RollerSolution) -> BearingOut {
+        let b = self.bearing();
+        let width = b.effective_length_mm / b.slices as f64;
+        let per_length = self
+            .cup_slice_loads()
+            .iter()
+            .chain(self.cone_slice_loads())
+            .copied()
+            .fold(0.0, f64::max)
+            / width;
+        let rollers = self.roller_loads();
+        BearingOut {
+            bearing_type: label,
+            elements: rollers.len(),
+            displacement: sol.displacement,
+            load: sol.load,
+            max_element_load_n: sol.max_roller_load_n,
+            loaded_elements: rollers.iter().filter(|r| r.outer_n > 0.0).count(),
+            max_rib_load_n: Some(self.max_rib_load_n()),
             max_load_per_length_n_per_mm: Some(per_length),
             load_zone_epsilon: sol.load_zone,
             stiffness: std::array::from_fn(|i| sol.stiffness[i][i]),
