@@ -995,17 +995,10 @@ fn roller_report<S: SliceSolver>(
     let width = b.effective_length_mm / ns as f64;
     let loads = solver.slice_loads();
     let approaches = solver.slice_approaches();
-    // pressures, rating and the most loaded slice's contacts: the one post-solve path of
-    // the report and the sweep's rows (crate::bearing_post)
-    let mut warnings = solver_warnings(&sol.status, sol.note)?;
-    let mut pressures = Pressures::default();
-    let post = RollerPost::new(b, roller_rating(case))?.run(
-        &*solver,
-        &sol,
-        applied_moment(load),
-        &mut warnings,
-        |j, peaks, inner, outer, is_most| pressures.add(j, peaks, inner, outer, is_most),
-    )?;
+    let moment = applied_moment(load);
+    let (post, warnings, mut pressures) = roller_post(case, b, &sol, |p, w, each| {
+        p.run(&*solver, &sol, moment, w, each)
+    })?;
     let most = pressures.most;
     let mut rows = Vec::with_capacity(b.rollers);
     for (j, r) in solver.roller_loads().iter().enumerate() {
@@ -1064,6 +1057,31 @@ pub(crate) fn roller_rating(case: &BearingCase) -> Option<&crate::bearing_rating
         }
         _ => None,
     }
+}
+
+/// The pressures, rating and most loaded contacts of a roller model's solve `sol`: the
+/// solver's warnings, then `run` ([`RollerPost::run`] or [`RollerPost::run_rib`]), the one
+/// post-solve path of the report and the sweep's rows ([`crate::bearing_post`]), with the
+/// pressures collected for the report.
+fn roller_post(
+    case: &BearingCase,
+    b: &RollerBearing,
+    sol: &RollerSolution,
+    run: impl FnOnce(
+        &mut RollerPost,
+        &mut Vec<String>,
+        &mut dyn FnMut(usize, [f64; 2], &[f64], &[f64], bool),
+    ) -> Result<Post>,
+) -> Result<(Post, Vec<String>, Pressures)> {
+    let mut warnings = solver_warnings(&sol.status, sol.note)?;
+    let mut pressures = Pressures::default();
+    let mut post = RollerPost::new(b, roller_rating(case))?;
+    let post = run(
+        &mut post,
+        &mut warnings,
+        &mut |j, peaks, inner, outer, most| pressures.add(j, peaks, inner, outer, most),
+    )?;
+    Ok((post, warnings, pressures))
 }
 
 /// The slice pressures the post gives a report: per roller `[inner, outer]` maxima and
@@ -1170,17 +1188,11 @@ fn rib_roller_report(
     let ns = b.slices;
     let width = b.effective_length_mm / ns as f64;
     let (cup, cone) = (solver.cup_slice_loads(), solver.cone_slice_loads());
-    // pressures, rating, the most loaded slice's and rib's contacts: the one post-solve
-    // path of the report and the sweep's rows (crate::bearing_post)
-    let mut warnings = solver_warnings(&sol.status, sol.note)?;
-    let mut pressures = Pressures::default();
-    let post = RollerPost::new(b, roller_rating(case))?.run_rib(
-        solver,
-        &sol,
-        applied_moment(load),
-        &mut warnings,
-        |j, peaks, inner, outer, is_most| pressures.add(j, peaks, inner, outer, is_most),
-    )?;
+    // the rib contact's size check included
+    let moment = applied_moment(load);
+    let (post, warnings, mut pressures) = roller_post(case, b, &sol, |p, w, each| {
+        p.run_rib(solver, &sol, moment, w, each)
+    })?;
     let most = pressures.most;
     let mut rows = Vec::with_capacity(b.rollers);
     for (j, r) in solver.roller_loads().iter().enumerate() {

@@ -366,6 +366,27 @@ impl BlockModel {
     }
 }
 
+/// `Element::solve_at` and `Element::status` of a solver with `solve` and `solve_from`
+/// whose solution has `status` and `note`.
+macro_rules! warm_solve {
+    () => {
+        fn solve_at(
+            &mut self,
+            ring: &RingLoad,
+            start: Option<[f64; 5]>,
+        ) -> kontakt::Result<Self::Solution> {
+            match start {
+                Some(u) => self.solve_from(ring, u),
+                None => self.solve(ring),
+            }
+        }
+
+        fn status(sol: &Self::Solution) -> (&SolveStatus, Option<&'static str>) {
+            (&sol.status, sol.note)
+        }
+    };
+}
+
 /// A planned solver of a sweep's block: a roller bearing (either slice model) or a ball
 /// bearing.
 trait Element {
@@ -378,16 +399,8 @@ trait Element {
     ) -> kontakt::Result<Self::Solution>;
     /// The solver's status and note.
     fn status(sol: &Self::Solution) -> (&SolveStatus, Option<&'static str>);
-    /// The post-solve path of the report ([`crate::bearing_post`]); `field` names a
-    /// geometry error by its case key.
-    fn post(
-        &self,
-        plan: &mut PostPlan,
-        sol: &Self::Solution,
-        moment: f64,
-        warnings: &mut Vec<String>,
-        field: &dyn Fn(kontakt::Error) -> kontakt::Error,
-    ) -> kontakt::Result<Post>;
+    /// The post-solve path of the report ([`crate::bearing_post`]).
+    fn post(&self, sol: &Self::Solution, a: PostArgs<'_>) -> kontakt::Result<Post>;
     /// The row's numbers but for the post's.
     fn out(&self, label: &'static str, sol: &Self::Solution) -> BearingOut;
 }
@@ -411,9 +424,13 @@ fn element_row<E: Element>(
     let mut warnings =
         solver_warnings(status, note).map_err(|e| (Status::Failed, e.to_string()))?;
     let plan = post.as_mut().map_err(|e| invalid(e.clone()))?;
-    let post = solver
-        .post(plan, &sol, applied_moment(ring), &mut warnings, field)
-        .map_err(invalid)?;
+    let args = PostArgs {
+        plan,
+        moment: applied_moment(ring),
+        warnings: &mut warnings,
+        field,
+    };
+    let post = solver.post(&sol, args).map_err(invalid)?;
     post.check_sizes(&mut warnings).map_err(invalid)?;
     let r = &post.rating;
     let out = BearingOut {
@@ -427,7 +444,35 @@ fn element_row<E: Element>(
     Ok((out, warnings))
 }
 
-/// A post planned for another bearing type (a defect: the plan makes both together).
+/// What a row's post takes besides the solution: the plan, the applied moment (N·mm), the
+/// row's warnings and the case key of a geometry error (`field`).
+struct PostArgs<'a> {
+    plan: &'a mut PostPlan,
+    moment: f64,
+    warnings: &'a mut Vec<String>,
+    field: &'a dyn Fn(kontakt::Error) -> kontakt::Error,
+}
+
+impl PostPlan {
+    /// The roller post, or an error for a post planned for a ball bearing (a defect: the
+    /// plan makes the solver and its post together).
+    fn roller(&mut self) -> kontakt::Result<&mut RollerPost> {
+        match self {
+            PostPlan::Roller(p) => Ok(p),
+            PostPlan::Ball(_) => Err(wrong_post("roller")),
+        }
+    }
+
+    /// The ball post (as [`PostPlan::roller`]).
+    fn ball(&mut self) -> kontakt::Result<&mut BallPost> {
+        match self {
+            PostPlan::Ball(p) => Ok(p),
+            PostPlan::Roller(_) => Err(wrong_post("ball")),
+        }
+    }
+}
+
+/// A post planned for another bearing type.
 fn wrong_post(label: &str) -> kontakt::Error {
     kontakt::Error::invalid(
         "bearing.type",
@@ -439,33 +484,12 @@ fn wrong_post(label: &str) -> kontakt::Error {
 impl<S: SliceSolver> Element for S {
     type Solution = RollerSolution;
 
-    fn solve_at(
-        &mut self,
-        ring: &RingLoad,
-        start: Option<[f64; 5]>,
-    ) -> kontakt::Result<RollerSolution> {
-        match start {
-            Some(u) => self.solve_from(ring, u),
-            None => self.solve(ring),
-        }
-    }
+    warm_solve!();
 
-    fn status(sol: &RollerSolution) -> (&SolveStatus, Option<&'static str>) {
-        (&sol.status, sol.note)
-    }
-
-    fn post(
-        &self,
-        plan: &mut PostPlan,
-        sol: &RollerSolution,
-        moment: f64,
-        warnings: &mut Vec<String>,
-        _: &dyn Fn(kontakt::Error) -> kontakt::Error,
-    ) -> kontakt::Result<Post> {
-        match plan {
-            PostPlan::Roller(p) => p.run(self, sol, moment, warnings, |_, _, _, _, _| {}),
-            PostPlan::Ball(_) => Err(wrong_post("roller")),
-        }
+    fn post(&self, sol: &RollerSolution, a: PostArgs<'_>) -> kontakt::Result<Post> {
+        a.plan
+            .roller()?
+            .run(self, sol, a.moment, a.warnings, |_, _, _, _, _| {})
     }
 
     fn out(&self, label: &'static str, sol: &RollerSolution) -> BearingOut {
@@ -474,19 +498,32 @@ impl<S: SliceSolver> Element for S {
         let per_length = self.slice_loads().iter().copied().fold(0.0, f64::max) / width;
         let rollers = self.roller_loads();
         let rib = rollers.iter().map(|r| r.rib_n).fold(0.0, f64::max);
-        BearingOut {
-            bearing_type: label,
-            elements: rollers.len(),
-            displacement: sol.displacement,
-            load: sol.load,
-            max_element_load_n: sol.max_roller_load_n,
-            loaded_elements: rollers.iter().filter(|r| r.outer_n > 0.0).count(),
-            max_rib_load_n: Some(rib),
-            max_load_per_length_n_per_mm: Some(per_length),
-            load_zone_epsilon: sol.load_zone,
-            stiffness: std::array::from_fn(|i| sol.stiffness[i][i]),
-            ..status_out(&sol.status)
-        }
+        let loaded = rollers.iter().filter(|r| r.outer_n > 0.0).count();
+        roller_row_out(label, sol, [rollers.len(), loaded], rib, per_length)
+    }
+}
+
+/// A roller model's row numbers from its solution `sol`: `[elements, loaded elements]`,
+/// the largest rib load (N) and slice load per length (N/mm).
+fn roller_row_out(
+    label: &'static str,
+    sol: &RollerSolution,
+    elements: [usize; 2],
+    rib: f64,
+    per_length: f64,
+) -> BearingOut {
+    BearingOut {
+        bearing_type: label,
+        elements: elements[0],
+        displacement: sol.displacement,
+        load: sol.load,
+        max_element_load_n: sol.max_roller_load_n,
+        loaded_elements: elements[1],
+        max_rib_load_n: Some(rib),
+        max_load_per_length_n_per_mm: Some(per_length),
+        load_zone_epsilon: sol.load_zone,
+        stiffness: std::array::from_fn(|i| sol.stiffness[i][i]),
+        ..status_out(&sol.status)
     }
 }
 
@@ -495,33 +532,12 @@ impl<S: SliceSolver> Element for S {
 impl Element for RibContactSolver {
     type Solution = RollerSolution;
 
-    fn solve_at(
-        &mut self,
-        ring: &RingLoad,
-        start: Option<[f64; 5]>,
-    ) -> kontakt::Result<RollerSolution> {
-        match start {
-            Some(u) => self.solve_from(ring, u),
-            None => self.solve(ring),
-        }
-    }
+    warm_solve!();
 
-    fn status(sol: &RollerSolution) -> (&SolveStatus, Option<&'static str>) {
-        (&sol.status, sol.note)
-    }
-
-    fn post(
-        &self,
-        plan: &mut PostPlan,
-        sol: &RollerSolution,
-        moment: f64,
-        warnings: &mut Vec<String>,
-        _: &dyn Fn(kontakt::Error) -> kontakt::Error,
-    ) -> kontakt::Result<Post> {
-        match plan {
-            PostPlan::Roller(p) => p.run_rib(self, sol, moment, warnings, |_, _, _, _, _| {}),
-            PostPlan::Ball(_) => Err(wrong_post("roller")),
-        }
+    fn post(&self, sol: &RollerSolution, a: PostArgs<'_>) -> kontakt::Result<Post> {
+        a.plan
+            .roller()?
+            .run_rib(self, sol, a.moment, a.warnings, |_, _, _, _, _| {})
     }
 
     fn out(&self, label: &'static str, sol: &RollerSolution) -> BearingOut {
@@ -535,52 +551,19 @@ impl Element for RibContactSolver {
             .fold(0.0, f64::max)
             / width;
         let rollers = self.roller_loads();
-        BearingOut {
-            bearing_type: label,
-            elements: rollers.len(),
-            displacement: sol.displacement,
-            load: sol.load,
-            max_element_load_n: sol.max_roller_load_n,
-            loaded_elements: rollers.iter().filter(|r| r.outer_n > 0.0).count(),
-            max_rib_load_n: Some(self.max_rib_load_n()),
-            max_load_per_length_n_per_mm: Some(per_length),
-            load_zone_epsilon: sol.load_zone,
-            stiffness: std::array::from_fn(|i| sol.stiffness[i][i]),
-            ..status_out(&sol.status)
-        }
+        let loaded = rollers.iter().filter(|r| r.outer_n > 0.0).count();
+        let rib = self.max_rib_load_n();
+        roller_row_out(label, sol, [rollers.len(), loaded], rib, per_length)
     }
 }
 
 impl Element for BallBearingSolver {
     type Solution = BallSolution;
 
-    fn solve_at(
-        &mut self,
-        ring: &RingLoad,
-        start: Option<[f64; 5]>,
-    ) -> kontakt::Result<BallSolution> {
-        match start {
-            Some(u) => self.solve_from(ring, u),
-            None => self.solve(ring),
-        }
-    }
+    warm_solve!();
 
-    fn status(sol: &BallSolution) -> (&SolveStatus, Option<&'static str>) {
-        (&sol.status, sol.note)
-    }
-
-    fn post(
-        &self,
-        plan: &mut PostPlan,
-        sol: &BallSolution,
-        moment: f64,
-        warnings: &mut Vec<String>,
-        field: &dyn Fn(kontakt::Error) -> kontakt::Error,
-    ) -> kontakt::Result<Post> {
-        match plan {
-            PostPlan::Ball(p) => p.run(self, sol, moment, warnings, field),
-            PostPlan::Roller(_) => Err(wrong_post("ball")),
-        }
+    fn post(&self, sol: &BallSolution, a: PostArgs<'_>) -> kontakt::Result<Post> {
+        a.plan.ball()?.run(self, sol, a.moment, a.warnings, a.field)
     }
 
     fn out(&self, label: &'static str, sol: &BallSolution) -> BearingOut {
