@@ -354,8 +354,9 @@ fn numbers_do_not_depend_on_the_thread_count() {
 
 /// No allocation per case: 16 and 256 cases (one block each) on the current thread make
 /// the same allocations but for a few of the table's; one per case would be 240 more. The
-/// TRB without a rating, and the CRB and the DGBB with theirs (the post-solve path: slice
-/// pressures, ISO 281/76 and ISO/TS 16281 lives, the contacts' validity check).
+/// TRB without a rating, and the CRB, the DGBB and the rib-contact TRB with theirs (the
+/// post-solve path: slice pressures, ISO 281/76 and ISO/TS 16281 lives, the contacts'
+/// validity check).
 #[test]
 fn a_case_allocates_nothing() {
     let pool = rayon::ThreadPoolBuilder::new()
@@ -367,6 +368,7 @@ fn a_case_allocates_nothing() {
         ("bearing_32008x.toml", 0.0, 5000.0),
         ("bearing_nu_crb.toml", 1000.0, 5000.0),
         ("bearing_6205.toml", 100.0, 3000.0),
+        ("bearing_rib_contact_60mm.toml", 1000.0, 6000.0),
     ] {
         // the 32008 X as it is (no rating), the others rated
         let base = match base {
