@@ -33,11 +33,13 @@
 #![forbid(unsafe_code)]
 
 pub mod ball_equilibrium;
+pub mod ball_speed;
 pub mod equilibrium;
 pub mod geometry;
 pub mod load_zone;
 mod newton;
 pub mod profile;
+pub mod speed;
 #[cfg(test)]
 mod test_support;
 

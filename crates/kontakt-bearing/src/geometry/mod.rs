@@ -17,7 +17,7 @@
 
 mod ball;
 
-pub use ball::{BallBearing, BallBearingKind};
+pub use ball::{BallBearing, BallBearingKind, STEEL_DENSITY_KG_M3};
 
 use crate::profile::Profile;
 use kontakt::{Error, Result};
