@@ -225,7 +225,7 @@ impl BallModel {
             let dmg = j * (dwr * wc * sb + wr * dwc * sb + wr * wc * cb * dbeta);
             dto[k] = 2.0 * dmg / self.d;
         }
-        let mg = j * wr * wc * sb;
+        let mg = j * wr * wc * sb + 0.0; // + 0: no −0 in the report
         SpeedTerms {
             fc: centrifugal_force(self.mass, self.dm, wc),
             to: 2.0 * mg / self.d,
@@ -742,13 +742,19 @@ impl BallSpeedSolver {
         }
         let model = self.model;
         let qs = &self.qs;
+        let states = &self.state;
+        let psi_first = qs.bearing().first_ball_azimuth_rad;
         let load_zone = load_zone(&u, |psi| {
             let fr = qs.frame(psi);
             let a = Vector2::new(offset[0] + fr.gr.dot(&u), offset[1] + fr.gz.dot(&u));
             if model.at_rest() {
                 a.norm() - a0
             } else {
-                model.solve(a, None).delta[0]
+                // warm from the nearest ball: with the gyroscopic friction a ball at the
+                // edge of the load zone may also rest lifted off; follow the solution's
+                let j = ((psi - psi_first) * z / (2.0 * PI)).round().rem_euclid(z) as usize;
+                let warm = states.get(j).map(|s| s.x);
+                model.solve(a, warm).delta[0]
             }
         });
         BallSolution {

@@ -58,12 +58,17 @@ use kontakt::hertz::validity::point_size;
 use kontakt::solve::{SolveStatus, Termination};
 use kontakt::{Error, Result};
 use kontakt_bearing::ball_equilibrium::BallBearingSolver;
+use kontakt_bearing::ball_speed::{BallSpeedSolver, RaceControl};
+use kontakt_bearing::speed::RingSpeeds;
 use kontakt_bearing::equilibrium::{Dof, RingLoad, RollerBearingSolver};
 use kontakt_bearing::geometry::{
     BallBearing, BallBearingKind, DEFAULT_SLICES, RollerBearing, RollerBearingKind,
 };
 use kontakt_bearing::profile::{Profile, TabulatedProfile};
 use serde::{Deserialize, Serialize};
+
+mod speed;
+pub use speed::BearingSpeedSpec;
 
 /// The contact modulus of two steel bodies (E = 210 GPa, ν = 0.3), MPa: the default of the
 /// design-load profiles.
@@ -86,6 +91,9 @@ pub struct BearingCase {
     pub bearing: BearingSpec,
     /// The load of the inner ring.
     pub load: BearingLoadSpec,
+    /// `[speed]`: the ring speeds in r/min (default at rest), [`BearingSpeedSpec`].
+    #[serde(default, skip_serializing_if = "BearingSpeedSpec::at_rest")]
+    pub speed: BearingSpeedSpec,
 }
 
 /// `[bearing]`: the type (`type = "cylindrical" | "tapered" | "thrust"`) and its internal
@@ -148,6 +156,10 @@ pub struct BallSpec {
     /// The rings' material (`e_mpa`, `nu`), default steel (210 000 MPa, 0.3).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub ring_material: Option<MaterialSpec>,
+    /// The balls' density, kg/m³ (default steel 7850; silicon nitride about 3200, with its
+    /// `ball_material`): their centrifugal force and gyroscopic moment at speed.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ball_density_kg_m3: Option<f64>,
 }
 
 /// The internal geometry of a roller bearing. Lengths in mm, angles in degrees.
@@ -523,8 +535,9 @@ pub struct BearingReport {
     /// How the equilibrium solve ended.
     pub solver: BearingSolverEcho,
     /// The load-zone parameter ε (Sjövall 1933) from the ring displacement; absent without
-    /// a radial displacement, for thrust bearings and for ball bearings. Exact for rigid
-    /// rings without tilt.
+    /// a radial displacement and for thrust bearings. Exact for rigid rings without tilt.
+    /// Ball bearings: from the balls' approach around the ring (at speed the inner
+    /// contact's), `docs/bearing-model.md` §9.5.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub load_zone_epsilon: Option<f64>,
     /// The names of the degrees of freedom, the order of the stiffness matrix's rows and
@@ -538,6 +551,9 @@ pub struct BearingReport {
     /// Results to treat with care. Absent when none applies.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<String>,
+    /// The ring speeds `[inner, outer]`, r/min, when not at rest (`[speed]`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ring_speeds_rpm: Option<[f64; 2]>,
     /// The Hertz contacts of the most loaded ball, inner and outer raceway, sized for the
     /// validity check; none for a roller bearing (no Hertz or half-space contact is sized
     /// in the slice model: the check has only the finiteness of the report to check). Not
@@ -616,6 +632,10 @@ pub struct BallPart {
     pub max_outer_pressure_mpa: f64,
     /// Per ball, in azimuth order.
     pub ball_loads: Vec<BallRow>,
+    /// At speed: the race-control assumption of the balls' kinematics and gyroscopic
+    /// moment, `"outer"` (Jones 1960; `docs/bearing-model.md` §9).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub race_control: Option<&'static str>,
 }
 
 /// One ball of the report.
@@ -623,10 +643,11 @@ pub struct BallPart {
 pub struct BallRow {
     /// Azimuth ψ from x toward y, degrees.
     pub azimuth_deg: f64,
-    /// The ball's load Q, N: the same on both raceways (no speed effects).
+    /// The ball's load Q, N: the same on both raceways at rest; at speed the inner
+    /// raceway's (`inner_load_n`), the load the ring feels.
     pub load_n: f64,
-    /// The loaded contact angle α, degrees, the same at both raceways (no speed effects;
-    /// negative: a deep groove's other shoulder). The balls carry the applied force as
+    /// The loaded contact angle α, degrees, the same at both raceways at rest (negative: a
+    /// deep groove's other shoulder); at speed the inner one (`inner_contact_angle_deg`). The balls carry the applied force as
     /// `Σ Q (cos α cos ψ, cos α sin ψ, sin α)`.
     pub contact_angle_deg: f64,
     /// The total approach of both contacts, mm (negative: lifted off by that much).
@@ -635,6 +656,20 @@ pub struct BallRow {
     pub inner_max_pressure_mpa: f64,
     /// Maximum Hertz pressure on the outer raceway, MPa.
     pub outer_max_pressure_mpa: f64,
+    /// Inner raceway load Q_i, N (at rest: `load_n`).
+    pub inner_load_n: f64,
+    /// Outer raceway load Q_o, N (at rest: `load_n`; at speed it carries the centrifugal
+    /// force too).
+    pub outer_load_n: f64,
+    /// Inner contact angle α_i, degrees (at rest: `contact_angle_deg`).
+    pub inner_contact_angle_deg: f64,
+    /// Outer contact angle α_o, degrees (at rest: `contact_angle_deg`; it falls with speed).
+    pub outer_contact_angle_deg: f64,
+    /// Centrifugal force of the ball `F_c = ½ m d_m ω_c²`, N (0 at rest).
+    pub centrifugal_force_n: f64,
+    /// Gyroscopic moment of the ball `M_g = J ω_R ω_c sin β`, N·mm (0 at rest), held by
+    /// the outer contact (outer-race control).
+    pub gyroscopic_moment_nmm: f64,
 }
 
 checked_report!(BearingReport);
@@ -822,6 +857,12 @@ pub(crate) enum Planned {
         spec: Box<BallSpec>,
         keys: GrooveKeys,
     },
+    /// A ball bearing at speed (`[speed]` not at rest).
+    BallAtSpeed {
+        solver: Box<BallSpeedSolver>,
+        spec: Box<BallSpec>,
+        keys: GrooveKeys,
+    },
 }
 
 /// Plan the solver of `case`'s bearing: errors named by the case key.
@@ -838,12 +879,20 @@ pub(crate) fn plan(case: &BearingCase) -> Result<(Planned, &'static str)> {
         BearingSpec::Tapered(s) => (RollerBearingKind::Tapered, s, "tapered"),
         BearingSpec::Thrust(s) => (RollerBearingKind::Thrust, s, "thrust"),
         BearingSpec::DeepGrooveBall(s) => {
-            return plan_ball(BallBearingKind::DeepGroove, s, "deep_groove_ball");
+            let speeds = case.speed.ring_speeds()?;
+            return plan_ball(BallBearingKind::DeepGroove, s, "deep_groove_ball", speeds);
         }
         BearingSpec::AngularContactBall(s) => {
-            return plan_ball(BallBearingKind::AngularContact, s, "angular_contact_ball");
+            let speeds = case.speed.ring_speeds()?;
+            return plan_ball(
+                BallBearingKind::AngularContact,
+                s,
+                "angular_contact_ball",
+                speeds,
+            );
         }
     };
+    case.speed.require_at_rest(label)?;
     let bearing = roller_bearing(kind, s, label)?;
     let solver = RollerBearingSolver::new(bearing).map_err(map_bearing_field)?;
     Ok((Planned::Roller(solver), label))
@@ -863,6 +912,9 @@ pub(crate) fn solve_planned(
         Planned::Roller(solver) => roller_report(case, label, solver, &load, start),
         Planned::Ball { solver, spec, keys } => {
             ball_report(case, label, solver, spec, keys, &load, start)
+        }
+        Planned::BallAtSpeed { solver, spec, keys } => {
+            speed::ball_speed_report(case, label, solver, spec, keys, &load, start)
         }
     }
 }
@@ -1039,6 +1091,7 @@ fn report(
             residual: 0.0,
         },
         load_zone_epsilon: None,
+        ring_speeds_rpm: None,
         stiffness_dofs: DOFS,
         stiffness_matrix: [[0.0; 5]; 5],
         stiffness_units: stiffness_units(),
@@ -1141,6 +1194,9 @@ fn ball_bearing(
     if let Some(m) = &s.ring_material {
         b.ring_material = material(m, "bearing.ring_material")?;
     }
+    if let Some(rho) = s.ball_density_kg_m3 {
+        b.ball_density_kg_m3 = rho;
+    }
     b.validate()
         .map_err(|e| map_ball_field(e, s, &keys, [f_i, f_o]))?;
     Ok((b, keys))
@@ -1201,11 +1257,18 @@ fn plan_ball(
     kind: BallBearingKind,
     s: &BallSpec,
     label: &'static str,
+    speeds: Option<RingSpeeds>,
 ) -> Result<(Planned, &'static str)> {
     let (bearing, keys) = ball_bearing(kind, s, label)?;
     let f = [bearing.inner_osculation, bearing.outer_osculation];
-    let solver = BallBearingSolver::new(bearing).map_err(|e| map_ball_field(e, s, &keys, f))?;
     let spec = Box::new(s.clone());
+    if let Some(speeds) = speeds {
+        let solver = BallSpeedSolver::new(bearing, speeds, RaceControl::Outer)
+            .map_err(|e| map_ball_field(e, s, &keys, f))?;
+        let solver = Box::new(solver);
+        return Ok((Planned::BallAtSpeed { solver, spec, keys }, label));
+    }
+    let solver = BallBearingSolver::new(bearing).map_err(|e| map_ball_field(e, s, &keys, f))?;
     Ok((Planned::Ball { solver, spec, keys }, label))
 }
 
@@ -1220,10 +1283,6 @@ fn ball_report(
     load: &RingLoad,
     start: Option<[f64; 5]>,
 ) -> Result<BearingReport> {
-    let f = {
-        let b = solver.bearing();
-        [b.inner_osculation, b.outer_osculation]
-    };
     let sol = match start {
         Some(u) => solver.solve_from(load, u),
         None => solver.solve(load),
@@ -1241,29 +1300,16 @@ fn ball_report(
             approach_mm: q.approach_mm,
             inner_max_pressure_mpa: q.inner_max_pressure_mpa,
             outer_max_pressure_mpa: q.outer_max_pressure_mpa,
+            inner_load_n: q.load_n,
+            outer_load_n: q.load_n,
+            inner_contact_angle_deg: q.contact_angle_rad.to_degrees(),
+            outer_contact_angle_deg: q.contact_angle_rad.to_degrees(),
+            centrifugal_force_n: 0.0,
+            gyroscopic_moment_nmm: 0.0,
         })
         .collect();
-    // The pressures are those of the library's Hertz contacts at the stiffness contact
-    // angle: size the most loaded ball's two contacts against the ball and the groove.
-    let mut contacts = Vec::new();
-    if sol.max_ball_load_n > 0.0 {
-        let pair = b
-            .contacts(b.stiffness_contact_angle())
-            .map_err(|e| map_ball_field(e, s, keys, f))?;
-        for (c, ring, key) in [
-            (&pair[0], "inner", keys.inner),
-            (&pair[1], "outer", keys.outer),
-        ] {
-            let hs = c.solve_force(sol.max_ball_load_n)?;
-            contacts.push(
-                ContactSize::new(
-                    Size::Hertz(point_size(c.geometry(), &hs)),
-                    ["bearing.ball_diameter_mm", &format!("bearing.{key}")],
-                )
-                .at(format!("the most loaded ball on the {ring} raceway")),
-            );
-        }
-    }
+    let q = sol.max_ball_load_n;
+    let contacts = ball_contacts(b, s, keys, [q, q])?;
     let elements = BearingElements::Balls(BallPart {
         balls: b.balls,
         free_contact_angle_deg: b.free_contact_angle().to_degrees(),
@@ -1272,11 +1318,50 @@ fn ball_report(
         max_inner_pressure_mpa: sol.max_pressure_mpa[0],
         max_outer_pressure_mpa: sol.max_pressure_mpa[1],
         ball_loads: rows,
+        race_control: None,
     });
     let mut report = report(case, label, elements, sol.displacement, sol.load);
     report.solver = solver_echo(&sol.status);
+    report.load_zone_epsilon = sol.load_zone;
     report.stiffness_matrix = sol.stiffness;
     report.warnings = warnings;
     report.contacts = contacts;
     Ok(report)
+}
+
+/// The Hertz contacts of the most loaded ball on the inner and on the outer raceway
+/// (`loads`, N), sized for the validity check against the ball and the groove. The
+/// pressures are those of the library's Hertz contacts at the stiffness contact angle.
+fn ball_contacts(
+    b: &BallBearing,
+    s: &BallSpec,
+    keys: &GrooveKeys,
+    loads: [f64; 2],
+) -> Result<Vec<ContactSize>> {
+    let mut contacts = Vec::new();
+    if loads[0].max(loads[1]) > 0.0 {
+        let f = [b.inner_osculation, b.outer_osculation];
+        let pair = b
+            .contacts(b.stiffness_contact_angle())
+            .map_err(|e| map_ball_field(e, s, keys, f))?;
+        for ((c, ring, key), q) in [
+            (&pair[0], "inner", keys.inner),
+            (&pair[1], "outer", keys.outer),
+        ]
+        .into_iter()
+        .zip(loads)
+        {
+            if q > 0.0 {
+                let hs = c.solve_force(q)?;
+                contacts.push(
+                    ContactSize::new(
+                        Size::Hertz(point_size(c.geometry(), &hs)),
+                        ["bearing.ball_diameter_mm", &format!("bearing.{key}")],
+                    )
+                    .at(format!("the most loaded ball on the {ring} raceway")),
+                );
+            }
+        }
+    }
+    Ok(contacts)
 }
