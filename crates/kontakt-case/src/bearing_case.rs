@@ -92,7 +92,7 @@ pub struct BearingCase {
     /// The load of the inner ring.
     pub load: BearingLoadSpec,
     /// `[speed]`: the ring speeds in r/min (default at rest), [`BearingSpeedSpec`].
-    #[serde(default, skip_serializing_if = "BearingSpeedSpec::at_rest")]
+    #[serde(default)]
     pub speed: BearingSpeedSpec,
 }
 
