@@ -41,10 +41,7 @@ use crate::ball_equilibrium::{BallBearingSolver, BallSolution};
 use crate::equilibrium::{RingLoad, free_and_target, load_scale, warm_start};
 use crate::geometry::{BallBearing, BallBearingKind};
 use crate::newton::{ConvexRing, relative_residual, to_rows};
-use crate::speed::{
-    ElementKinematics, RingSpeeds, centrifugal_force, density_n_s2_per_mm4, kinematics,
-    outer_race_control_pitch,
-};
+use crate::speed::{ElementKinematics, RingSpeeds, centrifugal_force, density_n_s2_per_mm4};
 use kontakt::Result;
 use kontakt::solve::{SolveStatus, Termination};
 use nalgebra::{Matrix2, Matrix5, Vector2, Vector5};
@@ -154,8 +151,8 @@ struct Eval {
     st: SpeedTerms,
     q: [f64; 2],
     delta: [f64; 2],
-    alpha: [f64; 2],
     n_i: Vector2<f64>,
+    n_o: Vector2<f64>,
 }
 
 /// A Hertz contact along `w` (mm) with free length `rho`: the approach, the force `Q w/|w|`
@@ -180,11 +177,17 @@ impl BallModel {
         self.speeds.is_zero()
     }
 
-    /// F_c, T_o, M_g and the kinematics at the contact angles `(α_i, α_o)`, with their
-    /// derivatives (`docs/bearing-model.md` §9.2).
-    fn speed_terms(&self, ai: f64, ao: f64) -> SpeedTerms {
+    /// F_c, T_o, M_g and the kinematics at the contact angles `(α_i, α_o)`, given as the
+    /// unit normals `n_i = (cos α_i, sin α_i)` and `n_o`, with their derivatives by
+    /// `(α_i, α_o)` (`docs/bearing-model.md` §9.2). The same formulas as
+    /// [`crate::speed::kinematics`], written with the normals' components (no
+    /// trigonometric function in the ball's Newton).
+    fn speed_terms(&self, n_i: Vector2<f64>, n_o: Vector2<f64>) -> SpeedTerms {
         let g = self.d / self.dm;
-        let beta = outer_race_control_pitch(g, ao);
+        let (ci, si, co, so) = (n_i[0], n_i[1], n_o[0], n_o[1]);
+        // outer-race control: tan β = sin α_o/(cos α_o + γ)
+        let h = so.hypot(co + g);
+        let (sb, cb) = (so / h, (co + g) / h);
         if self.at_rest() {
             return SpeedTerms {
                 fc: 0.0,
@@ -193,27 +196,30 @@ impl BallModel {
                 kin: ElementKinematics {
                     cage_rad_s: 0.0,
                     element_rad_s: 0.0,
-                    pitch_rad: beta,
+                    pitch_rad: sb.atan2(cb),
                 },
                 dfc: [0.0; 2],
                 dto: [0.0; 2],
             };
         }
-        let (so, co) = ao.sin_cos();
-        let (si, ci) = ai.sin_cos();
-        let db = (1.0 + g * co) / (1.0 + 2.0 * g * co + g * g);
-        let (sbo, cbo) = (ao - beta).sin_cos();
-        let (sbi, cbi) = (ai - beta).sin_cos();
+        let db = (1.0 + g * co) / (h * h);
+        // cos and sin of α_o − β and α_i − β
+        let (cbo, sbo) = (co * cb + so * sb, so * cb - co * sb);
+        let (cbi, sbi) = (ci * cb + si * sb, si * cb - ci * sb);
         let (uo, ui) = (1.0 + g * co, 1.0 - g * ci);
         let (xo, xi) = (cbo / uo, cbi / ui);
         // derivatives of X_o, X_i by (α_i, α_o)
         let dxo = [0.0, (-sbo * (1.0 - db) * uo + cbo * g * so) / (uo * uo)];
         let dxi = [(-sbi * ui - cbi * g * si) / (ui * ui), sbi * db / ui];
-        let kin = kinematics(self.speeds, self.d, self.dm, ai, ao, beta);
         let (wi, wo) = (self.speeds.inner_rad_s, self.speeds.outer_rad_s);
-        let (wc, wr) = (kin.cage_rad_s, kin.element_rad_s);
         let s = xo + xi;
-        let (sb, cb) = beta.sin_cos();
+        let wc = (wi * xo + wo * xi) / s;
+        let wr = (wo - wi) / (g * s);
+        let kin = ElementKinematics {
+            cage_rad_s: wc,
+            element_rad_s: wr,
+            pitch_rad: sb.atan2(cb),
+        };
         let j = if self.gyroscopic { self.inertia } else { 0.0 };
         let mut dfc = [0.0; 2];
         let mut dto = [0.0; 2];
@@ -240,9 +246,7 @@ impl BallModel {
     fn eval(&self, a: Vector2<f64>, x: Vector2<f64>) -> Eval {
         let (d_o, q_o, n_o, h_o, l_o) = contact(self.k[1], self.rho[1], x);
         let (d_i, q_i, n_i, h_i, l_i) = contact(self.k[0], self.rho[0], a - x);
-        let ao = n_o[1].atan2(n_o[0]);
-        let ai = n_i[1].atan2(n_i[0]);
-        let st = self.speed_terms(ai, ao);
+        let st = self.speed_terms(n_i, n_o);
         let t_o = Vector2::new(-n_o[1], n_o[0]);
         let t_i = Vector2::new(-n_i[1], n_i[0]);
         let e_r = Vector2::new(1.0, 0.0);
@@ -259,8 +263,8 @@ impl BallModel {
             st,
             q: [q_i, q_o],
             delta: [d_i, d_o],
-            alpha: [ai, ao],
             n_i,
+            n_o,
         }
     }
 
@@ -276,8 +280,7 @@ impl BallModel {
             0.5 * delta
         };
         if !self.at_rest() {
-            let alpha = n[1].atan2(n[0]);
-            let fc = self.speed_terms(alpha, alpha).fc;
+            let fc = self.speed_terms(n, n).fc;
             d_o = d_o.max((fc / self.k[1]).powf(2.0 / 3.0));
         }
         n * (self.rho[1] + d_o)
@@ -356,7 +359,7 @@ impl BallModel {
             valid: true,
             q: e.q,
             delta: e.delta,
-            alpha: e.alpha,
+            alpha: [e.n_i[1].atan2(e.n_i[0]), e.n_o[1].atan2(e.n_o[0])],
             fc: e.st.fc,
             mg: e.st.mg,
             kin: [

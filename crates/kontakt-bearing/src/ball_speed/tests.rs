@@ -3,6 +3,7 @@
 
 use super::*;
 use crate::equilibrium::RingLoad;
+use crate::speed::{kinematics, outer_race_control_pitch};
 
 /// The 6205-class deep-groove ball bearing of the quasi-static tests.
 fn dgbb() -> BallBearing {
@@ -91,15 +92,25 @@ fn zero_speed_reproduces_the_quasi_static_solution() {
 fn speed_term_derivatives_match_central_differences() {
     let s = BallSpeedSolver::new(acbb(), rpm(30_000.0), RaceControl::Outer).unwrap();
     let m = s.model;
-    let (ai, ao) = (0.8, 0.6);
-    let st = m.speed_terms(ai, ao);
+    let (ai, ao) = (0.8_f64, 0.6_f64);
+    let at = |ai: f64, ao: f64| {
+        let n = |a: f64| Vector2::new(a.cos(), a.sin());
+        m.speed_terms(n(ai), n(ao))
+    };
+    let st = at(ai, ao);
+    // the same kinematics as crate::speed's
+    let g = m.d / m.dm;
+    let k = kinematics(m.speeds, m.d, m.dm, ai, ao, outer_race_control_pitch(g, ao));
+    assert!(rel(st.kin.cage_rad_s, k.cage_rad_s) < 1e-14);
+    assert!(rel(st.kin.element_rad_s, k.element_rad_s) < 1e-14);
+    assert!(rel(st.kin.pitch_rad, k.pitch_rad) < 1e-14);
     assert!(st.fc > 0.0 && st.to.abs() > 0.0);
     let h = 1e-6;
     for k in 0..2 {
         let (p, q) = if k == 0 {
-            (m.speed_terms(ai + h, ao), m.speed_terms(ai - h, ao))
+            (at(ai + h, ao), at(ai - h, ao))
         } else {
-            (m.speed_terms(ai, ao + h), m.speed_terms(ai, ao - h))
+            (at(ai, ao + h), at(ai, ao - h))
         };
         let dfc = (p.fc - q.fc) / (2.0 * h);
         let dto = (p.to - q.to) / (2.0 * h);
