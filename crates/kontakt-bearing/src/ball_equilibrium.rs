@@ -359,7 +359,7 @@ impl BallBearingSolver {
             note = Some("every ball is lifted off: zero load");
         }
         let (offset, a0) = (self.offset, self.a0);
-        let load_zone = crate::ball_speed::load_zone(&u, |psi| {
+        let load_zone = crate::load_zone::load_zone(&u, |psi| {
             let fr = frame_at(self.centre, psi);
             (offset[0] + fr.gr.dot(&u)).hypot(offset[1] + fr.gz.dot(&u)) - a0
         });

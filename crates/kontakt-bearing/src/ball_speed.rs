@@ -40,7 +40,11 @@
 use crate::ball_equilibrium::{BallBearingSolver, BallSolution};
 use crate::equilibrium::{RingLoad, free_and_target, load_scale, warm_start};
 use crate::geometry::{BallBearing, BallBearingKind};
-use crate::newton::{ConvexRing, relative_residual, to_rows};
+use crate::load_zone::load_zone;
+use crate::newton::{
+    BEYOND_LIMIT, ConvexRing, beyond_limit, newton_system, no_decrease, reaction_scale,
+    relative_residual, to_rows,
+};
 use crate::speed::{ElementKinematics, RingSpeeds, centrifugal_force, density_n_s2_per_mm4};
 use kontakt::Result;
 use kontakt::solve::{SolveStatus, Termination};
@@ -374,60 +378,6 @@ impl BallModel {
     }
 }
 
-/// The load-zone parameter ε (Sjövall 1933) from the approach `d(ψ)` of a ball at the
-/// azimuth ψ (rad, > 0 loaded) and the ring displacement u: along the radial displacement
-/// ψ₀, `ε = (1 − cos ψ_l)/2` with `d(ψ₀ ± ψ_l) = 0` when the ring is partly loaded, and
-/// `d(ψ₀)/(d(ψ₀) − d(ψ₀ + π))` when it is loaded all round (the roller bearings' linear
-/// form, continuous at ε = 1). `None` without a radial displacement or with no ball loaded
-/// at ψ₀.
-pub(crate) fn load_zone(u: &Vector5<f64>, mut d: impl FnMut(f64) -> f64) -> Option<f64> {
-    let ur = u[0].hypot(u[1]);
-    // a radial displacement at the round-off level of the axial one is none
-    let tiny = 1e-12 * u[0].abs().max(u[1].abs()).max(u[2].abs());
-    if !(ur > tiny) {
-        return None;
-    }
-    let psi0 = u[1].atan2(u[0]);
-    let (d0, dpi) = (d(psi0), d(psi0 + PI));
-    if !(d0 > 0.0 && d0 > dpi) {
-        return None;
-    }
-    if dpi >= 0.0 {
-        return Some(d0 / (d0 - dpi));
-    }
-    // Illinois regula falsi for d(ψ₀ + t) = 0 on (0, π)
-    let (mut a, mut fa, mut b, mut fb) = (0.0, d0, PI, dpi);
-    let mut side = 0;
-    let mut t = 0.5 * PI;
-    for _ in 0..200 {
-        t = (a * fb - b * fa) / (fb - fa);
-        let ft = d(psi0 + t);
-        if ft == 0.0 || b - a < 1e-15 {
-            break;
-        }
-        if ft < 0.0 {
-            b = t;
-            fb = ft;
-            if side == -1 {
-                fa *= 0.5;
-            }
-            side = -1;
-        } else {
-            a = t;
-            fa = ft;
-            if side == 1 {
-                fb *= 0.5;
-            }
-            side = 1;
-        }
-        if ft.abs() <= 1e-15 * d0 {
-            break;
-        }
-    }
-    let eps = 0.5 * (1.0 - t.cos());
-    (eps.is_finite() && eps > 0.0).then_some(eps)
-}
-
 /// The solver of a ball bearing at speed.
 #[derive(Debug, Clone)]
 pub struct BallSpeedSolver {
@@ -448,7 +398,11 @@ impl BallSpeedSolver {
     ///
     /// # Errors
     /// As [`BallBearing::validate`] and [`RingSpeeds::validate`].
-    pub fn new(bearing: BallBearing, speeds: RingSpeeds, race_control: RaceControl) -> Result<Self> {
+    pub fn new(
+        bearing: BallBearing,
+        speeds: RingSpeeds,
+        race_control: RaceControl,
+    ) -> Result<Self> {
         speeds.validate()?;
         let qs = BallBearingSolver::new(bearing)?;
         let b = qs.bearing();
@@ -599,9 +553,7 @@ impl BallSpeedSolver {
         let probe = *self.qs.probe();
         let (mut f, mut k, mut balls_ok) = self.evaluate(&u);
         if f_ref == 0.0 {
-            f_ref = (0..5)
-                .map(|i| if i < 3 { f[i].abs() } else { f[i].abs() / r })
-                .fold(0.0, f64::max);
+            f_ref = reaction_scale(&f, r);
         }
         let (_, scale) = self.qs.reference(f_ref);
         let merit = |f: &Vector5<f64>| -> f64 {
@@ -614,39 +566,19 @@ impl BallSpeedSolver {
                 .sum()
         };
         let mut res = relative_residual(&f, &target, &free, f_ref, r);
-        let mut termination = Termination::MaxIterations;
-        let mut note = None;
-        let mut iterations = 0;
-        if f_ref == 0.0 {
-            termination = Termination::Converged;
-        }
-        let mut at_u = true;
+        // no load and no reaction: nothing to iterate
+        let mut termination = match f_ref {
+            0.0 => Termination::Converged,
+            _ => Termination::MaxIterations,
+        };
+        let (mut note, mut iterations, mut at_u) = (None, 0, true);
         while termination == Termination::MaxIterations && iterations < self.max_iterations {
             if res <= self.tolerance && balls_ok {
                 termination = Termination::Converged;
                 break;
             }
             iterations += 1;
-            let mut rhs = Vector5::zeros();
-            let mut jac = k;
-            for i in 0..5 {
-                if free[i] {
-                    rhs[i] = target[i] - f[i];
-                    if !(k[(i, i)] > 1e-6 * scale * probe[(i, i)]) {
-                        jac[(i, i)] += scale * probe[(i, i)];
-                    }
-                }
-            }
-            for i in 0..5 {
-                jac[(i, i)] += 1e-12 * scale * probe[(i, i)];
-                if !free[i] {
-                    for j in 0..5 {
-                        jac[(i, j)] = 0.0;
-                        jac[(j, i)] = 0.0;
-                    }
-                    jac[(i, i)] = 1.0;
-                }
-            }
+            let (jac, rhs, _) = newton_system(&k, &f, &target, &free, scale, &probe);
             let Some(step) = jac.lu().solve(&rhs) else {
                 termination = Termination::Diverged;
                 note = Some("the Newton system is singular: the load cannot be carried");
@@ -672,21 +604,12 @@ impl BallSpeedSolver {
             }
             if !accepted {
                 at_u = false;
-                termination = if res <= 1e3 * self.tolerance {
-                    Termination::Stagnated
-                } else {
-                    Termination::Diverged
-                };
-                note = Some(
-                    "the line search found no decrease (round-off floor or a load the bearing cannot carry)",
-                );
+                (termination, note) = no_decrease(res, self.tolerance);
                 break;
             }
-            if (0..3).any(|i| u[i].abs() > limit) || (3..5).any(|i| (u[i] * r).abs() > limit) {
+            if beyond_limit(&u, r, limit) {
                 termination = Termination::Diverged;
-                note = Some(
-                    "the ring displacement exceeds the ball diameter: the load cannot be carried (e.g. a moment or radial load a single row cannot balance; hold the tilts)",
-                );
+                note = Some(BEYOND_LIMIT);
                 break;
             }
         }

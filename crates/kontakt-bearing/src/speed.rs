@@ -123,44 +123,24 @@ pub fn kinematics(
     }
 }
 
-/// Cage speed ω_c (rad/s) of elements with one contact angle α (rad) on both raceways
-/// (rollers; balls without speed effects): `½[ω_i (1 − γ cos α) + ω_o (1 + γ cos α)]`,
-/// `γ = D/d_m` (Harris & Kotzalas 2006).
-pub fn cage_speed(
+/// The kinematics of elements with one contact angle α (rad) on both raceways and their
+/// axis pitched by α (rollers; balls without speed effects): the cage speed
+/// `ω_c = ½[ω_i (1 − γ cos α) + ω_o (1 + γ cos α)]` and the element's speed about its own
+/// axis relative to the cage `ω_R = (d_m/2D)(1 − γ² cos² α)(ω_o − ω_i)`, rad/s, `γ = D/d_m`
+/// (Harris & Kotzalas 2006). For a tapered roller use its mean diameter.
+pub fn one_angle_kinematics(
     speeds: RingSpeeds,
     element_diameter_mm: f64,
     pitch_diameter_mm: f64,
     alpha: f64,
-) -> f64 {
-    kinematics(
-        speeds,
-        element_diameter_mm,
-        pitch_diameter_mm,
-        alpha,
-        alpha,
-        alpha,
-    )
-    .cage_rad_s
+) -> ElementKinematics {
+    let (d, dm) = (element_diameter_mm, pitch_diameter_mm);
+    kinematics(speeds, d, dm, alpha, alpha, alpha)
 }
 
-/// The element's speed ω_R (rad/s) about its own axis relative to the cage, one contact
-/// angle α (rad) on both raceways: `(d_m/2D)(1 − γ² cos² α)(ω_o − ω_i)`, `γ = D/d_m`
-/// (Harris & Kotzalas 2006). For a tapered roller use its mean diameter.
-pub fn element_speed(
-    speeds: RingSpeeds,
-    element_diameter_mm: f64,
-    pitch_diameter_mm: f64,
-    alpha: f64,
-) -> f64 {
-    kinematics(
-        speeds,
-        element_diameter_mm,
-        pitch_diameter_mm,
-        alpha,
-        alpha,
-        alpha,
-    )
-    .element_rad_s
+/// The cage speed ω_c (rad/s) of [`one_angle_kinematics`].
+pub fn cage_speed(speeds: RingSpeeds, d_mm: f64, pitch_mm: f64, alpha: f64) -> f64 {
+    one_angle_kinematics(speeds, d_mm, pitch_mm, alpha).cage_rad_s
 }
 
 /// The pitch β (rad) of a ball's axis under outer-race control (no spin about the outer
@@ -200,13 +180,13 @@ mod tests {
             let s = RingSpeeds::new(1000.0, 0.0);
             assert!(rel(cage_speed(s, d, dm, alpha), 500.0 * (1.0 - g)) < 1e-14);
             let wr = dm / (2.0 * d) * (1.0 - g * g) * (-1000.0);
-            assert!(rel(element_speed(s, d, dm, alpha), wr) < 1e-14);
+            assert!(rel(one_angle_kinematics(s, d, dm, alpha).element_rad_s, wr) < 1e-14);
             let s = RingSpeeds::new(0.0, 1000.0);
             assert!(rel(cage_speed(s, d, dm, alpha), 500.0 * (1.0 + g)) < 1e-14);
             // both rings together: a rigid rotation, the element does not turn in the cage
             let s = RingSpeeds::new(700.0, 700.0);
             assert!(rel(cage_speed(s, d, dm, alpha), 700.0) < 1e-14);
-            assert!(element_speed(s, d, dm, alpha).abs() < 1e-12);
+            assert!(one_angle_kinematics(s, d, dm, alpha).element_rad_s.abs() < 1e-12);
         }
     }
 
@@ -247,7 +227,10 @@ mod tests {
             .unwrap_err()
             .to_string();
         assert!(e.starts_with("invalid speeds.inner_rad_s = NaN"), "{e}");
-        let e = RingSpeeds::new(0.0, 3e5).validate().unwrap_err().to_string();
+        let e = RingSpeeds::new(0.0, 3e5)
+            .validate()
+            .unwrap_err()
+            .to_string();
         assert!(e.starts_with("invalid speeds.outer_rad_s = 300000"), "{e}");
         // F_c = ½ m d_m ω_c²: a 1 g ball (1e-6 N s²/mm) at 50 mm pitch, 100 rad/s: 0.25 N
         assert!(rel(centrifugal_force(1e-6, 50.0, 100.0), 0.25) < 1e-15);

@@ -57,14 +57,14 @@ use crate::validity::{ContactSize, Size, checked, checked_report};
 use kontakt::hertz::validity::point_size;
 use kontakt::solve::{SolveStatus, Termination};
 use kontakt::{Error, Result};
-use kontakt_bearing::ball_equilibrium::BallBearingSolver;
+use kontakt_bearing::ball_equilibrium::{BallBearingSolver, BallSolution};
 use kontakt_bearing::ball_speed::{BallSpeedSolver, RaceControl};
-use kontakt_bearing::speed::RingSpeeds;
 use kontakt_bearing::equilibrium::{Dof, RingLoad, RollerBearingSolver};
 use kontakt_bearing::geometry::{
     BallBearing, BallBearingKind, DEFAULT_SLICES, RollerBearing, RollerBearingKind,
 };
 use kontakt_bearing::profile::{Profile, TabulatedProfile};
+use kontakt_bearing::speed::RingSpeeds;
 use serde::{Deserialize, Serialize};
 
 mod speed;
@@ -911,10 +911,12 @@ pub(crate) fn solve_planned(
     match planned {
         Planned::Roller(solver) => roller_report(case, label, solver, &load, start),
         Planned::Ball { solver, spec, keys } => {
+            let solver = BallSolver::AtRest(solver);
             ball_report(case, label, solver, spec, keys, &load, start)
         }
         Planned::BallAtSpeed { solver, spec, keys } => {
-            speed::ball_speed_report(case, label, solver, spec, keys, &load, start)
+            let solver = BallSolver::AtSpeed(solver);
+            ball_report(case, label, solver, spec, keys, &load, start)
         }
     }
 }
@@ -1272,24 +1274,67 @@ fn plan_ball(
     Ok((Planned::Ball { solver, spec, keys }, label))
 }
 
-/// The report of a ball bearing's solve: the library's quasi-static equilibrium (Jones 1960, Harris &
-/// Kotzalas 2006) and the Hertz contacts of the most loaded ball for the validity check.
+/// A ball bearing's solver: at rest, or at speed.
+pub(crate) enum BallSolver<'a> {
+    /// The quasi-static equilibrium (§8).
+    AtRest(&'a mut BallBearingSolver),
+    /// The high-speed model (§9).
+    AtSpeed(&'a mut BallSpeedSolver),
+}
+
+/// The report of a ball bearing's solve: the library's equilibrium (Jones 1960, Harris &
+/// Kotzalas 2006; at rest or at speed) and the Hertz contacts of the most loaded ball on
+/// each raceway for the validity check.
 fn ball_report(
     case: &BearingCase,
     label: &'static str,
-    solver: &mut BallBearingSolver,
+    mut solver: BallSolver<'_>,
     s: &BallSpec,
     keys: &GrooveKeys,
     load: &RingLoad,
     start: Option<[f64; 5]>,
 ) -> Result<BearingReport> {
-    let sol = match start {
-        Some(u) => solver.solve_from(load, u),
-        None => solver.solve(load),
+    let sol = match (&mut solver, start) {
+        (BallSolver::AtRest(s), Some(u)) => s.solve_from(load, u),
+        (BallSolver::AtRest(s), None) => s.solve(load),
+        (BallSolver::AtSpeed(s), Some(u)) => s.solve_from(load, u),
+        (BallSolver::AtSpeed(s), None) => s.solve(load),
     }
     .map_err(map_load)?;
+    let (rows, q_max) = match &solver {
+        BallSolver::AtRest(solver) => rest_rows(solver, &sol),
+        BallSolver::AtSpeed(solver) => speed::speed_rows(solver),
+    };
+    let (b, k_n, race_control) = match &solver {
+        BallSolver::AtRest(solver) => (solver.bearing(), solver.ball_stiffness(), None),
+        BallSolver::AtSpeed(solver) => (solver.bearing(), solver.ball_stiffness(), Some("outer")),
+    };
     let warnings = solver_warnings(&sol.status, sol.note)?;
-    let b = solver.bearing();
+    let contacts = ball_contacts(b, s, keys, q_max)?;
+    let elements = BearingElements::Balls(BallPart {
+        balls: b.balls,
+        free_contact_angle_deg: b.free_contact_angle().to_degrees(),
+        ball_stiffness_n_per_mm1_5: k_n,
+        max_ball_load_n: sol.max_ball_load_n,
+        max_inner_pressure_mpa: sol.max_pressure_mpa[0],
+        max_outer_pressure_mpa: sol.max_pressure_mpa[1],
+        ball_loads: rows,
+        race_control,
+    });
+    let mut report = report(case, label, elements, sol.displacement, sol.load);
+    report.solver = solver_echo(&sol.status);
+    report.load_zone_epsilon = sol.load_zone;
+    report.stiffness_matrix = sol.stiffness;
+    report.warnings = warnings;
+    report.contacts = contacts;
+    if race_control.is_some() {
+        report.ring_speeds_rpm = Some([case.speed.inner_rpm, case.speed.outer_rpm]);
+    }
+    Ok(report)
+}
+
+/// The ball rows of a quasi-static solve and the largest ball load on each raceway.
+fn rest_rows(solver: &BallBearingSolver, sol: &BallSolution) -> (Vec<BallRow>, [f64; 2]) {
     let rows: Vec<BallRow> = solver
         .ball_loads()
         .iter()
@@ -1309,24 +1354,7 @@ fn ball_report(
         })
         .collect();
     let q = sol.max_ball_load_n;
-    let contacts = ball_contacts(b, s, keys, [q, q])?;
-    let elements = BearingElements::Balls(BallPart {
-        balls: b.balls,
-        free_contact_angle_deg: b.free_contact_angle().to_degrees(),
-        ball_stiffness_n_per_mm1_5: solver.ball_stiffness(),
-        max_ball_load_n: sol.max_ball_load_n,
-        max_inner_pressure_mpa: sol.max_pressure_mpa[0],
-        max_outer_pressure_mpa: sol.max_pressure_mpa[1],
-        ball_loads: rows,
-        race_control: None,
-    });
-    let mut report = report(case, label, elements, sol.displacement, sol.load);
-    report.solver = solver_echo(&sol.status);
-    report.load_zone_epsilon = sol.load_zone;
-    report.stiffness_matrix = sol.stiffness;
-    report.warnings = warnings;
-    report.contacts = contacts;
-    Ok(report)
+    (rows, [q, q])
 }
 
 /// The Hertz contacts of the most loaded ball on the inner and on the outer raceway

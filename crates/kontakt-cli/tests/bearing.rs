@@ -40,6 +40,16 @@ fn table_rows(text: &str, header: &str) -> usize {
         .count()
 }
 
+/// The text table of `kontakt bearing examples/<name>`, which must succeed.
+fn table_of(name: &str) -> String {
+    let out = kontakt()
+        .args(["bearing", example(name).to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    String::from_utf8(out.stdout).unwrap()
+}
+
 /// The table: the header, the solver line and one row per roller (16 for the 32216).
 #[test]
 fn table_of_the_32216() {
@@ -222,12 +232,7 @@ fn plots_are_written() {
 fn ball_bearing_table_json_csv_and_plots() {
     let dir = support::tempdir("bearing", "balls");
     let path = example("bearing_6205.toml");
-    let out = kontakt()
-        .args(["bearing", path.to_str().unwrap()])
-        .output()
-        .unwrap();
-    assert!(out.status.success());
-    let text = String::from_utf8(out.stdout).unwrap();
+    let text = table_of("bearing_6205.toml");
     assert!(
         text.contains("deep groove ball bearing: 6205 class DGBB"),
         "{text}"
@@ -324,13 +329,11 @@ fn ball_bearing_table_json_csv_and_plots() {
 #[test]
 fn ball_bearing_at_speed_table_and_json() {
     let path = example("bearing_7205_speed.toml");
-    let out = kontakt()
-        .args(["bearing", path.to_str().unwrap()])
-        .output()
-        .unwrap();
-    assert!(out.status.success());
-    let text = String::from_utf8(out.stdout).unwrap();
-    assert!(text.contains("speed: inner ring 15000 r/min, outer ring 0 r/min; outer-race control"), "{text}");
+    let text = table_of("bearing_7205_speed.toml");
+    assert!(
+        text.contains("speed: inner ring 15000 r/min, outer ring 0 r/min; outer-race control"),
+        "{text}"
+    );
     assert!(text.contains("load zone ε = 1."), "{text}");
     assert_eq!(table_rows(&text, "M_g N mm"), 12, "{text}");
     let v = run_json(&["bearing", path.to_str().unwrap()]);

@@ -37,7 +37,10 @@ fn zero_speed_reproduces_the_quasi_static_solution() {
             acbb(),
             RingLoad::forces([1500.0, -700.0, 4000.0, 0.0, 0.0]).with_tilts_held(),
         ),
-        (acbb(), RingLoad::forces([0.0, 0.0, 3000.0, 20_000.0, 5000.0])),
+        (
+            acbb(),
+            RingLoad::forces([0.0, 0.0, 3000.0, 20_000.0, 5000.0]),
+        ),
     ];
     for (b, load) in cases {
         let mut qs = BallBearingSolver::new(b.clone()).unwrap();
@@ -46,7 +49,10 @@ fn zero_speed_reproduces_the_quasi_static_solution() {
         let mut sp = BallSpeedSolver::new(b, RingSpeeds::ZERO, RaceControl::Outer).unwrap();
         let got = sp.solve(&load).unwrap();
         assert!(got.status.converged(), "{got:?}");
-        let scale_u = want.displacement.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+        let scale_u = want
+            .displacement
+            .iter()
+            .fold(0.0_f64, |m, v| m.max(v.abs()));
         for i in 0..5 {
             let tol = if i < 3 { 1e-9 } else { 1e-9 / 19.25 };
             assert!(
@@ -114,8 +120,16 @@ fn speed_term_derivatives_match_central_differences() {
         };
         let dfc = (p.fc - q.fc) / (2.0 * h);
         let dto = (p.to - q.to) / (2.0 * h);
-        assert!((dfc - st.dfc[k]).abs() <= 1e-7 * st.fc, "{k}: {dfc} {:?}", st.dfc);
-        assert!((dto - st.dto[k]).abs() <= 1e-7 * st.to.abs(), "{k}: {dto} {:?}", st.dto);
+        assert!(
+            (dfc - st.dfc[k]).abs() <= 1e-7 * st.fc,
+            "{k}: {dfc} {:?}",
+            st.dfc
+        );
+        assert!(
+            (dto - st.dto[k]).abs() <= 1e-7 * st.to.abs(),
+            "{k}: {dto} {:?}",
+            st.dto
+        );
     }
 }
 
@@ -194,14 +208,17 @@ fn equilibrium_at_speed_and_warm_restart() {
     for i in 0..5 {
         let want = [3000.0, 0.0, 800.0, 0.0, 0.0][i];
         let scale = if i < 3 { 3000.0 } else { 3000.0 * 19.25 };
-        assert!((sol.load[i] - want).abs() <= 1e-10 * scale, "{:?}", sol.load);
+        assert!(
+            (sol.load[i] - want).abs() <= 1e-10 * scale,
+            "{:?}",
+            sol.load
+        );
     }
     // every ball: Q_i n_i − Q_o n_o + F_c e_r + T_o t_o = 0
     for b in s.ball_loads() {
         let (ai, ao) = (b.inner_contact_angle_rad, b.outer_contact_angle_rad);
         let to = 2.0 * b.gyroscopic_moment_nmm / 7.938;
-        let r = b.inner_load_n * ai.cos() - b.outer_load_n * ao.cos()
-            + b.centrifugal_force_n
+        let r = b.inner_load_n * ai.cos() - b.outer_load_n * ao.cos() + b.centrifugal_force_n
             - to * ao.sin();
         let zz = b.inner_load_n * ai.sin() - b.outer_load_n * ao.sin() + to * ao.cos();
         assert!(r.hypot(zz) <= 1e-9 * b.outer_load_n, "{r} {zz} {b:?}");
@@ -244,7 +261,10 @@ fn contact_angles_split_with_speed() {
         // F_c = ½ m d_m ω_c² exactly, ω_c from the loaded angles
         let m = 7850e-12 * PI * 7.938_f64.powi(3) / 6.0;
         let wc = b.cage_speed_rad_s;
-        assert!((b.centrifugal_force_n - 0.5 * m * 38.5 * wc * wc).abs() <= 1e-12 * b.centrifugal_force_n.max(1e-300));
+        assert!(
+            (b.centrifugal_force_n - 0.5 * m * 38.5 * wc * wc).abs()
+                <= 1e-12 * b.centrifugal_force_n.max(1e-300)
+        );
         // every ball alike under pure axial load
         for o in s.ball_loads() {
             assert!(rel(o.inner_load_n, b.inner_load_n) < 1e-9);
@@ -263,18 +283,19 @@ fn contact_angles_split_with_speed() {
 fn axial_load_with_centrifugal_force_matches_the_scipy_reference() {
     let text = include_str!("../../tests/data/ball_speed_reference.csv");
     let mut rows = 0;
-    for line in text.lines().filter(|l| !l.starts_with('#') && !l.starts_with("rpm")) {
+    for line in text
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.starts_with("rpm"))
+    {
         let v: Vec<f64> = line.split(',').map(|x| x.trim().parse().unwrap()).collect();
         let [n, fa, ai, ao, qi, qo, fc, dz] = v[..] else {
             panic!("{line}")
         };
-        let mut s = BallSpeedSolver::new(
-            acbb(),
-            rpm(n),
-            RaceControl::OuterWithoutGyroscopic,
-        )
-        .unwrap();
-        let sol = s.solve(&RingLoad::forces([0.0, 0.0, fa, 0.0, 0.0])).unwrap();
+        let mut s =
+            BallSpeedSolver::new(acbb(), rpm(n), RaceControl::OuterWithoutGyroscopic).unwrap();
+        let sol = s
+            .solve(&RingLoad::forces([0.0, 0.0, fa, 0.0, 0.0]))
+            .unwrap();
         assert!(sol.status.converged(), "{sol:?}");
         let b = s.ball_loads()[0];
         let got = [
@@ -317,12 +338,18 @@ fn load_zone_of_a_deep_groove_bearing() {
         let e = s.load_zone.unwrap();
         assert!(e < eps && e > 0.0, "{e} vs {eps}");
         // the balls outside the inner load zone: no inner load, on the outer ring by F_c
-        let n_loaded = fast.ball_loads().iter().filter(|b| b.inner_load_n > 0.0).count();
+        let n_loaded = fast
+            .ball_loads()
+            .iter()
+            .filter(|b| b.inner_load_n > 0.0)
+            .count();
         assert!(n_loaded < 9);
     }
     // no radial displacement: no load zone
     let mut sp = BallSpeedSolver::new(acbb(), rpm(10_000.0), RaceControl::Outer).unwrap();
-    let s = sp.solve(&RingLoad::forces([0.0, 0.0, 1000.0, 0.0, 0.0])).unwrap();
+    let s = sp
+        .solve(&RingLoad::forces([0.0, 0.0, 1000.0, 0.0, 0.0]))
+        .unwrap();
     assert_eq!(s.load_zone, None);
 }
 
@@ -333,14 +360,21 @@ fn zero_load_at_speed_and_bad_speeds() {
     let mut s = BallSpeedSolver::new(dgbb(), rpm(10_000.0), RaceControl::Outer).unwrap();
     let sol = s.solve(&RingLoad::forces([0.0; 5])).unwrap();
     assert!(sol.status.converged(), "{sol:?}");
-    assert_eq!(sol.note, Some("every ball is lifted off the inner ring: zero load"));
+    assert_eq!(
+        sol.note,
+        Some("every ball is lifted off the inner ring: zero load")
+    );
     for b in s.ball_loads() {
         assert_eq!(b.inner_load_n, 0.0);
         assert!(rel(b.outer_load_n, b.centrifugal_force_n) < 1e-9, "{b:?}");
     }
-    let e = BallSpeedSolver::new(dgbb(), RingSpeeds::new(f64::INFINITY, 0.0), RaceControl::Outer)
-        .unwrap_err()
-        .to_string();
+    let e = BallSpeedSolver::new(
+        dgbb(),
+        RingSpeeds::new(f64::INFINITY, 0.0),
+        RaceControl::Outer,
+    )
+    .unwrap_err()
+    .to_string();
     assert!(e.starts_with("invalid speeds.inner_rad_s = inf"), "{e}");
     let mut b = dgbb();
     b.ball_density_kg_m3 = 0.0;
@@ -369,7 +403,10 @@ fn centrifugal_force_scales_with_the_density() {
         steel.ball_loads()[0].cage_speed_rad_s,
         light.ball_loads()[0].cage_speed_rad_s,
     );
-    assert!(rel((fl / (wl * wl)) / (fs / (ws * ws)), 3200.0 / 7850.0) < 1e-12, "{fl} {fs}");
+    assert!(
+        rel((fl / (wl * wl)) / (fs / (ws * ws)), 3200.0 / 7850.0) < 1e-12,
+        "{fl} {fs}"
+    );
     assert!(fl < 0.45 * fs);
     // m = ρ π D³/6
     let m = 7850.0 * PI * (7.938e-3_f64).powi(3) / 6.0;

@@ -11,13 +11,9 @@
 //! The library takes rad/s ([`RingSpeeds`]); the case speaks r/min, as the friction
 //! case's `[speed]` does. Roller bearings take no speed yet (an error names the key).
 
-use super::{
-    BallPart, BallRow, BallSpec, BearingCase, BearingElements, BearingReport, GrooveKeys,
-    ball_contacts, map_load, report, solver_echo, solver_warnings,
-};
+use super::BallRow;
 use kontakt::{Error, Result};
 use kontakt_bearing::ball_speed::BallSpeedSolver;
-use kontakt_bearing::equilibrium::RingLoad;
 use kontakt_bearing::speed::RingSpeeds;
 use serde::{Deserialize, Serialize};
 
@@ -86,22 +82,8 @@ impl BearingSpeedSpec {
     }
 }
 
-/// The report of a ball bearing's solve at speed.
-pub(super) fn ball_speed_report(
-    case: &BearingCase,
-    label: &'static str,
-    solver: &mut BallSpeedSolver,
-    s: &BallSpec,
-    keys: &GrooveKeys,
-    load: &RingLoad,
-    start: Option<[f64; 5]>,
-) -> Result<BearingReport> {
-    let sol = match start {
-        Some(u) => solver.solve_from(load, u),
-        None => solver.solve(load),
-    }
-    .map_err(map_load)?;
-    let warnings = solver_warnings(&sol.status, sol.note)?;
+/// The ball rows of a solve at speed (both contacts) and the largest load on each raceway.
+pub(super) fn speed_rows(solver: &BallSpeedSolver) -> (Vec<BallRow>, [f64; 2]) {
     let mut q_max = [0.0f64; 2];
     let rows: Vec<BallRow> = solver
         .ball_loads()
@@ -125,24 +107,5 @@ pub(super) fn ball_speed_report(
             }
         })
         .collect();
-    let b = solver.bearing();
-    let contacts = ball_contacts(b, s, keys, q_max)?;
-    let elements = BearingElements::Balls(BallPart {
-        balls: b.balls,
-        free_contact_angle_deg: b.free_contact_angle().to_degrees(),
-        ball_stiffness_n_per_mm1_5: solver.ball_stiffness(),
-        max_ball_load_n: sol.max_ball_load_n,
-        max_inner_pressure_mpa: sol.max_pressure_mpa[0],
-        max_outer_pressure_mpa: sol.max_pressure_mpa[1],
-        ball_loads: rows,
-        race_control: Some("outer"),
-    });
-    let mut report = report(case, label, elements, sol.displacement, sol.load);
-    report.solver = solver_echo(&sol.status);
-    report.load_zone_epsilon = sol.load_zone;
-    report.stiffness_matrix = sol.stiffness;
-    report.warnings = warnings;
-    report.contacts = contacts;
-    report.ring_speeds_rpm = Some([case.speed.inner_rpm, case.speed.outer_rpm]);
-    Ok(report)
+    (rows, q_max)
 }

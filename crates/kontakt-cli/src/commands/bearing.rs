@@ -223,7 +223,15 @@ fn ball_speed_table(out: &mut impl Write, p: &BallPart, rpm: [f64; 2]) -> Result
     writeln!(
         out,
         "  {:>6} {:>10} {:>10} {:>8} {:>8} {:>8} {:>10} {:>9} {:>9}",
-        "ψ deg", "Q_in N", "Q_out N", "α_in°", "α_out°", "F_c N", "M_g N mm", "p_in MPa", "p_out MPa"
+        "ψ deg",
+        "Q_in N",
+        "Q_out N",
+        "α_in°",
+        "α_out°",
+        "F_c N",
+        "M_g N mm",
+        "p_in MPa",
+        "p_out MPa"
     )?;
     for row in &p.ball_loads {
         writeln!(
