@@ -114,6 +114,9 @@ struct BallModel {
     inertia: f64,
     speeds: RingSpeeds,
     gyroscopic: bool,
+    /// The inner approach δ_b (mm) over which the kinematics pass from the outer contact
+    /// angle (inner contact open) to the inner one (pressed): `1e-5 D`.
+    blend: f64,
 }
 
 /// The speed terms of a ball and their derivatives by `(α_i, α_o)`.
@@ -250,15 +253,31 @@ impl BallModel {
     fn eval(&self, a: Vector2<f64>, x: Vector2<f64>) -> Eval {
         let (d_o, q_o, n_o, h_o, l_o) = contact(self.k[1], self.rho[1], x);
         let (d_i, q_i, n_i, h_i, l_i) = contact(self.k[0], self.rho[0], a - x);
-        let st = self.speed_terms(n_i, n_o);
         let t_o = Vector2::new(-n_o[1], n_o[0]);
         let t_i = Vector2::new(-n_i[1], n_i[0]);
         let e_r = Vector2::new(1.0, 0.0);
+        // the inner angle of the kinematics α_k: the inner contact's while it is pressed
+        // (δ_i >= δ_b), the outer one's while it is open (a ball lifted off the inner ring
+        // is not driven by it), a smoothstep w(δ_i/δ_b) between (§9.3)
+        let (ai, ao) = (n_i[1].atan2(n_i[0]), n_o[1].atan2(n_o[0]));
+        let sb = (d_i / self.blend).clamp(0.0, 1.0);
+        let w = sb * sb * (3.0 - 2.0 * sb);
+        let dw = 6.0 * sb * (1.0 - sb) / self.blend;
+        let n_k = if w == 1.0 {
+            n_i
+        } else {
+            let ak = ao + w * (ai - ao);
+            Vector2::new(ak.cos(), ak.sin())
+        };
+        let st = self.speed_terms(n_k, n_o);
         let r = n_i * q_i - n_o * q_o + e_r * st.fc + t_o * st.to;
         let ds_dao = e_r * st.dfc[1] + t_o * st.dto[1] - n_o * st.to;
-        let ds_dai = e_r * st.dfc[0] + t_o * st.dto[0];
-        let r_x = -h_i - h_o + ds_dao * (t_o / l_o).transpose() - ds_dai * (t_i / l_i).transpose();
-        let r_a = h_i + ds_dai * (t_i / l_i).transpose();
+        let ds_dak = e_r * st.dfc[0] + t_o * st.dto[0];
+        // ∂α_k/∂A and ∂α_k/∂X (δ_i = |A − X| − ρ_i, α_i the direction of A − X)
+        let gk_a = t_i * (w / l_i) + n_i * (dw * (ai - ao));
+        let gk_x = t_o * ((1.0 - w) / l_o) - gk_a;
+        let r_x = -h_i - h_o + ds_dao * (t_o / l_o).transpose() + ds_dak * gk_x.transpose();
+        let r_a = h_i + ds_dak * gk_a.transpose();
         Eval {
             r,
             r_x,
@@ -293,13 +312,35 @@ impl BallModel {
     /// Solve the ball's equilibrium for the inner groove centre at `a` (mm), from `warm`
     /// (the ball's last centre) when given.
     fn solve(&self, a: Vector2<f64>, warm: Option<[f64; 2]>) -> BallState {
-        let mut x = match warm {
-            Some(x) => Vector2::from(x),
-            None => self.start(a),
+        // the warm start, then the pressed start, then the ball at the outer groove's bottom
+        // (a start that ends at no equilibrium, e.g. in a fold of the branch it starts on,
+        // hands over to the next)
+        let pressed = self.start(a);
+        let lifted = {
+            let fc = self
+                .speed_terms(Vector2::new(1.0, 0.0), Vector2::new(1.0, 0.0))
+                .fc;
+            Vector2::new(self.rho[1] + (fc / self.k[1]).powf(2.0 / 3.0), 0.0)
         };
+        let starts = [warm.map(Vector2::from), Some(pressed), Some(lifted)];
+        let mut best = None;
+        for x0 in starts.into_iter().flatten() {
+            let (x, e, converged) = self.newton(a, x0);
+            if converged {
+                return self.state(x, e, true);
+            }
+            best.get_or_insert((x, e));
+        }
+        let (x, e) = best.unwrap_or_else(|| (pressed, self.eval(a, pressed)));
+        self.state(x, e, false)
+    }
+
+    /// Newton on the ball's centre from `x0`: the centre, its evaluation and whether it
+    /// converged.
+    fn newton(&self, a: Vector2<f64>, x0: Vector2<f64>) -> (Vector2<f64>, Eval, bool) {
+        let mut x = x0;
         let mut e = self.eval(a, x);
         let mut converged = false;
-        let mut restarted = warm.is_none();
         if self.at_rest() && e.q == [0.0, 0.0] && a.norm() <= self.rho[0] + self.rho[1] {
             // at rest and not pressed: the ball is anywhere between the grooves, unloaded
             x = self.start(a);
@@ -315,20 +356,24 @@ impl BallModel {
                 converged = true;
                 break;
             }
-            let Some(inv) = e.r_x.try_inverse() else {
-                if restarted {
-                    break;
-                }
-                restarted = true;
-                x = self.start(a);
-                e = self.eval(a, x);
-                continue;
+            // Newton in the centre's polar coordinates about the outer groove centre,
+            // (|X|, α_o): the outer contact's stiff normal and the soft roll of the ball
+            // along the groove are apart, so a ball lifted off the inner ring rolls down the
+            // groove in a few steps (in X a straight step leaves the groove's circle and
+            // the line search crawls)
+            let l = x.norm();
+            let (n_o, t_o) = (x / l, Vector2::new(-x[1], x[0]) / l);
+            let jac = Matrix2::from_columns(&[e.r_x * n_o, e.r_x * t_o * l]);
+            let Some(inv) = jac.try_inverse() else {
+                break;
             };
             let step = -(inv * e.r);
+            let alpha = x[1].atan2(x[0]);
             let mut t = 1.0;
             let mut accepted = false;
             for _ in 0..40 {
-                let trial = x + step * t;
+                let (sa, ca) = (alpha + t * step[1]).sin_cos();
+                let trial = Vector2::new(ca, sa) * (l + t * step[0]);
                 let e2 = self.eval(a, trial);
                 if e2.r.norm() < (1.0 - 1e-4 * t) * res {
                     x = trial;
@@ -343,11 +388,16 @@ impl BallModel {
                 converged = res <= 1e-11 * scale;
                 break;
             }
-            if step.norm() * t <= 1e-15 * (self.rho[0] + self.rho[1]) {
+            if (step[0].abs() + l * step[1].abs()) * t <= 1e-15 * (self.rho[0] + self.rho[1]) {
                 converged = e.r.norm() <= 1e-11 * scale;
                 break;
             }
         }
+        (x, e, converged)
+    }
+
+    /// The ball's state at its centre `x` with the evaluation `e` there.
+    fn state(&self, x: Vector2<f64>, e: Eval, converged: bool) -> BallState {
         // the derivative of the ring's force Q_i n_i by A with X eliminated
         let dp = if e.q[0] > 0.0 {
             match e.r_x.try_inverse() {
@@ -423,6 +473,7 @@ impl BallSpeedSolver {
             inertia: 0.1 * mass * d * d,
             speeds,
             gyroscopic: race_control == RaceControl::Outer,
+            blend: 1e-5 * d,
         };
         let z = b.balls;
         Ok(BallSpeedSolver {
