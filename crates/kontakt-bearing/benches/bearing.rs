@@ -3,7 +3,8 @@
 //! the tilts held, cold (from the closed-form start) and warm after a 1 % load change
 //! (`solve_from` the previous displacement); a deep-groove ball bearing with 10 balls under
 //! a combined load, cold, at rest and at 10 000 r/min; a cylindrical roller bearing of 14
-//! rollers × 31 slices under a radial load, cold, for reference. The solvers are built once outside the timed closure;
+//! rollers × 31 slices under a radial load, cold, for reference; the TRB with coupled
+//! slices (half-space strips), cold. The solvers are built once outside the timed closure;
 //! the timed call is the solve. The Newton iterations of each case are printed once
 //! (stderr). Figures in docs/PERFORMANCE.md, "Bearing load distribution (issue 28)".
 
@@ -15,6 +16,7 @@ use criterion::{Criterion, criterion_group, criterion_main};
 use kontakt_bearing::ball_equilibrium::BallBearingSolver;
 use kontakt_bearing::ball_speed::{BallSpeedSolver, RaceControl};
 use kontakt_bearing::equilibrium::RollerBearingSolver;
+use kontakt_bearing::equilibrium::coupled::CoupledSliceSolver;
 use std::hint::black_box;
 
 fn bench_bearing(c: &mut Criterion) {
@@ -89,6 +91,22 @@ fn bench_bearing(c: &mut Criterion) {
     );
     group.bench_function("crb_14x31_radial_cold", |b| {
         b.iter(|| crb_solver.solve(black_box(&crb_load)).expect("solve"))
+    });
+
+    // The same TRB with coupled slices (half-space strips), cold: the ISO solve as its
+    // start, then the ring's Newton with a slice solve per roller and evaluation.
+    let mut coupled = CoupledSliceSolver::new(trb()).expect("valid TRB");
+    let s = coupled.solve(&load).expect("solve");
+    assert!(s.status.converged(), "{:?}", s.status);
+    eprintln!(
+        "trb_20x31_coupled: cold {} ring iterations (residual {:.1e}), at most {} slice iterations per roller, Q_max {:.0} N",
+        s.status.iterations,
+        s.status.residual,
+        coupled.slice_iterations(),
+        s.max_roller_load_n,
+    );
+    group.bench_function("trb_20x31_coupled_cold", |b| {
+        b.iter(|| coupled.solve(black_box(&load)).expect("solve"))
     });
     group.finish();
 }

@@ -59,12 +59,13 @@ pub struct BallSolution {
     pub status: SolveStatus,
     /// A message when the status is not plain convergence or every ball lifted off.
     pub note: Option<&'static str>,
-    /// The largest ball load, N.
+    /// The largest ball load, N (at speed, [`crate::ball_speed`], the largest on the inner
+    /// ring: 0 when every ball is lifted off it).
     pub max_ball_load_n: f64,
     /// The largest Hertz pressure on the inner and on the outer raceway, MPa.
     pub max_pressure_mpa: [f64; 2],
     /// The load-zone parameter ε (Sjövall 1933) along the radial displacement, from the
-    /// balls' approach around the ring (`docs/bearing-model.md` §9.5); `None` without a
+    /// balls' approach around the ring (`docs/bearing-model.md` §16.5); `None` without a
     /// radial displacement or with no ball loaded there. Exact for rigid rings without
     /// tilt.
     pub load_zone: Option<f64>,
@@ -222,6 +223,24 @@ impl BallBearingSolver {
                 fz,
                 "a load >= 0 N: a single-row angular-contact ball bearing carries axial load in +z only (pushing the inner ring into the outer)",
             ));
+        }
+        // issue 28, bad input: every loaded ball of a single row pushes in +z, so without
+        // an axial load no ball is loaded and no radial load or moment is carried
+        if self.bearing.kind == BallBearingKind::AngularContact && load.dofs[2] == Dof::Force(0.0) {
+            let f = |i: usize| match load.dofs[i] {
+                Dof::Force(v) => v,
+                Dof::Displacement(_) => 0.0,
+            };
+            if let Some(i) = [0, 1, 3, 4].into_iter().find(|&i| f(i) != 0.0) {
+                let what = if i < 3 { "a radial load" } else { "a moment" };
+                return Err(Error::invalid(
+                    "load.fz_n",
+                    0.0,
+                    format!(
+                        "an axial load > 0 N: a single-row angular-contact ball bearing carries {what} only together with an axial load pushing the inner ring into the outer (or prescribe dz_mm)"
+                    ),
+                ));
+            }
         }
         Ok(())
     }

@@ -5,7 +5,7 @@
 //! forces. At rest it is the quasi-static model of [`crate::ball_equilibrium`].
 //!
 //! **Frames and signs** as [`crate::ball_equilibrium`] (`docs/bearing-model.md` §8 and
-//! §9): the outer ring is fixed in space (it may turn about z), the inner ring moves by
+//! §16): the outer ring is fixed in space (it may turn about z), the inner ring moves by
 //! `u = (δx, δy, δz, θx, θy)` (mm, rad) and carries `(Fx, Fy, Fz, Mx, My)` (N, N·mm). In
 //! the axial plane `(e_r, e_z)` of ball j, with the outer groove's curvature centre at the
 //! origin, the inner groove's is at `A_j = a + G_j u` and the ball's centre at
@@ -186,7 +186,7 @@ impl BallModel {
 
     /// F_c, T_o, M_g and the kinematics at the contact angles `(α_i, α_o)`, given as the
     /// unit normals `n_i = (cos α_i, sin α_i)` and `n_o`, with their derivatives by
-    /// `(α_i, α_o)` (`docs/bearing-model.md` §9.2). The same formulas as
+    /// `(α_i, α_o)` (`docs/bearing-model.md` §16.2). The same formulas as
     /// [`crate::speed::kinematics`], written with the normals' components (no
     /// trigonometric function in the ball's Newton).
     fn speed_terms(&self, n_i: Vector2<f64>, n_o: Vector2<f64>) -> SpeedTerms {
@@ -258,7 +258,7 @@ impl BallModel {
         let e_r = Vector2::new(1.0, 0.0);
         // the inner angle of the kinematics α_k: the inner contact's while it is pressed
         // (δ_i >= δ_b), the outer one's while it is open (a ball lifted off the inner ring
-        // is not driven by it), a smoothstep w(δ_i/δ_b) between (§9.3)
+        // is not driven by it), a smoothstep w(δ_i/δ_b) between (§16.3)
         let (ai, ao) = (n_i[1].atan2(n_i[0]), n_o[1].atan2(n_o[0]));
         let sb = (d_i / self.blend).clamp(0.0, 1.0);
         let w = sb * sb * (3.0 - 2.0 * sb);
@@ -702,7 +702,8 @@ impl BallSpeedSolver {
                 outer_max_pressure_mpa: self.p_unit[1] * co,
             };
             over_shoulder |= angular && st.q[0] > 0.0 && st.alpha[0] <= 0.0;
-            qmax = qmax.max(st.q[0]).max(st.q[1]);
+            // the largest load on the inner ring (as at rest: 0 when every ball is lifted off it)
+            qmax = qmax.max(st.q[0]);
             pmax[0] = pmax[0].max(row.inner_max_pressure_mpa);
             pmax[1] = pmax[1].max(row.outer_max_pressure_mpa);
             self.balls[j] = row;

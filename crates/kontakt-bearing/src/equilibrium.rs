@@ -375,6 +375,28 @@ impl RollerBearingSolver {
                     ));
                 }
             }
+            // issue 28, bad input: every roller pushes in +z, so the moment it carries is
+            // at most its axial force times the arm R sin(alpha) + L_we/2 of its farthest
+            // slice: |M| < F_z (R + L_we/(2 sin alpha)), 0 without an axial load
+            let m = [f(3).unwrap_or(0.0), f(4).unwrap_or(0.0)];
+            let arm = 0.5 * self.bearing.pitch_diameter_mm
+                + 0.5 * self.bearing.effective_length_mm / self.bearing.contact_angle_rad.sin();
+            if m[0].hypot(m[1]) > 0.0 && !(m[0].hypot(m[1]) < fz * arm) {
+                let i = if m[0].abs() >= m[1].abs() { 3 } else { 4 };
+                let label = if kind == RollerBearingKind::Thrust {
+                    "cylindrical roller thrust"
+                } else {
+                    "tapered roller"
+                };
+                return Err(Error::invalid(
+                    format!("load.{}", FORCE_NAMES[i]),
+                    m[i - 3],
+                    format!(
+                        "|M| < F_z (d_m/2 + L_we/(2 sin alpha)) = {:.6} N mm: a single-row {label} bearing carries a moment only through its axial load, here F_z = {fz} N (add axial load, or hold the tilts: prescribe tilt_x_rad and tilt_y_rad)",
+                        fz * arm
+                    ),
+                ));
+            }
         }
         Ok(())
     }
@@ -478,7 +500,7 @@ impl RollerBearingSolver {
             termination,
             iterations,
             residual: res,
-            mut note,
+            note,
             f,
             k,
             buffers_at_u,
@@ -506,28 +528,34 @@ impl RollerBearingSolver {
             };
             qmax = qmax.max(q);
         }
-        if termination == Termination::Converged && qmax == 0.0 {
-            note = Some("every roller is lifted off: zero load");
-        }
-        let (sa, ca) = b.contact_angle_rad.sin_cos();
-        let dr = u[0].hypot(u[1]) * ca;
-        // a radial displacement at the round-off level of the axial one is none
-        let tiny = 1e-12 * u[0].abs().max(u[1].abs()).max(u[2].abs());
-        let load_zone = if !b.thrust && dr > tiny {
-            let eps = (u[2] * sa + dr - 0.5 * b.clearance_mm) / (2.0 * dr);
-            (eps.is_finite() && eps > 0.0).then_some(eps)
-        } else {
-            None
-        };
-        RollerSolution {
-            displacement: u.into(),
-            load: f.into(),
-            stiffness: to_rows(&k),
-            status: SolveStatus::new(termination, iterations, res),
-            note,
-            load_zone,
-            max_roller_load_n: qmax,
-        }
+        let load_zone = load_zone(&u, b.contact_angle_rad, b.clearance_mm, b.thrust);
+        let status = SolveStatus::new(termination, iterations, res);
+        roller_solution(u, f, &k, status, note, qmax, load_zone)
+    }
+}
+
+/// The record of a roller bearing solve at the displacement `u` carrying `f` with the
+/// stiffness `k`; a converged solve with no roller loaded gets the lifted-off note.
+pub(crate) fn roller_solution(
+    u: Vector5<f64>,
+    f: Vector5<f64>,
+    k: &Matrix5<f64>,
+    status: SolveStatus,
+    mut note: Option<&'static str>,
+    max_roller_load_n: f64,
+    load_zone: Option<f64>,
+) -> RollerSolution {
+    if status.termination == Termination::Converged && max_roller_load_n == 0.0 {
+        note = Some("every roller is lifted off: zero load");
+    }
+    RollerSolution {
+        displacement: u.into(),
+        load: f.into(),
+        stiffness: to_rows(k),
+        status,
+        note,
+        load_zone,
+        max_roller_load_n,
     }
 }
 
@@ -538,6 +566,26 @@ struct Scalars {
     clearance_mm: f64,
     contact_angle_rad: f64,
     thrust: bool,
+}
+
+/// The load-zone parameter ε of the ring displacement `u` (§3 of docs/bearing-model.md);
+/// `None` for a thrust bearing or without a radial displacement.
+pub(crate) fn load_zone(
+    u: &Vector5<f64>,
+    contact_angle_rad: f64,
+    clearance_mm: f64,
+    thrust: bool,
+) -> Option<f64> {
+    let (sa, ca) = contact_angle_rad.sin_cos();
+    let dr = u[0].hypot(u[1]) * ca;
+    // a radial displacement at the round-off level of the axial one is none
+    let tiny = 1e-12 * u[0].abs().max(u[1].abs()).max(u[2].abs());
+    if !thrust && dr > tiny {
+        let eps = (u[2] * sa + dr - 0.5 * clearance_mm) / (2.0 * dr);
+        (eps.is_finite() && eps > 0.0).then_some(eps)
+    } else {
+        None
+    }
 }
 
 /// Every load component finite, else an error naming it (`load.fx_n`, `load.dz_mm`).
@@ -633,6 +681,8 @@ impl ConvexRing for RollerBearingSolver {
         self.bearing.roller_diameter_mm
     }
 }
+
+pub mod coupled;
 
 #[cfg(test)]
 mod tests;

@@ -36,10 +36,12 @@ pub mod ball_equilibrium;
 pub mod ball_speed;
 pub mod equilibrium;
 pub mod geometry;
+pub mod life;
 pub mod load_zone;
 mod newton;
 pub mod profile;
 pub mod speed;
+pub mod stress;
 #[cfg(test)]
 mod test_support;
 

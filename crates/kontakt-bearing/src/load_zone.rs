@@ -21,7 +21,7 @@
 //! and clearance change them).
 //!
 //! For a ball bearing the solvers give ε from the approach of a ball placed at any azimuth
-//! (`docs/bearing-model.md` §9.5), exact for rigid rings without tilt.
+//! (`docs/bearing-model.md` §16.5), exact for rigid rings without tilt.
 
 use kontakt::{Error, Result};
 use std::f64::consts::PI;

@@ -229,7 +229,7 @@ pub(crate) fn beyond_limit(u: &Vector5<f64>, r: f64, limit: f64) -> bool {
     (0..3).any(|i| u[i].abs() > limit) || (3..5).any(|i| (u[i] * r).abs() > limit)
 }
 
-/// The load scale of a reaction `f`: its largest force or moment over the pitch radius `r`.
+/// The load scale of a reaction `f`: its largest force, or moment over `r` (mm).
 pub(crate) fn reaction_scale(f: &Vector5<f64>, r: f64) -> f64 {
     (0..5)
         .map(|i| if i < 3 { f[i].abs() } else { f[i].abs() / r })

@@ -1,7 +1,7 @@
 //! Ring speeds and the kinematics of the cage and the rolling elements, after Harris &
 //! Kotzalas (2006), *Rolling Bearing Analysis*, "Ball and roller kinematics": rolling
 //! without slip at the centre of both contacts; derivation and signs in
-//! `docs/bearing-model.md` §9.1.
+//! `docs/bearing-model.md` §16.1.
 //!
 //! **Frames and signs.** Speeds are angular velocities about +z (the bearing axis), rad/s,
 //! positive counter-clockwise seen from +z (the direction of increasing azimuth ψ). In the

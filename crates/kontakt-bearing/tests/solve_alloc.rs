@@ -13,6 +13,7 @@ use counting_alloc::allocations;
 use kontakt_bearing::ball_equilibrium::BallBearingSolver;
 use kontakt_bearing::ball_speed::{BallSpeedSolver, RaceControl};
 use kontakt_bearing::equilibrium::RollerBearingSolver;
+use kontakt_bearing::equilibrium::coupled::CoupledSliceSolver;
 
 #[test]
 fn roller_bearing_solves_allocate_nothing_cold_or_warm() {
@@ -54,4 +55,20 @@ fn ball_bearing_solves_at_speed_allocate_nothing_cold_or_warm() {
     let (warm, n) = allocations(|| solver.solve_from(&dgbb_load(1.01), start).expect("solve"));
     assert!(warm.status.converged());
     assert_eq!(n, 0, "warm ball solve at speed");
+}
+
+/// The coupled slices (docs/bearing-model.md §12) on the TRB: none after the first solve,
+/// which builds the process-wide strip table.
+#[test]
+fn coupled_slice_solves_allocate_nothing_cold_or_warm() {
+    let mut solver = CoupledSliceSolver::new(trb()).expect("valid TRB");
+    let first = solver.solve(&trb_load(1.0)).expect("solve");
+    assert!(first.status.converged());
+    let (cold, n) = allocations(|| solver.solve(&trb_load(1.0)).expect("solve"));
+    assert!(cold.status.converged());
+    assert_eq!(n, 0, "cold coupled TRB solve");
+    let start = cold.displacement;
+    let (warm, n) = allocations(|| solver.solve_from(&trb_load(1.01), start).expect("solve"));
+    assert!(warm.status.converged());
+    assert_eq!(n, 0, "warm coupled TRB solve");
 }

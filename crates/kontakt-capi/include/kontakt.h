@@ -43,6 +43,18 @@
 // Bytes of [`KontaktResult::message`], the terminating NUL included.
 #define KONTAKT_MESSAGE_LEN 512
 
+// [`KontaktBearingResult::status`]: every rolling element is lifted off (zero force and
+// stiffness; [`KontaktBearingResult::message`] says so). Not an error.
+#define KONTAKT_BEARING_LIFTED_OFF 0
+
+// [`KontaktBearingResult::status`]: at least one rolling element carries load.
+#define KONTAKT_BEARING_LOADED 1
+
+// A bearing element planned from a bearing case (opaque; create with
+// [`kontakt_bearing_element_from_toml`] or [`kontakt_bearing_element_from_file`], release
+// with [`kontakt_bearing_element_free`]).
+typedef struct KontaktBearingElement KontaktBearingElement;
+
 // An element planned from a case (opaque; create with [`kontakt_element_from_toml`] or
 // [`kontakt_element_from_file`], release with [`kontakt_element_free`]).
 typedef struct KontaktElement KontaktElement;
@@ -88,6 +100,35 @@ typedef struct KontaktResult {
   // truncated to fit).
   char message[KONTAKT_MESSAGE_LEN];
 } KontaktResult;
+
+// What a bearing element's evaluation returns: the bearing's reaction on the inner ring
+// in the outer ring's frame (z the bearing axis); N, N·mm.
+typedef struct KontaktBearingResult {
+  // [`KONTAKT_BEARING_LIFTED_OFF`] (0) or [`KONTAKT_BEARING_LOADED`] (1).
+  int32_t status;
+  // Force of the bearing on the inner ring `Fx, Fy, Fz` \[N\], elastic plus damping; the
+  // outer ring gets minus this. Opposes the displacement: `δz > 0` pressing a tapered
+  // bearing gives `Fz < 0`.
+  double force[3];
+  // Moment of the bearing on the inner ring about the bearing centre `Mx, My, Mz`
+  // \[N·mm\]; `Mz` is 0 (no friction torque in this version).
+  double moment[3];
+  // The damping part of `force` and `moment`, `−β K v`, in the order
+  // `Fx, Fy, Fz, Mx, My` \[N, N·mm\] (zero while β = 0).
+  double damping[5];
+  // The stiffness `K[i][j] = ∂F_i/∂u_j` of the load the rolling elements carry
+  // (`= −∂reaction_i/∂u_j`), row-major, rows and columns `x, y, z, θx, θy`: N/mm,
+  // N/rad, N (moment per mm), N·mm/rad. Symmetric, positive semi-definite; the damping
+  // matrix is β times it.
+  double stiffness[5][5];
+  // The largest rolling-element load (a roller's outer raceway load, a ball's load)
+  // \[N\].
+  double max_element_load;
+  // Newton iterations of the solve (0: every degree of freedom is prescribed).
+  uint64_t iterations;
+  // Why the status is what it is, NUL-terminated UTF-8 (empty when loaded).
+  char message[KONTAKT_MESSAGE_LEN];
+} KontaktBearingResult;
 
 #ifdef __cplusplus
 extern "C" {
@@ -155,6 +196,79 @@ const char *kontakt_last_error_message(void);
 
 // The version of kontakt, NUL-terminated (static).
 const char *kontakt_version(void);
+
+// Create a bearing element from a bearing case (`method = "bearing"`, TOML text; the
+// schema of docs/case-schema.md; its `[load]` is required but not used). On success
+// `*out` is the new element (release it with [`kontakt_bearing_element_free`]); on failure
+// `*out` is set to null. The element starts undamped (β = 0).
+//
+// Returns `KONTAKT_OK`, `KONTAKT_INVALID_INPUT` (a TOML error or a key
+// out of range, named in the message: `bearing.roller_diameter_mm`),
+// `KONTAKT_FAILED`, `KONTAKT_NULL_OR_UTF8` (`toml` or `out` null,
+// `toml` not UTF-8) or `KONTAKT_PANIC`.
+//
+// # Safety
+// `toml` is null or a NUL-terminated string; `out` is null or writable.
+int32_t kontakt_bearing_element_from_toml(const char *toml, struct KontaktBearingElement **out);
+
+// Create a bearing element from a bearing case file (UTF-8 path). As
+// [`kontakt_bearing_element_from_toml`]; a file that cannot be read is
+// `KONTAKT_INVALID_INPUT` with field `path`.
+//
+// # Safety
+// `path` is null or a NUL-terminated string; `out` is null or writable.
+int32_t kontakt_bearing_element_from_file(const char *path, struct KontaktBearingElement **out);
+
+// Set the viscous damping of the element: the damping matrix is `damping_s` times the
+// stiffness (stiffness-proportional damping; β in s, finite, ≥ 0; default 0).
+//
+// Returns `KONTAKT_OK`, `KONTAKT_INVALID_INPUT` (field `damping_s`,
+// negative or not finite: the element keeps its β), `KONTAKT_NULL_OR_UTF8` or
+// `KONTAKT_PANIC`.
+//
+// # Safety
+// `element` is null or an element from this API, not yet freed and not used by another
+// thread during the call.
+int32_t kontakt_bearing_element_set_damping(struct KontaktBearingElement *element,
+                                            double damping_s);
+
+// Evaluate the bearing at the inner ring's `displacement` relative to the outer ring
+// (`δx, δy, δz` \[mm\], `θx, θy` \[rad\]; z the bearing axis) and its `velocity`
+// (`mm/s`, `rad/s`, same order), and write the bearing's reaction on the inner ring to
+// `*out` (left unchanged on failure). Warm-started from the element's previous call;
+// allocates nothing.
+//
+// Returns `KONTAKT_OK` (also when every rolling element is lifted off: then
+// `status` is [`KONTAKT_BEARING_LIFTED_OFF`], force and stiffness zero),
+// `KONTAKT_INVALID_INPUT` (field `displacement[i]` or `velocity[i]`: not finite,
+// or a displacement beyond the model's validity — a translation above the rolling
+// element's diameter, or a tilt moving the ring by more than that at the pitch radius),
+// `KONTAKT_FAILED` (the solver did not converge), `KONTAKT_NULL_OR_UTF8`
+// or `KONTAKT_PANIC`.
+//
+// # Safety
+// `element` is null or an element from this API, not yet freed and not used by another
+// thread during the call; `displacement` and `velocity` are null or point to 5 doubles;
+// `out` is null or writable.
+int32_t kontakt_bearing_element_evaluate(struct KontaktBearingElement *element,
+                                         const double *displacement,
+                                         const double *velocity,
+                                         struct KontaktBearingResult *out);
+
+// Forget the element's last equilibrium (the next evaluation starts from the closed
+// forms). Returns `KONTAKT_OK` or `KONTAKT_NULL_OR_UTF8`.
+//
+// # Safety
+// `element` is null or an element from this API, not yet freed and not used by another
+// thread during the call.
+int32_t kontakt_bearing_element_reset(struct KontaktBearingElement *element);
+
+// Release a bearing element. Null is ignored.
+//
+// # Safety
+// `element` is null or an element from this API that is not used afterwards (freeing it
+// twice is undefined behaviour).
+void kontakt_bearing_element_free(struct KontaktBearingElement *element);
 
 #ifdef __cplusplus
 }  // extern "C"

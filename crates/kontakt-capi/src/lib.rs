@@ -33,15 +33,24 @@
 //! - Threads: an element is `Send`, not shared: evaluate one element from one thread at a
 //!   time; different elements may be evaluated on different threads at once. The error
 //!   message is per thread.
+//!
+//! The **bearing element** ([`KontaktBearingElement`], `kontakt_bearing_element_*`) is a
+//! whole rolling bearing from a bearing case (`method = "bearing"`) as one force element:
+//! the inner ring's displacement and velocity relative to the outer ring in, the bearing's
+//! reaction on the inner ring and its 5 × 5 stiffness out, with the same codes, messages
+//! and threading (docs/mbs.md, "The bearing element from C").
 
 #![allow(unsafe_code)] // the C boundary: raw pointers in, raw pointers out
+
+mod bearing;
+pub use bearing::*;
 
 use kontakt::Error;
 use kontakt::element::{ContactElement, ContactStatus, ElementResult};
 use kontakt::geometry::Twist;
 use nalgebra::{Isometry3, Quaternion, Translation3, UnitQuaternion, Vector3};
 use std::cell::RefCell;
-use std::ffi::{CStr, CString, c_char};
+use std::ffi::{CStr, c_char};
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::Path;
 
@@ -123,14 +132,7 @@ impl KontaktResult {
     /// The C record of `r`.
     pub fn from_result(r: &ElementResult) -> Self {
         let v = |x: &Vector3<f64>| [x.x, x.y, x.z];
-        let mut message = [0 as c_char; KONTAKT_MESSAGE_LEN];
-        let mut end = r.message.len().min(KONTAKT_MESSAGE_LEN - 1);
-        while !r.message.is_char_boundary(end) {
-            end -= 1;
-        }
-        for (dst, &b) in message.iter_mut().zip(&r.message.as_bytes()[..end]) {
-            *dst = b as c_char;
-        }
+        let message = c_message(&r.message);
         KontaktResult {
             status: match r.status {
                 ContactStatus::Separated => KONTAKT_STATUS_SEPARATED,
@@ -157,13 +159,39 @@ impl KontaktResult {
     }
 }
 
+/// `text` as a NUL-terminated message field, cut at a character boundary to fit.
+fn c_message(text: &str) -> [c_char; KONTAKT_MESSAGE_LEN] {
+    let mut message = [0 as c_char; KONTAKT_MESSAGE_LEN];
+    let mut end = text.len().min(KONTAKT_MESSAGE_LEN - 1);
+    while !text.is_char_boundary(end) {
+        end -= 1;
+    }
+    for (dst, &b) in message.iter_mut().zip(&text.as_bytes()[..end]) {
+        *dst = b as c_char;
+    }
+    message
+}
+
 thread_local! {
-    static LAST_ERROR: RefCell<CString> = RefCell::new(CString::default());
+    /// The thread's last error message, NUL-terminated; its buffer is reused, so that a
+    /// successful call (which clears it) allocates nothing.
+    static LAST_ERROR: RefCell<Vec<u8>> = RefCell::new(vec![0]);
 }
 
 fn set_last_error(message: &str) {
-    let c = CString::new(message.replace('\0', "\\0")).unwrap_or_default();
-    LAST_ERROR.with(|e| *e.borrow_mut() = c);
+    LAST_ERROR.with(|e| {
+        let mut e = e.borrow_mut();
+        e.clear();
+        // an interior NUL would end the C string early: spell it out
+        for &b in message.as_bytes() {
+            if b == 0 {
+                e.extend_from_slice(b"\\0");
+            } else {
+                e.push(b);
+            }
+        }
+        e.push(0);
+    });
 }
 
 /// A failure: the code and the message.
@@ -248,14 +276,58 @@ fn twist(t: [f64; 6]) -> Twist {
     )
 }
 
-/// Hand a new element to the caller through `out`.
+/// Create a handle at the boundary: `*out` is set to null, then to the new handle made by
+/// `make` (on failure it stays null).
 ///
 /// # Safety
-/// `out` is non-null and writable.
-unsafe fn give(out: *mut *mut KontaktElement, element: ContactElement) {
-    let handle = Box::into_raw(Box::new(KontaktElement { inner: element }));
-    // SAFETY: checked non-null by the caller of `give`; writable by the API's contract.
-    unsafe { out.write(handle) };
+/// `out` is null (refused) or writable.
+unsafe fn create<T>(out: *mut *mut T, make: impl FnOnce() -> Result<T, Failure>) -> i32 {
+    guard(|| {
+        if out.is_null() {
+            return Err(null("out"));
+        }
+        // SAFETY: `out` is non-null and writable by the caller's contract.
+        unsafe { out.write(std::ptr::null_mut()) };
+        let handle = Box::into_raw(Box::new(make()?));
+        // SAFETY: as above.
+        unsafe { out.write(handle) };
+        Ok(())
+    })
+}
+
+/// The value `make` builds from the case file at `path` (UTF-8): a file that cannot be
+/// read is invalid input with field `path`, and the file is named in front of the
+/// library's message.
+///
+/// # Safety
+/// `path` is null (refused) or a NUL-terminated string.
+unsafe fn from_case_file<T>(
+    path: *const c_char,
+    make: impl FnOnce(&str) -> kontakt::Result<T>,
+) -> Result<T, Failure> {
+    // SAFETY: `path` is null (refused) or a NUL-terminated string by contract.
+    let path = unsafe { text(path, "path") }?;
+    let content = kontakt_case::read_case_file(Path::new(path)).map_err(library_error)?;
+    make(&content).map_err(|e| {
+        let (code, message) = library_error(e);
+        (code, format!("{path}: {message}"))
+    })
+}
+
+/// Release a handle made by [`create`]. Null is ignored; a panic in a destructor is
+/// caught here.
+///
+/// # Safety
+/// `handle` is null or from [`create`], and not used afterwards.
+unsafe fn release<T>(handle: *mut T) {
+    if handle.is_null() {
+        return;
+    }
+    let _ = catch_unwind(AssertUnwindSafe(|| {
+        // SAFETY: `handle` came from `Box::into_raw` in `create` and is freed once (the
+        // caller's contract).
+        drop(unsafe { Box::from_raw(handle) });
+    }));
 }
 
 /// Create an element from an element case (`method = "element"`, TOML text; the schema of
@@ -273,19 +345,15 @@ pub unsafe extern "C" fn kontakt_element_from_toml(
     toml: *const c_char,
     out: *mut *mut KontaktElement,
 ) -> i32 {
-    guard(|| {
-        if out.is_null() {
-            return Err(null("out"));
-        }
-        // SAFETY: `out` is non-null and writable by the caller's contract.
-        unsafe { out.write(std::ptr::null_mut()) };
-        // SAFETY: `toml` is null (refused) or a NUL-terminated string by contract.
-        let text = unsafe { text(toml, "toml") }?;
-        let element = kontakt_case::element_from_toml(text).map_err(library_error)?;
-        // SAFETY: `out` checked non-null above.
-        unsafe { give(out, element) };
-        Ok(())
-    })
+    // SAFETY: `out` is null (refused) or writable; `toml` null (refused) or a
+    // NUL-terminated string, by contract.
+    unsafe {
+        create(out, || {
+            let text = text(toml, "toml")?;
+            let inner = kontakt_case::element_from_toml(text).map_err(library_error)?;
+            Ok(KontaktElement { inner })
+        })
+    }
 }
 
 /// Create an element from an element case file (UTF-8 path). As
@@ -299,24 +367,14 @@ pub unsafe extern "C" fn kontakt_element_from_file(
     path: *const c_char,
     out: *mut *mut KontaktElement,
 ) -> i32 {
-    guard(|| {
-        if out.is_null() {
-            return Err(null("out"));
-        }
-        // SAFETY: `out` is non-null and writable by the caller's contract.
-        unsafe { out.write(std::ptr::null_mut()) };
-        // SAFETY: `path` is null (refused) or a NUL-terminated string by contract.
-        let path = unsafe { text(path, "path") }?;
-        let content = kontakt_case::read_case_file(Path::new(path)).map_err(library_error)?;
-        let element = kontakt_case::element_from_toml(&content).map_err(|e| {
-            // Name the file in front of the library's message.
-            let (code, message) = library_error(e);
-            (code, format!("{path}: {message}"))
-        })?;
-        // SAFETY: `out` checked non-null above.
-        unsafe { give(out, element) };
-        Ok(())
-    })
+    // SAFETY: `out` is null (refused) or writable; `path` null (refused) or a
+    // NUL-terminated string, by contract.
+    unsafe {
+        create(out, || {
+            let inner = from_case_file(path, kontakt_case::element_from_toml)?;
+            Ok(KontaktElement { inner })
+        })
+    }
 }
 
 /// Evaluate the element at the bodies' poses and twists (world frame; a pose is
@@ -395,15 +453,8 @@ pub unsafe extern "C" fn kontakt_element_reset(element: *mut KontaktElement) -> 
 /// twice is undefined behaviour).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn kontakt_element_free(element: *mut KontaktElement) {
-    if element.is_null() {
-        return;
-    }
-    // Dropping cannot unwind into C: a panic in a destructor is caught here.
-    let _ = catch_unwind(AssertUnwindSafe(|| {
-        // SAFETY: `element` came from `Box::into_raw` in this API and is freed once (the
-        // caller's contract).
-        drop(unsafe { Box::from_raw(element) });
-    }));
+    // SAFETY: null or from this API and freed once (the caller's contract).
+    unsafe { release(element) }
 }
 
 /// The message of the last failed call on this thread (empty after a successful call):
@@ -411,7 +462,7 @@ pub unsafe extern "C" fn kontakt_element_free(element: *mut KontaktElement) {
 /// on this thread. Never null.
 #[unsafe(no_mangle)]
 pub extern "C" fn kontakt_last_error_message() -> *const c_char {
-    LAST_ERROR.with(|e| e.borrow().as_ptr())
+    LAST_ERROR.with(|e| e.borrow().as_ptr().cast())
 }
 
 /// The version of kontakt, NUL-terminated (static).

@@ -13,93 +13,11 @@ use kontakt::element::{Backend, ContactElement, ContactStatus, ElementResult, El
 use kontakt::geometry::Twist;
 use kontakt::pimp::PimpOptions;
 use nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
-use std::collections::BTreeMap;
-use std::path::{Path, PathBuf};
-use std::process::Command;
 
-/// `target/<profile>`: this test runs from `target/<profile>/deps`.
-fn profile_dir() -> PathBuf {
-    let exe = std::env::current_exe().unwrap();
-    exe.parent().unwrap().parent().unwrap().to_path_buf()
-}
+#[path = "support/c_program.rs"]
+mod c_program;
 
-fn static_lib() -> PathBuf {
-    let dir = profile_dir();
-    for p in [
-        dir.join("libkontakt_capi.a"),
-        dir.join("deps/libkontakt_capi.a"),
-    ] {
-        if p.exists() {
-            return p;
-        }
-    }
-    panic!(
-        "no libkontakt_capi.a in {} (cargo test -p kontakt-capi builds it with the library)",
-        dir.display()
-    );
-}
-
-/// Compile and run the example; its standard output.
-fn run_c_example() -> String {
-    let crate_dir = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let exe = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("kontakt_c_element");
-    let cc = std::env::var("CC").unwrap_or_else(|_| "cc".into());
-    let out = Command::new(&cc)
-        .args(["-std=c99", "-Wall", "-Wextra", "-Werror", "-O1"])
-        .arg("-I")
-        .arg(crate_dir.join("include"))
-        .arg(crate_dir.join("examples/c/element.c"))
-        .arg(static_lib())
-        .args(["-lpthread", "-ldl", "-lm"])
-        .arg("-o")
-        .arg(&exe)
-        .output()
-        .unwrap_or_else(|e| panic!("cannot run the C compiler `{cc}`: {e}"));
-    assert!(
-        out.status.success(),
-        "{cc} failed:\n{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let run = Command::new(&exe).output().unwrap();
-    let stdout = String::from_utf8(run.stdout).unwrap();
-    assert!(
-        run.status.success(),
-        "the example failed:\n{stdout}\n{}",
-        String::from_utf8_lossy(&run.stderr)
-    );
-    stdout
-}
-
-/// One evaluation's printed lines: key → the rest of the line.
-type Section = BTreeMap<String, String>;
-
-fn sections(stdout: &str) -> BTreeMap<String, Section> {
-    let mut all = BTreeMap::new();
-    let mut current: Option<(String, Section)> = None;
-    for line in stdout.lines() {
-        if let Some(label) = line.strip_prefix("== ") {
-            if let Some((l, s)) = current.take() {
-                all.insert(l, s);
-            }
-            current = Some((label.to_string(), Section::new()));
-        } else if let Some((_, s)) = current.as_mut() {
-            let (k, v) = line.split_once(' ').unwrap_or((line, ""));
-            s.insert(k.to_string(), v.to_string());
-        }
-    }
-    if let Some((l, s)) = current {
-        all.insert(l, s);
-    }
-    all
-}
-
-fn numbers(s: &Section, key: &str) -> Vec<f64> {
-    s.get(key)
-        .unwrap_or_else(|| panic!("no `{key}` in {s:?}"))
-        .split_whitespace()
-        .map(|x| x.parse().unwrap())
-        .collect()
-}
+use c_program::{Section, numbers, run_c_program, sections};
 
 fn v3(v: &Vector3<f64>) -> Vec<f64> {
     vec![v.x, v.y, v.z]
@@ -154,7 +72,7 @@ fn pose_along(n: &Vector3<f64>, d: f64) -> Isometry3<f64> {
 
 #[test]
 fn c_example_matches_the_rust_api() {
-    let stdout = run_c_example();
+    let stdout = run_c_program("element.c", &[]);
     println!("{stdout}");
     assert!(stdout.starts_with(&format!("kontakt {}", env!("CARGO_PKG_VERSION"))));
     let all = sections(&stdout);

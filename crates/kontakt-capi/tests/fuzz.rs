@@ -1,6 +1,7 @@
 //! Fuzz harness of the C API (docs/RELIABILITY.md): the extern functions called with
 //! edited element cases (TOML text with NUL bytes and invalid UTF-8 too), hostile poses
-//! and twists (NaN, ±inf, non-unit quaternions, 1e300) and null pointers.
+//! and twists (NaN, ±inf, non-unit quaternions, 1e300) and null pointers; the bearing
+//! element with edited bearing cases, hostile displacements, velocities and dampings.
 //!
 //! Properties: never a panic across the boundary (code 4 is a failure here too); every
 //! code is one of the documented ones; a failure sets a non-empty one-line message, a
@@ -155,6 +156,47 @@ fn evaluate(e: *mut KontaktElement, p: &[[f64; 7]; 2], t: &[[f64; 6]; 2], nulls:
     }
 }
 
+/// The example bearing cases of the repository (`examples/bearing_*.toml`).
+fn bearing_seeds() -> Vec<Value> {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples");
+    let mut files: Vec<_> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| {
+            p.file_name()
+                .is_some_and(|n| n.to_string_lossy().starts_with("bearing_"))
+        })
+        .collect();
+    files.sort();
+    files
+        .iter()
+        .map(|f| Value::Table(std::fs::read_to_string(f).unwrap().parse().unwrap()))
+        .collect()
+}
+
+fn check_bearing_result(r: &KontaktBearingResult) {
+    let mut all = vec![r.max_element_load];
+    all.extend(r.force);
+    all.extend(r.moment);
+    all.extend(r.damping);
+    all.extend(r.stiffness.iter().flatten());
+    assert!(
+        all.iter().all(|x| x.is_finite()),
+        "non-finite result: {r:?}"
+    );
+    assert!((0..=1).contains(&r.status), "status {}", r.status);
+}
+
+/// A displacement: in the loaded range of the example bearings (tens of µm, 1e-3 rad) or
+/// hostile.
+fn displacement() -> impl Strategy<Value = [f64; 5]> {
+    prop_oneof![
+        3 => (-0.05..0.05f64, -0.05..0.05f64, -0.05..0.05f64, -1e-3..1e-3f64, -1e-3..1e-3f64)
+            .prop_map(|(x, y, z, a, b)| [x, y, z, a, b]),
+        1 => prop::array::uniform5(number()),
+    ]
+}
+
 proptest! {
     #![proptest_config(config(2_000))]
 
@@ -211,6 +253,60 @@ proptest! {
             // SAFETY: a live element, freed once.
             unsafe { kontakt_element_free(e) };
         }
+    }
+}
+
+proptest! {
+    #![proptest_config(config(200))]
+
+    /// Edited bearing cases: created, damped, evaluated at several displacements and
+    /// velocities (with null pointers now and then), reset, freed.
+    #[test]
+    fn bearing_cases_and_displacements(
+        seed in any::<usize>(),
+        edits in prop::collection::vec(edit(), 0..2),
+        calls in prop::collection::vec((displacement(), prop::array::uniform5(number())), 1..4),
+        damping in prop_oneof![2 => Just(0.0), 1 => number()],
+        nulls in prop_oneof![4 => Just(0u8), 1 => any::<u8>()],
+    ) {
+        let seeds = bearing_seeds();
+        let mut doc = seeds[seed % seeds.len()].clone();
+        apply(&mut doc, &edits);
+        let Some(text) = to_text(&doc) else { return Ok(()) };
+        let c = std::ffi::CString::new(text.replace('\0', "")).unwrap();
+        let mut e = null_mut();
+        // SAFETY: a C string and a writable out pointer.
+        let code = unsafe { kontakt_bearing_element_from_toml(c.as_ptr(), &mut e) };
+        check_code("kontakt_bearing_element_from_toml", code);
+        if code != KONTAKT_OK {
+            prop_assert!(e.is_null());
+            return Ok(());
+        }
+        // SAFETY: a live element.
+        let code = unsafe { kontakt_bearing_element_set_damping(e, damping) };
+        check_code("kontakt_bearing_element_set_damping", code);
+        for (u, v) in &calls {
+            // SAFETY: plain data: all zeros is a valid value.
+            let mut r: KontaktBearingResult = unsafe { std::mem::zeroed() };
+            let or_null = |bit: u8, ptr: *const f64| if nulls & bit != 0 { null() } else { ptr };
+            let out: *mut KontaktBearingResult = if nulls & 4 != 0 { null_mut() } else { &mut r };
+            let elem = if nulls & 8 != 0 { null_mut() } else { e };
+            // SAFETY: each pointer is null or points to 5 doubles; `e` is live.
+            let code = unsafe {
+                kontakt_bearing_element_evaluate(elem, or_null(1, u.as_ptr()), or_null(2, v.as_ptr()), out)
+            };
+            check_code("kontakt_bearing_element_evaluate", code);
+            if nulls & 15 != 0 {
+                prop_assert_eq!(code, KONTAKT_NULL_OR_UTF8);
+            }
+            if code == KONTAKT_OK {
+                check_bearing_result(&r);
+            }
+        }
+        // SAFETY: a live element.
+        check_code("kontakt_bearing_element_reset", unsafe { kontakt_bearing_element_reset(e) });
+        // SAFETY: freed once.
+        unsafe { kontakt_bearing_element_free(e) };
     }
 }
 

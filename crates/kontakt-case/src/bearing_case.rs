@@ -52,17 +52,23 @@
 //! methods; a solve that stagnates at the round-off floor (residual at most 1e-8 of the
 //! load, 1000 times the tolerance) is reported with a warning.
 
-use crate::common::{MaterialSpec, SCHEMA_VERSION, in_degrees, material, parse_toml};
+use crate::bearing_rating::{
+    LifeInput, RatingReport, RatingSpec, checked_spec, rating, roller_pressures,
+};
+use crate::bearing_slices::{RollerPressures, SliceModel, SliceSolver, pressure_map};
+use crate::common::{MaterialSpec, SCHEMA_VERSION, in_degrees, material};
 use crate::validity::{ContactSize, Size, checked, checked_report};
 use kontakt::hertz::validity::point_size;
 use kontakt::solve::{SolveStatus, Termination};
 use kontakt::{Error, Result};
 use kontakt_bearing::ball_equilibrium::{BallBearingSolver, BallSolution};
 use kontakt_bearing::ball_speed::{BallSpeedSolver, RaceControl};
+use kontakt_bearing::equilibrium::coupled::CoupledSliceSolver;
 use kontakt_bearing::equilibrium::{Dof, RingLoad, RollerBearingSolver};
 use kontakt_bearing::geometry::{
     BallBearing, BallBearingKind, DEFAULT_SLICES, RollerBearing, RollerBearingKind,
 };
+use kontakt_bearing::life::RatingType;
 use kontakt_bearing::profile::{Profile, TabulatedProfile};
 use kontakt_bearing::speed::RingSpeeds;
 use serde::{Deserialize, Serialize};
@@ -156,6 +162,14 @@ pub struct BallSpec {
     /// The rings' material (`e_mpa`, `nu`), default steel (210 000 MPa, 0.3).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub ring_material: Option<MaterialSpec>,
+    /// The boundary dimensions the missing keys above were generated from
+    /// ([`crate::bearing_design`]); absent: every key given.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub boundary: Option<crate::bearing_design::BoundarySpec>,
+    /// `[bearing.rating]`: the catalogue's C and C0 for the ISO 281 life and ISO 76 static
+    /// safety (`docs/bearing-model.md`, "Life and static safety").
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rating: Option<RatingSpec>,
     /// The balls' density, kg/m³ (default steel 7850; silicon nitride about 3200, with its
     /// `ball_material`): their centrifugal force and gyroscopic moment at speed.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -204,6 +218,18 @@ pub struct RollerSpec {
     /// The outer raceway's profile; default straight.
     #[serde(default = "ProfileSpec::straight")]
     pub outer_profile: ProfileSpec,
+    /// The boundary dimensions the missing keys above were generated from
+    /// ([`crate::bearing_design`]); absent: every key given.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub boundary: Option<crate::bearing_design::BoundarySpec>,
+    /// How the slices carry load: `"iso"` (ISO/TS 16281, default) or `"coupled"`
+    /// (half-space strips; reports the pressure of every slice).
+    #[serde(default)]
+    pub slice_model: SliceModel,
+    /// `[bearing.rating]`: the catalogue's C and C0 for the ISO 281 life, the ISO/TS 16281
+    /// lamina life and the ISO 76 static safety (`docs/bearing-model.md`, "Life and static safety").
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rating: Option<RatingSpec>,
 }
 
 fn default_slices() -> usize {
@@ -472,6 +498,10 @@ pub struct RollerRow {
     pub max_load_per_length_n_per_mm: f64,
     /// The largest slice approach, mm (negative: lifted off by that much).
     pub approach_mm: f64,
+    /// The largest Hertz pressure of the roller's slices on the inner raceway, MPa.
+    pub inner_max_pressure_mpa: f64,
+    /// The largest Hertz pressure of the roller's slices on the outer raceway, MPa.
+    pub outer_max_pressure_mpa: f64,
 }
 
 /// The slices of the most loaded roller.
@@ -488,6 +518,10 @@ pub struct SliceTable {
     pub load_per_length_n_per_mm: Vec<f64>,
     /// Slice approaches, mm.
     pub approach_mm: Vec<f64>,
+    /// Maximum Hertz pressure of each slice on the inner raceway, MPa.
+    pub inner_pressure_mpa: Vec<f64>,
+    /// Maximum Hertz pressure of each slice on the outer raceway, MPa.
+    pub outer_pressure_mpa: Vec<f64>,
 }
 
 /// The solver's status.
@@ -537,7 +571,7 @@ pub struct BearingReport {
     /// The load-zone parameter ε (Sjövall 1933) from the ring displacement; absent without
     /// a radial displacement and for thrust bearings. Exact for rigid rings without tilt.
     /// Ball bearings: from the balls' approach around the ring (at speed the inner
-    /// contact's), `docs/bearing-model.md` §9.5.
+    /// contact's), `docs/bearing-model.md` §16.5.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub load_zone_epsilon: Option<f64>,
     /// The names of the degrees of freedom, the order of the stiffness matrix's rows and
@@ -554,12 +588,13 @@ pub struct BearingReport {
     /// The ring speeds `[inner, outer]`, r/min, when not at rest (`[speed]`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub ring_speeds_rpm: Option<[f64; 2]>,
-    /// The Hertz contacts of the most loaded ball, inner and outer raceway, sized for the
-    /// validity check; none for a roller bearing (no Hertz or half-space contact is sized
-    /// in the slice model: the check has only the finiteness of the report to check). Not
+    /// The Hertz contacts of the most loaded ball, inner and outer raceway, or of the most
+    /// loaded roller's most loaded slice on each raceway, sized for the validity check. Not
     /// in the JSON.
     #[serde(skip)]
     pub contacts: Vec<ContactSize>,
+    /// Static safety and rating lives (`docs/bearing-model.md`, "Life and static safety").
+    pub rating: RatingReport,
 }
 
 /// The rolling elements of a [`BearingReport`], their keys flattened into the report.
@@ -611,6 +646,18 @@ pub struct RollerPart {
     pub roller_loads: Vec<RollerRow>,
     /// The slices of the most loaded roller.
     pub most_loaded_roller: SliceTable,
+    /// Every roller's slice loads per unit length, N/mm: one row per roller (in the order
+    /// of `roller_loads`), one value per slice (at `most_loaded_roller.position_mm`); 0
+    /// where a slice is lifted off. The map of `kontakt bearing --map`.
+    pub slice_load_per_length_n_per_mm: Vec<Vec<f64>>,
+    /// `slice_model = "coupled"`: the pressure along every roller (keys
+    /// `max_pressure_mpa`, `slice_pressure_mpa`).
+    #[serde(flatten)]
+    pub pressure: Option<Box<RollerPressures>>,
+    /// The largest Hertz pressure of any slice on the inner raceway, MPa.
+    pub max_inner_pressure_mpa: f64,
+    /// The largest Hertz pressure of any slice on the outer raceway, MPa.
+    pub max_outer_pressure_mpa: f64,
 }
 
 /// The report keys of a ball bearing.
@@ -633,7 +680,7 @@ pub struct BallPart {
     /// Per ball, in azimuth order.
     pub ball_loads: Vec<BallRow>,
     /// At speed: the race-control assumption of the balls' kinematics and gyroscopic
-    /// moment, `"outer"` (Jones 1960; `docs/bearing-model.md` §9).
+    /// moment, `"outer"` (Jones 1960; `docs/bearing-model.md` §16).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub race_control: Option<&'static str>,
 }
@@ -694,7 +741,7 @@ impl BearingCase {
     /// [`Error::CaseFile`] (line, key path, what the schema takes) for malformed TOML,
     /// unknown keys or wrong types.
     pub fn from_toml_str(text: &str) -> Result<Self> {
-        parse_toml(text)
+        crate::bearing_design::parse_bearing_case(text)
     }
 }
 
@@ -851,6 +898,8 @@ pub(crate) fn run_bearing_case_unchecked(case: &BearingCase) -> Result<BearingRe
 pub(crate) enum Planned {
     /// A roller bearing.
     Roller(RollerBearingSolver),
+    /// A roller bearing with coupled slices.
+    Coupled(Box<CoupledSliceSolver>),
     /// A ball bearing, with its case keys for the errors of a solve.
     Ball {
         solver: BallBearingSolver,
@@ -894,6 +943,10 @@ pub(crate) fn plan(case: &BearingCase) -> Result<(Planned, &'static str)> {
     };
     case.speed.require_at_rest(label)?;
     let bearing = roller_bearing(kind, s, label)?;
+    if s.slice_model == SliceModel::Coupled {
+        let solver = CoupledSliceSolver::new(bearing).map_err(map_bearing_field)?;
+        return Ok((Planned::Coupled(Box::new(solver)), label));
+    }
     let solver = RollerBearingSolver::new(bearing).map_err(map_bearing_field)?;
     Ok((Planned::Roller(solver), label))
 }
@@ -910,6 +963,7 @@ pub(crate) fn solve_planned(
     let load = ring_load(load)?;
     match planned {
         Planned::Roller(solver) => roller_report(case, label, solver, &load, start),
+        Planned::Coupled(solver) => roller_report(case, label, solver.as_mut(), &load, start),
         Planned::Ball { solver, spec, keys } => {
             let solver = BallSolver::AtRest(solver);
             ball_report(case, label, solver, spec, keys, &load, start)
@@ -922,10 +976,10 @@ pub(crate) fn solve_planned(
 }
 
 /// The report of a roller bearing's solve.
-fn roller_report(
+fn roller_report<S: SliceSolver>(
     case: &BearingCase,
     label: &'static str,
-    solver: &mut RollerBearingSolver,
+    solver: &mut S,
     load: &RingLoad,
     start: Option<[f64; 5]>,
 ) -> Result<BearingReport> {
@@ -936,28 +990,46 @@ fn roller_report(
     .map_err(map_load)?;
     let mut warnings = solver_warnings(&sol.status, sol.note)?;
     let b = solver.bearing();
-    if b.slices < DEFAULT_SLICES {
-        warnings.push(format!(
-            "{} slices per roller: fewer than the recommended {DEFAULT_SLICES}, the roller loads are coarse (docs/bearing-model.md §6)",
-            b.slices
-        ));
-    }
+    warnings.extend(coarse_slices_warning(b.slices));
     let ns = b.slices;
     let width = b.effective_length_mm / ns as f64;
     let loads = solver.slice_loads();
     let approaches = solver.slice_approaches();
+    let map = pressure_map(solver);
+    let spec = match &case.bearing {
+        BearingSpec::Cylindrical(s) | BearingSpec::Tapered(s) | BearingSpec::Thrust(s) => {
+            s.rating.as_ref()
+        }
+        _ => None,
+    };
+    let spec = checked_spec(spec, false)?;
+    let most = (0..b.rollers).fold(0, |m, j| {
+        if solver.roller_loads()[j].outer_n > solver.roller_loads()[m].outer_n {
+            j
+        } else {
+            m
+        }
+    });
+    // Hertz line contacts of the independent slices (and the most loaded slice's contact
+    // for the validity check); a model with its own slice pressures (coupled slices)
+    // reports those instead.
+    let mut pressures = roller_pressures(b, solver.roller_loads(), loads, most)?;
+    if let Some((inner, outer)) = solver.slice_pressures() {
+        let peak = |p: &[f64]| p.iter().copied().fold(0.0, f64::max);
+        pressures.per_roller = inner
+            .chunks_exact(ns)
+            .zip(outer.chunks_exact(ns))
+            .map(|(i, o)| [peak(i), peak(o)])
+            .collect();
+        pressures.most_inner = inner[most * ns..(most + 1) * ns].to_vec();
+        pressures.most_outer = outer[most * ns..(most + 1) * ns].to_vec();
+    }
     let mut rows = Vec::with_capacity(b.rollers);
-    let mut most = 0;
-    let mut q_max = f64::NEG_INFINITY;
     for (j, r) in solver.roller_loads().iter().enumerate() {
         let slice_max = loads[j * ns..(j + 1) * ns]
             .iter()
             .copied()
             .fold(0.0, f64::max);
-        if r.outer_n > q_max {
-            q_max = r.outer_n;
-            most = j;
-        }
         rows.push(RollerRow {
             azimuth_deg: r.azimuth_rad.to_degrees(),
             inner_load_n: r.inner_n,
@@ -965,6 +1037,8 @@ fn roller_report(
             rib_load_n: r.rib_n,
             max_load_per_length_n_per_mm: slice_max / width,
             approach_mm: r.max_approach_mm,
+            inner_max_pressure_mpa: pressures.per_roller[j][0],
+            outer_max_pressure_mpa: pressures.per_roller[j][1],
         });
     }
     let slice_loads = loads[most * ns..(most + 1) * ns].to_vec();
@@ -974,7 +1048,35 @@ fn roller_report(
         load_per_length_n_per_mm: slice_loads.iter().map(|q| q / width).collect(),
         load_n: slice_loads,
         approach_mm: approaches[most * ns..(most + 1) * ns].to_vec(),
+        inner_pressure_mpa: pressures.most_inner,
+        outer_pressure_mpa: pressures.most_outer,
     };
+    let p_max = pressures
+        .per_roller
+        .iter()
+        .fold([0.0_f64; 2], |m, p| [m[0].max(p[0]), m[1].max(p[1])]);
+    let kind = match b.kind {
+        RollerBearingKind::Cylindrical => RatingType::Cylindrical,
+        RollerBearingKind::Thrust => RatingType::Thrust,
+        RollerBearingKind::Tapered => RatingType::Tapered {
+            contact_angle_rad: b.contact_angle_rad,
+        },
+    };
+    let r_most = solver.roller_loads()[most];
+    let inner_ratio = if r_most.outer_n > 0.0 {
+        r_most.inner_n / r_most.outer_n
+    } else {
+        1.0
+    };
+    let rated = rating(
+        kind,
+        &spec,
+        sol.load,
+        applied_moment(load),
+        p_max[0].max(p_max[1]),
+        LifeInput::Rollers(b, loads, inner_ratio),
+        &mut warnings,
+    )?;
     let elements = BearingElements::Rollers(RollerPart {
         rollers: b.rollers,
         slices: ns,
@@ -988,23 +1090,57 @@ fn roller_report(
             .fold(0.0, f64::max),
         roller_loads: rows,
         most_loaded_roller: most_loaded,
+        slice_load_per_length_n_per_mm: loads
+            .chunks_exact(ns)
+            .take(b.rollers)
+            .map(|c| c.iter().map(|q| q / width).collect())
+            .collect(),
+        pressure: map.map(|(map, m)| {
+            Box::new(RollerPressures {
+                max_pressure_mpa: m.iter().copied().fold(0.0, f64::max),
+                slice_pressure_mpa: map,
+            })
+        }),
+        max_inner_pressure_mpa: p_max[0],
+        max_outer_pressure_mpa: p_max[1],
     });
     let mut report = report(case, label, elements, sol.displacement, sol.load);
     report.solver = solver_echo(&sol.status);
     report.load_zone_epsilon = sol.load_zone;
     report.stiffness_matrix = sol.stiffness;
     report.warnings = warnings;
+    report.contacts = pressures.contacts;
+    report.rating = rated;
     Ok(report)
 }
 
+/// The warning of a roller bearing with fewer slices than the default (a property of the
+/// bearing, the same for every load).
+pub(crate) fn coarse_slices_warning(slices: usize) -> Option<String> {
+    (slices < DEFAULT_SLICES).then(|| {
+        format!(
+            "{slices} slices per roller: fewer than the recommended {DEFAULT_SLICES}, the roller loads are coarse (docs/bearing-model.md §6)"
+        )
+    })
+}
+
+/// The magnitude of the applied (force-controlled) moment, N·mm.
+fn applied_moment(load: &RingLoad) -> f64 {
+    let m = |d: Dof| match d {
+        Dof::Force(v) => v,
+        Dof::Displacement(_) => 0.0,
+    };
+    m(load.dofs[3]).hypot(m(load.dofs[4]))
+}
+
 /// The library's load-field errors (`load.fz_n`) as the case file's keys.
-fn map_load(e: Error) -> Error {
+pub(crate) fn map_load(e: Error) -> Error {
     e.map_field(|f| load_key(f).unwrap_or_else(|| f.to_string()))
 }
 
 /// `[load]` as the library's [`RingLoad`]: a prescribed degree of freedom must have no
 /// force entry.
-fn ring_load(l: &BearingLoadSpec) -> Result<RingLoad> {
+pub(crate) fn ring_load(l: &BearingLoadSpec) -> Result<RingLoad> {
     let applied = [
         l.force_n[0],
         l.force_n[1],
@@ -1037,7 +1173,10 @@ fn ring_load(l: &BearingLoadSpec) -> Result<RingLoad> {
 
 /// The warnings of a solve's status (stagnated, the library's note), or the refusal of a
 /// solve that did not converge.
-fn solver_warnings(status: &SolveStatus, note: Option<&'static str>) -> Result<Vec<String>> {
+pub(crate) fn solver_warnings(
+    status: &SolveStatus,
+    note: Option<&'static str>,
+) -> Result<Vec<String>> {
     let mut warnings = Vec::new();
     match status.termination {
         Termination::Converged => {}
@@ -1099,6 +1238,7 @@ fn report(
         stiffness_units: stiffness_units(),
         warnings: Vec::new(),
         contacts: Vec::new(),
+        rating: RatingReport::default(),
     }
 }
 
@@ -1106,8 +1246,8 @@ fn report(
 /// or the groove-radius key of the inner and the outer ring.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct GrooveKeys {
-    inner: &'static str,
-    outer: &'static str,
+    pub(crate) inner: &'static str,
+    pub(crate) outer: &'static str,
 }
 
 /// A groove's osculation f = r/D from exactly one of its two keys.
@@ -1278,7 +1418,7 @@ fn plan_ball(
 pub(crate) enum BallSolver<'a> {
     /// The quasi-static equilibrium (§8).
     AtRest(&'a mut BallBearingSolver),
-    /// The high-speed model (§9).
+    /// The high-speed model (§16).
     AtSpeed(&'a mut BallSpeedSolver),
 }
 
@@ -1309,7 +1449,25 @@ fn ball_report(
         BallSolver::AtRest(solver) => (solver.bearing(), solver.ball_stiffness(), None),
         BallSolver::AtSpeed(solver) => (solver.bearing(), solver.ball_stiffness(), Some("outer")),
     };
-    let warnings = solver_warnings(&sol.status, sol.note)?;
+    let mut warnings = solver_warnings(&sol.status, sol.note)?;
+    let spec = checked_spec(s.rating.as_ref(), true)?;
+    let kind = match b.kind {
+        BallBearingKind::DeepGroove => RatingType::DeepGrooveBall,
+        BallBearingKind::AngularContact => RatingType::AngularContactBall {
+            contact_angle_rad: b.contact_angle_rad,
+        },
+    };
+    let p_max = sol.max_pressure_mpa[0].max(sol.max_pressure_mpa[1]);
+    let moment = applied_moment(load);
+    let nominal = match b.kind {
+        BallBearingKind::DeepGroove => 0.0,
+        BallBearingKind::AngularContact => b.contact_angle_rad,
+    };
+    // the balls' loads on the inner ring (at speed the inner contact's; the outer
+    // contact's centrifugal share is not in the life yet)
+    let q: Vec<f64> = rows.iter().map(|r| r.load_n).collect();
+    let life = LifeInput::Balls(b, nominal, &q);
+    let rated = rating(kind, &spec, sol.load, moment, p_max, life, &mut warnings)?;
     let contacts = ball_contacts(b, s, keys, q_max)?;
     let elements = BearingElements::Balls(BallPart {
         balls: b.balls,
@@ -1327,6 +1485,7 @@ fn ball_report(
     report.stiffness_matrix = sol.stiffness;
     report.warnings = warnings;
     report.contacts = contacts;
+    report.rating = rated;
     if race_control.is_some() {
         report.ring_speeds_rpm = Some([case.speed.inner_rpm, case.speed.outer_rpm]);
     }

@@ -86,17 +86,24 @@ impl BearingModel {
 
     /// [`BearingModel::solve`] before the validity check, without keeping the solution.
     pub(crate) fn solve_unchecked(&mut self, l: &BearingLoadSpec) -> Result<BearingReport> {
-        // zero load: the closed-form start is the exact answer (every element lifted off);
-        // Newton from an old equilibrium would end at the round-off floor instead
-        let p = &l.prescribed;
-        let unloaded = l.force_n.iter().chain(&l.moment_nmm).all(|f| *f == 0.0)
-            && [p.dx_mm, p.dy_mm, p.dz_mm, p.tilt_x_rad, p.tilt_y_rad]
-                .iter()
-                .all(|u| u.is_none_or(|u| u == 0.0));
-        let start = if unloaded { None } else { self.last };
+        let start = if unloaded(l) { None } else { self.last };
         solve_planned(&self.case, self.label, &mut self.planned, l, start)
     }
 }
+
+/// Whether `l` is no load at all (forces, moments and prescribed displacements zero): then
+/// the closed-form start is the exact answer (every element lifted off), and Newton from an
+/// old equilibrium would end at the round-off floor instead.
+pub(crate) fn unloaded(l: &BearingLoadSpec) -> bool {
+    let p = &l.prescribed;
+    l.force_n.iter().chain(&l.moment_nmm).all(|f| *f == 0.0)
+        && [p.dx_mm, p.dy_mm, p.dz_mm, p.tilt_x_rad, p.tilt_y_rad]
+            .iter()
+            .all(|u| u.is_none_or(|u| u == 0.0))
+}
+
+mod element;
+pub use element::{BearingElement, BearingElementOutput, BearingElementStatus, prescribed_load};
 
 #[cfg(test)]
 mod tests;

@@ -68,7 +68,9 @@ impl Case {
             "mindlin" => Ok(Case::Mindlin(Box::new(parse_toml(text)?))),
             "impact" => Ok(Case::Impact(Box::new(parse_toml(text)?))),
             "rough" => Ok(Case::Rough(Box::new(parse_toml(text)?))),
-            "bearing" => Ok(Case::Bearing(Box::new(parse_toml(text)?))),
+            "bearing" => Ok(Case::Bearing(Box::new(
+                crate::bearing_design::parse_bearing_case(text)?,
+            ))),
             other => Err(Error::invalid("method", other, methods_expected())),
         }
     }
@@ -96,7 +98,9 @@ impl Case {
             "mindlin" => Ok(Case::Mindlin(Box::new(read(table)?))),
             "impact" => Ok(Case::Impact(Box::new(read(table)?))),
             "rough" => Ok(Case::Rough(Box::new(read(table)?))),
-            "bearing" => Ok(Case::Bearing(Box::new(read(table)?))),
+            "bearing" => Ok(Case::Bearing(Box::new(read(
+                crate::bearing_design::expanded(table)?,
+            )?))),
             other => Err(Error::invalid("method", other, methods_expected())),
         }
     }

@@ -475,7 +475,13 @@ fn find_missing(
     let changed = |after: &Option<String>| {
         after != &before && !after.as_ref().is_some_and(|m| m.starts_with(&refused))
     };
-    find_table(doc, at, name, &add, &changed, trial)
+    // A missing key belongs to a table: when the error's span points at a value (the
+    // line of `method = "bearing"` for a missing `[bearing]`), look from its table.
+    let mut at = at.to_vec();
+    while !at.is_empty() && table_mut(&mut doc.clone(), &at).is_none() {
+        at.pop();
+    }
+    find_table(doc, &at, name, &add, &changed, trial)
 }
 
 /// `name`'s path in the first table at or below `at` (deepest first) where `edit` applies
@@ -510,6 +516,11 @@ fn find_bad_value(
     if leaves.len() <= 1 && !matches!(node_mut(&mut doc.clone(), at), Some(toml::Value::Table(_))) {
         return at.to_vec();
     }
+    // the value serde quotes is before ", expected ...": a valid name listed after it
+    // (`slice_model = "fem"`: expected `iso` or `coupled`) is not the bad value
+    let message = message
+        .split_once(", expected ")
+        .map_or(message, |(m, _)| m);
     let quoted = |v: &toml::Value| match v {
         toml::Value::String(s) => {
             message.contains(&format!("{s:?}")) || message.contains(&format!("`{s}`"))

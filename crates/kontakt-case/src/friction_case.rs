@@ -48,7 +48,8 @@ use crate::common::SCHEMA_VERSION;
 use crate::pimp_case::{GeometrySpec, roller_rib_from_spec};
 use crate::validity::{ContactSize, Size, checked, checked_report};
 use kontakt::bearing::{
-    Operating, PressureModel, RibFriction, RibFrictionModel, RibLubrication, RollerSet,
+    BearingRibFriction, Operating, PressureModel, RibFriction, RibFrictionModel, RibLubrication,
+    RollerCup, RollerRib, RollerSet,
 };
 use kontakt::field::NormalSolution;
 use kontakt::friction::{
@@ -58,6 +59,8 @@ use kontakt::geometry::VelocityField;
 use kontakt::hertz::{HertzPointContact, PointGeometry};
 use kontakt::lubrication::{FilmFormula, Lubricant};
 use kontakt::{Error, Result};
+use kontakt_bearing::equilibrium::{Dof, RingLoad, RollerBearingSolver};
+use kontakt_bearing::geometry::RollerBearing;
 use serde::{Deserialize, Serialize};
 use std::collections::BTreeSet;
 
@@ -97,15 +100,31 @@ fn default_models() -> Vec<PressureModel> {
     vec![PressureModel::Pimp]
 }
 
-/// `[load]`.
+/// `[load]`: the bearing's load on its inner ring (outer ring fixed). Every roller's cup
+/// load comes from the whole bearing's equilibrium (`kontakt_bearing`, the rib study's
+/// bearing built by `RollerBearing::of_roller_rib`), its rib load from its own balance
+/// with its centrifugal force (`docs/bearing-model.md`, "The rib friction of every
+/// roller").
 #[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct FrictionLoad {
-    /// Axial load of the bearing F_a \[N\], > 0.
+    /// Axial load of the bearing F_a \[N\], > 0 (a single-row tapered roller bearing
+    /// needs it).
     pub axial_n: f64,
     /// Add the rollers' centrifugal force to the rib load (default true).
     #[serde(default = "yes")]
     pub centrifugal: bool,
+    /// Radial load F_r along the bearing's x axis \[N\], ≥ 0 (default 0). Roller 0 sits at
+    /// azimuth 0, on the x axis, in the middle of the load zone.
+    #[serde(default)]
+    pub radial_n: f64,
+    /// Tilting moment M_y about the bearing's y axis \[N·mm\] (the plane of the radial
+    /// load). Given: the inner ring's tilt about y is free under this moment (a single row
+    /// may not carry it). Absent (the default): both tilts are held at zero by the shaft
+    /// and the moments they take are reported (`reaction_moment_nmm`). The tilt about x
+    /// is always held (zero moment there by symmetry).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub moment_nmm: Option<f64>,
 }
 
 fn yes() -> bool {
@@ -505,7 +524,9 @@ pub struct FrictionRow {
     pub cage_speed_rpm: f64,
     /// Roller speed relative to the rib |ω_rel| \[rad/s\].
     pub relative_speed_rad_s: f64,
-    /// Rib load per roller \[N\].
+    /// Rib load of the most loaded roller \[N\] (every roller's under pure axial load);
+    /// the per-contact columns below (pressure, film, coefficient, `power_w`, moments
+    /// about the roller axis) are that roller's.
     pub rib_load_n: f64,
     /// Centrifugal force per roller \[N\].
     pub centrifugal_n: f64,
@@ -535,10 +556,11 @@ pub struct FrictionRow {
     pub coefficient: f64,
     /// Friction power of one rib contact \[W\].
     pub power_w: f64,
-    /// Friction power of all rib contacts \[W\].
+    /// Friction power of all rib contacts, summed over the rollers \[W\].
     pub bearing_power_w: f64,
     /// The rib friction's share of the bearing's drag torque \[N·mm\]: the torque the shaft
-    /// must supply to it, from the power balance `Z P / |ω_i − ω_o|` (docs/friction.md §5.2).
+    /// must supply to it, from the power balance `Σ_j P_j / |ω_i − ω_o|` over the rollers
+    /// (docs/friction.md §5.2; `Z P` under pure axial load).
     /// This is the rib's friction torque of the bearing (the plots' "rib torque").
     pub bearing_drag_torque_nmm: f64,
     /// Moment of the rib friction on one roller about the roller's axis \[N·mm\].
@@ -548,14 +570,54 @@ pub struct FrictionRow {
     /// their axes, and that moment returns to the rings through the raceway contacts; the
     /// net that the shaft feels is `bearing_drag_torque_nmm`.
     pub inner_ring_rib_moment_nmm: f64,
+    /// Sum of the rollers' rib loads \[N\].
+    pub rib_load_sum_n: f64,
+    /// Rollers with a rib load (in contact with the rib).
+    pub rib_contacts: usize,
+}
+
+/// One roller of the report's per-roller table: one pressure model at one speed. (Its
+/// keys differ from the rows' so that a sweep's table leaves it out.)
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FrictionRollerRow {
+    /// Pressure model.
+    pub pressure_model: &'static str,
+    /// Inner-ring speed \[r/min\].
+    pub inner_speed_rpm: f64,
+    /// Roller index (0: on the x axis, where the radial load points).
+    pub roller: usize,
+    /// Azimuth of the roller from the x axis toward y \[deg\].
+    pub azimuth_deg: f64,
+    /// Cup (outer raceway) load \[N\].
+    pub cup_load_n: f64,
+    /// Cone (inner raceway) load \[N\] (0: the roller is off the cone).
+    pub cone_load_n: f64,
+    /// Rib load \[N\].
+    pub roller_rib_load_n: f64,
+    /// Magnitude of the rib friction force on the roller \[N\].
+    pub friction_force_n: f64,
+    /// Friction power of the roller's rib contact \[W\].
+    pub roller_power_w: f64,
+    /// Largest rib pressure of the roller \[MPa\] (0 without rib load).
+    pub roller_max_pressure_mpa: f64,
 }
 
 impl FrictionRow {
     /// The row of `r`, computed at the case's speed `rpm` (reported as given, not
     /// converted back from rad/s: 1500, not 1500.0000000000002).
-    fn of(pairing: &str, rpm: f64, r: &RibFriction) -> Self {
+    fn of(pairing: &str, rpm: f64, b: &BearingRibFriction) -> Result<Self> {
+        let r = b
+            .most_loaded()
+            .and_then(|r| r.friction.as_ref())
+            .ok_or_else(|| {
+                Error::invalid(
+                    "load",
+                    "no roller with a rib load",
+                    "a load that presses the rollers against the rib",
+                )
+            })?;
         let film = r.film_thickness;
-        FrictionRow {
+        Ok(FrictionRow {
             pairing: pairing.to_string(),
             model: r.model.as_str(),
             speed_rpm: rpm,
@@ -576,11 +638,13 @@ impl FrictionRow {
             asperity_share: r.contact.asperity_share,
             coefficient: r.coefficient,
             power_w: r.power,
-            bearing_power_w: r.bearing_power,
-            bearing_drag_torque_nmm: r.bearing_torque,
+            bearing_power_w: b.power,
+            bearing_drag_torque_nmm: b.torque,
             roller_axis_moment_nmm: r.roller_axis_moment,
-            inner_ring_rib_moment_nmm: r.ring_axis_moment,
-        }
+            inner_ring_rib_moment_nmm: b.ring_axis_moment,
+            rib_load_sum_n: b.rib_load,
+            rib_contacts: b.rollers.iter().filter(|r| r.friction.is_some()).count(),
+        })
     }
 }
 
@@ -615,6 +679,10 @@ pub struct FrictionReport {
     pub roller_mass_kg: f64,
     /// Axial load \[N\].
     pub axial_load_n: f64,
+    /// Radial load along x \[N\].
+    pub radial_load_n: f64,
+    /// The applied tilting moment about y \[N·mm\]; absent: the tilts are held.
+    pub moment_nmm: Option<f64>,
     /// Whether the centrifugal force was added to the rib load.
     pub centrifugal: bool,
     /// Viscosity of the oil at the inlet temperature \[MPa·s\] (absent when dry).
@@ -628,6 +696,10 @@ pub struct FrictionReport {
     /// Every distinct warning of the film formula and the models, and of the rib
     /// contact's size against the roller end and the rib.
     pub warnings: Vec<String>,
+    /// The bearing's equilibrium under the load: the inner ring's displacement.
+    pub bearing: FrictionBearing,
+    /// Every roller at every model and speed.
+    pub roller_table: Vec<FrictionRollerRow>,
     /// The rib contact's size against the bodies at the largest rib load, for the
     /// validity check ([`crate::validity`]); not in the JSON.
     #[serde(skip)]
@@ -635,6 +707,161 @@ pub struct FrictionReport {
 }
 
 checked_report!(FrictionReport);
+
+/// The whole bearing's equilibrium that gives the rollers' cup loads
+/// (`RollerBearing::of_roller_rib`, ISO/TS 16281 slices, rigid rings, static).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FrictionBearing {
+    /// Pitch diameter \[mm\].
+    pub pitch_diameter_mm: f64,
+    /// Mean roller diameter \[mm\].
+    pub roller_diameter_mm: f64,
+    /// Cup angle \[deg\].
+    pub cup_angle_deg: f64,
+    /// Pure axial load: every roller's cup load is `F_a / (Z sin α)`, the cups' axial
+    /// balance by symmetry (the equilibrium's solution, to 1e-10; no solve, so the rib
+    /// loads do not depend on the rollers' stiffness law). The fields below are then
+    /// absent.
+    pub closed_form: bool,
+    /// Inner-ring displacement `(δx, δy, δz)` \[mm\].
+    pub displacement_mm: Option<[f64; 3]>,
+    /// Inner-ring tilt `(θx, θy)` \[rad\] (0 where held).
+    pub tilt_rad: Option<[f64; 2]>,
+    /// The moments `(Mx, My)` the rollers carry \[N·mm\]: the applied one where the tilt
+    /// is free, the shaft's reaction where it is held.
+    pub moment_nmm: Option<[f64; 2]>,
+    /// The load-zone parameter ε (absent without radial displacement).
+    pub load_zone: Option<f64>,
+    /// Newton iterations of the equilibrium (0 in closed form).
+    pub iterations: usize,
+}
+
+/// The rib study's bearing under `[load]`: every roller's cup load (static) and the
+/// equilibrium's summary.
+fn bearing_loads(
+    case: &FrictionCase,
+    pair: &RollerRib,
+) -> Result<(Vec<RollerCup>, FrictionBearing, Vec<String>)> {
+    let l = &case.load;
+    if !(l.radial_n.is_finite() && l.radial_n >= 0.0) {
+        return Err(Error::invalid(
+            "load.radial_n",
+            l.radial_n,
+            "a finite force >= 0 N",
+        ));
+    }
+    if let Some(m) = l.moment_nmm
+        && !m.is_finite()
+    {
+        return Err(Error::invalid(
+            "load.moment_nmm",
+            m,
+            "a finite moment in N·mm",
+        ));
+    }
+    let bearing = RollerBearing::of_roller_rib(pair, &case.rollers).map_err(|e| {
+        e.map_field(|f| match f {
+            "rollers" | "count" => "rollers.count".to_string(),
+            "length" | "effective_length_mm" => "rollers.length_mm".to_string(),
+            other => format!("rollers ({other})"),
+        })
+    })?;
+    let summary = (
+        bearing.pitch_diameter_mm,
+        bearing.roller_diameter_mm,
+        bearing.contact_angle_rad.to_degrees(),
+    );
+    bearing.validate().map_err(|e| {
+        e.map_field(|f| match f {
+            "rollers" => "rollers.count".to_string(),
+            other => format!("rollers ({other})"),
+        })
+    })?;
+    let z = bearing.rollers;
+    if l.radial_n == 0.0 && l.moment_nmm.is_none() {
+        let q = l.axial_n / (z as f64 * bearing.contact_angle_rad.sin());
+        let cups = (0..z)
+            .map(|j| RollerCup {
+                azimuth: bearing.first_roller_azimuth_rad
+                    + 2.0 * std::f64::consts::PI * j as f64 / z as f64,
+                outer_raceway: q,
+            })
+            .collect();
+        let b = FrictionBearing {
+            pitch_diameter_mm: summary.0,
+            roller_diameter_mm: summary.1,
+            cup_angle_deg: summary.2,
+            closed_form: true,
+            displacement_mm: None,
+            tilt_rad: None,
+            moment_nmm: None,
+            load_zone: None,
+            iterations: 0,
+        };
+        return Ok((cups, b, Vec::new()));
+    }
+    let mut solver = RollerBearingSolver::new(bearing).map_err(|e| {
+        e.map_field(|f| match f {
+            "rollers" => "rollers.count".to_string(),
+            other => format!("rollers ({other})"),
+        })
+    })?;
+    let load = RingLoad {
+        dofs: [
+            Dof::Force(l.radial_n),
+            Dof::Force(0.0),
+            Dof::Force(l.axial_n),
+            Dof::Displacement(0.0),
+            l.moment_nmm.map_or(Dof::Displacement(0.0), Dof::Force),
+        ],
+    };
+    let sol = solver.solve(&load).map_err(|e| {
+        e.map_field(|f| match f {
+            "load.fx_n" => "load.radial_n".to_string(),
+            "load.fz_n" => "load.axial_n".to_string(),
+            "load.my_nmm" => "load.moment_nmm".to_string(),
+            other => other.to_string(),
+        })
+    })?;
+    let mut warnings = Vec::new();
+    match sol.status.termination {
+        kontakt::solve::Termination::Converged => {}
+        kontakt::solve::Termination::Stagnated => warnings.push(format!(
+            "the bearing equilibrium stagnated at the round-off floor (residual {:.1e} of the load)",
+            sol.status.residual
+        )),
+        _ => {
+            sol.status.require_converged(format!(
+                "bearing equilibrium under [load]: {}",
+                sol.note.unwrap_or("no equilibrium")
+            ))?;
+        }
+    }
+    let cups = solver
+        .roller_loads()
+        .iter()
+        .map(|r| RollerCup {
+            azimuth: r.azimuth_rad,
+            outer_raceway: r.outer_n,
+        })
+        .collect();
+    let u = sol.displacement;
+    Ok((
+        cups,
+        FrictionBearing {
+            pitch_diameter_mm: summary.0,
+            roller_diameter_mm: summary.1,
+            cup_angle_deg: summary.2,
+            closed_form: false,
+            displacement_mm: Some([u[0], u[1], u[2]]),
+            tilt_rad: Some([u[3], u[4]]),
+            moment_nmm: Some([sol.load[3], sol.load[4]]),
+            load_zone: sol.load_zone,
+            iterations: sol.status.iterations,
+        },
+        warnings,
+    ))
+}
 checked_report!(FrictionOutcome, report);
 
 /// A friction case's report and the fields of its maps.
@@ -668,11 +895,25 @@ pub struct FrictionMap {
 }
 
 impl FrictionMap {
-    fn new(model: &RibFrictionModel, m: PressureModel, axial_n: f64, rpm: f64) -> Result<Self> {
+    /// The most loaded roller's rib contact at `rpm` under the cup loads `cups`; its
+    /// `result` is that roller's share (Z = 1).
+    fn new(
+        model: &RibFrictionModel,
+        m: PressureModel,
+        axial_n: f64,
+        cups: &[RollerCup],
+        rpm: f64,
+    ) -> Result<Self> {
         let op = operating(axial_n, rpm);
-        let (k, loads) = model.loads(&op)?;
+        let k = model.kinematics(op.inner_speed, op.outer_speed)?;
+        let loads = model
+            .roller_loads_on_cups(&k, cups)?
+            .into_iter()
+            .map(|r| r.loads)
+            .reduce(|a, b| if b.rib > a.rib { b } else { a })
+            .ok_or_else(|| Error::invalid("rollers.count", 0, "at least 3 rollers"))?;
         let field = model.solve(m, loads.rib)?;
-        let result = model.friction_on(m, &field, &op, &k, &loads)?;
+        let result = model.friction_share(m, &field, &op, &k, &loads, 1.0)?;
         let sliding = k
             .rib_pair(0.0)?
             .velocity_field(model.frame(), field.orientation)?;
@@ -715,13 +956,17 @@ fn rib_contact_size(
     case: &FrictionCase,
     model: &RibFrictionModel,
     gap: &kontakt::gap::SurfacePairGap,
+    cups: &[RollerCup],
     speeds: &[f64],
 ) -> Result<(Vec<ContactSize>, Vec<String>)> {
     // A speed the loads cannot be computed at is reported by the sweep, with its key.
     let Some(rib_load) = speeds
         .iter()
-        .filter_map(|&rpm| model.loads(&operating(case.load.axial_n, rpm)).ok())
-        .map(|(_, loads)| loads.rib)
+        .filter_map(|&rpm| {
+            let k = model.kinematics(rpm * RAD_S_PER_RPM, 0.0).ok()?;
+            model.roller_loads_on_cups(&k, cups).ok()
+        })
+        .flat_map(|rollers| rollers.into_iter().map(|r| r.loads.rib))
         .reduce(f64::max)
     else {
         return Ok((Vec::new(), Vec::new()));
@@ -828,15 +1073,17 @@ pub(crate) fn run_friction_case_unchecked(case: &FrictionCase) -> Result<Frictio
             other => other.to_string(),
         })
     })?;
-    let (contacts, edge_warnings) = rib_contact_size(case, &model, &gap, &speeds)?;
+    let (cups, bearing, bearing_warnings) = bearing_loads(case, model.pair())?;
+    let (contacts, edge_warnings) = rib_contact_size(case, &model, &gap, &cups, &speeds)?;
     let mut rows = Vec::new();
-    let mut warnings = BTreeSet::new();
+    let mut roller_table = Vec::new();
+    let mut warnings: BTreeSet<String> = bearing_warnings.into_iter().collect();
     let middle = speeds[speeds.len() / 2];
     for &m in &case.models {
         let sweep = model
-            .sweep(
+            .sweep_rollers(
                 m,
-                case.load.axial_n,
+                &cups,
                 &speeds.iter().map(|s| s * RAD_S_PER_RPM).collect::<Vec<_>>(),
             )
             .map_err(|e| {
@@ -846,11 +1093,25 @@ pub(crate) fn run_friction_case_unchecked(case: &FrictionCase) -> Result<Frictio
                     other => other.to_string(),
                 })
             })?;
-        for (r, &rpm) in sweep.iter().zip(&speeds) {
-            if let Some(h) = &r.film_thickness {
-                warnings.extend(h.warning_lines());
+        for (b, &rpm) in sweep.iter().zip(&speeds) {
+            for (j, r) in b.rollers.iter().enumerate() {
+                if let Some(h) = r.friction.as_ref().and_then(|f| f.film_thickness.as_ref()) {
+                    warnings.extend(h.warning_lines());
+                }
+                roller_table.push(FrictionRollerRow {
+                    pressure_model: m.as_str(),
+                    inner_speed_rpm: rpm,
+                    roller: j,
+                    azimuth_deg: r.azimuth.to_degrees(),
+                    cup_load_n: r.loads.outer_raceway,
+                    cone_load_n: r.loads.inner_raceway,
+                    roller_rib_load_n: r.loads.rib,
+                    friction_force_n: r.friction_force(),
+                    roller_power_w: r.power(),
+                    roller_max_pressure_mpa: r.friction.as_ref().map_or(0.0, |f| f.max_pressure),
+                });
             }
-            rows.push(FrictionRow::of(&pairing, rpm, r));
+            rows.push(FrictionRow::of(&pairing, rpm, b)?);
         }
     }
     let mut model_difference = Vec::new();
@@ -883,15 +1144,19 @@ pub(crate) fn run_friction_case_unchecked(case: &FrictionCase) -> Result<Frictio
         rollers: case.rollers.count,
         roller_mass_kg: model.roller_mass().mass,
         axial_load_n: case.load.axial_n,
+        radial_load_n: case.load.radial_n,
+        moment_nmm: case.load.moment_nmm,
         centrifugal: case.load.centrifugal,
         viscosity_mpa_s: viscosity,
         law,
         rows,
         model_difference,
         warnings: edge_warnings.into_iter().chain(warnings).collect(),
+        bearing,
+        roller_table,
         contacts,
     };
-    let map = FrictionMap::new(&model, case.models[0], case.load.axial_n, middle)?;
+    let map = FrictionMap::new(&model, case.models[0], case.load.axial_n, &cups, middle)?;
     Ok(FrictionOutcome { report, map })
 }
 

@@ -26,7 +26,10 @@
 //! `docs/case-schema.md` and shown by the files in `examples/`.
 
 pub mod bearing_case;
+pub mod bearing_design;
 pub mod bearing_model;
+pub mod bearing_rating;
+pub mod bearing_slices;
 pub mod bem_case;
 pub mod case;
 mod common;

@@ -6,6 +6,7 @@
 #![allow(clippy::unwrap_used)] // tests: a panic is a failure with its message
 
 use kontakt::bearing::{RollerRib, RollerSet, TaperedKinematics, roller_loads};
+use kontakt_bearing::geometry::RollerBearing;
 use kontakt_case::friction_case::FrictionCase;
 use kontakt_case::pimp_case::roller_rib_from_spec;
 use kontakt_case::{Case, Outcome};
@@ -23,7 +24,8 @@ fn rib_study() -> (FrictionCase, RollerRib) {
     (case, pair)
 }
 
-/// The whole-bearing data of the rib study's construction.
+/// The whole-bearing data of the rib study's construction: the one mapping the friction
+/// case uses too (`RollerBearing::of_roller_rib`).
 struct Derived {
     pitch_diameter: f64,
     roller_diameter: f64,
@@ -33,18 +35,13 @@ struct Derived {
 }
 
 fn derived(pair: &RollerRib, rollers: &RollerSet) -> Derived {
-    let k = TaperedKinematics::of_roller_rib(pair, 0.0, 0.0).unwrap();
-    let beta = pair.spec.bearing.roller_half_angle_deg.to_radians();
-    let big = pair.spec.bearing.roller_large_end_radius;
-    // the roller's middle: half its length from the large end, toward the apex
-    let s_mid = big / beta.tan() - 0.5 * rollers.length;
-    let n = pair.contact.normal.into_inner();
+    let b = RollerBearing::of_roller_rib(pair, rollers).unwrap();
     Derived {
-        pitch_diameter: 2.0 * s_mid * k.roller_axis_angle().sin(),
-        roller_diameter: 2.0 * s_mid * beta.tan(),
-        cup_deg: k.outer_raceway_angle().to_degrees(),
-        cone_deg: k.inner_raceway_angle.to_degrees(),
-        rib_deg: (-n.z).atan2(n.x).to_degrees(),
+        pitch_diameter: b.pitch_diameter_mm,
+        roller_diameter: b.roller_diameter_mm,
+        cup_deg: b.contact_angle_rad.to_degrees(),
+        cone_deg: b.cone_angle_rad.to_degrees(),
+        rib_deg: b.rib_angle_rad.unwrap().to_degrees(),
     }
 }
 

@@ -122,3 +122,16 @@ fn sweep_base_file_is_capped() {
         "{e}"
     );
 }
+
+/// A missing top-level table is named as itself, not under the key whose line the parser
+/// pointed at (found while building the C bearing element: a case of only
+/// `method = "bearing"` said "missing key `method.bearing`").
+#[test]
+fn a_missing_top_level_table_is_named_as_itself() {
+    for (method, table) in [("bearing", "bearing"), ("hertz", "contact")] {
+        let text = format!("method = \"{method}\"\n");
+        let (_, key, m) = error(&text);
+        assert_eq!(key, table, "{m}");
+        assert!(m.starts_with(&format!("missing key `{table}`")), "{m}");
+    }
+}

@@ -302,14 +302,23 @@ pub struct BearingArgs {
     /// outer_max_pressure_mpa).
     #[arg(long, value_name = "FILE.csv")]
     pub csv: Option<PathBuf>,
-    /// Draw the load distribution: every roller's or ball's load against its azimuth (.png
-    /// or .svg).
+    /// Draw the load distribution as a polar diagram: every roller's or ball's load as a
+    /// spoke at its azimuth, the radial load's direction and the loaded arc (.png or .svg).
     #[arg(long, value_name = "FILE.png|svg")]
     pub plot: Option<PathBuf>,
-    /// Draw the load per length along the most loaded roller, slice by slice (.png or .svg;
-    /// roller bearings only).
+    /// Draw the load per length along the most loaded roller, slice by slice, with its mean
+    /// (.png or .svg; roller bearings only).
     #[arg(long, value_name = "FILE.png|svg")]
     pub slice_plot: Option<PathBuf>,
+    /// Draw every roller's or ball's load as a bar against its azimuth, with the rib load
+    /// of a tapered roller bearing or the contact angle of a ball bearing below (.png or
+    /// .svg).
+    #[arg(long, value_name = "FILE.png|svg")]
+    pub element_plot: Option<PathBuf>,
+    /// Draw the load per length of every slice of every roller as a map: position along
+    /// the roller × azimuth (.png or .svg; roller bearings only).
+    #[arg(long, value_name = "FILE.png|svg")]
+    pub map: Option<PathBuf>,
     #[command(flatten)]
     pub input: CaseInput,
 }

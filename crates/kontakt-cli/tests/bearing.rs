@@ -101,9 +101,19 @@ fn json_keys_solve_and_csv() {
         "rib_load_n",
         "max_load_per_length_n_per_mm",
         "approach_mm",
+        "inner_max_pressure_mpa",
+        "outer_max_pressure_mpa",
     ] {
         assert!(row[key].is_number(), "{key}: {row}");
     }
+    // the pressures: a CRB's inner raceway is the more stressed (convex), and the static
+    // safety from the pressure is (4000 MPa / p_max)^2
+    let p_in = num(&v["max_inner_pressure_mpa"]);
+    assert!(p_in > num(&v["max_outer_pressure_mpa"]) && p_in > 500.0);
+    let rating = &v["rating"];
+    assert_eq!(num(&rating["pressure_limit_mpa"]), 4000.0);
+    let s0 = num(&rating["static_safety_from_pressure"]);
+    assert!((s0 - (4000.0 / p_in).powi(2)).abs() < 1e-9 * s0, "{rating}");
     assert_eq!(v["stiffness_units"][0][0], "N/mm");
     assert_eq!(v["stiffness_units"][3][4], "N*mm/rad");
     assert!((num(&v["force_n"][0]) - 10_000.0).abs() < 1e-6);
@@ -121,7 +131,7 @@ fn json_keys_solve_and_csv() {
     let mut lines = text.lines();
     assert_eq!(
         lines.next().unwrap(),
-        "azimuth_deg,inner_load_n,outer_load_n,rib_load_n,max_load_per_length_n_per_mm,approach_mm"
+        "azimuth_deg,inner_load_n,outer_load_n,rib_load_n,max_load_per_length_n_per_mm,approach_mm,inner_max_pressure_mpa,outer_max_pressure_mpa"
     );
     assert_eq!(lines.count(), 14);
     // `kontakt solve` has no per-roller CSV: an input error pointing at `kontakt bearing`
@@ -186,6 +196,25 @@ fn input_errors_name_the_case_key() {
         ),
         // a force and a prescribed displacement on the same degree of freedom
         ("bearing_nu_crb.toml", crb_load, &both, "load.moment_nmm[0]"),
+        // a load rating out of range, an unknown rating key
+        (
+            "bearing_nu_crb.toml",
+            "slices = 31",
+            "slices = 31\n[bearing.rating]\ndynamic_n = -1.0",
+            "bearing.rating.dynamic_n = -1",
+        ),
+        (
+            "bearing_nu_crb.toml",
+            "slices = 31",
+            "slices = 31\n[bearing.rating]\ndynamic = 1.0",
+            "bearing.rating.dynamic",
+        ),
+        (
+            "bearing_6205.toml",
+            "static_n = 7850.0",
+            "static_n = 7850.0\nedge_stress_factor = true",
+            "bearing.rating.edge_stress_factor",
+        ),
     ];
     for (name, from, to, names) in cases {
         let p = edited_example(&dir, name, from, to);
@@ -216,6 +245,30 @@ fn plots_are_written() {
     ]);
     assert!(std::fs::read_to_string(&load).unwrap().contains("<svg"));
     assert!(std::fs::metadata(&slices).unwrap().len() > 1000);
+    // the polar diagram names the loaded arc and the load; the bars and the map
+    let svg = std::fs::read_to_string(&load).unwrap();
+    for text in [
+        "loaded arc",
+        "radial load 5000 N",
+        "roller load [N]",
+        "0°",
+        "180°",
+    ] {
+        assert!(svg.contains(text), "{text} not in the polar diagram");
+    }
+    let (bars, map) = (dir.join("bars.svg"), dir.join("map.svg"));
+    succeeds(&[
+        "bearing".as_ref(),
+        example("bearing_32008x.toml").as_os_str(),
+        "--element-plot".as_ref(),
+        bars.as_os_str(),
+        "--map".as_ref(),
+        map.as_os_str(),
+    ]);
+    let svg = std::fs::read_to_string(&bars).unwrap();
+    assert!(svg.contains("rib load [N]") && svg.contains("roller load [N]"));
+    let svg = std::fs::read_to_string(&map).unwrap();
+    assert!(svg.contains("load per length [N/mm]") && svg.contains("azimuth ψ [deg]"));
     let e = bad(&[
         "bearing",
         example("bearing_32008x.toml").to_str().unwrap(),
@@ -305,17 +358,26 @@ fn ball_bearing_table_json_csv_and_plots() {
     let svg = std::fs::read_to_string(&plot).unwrap();
     assert!(svg.contains("<svg") && svg.contains("ball load"), "{svg}");
 
-    let e = bad(&[
-        "bearing",
-        path.to_str().unwrap(),
-        "--slice-plot",
-        dir.join("slices.png").to_str().unwrap(),
+    for flag in ["--slice-plot", "--map"] {
+        let e = bad(&[
+            "bearing",
+            path.to_str().unwrap(),
+            flag,
+            dir.join("slices.png").to_str().unwrap(),
+        ]);
+        assert!(e.contains(flag) && e.contains("ball bearing"), "{e}");
+        assert!(!dir.join("slices.png").exists());
+    }
+    // the ball loads and contact angles as bars
+    let bars = dir.join("bars.svg");
+    succeeds(&[
+        "bearing".as_ref(),
+        acbb.as_os_str(),
+        "--element-plot".as_ref(),
+        bars.as_os_str(),
     ]);
-    assert!(
-        e.contains("--slice-plot") && e.contains("ball bearing"),
-        "{e}"
-    );
-    assert!(!dir.join("slices.png").exists());
+    let svg = std::fs::read_to_string(&bars).unwrap();
+    assert!(svg.contains("contact angle α [deg]") && svg.contains("free contact angle"));
 
     // a ball that does not fit, named by its key (exit 2)
     let p = edited_example(&dir, "bearing_6205.toml", "balls = 9", "balls = 16");
@@ -349,4 +411,64 @@ fn ball_bearing_at_speed_table_and_json() {
     );
     let msg = bad(&["bearing", crb.to_str().unwrap()]);
     assert!(msg.contains("speed.inner_rpm"), "{msg}");
+}
+
+/// `[bearing.rating]`: with C and C0 the table and the JSON give the ISO 281 life, the
+/// ISO 76 static safety and (rollers) the lamina life; a load above the static capacity is
+/// a warning, not an error.
+#[test]
+fn rating_lives_and_static_safety() {
+    let dir = support::tempdir("bearing", "rating");
+    let p = edited_example(
+        &dir,
+        "bearing_nu_crb.toml",
+        "slices = 31",
+        "slices = 31\n[bearing.rating]\ndynamic_n = 60000.0\nstatic_n = 55000.0",
+    );
+    let v = run_json(&["bearing", p.to_str().unwrap()]);
+    let r = &v["rating"];
+    // a CRB: P = F_r, L10 = (C/P)^(10/3), s0 = C0/F_r
+    assert!(
+        (num(&r["equivalent_dynamic_load_n"]) - 10_000.0).abs() < 1e-6,
+        "{r}"
+    );
+    assert!(
+        (num(&r["l10_mrev"]) - 6f64.powf(10.0 / 3.0)).abs() < 1e-6,
+        "{r}"
+    );
+    assert!((num(&r["static_safety"]) - 5.5).abs() < 1e-9, "{r}");
+    assert!(
+        num(&r["l10r_mrev"]) > 0.0 && num(&r["reference_load_n"]) > 0.0,
+        "{r}"
+    );
+    assert!(v.get("warnings").is_none(), "{v}");
+    let out = kontakt()
+        .args(["bearing", p.to_str().unwrap()])
+        .output()
+        .unwrap();
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        text.contains("L10 = ") && text.contains("L10r = "),
+        "{text}"
+    );
+    assert!(text.contains("C0/P0 = 5.5"), "{text}");
+    // 20 times the load: the pressure exceeds 4000 MPa and C0/P0 < 1, both warned
+    let p = edited_example(
+        &dir,
+        "bearing_nu_crb.toml",
+        "slices = 31",
+        "slices = 31\n[bearing.rating]\ndynamic_n = 60000.0\nstatic_n = 55000.0",
+    );
+    let text = std::fs::read_to_string(&p).unwrap();
+    std::fs::write(
+        &p,
+        text.replace("[10000.0, 0.0, 0.0]", "[200000.0, 0.0, 0.0]"),
+    )
+    .unwrap();
+    let v = run_json(&["bearing", p.to_str().unwrap()]);
+    let w = v["warnings"].to_string();
+    assert!(
+        w.contains("exceeds ISO 76's 4000 MPa") && w.contains("C0/P0"),
+        "{w}"
+    );
 }

@@ -343,8 +343,27 @@ fn demo_writes_the_report() {
     );
     assert_eq!(
         (maps, plots, friction_maps, csvs),
-        (8, 6, 2, 3),
+        (8, 12, 2, 3),
         "{names:?}"
+    );
+    // the whole-bearing section: the TRB's and the ball bearing's pictures and tables
+    for file in [
+        "bearing_32008x_loads.png",
+        "bearing_32008x_elements.png",
+        "bearing_32008x_slices.png",
+        "bearing_32008x_map.png",
+        "bearing_6205_loads.png",
+        "bearing_6205_elements.png",
+    ] {
+        assert!(
+            md.contains(&format!("]({file})")),
+            "{file} not in report.md"
+        );
+    }
+    assert!(md.contains("## Whole bearings") && md.contains("Q_rib N") && md.contains("p_out MPa"));
+    assert!(
+        stdout.contains("32008 X class TRB (Liu 2022): 23 rollers"),
+        "{stdout}"
     );
     assert_eq!(names.len(), pngs + csvs + 1, "{names:?}");
 }

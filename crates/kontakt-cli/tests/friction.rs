@@ -219,3 +219,57 @@ fn bad_input_names_the_key() {
     let line = bad(&std::fs::read_to_string(pimp).unwrap());
     assert!(line.contains("method = \"friction\""), "{line}");
 }
+
+/// Combined load (issue 28 §5): `[load] radial_n` and `moment_nmm` beside `axial_n`; the
+/// JSON's totals are the sums over its per-roller table, the rollers outside the load
+/// zone have no rib load without the centrifugal force, the text shows every roller, and
+/// a negative radial load is one line naming its key (exit status 2).
+#[test]
+fn combined_load_reports_every_roller_and_sums_them() {
+    let text = small_case(|t| {
+        let load = t["load"].as_table_mut().unwrap();
+        load.insert("radial_n".into(), 30_000.0.into());
+        load.insert("centrifugal".into(), false.into());
+    });
+    let out = run_stdin(&text, &["friction", "-", "--json"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let r: Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(r["radial_load_n"].as_f64(), Some(30_000.0));
+    assert_eq!(r["bearing"]["closed_form"].as_bool(), Some(false));
+    let table = r["roller_table"].as_array().unwrap();
+    for row in r["rows"].as_array().unwrap() {
+        let mine: Vec<&Value> = table
+            .iter()
+            .filter(|t| {
+                t["pressure_model"] == row["model"] && t["inner_speed_rpm"] == row["speed_rpm"]
+            })
+            .collect();
+        assert_eq!(mine.len(), 17);
+        let sum = |k: &str| mine.iter().map(|t| t[k].as_f64().unwrap()).sum::<f64>();
+        let f = |k: &str| row[k].as_f64().unwrap();
+        assert!(
+            (f("bearing_power_w") - sum("roller_power_w")).abs() < 1e-12 * f("bearing_power_w")
+        );
+        assert!(
+            (f("rib_load_sum_n") - sum("roller_rib_load_n")).abs() < 1e-9 * f("rib_load_sum_n")
+        );
+        for t in &mine {
+            let cup = t["cup_load_n"].as_f64().unwrap();
+            assert_eq!(cup == 0.0, t["roller_rib_load_n"].as_f64() == Some(0.0));
+        }
+        assert!(row["rib_contacts"].as_u64().unwrap() < 17);
+    }
+    let out = run_stdin(&text, &["friction", "-"]);
+    let s = String::from_utf8_lossy(&out.stdout);
+    assert!(s.contains("every roller, pimp at 2000 rpm"), "{s}");
+    assert!(s.contains("tilts held"), "{s}");
+    let l = bad(&small_case(|t| {
+        let load = t["load"].as_table_mut().unwrap();
+        load.insert("radial_n".into(), (-5.0).into());
+    }));
+    assert!(l.contains("load.radial_n"), "{l}");
+}

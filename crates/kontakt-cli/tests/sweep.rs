@@ -3,11 +3,14 @@
 
 #![allow(clippy::unwrap_used)] // test helpers: a panic is a test failure with its message
 
+mod support;
+
 use assert_cmd::Command;
 use serde_json::Value;
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant, SystemTime};
+use support::{cell as num, read_csv, sweep_csv};
 
 fn kontakt() -> Command {
     Command::cargo_bin("kontakt").expect("binary built")
@@ -33,40 +36,6 @@ fn run_json(args: &[&str]) -> Value {
         String::from_utf8_lossy(&out.stderr)
     );
     serde_json::from_slice(&out.stdout).unwrap()
-}
-
-/// The rows of a results.csv as maps column → text.
-fn read_csv(path: &Path) -> Vec<HashMap<String, String>> {
-    let mut r = csv::Reader::from_path(path).unwrap();
-    let header: Vec<String> = r.headers().unwrap().iter().map(str::to_string).collect();
-    r.records()
-        .map(|rec| {
-            header
-                .iter()
-                .cloned()
-                .zip(rec.unwrap().iter().map(str::to_string))
-                .collect()
-        })
-        .collect()
-}
-
-/// Run the sweep `file` into `out` as CSV: the JSON summary and the rows.
-fn sweep_csv(file: &Path, out: &Path) -> (Value, Vec<HashMap<String, String>>) {
-    let v = run_json(&[
-        "sweep",
-        file.to_str().unwrap(),
-        "--out",
-        out.to_str().unwrap(),
-        "--format",
-        "csv",
-    ]);
-    (v, read_csv(&out.join("results.csv")))
-}
-
-fn num(row: &HashMap<String, String>, key: &str) -> f64 {
-    row[key]
-        .parse()
-        .unwrap_or_else(|_| panic!("{key} = {:?}", row[key]))
 }
 
 /// Run, expect exit status 2 and one stderr line; return it.

@@ -7,8 +7,8 @@ use plotters::style::text_anchor::{HPos, Pos, VPos};
 use crate::colormap::viridis;
 use crate::contour::contour_zero;
 use crate::render::{
-    DrawResultExt, Figure, Metrics, Target, draw_centered, draw_line_of_text, draw_title, rgb,
-    text, text_size, title_height,
+    DrawResultExt, Figure, Metrics, Target, desc_height, draw_centered, draw_line_of_text,
+    draw_title, labels_width, rgb, text, text_size, title_height,
 };
 use crate::ticks::{TickAxis, Ticks, nice_ticks, ticks_fitting};
 use crate::{Arrow, FieldMap, PlotError};
@@ -208,14 +208,19 @@ fn cell_value(map: &FieldMap, x: f64, y: f64, fill_edge: bool) -> f64 {
     best.1
 }
 
-/// Centre of the cell with the largest value (the first of equal ones), if any is > 0.
-pub(crate) fn argmax_centre(map: &FieldMap) -> Option<(f64, f64)> {
+/// The index of the largest of `values` (the first of equal ones), if any is > 0.
+pub(crate) fn argmax_positive(values: &[f64]) -> Option<usize> {
     let (k, v) =
-        map.values.iter().enumerate().fold(
+        values.iter().enumerate().fold(
             (0, f64::MIN),
             |best, (k, &v)| if v > best.1 { (k, v) } else { best },
         );
-    (v > 0.0).then(|| {
+    (v > 0.0).then_some(k)
+}
+
+/// Centre of the cell with the largest value (the first of equal ones), if any is > 0.
+pub(crate) fn argmax_centre(map: &FieldMap) -> Option<(f64, f64)> {
+    argmax_positive(map.values).map(|k| {
         (
             map.x_min + ((k % map.nx) as f64 + 0.5) * map.dx,
             map.y_min + ((k / map.nx) as f64 + 0.5) * map.dy,
@@ -236,7 +241,7 @@ fn ellipse_points(e: &crate::Ellipse, n: usize) -> Vec<(f64, f64)> {
 }
 
 /// The maximum's marker at pixel `at`: a black dot in a white disc with a black ring.
-fn draw_marker<DB: DrawingBackend>(
+pub(crate) fn draw_marker<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     at: (i32, i32),
     m: &Metrics,
@@ -311,13 +316,7 @@ impl Figure for FieldFigure<'_> {
 
         let tick_style = text(m.tick);
         let desc_style = text(m.label);
-        let desc_h = |s: &str| {
-            if s.is_empty() {
-                0
-            } else {
-                (m.label * 1.35).round() as i32
-            }
-        };
+        let desc_h = |s: &str| desc_height(s, &m);
         let tick_h = (m.tick * 1.25).round() as i32;
         let label_dist = 2 * m.tick_len;
         let title_h = title_height(map.title, &m);
@@ -335,13 +334,7 @@ impl Figure for FieldFigure<'_> {
         // Title and captions above the figure.
         let head_h = title_h + caption_h + note_h;
 
-        let width_of = |t: &Ticks| -> Result<i32, PlotError> {
-            let mut wmax = 0;
-            for s in t.labels() {
-                wmax = wmax.max(text_size(root, &s, &tick_style)?.0);
-            }
-            Ok(wmax)
-        };
+        let width_of = |t: &Ticks| labels_width(root, t, &tick_style);
         // Widest tick labels over the tick sets we may end up using.
         let widest = |lo: f64, hi: f64, max_count: usize| -> Result<i32, PlotError> {
             let mut wmax = 0;
@@ -723,7 +716,7 @@ fn clip_segment(
 }
 
 /// Colour bar with its ticks on the right and its label (rotated) beyond them.
-fn draw_colorbar<DB: DrawingBackend>(
+pub(crate) fn draw_colorbar<DB: DrawingBackend>(
     root: &DrawingArea<DB, Shift>,
     (x, y, bar_w, bar_h, right): (i32, i32, i32, i32, i32),
     (lo, top): (f64, f64),

@@ -11,6 +11,12 @@
 //!   top (e.g. the sliding velocity over the pressure or the friction-power density).
 //! * [`line_plot`] draws curves and measured points, on a linear or logarithmic x axis, with a
 //!   legend where it hides no data.
+//! * [`line_plots`] stacks several line plots in one image (e.g. two quantities of
+//!   different units over one x axis).
+//! * [`polar_plot`] draws values at angles as spokes around a ring (e.g. the loads of a
+//!   bearing's rolling elements at their azimuths), with a shaded sector and an arrow.
+//! * [`cell_map`] draws a heat map of cells over two independent axes (e.g. the slice loads
+//!   of every roller: position along the roller × azimuth).
 //! * [`contour_zero`] returns the boundary of the region `values > 0` as closed polylines.
 //!
 //! The output format follows the file extension (see [`Format`]). Text is rendered with a
@@ -55,10 +61,12 @@
 
 #![forbid(unsafe_code)]
 
+mod cellmap;
 mod colormap;
 mod contour;
 mod field;
 mod line;
+mod polar;
 mod render;
 mod ticks;
 
@@ -379,6 +387,10 @@ pub enum LineStyle {
     Dashed,
     /// Points only, as filled circles (measurements).
     Markers,
+    /// A vertical bar from 0 to each point (e.g. one value per rolling element); the bars
+    /// of several bar series at the same x stand side by side, and together take 80 % of
+    /// the smallest x spacing.
+    Bars,
 }
 
 /// One curve of a [`LinePlot`].
@@ -442,6 +454,226 @@ pub fn line_plot(path: &Path, plot: &LinePlot, size: (u32, u32)) -> Result<(), P
         }
     }
     render::render(path, format, size, line::LineFigure(plot))
+}
+
+/// Draw several line plots stacked from top to bottom in one image (`.png` or `.svg`) of
+/// `size` = (width, height) pixels, each in an equal share of the height, with the fonts of
+/// the whole image: e.g. two quantities of different units over the same x values, each on
+/// its own y axis. Each plot is drawn as [`line_plot`] draws it (give the lower ones an empty
+/// title).
+///
+/// Errors: those of [`line_plot`] for any of the plots (the error names `plots[k]`), or no
+/// plots at all.
+pub fn line_plots(path: &Path, plots: &[LinePlot], size: (u32, u32)) -> Result<(), PlotError> {
+    let format = Format::from_path(path)?;
+    validate_size(size)?;
+    if plots.is_empty() {
+        return Err(PlotError::invalid(
+            "plots",
+            "an empty list",
+            "at least one plot",
+        ));
+    }
+    for (k, plot) in plots.iter().enumerate() {
+        validate_series(plot.series).map_err(|e| match e {
+            PlotError::InvalidInput {
+                field,
+                value,
+                expected,
+            } => PlotError::InvalidInput {
+                field: format!("plots[{k}].{field}"),
+                value,
+                expected,
+            },
+            other => other,
+        })?;
+    }
+    render::render(path, format, size, line::Panels(plots))
+}
+
+/// A polar diagram: one value at each of several angles, drawn as a spoke from a zero circle
+/// outwards (e.g. the load of every rolling element at its azimuth).
+///
+/// The angle runs counter-clockwise from the right (the x axis, as on paper: y up), labelled
+/// every 30° in (-180°, 180°] around the rim. The radius of a value is linear from the zero
+/// circle (30 % of the outer radius, so that an element without a value still shows as a
+/// hollow dot on it) to the outer circle, which is the first round value at or above the
+/// largest value; the grid circles carry their values along the ray opposite the largest
+/// value. A thin line joins the spokes' tips.
+#[derive(Debug, Clone, Copy)]
+pub struct PolarPlot<'a> {
+    /// Title at the top of the figure.
+    pub title: &'a str,
+    /// A line under the title, e.g. what the radius and the angle are, with their units.
+    pub caption: &'a str,
+    /// The (angle in degrees, value ≥ 0) of each spoke; at least one, all finite.
+    pub points: &'a [(f64, f64)],
+    /// Legend entry of the spokes, e.g. `"roller load [N]"`.
+    pub label: &'a str,
+    /// Colour of the spokes as (r, g, b).
+    pub color: (u8, u8, u8),
+    /// An arrow from the centre (e.g. the direction of the radial load), with its legend.
+    pub arrow: Option<PolarArrow<'a>>,
+    /// A sector shaded between the zero and the outer circle (e.g. the loaded arc), with its
+    /// legend.
+    pub sector: Option<PolarSector<'a>>,
+}
+
+/// An arrow of a [`PolarPlot`]: from the centre towards `angle_deg`, inside the zero circle.
+#[derive(Debug, Clone, Copy)]
+pub struct PolarArrow<'a> {
+    /// Direction in degrees, counter-clockwise from the right.
+    pub angle_deg: f64,
+    /// Legend entry, e.g. `"radial load 5000 N"`.
+    pub label: &'a str,
+}
+
+/// A shaded sector of a [`PolarPlot`]: `centre_deg ± half_width_deg`.
+#[derive(Debug, Clone, Copy)]
+pub struct PolarSector<'a> {
+    /// Middle of the sector in degrees, counter-clockwise from the right.
+    pub centre_deg: f64,
+    /// Half its angular width in degrees, 0 to 180 (180: the whole circle).
+    pub half_width_deg: f64,
+    /// Legend entry, e.g. `"loaded arc ±97°"`.
+    pub label: &'a str,
+    /// Colour as (r, g, b); drawn as a light tint of it.
+    pub color: (u8, u8, u8),
+}
+
+/// Draw a [`PolarPlot`] into `path` (`.png` or `.svg`, see [`Format`]) with the image size
+/// `size` = (width, height) in pixels; the legend (the spokes, the sector, the arrow) goes
+/// under the disc, one entry a row.
+///
+/// Errors: an unsupported extension, `size` outside [`MIN_SIZE`]..[`MAX_SIZE`], no points, a
+/// non-finite angle, a value that is negative or not finite (the error names `points[k]`), a
+/// non-finite arrow angle, a sector whose centre is not finite or whose half width is not
+/// within 0..=180°, or a file that cannot be written.
+pub fn polar_plot(path: &Path, plot: &PolarPlot, size: (u32, u32)) -> Result<(), PlotError> {
+    let format = Format::from_path(path)?;
+    validate_size(size)?;
+    if plot.points.is_empty() {
+        return Err(PlotError::invalid(
+            "points",
+            "an empty list",
+            "at least one point",
+        ));
+    }
+    if let Some(k) = plot
+        .points
+        .iter()
+        .position(|&(a, v)| !(a.is_finite() && v.is_finite() && v >= 0.0))
+    {
+        let (a, v) = plot.points[k];
+        return Err(PlotError::invalid(
+            format!("points[{k}]"),
+            format!("({a}, {v})"),
+            "a finite angle in degrees and a finite value ≥ 0",
+        ));
+    }
+    if let Some(a) = &plot.arrow
+        && !a.angle_deg.is_finite()
+    {
+        return Err(PlotError::invalid(
+            "arrow.angle_deg",
+            a.angle_deg,
+            "a finite angle in degrees",
+        ));
+    }
+    if let Some(s) = &plot.sector
+        && !(s.centre_deg.is_finite() && (0.0..=180.0).contains(&s.half_width_deg))
+    {
+        return Err(PlotError::invalid(
+            "sector",
+            format!("{} ± {} deg", s.centre_deg, s.half_width_deg),
+            "a finite centre and a half width from 0 to 180 deg",
+        ));
+    }
+    render::render(path, format, size, polar::PolarFigure(plot))
+}
+
+/// A heat map of cells over two independent axes, each with its own unit (e.g. position
+/// along a roller in mm × the roller's azimuth in degrees). Unlike [`FieldMap`] the axes
+/// are not drawn to one scale: the cells fill the plot area.
+///
+/// Value `(i, j)` belongs to the cell `[x_min + i dx, x_min + (i + 1) dx] × [y_min + j dy,
+/// y_min + (j + 1) dy]` and is stored row-major with x fastest (index `j*nx + i`); y runs
+/// upwards.
+#[derive(Debug, Clone, Copy)]
+pub struct CellMap<'a> {
+    /// Number of cells along x (at least 1).
+    pub nx: usize,
+    /// Number of cells along y (at least 1).
+    pub ny: usize,
+    /// Left edge of the grid, in the x axis' unit.
+    pub x_min: f64,
+    /// Lower edge of the grid, in the y axis' unit.
+    pub y_min: f64,
+    /// Cell width (finite, > 0).
+    pub dx: f64,
+    /// Cell height (finite, > 0).
+    pub dy: f64,
+    /// The values, `nx*ny` of them, all finite; 0 is drawn white (e.g. a lifted-off roller).
+    pub values: &'a [f64],
+    /// Title at the top of the figure.
+    pub title: &'a str,
+    /// A line under the title (empty: none).
+    pub caption: &'a str,
+    /// Label of the x axis with its unit.
+    pub x_label: &'a str,
+    /// Label of the y axis with its unit.
+    pub y_label: &'a str,
+    /// Label of the colour bar with its unit.
+    pub colorbar_label: &'a str,
+    /// Mark the cell of the largest value with a ringed dot, with this legend entry.
+    pub max_marker: Option<&'a str>,
+}
+
+/// Draw a [`CellMap`] into `path` (`.png` or `.svg`, see [`Format`]) with the image size
+/// `size` = (width, height) in pixels: the cells in viridis from min(0, min) to the largest
+/// value, zero cells white, a colour bar to the right and the maximum's marker with its
+/// legend under the map.
+///
+/// Errors: an unsupported extension, `size` outside [`MIN_SIZE`]..[`MAX_SIZE`], no cells, a
+/// cell size or origin that is not finite (or not > 0), a value count other than `nx*ny` or
+/// a non-finite value (the error names `values[k]`), or a file that cannot be written.
+pub fn cell_map(path: &Path, map: &CellMap, size: (u32, u32)) -> Result<(), PlotError> {
+    let format = Format::from_path(path)?;
+    validate_size(size)?;
+    if map.nx == 0 || map.ny == 0 {
+        return Err(PlotError::invalid(
+            "nx, ny",
+            format!("{}, {}", map.nx, map.ny),
+            "at least one cell along each axis",
+        ));
+    }
+    for (name, v) in [("dx", map.dx), ("dy", map.dy)] {
+        if !(v > 0.0 && v.is_finite()) {
+            return Err(PlotError::invalid(name, v, "a finite cell size > 0"));
+        }
+    }
+    let x_max = map.x_min + map.nx as f64 * map.dx;
+    let y_max = map.y_min + map.ny as f64 * map.dy;
+    if !(x_max.is_finite() && y_max.is_finite() && map.x_min.is_finite() && map.y_min.is_finite()) {
+        return Err(PlotError::invalid(
+            "grid extent",
+            format!(
+                "x from {} to {x_max}, y from {} to {y_max}",
+                map.x_min, map.y_min
+            ),
+            "a finite grid",
+        ));
+    }
+    let n = map
+        .nx
+        .checked_mul(map.ny)
+        .ok_or_else(|| PlotError::invalid("nx*ny", "overflow", "a grid that fits in memory"))?;
+    check_values("values", map.values, n)?;
+    let figure = cellmap::CellFigure {
+        map,
+        frame: std::cell::Cell::new(None),
+    };
+    render::render(path, format, size, &figure)
 }
 
 fn validate_size(size: (u32, u32)) -> Result<(), PlotError> {

@@ -1,11 +1,13 @@
 //! Line plots.
 
+use plotters::coord::Shift;
 use plotters::prelude::*;
 
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use crate::render::{
-    DrawResultExt, Figure, Metrics, Target, draw_title, rgb, text, text_size, title_height,
+    DrawResultExt, Figure, Metrics, Target, desc_height, draw_title, labels_width, rgb, text,
+    text_size, title_height,
 };
 use crate::ticks::{TickAxis, Ticks, log_ticks, nice_ticks, ticks_fitting};
 use crate::{LinePlot, LineStyle, PlotError, Series};
@@ -36,27 +38,183 @@ pub(crate) fn from_zero(lo: f64, hi: f64) -> (f64, f64) {
 
 impl Figure for LineFigure<'_> {
     fn draw<DB: DrawingBackend>(&self, target: &Target<DB>) -> Result<(), PlotError> {
-        let plot = self.0;
+        let m = Metrics::new(target.root.dim_in_pixel());
+        draw_plot(self.0, &target.root, &m, None)
+    }
+}
+
+/// Several [`LinePlot`]s stacked from top to bottom, each in an equal share of the height,
+/// with the fonts of the whole image.
+pub(crate) struct Panels<'a>(pub &'a [LinePlot<'a>]);
+
+impl Figure for Panels<'_> {
+    fn draw<DB: DrawingBackend>(&self, target: &Target<DB>) -> Result<(), PlotError> {
+        let m = Metrics::new(target.root.dim_in_pixel());
         let root = &target.root;
+        // one x range, and room left of each plot for the widest y labels of them all
+        let (mut x0, mut x1, mut left, mut legend_w) = (f64::MAX, f64::MIN, 0, 0);
+        let style = text(m.tick);
+        for plot in self.0 {
+            let e = extent(plot);
+            x0 = x0.min(e.x.0);
+            x1 = x1.max(e.x.1);
+            let (y0, y1) = if plot.y_from_zero {
+                from_zero(e.y.0, e.y.1)
+            } else {
+                padded(e.y.0, e.y.1)
+            };
+            let mut widest = 0;
+            for n in 2..=13 {
+                let t = nice_ticks(y0, y1, n);
+                if t.values.len() <= 10 {
+                    for label in t.labels() {
+                        widest = widest.max(text_size(root, &label, &style)?.0);
+                    }
+                }
+            }
+            let desc = if plot.y_label.is_empty() {
+                0
+            } else {
+                (m.label * 1.35).round() as i32
+            };
+            left = left.max(widest + 2 * m.tick_len + desc + m.tick_len);
+            // the legend box as draw_plot sizes it
+            let mut label_w = 0;
+            for series in plot.series.iter().filter(|s| !s.label.is_empty()) {
+                label_w = label_w.max(text_size(root, series.label, &style)?.0);
+            }
+            if label_w > 0 {
+                let sample = (2.5 * m.tick).round() as i32;
+                legend_w = legend_w.max(sample + label_w + 4 * m.tick_len + 2 * m.tick_len);
+            }
+        }
+        let shared = Shared {
+            x: (x0, x1),
+            left,
+            legend_w,
+        };
+        let areas = root.split_evenly((self.0.len().max(1), 1));
+        for (plot, area) in self.0.iter().zip(&areas) {
+            draw_plot(plot, area, &m, Some(shared))?;
+        }
+        Ok(())
+    }
+}
+
+/// Where the bars of the bar series stand: the offset of each bar series' bars from their
+/// x (in the order of the series; 0 for the others) and the bars' width, both in x units;
+/// the bars of all bar series at one x take 80 % of the smallest spacing of their x values.
+pub(crate) fn bar_slots(series: &[Series], data: &[Vec<(f64, f64)>]) -> (Vec<f64>, f64) {
+    let bars: Vec<usize> = (0..series.len())
+        .filter(|&k| series[k].style == LineStyle::Bars)
+        .collect();
+    let mut offsets = vec![0.0; series.len()];
+    if bars.is_empty() {
+        return (offsets, 0.0);
+    }
+    let mut xs: Vec<f64> = bars
+        .iter()
+        .flat_map(|&k| data[k].iter().map(|p| p.0))
+        .collect();
+    xs.sort_by(f64::total_cmp);
+    let spacing = xs
+        .windows(2)
+        .map(|p| p[1] - p[0])
+        .filter(|d| *d > 1e-12 * (1.0 + p_abs(&xs)))
+        .fold(f64::INFINITY, f64::min);
+    let spacing = if spacing.is_finite() { spacing } else { 1.0 };
+    let group = 0.8 * spacing;
+    let width = group / bars.len() as f64;
+    for (slot, &k) in bars.iter().enumerate() {
+        offsets[k] = -0.5 * group + (slot as f64 + 0.5) * width;
+    }
+    (offsets, width)
+}
+
+/// The largest magnitude of `xs` (for a relative spacing tolerance).
+fn p_abs(xs: &[f64]) -> f64 {
+    xs.iter().fold(0.0, |m: f64, x| m.max(x.abs()))
+}
+
+/// The data of a plot (over log10 x on a logarithmic axis), where its bars stand, and the
+/// ranges it covers (bars included, which stand on 0), before padding.
+struct Extent {
+    data: Vec<Vec<(f64, f64)>>,
+    bar_offsets: Vec<f64>,
+    bar_w: f64,
+    x: (f64, f64),
+    y: (f64, f64),
+}
+
+fn extent(plot: &LinePlot) -> Extent {
+    // On a logarithmic x axis the curves are drawn over log10 x.
+    let tx = |x: f64| if plot.x_log { x.log10() } else { x };
+    let data: Vec<Vec<(f64, f64)>> = plot
+        .series
+        .iter()
+        .map(|s| s.points.iter().map(|&(x, y)| (tx(x), y)).collect())
+        .collect();
+    let (bar_offsets, bar_w) = bar_slots(plot.series, &data);
+    let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
+    for (k, pts) in data.iter().enumerate() {
+        let half = if plot.series[k].style == LineStyle::Bars {
+            0.5 * bar_w
+        } else {
+            0.0
+        };
+        for &(x, y) in pts {
+            let x = x + bar_offsets[k];
+            x0 = x0.min(x - half);
+            x1 = x1.max(x + half);
+            y0 = y0.min(y);
+            y1 = y1.max(y);
+            if half > 0.0 {
+                // a bar stands on 0
+                y0 = y0.min(0.0);
+                y1 = y1.max(0.0);
+            }
+        }
+    }
+    Extent {
+        data,
+        bar_offsets,
+        bar_w,
+        x: (x0, x1),
+        y: (y0, y1),
+    }
+}
+
+/// What the panels of [`Panels`] share: the x range (before padding) and the smallest
+/// width left of the plot area in pixels, so that their x axes line up.
+#[derive(Debug, Clone, Copy)]
+struct Shared {
+    x: (f64, f64),
+    left: i32,
+    /// Room right of each plot for the widest legend of them all, with its gap.
+    legend_w: i32,
+}
+
+/// Draw `plot` on `root` with the fonts and lines of `m`.
+fn draw_plot<DB: DrawingBackend>(
+    plot: &LinePlot,
+    root: &DrawingArea<DB, Shift>,
+    m: &Metrics,
+    shared: Option<Shared>,
+) -> Result<(), PlotError> {
+    {
+        let m = *m;
         root.fill(&WHITE).de()?;
         let (w, h) = root.dim_in_pixel();
         let (wi, hi) = (w as i32, h as i32);
-        let m = Metrics::new((w, h));
 
-        // On a logarithmic x axis the curves are drawn over log10 x.
-        let tx = |x: f64| if plot.x_log { x.log10() } else { x };
-        let data: Vec<Vec<(f64, f64)>> = plot
-            .series
-            .iter()
-            .map(|s| s.points.iter().map(|&(x, y)| (tx(x), y)).collect())
-            .collect();
-        let (mut x0, mut x1, mut y0, mut y1) = (f64::MAX, f64::MIN, f64::MAX, f64::MIN);
-        for &(x, y) in data.iter().flatten() {
-            x0 = x0.min(x);
-            x1 = x1.max(x);
-            y0 = y0.min(y);
-            y1 = y1.max(y);
-        }
+        let Extent {
+            data,
+            bar_offsets,
+            bar_w,
+            x: (x0, x1),
+            y: (y0, y1),
+        } = extent(plot);
+        let (x0, x1) = shared.map_or((x0, x1), |s| s.x);
         let (x0, x1) = padded(x0, x1);
         let (y0, y1) = if plot.y_from_zero {
             from_zero(y0, y1)
@@ -74,22 +232,10 @@ impl Figure for LineFigure<'_> {
         draw_title(root, plot.title, &m, m.margin)?;
         let title_bottom = m.margin + title_height(plot.title, &m);
         let tick_style = text(m.tick);
-        let desc_h = |s: &str| {
-            if s.is_empty() {
-                0
-            } else {
-                (m.label * 1.35).round() as i32
-            }
-        };
+        let desc_h = |s: &str| desc_height(s, &m);
         let tick_h = (m.tick * 1.25).round() as i32;
         let label_dist = 2 * m.tick_len;
-        let width_of = |t: &Ticks| -> Result<i32, PlotError> {
-            let mut wmax = 0;
-            for s in t.labels() {
-                wmax = wmax.max(text_size(root, &s, &tick_style)?.0);
-            }
-            Ok(wmax)
-        };
+        let width_of = |t: &Ticks| labels_width(root, t, &tick_style);
         // Widest x tick labels over the tick sets we may end up using.
         let mut x_tick_w = 0;
         if plot.x_log {
@@ -129,7 +275,8 @@ impl Figure for LineFigure<'_> {
             let area_h = (hi - top - m.margin).max(20);
             let ph = (area_h - bottom).max(2);
             let y_ticks = ticks_fitting(y0, y1, f64::from(ph), 1.6 * f64::from(tick_h), 10);
-            let left = width_of(&y_ticks)? + label_dist + desc_h(plot.y_label) + m.tick_len;
+            let left = (width_of(&y_ticks)? + label_dist + desc_h(plot.y_label) + m.tick_len)
+                .max(shared.map_or(0, |s| s.left));
             let pw = (area_w - left).max(2);
             let x_spacing = f64::from(x_tick_w) + 1.5 * m.tick;
             let x_ticks = if plot.x_log {
@@ -142,16 +289,33 @@ impl Figure for LineFigure<'_> {
         let (mut area_w, mut area_h, mut left, pw, mut x_ticks, mut y_ticks) = layout(0)?;
         let ph = (area_h - bottom).max(2);
         let mut place = LegendPlace::Corner(0);
-        if !labelled.is_empty() {
+        if let Some(s) = shared {
+            // panels: every legend right of its plot, in room of one width for all, so
+            // that the plot areas and x axes line up
+            place = LegendPlace::Outside;
+            (area_w, area_h, left, _, x_ticks, y_ticks) = layout(s.legend_w)?;
+        } else if !labelled.is_empty() {
             let units: Vec<(LineStyle, Vec<(f64, f64)>)> = data
                 .iter()
                 .zip(plot.series)
-                .map(|(pts, s)| {
-                    let unit = pts
-                        .iter()
-                        .map(|&(x, y)| ((x - x0) / (x1 - x0), (y - y0) / (y1 - y0)))
-                        .collect();
-                    (s.style, unit)
+                .zip(&bar_offsets)
+                .map(|((pts, s), off)| {
+                    let unit = |x: f64, y: f64| ((x - x0) / (x1 - x0), (y - y0) / (y1 - y0));
+                    if s.style == LineStyle::Bars {
+                        // the bar's area, sampled: its edges and middle from 0 up
+                        let mut samples = Vec::new();
+                        for &(x, y) in pts {
+                            for k in 0..=20 {
+                                let v = y * f64::from(k) / 20.0;
+                                for dx in [-0.5, 0.0, 0.5] {
+                                    samples.push(unit(x + off + dx * bar_w, v));
+                                }
+                            }
+                        }
+                        (LineStyle::Markers, samples)
+                    } else {
+                        (s.style, pts.iter().map(|&(x, y)| unit(x, y)).collect())
+                    }
                 })
                 .collect();
             let margin_fraction = (
@@ -196,7 +360,7 @@ impl Figure for LineFigure<'_> {
         let radius = ((3.5 * m.scale).round() as i32).max(3);
         let dash = ((9.0 * m.scale).round() as i32).max(5);
         let space = ((6.0 * m.scale).round() as i32).max(3);
-        for (series, pts) in plot.series.iter().zip(&data) {
+        for (k, (series, pts)) in plot.series.iter().zip(&data).enumerate() {
             let color = rgb(series.color);
             let line = color.stroke_width(lw);
             let points = pts.iter().copied();
@@ -214,6 +378,18 @@ impl Figure for LineFigure<'_> {
                         .draw_series(points.map(|p| Circle::new(p, radius, color.filled())))
                         .de()?;
                 }
+                LineStyle::Bars => {
+                    let off = bar_offsets[k];
+                    let base = 0.0f64.clamp(y0, y1);
+                    chart
+                        .draw_series(points.map(|(x, y)| {
+                            Rectangle::new(
+                                [(x + off - 0.5 * bar_w, base), (x + off + 0.5 * bar_w, y)],
+                                color.filled(),
+                            )
+                        }))
+                        .de()?;
+                }
             }
         }
 
@@ -226,9 +402,12 @@ impl Figure for LineFigure<'_> {
             .de()?;
 
         if !labelled.is_empty() {
+            // The plotting area's pixels are the image's; `root` draws relative to its own
+            // corner, which is not the image's in a panel of [`Panels`].
             let (px, py) = {
                 let (xr, yr) = chart.plotting_area().get_pixel_range();
-                (xr, yr)
+                let (ox, oy) = root.get_base_pixel();
+                (xr.start - ox..xr.end - ox, yr.start - oy..yr.end - oy)
             };
             let (bx, by) = match place {
                 LegendPlace::Outside => (px.end + gap, py.start),
@@ -292,6 +471,14 @@ impl Figure for LineFigure<'_> {
                     LineStyle::Markers => {
                         root.draw(&Circle::new((x + sample / 2, y), radius, color.filled()))
                             .de()?;
+                    }
+                    LineStyle::Bars => {
+                        let hh = row_h / 3;
+                        root.draw(&Rectangle::new(
+                            [(x + sample / 4, y - hh), (x + 3 * sample / 4, y + hh)],
+                            color.filled(),
+                        ))
+                        .de()?;
                     }
                 }
                 root.draw_text(s.label, &label_style, (x + sample + pad, y))

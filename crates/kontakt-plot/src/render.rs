@@ -170,6 +170,28 @@ pub(crate) fn text_size<DB: DrawingBackend>(
     Ok((w as i32, h as i32))
 }
 
+/// Height of an axis description (label) line in pixels; 0 for an empty one.
+pub(crate) fn desc_height(s: &str, m: &Metrics) -> i32 {
+    if s.is_empty() {
+        0
+    } else {
+        (m.label * 1.35).round() as i32
+    }
+}
+
+/// Width in pixels of the widest label of `ticks` in `style`.
+pub(crate) fn labels_width<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    ticks: &crate::ticks::Ticks,
+    style: &TextStyle,
+) -> Result<i32, PlotError> {
+    let mut wmax = 0;
+    for s in ticks.labels() {
+        wmax = wmax.max(text_size(area, &s, style)?.0);
+    }
+    Ok(wmax)
+}
+
 /// Height taken by the title, including the space below it.
 pub(crate) fn title_height(title: &str, m: &Metrics) -> i32 {
     if title.is_empty() {

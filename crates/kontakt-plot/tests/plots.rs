@@ -929,3 +929,81 @@ fn log_x_axis() {
     assert!(e.to_string().contains("logarithmic"), "{e}");
     assert!(!out.exists());
 }
+
+/// Stacked panels: each panel's legend is drawn inside its own panel (the lower one's
+/// was once drawn a panel's height too low, outside the image), and bars stand on 0.
+#[test]
+fn stacked_panels_keep_their_legends() {
+    let dir = temp_dir("panels");
+    let loads: Vec<(f64, f64)> = (0..12)
+        .map(|k| (30.0 * f64::from(k) - 180.0, 100.0 + f64::from(k)))
+        .collect();
+    let ribs: Vec<(f64, f64)> = loads.iter().map(|&(x, y)| (x, 0.1 * y)).collect();
+    let upper = [Series {
+        label: "raceway load",
+        points: &loads,
+        color: PALETTE[0],
+        style: LineStyle::Bars,
+    }];
+    let lower = [Series {
+        label: "rib load",
+        points: &ribs,
+        color: PALETTE[1],
+        style: LineStyle::Bars,
+    }];
+    let plot = |title, y_label, series| LinePlot {
+        title,
+        x_label: "azimuth [deg]",
+        y_label,
+        series,
+        x_log: false,
+        y_from_zero: true,
+    };
+    let plots = [
+        plot("loads", "load [N]", &upper[..]),
+        plot("", "rib load [N]", &lower[..]),
+    ];
+    let svg = dir.join("panels.svg");
+    kontakt_plot::line_plots(&svg, &plots, (800, 1000)).unwrap();
+    let text = std::fs::read_to_string(&svg).unwrap();
+    let y_of = |label: &str| -> f64 {
+        let at = text
+            .find(&format!(">\n{label}\n</text>"))
+            .unwrap_or_else(|| panic!("no {label}"));
+        let head = &text[..at];
+        let y = head.rfind(" y=\"").unwrap() + 4;
+        let end = head[y..].find('"').unwrap() + y;
+        head[y..end].parse().unwrap()
+    };
+    let (a, b) = (y_of("raceway load"), y_of("rib load"));
+    assert!(a < 500.0, "upper legend at y = {a}");
+    assert!((500.0..1000.0).contains(&b), "lower legend at y = {b}");
+    // bars: the PNG has large filled areas of both colours
+    let png = dir.join("panels.png");
+    kontakt_plot::line_plots(&png, &plots, (800, 1000)).unwrap();
+    let img = image::open(&png).unwrap().to_rgb8();
+    for (c, half) in [(PALETTE[0], 0..500), (PALETTE[1], 500..1000)] {
+        let n = img
+            .enumerate_pixels()
+            .filter(|(_, y, p)| half.contains(y) && near(p, c, 4))
+            .count();
+        assert!(n > 20_000, "{n} bar pixels of {c:?}");
+    }
+    // one x axis: the first bar starts at the same pixel column in both panels (the y
+    // labels "100" and "10" once gave the panels different left edges)
+    let first_column = |c: (u8, u8, u8), rows: std::ops::Range<u32>| {
+        img.enumerate_pixels()
+            .filter(|(_, y, p)| rows.contains(y) && near(p, c, 4))
+            .map(|(x, _, _)| x)
+            .min()
+            .unwrap()
+    };
+    assert_eq!(
+        first_column(PALETTE[0], 0..500),
+        first_column(PALETTE[1], 500..1000)
+    );
+    // no panels: an error naming the argument
+    let e = kontakt_plot::line_plots(&png, &[], (800, 600)).unwrap_err();
+    assert!(e.to_string().contains("plots"), "{e}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -371,7 +371,8 @@ impl BearingResult {
     }
     /// The slices of the most loaded roller: a dict with "roller" (its index) and arrays
     /// "position_mm" (slice centres from the roller centre [mm]), "load_n" [N],
-    /// "load_per_length_n_per_mm" [N/mm], "approach_mm" [mm]; None for a ball bearing.
+    /// "load_per_length_n_per_mm" [N/mm], "approach_mm" [mm], "inner_pressure_mpa" and
+    /// "outer_pressure_mpa" (Hertz [MPa]); None for a ball bearing.
     #[getter]
     fn slices<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
         let Some(r) = self.report.rollers() else {
@@ -387,7 +388,42 @@ impl BearingResult {
             PyArray1::from_slice(py, &s.load_per_length_n_per_mm),
         )?;
         d.set_item("approach_mm", PyArray1::from_slice(py, &s.approach_mm))?;
+        d.set_item(
+            "inner_pressure_mpa",
+            PyArray1::from_slice(py, &s.inner_pressure_mpa),
+        )?;
+        d.set_item(
+            "outer_pressure_mpa",
+            PyArray1::from_slice(py, &s.outer_pressure_mpa),
+        )?;
         Ok(Some(d))
+    }
+    /// The largest Hertz pressure of each element on the inner raceway [MPa] (a roller's
+    /// largest slice pressure), shape (Z,).
+    #[getter]
+    fn inner_max_pressure_mpa<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        self.column(
+            py,
+            |r| r.inner_max_pressure_mpa,
+            |b| b.inner_max_pressure_mpa,
+        )
+    }
+    /// The largest Hertz pressure of each element on the outer raceway [MPa], shape (Z,).
+    #[getter]
+    fn outer_max_pressure_mpa<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        self.column(
+            py,
+            |r| r.outer_max_pressure_mpa,
+            |b| b.outer_max_pressure_mpa,
+        )
+    }
+    /// Static safety and rating lives: a dict with the keys of the report's `rating`
+    /// (`static_safety_from_pressure`, `l10_mrev`, `l10r_mrev`, `static_safety`, ...;
+    /// absent keys need `[bearing.rating]`'s `dynamic_n` or `static_n`), loads in N, pressures
+    /// in MPa, lives in millions of revolutions.
+    #[getter]
+    fn rating<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        json_to_py(py, &self.report.rating)
     }
     /// The largest rolling-element load [N] (a roller's outer raceway load, a ball's load).
     #[getter]

@@ -72,12 +72,14 @@ def test_every_example_is_kontakt_run(path):
         rows = d["roller_loads"]
         z = d["rollers"]
         same = {key: key for key in ("azimuth_deg", "inner_load_n", "outer_load_n", "rib_load_n",
-                                     "max_load_per_length_n_per_mm", "approach_mm")}
+                                     "max_load_per_length_n_per_mm", "approach_mm",
+                                     "inner_max_pressure_mpa", "outer_max_pressure_mpa")}
         assert r.max_element_load_n == d["max_roller_load_n"]
         np.testing.assert_array_equal(r.contact_angle_deg, np.full(z, d["contact_angle_deg"]))
         s = r.slices
         assert s["roller"] == d["most_loaded_roller"]["roller"]
-        for key in ("position_mm", "load_n", "load_per_length_n_per_mm", "approach_mm"):
+        for key in ("position_mm", "load_n", "load_per_length_n_per_mm", "approach_mm",
+                    "inner_pressure_mpa", "outer_pressure_mpa"):
             np.testing.assert_array_equal(s[key], d["most_loaded_roller"][key])
     else:
         rows = d["ball_loads"]
@@ -87,7 +89,9 @@ def test_every_example_is_kontakt_run(path):
                 "approach_mm": "approach_mm", "inner_contact_angle_deg": "inner_contact_angle_deg",
                 "outer_contact_angle_deg": "outer_contact_angle_deg",
                 "centrifugal_force_n": "centrifugal_force_n",
-                "gyroscopic_moment_nmm": "gyroscopic_moment_nmm"}
+                "gyroscopic_moment_nmm": "gyroscopic_moment_nmm",
+                "inner_max_pressure_mpa": "inner_max_pressure_mpa",
+                "outer_max_pressure_mpa": "outer_max_pressure_mpa"}
         # at rest a ball's one load and angle on both raceways
         if "ring_speeds_rpm" not in d:
             np.testing.assert_array_equal(r.outer_load_n, [row["load_n"] for row in rows])
@@ -106,7 +110,26 @@ def test_every_example_is_kontakt_run(path):
     assert r.residual == d["solver"]["residual"]
     assert r.load_zone_epsilon == d.get("load_zone_epsilon")
     assert r.warnings == d.get("warnings", [])
+    assert r.rating == d["rating"]
     assert r.to_json().startswith("{") and "BearingResult(" in repr(r)
+
+
+def test_rating_lives_and_static_safety():
+    """`[bearing.rating]`: a CRB with C and C0 gives ISO 281's L10 = (C/F_r)^(10/3), ISO 76's
+    C0/F_r, the static safety from the pressure (4000 MPa / p_max)^2 and the lamina life; a
+    bad capacity is named by its key."""
+    case = tomllib.loads((REPO / "examples" / "bearing_nu_crb.toml").read_text())
+    case["bearing"]["rating"] = {"dynamic_n": 60000.0, "static_n": 55000.0}
+    r = kt.Bearing(case).solve(**solve_args(case))
+    g = r.rating
+    assert g["l10_mrev"] == pytest.approx(6.0 ** (10 / 3), rel=1e-12)
+    assert g["static_safety"] == pytest.approx(5.5, rel=1e-12)
+    p = max(r.inner_max_pressure_mpa.max(), r.outer_max_pressure_mpa.max())
+    assert g["static_safety_from_pressure"] == pytest.approx((4000.0 / p) ** 2, rel=1e-12)
+    assert g["l10r_mrev"] > 0 and g["raceway_capacities_n"][0] < g["raceway_capacities_n"][1]
+    case["bearing"]["rating"] = {"dynamic_n": -1.0}
+    with pytest.raises(kt.InputError, match="bearing.rating.dynamic_n"):
+        kt.Bearing(case).solve(**solve_args(case))
 
 
 def test_the_load_table_is_optional_and_not_used():

@@ -97,20 +97,6 @@ def test_the_sweep_object_and_bad_input(tmp_path: Path) -> None:
         kt.sweep(sweep_text(100, count=2), tmp_path / "a", format="xlsx")
 
 
-@pytest.fixture(scope="module")
-def client():
-    # dask.distributed is pinned by tools/test: a missing install fails here, never skips.
-    from dask.distributed import Client, LocalCluster
-
-    cluster = LocalCluster(
-        n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None
-    )
-    c = Client(cluster)
-    yield c
-    c.close()
-    cluster.close()
-
-
 def test_dask_sweep_equals_the_local_one(client, tmp_path: Path) -> None:
     local = read_rows(kt.sweep(sweep_text(50), tmp_path / "local", format="csv"))
     remote = read_rows(kt.sweep(sweep_text(50), tmp_path / "dask", client=client, format="csv"))

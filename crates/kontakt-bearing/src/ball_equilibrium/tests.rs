@@ -296,13 +296,16 @@ fn zero_load_preload_and_loads_that_cannot_be_carried() {
         .unwrap_err()
         .to_string();
     assert!(e.starts_with("invalid load.fx_n = NaN"), "{e}");
-    // a radial load without axial load: the balls run over the low shoulder; a status
-    let sol = s
+    // issue 28, bad input: a radial load without axial load: no ball can be loaded;
+    // refused, named
+    let e = s
         .solve(&RingLoad::forces([2_000.0, 0.0, 0.0, 0.0, 0.0]).with_tilts_held())
-        .unwrap();
-    assert!(!sol.status.converged(), "{sol:?}");
-    assert!(sol.note.unwrap().contains("low shoulder"), "{sol:?}");
-    assert!(sol.displacement.iter().all(|v| v.is_finite()));
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.starts_with("invalid load.fz_n = 0: expected an axial load > 0 N"),
+        "{e}"
+    );
     // with enough axial load the same radial load is carried, every angle > 0
     let sol = s
         .solve(&RingLoad::forces([2_000.0, 0.0, 2_000.0, 0.0, 0.0]).with_tilts_held())

@@ -416,7 +416,7 @@ fn centrifugal_force_scales_with_the_density() {
 /// Robustness over speed and load: the 7205 and 6205 examples under combined loads (tilts
 /// held) from 1000 to 30 000 r/min, where the balls at the back of the load zone lift off the
 /// inner ring and ride on the outer one: every solve converges (the largest iteration count
-/// is printed; measured 7). Without the restarts of a ball's Newton (§9.3: warm, pressed,
+/// is printed; measured 7). Without the restarts of a ball's Newton (§16.3: warm, pressed,
 /// at the groove's bottom) it fails: the 7205 example ended at 5000-12 000 r/min with a ball
 /// stuck in a fold of the lifted branch.
 #[test]

@@ -12,10 +12,12 @@
 //!
 //! Not yet here (later steps of issue 28): the rib geometry and roller end face (today in
 //! `kontakt::bearing::roller_rib`), the NU/NJ/NUP/N rib arrangement of cylindrical roller
-//! bearings, paired and double-row bearings, the generator of an internal
-//! design from the boundary dimensions, materials other than steel.
+//! bearings, paired and double-row bearings, materials other than steel. A
+//! representative internal design from the boundary dimensions: [`design`].
 
 mod ball;
+pub mod design;
+mod rib_study;
 
 pub use ball::{BallBearing, BallBearingKind, STEEL_DENSITY_KG_M3};
 
@@ -348,6 +350,30 @@ impl RollerBearing {
             p.validate()
                 .map_err(|e| e.map_field(|f| format!("{name}.{f}")))?;
             let half = 0.5 * self.effective_length_mm;
+            // issue 28, bad input: a roller longer than its raceway (or than its own
+            // crowned length) is refused by the length the profile gives
+            if let Some((field, value, reach)) = profile_reach(p)
+                && reach < half * (1.0 - 1e-12)
+            {
+                let what = if name == "roller_profile" {
+                    "the roller's crowned length is shorter than the roller"
+                } else {
+                    "a roller longer than its raceway"
+                };
+                return Err(Error::invalid(
+                    format!("{name}.{field}"),
+                    value,
+                    format!(
+                        "a profile that covers the roller's effective length L_we = {} mm ({field} >= {}; {what})",
+                        self.effective_length_mm,
+                        if field == "length_mm" {
+                            self.effective_length_mm
+                        } else {
+                            half
+                        }
+                    ),
+                ));
+            }
             let w = self.effective_length_mm / self.slices as f64;
             // the outermost slice centre must see material
             let x = half - 0.5 * w;
@@ -363,6 +389,28 @@ impl RollerBearing {
             }
         }
         Ok(())
+    }
+}
+
+/// The field that bounds a profile's length, its value and the half-length it covers
+/// (mm): `length_mm` of the profiles that have one, the last `x_mm` of a table (beyond it
+/// the table extends its last drop); `None` for the profiles without an end.
+fn profile_reach(p: &Profile) -> Option<(String, f64, f64)> {
+    match p {
+        Profile::IsoLogarithmic { length_mm, .. }
+        | Profile::Logarithmic { length_mm, .. }
+        | Profile::Lundberg { length_mm, .. }
+        | Profile::JohnsGohar { length_mm, .. }
+        | Profile::Fujiwara { length_mm, .. }
+        | Profile::EdgeRadii { length_mm, .. } => {
+            Some(("length_mm".into(), *length_mm, 0.5 * length_mm))
+        }
+        Profile::Tabulated(t) => {
+            let n = t.x_mm().len();
+            let last = *t.x_mm().last()?;
+            Some((format!("x_mm[{}]", n - 1), last, last))
+        }
+        Profile::Straight | Profile::Circular { .. } => None,
     }
 }
 
@@ -415,7 +463,30 @@ mod tests {
         b.roller_profile = Profile::iso(8.0, 8.0); // shorter than the roller
         let e = msg(b);
         assert!(
-            e.starts_with("roller_profile: the profile's drop at the outermost slice"),
+            e.starts_with("invalid roller_profile.length_mm = 8: expected a profile that covers"),
+            "{e}"
+        );
+        // issue 28, bad input: a raceway shorter than the roller, even by a little (the
+        // outermost slice centre still inside: accepted silently before)
+        let mut b = RollerBearing::cylindrical(50.0, 14, 8.0, 10.0);
+        b.inner_profile = Profile::Logarithmic {
+            drop_scale_mm: 0.001,
+            length_mm: 9.9,
+            flat_length_mm: 0.0,
+        };
+        let e = msg(b);
+        assert!(
+            e.starts_with("invalid inner_profile.length_mm = 9.9: expected a profile that covers the roller's effective length L_we = 10 mm (length_mm >= 10; a roller longer than its raceway)"),
+            "{e}"
+        );
+        let mut b = RollerBearing::cylindrical(50.0, 14, 8.0, 10.0);
+        b.outer_profile = Profile::Tabulated(
+            crate::profile::TabulatedProfile::new(vec![0.0, 2.0, 4.0], vec![0.0, 0.0, 0.001])
+                .unwrap(),
+        );
+        let e = msg(b);
+        assert!(
+            e.starts_with("invalid outer_profile.x_mm[2] = 4: expected a profile that covers"),
             "{e}"
         );
         let mut b = RollerBearing::cylindrical(50.0, 14, 8.0, 10.0);

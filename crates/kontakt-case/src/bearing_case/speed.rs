@@ -1,5 +1,5 @@
 //! `[speed]` of a bearing case: the ring speeds, and the report of a ball bearing at speed
-//! (Jones 1960, Harris & Kotzalas 2006; `docs/bearing-model.md` §9), on
+//! (Jones 1960, Harris & Kotzalas 2006; `docs/bearing-model.md` §16), on
 //! [`kontakt_bearing::ball_speed`].
 //!
 //! ```toml

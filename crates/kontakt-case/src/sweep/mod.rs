@@ -28,7 +28,11 @@
 //! [`Sweep::from_path`], [`Sweep::len`], [`Sweep::chunk_count`], [`Sweep::chunk_range`],
 //! [`Sweep::missing_chunks`], [`Sweep::run_chunk`] (writes one chunk atomically),
 //! [`Sweep::combine`]; [`Sweep::run_local`] does all of it on the local cores.
+//!
+//! A whole-bearing base case (`method = "bearing"`) runs through a planned solver with
+//! warm starts and gives a fixed set of numeric columns: see [`bearing`].
 
+pub mod bearing;
 mod store;
 pub mod table;
 
@@ -446,6 +450,9 @@ pub struct Sweep {
     fields: Fields,
     definition: String,
     hash: String,
+    /// A bearing base case: how the parameters reach the planned solver
+    /// ([`bearing`]); `None` for the other methods.
+    bearing: Option<bearing::BearingPlan>,
 }
 
 impl Sweep {
@@ -604,7 +611,7 @@ impl Sweep {
             }
         }
 
-        let sweep = Sweep {
+        let mut sweep = Sweep {
             name: spec.name,
             mode: spec.mode,
             base,
@@ -616,7 +623,11 @@ impl Sweep {
             fields: Fields::None,
             definition: String::new(),
             hash: String::new(),
+            bearing: None,
         };
+        if base_case.method() == "bearing" {
+            sweep.bearing = Some(bearing::BearingPlan::new(&sweep));
+        }
         sweep.check_keys(base_case.method())?;
         sweep.with_fields(spec.fields)
     }
@@ -722,6 +733,11 @@ impl Sweep {
         // Written only when set, so that the hashes of sweeps without fields stay as they were.
         if self.fields != Fields::None {
             let _ = writeln!(s, "fields = {}", self.fields.as_str());
+        }
+        // A bearing sweep's rows are the fixed bearing columns: a folder written before
+        // (the report flattened) is another sweep, not resumed with other columns.
+        if self.bearing.is_some() {
+            let _ = writeln!(s, "rows = bearing 1");
         }
         for p in &self.parameters {
             let _ = write!(s, "parameter {} keys [{}] ", p.name, p.keys().join(", "));

@@ -326,7 +326,9 @@ impl Sweep {
             .collect())
     }
 
-    /// Run case `index` (never panics: a panic of a solver becomes status `panic`).
+    /// Run case `index` (never panics: a panic of a solver becomes status `panic`): its
+    /// report flattened, as a chunk's rows are but for a bearing sweep, whose chunks hold
+    /// the bearing columns of [`super::bearing::COLUMNS`] (a warm-started solve).
     pub fn evaluate(&self, index: u64) -> Row {
         // Without a fields folder nothing is written, so nothing can fail.
         self.evaluate_case(index, None)
@@ -383,6 +385,30 @@ impl Sweep {
         })
     }
 
+    /// The table of chunk `index` (computed in parallel on the current rayon pool, in
+    /// case order; `on_case` after each case) and its number of cases not solved. With
+    /// `fields_dir` each case's fields are written there (not for a bearing sweep, which
+    /// has no fields).
+    fn chunk_batch_and_not_ok(
+        &self,
+        index: u64,
+        fields_dir: Option<&Path>,
+        on_case: &(dyn Fn() + Sync),
+        path: &Path,
+    ) -> SweepResult<(RecordBatch, u64, u64)> {
+        let first = self.chunk_range(index).start;
+        if let Some(plan) = &self.bearing {
+            let rows = self.bearing_rows(plan, self.chunk_range(index), on_case);
+            let not_ok = rows.iter().filter(|r| !r.status.solved()).count() as u64;
+            let batch = table::bearing_batch(self, first, &rows).map_err(|m| table_err(path, m))?;
+            return Ok((batch, rows.len() as u64, not_ok));
+        }
+        let rows = self.chunk_rows(index, fields_dir, on_case)?;
+        let not_ok = rows.iter().filter(|r| !r.status.solved()).count() as u64;
+        let batch = table::chunk_batch(self, first, &rows).map_err(|m| table_err(path, m))?;
+        Ok((batch, rows.len() as u64, not_ok))
+    }
+
     /// The rows of chunk `index`, computed in parallel on the current rayon pool, in
     /// case order; `on_case` is called after each case. With `fields_dir` each case's
     /// fields are written there.
@@ -414,9 +440,9 @@ impl Sweep {
     /// [`SweepError::Input`] for `index >= chunk_count()`.
     pub fn chunk_table(&self, index: u64) -> SweepResult<RecordBatch> {
         self.check_chunk_index(index)?;
-        let rows = self.chunk_rows(index, None, &|| {})?;
-        table::chunk_batch(self, self.chunk_range(index).start, &rows)
-            .map_err(|m| table_err(Path::new("<memory>"), m))
+        let (batch, _, _) =
+            self.chunk_batch_and_not_ok(index, None, &|| {}, Path::new("<memory>"))?;
+        Ok(batch)
     }
 
     fn check_chunk_index(&self, index: u64) -> SweepResult<()> {
@@ -482,15 +508,17 @@ impl Sweep {
         if let Some(t) = &temp {
             std::fs::create_dir_all(t).map_err(|e| SweepError::io(t, e))?;
         }
-        let rows = match self.chunk_rows(index, temp.as_deref(), on_case) {
-            Ok(r) => r,
-            Err(e) => {
-                if let Some(t) = &temp {
-                    let _ = std::fs::remove_dir_all(t);
+        let path = self.chunk_path(out_dir, index);
+        let (batch, cases, not_ok) =
+            match self.chunk_batch_and_not_ok(index, temp.as_deref(), on_case, &path) {
+                Ok(r) => r,
+                Err(e) => {
+                    if let Some(t) = &temp {
+                        let _ = std::fs::remove_dir_all(t);
+                    }
+                    return Err(e);
                 }
-                return Err(e);
-            }
-        };
+            };
         if let (Some(t), Some(dir)) = (&temp, &fields) {
             // A folder left by a run killed between this rename and the chunk file.
             if dir.exists() {
@@ -498,10 +526,6 @@ impl Sweep {
             }
             std::fs::rename(t, dir).map_err(|e| SweepError::io(dir, e))?;
         }
-        let not_ok = rows.iter().filter(|r| !r.status.solved()).count() as u64;
-        let path = self.chunk_path(out_dir, index);
-        let batch = table::chunk_batch(self, self.chunk_range(index).start, &rows)
-            .map_err(|m| table_err(&path, m))?;
         write_atomic(&path, |file| {
             let mut w = ArrowWriter::try_new(file, batch.schema(), Some(writer_properties()))
                 .map_err(|e| e.to_string())?;
@@ -510,7 +534,7 @@ impl Sweep {
         })?;
         Ok(ChunkSummary {
             index,
-            cases: rows.len() as u64,
+            cases,
             not_ok,
             path,
             seconds: start.elapsed().as_secs_f64(),
@@ -618,7 +642,7 @@ impl Sweep {
                     {
                         not_ok += s
                             .iter()
-                            .filter(|v| !matches!(v, Some("ok" | "warning")))
+                            .filter(|v| !matches!(v, Some("ok" | "warning" | "lifted_off")))
                             .count() as u64;
                     }
                     rows += batch.num_rows() as u64;

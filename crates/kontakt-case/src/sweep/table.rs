@@ -3,7 +3,8 @@
 //! A row is: `case` (the case index), the swept parameters (one column each, named as in
 //! the sweep file), `status` (`ok`, `warning`: solved with warnings in the report's
 //! `warnings`, `invalid`: the case reader or the method refused an
-//! input, `failed`: a solver did not converge, `panic`: a bug), `error` (the one-line
+//! input, `failed`: a solver did not converge, `panic`: a bug, `lifted_off`: a bearing
+//! whose elements all lifted off, solved with zero force), `error` (the one-line
 //! message, null when ok), then the case's report flattened:
 //! - nested objects give dotted names (`status.residual`, `hertz.max_pressure_mpa`);
 //! - arrays of at most [`MAX_ARRAY_LEN`] elements give indexed names (`semi_axes_mm[0]`,
@@ -56,12 +57,15 @@ pub enum Status {
     Failed,
     /// A bug: the solver panicked; the sweep goes on.
     Panic,
+    /// Solved, and every rolling element of a bearing lifted off: zero force (a bearing
+    /// sweep's case whose load or prescribed displacement leaves the clearance open).
+    LiftedOff,
 }
 
 impl Status {
-    /// Whether the case was solved (`ok` or `warning`).
+    /// Whether the case was solved (`ok`, `warning` or `lifted_off`).
     pub fn solved(self) -> bool {
-        matches!(self, Status::Ok | Status::Warning)
+        matches!(self, Status::Ok | Status::Warning | Status::LiftedOff)
     }
 
     /// The status column's text.
@@ -72,6 +76,7 @@ impl Status {
             Status::Invalid => "invalid",
             Status::Failed => "failed",
             Status::Panic => "panic",
+            Status::LiftedOff => "lifted_off",
         }
     }
 }
@@ -366,37 +371,18 @@ pub fn chunk_batch(
         .flat_map(|(k, r)| std::iter::repeat_n(first_case + k as u64, r.table_rows()))
         .collect();
     let n = cases.len();
-    let mut fields = Vec::new();
-    let mut columns: Vec<ArrayRef> = Vec::new();
-    fields.push(Field::new(CASE_COLUMN, DataType::UInt64, false));
-    columns.push(Arc::new(UInt64Array::from(cases.clone())));
-    let reserved: Vec<&str> = sweep
-        .parameters()
-        .iter()
-        .map(|p| p.name.as_str())
-        .chain([CASE_COLUMN, STATUS_COLUMN, ERROR_COLUMN])
-        .collect();
-    for (p, param) in sweep.parameters().iter().enumerate() {
-        let (ty, array) = parameter_array(
-            param,
-            cases
-                .iter()
-                .map(|&i| param.values.get(sweep.value_index(p, i))),
-        );
-        fields.push(Field::new(param.name.clone(), ty, true));
-        columns.push(array);
-    }
-    fields.push(Field::new(STATUS_COLUMN, DataType::Utf8, false));
     let repeat = |f: &dyn Fn(&Row) -> Option<String>| {
         rows.iter()
             .flat_map(|r| std::iter::repeat_n(f(r), r.table_rows()))
             .collect::<Vec<_>>()
     };
-    columns.push(Arc::new(StringArray::from(repeat(&|r| {
-        Some(r.status.as_str().to_string())
-    }))));
-    fields.push(Field::new(ERROR_COLUMN, DataType::Utf8, true));
-    columns.push(Arc::new(StringArray::from(repeat(&|r| r.error.clone()))));
+    let (mut fields, mut columns) = leading_columns(
+        sweep,
+        &cases,
+        StringArray::from(repeat(&|r| Some(r.status.as_str().to_string()))),
+        StringArray::from(repeat(&|r| r.error.clone())),
+    );
+    let reserved = reserved_names(sweep);
 
     // Output columns: union over the table rows, in the order first met.
     let mut index: HashMap<&str, usize> = HashMap::new();
@@ -428,6 +414,79 @@ pub fn chunk_batch(
         };
         columns.push(cells_to_array(column, &ty));
         fields.push(Field::new(name, ty, true));
+    }
+    RecordBatch::try_new(Arc::new(Schema::new(fields)), columns).map_err(|e| e.to_string())
+}
+
+/// The names an output column must not take: the parameters', `case`, `status`, `error`
+/// (an output of that name is written as `result.<name>`).
+fn reserved_names(sweep: &super::Sweep) -> Vec<&str> {
+    sweep
+        .parameters()
+        .iter()
+        .map(|p| p.name.as_str())
+        .chain([CASE_COLUMN, STATUS_COLUMN, ERROR_COLUMN])
+        .collect()
+}
+
+/// The columns every table starts with: `case`, the parameters, `status`, `error`.
+fn leading_columns(
+    sweep: &super::Sweep,
+    cases: &[u64],
+    status: StringArray,
+    errors: StringArray,
+) -> (Vec<Field>, Vec<ArrayRef>) {
+    let mut fields = Vec::new();
+    let mut columns: Vec<ArrayRef> = Vec::new();
+    fields.push(Field::new(CASE_COLUMN, DataType::UInt64, false));
+    columns.push(Arc::new(UInt64Array::from(cases.to_vec())));
+    for (p, param) in sweep.parameters().iter().enumerate() {
+        let (ty, array) = parameter_array(
+            param,
+            cases
+                .iter()
+                .map(|&i| param.values.get(sweep.value_index(p, i))),
+        );
+        fields.push(Field::new(param.name.clone(), ty, true));
+        columns.push(array);
+    }
+    fields.push(Field::new(STATUS_COLUMN, DataType::Utf8, false));
+    columns.push(Arc::new(status));
+    fields.push(Field::new(ERROR_COLUMN, DataType::Utf8, true));
+    columns.push(Arc::new(errors));
+    (fields, columns)
+}
+
+/// The table of one chunk of a bearing sweep: the leading columns, then the bearing
+/// columns of [`super::bearing::COLUMNS`], every one of them in every chunk.
+///
+/// # Errors
+/// The Arrow library's message (columns of unequal length: a bug).
+pub(crate) fn bearing_batch(
+    sweep: &super::Sweep,
+    first_case: u64,
+    rows: &[super::bearing::BearingRow],
+) -> Result<RecordBatch, String> {
+    let cases: Vec<u64> = (first_case..first_case + rows.len() as u64).collect();
+    let (mut fields, mut columns) = leading_columns(
+        sweep,
+        &cases,
+        rows.iter()
+            .map(|r| Some(r.status.as_str()))
+            .collect::<StringArray>(),
+        rows.iter()
+            .map(|r| r.error.as_deref())
+            .collect::<StringArray>(),
+    );
+    let reserved = reserved_names(sweep);
+    for (name, array) in super::bearing::bearing_columns(rows) {
+        let name = if reserved.contains(&name) {
+            format!("result.{name}")
+        } else {
+            name.to_string()
+        };
+        fields.push(Field::new(name, array.data_type().clone(), true));
+        columns.push(array);
     }
     RecordBatch::try_new(Arc::new(Schema::new(fields)), columns).map_err(|e| e.to_string())
 }

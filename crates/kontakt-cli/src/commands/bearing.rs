@@ -2,15 +2,18 @@
 //! `method = "bearing"` case): ring displacement and tilt, the load of every roller or
 //! ball (with the slices of the most loaded roller, the contact angle and Hertz pressures
 //! of every ball) and the 5 × 5 stiffness matrix, as a table, JSON and a per-element CSV,
-//! and plots of the load distribution and of the most loaded roller. The physics is
-//! `kontakt_case::run_bearing_case`.
+//! and plots of the load distribution and of the slices (drawn by `bearing_plot`). The
+//! physics is `kontakt_case::run_bearing_case`.
 
 use crate::cli::BearingArgs;
+pub use crate::commands::bearing_plot::{
+    write_element_plot, write_load_plot, write_slice_map, write_slice_plot,
+};
 use crate::output::Num;
 use anyhow::{Context, Result};
 use kontakt_case::bearing_case::{BallPart, BearingElements, BearingSpec, RollerPart};
+use kontakt_case::bearing_rating::RatingReport;
 use kontakt_case::{BearingCase, BearingReport, run_bearing_case};
-use kontakt_plot::{LinePlot, LineStyle, PALETTE, Series};
 use std::io::Write;
 use std::path::Path;
 
@@ -18,14 +21,16 @@ use std::path::Path;
 pub fn run(args: &BearingArgs, out: &mut impl Write) -> Result<()> {
     let (label, text) = args.input.read("bearing")?;
     let case = BearingCase::from_toml_str(&text).with_context(|| label.clone())?;
-    if args.slice_plot.is_some()
+    if let Some(flag) = [(&args.slice_plot, "--slice-plot"), (&args.map, "--map")]
+        .iter()
+        .find_map(|(p, flag)| p.as_ref().map(|_| *flag))
         && matches!(
             case.bearing,
             BearingSpec::DeepGrooveBall(_) | BearingSpec::AngularContactBall(_)
         )
     {
         return Err(crate::commands::InputError(format!(
-            "--slice-plot: {label} is a ball bearing; the slice plot draws the slices along a roller (use --plot for the ball loads)"
+            "{flag}: {label} is a ball bearing; it has no slices along a roller to draw (use --plot or --element-plot for the ball loads)"
         ))
         .into());
     }
@@ -38,6 +43,12 @@ pub fn run(args: &BearingArgs, out: &mut impl Write) -> Result<()> {
     }
     if let Some(path) = &args.slice_plot {
         write_slice_plot(path, &report)?;
+    }
+    if let Some(path) = &args.element_plot {
+        write_element_plot(path, &report)?;
+    }
+    if let Some(path) = &args.map {
+        write_slice_map(path, &report)?;
     }
     print_report(out, &report, args.input.json)
 }
@@ -78,6 +89,7 @@ pub fn print_report(out: &mut impl Write, r: &BearingReport, json: bool) -> Resu
         BearingElements::Rollers(p) => roller_table(out, r, p)?,
         BearingElements::Balls(p) => ball_table(out, r, p)?,
     }
+    rating_lines(out, &r.rating)?;
     writeln!(out)?;
     writeln!(
         out,
@@ -119,9 +131,14 @@ fn roller_header(
     } else {
         String::new()
     };
+    let model = if p.pressure.is_some() {
+        "coupled slices: half-space strips, ISO/TS 16281 mean approach"
+    } else {
+        "ISO/TS 16281 slice law"
+    };
     writeln!(
         out,
-        "  {} rollers × {} slices{angles} (ISO/TS 16281 slice law)",
+        "  {} rollers × {} slices{angles} ({model})",
         p.rollers, p.slices
     )?;
     Ok(())
@@ -157,19 +174,45 @@ fn roller_table(out: &mut impl Write, r: &BearingReport, p: &RollerPart) -> Resu
     writeln!(out)?;
     writeln!(
         out,
-        "  {:>6} {:>10} {:>10} {:>10} {:>10} {:>12}",
-        "ψ deg", "Q_in N", "Q_out N", "Q_rib N", "q_max N/mm", "approach mm"
+        "  {:>6} {:>10} {:>10} {:>10} {:>10} {:>12} {:>10} {:>10}",
+        "ψ deg",
+        "Q_in N",
+        "Q_out N",
+        "Q_rib N",
+        "q_max N/mm",
+        "approach mm",
+        "p_in MPa",
+        "p_out MPa"
     )?;
     for row in &p.roller_loads {
         writeln!(
             out,
-            "  {:>6.1} {:>10.1} {:>10.1} {:>10.1} {:>10.1} {:>12.6}",
+            "  {:>6.1} {:>10.1} {:>10.1} {:>10.1} {:>10.1} {:>12.6} {:>10.0} {:>10.0}",
             Num(row.azimuth_deg),
             Num(row.inner_load_n),
             Num(row.outer_load_n),
             Num(row.rib_load_n),
             Num(row.max_load_per_length_n_per_mm),
-            Num(row.approach_mm)
+            Num(row.approach_mm),
+            Num(row.inner_max_pressure_mpa),
+            Num(row.outer_max_pressure_mpa)
+        )?;
+    }
+    if let Some(all) = &p.pressure {
+        let (pmax, inner) = (
+            all.max_pressure_mpa,
+            &p.most_loaded_roller.inner_pressure_mpa,
+        );
+        let (first, last) = (inner[0], inner[inner.len() - 1]);
+        let centre = inner[inner.len() / 2];
+        writeln!(out)?;
+        writeln!(
+            out,
+            "  largest slice pressure {:.0} MPa; most loaded roller, inner raceway: {:.0} MPa at the centre, {:.0} / {:.0} MPa at the end slices (every slice in --json: slice_pressure_mpa)",
+            Num(pmax),
+            Num(centre),
+            Num(first),
+            Num(last)
         )?;
     }
     Ok(())
@@ -251,6 +294,42 @@ fn ball_speed_table(out: &mut impl Write, p: &BallPart, rpm: [f64; 2]) -> Result
     Ok(())
 }
 
+/// The static safety and the lives of the report's `rating`.
+fn rating_lines(out: &mut impl Write, r: &RatingReport) -> Result<()> {
+    writeln!(out)?;
+    let s0 = r
+        .static_safety_from_pressure
+        .map_or_else(|| "-".to_string(), |s| format!("{:.3}", Num(s)));
+    let mut line = format!(
+        "  static safety: {s0} from the largest pressure {:.0} MPa (ISO 76 limit {:.0} MPa)",
+        Num(r.max_pressure_mpa),
+        Num(r.pressure_limit_mpa)
+    );
+    if let (Some(s), Some(p0)) = (r.static_safety, r.equivalent_static_load_n) {
+        line += &format!("; C0/P0 = {:.3} (P0 = {:.1} N)", Num(s), Num(p0));
+    }
+    writeln!(out, "{line}")?;
+    let mut lives = Vec::new();
+    if let (Some(l), Some(p)) = (r.l10_mrev, r.equivalent_dynamic_load_n) {
+        lives.push(format!(
+            "L10 = {:.1} Mrev (ISO 281, P = {:.1} N)",
+            Num(l),
+            Num(p)
+        ));
+    }
+    if let (Some(l), Some(p)) = (r.l10r_mrev, r.reference_load_n) {
+        lives.push(format!(
+            "L10r = {:.1} Mrev (ISO/TS 16281, P_ref = {:.1} N)",
+            Num(l),
+            Num(p)
+        ));
+    }
+    if !lives.is_empty() {
+        writeln!(out, "  life:          {}", lives.join("; "))?;
+    }
+    Ok(())
+}
+
 /// `x` for the table, with round-off below 1e-9 of the group's largest magnitude `scale`
 /// shown as 0 (a 1e-13 N reaction of a symmetric load); the JSON keeps the raw numbers.
 fn clean(x: f64, scale: f64) -> Num {
@@ -273,114 +352,4 @@ pub fn write_csv(path: &Path, r: &BearingReport) -> Result<()> {
         }
     }
     w.finish()
-}
-
-/// A line plot of `series` into `path` (checked format, the error names the file).
-fn draw(path: &Path, title: &str, axes: [&str; 2], series: &[Series]) -> Result<()> {
-    kontakt_plot::Format::from_path(path)
-        .map_err(|e| crate::commands::InputError(e.to_string()))?;
-    kontakt_plot::line_plot(
-        path,
-        &LinePlot {
-            title,
-            x_label: axes[0],
-            y_label: axes[1],
-            series,
-            x_log: false,
-            y_from_zero: true,
-        },
-        (900, 600),
-    )
-    .with_context(|| format!("drawing {}", path.display()))
-}
-
-/// The load distribution: every roller's raceway load (and rib load) or every ball's load
-/// against its azimuth.
-pub fn write_load_plot(path: &Path, r: &BearingReport) -> Result<()> {
-    // (azimuth, load, rib load) per element, sorted by azimuth
-    let (mut rows, count, noun): (Vec<(f64, f64, f64)>, usize, &str) = match &r.elements {
-        BearingElements::Rollers(p) => (
-            p.roller_loads
-                .iter()
-                .map(|w| (w.azimuth_deg, w.outer_load_n, w.rib_load_n))
-                .collect(),
-            p.rollers,
-            "roller",
-        ),
-        BearingElements::Balls(p) => (
-            p.ball_loads
-                .iter()
-                .map(|w| (w.azimuth_deg, w.load_n, 0.0))
-                .collect(),
-            p.balls,
-            "ball",
-        ),
-    };
-    rows.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let load: Vec<(f64, f64)> = rows.iter().map(|w| (w.0, w.1)).collect();
-    let rib: Vec<(f64, f64)> = rows.iter().map(|w| (w.0, w.2)).collect();
-    let mut series = vec![Series {
-        label: if noun == "ball" {
-            "ball load"
-        } else {
-            "outer raceway load"
-        },
-        points: &load,
-        color: PALETTE[0],
-        style: LineStyle::Markers,
-    }];
-    if r.bearing_type == "tapered" {
-        series.push(Series {
-            label: "rib load",
-            points: &rib,
-            color: PALETTE[1],
-            style: LineStyle::Markers,
-        });
-    }
-    let eps = r
-        .load_zone_epsilon
-        .map_or_else(String::new, |e| format!(", ε = {e:.3}"));
-    let default_title = format!("{noun} loads");
-    let title = format!(
-        "{}: {count} {noun}s{eps}",
-        r.name.as_deref().unwrap_or(&default_title)
-    );
-    let y_label = format!("{noun} load [N]");
-    draw(path, &title, ["azimuth ψ [deg]", &y_label], &series)
-}
-
-/// The load per unit length along the most loaded roller, slice by slice.
-pub fn write_slice_plot(path: &Path, r: &BearingReport) -> Result<()> {
-    let Some(p) = r.rollers() else {
-        return Err(crate::commands::InputError(
-            "--slice-plot: a ball bearing has no slices (use --plot for the ball loads)".into(),
-        )
-        .into());
-    };
-    let m = &p.most_loaded_roller;
-    let points: Vec<(f64, f64)> = m
-        .position_mm
-        .iter()
-        .zip(&m.load_per_length_n_per_mm)
-        .map(|(x, q)| (*x, *q))
-        .collect();
-    let series = [Series {
-        label: "",
-        points: &points,
-        color: PALETTE[0],
-        style: LineStyle::Solid,
-    }];
-    let title = format!(
-        "{}: roller {} at ψ = {:.1}°, Q = {:.0} N",
-        r.name.as_deref().unwrap_or("most loaded roller"),
-        m.roller,
-        p.roller_loads[m.roller].azimuth_deg,
-        p.max_roller_load_n
-    );
-    draw(
-        path,
-        &title,
-        ["position along the roller [mm]", "load per length [N/mm]"],
-        &series,
-    )
 }

@@ -53,11 +53,16 @@ pub fn print_report(out: &mut impl Write, r: &FrictionReport, json: bool) -> Res
     )?;
     writeln!(
         out,
-        "  pairing {}, {} rollers of {:.1} g, F_a = {} N{}",
+        "  pairing {}, {} rollers of {:.1} g, F_a = {} N{}{}",
         r.pairing,
         r.rollers,
         num(r.roller_mass_kg * 1e3),
         num(r.axial_load_n),
+        if r.radial_load_n > 0.0 {
+            format!(", F_r = {} N", num(r.radial_load_n))
+        } else {
+            String::new()
+        },
         if r.centrifugal {
             ", centrifugal force included"
         } else {
@@ -115,11 +120,21 @@ pub fn print_report(out: &mut impl Write, r: &FrictionReport, json: bool) -> Res
             num(row.bearing_drag_torque_nmm)
         )?;
     }
-    writeln!(
-        out,
-        "\n  M: the rib friction's share of the bearing's drag torque, Z·P_1/|ω_i − ω_o| \
-         (bearing_drag_torque_nmm; docs/friction.md §5.2)"
-    )?;
+    if r.bearing.closed_form {
+        writeln!(
+            out,
+            "\n  M: the rib friction's share of the bearing's drag torque, Z·P_1/|ω_i − ω_o| \
+             (bearing_drag_torque_nmm; docs/friction.md §5.2)"
+        )?;
+    } else {
+        writeln!(
+            out,
+            "\n  M: the rib friction's share of the bearing's drag torque, Σ_j P_j/|ω_i − ω_o| \
+             over the rollers (bearing_drag_torque_nmm; docs/friction.md §5.2); Q_f, p, mu, \
+             P_1: the most loaded roller"
+        )?;
+    }
+    print_rollers(out, r)?;
     if !r.model_difference.is_empty() {
         writeln!(out, "\n  rib torque relative to Hertz:")?;
         let models: Vec<&str> = {
@@ -153,6 +168,81 @@ pub fn print_report(out: &mut impl Write, r: &FrictionReport, json: bool) -> Res
     }
     for w in &r.warnings {
         writeln!(out, "  warning: {w}")?;
+    }
+    Ok(())
+}
+
+/// Under a combined load (radial load or moment): the bearing's equilibrium and every
+/// roller's rib load, friction force and power for the first model at the middle speed
+/// (all of them in `--json`, `roller_table`).
+fn print_rollers(out: &mut impl Write, r: &FrictionReport) -> Result<()> {
+    let b = &r.bearing;
+    if b.closed_form {
+        return Ok(());
+    }
+    let num = crate::output::Num;
+    let (Some(u), Some(t), Some(m)) = (b.displacement_mm, b.tilt_rad, b.moment_nmm) else {
+        return Ok(());
+    };
+    writeln!(
+        out,
+        "\n  bearing: F_r = {} N, F_a = {} N, M_y = {:.1} N·mm ({}); inner ring \
+         ({:.4}, {:.4}, {:.4}) µm, tilt ({:.3e}, {:.3e}) rad, load zone eps = {}",
+        num(r.radial_load_n),
+        num(r.axial_load_n),
+        num(m[1]),
+        if r.moment_nmm.is_some() {
+            "applied, tilt free"
+        } else {
+            "the shaft's reaction, tilts held"
+        },
+        num(u[0] * 1e3),
+        num(u[1] * 1e3),
+        num(u[2] * 1e3),
+        t[0],
+        t[1],
+        b.load_zone
+            .map_or_else(|| "-".to_string(), |e| format!("{:.3}", num(e)))
+    )?;
+    let Some(first) = r.rows.first() else {
+        return Ok(());
+    };
+    let speeds: Vec<f64> = r
+        .rows
+        .iter()
+        .filter(|x| x.model == first.model)
+        .map(|x| x.speed_rpm)
+        .collect();
+    let middle = speeds[speeds.len() / 2];
+    writeln!(
+        out,
+        "  every roller, {} at {:.0} rpm:\n  {:>6} {:>9} {:>10} {:>10} {:>9} {:>9} {:>9}",
+        first.model,
+        num(middle),
+        "roller",
+        "psi [deg]",
+        "Q_cup [N]",
+        "Q_cone [N]",
+        "Q_f [N]",
+        "F_t [N]",
+        "P [W]"
+    )?;
+    for t in r
+        .roller_table
+        .iter()
+        .filter(|t| t.pressure_model == first.model && t.inner_speed_rpm == middle)
+    {
+        writeln!(
+            out,
+            "  {:>6} {:>9.2} {:>10.3} {:>10.3} {:>9.3} {:>9.4} {:>9.4}",
+            t.roller,
+            num(t.azimuth_deg),
+            num(t.cup_load_n),
+            num(t.cone_load_n),
+            num(t.roller_rib_load_n),
+            num(t.friction_force_n),
+            num(t.roller_power_w)
+        )?;
     }
     Ok(())
 }

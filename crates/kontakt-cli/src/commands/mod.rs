@@ -10,6 +10,8 @@ use kontakt_case::case::{
 use kontakt_case::{Case, Outcome, run_case};
 
 pub mod bearing;
+pub mod bearing_demo;
+pub mod bearing_plot;
 pub mod friction;
 pub mod impact;
 pub mod mbs;

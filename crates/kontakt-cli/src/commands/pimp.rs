@@ -274,6 +274,7 @@ pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
          [traction.csv](traction.csv).\n\n![traction curves](traction.png)\n",
     );
     let friction = crate::commands::friction::demo_study(out_dir, &mut md, &mut written)?;
+    let bearings = crate::commands::bearing_demo::demo_section(out_dir, &mut md, &mut written)?;
     std::fs::write(&md_path, md).map_err(|e| cannot_write("write", &md_path, e))?;
 
     if json {
@@ -341,6 +342,7 @@ pub fn demo(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
                 writeln!(out)?;
             }
         }
+        crate::commands::bearing_demo::print_summary(out, &bearings)?;
         writeln!(out, "{}", written.summary(&md_path, rows.len()))?;
     }
     Ok(())

@@ -56,3 +56,41 @@ pub fn bad(args: &[&str]) -> String {
     assert_eq!(lines.len(), 1, "not one line: {err}");
     lines[0].to_string()
 }
+
+/// The rows of a CSV file (a sweep's results.csv) as maps column → text.
+pub fn read_csv(path: &std::path::Path) -> Vec<std::collections::HashMap<String, String>> {
+    let mut r = csv::Reader::from_path(path).unwrap();
+    let header: Vec<String> = r.headers().unwrap().iter().map(str::to_string).collect();
+    r.records()
+        .map(|rec| {
+            header
+                .iter()
+                .cloned()
+                .zip(rec.unwrap().iter().map(str::to_string))
+                .collect()
+        })
+        .collect()
+}
+
+/// Run the sweep `file` into `out` as CSV: the JSON summary and the rows.
+pub fn sweep_csv(
+    file: &std::path::Path,
+    out: &std::path::Path,
+) -> (Value, Vec<std::collections::HashMap<String, String>>) {
+    let v = run_json(&[
+        "sweep",
+        file.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--format",
+        "csv",
+    ]);
+    (v, read_csv(&out.join("results.csv")))
+}
+
+/// A CSV row's value of `key` as a number.
+pub fn cell(row: &std::collections::HashMap<String, String>, key: &str) -> f64 {
+    row[key]
+        .parse()
+        .unwrap_or_else(|_| panic!("{key} = {:?}", row[key]))
+}

@@ -18,8 +18,9 @@ pub use kinematics::{
     Bodies, BodyState, ContactFrame, ContactPair, ContactVelocities, Directions, TaperedKinematics,
 };
 pub use rib_friction::{
-    Operating, PressureModel, RibFriction, RibFrictionModel, RibLubrication, RollerLoads,
-    RollerMass, RollerSet, roller_loads,
+    BearingRibFriction, Operating, PressureModel, RibFriction, RibFrictionModel, RibLubrication,
+    RollerCup, RollerLoads, RollerMass, RollerRibFriction, RollerRibLoad, RollerSet, roller_loads,
+    roller_loads_on_cup,
 };
 pub use roller_rib::{
     CONTACT_HEIGHT, FaceShape, RibShape, RollerRib, RollerRibSpec, STUDY_FORCES, TABLE1,

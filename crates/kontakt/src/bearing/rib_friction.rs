@@ -37,6 +37,11 @@
 //! which Aihara's (1987) `μ e cos β F_a` matches to first order: the two differ by the factor
 //! `cos² β` (relative `sin² β`, 0.27 % at β = 3°). docs/friction.md §5 has the derivation.
 //!
+//! Under any other load (radial load, moment) every roller has its own cup load from a
+//! bearing model; [`RibFrictionModel::evaluate_rollers`] and
+//! [`RibFrictionModel::sweep_rollers`] take each roller's loads and sum the rollers'
+//! powers (module `rollers`, `docs/bearing-model.md` §10).
+//!
 //! Units: mm, N, MPa, rad/s (speeds), °C, kg/m³ (roller density); torque N·mm, power W.
 //!
 //! ```
@@ -89,6 +94,12 @@ use crate::lubrication::{
 use crate::material::ElasticMaterial;
 use crate::pimp::{Pimp, PimpOptions};
 use nalgebra::{Unit, Vector3};
+
+mod rollers;
+
+pub use rollers::{
+    BearingRibFriction, RollerCup, RollerRibFriction, RollerRibLoad, roller_loads_on_cup,
+};
 
 /// Which model gives the pressure field of the rib contact.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -273,28 +284,9 @@ pub fn roller_loads(
     if count < 3 {
         return Err(Error::invalid("count", count, "at least 3 rollers"));
     }
-    let d = Vector3::new(rib_normal.x, 0.0, rib_normal.z);
-    let n = d.norm();
-    let e_r = kinematics.directions(0.0).roller_axis;
-    if !(n.is_finite() && n > 0.5 * rib_normal.norm() && d.dot(&e_r) < 0.0) {
-        return Err(Error::invalid(
-            "rib_normal",
-            format!("{:?}", rib_normal),
-            "a finite direction in the section plane pointing back along the roller axis",
-        ));
-    }
-    let d = d / n;
-    let (ai, ao) = (
-        kinematics.inner_raceway_angle,
-        kinematics.outer_raceway_angle(),
-    );
-    let q_e = axial_load / (count as f64 * ao.sin());
-    // Q_i n_i + Q_f d = r, r = −Q_e n_o − F_c e_x; n_i = (cos α_i, −sin α_i).
-    let (ni_x, ni_z) = (ai.cos(), -ai.sin());
-    let (r_x, r_z) = (q_e * ao.cos() - centrifugal, -q_e * ao.sin());
-    let det = ni_x * d.z - ni_z * d.x;
-    let q_i = (r_x * d.z - r_z * d.x) / det;
-    let q_f = (ni_x * r_z - ni_z * r_x) / det;
+    let d = rib_direction(kinematics, rib_normal)?;
+    let q_e = axial_load / (count as f64 * kinematics.outer_raceway_angle().sin());
+    let (q_i, q_f) = raceway_and_rib(kinematics, &d, q_e, centrifugal);
     if !(q_i >= 0.0) {
         return Err(Error::invalid(
             "inner_speed",
@@ -315,6 +307,51 @@ pub fn roller_loads(
         rib: q_f,
         centrifugal,
     })
+}
+
+/// The unit rib normal in the section plane (its component out of the plane dropped).
+///
+/// # Errors
+/// [`Error::InvalidInput`] (field `rib_normal`) unless finite, mostly in the section plane
+/// and pointing back along the roller axis.
+fn rib_direction(
+    kinematics: &TaperedKinematics,
+    rib_normal: &Vector3<f64>,
+) -> Result<Vector3<f64>> {
+    let d = Vector3::new(rib_normal.x, 0.0, rib_normal.z);
+    let n = d.norm();
+    let e_r = kinematics.directions(0.0).roller_axis;
+    if !(n.is_finite() && n > 0.5 * rib_normal.norm() && d.dot(&e_r) < 0.0) {
+        return Err(Error::invalid(
+            "rib_normal",
+            format!("{:?}", rib_normal),
+            "a finite direction in the section plane pointing back along the roller axis",
+        ));
+    }
+    Ok(d / n)
+}
+
+/// The inner raceway and rib loads `(Q_i, Q_f)` \[N\] of a roller with the cup load `q_e`
+/// \[N\] and the centrifugal force `centrifugal` \[N\], the rib normal `d` a unit vector in
+/// the section plane: the 2 × 2 system of the module docs,
+/// `Q_i n_i + Q_f d = −Q_e n_o − F_c e_x`.
+fn raceway_and_rib(
+    kinematics: &TaperedKinematics,
+    d: &Vector3<f64>,
+    q_e: f64,
+    centrifugal: f64,
+) -> (f64, f64) {
+    let (ai, ao) = (
+        kinematics.inner_raceway_angle,
+        kinematics.outer_raceway_angle(),
+    );
+    // Q_i n_i + Q_f d = r, r = −Q_e n_o − F_c e_x; n_i = (cos α_i, −sin α_i).
+    let (ni_x, ni_z) = (ai.cos(), -ai.sin());
+    let (r_x, r_z) = (q_e * ao.cos() - centrifugal, -q_e * ao.sin());
+    let det = ni_x * d.z - ni_z * d.x;
+    let q_i = (r_x * d.z - r_z * d.x) / det;
+    let q_f = (ni_x * r_z - ni_z * r_x) / det;
+    (q_i, q_f)
 }
 
 /// The lubricant at the rib contact: oil, inlet temperature, the two surfaces' roughness and
@@ -524,12 +561,7 @@ impl RibFrictionModel {
     /// Those of [`TaperedKinematics::of_roller_rib`] and [`roller_loads`].
     pub fn loads(&self, op: &Operating) -> Result<(TaperedKinematics, RollerLoads)> {
         let k = TaperedKinematics::of_roller_rib(&self.pair, op.inner_speed, op.outer_speed)?;
-        let centrifugal = if self.centrifugal {
-            // m [kg] ω² [1/s²] r [mm] 1e-3 = N
-            self.mass.mass * k.cage_speed * k.cage_speed * self.mass.radius * 1e-3
-        } else {
-            0.0
-        };
+        let centrifugal = self.centrifugal_force(&k);
         let loads = roller_loads(
             &k,
             &self.pair.contact.normal.into_inner(),
@@ -538,6 +570,17 @@ impl RibFrictionModel {
             centrifugal,
         )?;
         Ok((k, loads))
+    }
+
+    /// The centrifugal force on one roller at the cage speed of `k`, `m ω_c² r_c` \[N\]
+    /// (0 when the model leaves it out).
+    pub fn centrifugal_force(&self, k: &TaperedKinematics) -> f64 {
+        if self.centrifugal {
+            // m [kg] ω² [1/s²] r [mm] 1e-3 = N
+            self.mass.mass * k.cage_speed * k.cage_speed * self.mass.radius * 1e-3
+        } else {
+            0.0
+        }
     }
 
     /// The pressure field of the rib contact at the rib load `rib_load` \[N\] by `model`.
@@ -578,6 +621,32 @@ impl RibFrictionModel {
         kinematics: &TaperedKinematics,
         loads: &RollerLoads,
     ) -> Result<RibFriction> {
+        self.friction_share(
+            model,
+            field,
+            op,
+            kinematics,
+            loads,
+            self.rollers.count as f64,
+        )
+    }
+
+    /// [`RibFrictionModel::friction_on`] with the bearing totals (`bearing_power`,
+    /// `bearing_torque`, `ring_axis_moment`) of `z` rollers each carrying `loads`: the
+    /// roller count for a bearing under pure axial load, 1 for one roller's share (as
+    /// [`RibFrictionModel::evaluate_rollers`] gives every roller). Allocates nothing.
+    ///
+    /// # Errors
+    /// Those of [`RibFrictionModel::friction_on`].
+    pub fn friction_share<D>(
+        &self,
+        model: PressureModel,
+        field: &NormalSolution<D>,
+        op: &Operating,
+        kinematics: &TaperedKinematics,
+        loads: &RollerLoads,
+        z: f64,
+    ) -> Result<RibFriction> {
         let pair = kinematics.rib_pair(0.0)?;
         let centre = pair.velocities(&self.frame.origin, &self.frame.normal)?;
         let (film, film_thickness) = self.film(&centre.entrainment, loads.rib)?;
@@ -589,7 +658,6 @@ impl RibFrictionModel {
         let contact_height = (r - inner_line * r.dot(&inner_line)).norm();
         let roller = pair.body1.pose.translation.vector;
         let roller_axis = Unit::new_normalize(kinematics.directions(0.0).roller_axis);
-        let z = self.rollers.count as f64;
         let power = contact.grid.power;
         let bearing_power = z * power;
         let dw = (op.inner_speed - op.outer_speed).abs();

@@ -1,0 +1,97 @@
+//! The bearing element's evaluation, through the C function and through the Rust
+//! `BearingElement::evaluate` under it, allocates nothing per call —
+//! cold (the first call, from the closed forms), warm (from the previous call), damped,
+//! lifted off, and after a failed call (the thread's message buffer is reused) — for a
+//! ball and a tapered roller bearing (issue 28, "Speed": hot loops allocate nothing).
+
+#![allow(unsafe_code)] // calling the C API
+#![allow(clippy::unwrap_used)] // tests: a panic is a failure with its message
+
+// The allocation counter of the kontakt crate's tests, shared rather than copied.
+#[path = "../../kontakt/tests/support/counting_alloc.rs"]
+mod counting_alloc;
+
+use counting_alloc::allocations;
+use kontakt_capi::*;
+use std::ffi::CString;
+use std::path::PathBuf;
+use std::ptr::null_mut;
+
+fn element(name: &str) -> *mut KontaktBearingElement {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../../examples")
+        .join(name);
+    let path = CString::new(path.to_str().unwrap()).unwrap();
+    let mut e = null_mut();
+    // SAFETY: a valid C string and a writable out pointer.
+    let code = unsafe { kontakt_bearing_element_from_file(path.as_ptr(), &mut e) };
+    assert_eq!(code, KONTAKT_OK);
+    e
+}
+
+/// One evaluation: the code, the status and the number of allocations it made.
+fn counted(e: *mut KontaktBearingElement, u: [f64; 5], v: [f64; 5]) -> (i32, i32, usize) {
+    // SAFETY: plain data: all zeros is a valid value.
+    let mut r: KontaktBearingResult = unsafe { std::mem::zeroed() };
+    let (code, n) = allocations(|| {
+        // SAFETY: a live element, arrays of 5 doubles, a writable result.
+        unsafe { kontakt_bearing_element_evaluate(e, u.as_ptr(), v.as_ptr(), &mut r) }
+    });
+    (code, r.status, n)
+}
+
+#[test]
+fn bearing_element_evaluation_allocates_nothing() {
+    for (name, u) in [
+        ("bearing_7205.toml", [0.01, 0.003, 0.02, 2e-4, -1e-4]),
+        ("bearing_32008x.toml", [0.01, -0.002, 0.015, 1e-4, 5e-5]),
+    ] {
+        let e = element(name);
+        let v = [3.0, -1.0, 2.0, 0.05, -0.02];
+        let loaded = KONTAKT_BEARING_LOADED;
+        assert_eq!(
+            counted(e, u, [0.0; 5]),
+            (KONTAKT_OK, loaded, 0),
+            "{name} cold"
+        );
+        let nearby = u.map(|x| 1.01 * x);
+        assert_eq!(
+            counted(e, nearby, v),
+            (KONTAKT_OK, loaded, 0),
+            "{name} warm"
+        );
+        // SAFETY: a live element.
+        assert_eq!(
+            unsafe { kontakt_bearing_element_set_damping(e, 1e-4) },
+            KONTAKT_OK
+        );
+        assert_eq!(counted(e, u, v), (KONTAKT_OK, loaded, 0), "{name} damped");
+        let out = [0.0, 0.0, -0.2, 0.0, 0.0];
+        let lifted = KONTAKT_BEARING_LIFTED_OFF;
+        assert_eq!(counted(e, out, v), (KONTAKT_OK, lifted, 0), "{name} lifted");
+        // a failed call writes its message (allocating); the next success reuses the buffer
+        let (code, _, _) = counted(e, [f64::NAN; 5], v);
+        assert_eq!(code, KONTAKT_INVALID_INPUT);
+        assert_eq!(
+            counted(e, u, v),
+            (KONTAKT_OK, loaded, 0),
+            "{name} after an error"
+        );
+        // SAFETY: created above, freed once.
+        unsafe { kontakt_bearing_element_free(e) };
+    }
+}
+
+#[test]
+fn rust_bearing_element_evaluation_allocates_nothing() {
+    use kontakt_case::bearing_model::BearingElement;
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/bearing_32216.toml");
+    let mut e = BearingElement::from_toml(&std::fs::read_to_string(path).unwrap()).unwrap();
+    e.set_damping(1e-4).unwrap();
+    let u = [0.01, 0.0, 0.02, 0.0, 1e-4];
+    for (i, du) in [1.0, 1.01, 0.99].into_iter().enumerate() {
+        let (o, n) = allocations(|| e.evaluate(u.map(|x| du * x), [1.0; 5]).unwrap());
+        assert!(o.max_element_load_n > 0.0);
+        assert_eq!(n, 0, "call {i}");
+    }
+}

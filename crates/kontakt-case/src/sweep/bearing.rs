@@ -1,0 +1,731 @@
+//! Bearing sweeps: a sweep whose base case is a whole bearing (`method = "bearing"`) runs
+//! its cases through a planned solver instead of reading and reporting each case.
+//!
+//! - **Load parameters** (every key one of `load.force_n[i]` N, `load.moment_nmm[i]` N·mm,
+//!   `load.prescribed.dx_mm|dy_mm|dz_mm` mm, `load.prescribed.tilt_x_rad|tilt_y_rad` rad,
+//!   numbers only) are set on the load directly: no TOML is edited or read per case.
+//! - **Other parameters** (geometry, clearance, profile, `bearing.type`, ...): when one of
+//!   them changes from one case to the next, the case is read from the edited base table
+//!   as any sweep case is; the bearing is planned again only when its `[bearing]` table
+//!   differs from the planned one.
+//! - **Warm starts**: the cases run in blocks of [`BLOCK`] consecutive cases (aligned to
+//!   case indices, so the blocks and hence the numbers do not depend on the thread count);
+//!   a block plans its bearing once and solves every case from the last converged
+//!   equilibrium, as [`crate::BearingModel`] does (the first case of a block, a case after
+//!   every element lifted off and an unloaded case start from the closed forms). A warm
+//!   solve reaches the same equilibrium as the cold `kontakt bearing` of that case to the
+//!   solver's tolerance (relative residual 1e-11); only `solver.iterations` differs.
+//! - **Rows**: one per case, a fixed set of numeric columns ([`COLUMNS`]), the same for
+//!   every row (null where a value does not apply). A case whose elements all lift off is
+//!   status `lifted_off` with zero force and its message in `warnings`, not an error.
+//!
+//! A case allocates nothing on the way (the solver owns its buffers; a row is `Copy` data
+//! but for its warnings and error texts, which exist only when there are any).
+
+use super::table::Status;
+use super::{Sweep, ValueKind};
+use crate::bearing_case::{
+    BearingCase, BearingLoadSpec, Planned, coarse_slices_warning, map_load, plan, ring_load,
+    solver_warnings,
+};
+use crate::bearing_slices::SliceSolver;
+use crate::case::Case;
+use crate::validity::{ContactSize, Size};
+use arrow_array::{ArrayRef, BooleanArray, Float64Array, Int64Array, StringArray};
+use kontakt::hertz::HertzPointContact;
+use kontakt::hertz::validity::point_size;
+use kontakt::solve::SolveStatus;
+use kontakt_bearing::equilibrium::RingLoad;
+use std::ops::Range;
+use std::sync::Arc;
+
+/// Cases per warm-start block: each block plans its bearing and starts cold once.
+pub const BLOCK: u64 = 256;
+
+/// A load component a parameter sets directly.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Slot {
+    /// `load.force_n[i]`, N.
+    Force(usize),
+    /// `load.moment_nmm[i]`, N·mm.
+    Moment(usize),
+    /// `load.prescribed.<DISPLACEMENT_NAMES[i]>`, mm or rad.
+    Prescribed(usize),
+}
+
+impl Slot {
+    fn parse(key: &str) -> Option<Slot> {
+        let index = |rest: &str, n: usize| {
+            let i: usize = rest.strip_prefix('[')?.strip_suffix(']')?.parse().ok()?;
+            (i < n).then_some(i)
+        };
+        if let Some(rest) = key.strip_prefix("load.force_n") {
+            return index(rest, 3).map(Slot::Force);
+        }
+        if let Some(rest) = key.strip_prefix("load.moment_nmm") {
+            return index(rest, 2).map(Slot::Moment);
+        }
+        let name = key.strip_prefix("load.prescribed.")?;
+        kontakt_bearing::equilibrium::DISPLACEMENT_NAMES
+            .iter()
+            .position(|n| *n == name)
+            .map(Slot::Prescribed)
+    }
+
+    fn set(self, load: &mut BearingLoadSpec, v: f64) {
+        match self {
+            Slot::Force(i) => load.force_n[i] = v,
+            Slot::Moment(i) => load.moment_nmm[i] = v,
+            Slot::Prescribed(i) => {
+                let p = &mut load.prescribed;
+                *[
+                    &mut p.dx_mm,
+                    &mut p.dy_mm,
+                    &mut p.dz_mm,
+                    &mut p.tilt_x_rad,
+                    &mut p.tilt_y_rad,
+                ][i] = Some(v);
+            }
+        }
+    }
+}
+
+/// How a bearing sweep's parameters reach the solver.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct BearingPlan {
+    /// Per parameter: the load slots it sets, or `None` for a parameter read through the
+    /// case reader.
+    direct: Vec<Option<Vec<Slot>>>,
+    /// The parameters read through the case reader.
+    read: Vec<usize>,
+}
+
+impl BearingPlan {
+    /// The plan of `sweep`'s parameters (its base case is a bearing case).
+    pub(crate) fn new(sweep: &Sweep) -> Self {
+        let mut direct = Vec::with_capacity(sweep.parameters.len());
+        let mut read = Vec::new();
+        for (p, param) in sweep.parameters.iter().enumerate() {
+            let numeric = matches!(param.kind, ValueKind::Float | ValueKind::Integer);
+            let slots: Option<Vec<Slot>> =
+                param.keys.iter().map(|k| Slot::parse(&k.text)).collect();
+            match slots.filter(|_| numeric) {
+                Some(s) => direct.push(Some(s)),
+                None => {
+                    direct.push(None);
+                    read.push(p);
+                }
+            }
+        }
+        BearingPlan { direct, read }
+    }
+}
+
+/// What a solved bearing case gives: the row's numbers.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct BearingOut {
+    bearing_type: &'static str,
+    elements: usize,
+    /// `(δx, δy, δz, θx, θy)`, mm and rad.
+    displacement: [f64; 5],
+    /// The carried load `(Fx, Fy, Fz, Mx, My)`, N and N·mm.
+    load: [f64; 5],
+    max_element_load_n: f64,
+    loaded_elements: usize,
+    max_rib_load_n: Option<f64>,
+    max_load_per_length_n_per_mm: Option<f64>,
+    max_pressure_mpa: Option<[f64; 2]>,
+    load_zone_epsilon: Option<f64>,
+    /// The diagonal of the stiffness matrix: N/mm (x, y, z), N·mm/rad (tilts).
+    stiffness: [f64; 5],
+    converged: bool,
+    termination: &'static str,
+    iterations: usize,
+    residual: f64,
+}
+
+/// One case of a bearing sweep.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct BearingRow {
+    pub(crate) status: Status,
+    pub(crate) error: Option<String>,
+    out: Option<BearingOut>,
+    warnings: Vec<String>,
+}
+
+impl BearingRow {
+    fn failed(status: Status, error: String) -> Self {
+        BearingRow {
+            status,
+            error: Some(error),
+            out: None,
+            warnings: Vec::new(),
+        }
+    }
+}
+
+/// The output columns of a bearing sweep, after `case`, the parameters, `status` and
+/// `error`, with their units.
+pub const COLUMNS: [(&str, &str); 30] = [
+    (
+        "bearing_type",
+        "cylindrical, tapered, thrust, deep_groove_ball, angular_contact_ball",
+    ),
+    ("elements", "number of rollers or balls"),
+    ("displacement_mm[0]", "inner-ring displacement δx, mm"),
+    ("displacement_mm[1]", "δy, mm"),
+    ("displacement_mm[2]", "δz (axial), mm"),
+    ("tilt_rad[0]", "inner-ring tilt θx, rad"),
+    ("tilt_rad[1]", "θy, rad"),
+    (
+        "force_n[0]",
+        "carried force Fx (reaction where prescribed), N",
+    ),
+    ("force_n[1]", "Fy, N"),
+    ("force_n[2]", "Fz, N"),
+    ("moment_nmm[0]", "carried moment Mx, N·mm"),
+    ("moment_nmm[1]", "My, N·mm"),
+    (
+        "max_element_load_n",
+        "largest roller (outer raceway) or ball load, N",
+    ),
+    ("loaded_elements", "elements with a load > 0"),
+    ("max_rib_load_n", "largest rib load, N (roller bearings)"),
+    (
+        "max_load_per_length_n_per_mm",
+        "largest slice load per length, N/mm (rollers)",
+    ),
+    (
+        "max_inner_pressure_mpa",
+        "largest Hertz pressure, inner raceway, MPa (balls)",
+    ),
+    (
+        "max_outer_pressure_mpa",
+        "largest Hertz pressure, outer raceway, MPa (balls)",
+    ),
+    (
+        "load_zone_epsilon",
+        "load-zone parameter ε (radial roller bearings)",
+    ),
+    ("stiffness_x_n_per_mm", "stiffness matrix diagonal, x, N/mm"),
+    ("stiffness_y_n_per_mm", "y, N/mm"),
+    ("stiffness_z_n_per_mm", "z, N/mm"),
+    ("stiffness_tilt_x_nmm_per_rad", "tilt about x, N·mm/rad"),
+    ("stiffness_tilt_y_nmm_per_rad", "tilt about y, N·mm/rad"),
+    (
+        "solver.converged",
+        "whether the equilibrium reached the tolerance",
+    ),
+    ("solver.termination", "converged or stagnated"),
+    ("solver.iterations", "Newton iterations"),
+    ("solver.residual", "largest relative residual"),
+    (
+        "warnings",
+        "the report's warnings joined by \"; \" (null: none)",
+    ),
+    ("lifted_off", "every element lifted off (zero force)"),
+];
+
+/// A bearing planned for a block of cases: the solver, the warm start and what the rows
+/// need of the case.
+struct BlockModel {
+    case: BearingCase,
+    label: &'static str,
+    planned: Planned,
+    last: Option<[f64; 5]>,
+    /// The warning of a roller bearing with few slices, the same for every load.
+    coarse: Option<String>,
+    /// A ball bearing's two Hertz contacts at its stiffness contact angle, for the
+    /// validity check of the most loaded ball.
+    contacts: Option<[HertzPointContact; 2]>,
+}
+
+impl BlockModel {
+    fn new(case: BearingCase) -> kontakt::Result<Self> {
+        let (planned, label) = plan(&case)?;
+        let (coarse, contacts) = match &planned {
+            Planned::Roller(s) => (coarse_slices_warning(s.bearing().slices), None),
+            Planned::Coupled(s) => (coarse_slices_warning(s.bearing().slices), None),
+            Planned::Ball { solver, .. } => {
+                let b = solver.bearing();
+                (None, Some(b.contacts(b.stiffness_contact_angle())?))
+            }
+            Planned::BallAtSpeed { solver, .. } => {
+                let b = solver.bearing();
+                (None, Some(b.contacts(b.stiffness_contact_angle())?))
+            }
+        };
+        Ok(BlockModel {
+            case,
+            label,
+            planned,
+            last: None,
+            coarse,
+            contacts,
+        })
+    }
+
+    /// Solve `load` from the last equilibrium (the closed forms for an unloaded case, as
+    /// [`crate::BearingModel`]) and make its row.
+    fn solve(&mut self, l: &BearingLoadSpec) -> BearingRow {
+        let ring = match ring_load(l) {
+            Ok(r) => r,
+            Err(e) => return BearingRow::failed(Status::Invalid, e.to_string()),
+        };
+        let start = if crate::bearing_model::unloaded(l) {
+            None
+        } else {
+            self.last
+        };
+        let solved = match &mut self.planned {
+            Planned::Roller(solver) => roller_out(solver, self.label, &ring, start),
+            Planned::Coupled(solver) => roller_out(solver.as_mut(), self.label, &ring, start),
+            Planned::Ball { solver, .. } => match start {
+                Some(u) => solver.solve_from(&ring, u),
+                None => solver.solve(&ring),
+            }
+            .map(|sol| {
+                let loads = solver.ball_loads().iter().map(|b| b.load_n);
+                ball_out(self.label, &sol, loads)
+            }),
+            Planned::BallAtSpeed { solver, .. } => match start {
+                Some(u) => solver.solve_from(&ring, u),
+                None => solver.solve(&ring),
+            }
+            .map(|sol| {
+                let loads = solver.ball_loads().iter().map(|b| b.inner_load_n);
+                ball_out(self.label, &sol, loads)
+            }),
+        };
+        let (out, status, note) = match solved.map_err(map_load) {
+            Ok(s) => s,
+            Err(e) => return BearingRow::failed(Status::Invalid, e.to_string()),
+        };
+        let mut warnings = match solver_warnings(&status, note) {
+            Ok(w) => w,
+            Err(e) => return BearingRow::failed(Status::Failed, e.to_string()),
+        };
+        warnings.extend(self.coarse.iter().cloned());
+        if let Err(e) = self.size_warnings(out.max_element_load_n, &mut warnings) {
+            return BearingRow::failed(Status::Invalid, e.to_string());
+        }
+        if let Some(name) = non_finite(&out) {
+            return BearingRow::failed(
+                Status::Invalid,
+                format!(
+                    "{name}: the result is not finite: the inputs are beyond what f64 arithmetic holds for this model"
+                ),
+            );
+        }
+        let lifted = out.max_element_load_n == 0.0;
+        self.last = (!lifted).then_some(out.displacement);
+        BearingRow {
+            status: if lifted {
+                Status::LiftedOff
+            } else if warnings.is_empty() {
+                Status::Ok
+            } else {
+                Status::Warning
+            },
+            error: None,
+            out: Some(out),
+            warnings,
+        }
+    }
+
+    /// The validity check of the report path (`crate::validity::checked`) for the most
+    /// loaded ball's two Hertz contacts: a warning above 0.4 of a radius, a refusal at 1.
+    fn size_warnings(&self, q_max: f64, warnings: &mut Vec<String>) -> kontakt::Result<()> {
+        let (Some(pair), Planned::Ball { keys, .. }) = (&self.contacts, &self.planned) else {
+            return Ok(());
+        };
+        if q_max <= 0.0 {
+            return Ok(());
+        }
+        let mut size = Vec::new();
+        for (c, ring, key) in [
+            (&pair[0], "inner", keys.inner),
+            (&pair[1], "outer", keys.outer),
+        ] {
+            let check = point_size(c.geometry(), &c.solve_force(q_max)?);
+            // texts only for a contact the check speaks about
+            if check.ratio > kontakt::hertz::validity::WARN_SIZE_RATIO {
+                let c = ContactSize::new(
+                    Size::Hertz(check),
+                    ["bearing.ball_diameter_mm", &format!("bearing.{key}")],
+                )
+                .at(format!("the most loaded ball on the {ring} raceway"));
+                if let Some(w) = c.verdict()?
+                    && !size.contains(&w)
+                {
+                    size.push(w);
+                }
+            }
+        }
+        // first in the warnings, in the contacts' order, as `checked` puts them
+        size.retain(|w| !warnings.contains(w));
+        warnings.splice(0..0, size);
+        Ok(())
+    }
+}
+
+/// The solver status part of a row (the rest filled by the caller).
+fn status_out(s: &SolveStatus) -> BearingOut {
+    BearingOut {
+        bearing_type: "",
+        elements: 0,
+        displacement: [0.0; 5],
+        load: [0.0; 5],
+        max_element_load_n: 0.0,
+        loaded_elements: 0,
+        max_rib_load_n: None,
+        max_load_per_length_n_per_mm: None,
+        max_pressure_mpa: None,
+        load_zone_epsilon: None,
+        stiffness: [0.0; 5],
+        converged: s.converged(),
+        termination: s.termination.as_str(),
+        iterations: s.iterations,
+        residual: s.residual,
+    }
+}
+
+/// The column of the first number of `o` that is not finite.
+fn non_finite(o: &BearingOut) -> Option<&'static str> {
+    let opt = |v: Option<f64>| v.unwrap_or(0.0);
+    let p = o.max_pressure_mpa.unwrap_or([0.0; 2]);
+    let values = [
+        o.displacement[0],
+        o.displacement[1],
+        o.displacement[2],
+        o.displacement[3],
+        o.displacement[4],
+        o.load[0],
+        o.load[1],
+        o.load[2],
+        o.load[3],
+        o.load[4],
+        o.max_element_load_n,
+        opt(o.max_rib_load_n),
+        opt(o.max_load_per_length_n_per_mm),
+        p[0],
+        p[1],
+        opt(o.load_zone_epsilon),
+        o.stiffness[0],
+        o.stiffness[1],
+        o.stiffness[2],
+        o.stiffness[3],
+        o.stiffness[4],
+        o.residual,
+    ];
+    // the numeric columns in COLUMNS order, skipping bearing_type, elements (integers),
+    // loaded_elements and the solver's flags
+    const NAMES: [usize; 22] = [
+        2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 27,
+    ];
+    values
+        .iter()
+        .zip(NAMES)
+        .find(|(v, _)| !v.is_finite())
+        .map(|(_, c)| COLUMNS[c].0)
+}
+
+/// What one worker keeps from case to case within a block.
+struct Worker {
+    /// The value indices of the parameters read through the case reader, for the case
+    /// the model was made for.
+    read_at: Vec<u64>,
+    /// The model, or the error of reading or planning the case.
+    model: Result<BlockModel, String>,
+}
+
+impl Sweep {
+    /// The rows of cases `range` of a bearing sweep, computed in parallel blocks of
+    /// [`BLOCK`] cases on the current rayon pool, in case order; `on_case` after each.
+    pub(crate) fn bearing_rows(
+        &self,
+        plan: &BearingPlan,
+        range: Range<u64>,
+        on_case: &(dyn Fn() + Sync),
+    ) -> Vec<BearingRow> {
+        use rayon::prelude::*;
+        let mut blocks = Vec::new();
+        let mut start = range.start;
+        while start < range.end {
+            let end = ((start / BLOCK + 1) * BLOCK).min(range.end);
+            blocks.push(start..end);
+            start = end;
+        }
+        let per_block: Vec<Vec<BearingRow>> = blocks
+            .into_par_iter()
+            .map(|b| self.bearing_block(plan, b, on_case))
+            .collect();
+        per_block.into_iter().flatten().collect()
+    }
+
+    /// The rows of one block, one case after the other with warm starts.
+    fn bearing_block(
+        &self,
+        plan: &BearingPlan,
+        block: Range<u64>,
+        on_case: &(dyn Fn() + Sync),
+    ) -> Vec<BearingRow> {
+        let mut rows = Vec::with_capacity((block.end - block.start) as usize);
+        let mut worker: Option<Worker> = None;
+        for i in block {
+            rows.push(self.bearing_case(plan, &mut worker, i));
+            on_case();
+        }
+        rows
+    }
+
+    /// Case `i` of a bearing sweep (never panics: a panic of the solver becomes status
+    /// `panic`, and the model is planned again for the next case).
+    fn bearing_case(&self, plan: &BearingPlan, worker: &mut Option<Worker>, i: u64) -> BearingRow {
+        let current = worker.as_ref().is_some_and(|w| {
+            plan.read
+                .iter()
+                .zip(&w.read_at)
+                .all(|(&p, &j)| self.value_index(p, i) == j)
+        });
+        if !current {
+            let read_at = plan.read.iter().map(|&p| self.value_index(p, i)).collect();
+            let previous = worker.take().and_then(|w| w.model.ok());
+            *worker = Some(Worker {
+                read_at,
+                model: self.bearing_model(i, previous),
+            });
+        }
+        let Some(Worker {
+            model: Ok(model), ..
+        }) = worker
+        else {
+            let error = match worker {
+                Some(Worker { model: Err(e), .. }) => e.clone(),
+                _ => "no model".to_string(),
+            };
+            return BearingRow::failed(Status::Invalid, error);
+        };
+        let mut load = model.case.load;
+        for (p, slots) in plan.direct.iter().enumerate() {
+            if let Some(slots) = slots {
+                let v = self.parameters[p].values.get(self.value_index(p, i));
+                let v = v
+                    .as_float()
+                    .or_else(|| v.as_integer().map(|n| n as f64))
+                    .unwrap_or(f64::NAN);
+                for s in slots {
+                    s.set(&mut load, v);
+                }
+            }
+        }
+        let run = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| model.solve(&load)));
+        run.unwrap_or_else(|payload| {
+            *worker = None;
+            let msg = payload
+                .downcast_ref::<&str>()
+                .map(|s| (*s).to_string())
+                .or_else(|| payload.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "unknown panic".into());
+            BearingRow::failed(Status::Panic, format!("panic: {msg}"))
+        })
+    }
+
+    /// The model of case `i`, read from the edited base table; `previous` is kept (with
+    /// its warm start) when its `[bearing]` table is the same.
+    fn bearing_model(&self, i: u64, previous: Option<BlockModel>) -> Result<BlockModel, String> {
+        let case = match self.case_table(i).map(Case::from_toml_table) {
+            Ok(Ok(Case::Bearing(c))) => *c,
+            Ok(Ok(other)) => {
+                return Err(format!(
+                    "invalid method = \"{}\": expected \"bearing\" in every case of a bearing sweep",
+                    other.method()
+                ));
+            }
+            Ok(Err(e)) => return Err(e.to_string()),
+            Err(e) => return Err(e.to_string()),
+        };
+        match previous {
+            Some(mut m) if m.case.bearing == case.bearing => {
+                m.case = case;
+                Ok(m)
+            }
+            _ => BlockModel::new(case).map_err(|e| e.to_string()),
+        }
+    }
+}
+
+/// The output columns of `rows` ([`COLUMNS`], in order), named and typed.
+pub(crate) fn bearing_columns(rows: &[BearingRow]) -> Vec<(&'static str, ArrayRef)> {
+    let f = |g: &dyn Fn(&BearingOut) -> Option<f64>| -> ArrayRef {
+        Arc::new(Float64Array::from(
+            rows.iter()
+                .map(|r| r.out.as_ref().and_then(g))
+                .collect::<Vec<_>>(),
+        ))
+    };
+    let n = |g: &dyn Fn(&BearingOut) -> usize| -> ArrayRef {
+        Arc::new(Int64Array::from(
+            rows.iter()
+                .map(|r| r.out.as_ref().map(|o| g(o) as i64))
+                .collect::<Vec<_>>(),
+        ))
+    };
+    let mut arrays: Vec<ArrayRef> = Vec::with_capacity(COLUMNS.len());
+    arrays.push(Arc::new(StringArray::from(
+        rows.iter()
+            .map(|r| r.out.as_ref().map(|o| o.bearing_type))
+            .collect::<Vec<_>>(),
+    )));
+    arrays.push(n(&|o| o.elements));
+    for i in 0..5 {
+        arrays.push(f(&|o| Some(o.displacement[i])));
+    }
+    for i in 0..5 {
+        arrays.push(f(&|o| Some(o.load[i])));
+    }
+    arrays.push(f(&|o| Some(o.max_element_load_n)));
+    arrays.push(n(&|o| o.loaded_elements));
+    arrays.push(f(&|o| o.max_rib_load_n));
+    arrays.push(f(&|o| o.max_load_per_length_n_per_mm));
+    arrays.push(f(&|o| o.max_pressure_mpa.map(|p| p[0])));
+    arrays.push(f(&|o| o.max_pressure_mpa.map(|p| p[1])));
+    arrays.push(f(&|o| o.load_zone_epsilon));
+    for i in 0..5 {
+        arrays.push(f(&|o| Some(o.stiffness[i])));
+    }
+    arrays.push(Arc::new(BooleanArray::from(
+        rows.iter()
+            .map(|r| r.out.as_ref().map(|o| o.converged))
+            .collect::<Vec<_>>(),
+    )));
+    arrays.push(Arc::new(StringArray::from(
+        rows.iter()
+            .map(|r| r.out.as_ref().map(|o| o.termination))
+            .collect::<Vec<_>>(),
+    )));
+    arrays.push(n(&|o| o.iterations));
+    arrays.push(f(&|o| Some(o.residual)));
+    arrays.push(Arc::new(StringArray::from(
+        rows.iter()
+            .map(|r| (!r.warnings.is_empty()).then(|| r.warnings.join("; ")))
+            .collect::<Vec<_>>(),
+    )));
+    arrays.push(Arc::new(BooleanArray::from(
+        rows.iter()
+            .map(|r| r.out.as_ref().map(|o| o.max_element_load_n == 0.0))
+            .collect::<Vec<_>>(),
+    )));
+    COLUMNS.iter().map(|(name, _)| *name).zip(arrays).collect()
+}
+
+/// The row of a ball bearing's solution; `loads` are the balls' loads on the inner ring.
+fn ball_out(
+    label: &'static str,
+    sol: &kontakt_bearing::ball_equilibrium::BallSolution,
+    loads: impl Iterator<Item = f64>,
+) -> (
+    BearingOut,
+    kontakt::solve::SolveStatus,
+    Option<&'static str>,
+) {
+    let (mut elements, mut loaded) = (0, 0);
+    for q in loads {
+        elements += 1;
+        loaded += usize::from(q > 0.0);
+    }
+    let out = BearingOut {
+        bearing_type: label,
+        elements,
+        displacement: sol.displacement,
+        load: sol.load,
+        max_element_load_n: sol.max_ball_load_n,
+        loaded_elements: loaded,
+        max_rib_load_n: None,
+        max_load_per_length_n_per_mm: None,
+        max_pressure_mpa: Some(sol.max_pressure_mpa),
+        load_zone_epsilon: sol.load_zone,
+        stiffness: std::array::from_fn(|i| sol.stiffness[i][i]),
+        ..status_out(&sol.status)
+    };
+    (out, sol.status, sol.note)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The load keys set directly, and the keys read through the case reader (`None`).
+    #[test]
+    fn load_keys_map_to_their_slots() {
+        assert_eq!(Slot::parse("load.force_n[2]"), Some(Slot::Force(2)));
+        assert_eq!(Slot::parse("load.moment_nmm[1]"), Some(Slot::Moment(1)));
+        assert_eq!(
+            Slot::parse("load.prescribed.tilt_y_rad"),
+            Some(Slot::Prescribed(4))
+        );
+        assert_eq!(
+            Slot::parse("load.prescribed.dx_mm"),
+            Some(Slot::Prescribed(0))
+        );
+        for read in [
+            "load.force_n",
+            "load.force_n[3]",
+            "load.moment_nmm[2]",
+            "load.force_n[0][0]",
+            "load.prescribed.dw_mm",
+            "bearing.clearance_mm",
+            "name",
+        ] {
+            assert_eq!(Slot::parse(read), None, "{read}");
+        }
+        let mut l = BearingLoadSpec {
+            force_n: [0.0; 3],
+            moment_nmm: [0.0; 2],
+            prescribed: Default::default(),
+        };
+        Slot::Prescribed(2).set(&mut l, 0.01);
+        Slot::Moment(0).set(&mut l, 5.0);
+        assert_eq!(l.prescribed.dz_mm, Some(0.01));
+        assert_eq!(l.moment_nmm, [5.0, 0.0]);
+    }
+}
+
+/// The row of a roller bearing's solve from `start` (the closed forms when `None`), for
+/// either slice model.
+fn roller_out<S: SliceSolver>(
+    solver: &mut S,
+    label: &'static str,
+    ring: &RingLoad,
+    start: Option<[f64; 5]>,
+) -> kontakt::Result<(BearingOut, SolveStatus, Option<&'static str>)> {
+    let sol = match start {
+        Some(u) => solver.solve_from(ring, u),
+        None => solver.solve(ring),
+    }?;
+    let ns = solver.bearing().slices;
+    let width = solver.bearing().effective_length_mm / ns as f64;
+    let per_length = solver.slice_loads().iter().copied().fold(0.0, f64::max) / width;
+    let max_pressure_mpa = solver.slice_pressures().map(|(inner, outer)| {
+        let peak = |p: &[f64]| p.iter().copied().fold(0.0, f64::max);
+        [peak(inner), peak(outer)]
+    });
+    let rollers = solver.roller_loads();
+    let rib = rollers.iter().map(|r| r.rib_n).fold(0.0, f64::max);
+    let loaded = rollers.iter().filter(|r| r.outer_n > 0.0).count();
+    let out = BearingOut {
+        bearing_type: label,
+        elements: rollers.len(),
+        displacement: sol.displacement,
+        load: sol.load,
+        max_element_load_n: sol.max_roller_load_n,
+        loaded_elements: loaded,
+        max_rib_load_n: Some(rib),
+        max_load_per_length_n_per_mm: Some(per_length),
+        max_pressure_mpa,
+        load_zone_epsilon: sol.load_zone,
+        stiffness: std::array::from_fn(|i| sol.stiffness[i][i]),
+        ..status_out(&sol.status)
+    };
+    Ok((out, sol.status, sol.note))
+}
