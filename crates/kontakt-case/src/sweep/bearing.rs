@@ -651,6 +651,45 @@ fn ball_out(
     (out, sol.status, sol.note)
 }
 
+/// The row of a roller bearing's solve from `start` (the closed forms when `None`), for
+/// either slice model.
+fn roller_out<S: SliceSolver>(
+    solver: &mut S,
+    label: &'static str,
+    ring: &RingLoad,
+    start: Option<[f64; 5]>,
+) -> kontakt::Result<(BearingOut, SolveStatus, Option<&'static str>)> {
+    let sol = match start {
+        Some(u) => solver.solve_from(ring, u),
+        None => solver.solve(ring),
+    }?;
+    let ns = solver.bearing().slices;
+    let width = solver.bearing().effective_length_mm / ns as f64;
+    let per_length = solver.slice_loads().iter().copied().fold(0.0, f64::max) / width;
+    let max_pressure_mpa = solver.slice_pressures().map(|(inner, outer)| {
+        let peak = |p: &[f64]| p.iter().copied().fold(0.0, f64::max);
+        [peak(inner), peak(outer)]
+    });
+    let rollers = solver.roller_loads();
+    let rib = rollers.iter().map(|r| r.rib_n).fold(0.0, f64::max);
+    let loaded = rollers.iter().filter(|r| r.outer_n > 0.0).count();
+    let out = BearingOut {
+        bearing_type: label,
+        elements: rollers.len(),
+        displacement: sol.displacement,
+        load: sol.load,
+        max_element_load_n: sol.max_roller_load_n,
+        loaded_elements: loaded,
+        max_rib_load_n: Some(rib),
+        max_load_per_length_n_per_mm: Some(per_length),
+        max_pressure_mpa,
+        load_zone_epsilon: sol.load_zone,
+        stiffness: std::array::from_fn(|i| sol.stiffness[i][i]),
+        ..status_out(&sol.status)
+    };
+    Ok((out, sol.status, sol.note))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -689,43 +728,4 @@ mod tests {
         assert_eq!(l.prescribed.dz_mm, Some(0.01));
         assert_eq!(l.moment_nmm, [5.0, 0.0]);
     }
-}
-
-/// The row of a roller bearing's solve from `start` (the closed forms when `None`), for
-/// either slice model.
-fn roller_out<S: SliceSolver>(
-    solver: &mut S,
-    label: &'static str,
-    ring: &RingLoad,
-    start: Option<[f64; 5]>,
-) -> kontakt::Result<(BearingOut, SolveStatus, Option<&'static str>)> {
-    let sol = match start {
-        Some(u) => solver.solve_from(ring, u),
-        None => solver.solve(ring),
-    }?;
-    let ns = solver.bearing().slices;
-    let width = solver.bearing().effective_length_mm / ns as f64;
-    let per_length = solver.slice_loads().iter().copied().fold(0.0, f64::max) / width;
-    let max_pressure_mpa = solver.slice_pressures().map(|(inner, outer)| {
-        let peak = |p: &[f64]| p.iter().copied().fold(0.0, f64::max);
-        [peak(inner), peak(outer)]
-    });
-    let rollers = solver.roller_loads();
-    let rib = rollers.iter().map(|r| r.rib_n).fold(0.0, f64::max);
-    let loaded = rollers.iter().filter(|r| r.outer_n > 0.0).count();
-    let out = BearingOut {
-        bearing_type: label,
-        elements: rollers.len(),
-        displacement: sol.displacement,
-        load: sol.load,
-        max_element_load_n: sol.max_roller_load_n,
-        loaded_elements: loaded,
-        max_rib_load_n: Some(rib),
-        max_load_per_length_n_per_mm: Some(per_length),
-        max_pressure_mpa,
-        load_zone_epsilon: sol.load_zone,
-        stiffness: std::array::from_fn(|i| sol.stiffness[i][i]),
-        ..status_out(&sol.status)
-    };
-    Ok((out, sol.status, sol.note))
 }
