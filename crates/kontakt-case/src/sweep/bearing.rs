@@ -6,8 +6,8 @@
 //!   numbers only) are set on the load directly: no TOML is edited or read per case.
 //! - **Other parameters** (geometry, clearance, profile, `bearing.type`, ...): when one of
 //!   them changes from one case to the next, the case is read from the edited base table
-//!   as any sweep case is; the bearing is planned again only when its `[bearing]` table
-//!   differs from the planned one.
+//!   as any sweep case is; the bearing is planned again only when its `[bearing]` or
+//!   `[speed]` table differs from the planned one.
 //! - **Warm starts**: the cases run in blocks of [`BLOCK`] consecutive cases (aligned to
 //!   case indices, so the blocks and hence the numbers do not depend on the thread count);
 //!   a block plans its bearing once and solves every case from the last converged
@@ -546,7 +546,9 @@ impl Sweep {
             Err(e) => return Err(e.to_string()),
         };
         match previous {
-            Some(mut m) if m.case.bearing == case.bearing => {
+            // the ring speeds are part of the plan (a ball bearing at speed has its own
+            // solver): a new `[speed]` plans again, as a new `[bearing]` does
+            Some(mut m) if m.case.bearing == case.bearing && m.case.speed == case.speed => {
                 m.case = case;
                 Ok(m)
             }
