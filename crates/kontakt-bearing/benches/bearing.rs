@@ -3,20 +3,23 @@
 //! the tilts held, cold (from the closed-form start) and warm after a 1 % load change
 //! (`solve_from` the previous displacement); a deep-groove ball bearing with 10 balls under
 //! a combined load, cold, at rest and at 10 000 r/min; a cylindrical roller bearing of 14
-//! rollers × 31 slices under a radial load, cold, for reference; the TRB with coupled
-//! slices (half-space strips), cold. The solvers are built once outside the timed closure;
-//! the timed call is the solve. The Newton iterations of each case are printed once
-//! (stderr). Figures in docs/PERFORMANCE.md, "Bearing load distribution (issue 28)".
+//! rollers × 31 slices under a radial load, cold, for reference; the same TRB with the
+//! rib-contact roller model (`roller_equilibrium`: every roller in its own balance, Hertz
+//! rib contacts), cold and warm after a 1 % load change; the TRB with coupled slices
+//! (half-space strips), cold. The solvers are built once outside the timed closure; the
+//! timed call is the solve. The Newton iterations of each case are printed once (stderr).
+//! Figures in docs/PERFORMANCE.md, "Bearing load distribution (issue 28)".
 
 #[path = "../tests/support/cases.rs"]
 mod cases;
 
-use cases::{crb, crb_load, dgbb, dgbb_load, dgbb_speeds, trb, trb_load};
+use cases::{crb, crb_load, dgbb, dgbb_load, dgbb_speeds, trb, trb_load, trb_rib};
 use criterion::{Criterion, criterion_group, criterion_main};
 use kontakt_bearing::ball_equilibrium::BallBearingSolver;
 use kontakt_bearing::ball_speed::{BallSpeedSolver, RaceControl};
 use kontakt_bearing::equilibrium::RollerBearingSolver;
 use kontakt_bearing::equilibrium::coupled::CoupledSliceSolver;
+use kontakt_bearing::roller_equilibrium::RibContactSolver;
 use std::hint::black_box;
 
 fn bench_bearing(c: &mut Criterion) {
@@ -49,6 +52,42 @@ fn bench_bearing(c: &mut Criterion) {
             trb_solver
                 .solve_from(black_box(&load_1pc), black_box(start))
                 .expect("solve")
+        })
+    });
+
+    // TRB with every roller in its own balance and Hertz rib contacts (the rib-contact
+    // roller model), cold and warm: issue 28's "ISO slice law, Hertz rib contacts" case.
+    let mut rib_solver = RibContactSolver::new(trb(), trb_rib()).expect("valid TRB and rib");
+    let previous = rib_solver.solve(&load).expect("solve");
+    assert!(previous.status.converged(), "{:?}", previous.status);
+    let warm = rib_solver
+        .solve_from(&load_1pc, previous.displacement)
+        .expect("solve");
+    assert!(warm.status.converged(), "{:?}", warm.status);
+    eprintln!(
+        "trb_rib_20x31: cold {} iterations (residual {:.1e}), warm after +1 % {} iterations (residual {:.1e}), Q_max {:.0} N, rib {:.0} N",
+        previous.status.iterations,
+        previous.status.residual,
+        warm.status.iterations,
+        warm.status.residual,
+        previous.max_roller_load_n,
+        rib_solver.max_rib_load_n(),
+    );
+    group.bench_function("trb_rib_20x31_cold", |b| {
+        b.iter(|| rib_solver.solve(black_box(&load)).expect("solve"))
+    });
+    // alternate between the two loads, each solve warm from the other's equilibrium (ring
+    // and rollers): every timed call is a warm solve after a 1 % load change
+    let starts = [previous.displacement, warm.displacement];
+    let loads = [load_1pc, load];
+    let mut turn = 0;
+    group.bench_function("trb_rib_20x31_warm_1pc", |b| {
+        b.iter(|| {
+            let s = rib_solver
+                .solve_from(black_box(&loads[turn]), black_box(starts[turn]))
+                .expect("solve");
+            turn = 1 - turn;
+            s
         })
     });
 

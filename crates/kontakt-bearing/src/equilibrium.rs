@@ -255,6 +255,11 @@ impl RollerBearingSolver {
         &self.bearing
     }
 
+    /// The directions the bearing has stiffness in.
+    pub(crate) fn stiff(&self) -> &[bool; 5] {
+        &self.stiff
+    }
+
     /// Slice centres from the roller centre, mm.
     pub fn slice_positions(&self) -> &[f64] {
         &self.x
@@ -322,7 +327,7 @@ impl RollerBearingSolver {
     }
 
     /// Check the load against what the bearing can carry.
-    fn check_load(&self, load: &RingLoad) -> Result<()> {
+    pub(crate) fn check_load(&self, load: &RingLoad) -> Result<()> {
         check_finite(load)?;
         for (i, d) in load.dofs.iter().enumerate() {
             let name = FORCE_NAMES[i];
@@ -429,7 +434,7 @@ impl RollerBearingSolver {
     /// A start from the closed forms: the radial displacement for Q_max = 4.08 F_r/(Z cos α),
     /// the axial one for Q = F_a/(Z sin α), the tilts for the moment carried by the axial
     /// components (or by the slices of a cylindrical roller).
-    fn start(&self, load: &RingLoad) -> Vector5<f64> {
+    pub(crate) fn start(&self, load: &RingLoad) -> Vector5<f64> {
         let b = &self.bearing;
         let z = b.rollers as f64;
         let cl = b.roller_stiffness();
@@ -559,6 +564,30 @@ pub(crate) fn roller_solution(
     }
 }
 
+/// [`ConvexRing::touch`] of slices: the smallest step fraction at which a slice of a roller
+/// with `g = g0 + x g1` (`frames`, one per roller), at its last approach (`approach`,
+/// roller-major), reaches `d_ref` along `step`; `∞` when none approaches.
+pub(crate) fn slice_touch<'a>(
+    frames: impl Iterator<Item = (&'a Vector5<f64>, &'a Vector5<f64>)>,
+    x: &[f64],
+    approach: &[f64],
+    step: &Vector5<f64>,
+    d_ref: f64,
+) -> f64 {
+    let mut t_touch = f64::INFINITY;
+    for (j, (g0, g1)) in frames.enumerate() {
+        let (s0, s1) = (g0.dot(step), g1.dot(step));
+        for (kk, &xk) in x.iter().enumerate() {
+            let gd = s0 + s1 * xk;
+            if gd > 0.0 {
+                let need = d_ref - approach[j * x.len() + kk];
+                t_touch = t_touch.min(need / gd);
+            }
+        }
+    }
+    t_touch
+}
+
 /// The bearing's numbers the iteration needs (copied out, so the buffers can be borrowed).
 struct Scalars {
     rollers: f64,
@@ -663,18 +692,8 @@ impl ConvexRing for RollerBearingSolver {
     }
 
     fn touch(&self, step: &Vector5<f64>, d_ref: f64) -> f64 {
-        let mut t_touch = f64::INFINITY;
-        for (j, fr) in self.frames.iter().enumerate() {
-            let (s0, s1) = (fr.g0.dot(step), fr.g1.dot(step));
-            for (kk, &xk) in self.x.iter().enumerate() {
-                let gd = s0 + s1 * xk;
-                if gd > 0.0 {
-                    let need = d_ref - self.approach[j * self.x.len() + kk];
-                    t_touch = t_touch.min(need / gd);
-                }
-            }
-        }
-        t_touch
+        let frames = self.frames.iter().map(|f| (&f.g0, &f.g1));
+        slice_touch(frames, &self.x, &self.approach, step, d_ref)
     }
 
     fn limit(&self) -> f64 {

@@ -5,6 +5,8 @@
 //! [`geometry`] of roller and ball bearings as validated data, the quasi-static ring
 //! [`equilibrium`] of roller bearings and the [`ball_equilibrium`] of deep-groove and
 //! angular-contact ball bearings, in five degrees of freedom with the stiffness matrix.
+//! The catalogue [`friction`] models (SKF 2004, Schaeffler, Aihara 1987) give the whole
+//! bearing's friction torque as the catalogues do.
 //!
 //! ## Quick example
 //! A cylindrical roller bearing (14 rollers 10 × 12 mm on a 60 mm pitch circle, ISO/TS 16281
@@ -35,11 +37,13 @@
 pub mod ball_equilibrium;
 pub mod ball_speed;
 pub mod equilibrium;
+pub mod friction;
 pub mod geometry;
 pub mod life;
 pub mod load_zone;
 mod newton;
 pub mod profile;
+pub mod roller_equilibrium;
 pub mod speed;
 pub mod stress;
 #[cfg(test)]

@@ -8,12 +8,13 @@ mod cases;
 #[path = "../../kontakt/tests/support/counting_alloc.rs"]
 mod counting_alloc;
 
-use cases::{crb, crb_load, dgbb, dgbb_load, dgbb_speeds, trb, trb_load};
+use cases::{crb, crb_load, dgbb, dgbb_load, dgbb_speeds, trb, trb_load, trb_rib};
 use counting_alloc::allocations;
 use kontakt_bearing::ball_equilibrium::BallBearingSolver;
 use kontakt_bearing::ball_speed::{BallSpeedSolver, RaceControl};
 use kontakt_bearing::equilibrium::RollerBearingSolver;
 use kontakt_bearing::equilibrium::coupled::CoupledSliceSolver;
+use kontakt_bearing::roller_equilibrium::RibContactSolver;
 
 #[test]
 fn roller_bearing_solves_allocate_nothing_cold_or_warm() {
@@ -71,4 +72,16 @@ fn coupled_slice_solves_allocate_nothing_cold_or_warm() {
     let (warm, n) = allocations(|| solver.solve_from(&trb_load(1.01), start).expect("solve"));
     assert!(warm.status.converged());
     assert_eq!(n, 0, "warm coupled TRB solve");
+}
+
+#[test]
+fn rib_contact_solves_allocate_nothing_cold_or_warm() {
+    let mut solver = RibContactSolver::new(trb(), trb_rib()).expect("valid TRB and rib");
+    let (cold, n) = allocations(|| solver.solve(&trb_load(1.0)).expect("solve"));
+    assert!(cold.status.converged());
+    assert_eq!(n, 0, "cold rib-contact solve");
+    let start = cold.displacement;
+    let (warm, n) = allocations(|| solver.solve_from(&trb_load(1.01), start).expect("solve"));
+    assert!(warm.status.converged());
+    assert_eq!(n, 0, "warm rib-contact solve");
 }

@@ -64,7 +64,9 @@ use kontakt::{Error, Result};
 use kontakt_bearing::ball_equilibrium::{BallBearingSolver, BallSolution};
 use kontakt_bearing::ball_speed::{BallSpeedSolver, RaceControl};
 use kontakt_bearing::equilibrium::coupled::CoupledSliceSolver;
-use kontakt_bearing::equilibrium::{Dof, RingLoad, RollerBearingSolver};
+use kontakt_bearing::equilibrium::{
+    Dof, RingLoad, RollerBearingSolver, RollerLoad, RollerSolution,
+};
 use kontakt_bearing::geometry::{
     BallBearing, BallBearingKind, DEFAULT_SLICES, RollerBearing, RollerBearingKind,
 };
@@ -230,6 +232,18 @@ pub struct RollerSpec {
     /// lamina life and the ISO 76 static safety (`docs/bearing-model.md`, "Life and static safety").
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub rating: Option<RatingSpec>,
+    /// Tapered only: `"iso"` (the default: the ISO/TS 16281 slice law of both contacts in
+    /// series, the rib load from the roller's force balance) or `"rib_contact"` (every
+    /// roller in its own force and moment balance, the rib a Hertz contact;
+    /// `docs/bearing-model.md` §15; needs `[bearing.rib_contact]`).
+    #[serde(
+        default,
+        skip_serializing_if = "crate::bearing_rib::RollerModel::is_iso"
+    )]
+    pub roller_model: crate::bearing_rib::RollerModel,
+    /// With `roller_model = "rib_contact"`: the roller end/rib pair.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rib_contact: Option<crate::bearing_rib::RibContactSpec>,
 }
 
 fn default_slices() -> usize {
@@ -502,6 +516,21 @@ pub struct RollerRow {
     pub inner_max_pressure_mpa: f64,
     /// The largest Hertz pressure of the roller's slices on the outer raceway, MPa.
     pub outer_max_pressure_mpa: f64,
+    /// `roller_model = "rib_contact"` only: the roller's tilt in its axial plane, rad
+    /// (positive: the small end toward the bearing axis).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub roller_tilt_rad: Option<f64>,
+    /// `roller_model = "rib_contact"` only: the maximum Hertz pressure on the rib, MPa.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rib_max_pressure_mpa: Option<f64>,
+    /// `roller_model = "rib_contact"` only: the skew moment about the cup normal, N·mm
+    /// (0: the model has no friction).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub skew_moment_nmm: Option<f64>,
+    /// `roller_model = "rib_contact"`, cylindrical only: the load on the outer ring's ribs,
+    /// N (`rib_load_n` is then the inner ring's).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub outer_rib_load_n: Option<f64>,
 }
 
 /// The slices of the most loaded roller.
@@ -522,6 +551,10 @@ pub struct SliceTable {
     pub inner_pressure_mpa: Vec<f64>,
     /// Maximum Hertz pressure of each slice on the outer raceway, MPa.
     pub outer_pressure_mpa: Vec<f64>,
+    /// `roller_model = "rib_contact"` only: the cone (inner raceway) slice loads, N;
+    /// `load_n` is then the cup's and `approach_mm` the sum of both contacts' approaches.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub inner_load_n: Option<Vec<f64>>,
 }
 
 /// The solver's status.
@@ -600,6 +633,8 @@ pub struct BearingReport {
 /// The rolling elements of a [`BearingReport`], their keys flattened into the report.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(untagged)]
+// a report, built once per solve: the roller part's size does not matter
+#[allow(clippy::large_enum_variant)]
 pub enum BearingElements {
     /// A roller bearing (cylindrical, tapered, thrust).
     Rollers(RollerPart),
@@ -658,6 +693,17 @@ pub struct RollerPart {
     pub max_inner_pressure_mpa: f64,
     /// The largest Hertz pressure of any slice on the outer raceway, MPa.
     pub max_outer_pressure_mpa: f64,
+    /// `"rib_contact"` when the rollers are in their own balance with a Hertz rib contact
+    /// (absent for the default ISO model).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub roller_model: Option<&'static str>,
+    /// `roller_model = "rib_contact"` only: the largest Hertz pressure on the rib, MPa.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_rib_pressure_mpa: Option<f64>,
+    /// `roller_model = "rib_contact"` only: the rib normal's direction (rib into roller)
+    /// of the roller end/rib pair, measured like the contact angles, degrees.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rib_normal_deg: Option<f64>,
 }
 
 /// The report keys of a ball bearing.
@@ -900,6 +946,8 @@ pub(crate) enum Planned {
     Roller(RollerBearingSolver),
     /// A roller bearing with coupled slices.
     Coupled(Box<CoupledSliceSolver>),
+    /// A tapered roller bearing with `roller_model = "rib_contact"`.
+    RibRoller(Box<kontakt_bearing::roller_equilibrium::RibContactSolver>),
     /// A ball bearing, with its case keys for the errors of a solve.
     Ball {
         solver: BallBearingSolver,
@@ -944,8 +992,21 @@ pub(crate) fn plan(case: &BearingCase) -> Result<(Planned, &'static str)> {
     case.speed.require_at_rest(label)?;
     let bearing = roller_bearing(kind, s, label)?;
     if s.slice_model == SliceModel::Coupled {
+        if !s.roller_model.is_iso() {
+            return Err(Error::invalid(
+                "bearing.slice_model",
+                "coupled",
+                "\"iso\" with roller_model = \"rib_contact\" (the rib-contact roller model has independent slices; coupled slices with rollers in their own balance are not built yet)",
+            ));
+        }
         let solver = CoupledSliceSolver::new(bearing).map_err(map_bearing_field)?;
         return Ok((Planned::Coupled(Box::new(solver)), label));
+    }
+    let rib = s.rib_contact.as_ref();
+    if let Some(solver) =
+        crate::bearing_rib::plan_rib(s.roller_model, rib, s.rib_angle_deg, label, &bearing)?
+    {
+        return Ok((Planned::RibRoller(Box::new(solver)), label));
     }
     let solver = RollerBearingSolver::new(bearing).map_err(map_bearing_field)?;
     Ok((Planned::Roller(solver), label))
@@ -964,6 +1025,7 @@ pub(crate) fn solve_planned(
     match planned {
         Planned::Roller(solver) => roller_report(case, label, solver, &load, start),
         Planned::Coupled(solver) => roller_report(case, label, solver.as_mut(), &load, start),
+        Planned::RibRoller(solver) => rib_roller_report(case, label, solver, &load, start),
         Planned::Ball { solver, spec, keys } => {
             let solver = BallSolver::AtRest(solver);
             ball_report(case, label, solver, spec, keys, &load, start)
@@ -988,28 +1050,12 @@ fn roller_report<S: SliceSolver>(
         None => solver.solve(load),
     }
     .map_err(map_load)?;
-    let mut warnings = solver_warnings(&sol.status, sol.note)?;
     let b = solver.bearing();
-    warnings.extend(coarse_slices_warning(b.slices));
     let ns = b.slices;
     let width = b.effective_length_mm / ns as f64;
     let loads = solver.slice_loads();
     let approaches = solver.slice_approaches();
-    let map = pressure_map(solver);
-    let spec = match &case.bearing {
-        BearingSpec::Cylindrical(s) | BearingSpec::Tapered(s) | BearingSpec::Thrust(s) => {
-            s.rating.as_ref()
-        }
-        _ => None,
-    };
-    let spec = checked_spec(spec, false)?;
-    let most = (0..b.rollers).fold(0, |m, j| {
-        if solver.roller_loads()[j].outer_n > solver.roller_loads()[m].outer_n {
-            j
-        } else {
-            m
-        }
-    });
+    let most = most_loaded(solver.roller_loads());
     // Hertz line contacts of the independent slices (and the most loaded slice's contact
     // for the validity check); a model with its own slice pressures (coupled slices)
     // reports those instead.
@@ -1039,6 +1085,10 @@ fn roller_report<S: SliceSolver>(
             approach_mm: r.max_approach_mm,
             inner_max_pressure_mpa: pressures.per_roller[j][0],
             outer_max_pressure_mpa: pressures.per_roller[j][1],
+            roller_tilt_rad: None,
+            rib_max_pressure_mpa: None,
+            skew_moment_nmm: None,
+            outer_rib_load_n: None,
         });
     }
     let slice_loads = loads[most * ns..(most + 1) * ns].to_vec();
@@ -1048,10 +1098,70 @@ fn roller_report<S: SliceSolver>(
         load_per_length_n_per_mm: slice_loads.iter().map(|q| q / width).collect(),
         load_n: slice_loads,
         approach_mm: approaches[most * ns..(most + 1) * ns].to_vec(),
-        inner_pressure_mpa: pressures.most_inner,
-        outer_pressure_mpa: pressures.most_outer,
+        inner_pressure_mpa: std::mem::take(&mut pressures.most_inner),
+        outer_pressure_mpa: std::mem::take(&mut pressures.most_outer),
+        inner_load_n: None,
     };
-    let p_max = pressures
+    let map = pressure_map(solver).map(|(map, m)| {
+        Box::new(RollerPressures {
+            max_pressure_mpa: m.iter().copied().fold(0.0, f64::max),
+            slice_pressure_mpa: map,
+        })
+    });
+    let parts = RollerParts {
+        rows,
+        most_loaded,
+        slice_loads: loads,
+        pressure_map: map,
+        pressures,
+    };
+    roller_part_report(case, label, b, &sol, load, parts, solver.roller_loads())
+}
+
+/// The index of the roller with the largest outer raceway load (the first of equals).
+fn most_loaded(rollers: &[RollerLoad]) -> usize {
+    (0..rollers.len()).fold(0, |m, j| {
+        if rollers[j].outer_n > rollers[m].outer_n {
+            j
+        } else {
+            m
+        }
+    })
+}
+
+/// What a roller model's solve gives the shared part of its report.
+struct RollerParts<'a> {
+    rows: Vec<RollerRow>,
+    most_loaded: SliceTable,
+    /// The outer raceway's slice loads, roller-major, N.
+    slice_loads: &'a [f64],
+    pressure_map: Option<Box<RollerPressures>>,
+    pressures: crate::bearing_rating::RollerPressures,
+}
+
+/// The report of a roller bearing from its solution, its rows and the slices of its most
+/// loaded roller, for every roller model: the solver's warnings, the static safety and the
+/// lives (`bearing_rating`), the contact sizes; the rib-contact keys unset.
+fn roller_part_report(
+    case: &BearingCase,
+    label: &'static str,
+    b: &RollerBearing,
+    sol: &RollerSolution,
+    load: &RingLoad,
+    parts: RollerParts<'_>,
+    rollers: &[RollerLoad],
+) -> Result<BearingReport> {
+    let mut warnings = solver_warnings(&sol.status, sol.note)?;
+    warnings.extend(coarse_slices_warning(b.slices));
+    let spec = match &case.bearing {
+        BearingSpec::Cylindrical(s) | BearingSpec::Tapered(s) | BearingSpec::Thrust(s) => {
+            s.rating.as_ref()
+        }
+        _ => None,
+    };
+    let spec = checked_spec(spec, false)?;
+    let p_max = parts
+        .pressures
         .per_roller
         .iter()
         .fold([0.0_f64; 2], |m, p| [m[0].max(p[0]), m[1].max(p[1])]);
@@ -1062,7 +1172,7 @@ fn roller_report<S: SliceSolver>(
             contact_angle_rad: b.contact_angle_rad,
         },
     };
-    let r_most = solver.roller_loads()[most];
+    let r_most = rollers[parts.most_loaded.roller];
     let inner_ratio = if r_most.outer_n > 0.0 {
         r_most.inner_n / r_most.outer_n
     } else {
@@ -1074,42 +1184,44 @@ fn roller_report<S: SliceSolver>(
         sol.load,
         applied_moment(load),
         p_max[0].max(p_max[1]),
-        LifeInput::Rollers(b, loads, inner_ratio),
+        LifeInput::Rollers(b, parts.slice_loads, inner_ratio),
         &mut warnings,
     )?;
+    let ns = b.slices;
+    let width = b.effective_length_mm / ns as f64;
     let elements = BearingElements::Rollers(RollerPart {
         rollers: b.rollers,
-        slices: ns,
+        slices: b.slices,
         contact_angle_deg: b.contact_angle_rad.to_degrees(),
         cone_angle_deg: b.cone_angle_rad.to_degrees(),
         roller_stiffness_n_per_mm10_9: b.roller_stiffness(),
         max_roller_load_n: sol.max_roller_load_n,
-        max_load_per_length_n_per_mm: rows
+        max_load_per_length_n_per_mm: parts
+            .rows
             .iter()
             .map(|r| r.max_load_per_length_n_per_mm)
             .fold(0.0, f64::max),
-        roller_loads: rows,
-        most_loaded_roller: most_loaded,
-        slice_load_per_length_n_per_mm: loads
+        roller_loads: parts.rows,
+        most_loaded_roller: parts.most_loaded,
+        slice_load_per_length_n_per_mm: parts
+            .slice_loads
             .chunks_exact(ns)
             .take(b.rollers)
             .map(|c| c.iter().map(|q| q / width).collect())
             .collect(),
-        pressure: map.map(|(map, m)| {
-            Box::new(RollerPressures {
-                max_pressure_mpa: m.iter().copied().fold(0.0, f64::max),
-                slice_pressure_mpa: map,
-            })
-        }),
+        pressure: parts.pressure_map,
         max_inner_pressure_mpa: p_max[0],
         max_outer_pressure_mpa: p_max[1],
+        roller_model: None,
+        max_rib_pressure_mpa: None,
+        rib_normal_deg: None,
     });
     let mut report = report(case, label, elements, sol.displacement, sol.load);
     report.solver = solver_echo(&sol.status);
     report.load_zone_epsilon = sol.load_zone;
     report.stiffness_matrix = sol.stiffness;
     report.warnings = warnings;
-    report.contacts = pressures.contacts;
+    report.contacts = parts.pressures.contacts;
     report.rating = rated;
     Ok(report)
 }
@@ -1131,6 +1243,106 @@ fn applied_moment(load: &RingLoad) -> f64 {
         Dof::Displacement(_) => 0.0,
     };
     m(load.dofs[3]).hypot(m(load.dofs[4]))
+}
+
+/// The report of a rib-contact solve: the ISO report's keys (cup load as `outer_load_n`,
+/// cone load as `inner_load_n`) with the roller's tilt, the rib pressure and the skew
+/// moment per roller, the cone slices of the most loaded roller. The raceway pressures
+/// are the Hertz line contacts of the cup slices, the cone's scaled by the roller's
+/// cone-to-cup load ratio (as the ISO model's); the cone's own slice distribution under
+/// the roller's tilt is not yet used for them.
+fn rib_roller_report(
+    case: &BearingCase,
+    label: &'static str,
+    solver: &mut kontakt_bearing::roller_equilibrium::RibContactSolver,
+    load: &RingLoad,
+    start: Option<[f64; 5]>,
+) -> Result<BearingReport> {
+    let sol = match start {
+        Some(u) => solver.solve_from(load, u),
+        None => solver.solve(load),
+    }
+    .map_err(map_load)?;
+    let b = solver.bearing();
+    let ns = b.slices;
+    let width = b.effective_length_mm / ns as f64;
+    let (cup, cone) = (solver.cup_slice_loads(), solver.cone_slice_loads());
+    // the raceway loads of every roller as the shared report part reads them
+    let ring: Vec<RollerLoad> = solver
+        .roller_loads()
+        .iter()
+        .map(|r| RollerLoad {
+            azimuth_rad: r.azimuth_rad,
+            outer_n: r.outer_n,
+            inner_n: r.inner_n,
+            rib_n: r.rib_n,
+            max_approach_mm: r.max_approach_mm,
+        })
+        .collect();
+    let most = most_loaded(&ring);
+    let mut pressures = roller_pressures(b, &ring, cup, most)?;
+    let mut rows = Vec::with_capacity(b.rollers);
+    for (j, r) in solver.roller_loads().iter().enumerate() {
+        let slice_max = cup[j * ns..(j + 1) * ns]
+            .iter()
+            .chain(&cone[j * ns..(j + 1) * ns])
+            .fold(0.0, |m: f64, q| m.max(*q));
+        rows.push(RollerRow {
+            azimuth_deg: r.azimuth_rad.to_degrees(),
+            inner_load_n: r.inner_n,
+            outer_load_n: r.outer_n,
+            rib_load_n: r.rib_n,
+            max_load_per_length_n_per_mm: slice_max / width,
+            approach_mm: r.max_approach_mm,
+            inner_max_pressure_mpa: pressures.per_roller[j][0],
+            outer_max_pressure_mpa: pressures.per_roller[j][1],
+            roller_tilt_rad: Some(r.tilt_rad),
+            rib_max_pressure_mpa: Some(r.rib_max_pressure_mpa),
+            skew_moment_nmm: Some(r.skew_moment_nmm),
+            outer_rib_load_n: solver.arrangement().map(|_| r.outer_rib_n),
+        });
+    }
+    let range = most * ns..(most + 1) * ns;
+    let cup_slices = cup[range.clone()].to_vec();
+    let most_loaded = SliceTable {
+        roller: most,
+        position_mm: solver.slice_positions().to_vec(),
+        load_per_length_n_per_mm: cup_slices.iter().map(|q| q / width).collect(),
+        load_n: cup_slices,
+        approach_mm: solver.slice_approaches()[range.clone()].to_vec(),
+        inner_pressure_mpa: std::mem::take(&mut pressures.most_inner),
+        outer_pressure_mpa: std::mem::take(&mut pressures.most_outer),
+        inner_load_n: Some(cone[range].to_vec()),
+    };
+    let parts = RollerParts {
+        rows,
+        most_loaded,
+        slice_loads: cup,
+        pressure_map: None,
+        pressures,
+    };
+    let mut report = roller_part_report(case, label, b, &sol, load, parts, &ring)?;
+    // the most loaded rib contact, sized against the face's and the rib's radii
+    let rib_max = solver.max_rib_load_n();
+    if rib_max > 0.0 {
+        let hertz = solver.rib_hertz();
+        let hs = hertz.solve_force(rib_max)?;
+        report.contacts.push(
+            ContactSize::new(
+                Size::Hertz(point_size(hertz.geometry(), &hs)),
+                ["bearing.rib_contact.face", "bearing.rib_contact.rib"],
+            )
+            .at("the most loaded roller's rib contact"),
+        );
+    }
+    if let BearingElements::Rollers(p) = &mut report.elements {
+        p.roller_model = Some("rib_contact");
+        p.max_rib_pressure_mpa = Some(solver.max_rib_pressure_mpa());
+        p.rib_normal_deg = solver
+            .rib_pair()
+            .map(|_| solver.rib_normal_angle().to_degrees());
+    }
+    Ok(report)
 }
 
 /// The library's load-field errors (`load.fz_n`) as the case file's keys.

@@ -29,6 +29,7 @@ pub mod bearing_case;
 pub mod bearing_design;
 pub mod bearing_model;
 pub mod bearing_rating;
+pub mod bearing_rib;
 pub mod bearing_slices;
 pub mod bem_case;
 pub mod case;

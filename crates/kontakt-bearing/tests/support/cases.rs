@@ -58,3 +58,16 @@ pub fn crb() -> RollerBearing {
 pub fn crb_load() -> RingLoad {
     RingLoad::forces([10_000.0, 0.0, 0.0, 0.0, 0.0])
 }
+
+/// The roller end/rib pair of the rib-contact model on [`trb`]: a spherical face of
+/// 80 mm radius on a conical rib, contact 4.5 mm above the roller axis (about half the
+/// large-end radius, as in the rib study's 2.75 of 5.5 mm). Representative, not a
+/// manufacturer's drawing.
+#[allow(dead_code)] // not every includer uses every case
+pub fn trb_rib() -> kontakt_bearing::roller_equilibrium::RibContact {
+    kontakt_bearing::roller_equilibrium::RibContact {
+        face: kontakt::bearing::FaceShape::Sphere { radius: 80.0 },
+        rib: kontakt::bearing::RibShape::Cone,
+        contact_height_mm: 4.5,
+    }
+}

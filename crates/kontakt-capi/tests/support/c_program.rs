@@ -16,15 +16,20 @@ fn profile_dir() -> PathBuf {
     exe.parent().unwrap().parent().unwrap().to_path_buf()
 }
 
+/// The newest of the static libraries cargo leaves in the profile: `cargo test` writes
+/// `deps/libkontakt_capi.a`, `cargo build` also copies one to the profile directory, which a
+/// later `cargo test` does not refresh (a stale copy lacks the newest functions).
 fn static_lib() -> PathBuf {
     let dir = profile_dir();
-    for p in [
+    let newest = [
         dir.join("libkontakt_capi.a"),
         dir.join("deps/libkontakt_capi.a"),
-    ] {
-        if p.exists() {
-            return p;
-        }
+    ]
+    .into_iter()
+    .filter_map(|p| Some((p.metadata().ok()?.modified().ok()?, p)))
+    .max_by_key(|(t, _)| *t);
+    if let Some((_, p)) = newest {
+        return p;
     }
     panic!(
         "no libkontakt_capi.a in {} (cargo test -p kontakt-capi builds it with the library)",

@@ -176,6 +176,7 @@ impl BearingElement {
         match &self.model.planned {
             Planned::Roller(s) => roller_limits(s.bearing()),
             Planned::Coupled(s) => roller_limits(s.bearing()),
+            Planned::RibRoller(s) => roller_limits(s.bearing()),
             Planned::Ball { solver, .. } => ball_limits(solver.bearing()),
             Planned::BallAtSpeed { solver, .. } => ball_limits(solver.bearing()),
         }
@@ -229,6 +230,19 @@ impl BearingElement {
         let (force, stiffness, status, note, max_load) = match &mut self.model.planned {
             Planned::Roller(s) => roller_step(s, &load, start)?,
             Planned::Coupled(s) => roller_step(s.as_mut(), &load, start)?,
+            Planned::RibRoller(s) => {
+                let sol = match start {
+                    Some(w) => s.solve_from(&load, w),
+                    None => s.solve(&load),
+                }?;
+                (
+                    sol.load,
+                    sol.stiffness,
+                    sol.status,
+                    sol.note,
+                    sol.max_roller_load_n,
+                )
+            }
             Planned::Ball { solver, .. } => {
                 let sol = match start {
                     Some(w) => solver.solve_from(&load, w),

@@ -246,6 +246,7 @@ impl BlockModel {
         let (coarse, contacts) = match &planned {
             Planned::Roller(s) => (coarse_slices_warning(s.bearing().slices), None),
             Planned::Coupled(s) => (coarse_slices_warning(s.bearing().slices), None),
+            Planned::RibRoller(s) => (coarse_slices_warning(s.bearing().slices), None),
             Planned::Ball { solver, .. } => {
                 let b = solver.bearing();
                 (None, Some(b.contacts(b.stiffness_contact_angle())?))
@@ -280,6 +281,7 @@ impl BlockModel {
         let solved = match &mut self.planned {
             Planned::Roller(solver) => roller_out(solver, self.label, &ring, start),
             Planned::Coupled(solver) => roller_out(solver.as_mut(), self.label, &ring, start),
+            Planned::RibRoller(solver) => rib_roller_out(solver, self.label, &ring, start),
             Planned::Ball { solver, .. } => match start {
                 Some(u) => solver.solve_from(&ring, u),
                 None => solver.solve(&ring),
@@ -336,7 +338,11 @@ impl BlockModel {
     /// The validity check of the report path (`crate::validity::checked`) for the most
     /// loaded ball's two Hertz contacts: a warning above 0.4 of a radius, a refusal at 1.
     fn size_warnings(&self, q_max: f64, warnings: &mut Vec<String>) -> kontakt::Result<()> {
-        let (Some(pair), Planned::Ball { keys, .. }) = (&self.contacts, &self.planned) else {
+        // at speed: the outer contact sized with the inner load too (the report sizes it with
+        // the outer raceway's own largest load)
+        let (Some(pair), Planned::Ball { keys, .. } | Planned::BallAtSpeed { keys, .. }) =
+            (&self.contacts, &self.planned)
+        else {
             return Ok(());
         };
         if q_max <= 0.0 {
@@ -685,6 +691,45 @@ fn roller_out<S: SliceSolver>(
         max_rib_load_n: Some(rib),
         max_load_per_length_n_per_mm: Some(per_length),
         max_pressure_mpa,
+        load_zone_epsilon: sol.load_zone,
+        stiffness: std::array::from_fn(|i| sol.stiffness[i][i]),
+        ..status_out(&sol.status)
+    };
+    Ok((out, sol.status, sol.note))
+}
+
+/// The row of a rib-contact roller model's solve (`roller_model = "rib_contact"`): the cup
+/// and cone slices each with their own loads, the rib a Hertz contact.
+fn rib_roller_out(
+    solver: &mut kontakt_bearing::roller_equilibrium::RibContactSolver,
+    label: &'static str,
+    ring: &RingLoad,
+    start: Option<[f64; 5]>,
+) -> kontakt::Result<(BearingOut, SolveStatus, Option<&'static str>)> {
+    let sol = match start {
+        Some(u) => solver.solve_from(ring, u),
+        None => solver.solve(ring),
+    }?;
+    let b = solver.bearing();
+    let width = b.effective_length_mm / b.slices as f64;
+    let per_length = solver
+        .cup_slice_loads()
+        .iter()
+        .chain(solver.cone_slice_loads())
+        .copied()
+        .fold(0.0, f64::max)
+        / width;
+    let rollers = solver.roller_loads();
+    let out = BearingOut {
+        bearing_type: label,
+        elements: rollers.len(),
+        displacement: sol.displacement,
+        load: sol.load,
+        max_element_load_n: sol.max_roller_load_n,
+        loaded_elements: rollers.iter().filter(|r| r.outer_n > 0.0).count(),
+        max_rib_load_n: Some(solver.max_rib_load_n()),
+        max_load_per_length_n_per_mm: Some(per_length),
+        max_pressure_mpa: None,
         load_zone_epsilon: sol.load_zone,
         stiffness: std::array::from_fn(|i| sol.stiffness[i][i]),
         ..status_out(&sol.status)

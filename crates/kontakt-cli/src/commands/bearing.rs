@@ -133,6 +133,8 @@ fn roller_header(
     };
     let model = if p.pressure.is_some() {
         "coupled slices: half-space strips, ISO/TS 16281 mean approach"
+    } else if p.roller_model.is_some() {
+        "ISO/TS 16281 slice law per raceway, rollers in their own balance"
     } else {
         "ISO/TS 16281 slice law"
     };
@@ -171,6 +173,9 @@ fn roller_table(out: &mut impl Write, r: &BearingReport, p: &RollerPart) -> Resu
         Num(p.max_roller_load_n),
         Num(p.max_load_per_length_n_per_mm)
     )?;
+    if p.roller_model.is_some() {
+        return crate::commands::bearing_rib::rib_roller_table(out, p);
+    }
     writeln!(out)?;
     writeln!(
         out,

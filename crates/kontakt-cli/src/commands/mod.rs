@@ -12,6 +12,7 @@ use kontakt_case::{Case, Outcome, run_case};
 pub mod bearing;
 pub mod bearing_demo;
 pub mod bearing_plot;
+pub mod bearing_rib;
 pub mod friction;
 pub mod impact;
 pub mod mbs;

@@ -152,10 +152,7 @@ impl FilmWarnings {
     pub fn lines(&self, regime: &FilmRegime) -> Vec<String> {
         let mut out = Vec::with_capacity(self.count());
         if self.zero_entrainment {
-            out.push(
-                "zero entrainment speed: no hydrodynamic film, boundary lubrication, h = 0"
-                    .to_string(),
-            );
+            out.push(super::line_film::ZERO_ENTRAINMENT.to_string());
         }
         if self.oblique_entrainment {
             out.push(format!(
@@ -269,29 +266,9 @@ pub fn film_thickness(
         ));
     }
     let speed = contact.entrainment_speed;
-    if !(speed.is_finite() && speed >= 0.0) {
-        return Err(Error::invalid(
-            "entrainment_speed",
-            speed,
-            "a finite mean surface speed >= 0 mm/s",
-        ));
-    }
     let load = positive_field("load", contact.load, "a finite normal force > 0 N")?;
-    let e_star = positive_field(
-        "reduced_modulus",
-        contact.reduced_modulus,
-        "a finite contact modulus E* > 0 MPa",
-    )?;
-    let eta = positive_field(
-        "viscosity",
-        viscosity,
-        "a finite dynamic viscosity > 0 MPa·s",
-    )?;
-    let alpha = positive_field(
-        "alpha",
-        alpha,
-        "a finite pressure-viscosity coefficient > 0 1/MPa",
-    )?;
+    let (e_star, eta, alpha) =
+        super::line_film::check_speed_and_oil(speed, contact.reduced_modulus, viscosity, alpha)?;
 
     let (sin, cos) = theta.sin_cos();
     let (s2, c2) = (sin * sin, cos * cos);

@@ -11,10 +11,17 @@
 //!   central film for entrainment at any angle ([`FilmFormula`]), entrainment at any angle
 //!   through the radius in the entrainment direction, the dimensionless groups (U, G, W, k,
 //!   Moes M and L, g_V and g_E) and validity warnings ([`FilmWarnings`]).
+//! * [`line_film_thickness`] (submodule `line_film`): the line contact (a roller slice) —
+//!   Dowson-Higginson minimum and Dowson-Toyoda central film, the groups per unit length,
+//!   Moes M and L, the Zhu-Cheng thermal factor and a starvation factor.
+//! * [`rolling_resistance()`] (submodule `rolling_resistance`): the hydrodynamic rolling
+//!   resistance of the line contact, Zhou & Hoeprich (1991) or Biboulet & Houpert (2010),
+//!   and the Biboulet-Houpert starvation factor.
 //!
 //! Not here: the Chittenden et al. minimum film and the regime-spanning
 //! Nijenbanning-Venner-Moes (1994) formula, whose constants could not be found in two
-//! independent sources; thermal, starvation and roughness corrections. See `docs/film.md`.
+//! independent sources; thermal, starvation and roughness corrections of the point contact
+//! (the line contact has the first two). See `docs/film.md`.
 //!
 //! Units: kinematic viscosity mm²/s (= cSt), density kg/m³, dynamic viscosity MPa·s
 //! (1 MPa·s = 10⁶ Pa·s; 1 mPa·s = 1e-9 MPa·s), pressure-viscosity coefficient 1/MPa,
@@ -22,10 +29,22 @@
 //! lengths (film thickness, roughness) in mm.
 
 mod film;
+mod line_film;
+mod rolling_resistance;
 
 pub use film::{
     CHITTENDEN_CENTRAL, FilmContact, FilmFormula, FilmRegime, FilmThickness, FilmWarnings,
     HAMROCK_DOWSON_K_RANGE, film_thickness,
+};
+pub use line_film::{
+    LINE_ELASTIC_REGIME_M, LineFilm, LineFilmContact, LineFilmFormula, LineFilmRegime,
+    LineFilmWarnings, film_starvation_factor, line_film_regime, line_film_thickness,
+    thermal_loading, viscosity_temperature_slope, zhu_cheng_thermal_factor,
+};
+pub use rolling_resistance::{
+    BIBOULET_HOUPERT_MIN_STARVATION, HERTZ_TO_CLASSICAL, RollingResistance, RollingResistanceModel,
+    biboulet_houpert_dimensionless, biboulet_houpert_moment, biboulet_houpert_starvation,
+    rolling_resistance, zhou_hoeprich_dimensionless,
 };
 
 use crate::error::{Error, Result, positive_as};
