@@ -59,14 +59,19 @@ use crate::common::{MaterialSpec, SCHEMA_VERSION, in_degrees, material};
 use crate::validity::{ContactSize, checked, checked_report};
 use kontakt::solve::{SolveStatus, Termination};
 use kontakt::{Error, Result};
-use kontakt_bearing::ball_equilibrium::BallBearingSolver;
+use kontakt_bearing::ball_equilibrium::{BallBearingSolver, BallSolution};
+use kontakt_bearing::ball_speed::{BallSpeedSolver, RaceControl};
 use kontakt_bearing::equilibrium::coupled::CoupledSliceSolver;
 use kontakt_bearing::equilibrium::{Dof, RingLoad, RollerBearingSolver, RollerSolution};
 use kontakt_bearing::geometry::{
     BallBearing, BallBearingKind, DEFAULT_SLICES, RollerBearing, RollerBearingKind,
 };
 use kontakt_bearing::profile::{Profile, TabulatedProfile};
+use kontakt_bearing::speed::RingSpeeds;
 use serde::{Deserialize, Serialize};
+
+mod speed;
+pub use speed::BearingSpeedSpec;
 
 /// The contact modulus of two steel bodies (E = 210 GPa, ν = 0.3), MPa: the default of the
 /// design-load profiles.
@@ -89,6 +94,9 @@ pub struct BearingCase {
     pub bearing: BearingSpec,
     /// The load of the inner ring.
     pub load: BearingLoadSpec,
+    /// `[speed]`: the ring speeds in r/min (default at rest), [`BearingSpeedSpec`].
+    #[serde(default)]
+    pub speed: BearingSpeedSpec,
 }
 
 /// `[bearing]`: the type (`type = "cylindrical" | "tapered" | "thrust"`) and its internal
@@ -159,6 +167,10 @@ pub struct BallSpec {
     /// safety (`docs/bearing-model.md`, "Life and static safety").
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub rating: Option<RatingSpec>,
+    /// The balls' density, kg/m³ (default steel 7850; silicon nitride about 3200, with its
+    /// `ball_material`): their centrifugal force and gyroscopic moment at speed.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ball_density_kg_m3: Option<f64>,
 }
 
 /// The internal geometry of a roller bearing. Lengths in mm, angles in degrees.
@@ -585,8 +597,9 @@ pub struct BearingReport {
     /// How the equilibrium solve ended.
     pub solver: BearingSolverEcho,
     /// The load-zone parameter ε (Sjövall 1933) from the ring displacement; absent without
-    /// a radial displacement, for thrust bearings and for ball bearings. Exact for rigid
-    /// rings without tilt.
+    /// a radial displacement and for thrust bearings. Exact for rigid rings without tilt.
+    /// Ball bearings: from the balls' approach around the ring (at speed the inner
+    /// contact's), `docs/bearing-model.md` §16.5.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub load_zone_epsilon: Option<f64>,
     /// The names of the degrees of freedom, the order of the stiffness matrix's rows and
@@ -600,6 +613,9 @@ pub struct BearingReport {
     /// Results to treat with care. Absent when none applies.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<String>,
+    /// The ring speeds `[inner, outer]`, r/min, when not at rest (`[speed]`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ring_speeds_rpm: Option<[f64; 2]>,
     /// The Hertz contacts of the most loaded ball, inner and outer raceway, or of the most
     /// loaded roller's most loaded slice on each raceway, sized for the validity check. Not
     /// in the JSON.
@@ -612,7 +628,8 @@ pub struct BearingReport {
 /// The rolling elements of a [`BearingReport`], their keys flattened into the report.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(untagged)]
-#[allow(clippy::large_enum_variant)] // one per report, moved rarely: a box buys nothing
+// a report, built once per solve: the roller part's size does not matter
+#[allow(clippy::large_enum_variant)]
 pub enum BearingElements {
     /// A roller bearing (cylindrical, tapered, thrust).
     Rollers(RollerPart),
@@ -703,6 +720,10 @@ pub struct BallPart {
     pub max_outer_pressure_mpa: f64,
     /// Per ball, in azimuth order.
     pub ball_loads: Vec<BallRow>,
+    /// At speed: the race-control assumption of the balls' kinematics and gyroscopic
+    /// moment, `"outer"` (Jones 1960; `docs/bearing-model.md` §16).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub race_control: Option<&'static str>,
 }
 
 /// One ball of the report.
@@ -710,10 +731,11 @@ pub struct BallPart {
 pub struct BallRow {
     /// Azimuth ψ from x toward y, degrees.
     pub azimuth_deg: f64,
-    /// The ball's load Q, N: the same on both raceways (no speed effects).
+    /// The ball's load Q, N: the same on both raceways at rest; at speed the inner
+    /// raceway's (`inner_load_n`), the load the ring feels.
     pub load_n: f64,
-    /// The loaded contact angle α, degrees, the same at both raceways (no speed effects;
-    /// negative: a deep groove's other shoulder). The balls carry the applied force as
+    /// The loaded contact angle α, degrees, the same at both raceways at rest (negative: a
+    /// deep groove's other shoulder); at speed the inner one (`inner_contact_angle_deg`). The balls carry the applied force as
     /// `Σ Q (cos α cos ψ, cos α sin ψ, sin α)`.
     pub contact_angle_deg: f64,
     /// The total approach of both contacts, mm (negative: lifted off by that much).
@@ -722,6 +744,20 @@ pub struct BallRow {
     pub inner_max_pressure_mpa: f64,
     /// Maximum Hertz pressure on the outer raceway, MPa.
     pub outer_max_pressure_mpa: f64,
+    /// Inner raceway load Q_i, N (at rest: `load_n`).
+    pub inner_load_n: f64,
+    /// Outer raceway load Q_o, N (at rest: `load_n`; at speed it carries the centrifugal
+    /// force too).
+    pub outer_load_n: f64,
+    /// Inner contact angle α_i, degrees (at rest: `contact_angle_deg`).
+    pub inner_contact_angle_deg: f64,
+    /// Outer contact angle α_o, degrees (at rest: `contact_angle_deg`; it falls with speed).
+    pub outer_contact_angle_deg: f64,
+    /// Centrifugal force of the ball `F_c = ½ m d_m ω_c²`, N (0 at rest).
+    pub centrifugal_force_n: f64,
+    /// Gyroscopic moment of the ball `M_g = J ω_R ω_c sin β`, N·mm (0 at rest), held by
+    /// the outer contact (outer-race control).
+    pub gyroscopic_moment_nmm: f64,
 }
 
 checked_report!(BearingReport);
@@ -913,6 +949,12 @@ pub(crate) enum Planned {
         spec: Box<BallSpec>,
         keys: GrooveKeys,
     },
+    /// A ball bearing at speed (`[speed]` not at rest).
+    BallAtSpeed {
+        solver: Box<BallSpeedSolver>,
+        spec: Box<BallSpec>,
+        keys: GrooveKeys,
+    },
 }
 
 /// Plan the solver of `case`'s bearing: errors named by the case key.
@@ -929,12 +971,20 @@ pub(crate) fn plan(case: &BearingCase) -> Result<(Planned, &'static str)> {
         BearingSpec::Tapered(s) => (RollerBearingKind::Tapered, s, "tapered"),
         BearingSpec::Thrust(s) => (RollerBearingKind::Thrust, s, "thrust"),
         BearingSpec::DeepGrooveBall(s) => {
-            return plan_ball(BallBearingKind::DeepGroove, s, "deep_groove_ball");
+            let speeds = case.speed.ring_speeds()?;
+            return plan_ball(BallBearingKind::DeepGroove, s, "deep_groove_ball", speeds);
         }
         BearingSpec::AngularContactBall(s) => {
-            return plan_ball(BallBearingKind::AngularContact, s, "angular_contact_ball");
+            let speeds = case.speed.ring_speeds()?;
+            return plan_ball(
+                BallBearingKind::AngularContact,
+                s,
+                "angular_contact_ball",
+                speeds,
+            );
         }
     };
+    case.speed.require_at_rest(label)?;
     let bearing = roller_bearing(kind, s, label)?;
     if s.slice_model == SliceModel::Coupled {
         if !s.roller_model.is_iso() {
@@ -972,6 +1022,11 @@ pub(crate) fn solve_planned(
         Planned::Coupled(solver) => roller_report(case, label, solver.as_mut(), &load, start),
         Planned::RibRoller(solver) => rib_roller_report(case, label, solver, &load, start),
         Planned::Ball { solver, spec, keys } => {
+            let solver = BallSolver::AtRest(solver);
+            ball_report(case, label, solver, spec, keys, &load, start)
+        }
+        Planned::BallAtSpeed { solver, spec, keys } => {
+            let solver = BallSolver::AtSpeed(solver);
             ball_report(case, label, solver, spec, keys, &load, start)
         }
     }
@@ -1343,6 +1398,7 @@ fn report(
             residual: 0.0,
         },
         load_zone_epsilon: None,
+        ring_speeds_rpm: None,
         stiffness_dofs: DOFS,
         stiffness_matrix: [[0.0; 5]; 5],
         stiffness_units: stiffness_units(),
@@ -1446,6 +1502,9 @@ fn ball_bearing(
     if let Some(m) = &s.ring_material {
         b.ring_material = material(m, "bearing.ring_material")?;
     }
+    if let Some(rho) = s.ball_density_kg_m3 {
+        b.ball_density_kg_m3 = rho;
+    }
     b.validate()
         .map_err(|e| map_ball_field(e, s, &keys, [f_i, f_o]))?;
     Ok((b, keys))
@@ -1506,45 +1565,96 @@ fn plan_ball(
     kind: BallBearingKind,
     s: &BallSpec,
     label: &'static str,
+    speeds: Option<RingSpeeds>,
 ) -> Result<(Planned, &'static str)> {
     let (bearing, keys) = ball_bearing(kind, s, label)?;
     let f = [bearing.inner_osculation, bearing.outer_osculation];
-    let solver = BallBearingSolver::new(bearing).map_err(|e| map_ball_field(e, s, &keys, f))?;
     let spec = Box::new(s.clone());
+    if let Some(speeds) = speeds {
+        let solver = BallSpeedSolver::new(bearing, speeds, RaceControl::Outer)
+            .map_err(|e| map_ball_field(e, s, &keys, f))?;
+        let solver = Box::new(solver);
+        return Ok((Planned::BallAtSpeed { solver, spec, keys }, label));
+    }
+    let solver = BallBearingSolver::new(bearing).map_err(|e| map_ball_field(e, s, &keys, f))?;
     Ok((Planned::Ball { solver, spec, keys }, label))
 }
 
-/// The report of a ball bearing's solve: the library's quasi-static equilibrium (Jones 1960, Harris &
-/// Kotzalas 2006) and the Hertz contacts of the most loaded ball for the validity check.
+/// A ball bearing's solver: at rest, or at speed.
+pub(crate) enum BallSolver<'a> {
+    /// The quasi-static equilibrium (§8).
+    AtRest(&'a mut BallBearingSolver),
+    /// The high-speed model (§16).
+    AtSpeed(&'a mut BallSpeedSolver),
+}
+
+/// The report of a ball bearing's solve: the library's equilibrium (Jones 1960, Harris &
+/// Kotzalas 2006; at rest or at speed) and the Hertz contacts of the most loaded ball on
+/// each raceway for the validity check.
 fn ball_report(
     case: &BearingCase,
     label: &'static str,
-    solver: &mut BallBearingSolver,
+    mut solver: BallSolver<'_>,
     s: &BallSpec,
     keys: &GrooveKeys,
     load: &RingLoad,
     start: Option<[f64; 5]>,
 ) -> Result<BearingReport> {
-    let f = {
-        let b = solver.bearing();
-        [b.inner_osculation, b.outer_osculation]
-    };
-    let sol = match start {
-        Some(u) => solver.solve_from(load, u),
-        None => solver.solve(load),
+    let sol = match (&mut solver, start) {
+        (BallSolver::AtRest(s), Some(u)) => s.solve_from(load, u),
+        (BallSolver::AtRest(s), None) => s.solve(load),
+        (BallSolver::AtSpeed(s), Some(u)) => s.solve_from(load, u),
+        (BallSolver::AtSpeed(s), None) => s.solve(load),
     }
     .map_err(map_load)?;
+    let (rows, q_max) = match &solver {
+        BallSolver::AtRest(solver) => rest_rows(solver, &sol),
+        BallSolver::AtSpeed(solver) => speed::speed_rows(solver),
+    };
+    let (b, k_n, race_control) = match &solver {
+        BallSolver::AtRest(solver) => (solver.bearing(), solver.ball_stiffness(), None),
+        BallSolver::AtSpeed(solver) => (solver.bearing(), solver.ball_stiffness(), Some("outer")),
+    };
     let mut warnings = solver_warnings(&sol.status, sol.note)?;
     // rating and the most loaded ball's contacts: the one post-solve path of the report
-    // and the sweep's rows (crate::bearing_post)
-    let post = BallPost::new(solver, s.rating.as_ref(), [keys.inner, keys.outer])?.run(
-        solver,
+    // and the sweep's rows (crate::bearing_post); the balls' loads on the inner ring (at
+    // speed the inner contact's; the outer contact's centrifugal share is not in the life
+    // yet), the contacts sized with each raceway's largest load
+    let f = [b.inner_osculation, b.outer_osculation];
+    let post = BallPost::new(b, s.rating.as_ref(), [keys.inner, keys.outer])?.run(
+        b,
         &sol,
+        rows.iter().map(|r| r.load_n),
+        q_max,
         applied_moment(load),
         &mut warnings,
         |e| map_ball_field(e, s, keys, f),
     )?;
-    let b = solver.bearing();
+    let elements = BearingElements::Balls(BallPart {
+        balls: b.balls,
+        free_contact_angle_deg: b.free_contact_angle().to_degrees(),
+        ball_stiffness_n_per_mm1_5: k_n,
+        max_ball_load_n: sol.max_ball_load_n,
+        max_inner_pressure_mpa: sol.max_pressure_mpa[0],
+        max_outer_pressure_mpa: sol.max_pressure_mpa[1],
+        ball_loads: rows,
+        race_control,
+    });
+    let mut report = report(case, label, elements, sol.displacement, sol.load);
+    report.solver = solver_echo(&sol.status);
+    report.load_zone_epsilon = sol.load_zone;
+    report.stiffness_matrix = sol.stiffness;
+    report.warnings = warnings;
+    report.contacts = post.contact_sizes();
+    report.rating = post.rating;
+    if race_control.is_some() {
+        report.ring_speeds_rpm = Some([case.speed.inner_rpm, case.speed.outer_rpm]);
+    }
+    Ok(report)
+}
+
+/// The ball rows of a quasi-static solve and the largest ball load on each raceway.
+fn rest_rows(solver: &BallBearingSolver, sol: &BallSolution) -> (Vec<BallRow>, [f64; 2]) {
     let rows: Vec<BallRow> = solver
         .ball_loads()
         .iter()
@@ -1555,22 +1665,14 @@ fn ball_report(
             approach_mm: q.approach_mm,
             inner_max_pressure_mpa: q.inner_max_pressure_mpa,
             outer_max_pressure_mpa: q.outer_max_pressure_mpa,
+            inner_load_n: q.load_n,
+            outer_load_n: q.load_n,
+            inner_contact_angle_deg: q.contact_angle_rad.to_degrees(),
+            outer_contact_angle_deg: q.contact_angle_rad.to_degrees(),
+            centrifugal_force_n: 0.0,
+            gyroscopic_moment_nmm: 0.0,
         })
         .collect();
-    let elements = BearingElements::Balls(BallPart {
-        balls: b.balls,
-        free_contact_angle_deg: b.free_contact_angle().to_degrees(),
-        ball_stiffness_n_per_mm1_5: solver.ball_stiffness(),
-        max_ball_load_n: sol.max_ball_load_n,
-        max_inner_pressure_mpa: sol.max_pressure_mpa[0],
-        max_outer_pressure_mpa: sol.max_pressure_mpa[1],
-        ball_loads: rows,
-    });
-    let mut report = report(case, label, elements, sol.displacement, sol.load);
-    report.solver = solver_echo(&sol.status);
-    report.stiffness_matrix = sol.stiffness;
-    report.warnings = warnings;
-    report.contacts = post.contact_sizes();
-    report.rating = post.rating;
-    Ok(report)
+    let q = sol.max_ball_load_n;
+    (rows, [q, q])
 }

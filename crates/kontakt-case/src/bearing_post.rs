@@ -15,10 +15,10 @@ use crate::validity::{ContactSize, Size, add_size_warnings, size_verdicts};
 use kontakt::hertz::HertzPointContact;
 use kontakt::hertz::validity::{SizeCheck, WARN_SIZE_RATIO, line_size, point_size};
 use kontakt::{Error, Result};
-use kontakt_bearing::ball_equilibrium::{BallBearingSolver, BallSolution};
+use kontakt_bearing::ball_equilibrium::BallSolution;
 use kontakt_bearing::equilibrium::{Dof, RingLoad, RollerLoad, RollerSolution};
 use kontakt_bearing::geometry::{
-    BallBearingKind, DEFAULT_SLICES, RollerBearing, RollerBearingKind,
+    BallBearing, BallBearingKind, DEFAULT_SLICES, RollerBearing, RollerBearingKind,
 };
 use kontakt_bearing::life::RatingType;
 use kontakt_bearing::roller_equilibrium::RibContactSolver;
@@ -359,12 +359,11 @@ impl BallPost {
     /// # Errors
     /// An invalid rating (named `bearing.rating.*`).
     pub(crate) fn new(
-        solver: &BallBearingSolver,
+        b: &BallBearing,
         spec: Option<&RatingSpec>,
         keys: [&'static str; 2],
     ) -> Result<Self> {
         let spec = checked_spec(spec, true)?;
-        let b = solver.bearing();
         let (kind, nominal) = match b.kind {
             BallBearingKind::DeepGroove => (RatingType::DeepGrooveBall, 0.0),
             BallBearingKind::AngularContact => (
@@ -383,42 +382,48 @@ impl BallPost {
         })
     }
 
-    /// The post of `solver`'s solution `sol` under the applied moment `moment` (N·mm): adds
-    /// the warnings to `warnings`; `field` names a geometry error by its case key. The
-    /// pressures are those of the library's Hertz contacts at the stiffness contact angle,
-    /// and so are the most loaded ball's two contacts, sized against the ball and the
-    /// groove. Allocates nothing but the texts of warnings.
+    /// The post of the solution `sol` of bearing `b` whose balls carry `loads` on the inner
+    /// ring (N, one per ball) and each raceway's most loaded contact `q_max` (N, `[inner,
+    /// outer]`), under the applied moment `moment` (N·mm): adds the warnings to `warnings`;
+    /// `field` names a geometry error by its case key. The pressures are those of the
+    /// library's Hertz contacts at the stiffness contact angle, and so are the most loaded
+    /// contacts, sized against the ball and the groove. Allocates nothing but the texts of
+    /// warnings.
     ///
     /// # Errors
     /// The rating's errors; the Hertz contacts' errors.
+    #[allow(clippy::too_many_arguments)] // the solve's parts, each once
     pub(crate) fn run(
         &mut self,
-        solver: &BallBearingSolver,
+        b: &BallBearing,
         sol: &BallSolution,
+        loads: impl Iterator<Item = f64>,
+        q_max: [f64; 2],
         moment: f64,
         warnings: &mut Vec<String>,
         field: impl Fn(Error) -> Error,
     ) -> Result<Post> {
-        let b = solver.bearing();
-        for (q, ball) in self.loads.iter_mut().zip(solver.ball_loads()) {
-            *q = ball.load_n;
+        for (q, load) in self.loads.iter_mut().zip(loads) {
+            *q = load;
         }
         let p_max = sol.max_pressure_mpa;
         let life = LifeInput::Balls(b, self.nominal, &self.loads);
         let rated = self.rater.rate(sol.load, moment, p_max, life, warnings)?;
         let mut contacts = [None; 3];
-        if sol.max_ball_load_n > 0.0 {
+        if q_max[0].max(q_max[1]) > 0.0 {
             let pair = match self.pair {
                 Some(p) => p,
                 None => b.contacts(b.stiffness_contact_angle()).map_err(field)?,
             };
             for (ring, name) in [(0, "inner"), (1, "outer")] {
-                let c = &pair[ring];
-                contacts[ring] = Some(MostLoaded {
-                    size: point_size(c.geometry(), &c.solve_force(sol.max_ball_load_n)?),
-                    at: At::Ball(name),
-                    keys: ["ball_diameter_mm", self.keys[ring]],
-                });
+                if q_max[ring] > 0.0 {
+                    let c = &pair[ring];
+                    contacts[ring] = Some(MostLoaded {
+                        size: point_size(c.geometry(), &c.solve_force(q_max[ring])?),
+                        at: At::Ball(name),
+                        keys: ["ball_diameter_mm", self.keys[ring]],
+                    });
+                }
             }
         }
         Ok(Post {

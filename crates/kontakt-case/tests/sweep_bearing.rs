@@ -491,3 +491,36 @@ fn row_warnings_are_the_reports_for_every_example_bearing() {
     }
     assert!(met(true, "contact size"), "{seen:#?}");
 }
+
+/// A sweep over the ring speed (`speed.inner_rpm`) plans the bearing again for every new
+/// `[speed]`: each row is the cold report of its case (displacement, largest load, ε), not
+/// the first case's speed (before, every row repeated the rest solution).
+#[test]
+fn a_speed_sweep_plans_each_speed() {
+    let s = sweep(
+        "bearing_7205_speed.toml",
+        "[[parameter]]\nkey = \"speed.inner_rpm\"\nvalues = [0.0, 5000.0, 12000.0, 30000.0]\n",
+    );
+    let batch = &tables(&s, 1)[0];
+    let dz = f64s(batch, "displacement_mm[2]");
+    let eps = f64s(batch, "load_zone_epsilon");
+    let text = std::fs::read_to_string(sweeps_dir().join("../bearing_7205_speed.toml")).unwrap();
+    for (i, n) in [0.0, 5000.0, 12000.0, 30000.0].iter().enumerate() {
+        let case = text.replace("inner_rpm = 15000.0", &format!("inner_rpm = {n:.1}"));
+        let Case::Bearing(c) = Case::from_toml_str(&case).unwrap() else {
+            panic!("not a bearing case")
+        };
+        let r = run_bearing_case(&c).unwrap();
+        let got = dz[i].unwrap();
+        assert!(
+            (got - r.displacement_mm[2]).abs() <= 1e-9 * r.displacement_mm[0].abs(),
+            "{n} r/min: sweep {got}, report {}",
+            r.displacement_mm[2]
+        );
+        assert!(
+            (eps[i].unwrap() - r.load_zone_epsilon.unwrap()).abs() < 1e-9,
+            "{n}"
+        );
+    }
+    assert!(eps[3].unwrap() > eps[0].unwrap());
+}

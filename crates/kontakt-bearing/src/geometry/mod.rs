@@ -19,7 +19,7 @@ mod ball;
 pub mod design;
 mod rib_study;
 
-pub use ball::{BallBearing, BallBearingKind};
+pub use ball::{BallBearing, BallBearingKind, STEEL_DENSITY_KG_M3};
 
 use crate::profile::Profile;
 use kontakt::{Error, Result};

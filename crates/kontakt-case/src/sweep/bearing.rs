@@ -6,8 +6,8 @@
 //!   numbers only) are set on the load directly: no TOML is edited or read per case.
 //! - **Other parameters** (geometry, clearance, profile, `bearing.type`, ...): when one of
 //!   them changes from one case to the next, the case is read from the edited base table
-//!   as any sweep case is; the bearing is planned again only when its `[bearing]` table
-//!   differs from the planned one.
+//!   as any sweep case is; the bearing is planned again only when its `[bearing]` or
+//!   `[speed]` table differs from the planned one.
 //! - **Warm starts**: the cases run in blocks of [`BLOCK`] consecutive cases (aligned to
 //!   case indices, so the blocks and hence the numbers do not depend on the thread count);
 //!   a block plans its bearing once and solves every case from the last converged
@@ -30,8 +30,8 @@
 use super::table::Status;
 use super::{Sweep, ValueKind};
 use crate::bearing_case::{
-    BearingCase, BearingLoadSpec, BearingSpec, Planned, map_ball_field, map_load, plan, ring_load,
-    solver_warnings,
+    BallSpec, BearingCase, BearingLoadSpec, BearingSpec, GrooveKeys, Planned, map_ball_field,
+    map_load, plan, ring_load, solver_warnings,
 };
 use crate::bearing_post::{BallPost, Post, RollerPost, applied_moment};
 use crate::bearing_slices::SliceSolver;
@@ -39,7 +39,9 @@ use crate::case::Case;
 use arrow_array::{ArrayRef, BooleanArray, Float64Array, Int64Array, StringArray};
 use kontakt::solve::SolveStatus;
 use kontakt_bearing::ball_equilibrium::{BallBearingSolver, BallSolution};
+use kontakt_bearing::ball_speed::BallSpeedSolver;
 use kontakt_bearing::equilibrium::{RingLoad, RollerSolution};
+use kontakt_bearing::geometry::BallBearing;
 use kontakt_bearing::roller_equilibrium::RibContactSolver;
 use std::ops::Range;
 use std::sync::Arc;
@@ -287,14 +289,16 @@ impl BlockModel {
             };
             RollerPost::new(b, spec).map(PostPlan::Roller)
         };
+        let ball = |b: &BallBearing, spec: &BallSpec, keys: &GrooveKeys| {
+            BallPost::new(b, spec.rating.as_ref(), [keys.inner, keys.outer])
+                .map(|p| PostPlan::Ball(Box::new(p)))
+        };
         let post = match &planned {
             Planned::Roller(s) => roller(s.bearing()),
             Planned::Coupled(s) => roller(s.bearing()),
             Planned::RibRoller(s) => roller(s.bearing()),
-            Planned::Ball { solver, spec, keys } => {
-                BallPost::new(solver, spec.rating.as_ref(), [keys.inner, keys.outer])
-                    .map(|p| PostPlan::Ball(Box::new(p)))
-            }
+            Planned::Ball { solver, spec, keys } => ball(solver.bearing(), spec, keys),
+            Planned::BallAtSpeed { solver, spec, keys } => ball(solver.bearing(), spec, keys),
         };
         Ok(BlockModel {
             case,
@@ -335,6 +339,14 @@ impl BlockModel {
                 };
                 let field = |e| map_ball_field(e, spec, keys, f);
                 element_row(solver, label, &ring, start, post, &field)
+            }
+            Planned::BallAtSpeed { solver, spec, keys } => {
+                let f = {
+                    let b = solver.bearing();
+                    [b.inner_osculation, b.outer_osculation]
+                };
+                let field = |e| map_ball_field(e, spec, keys, f);
+                element_row(solver.as_mut(), label, &ring, start, post, &field)
             }
         };
         let (out, warnings) = match solved {
@@ -563,21 +575,41 @@ impl Element for BallBearingSolver {
     warm_solve!();
 
     fn post(&self, sol: &BallSolution, a: PostArgs<'_>) -> kontakt::Result<Post> {
-        a.plan.ball()?.run(self, sol, a.moment, a.warnings, a.field)
+        let loads = self.ball_loads().iter().map(|q| q.load_n);
+        let q = sol.max_ball_load_n;
+        let b = self.bearing();
+        a.plan
+            .ball()?
+            .run(b, sol, loads, [q, q], a.moment, a.warnings, a.field)
     }
 
     fn out(&self, label: &'static str, sol: &BallSolution) -> BearingOut {
+        ball_out(label, sol, self.ball_loads().iter().map(|b| b.load_n))
+    }
+}
+
+/// A ball bearing at speed (`[speed]`, the outer raceway controlling): the balls' inner
+/// contact loads in the life, each raceway's contact sized with its own largest load, as
+/// the report.
+impl Element for BallSpeedSolver {
+    type Solution = BallSolution;
+
+    warm_solve!();
+
+    fn post(&self, sol: &BallSolution, a: PostArgs<'_>) -> kontakt::Result<Post> {
         let balls = self.ball_loads();
-        BearingOut {
-            bearing_type: label,
-            elements: balls.len(),
-            displacement: sol.displacement,
-            load: sol.load,
-            max_element_load_n: sol.max_ball_load_n,
-            loaded_elements: balls.iter().filter(|b| b.load_n > 0.0).count(),
-            stiffness: std::array::from_fn(|i| sol.stiffness[i][i]),
-            ..status_out(&sol.status)
-        }
+        let q_max = balls.iter().fold([0.0_f64; 2], |m, q| {
+            [m[0].max(q.inner_load_n), m[1].max(q.outer_load_n)]
+        });
+        let loads = balls.iter().map(|q| q.inner_load_n);
+        let b = self.bearing();
+        a.plan
+            .ball()?
+            .run(b, sol, loads, q_max, a.moment, a.warnings, a.field)
+    }
+
+    fn out(&self, label: &'static str, sol: &BallSolution) -> BearingOut {
+        ball_out(label, sol, self.ball_loads().iter().map(|b| b.inner_load_n))
     }
 }
 
@@ -767,7 +799,9 @@ impl Sweep {
             Err(e) => return Err(e.to_string()),
         };
         match previous {
-            Some(mut m) if m.case.bearing == case.bearing => {
+            // the ring speeds are part of the plan (a ball bearing at speed has its own
+            // solver): a new `[speed]` plans again, as a new `[bearing]` does
+            Some(mut m) if m.case.bearing == case.bearing && m.case.speed == case.speed => {
                 m.case = case;
                 Ok(m)
             }
@@ -842,6 +876,31 @@ pub(crate) fn bearing_columns(rows: &[BearingRow]) -> Vec<(&'static str, ArrayRe
     arrays.push(f(&|o| o.l10_mrev));
     arrays.push(f(&|o| o.l10r_mrev));
     COLUMNS.iter().map(|(name, _)| *name).zip(arrays).collect()
+}
+
+/// The row numbers of a ball bearing's solution but for the post's; `loads` are the balls'
+/// loads on the inner ring.
+fn ball_out(
+    label: &'static str,
+    sol: &BallSolution,
+    loads: impl Iterator<Item = f64>,
+) -> BearingOut {
+    let (mut elements, mut loaded) = (0, 0);
+    for q in loads {
+        elements += 1;
+        loaded += usize::from(q > 0.0);
+    }
+    BearingOut {
+        bearing_type: label,
+        elements,
+        displacement: sol.displacement,
+        load: sol.load,
+        max_element_load_n: sol.max_ball_load_n,
+        loaded_elements: loaded,
+        load_zone_epsilon: sol.load_zone,
+        stiffness: std::array::from_fn(|i| sol.stiffness[i][i]),
+        ..status_out(&sol.status)
+    }
 }
 
 #[cfg(test)]
