@@ -103,7 +103,7 @@ fn write_torque_csv(path: &Path, studies: &[DatasetComparison]) -> Result<()> {
 
 fn write_curves_csv(path: &Path, studies: &[DatasetComparison]) -> Result<()> {
     let mut w = CsvFile::create(path)?;
-    w.record(["dataset", "curve", "x_name", "x", "skf_nmm"])?;
+    w.record(["dataset", "temperature_c", "x_name", "x", "skf_nmm"])?;
     for s in studies {
         let x_name = match s.dataset.axis {
             Axis::Speed => "speed_rpm",
@@ -113,7 +113,7 @@ fn write_curves_csv(path: &Path, studies: &[DatasetComparison]) -> Result<()> {
             for &(x, y) in &c.points {
                 w.record([
                     s.dataset.id.to_string(),
-                    c.label.clone(),
+                    format!("{}", c.temperature_c),
                     x_name.to_string(),
                     format!("{x}"),
                     format!("{y:.3}"),
@@ -147,6 +147,9 @@ pub fn error_bar(x: f64, torque_nmm: f64, band_pct: f64) -> [(f64, f64); 2] {
     [(x, torque_nmm - d), (x, torque_nmm + d)]
 }
 
+/// A plotted series: label, points, colour, style.
+type Curve = (String, Vec<(f64, f64)>, (u8, u8, u8), LineStyle);
+
 /// Draw the dataset's plot: measured points with their error bars in the colour of their
 /// temperature, the SKF curve of that temperature solid. Returns false (nothing drawn)
 /// for a dataset with neither points nor curves.
@@ -157,7 +160,11 @@ fn plot(path: &Path, s: &DatasetComparison) -> Result<bool> {
         Axis::RadialLoad => r.measured.radial_load_n,
     };
     // (label, points, colour, style)
-    let mut data: Vec<(String, Vec<(f64, f64)>, (u8, u8, u8), LineStyle)> = Vec::new();
+    // Drawn in order: every error bar, then the model curves, then the markers on top, so
+    // that no bar or curve of another temperature hides a measured point.
+    let mut bars: Vec<Curve> = Vec::new();
+    let mut lines: Vec<Curve> = Vec::new();
+    let mut markers: Vec<Curve> = Vec::new();
     for (k, &t) in temps.iter().enumerate() {
         let color = PALETTE[k % PALETTE.len()];
         let rows: Vec<&ComparisonRow> = s
@@ -166,7 +173,7 @@ fn plot(path: &Path, s: &DatasetComparison) -> Result<bool> {
             .filter(|r| r.measured.temperature_c == t)
             .collect();
         if let Some(first) = rows.first() {
-            data.push((
+            markers.push((
                 format!(
                     "measured, {t} °C ({}, ±{} %)",
                     first.measured.status.name(),
@@ -179,7 +186,7 @@ fn plot(path: &Path, s: &DatasetComparison) -> Result<bool> {
                 LineStyle::Markers,
             ));
             for r in &rows {
-                data.push((
+                bars.push((
                     String::new(),
                     error_bar(x_of(r), r.measured.torque_nmm, r.measured.band_pct).to_vec(),
                     color,
@@ -188,9 +195,10 @@ fn plot(path: &Path, s: &DatasetComparison) -> Result<bool> {
             }
         }
         for c in s.skf_curves.iter().filter(|c| c.temperature_c == t) {
-            data.push((c.label.clone(), c.points.clone(), color, LineStyle::Dashed));
+            lines.push((c.label.clone(), c.points.clone(), color, LineStyle::Dashed));
         }
     }
+    let data: Vec<Curve> = bars.into_iter().chain(lines).chain(markers).collect();
     if data.is_empty() {
         return Ok(false);
     }
