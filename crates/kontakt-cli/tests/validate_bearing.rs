@@ -9,7 +9,7 @@ mod support;
 
 use std::collections::HashMap;
 use std::path::Path;
-use support::{kontakt, tempdir};
+use support::{kontakt, read_csv, tempdir};
 
 const COLUMNS: &str = "dataset,status,speed_rpm,axial_load_n,radial_load_n,temperature_c,viscosity_mm2_s,measured_nmm,band_pct,skf_nmm,skf_rolling_nmm,skf_sliding_nmm,skf_drag_nmm,skf_deviation_pct,aihara_nmm,aihara_deviation_pct,contact_nmm,contact_deviation_pct";
 
@@ -20,21 +20,6 @@ const DATASETS: [&str; 5] = [
     "wingertszahn2023_radial",
     "zhou_hoeprich1991_fig9",
 ];
-
-/// The CSV as rows of column name → cell.
-fn read_csv(path: &Path) -> Vec<HashMap<String, String>> {
-    let text = std::fs::read_to_string(path).unwrap();
-    let mut lines = text.lines();
-    let head: Vec<String> = lines.next().unwrap().split(',').map(String::from).collect();
-    lines
-        .map(|l| {
-            head.iter()
-                .cloned()
-                .zip(l.split(',').map(String::from))
-                .collect()
-        })
-        .collect()
-}
 
 fn run(dir: &Path) -> String {
     let out = kontakt()
@@ -151,10 +136,11 @@ fn marker_cover(img: &image::RgbImage, (x, y): (f64, f64), c: (u8, u8, u8)) -> u
     for dy in -2..=2 {
         for dx in -2..=2 {
             let (px, py) = (cx + dx, cy + dy);
-            if px >= 0 && py >= 0 {
-                if let Some(p) = img.get_pixel_checked(px as u32, py as u32) {
-                    n += usize::from(near(p, c, 40));
-                }
+            if px >= 0
+                && py >= 0
+                && let Some(p) = img.get_pixel_checked(px as u32, py as u32)
+            {
+                n += usize::from(near(p, c, 40));
             }
         }
     }
