@@ -252,10 +252,14 @@ pub fn parse_points(file: &str, text: &str) -> Result<Vec<MeasuredPoint>> {
 }
 
 /// The measured-torque files, compiled in (file name, text).
-pub const FILES: [(&str, &str); 5] = [
+pub const FILES: [(&str, &str); 6] = [
     (
         "manjunath2023_fig13.csv",
         include_str!("../../../validation/measured/manjunath2023_fig13.csv"),
+    ),
+    (
+        "manjunath2023_fig13_alt.csv",
+        include_str!("../../../validation/measured/manjunath2023_fig13_alt.csv"),
     ),
     (
         "wingertszahn2023_axial.csv",
@@ -293,6 +297,32 @@ pub const FVA3: Oil = Oil::Vogel {
     rho15: 887.6,
     drho_dt: -0.6,
 };
+
+/// The 40 × 68 × 19 TRB of Manjunath et al. (2023) for the SKF model.
+const SKF_32008X: SkfSetup = SkfSetup {
+    bearing: SkfBearing::TaperedRoller {
+        series: TaperedSeries::S320X,
+        y: 1.6,
+    },
+    envelope: Envelope {
+        bore_mm: 40.0,
+        outer_mm: 68.0,
+        width_mm: 19.0,
+    },
+    lubrication: Lubrication::OilJet,
+};
+
+const MANJUNATH_ASSUMPTIONS: &[&str] = &[
+    "bearing: 32008 X envelope 40 × 68 × 19 mm (the paper's 40 × 68 × 19 TRB)",
+    "SKF series row 320 X (R1 2.38e-6, R2 10.9, S1 0.014, S2 2; a single public transcription of the catalogue table)",
+    "Y = 1.6: the axial load factor of 32008 X in the SKF product table (e = 0.37), not stated in the paper",
+    "load: 12.85 kN axial, as the third-party reading states for Fig. 13 (the figure's caption could not be checked)",
+    "circulating oil (0.3 l/min) taken as the SKF 'oil jet' (K_rs = 3e-8, no drag term)",
+    "viscosity: Walther line (ASTM D341) through the paper's ν40 = 90.02 and ν100 = 10.41 mm²/s at the stated oil temperature (the bearing runs warmer: the viscosity in the contacts is lower)",
+    "mu_bl = 0.12, mu_EHL = 0.002 (SKF catalogue values for tapered roller bearings)",
+];
+
+const MANJUNATH_AIHARA: &str = "the rib contact height, the oil's pressure-viscosity coefficient and the roller geometry are not stated (Liu et al. 2022's 32008 is the same size, not proven the same bearing)";
 
 /// The 32216 of Wingertszahn et al. (2023) for the SKF model.
 const SKF_32216: SkfSetup = SkfSetup {
@@ -337,34 +367,27 @@ pub fn datasets() -> Result<Vec<Dataset>> {
             source: "Manjunath, Fauconnier, Ost & De Baets (2023), Machines 11(8):801, Fig. 13; third-party figure reading, unverified",
             axis: Axis::Speed,
             points: points("manjunath2023_fig13.csv")?,
-            skf: Some(SkfSetup {
-                bearing: SkfBearing::TaperedRoller {
-                    series: TaperedSeries::S320X,
-                    y: 1.6,
-                },
-                envelope: Envelope {
-                    bore_mm: 40.0,
-                    outer_mm: 68.0,
-                    width_mm: 19.0,
-                },
-                lubrication: Lubrication::OilJet,
-            }),
+            skf: Some(SKF_32008X),
             oil: FVA3A,
-            assumptions: &[
-                "bearing: 32008 X envelope 40 × 68 × 19 mm (the paper's 40 × 68 × 19 TRB)",
-                "SKF series row 320 X (R1 2.38e-6, R2 10.9, S1 0.014, S2 2; a single public transcription of the catalogue table)",
-                "Y = 1.6: the axial load factor of 32008 X in the SKF product table (e = 0.37), not stated in the paper",
-                "load: 12.85 kN axial, as the third-party reading states for Fig. 13 (the figure's caption could not be checked)",
-                "circulating oil (0.3 l/min) taken as the SKF 'oil jet' (K_rs = 3e-8, no drag term)",
-                "viscosity: Walther line (ASTM D341) through the paper's ν40 = 90.02 and ν100 = 10.41 mm²/s at the stated oil temperature (the bearing runs warmer: the viscosity in the contacts is lower)",
-                "mu_bl = 0.12, mu_EHL = 0.002 (SKF catalogue values for tapered roller bearings)",
-            ],
-            aihara_note: "the rib contact height, the oil's pressure-viscosity coefficient and the roller geometry are not stated (Liu et al. 2022's 32008 is the same size, not proven the same bearing)",
+            assumptions: MANJUNATH_ASSUMPTIONS,
+            aihara_note: MANJUNATH_AIHARA,
+            curves: Vec::new(),
+        },
+        Dataset {
+            id: "manjunath2023_fig13_alt",
+            title: "the same figure, a second third-party reading that disagrees with the first (up to 40 % at 1000 r/min)",
+            source: "Manjunath, Fauconnier, Ost & De Baets (2023), Machines 11(8):801, Fig. 13; a second third-party reading (\"image processing\") in the same third party's report, unverified",
+            axis: Axis::Speed,
+            points: points("manjunath2023_fig13_alt.csv")?,
+            skf: Some(SKF_32008X),
+            oil: FVA3A,
+            assumptions: MANJUNATH_ASSUMPTIONS,
+            aihara_note: MANJUNATH_AIHARA,
             curves: Vec::new(),
         },
         Dataset {
             id: "wingertszahn2023_axial",
-            title: "TRB 32216, 6 kN axial, FVA 3, oil bath at half roller height, 50 °C",
+            title: "TRB 32216, 6 kN axial, FVA 3, oil bath at half roller height, 50 and 42 °C",
             source: "Wingertszahn, Koch, Maccioni, Concli & Sauer (2023), Lubricants 11:369, Fig. 5 (Table 1); third-party figure reading, unverified",
             axis: Axis::Speed,
             points: points("wingertszahn2023_axial.csv")?,
@@ -389,7 +412,7 @@ pub fn datasets() -> Result<Vec<Dataset>> {
         Dataset {
             id: "wingertszahn2023_radial",
             title: "TRB 32216, 6.5 kN axial + 1-15 kN radial, 2000 r/min, FVA 3, oil bath, 50 °C",
-            source: "Wingertszahn, Koch, Maccioni, Concli & Sauer (2023), Lubricants 11:369, Fig. 7 (Table 3); no reading of the figure exists: no measured numbers",
+            source: "Wingertszahn, Koch, Maccioni, Concli & Sauer (2023), Lubricants 11:369, Fig. 7 (Table 3); third-party figure reading, unverified; at 1 kN radial half the pure-axial torque of Fig. 5 although the axial load is larger: the 6.5 kN 'preload' may not be an external axial load of 6.5 kN",
             axis: Axis::RadialLoad,
             points: points("wingertszahn2023_radial.csv")?,
             skf: Some(SKF_32216),
@@ -427,8 +450,8 @@ pub fn datasets() -> Result<Vec<Dataset>> {
     Ok(sets)
 }
 
-/// One model curve per (temperature, loads) group of measured points, from half the lowest
-/// measured speed to the highest.
+/// One model curve per (temperature, loads) group of measured points, each from half the
+/// dataset's lowest measured speed to its highest.
 fn speed_curves(points: &[MeasuredPoint]) -> Vec<CurveSpec> {
     let mut curves: Vec<CurveSpec> = Vec::new();
     for p in points {
@@ -449,8 +472,13 @@ fn speed_curves(points: &[MeasuredPoint]) -> Vec<CurveSpec> {
             }),
         }
     }
+    let lo = curves
+        .iter()
+        .map(|c| c.range.0)
+        .fold(f64::INFINITY, f64::min);
+    let hi = curves.iter().map(|c| c.range.1).fold(0.0, f64::max);
     for c in &mut curves {
-        c.range.0 *= 0.5;
+        c.range = (0.5 * lo, hi);
     }
     curves
 }
