@@ -360,30 +360,25 @@ pub fn datasets() -> Result<Vec<Dataset>> {
             .ok_or_else(|| Error::invalid("dataset", name, "a file of FILES"))?;
         parse_points(file, text)
     };
+    let manjunath = Dataset {
+        id: "manjunath2023_fig13",
+        title: "TRB 40×68×19 (32008 X class), 12.85 kN axial, FVA 3A, oil jet 0.3 l/min, 55 and 65 °C",
+        source: "Manjunath, Fauconnier, Ost & De Baets (2023), Machines 11(8):801, Fig. 13; third-party figure reading, unverified",
+        axis: Axis::Speed,
+        points: points("manjunath2023_fig13.csv")?,
+        skf: Some(SKF_32008X),
+        oil: FVA3A,
+        assumptions: MANJUNATH_ASSUMPTIONS,
+        aihara_note: MANJUNATH_AIHARA,
+        curves: Vec::new(),
+    };
     let mut sets = vec![
-        Dataset {
-            id: "manjunath2023_fig13",
-            title: "TRB 40×68×19 (32008 X class), 12.85 kN axial, FVA 3A, oil jet 0.3 l/min, 55 and 65 °C",
-            source: "Manjunath, Fauconnier, Ost & De Baets (2023), Machines 11(8):801, Fig. 13; third-party figure reading, unverified",
-            axis: Axis::Speed,
-            points: points("manjunath2023_fig13.csv")?,
-            skf: Some(SKF_32008X),
-            oil: FVA3A,
-            assumptions: MANJUNATH_ASSUMPTIONS,
-            aihara_note: MANJUNATH_AIHARA,
-            curves: Vec::new(),
-        },
         Dataset {
             id: "manjunath2023_fig13_alt",
             title: "the same figure, a second third-party reading that disagrees with the first (up to 40 % at 1000 r/min)",
             source: "Manjunath, Fauconnier, Ost & De Baets (2023), Machines 11(8):801, Fig. 13; a second third-party reading (\"image processing\") in the same third party's report, unverified",
-            axis: Axis::Speed,
             points: points("manjunath2023_fig13_alt.csv")?,
-            skf: Some(SKF_32008X),
-            oil: FVA3A,
-            assumptions: MANJUNATH_ASSUMPTIONS,
-            aihara_note: MANJUNATH_AIHARA,
-            curves: Vec::new(),
+            ..manjunath.clone()
         },
         Dataset {
             id: "wingertszahn2023_axial",
@@ -442,6 +437,7 @@ pub fn datasets() -> Result<Vec<Dataset>> {
             curves: Vec::new(),
         },
     ];
+    sets.insert(0, manjunath);
     for set in &mut sets {
         if set.curves.is_empty() {
             set.curves = speed_curves(&set.points);
