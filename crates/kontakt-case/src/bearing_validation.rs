@@ -644,6 +644,8 @@ pub fn compare(dataset: &Dataset) -> Result<DatasetComparison> {
             viscosity_mm2_s: nu,
             skf,
             aihara_nmm: None,
+            // The contact-based torque (issue 29 §1-2) goes here, at the same point, once
+            // that model exists; the CSV, table, report and JSON already carry the column.
             contact_nmm: None,
         });
     }
