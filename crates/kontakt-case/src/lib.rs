@@ -31,6 +31,7 @@ pub mod bearing_model;
 pub mod bearing_rating;
 pub mod bearing_rib;
 pub mod bearing_slices;
+pub mod bearing_validation;
 pub mod bem_case;
 pub mod case;
 mod common;
