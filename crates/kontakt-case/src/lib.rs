@@ -32,6 +32,7 @@ mod bearing_post;
 pub mod bearing_rating;
 pub mod bearing_rib;
 pub mod bearing_slices;
+pub mod bearing_validation;
 pub mod bem_case;
 pub mod case;
 mod common;
