@@ -3,7 +3,7 @@
 //! rating life from a given C and the ISO/TS 16281 reference life (the lamina method of
 //! roller bearings, the ball loads of ball bearings), on [`kontakt_bearing::life`]. The
 //! raceway pressures it starts from ([`kontakt_bearing::stress`]) and the call of
-//! [`rating`] after every solve, the report's and a sweep row's alike, are in
+//! `rating` after every solve, the report's and a sweep row's alike, are in
 //! `crate::bearing_post`. Loads in N, pressures in MPa, lives in millions of revolutions;
 //! `docs/bearing-model.md`, "Life and static safety".
 //!

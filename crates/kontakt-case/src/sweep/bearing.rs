@@ -20,7 +20,7 @@
 //!   status `lifted_off` with zero force and its message in `warnings`, not an error.
 //!
 //! - **After the solve** a row goes through the report's own post-solve path
-//!   ([`crate::bearing_post`], planned once per block): raceway pressures, rating
+//!   (`crate::bearing_post`, planned once per block): raceway pressures, rating
 //!   (`[bearing.rating]`) with its warnings, and the validity check of the most loaded
 //!   contacts, so that the row's warnings and refusals are the report's.
 //!
