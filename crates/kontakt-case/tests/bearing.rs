@@ -546,7 +546,10 @@ fn speed_errors_name_the_case_key() {
     let crb = example("bearing_nu_crb.toml");
     let e = err(&crb.replace("[load]", "[speed]\nouter_rpm = 100.0\n\n[load]"));
     assert_eq!(e.field(), Some("speed.outer_rpm"), "{e}");
-    assert!(e.to_string().contains("use roller_model = \"rib_contact\""), "{e}");
+    assert!(
+        e.to_string().contains("use roller_model = \"rib_contact\""),
+        "{e}"
+    );
 }
 
 // `[bearing] slice_model = "coupled"` (docs/bearing-model.md §12): the pressure along every

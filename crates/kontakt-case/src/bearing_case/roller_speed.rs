@@ -18,19 +18,19 @@ use kontakt_bearing::speed::RingSpeeds;
 /// # Errors
 /// [`Error::InvalidInput`] naming `speed.inner_rpm` or `speed.outer_rpm` for a speed out
 /// of range, for a thrust bearing or the ISO roller model at speed;
-/// `bearing.roller_density_kg_m3` unless finite, > 0 and < 1e6.
+/// `bearing.roller_density_kg_m3` unless finite, > 0 and <= 100 000 kg/m³.
 pub(super) fn ring_speeds(
     speed: &BearingSpeedSpec,
     s: &RollerSpec,
     label: &str,
 ) -> Result<Option<RingSpeeds>> {
     if let Some(rho) = s.roller_density_kg_m3
-        && !(rho.is_finite() && rho > 0.0 && rho < 1e6)
+        && !(rho.is_finite() && rho > 0.0 && rho <= 1e5)
     {
         return Err(Error::invalid(
             "bearing.roller_density_kg_m3",
             rho,
-            "a finite density > 0 and < 1e6 kg/m³ (steel 7850)",
+            "a finite density > 0 and <= 100000 kg/m³ (steel 7850)",
         ));
     }
     let Some(speeds) = speed.ring_speeds()? else {

@@ -241,7 +241,8 @@ impl RollerSet {
 pub fn frustum(large: f64, small: f64, length: f64) -> (f64, f64) {
     let sum = large * large + large * small + small * small;
     let volume = std::f64::consts::PI * length * sum / 3.0;
-    let from_large = length * (large * large + 2.0 * large * small + 3.0 * small * small) / (4.0 * sum);
+    let from_large =
+        length * (large * large + 2.0 * large * small + 3.0 * small * small) / (4.0 * sum);
     (volume, from_large)
 }
 
