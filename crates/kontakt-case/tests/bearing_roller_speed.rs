@@ -10,23 +10,11 @@
 use arrow_array::{Array, Float64Array, RecordBatch, StringArray};
 use kontakt::bearing::{RollerRib, RollerRibSpec, RollerSet, TaperedKinematics, roller_loads};
 use kontakt_case::sweep::Sweep;
-use kontakt_case::{BearingReport, Case, Outcome, run_bearing_case};
-use std::path::PathBuf;
+use kontakt_case::{Case, run_bearing_case};
 
-fn examples() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples")
-}
-
-fn run(text: &str) -> kontakt::Result<BearingReport> {
-    match Case::from_toml_str(text)?.run(&examples())? {
-        Outcome::Bearing(r) => Ok(*r),
-        _ => panic!("not a bearing outcome"),
-    }
-}
-
-fn example(name: &str) -> String {
-    std::fs::read_to_string(examples().join(name)).unwrap()
-}
+#[path = "support/bearing_examples.rs"]
+mod bearing_examples;
+use bearing_examples::{example, examples, run};
 
 /// `text` with a `[speed]` table before `[load]`.
 fn at_speed(text: &str, inner_rpm: f64, outer_rpm: f64) -> String {
