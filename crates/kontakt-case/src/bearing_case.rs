@@ -52,25 +52,20 @@
 //! methods; a solve that stagnates at the round-off floor (residual at most 1e-8 of the
 //! load, 1000 times the tolerance) is reported with a warning.
 
-use crate::bearing_rating::{
-    LifeInput, RatingReport, RatingSpec, checked_spec, rating, roller_pressures,
-};
+use crate::bearing_post::{BallPost, Post, RollerPost, applied_moment};
+use crate::bearing_rating::{RatingReport, RatingSpec};
 use crate::bearing_slices::{RollerPressures, SliceModel, SliceSolver, pressure_map};
 use crate::common::{MaterialSpec, SCHEMA_VERSION, in_degrees, material};
-use crate::validity::{ContactSize, Size, checked, checked_report};
-use kontakt::hertz::validity::point_size;
+use crate::validity::{ContactSize, checked, checked_report};
 use kontakt::solve::{SolveStatus, Termination};
 use kontakt::{Error, Result};
 use kontakt_bearing::ball_equilibrium::{BallBearingSolver, BallSolution};
 use kontakt_bearing::ball_speed::{BallSpeedSolver, RaceControl};
 use kontakt_bearing::equilibrium::coupled::CoupledSliceSolver;
-use kontakt_bearing::equilibrium::{
-    Dof, RingLoad, RollerBearingSolver, RollerLoad, RollerSolution,
-};
+use kontakt_bearing::equilibrium::{Dof, RingLoad, RollerBearingSolver, RollerSolution};
 use kontakt_bearing::geometry::{
     BallBearing, BallBearingKind, DEFAULT_SLICES, RollerBearing, RollerBearingKind,
 };
-use kontakt_bearing::life::RatingType;
 use kontakt_bearing::profile::{Profile, TabulatedProfile};
 use kontakt_bearing::speed::RingSpeeds;
 use serde::{Deserialize, Serialize};
@@ -1065,21 +1060,11 @@ fn roller_report<S: SliceSolver>(
     let width = b.effective_length_mm / ns as f64;
     let loads = solver.slice_loads();
     let approaches = solver.slice_approaches();
-    let most = most_loaded(solver.roller_loads());
-    // Hertz line contacts of the independent slices (and the most loaded slice's contact
-    // for the validity check); a model with its own slice pressures (coupled slices)
-    // reports those instead.
-    let mut pressures = roller_pressures(b, solver.roller_loads(), loads, most)?;
-    if let Some((inner, outer)) = solver.slice_pressures() {
-        let peak = |p: &[f64]| p.iter().copied().fold(0.0, f64::max);
-        pressures.per_roller = inner
-            .chunks_exact(ns)
-            .zip(outer.chunks_exact(ns))
-            .map(|(i, o)| [peak(i), peak(o)])
-            .collect();
-        pressures.most_inner = inner[most * ns..(most + 1) * ns].to_vec();
-        pressures.most_outer = outer[most * ns..(most + 1) * ns].to_vec();
-    }
+    let moment = applied_moment(load);
+    let (post, warnings, mut pressures) = roller_post(case, b, &sol, |p, w, each| {
+        p.run(&*solver, &sol, moment, w, each)
+    })?;
+    let most = pressures.most;
     let mut rows = Vec::with_capacity(b.rollers);
     for (j, r) in solver.roller_loads().iter().enumerate() {
         let slice_max = loads[j * ns..(j + 1) * ns]
@@ -1124,20 +1109,66 @@ fn roller_report<S: SliceSolver>(
         most_loaded,
         slice_loads: loads,
         pressure_map: map,
-        pressures,
     };
-    roller_part_report(case, label, b, &sol, load, parts, solver.roller_loads())
+    Ok(roller_part_report(
+        case, label, b, &sol, parts, post, warnings,
+    ))
 }
 
-/// The index of the roller with the largest outer raceway load (the first of equals).
-fn most_loaded(rollers: &[RollerLoad]) -> usize {
-    (0..rollers.len()).fold(0, |m, j| {
-        if rollers[j].outer_n > rollers[m].outer_n {
-            j
-        } else {
-            m
+/// The rating spec of a roller bearing case (`[bearing.rating]`).
+pub(crate) fn roller_rating(case: &BearingCase) -> Option<&crate::bearing_rating::RatingSpec> {
+    match &case.bearing {
+        BearingSpec::Cylindrical(s) | BearingSpec::Tapered(s) | BearingSpec::Thrust(s) => {
+            s.rating.as_ref()
         }
-    })
+        _ => None,
+    }
+}
+
+/// The pressures, rating and most loaded contacts of a roller model's solve `sol`: the
+/// solver's warnings, then `run` ([`RollerPost::run`] or [`RollerPost::run_rib`]), the one
+/// post-solve path of the report and the sweep's rows ([`crate::bearing_post`]), with the
+/// pressures collected for the report.
+fn roller_post(
+    case: &BearingCase,
+    b: &RollerBearing,
+    sol: &RollerSolution,
+    run: impl FnOnce(
+        &mut RollerPost,
+        &mut Vec<String>,
+        &mut dyn FnMut(usize, [f64; 2], &[f64], &[f64], bool),
+    ) -> Result<Post>,
+) -> Result<(Post, Vec<String>, Pressures)> {
+    let mut warnings = solver_warnings(&sol.status, sol.note)?;
+    let mut pressures = Pressures::default();
+    let mut post = RollerPost::new(b, roller_rating(case))?;
+    let post = run(
+        &mut post,
+        &mut warnings,
+        &mut |j, peaks, inner, outer, most| pressures.add(j, peaks, inner, outer, most),
+    )?;
+    Ok((post, warnings, pressures))
+}
+
+/// The slice pressures the post gives a report: per roller `[inner, outer]` maxima and
+/// the slices of the most loaded roller, MPa.
+#[derive(Default)]
+struct Pressures {
+    per_roller: Vec<[f64; 2]>,
+    most: usize,
+    most_inner: Vec<f64>,
+    most_outer: Vec<f64>,
+}
+
+impl Pressures {
+    fn add(&mut self, j: usize, peaks: [f64; 2], inner: &[f64], outer: &[f64], most: bool) {
+        self.per_roller.push(peaks);
+        if most {
+            self.most = j;
+            self.most_inner = inner.to_vec();
+            self.most_outer = outer.to_vec();
+        }
+    }
 }
 
 /// What a roller model's solve gives the shared part of its report.
@@ -1147,7 +1178,6 @@ struct RollerParts<'a> {
     /// The outer raceway's slice loads, roller-major, N.
     slice_loads: &'a [f64],
     pressure_map: Option<Box<RollerPressures>>,
-    pressures: crate::bearing_rating::RollerPressures,
 }
 
 /// The report of a roller bearing from its solution, its rows and the slices of its most
@@ -1158,46 +1188,11 @@ fn roller_part_report(
     label: &'static str,
     b: &RollerBearing,
     sol: &RollerSolution,
-    load: &RingLoad,
     parts: RollerParts<'_>,
-    rollers: &[RollerLoad],
-) -> Result<BearingReport> {
-    let mut warnings = solver_warnings(&sol.status, sol.note)?;
-    warnings.extend(coarse_slices_warning(b.slices));
-    let spec = match &case.bearing {
-        BearingSpec::Cylindrical(s) | BearingSpec::Tapered(s) | BearingSpec::Thrust(s) => {
-            s.rating.as_ref()
-        }
-        _ => None,
-    };
-    let spec = checked_spec(spec, false)?;
-    let p_max = parts
-        .pressures
-        .per_roller
-        .iter()
-        .fold([0.0_f64; 2], |m, p| [m[0].max(p[0]), m[1].max(p[1])]);
-    let kind = match b.kind {
-        RollerBearingKind::Cylindrical => RatingType::Cylindrical,
-        RollerBearingKind::Thrust => RatingType::Thrust,
-        RollerBearingKind::Tapered => RatingType::Tapered {
-            contact_angle_rad: b.contact_angle_rad,
-        },
-    };
-    let r_most = rollers[parts.most_loaded.roller];
-    let inner_ratio = if r_most.outer_n > 0.0 {
-        r_most.inner_n / r_most.outer_n
-    } else {
-        1.0
-    };
-    let rated = rating(
-        kind,
-        &spec,
-        sol.load,
-        applied_moment(load),
-        p_max[0].max(p_max[1]),
-        LifeInput::Rollers(b, parts.slice_loads, inner_ratio),
-        &mut warnings,
-    )?;
+    post: Post,
+    warnings: Vec<String>,
+) -> BearingReport {
+    let p_max = post.max_pressure_mpa;
     let ns = b.slices;
     let width = b.effective_length_mm / ns as f64;
     let elements = BearingElements::Rollers(RollerPart {
@@ -1232,28 +1227,9 @@ fn roller_part_report(
     report.load_zone_epsilon = sol.load_zone;
     report.stiffness_matrix = sol.stiffness;
     report.warnings = warnings;
-    report.contacts = parts.pressures.contacts;
-    report.rating = rated;
-    Ok(report)
-}
-
-/// The warning of a roller bearing with fewer slices than the default (a property of the
-/// bearing, the same for every load).
-pub(crate) fn coarse_slices_warning(slices: usize) -> Option<String> {
-    (slices < DEFAULT_SLICES).then(|| {
-        format!(
-            "{slices} slices per roller: fewer than the recommended {DEFAULT_SLICES}, the roller loads are coarse (docs/bearing-model.md §6)"
-        )
-    })
-}
-
-/// The magnitude of the applied (force-controlled) moment, N·mm.
-fn applied_moment(load: &RingLoad) -> f64 {
-    let m = |d: Dof| match d {
-        Dof::Force(v) => v,
-        Dof::Displacement(_) => 0.0,
-    };
-    m(load.dofs[3]).hypot(m(load.dofs[4]))
+    report.contacts = post.contact_sizes();
+    report.rating = post.rating;
+    report
 }
 
 /// The report of a rib-contact solve: the ISO report's keys (cup load as `outer_load_n`,
@@ -1278,20 +1254,12 @@ fn rib_roller_report(
     let ns = b.slices;
     let width = b.effective_length_mm / ns as f64;
     let (cup, cone) = (solver.cup_slice_loads(), solver.cone_slice_loads());
-    // the raceway loads of every roller as the shared report part reads them
-    let ring: Vec<RollerLoad> = solver
-        .roller_loads()
-        .iter()
-        .map(|r| RollerLoad {
-            azimuth_rad: r.azimuth_rad,
-            outer_n: r.outer_n,
-            inner_n: r.inner_n,
-            rib_n: r.rib_n,
-            max_approach_mm: r.max_approach_mm,
-        })
-        .collect();
-    let most = most_loaded(&ring);
-    let mut pressures = roller_pressures(b, &ring, cup, most)?;
+    // the rib contact's size check included
+    let moment = applied_moment(load);
+    let (post, warnings, mut pressures) = roller_post(case, b, &sol, |p, w, each| {
+        p.run_rib(solver, &sol, moment, w, each)
+    })?;
+    let most = pressures.most;
     let mut rows = Vec::with_capacity(b.rollers);
     for (j, r) in solver.roller_loads().iter().enumerate() {
         let slice_max = cup[j * ns..(j + 1) * ns]
@@ -1331,22 +1299,8 @@ fn rib_roller_report(
         most_loaded,
         slice_loads: cup,
         pressure_map: None,
-        pressures,
     };
-    let mut report = roller_part_report(case, label, b, &sol, load, parts, &ring)?;
-    // the most loaded rib contact, sized against the face's and the rib's radii
-    let rib_max = solver.max_rib_load_n();
-    if rib_max > 0.0 {
-        let hertz = solver.rib_hertz();
-        let hs = hertz.solve_force(rib_max)?;
-        report.contacts.push(
-            ContactSize::new(
-                Size::Hertz(point_size(hertz.geometry(), &hs)),
-                ["bearing.rib_contact.face", "bearing.rib_contact.rib"],
-            )
-            .at("the most loaded roller's rib contact"),
-        );
-    }
+    let mut report = roller_part_report(case, label, b, &sol, parts, post, warnings);
     roller_speed::report_speed(&case.speed, solver, &mut report);
     if let BearingElements::Rollers(p) = &mut report.elements {
         p.roller_model = Some("rib_contact");
@@ -1571,7 +1525,7 @@ fn ball_bearing(
 
 /// The library's field names of [`BallBearing`] as the case file's keys, in the units the
 /// file gives them (degrees, a groove radius in mm).
-fn map_ball_field(e: Error, s: &BallSpec, keys: &GrooveKeys, f: [f64; 2]) -> Error {
+pub(crate) fn map_ball_field(e: Error, s: &BallSpec, keys: &GrooveKeys, f: [f64; 2]) -> Error {
     let d = s.ball_diameter_mm;
     // a groove typed as a radius: its value and range in mm
     let e = match e {
@@ -1675,25 +1629,20 @@ fn ball_report(
         BallSolver::AtSpeed(solver) => (solver.bearing(), solver.ball_stiffness(), Some("outer")),
     };
     let mut warnings = solver_warnings(&sol.status, sol.note)?;
-    let spec = checked_spec(s.rating.as_ref(), true)?;
-    let kind = match b.kind {
-        BallBearingKind::DeepGroove => RatingType::DeepGrooveBall,
-        BallBearingKind::AngularContact => RatingType::AngularContactBall {
-            contact_angle_rad: b.contact_angle_rad,
-        },
-    };
-    let p_max = sol.max_pressure_mpa[0].max(sol.max_pressure_mpa[1]);
-    let moment = applied_moment(load);
-    let nominal = match b.kind {
-        BallBearingKind::DeepGroove => 0.0,
-        BallBearingKind::AngularContact => b.contact_angle_rad,
-    };
-    // the balls' loads on the inner ring (at speed the inner contact's; the outer
-    // contact's centrifugal share is not in the life yet)
-    let q: Vec<f64> = rows.iter().map(|r| r.load_n).collect();
-    let life = LifeInput::Balls(b, nominal, &q);
-    let rated = rating(kind, &spec, sol.load, moment, p_max, life, &mut warnings)?;
-    let contacts = ball_contacts(b, s, keys, q_max)?;
+    // rating and the most loaded ball's contacts: the one post-solve path of the report
+    // and the sweep's rows (crate::bearing_post); the balls' loads on the inner ring (at
+    // speed the inner contact's; the outer contact's centrifugal share is not in the life
+    // yet), the contacts sized with each raceway's largest load
+    let f = [b.inner_osculation, b.outer_osculation];
+    let post = BallPost::new(b, s.rating.as_ref(), [keys.inner, keys.outer])?.run(
+        b,
+        &sol,
+        rows.iter().map(|r| r.load_n),
+        q_max,
+        applied_moment(load),
+        &mut warnings,
+        |e| map_ball_field(e, s, keys, f),
+    )?;
     let elements = BearingElements::Balls(BallPart {
         balls: b.balls,
         free_contact_angle_deg: b.free_contact_angle().to_degrees(),
@@ -1709,8 +1658,8 @@ fn ball_report(
     report.load_zone_epsilon = sol.load_zone;
     report.stiffness_matrix = sol.stiffness;
     report.warnings = warnings;
-    report.contacts = contacts;
-    report.rating = rated;
+    report.contacts = post.contact_sizes();
+    report.rating = post.rating;
     if race_control.is_some() {
         report.ring_speeds_rpm = Some([case.speed.inner_rpm, case.speed.outer_rpm]);
     }
@@ -1739,41 +1688,4 @@ fn rest_rows(solver: &BallBearingSolver, sol: &BallSolution) -> (Vec<BallRow>, [
         .collect();
     let q = sol.max_ball_load_n;
     (rows, [q, q])
-}
-
-/// The Hertz contacts of the most loaded ball on the inner and on the outer raceway
-/// (`loads`, N), sized for the validity check against the ball and the groove. The
-/// pressures are those of the library's Hertz contacts at the stiffness contact angle.
-fn ball_contacts(
-    b: &BallBearing,
-    s: &BallSpec,
-    keys: &GrooveKeys,
-    loads: [f64; 2],
-) -> Result<Vec<ContactSize>> {
-    let mut contacts = Vec::new();
-    if loads[0].max(loads[1]) > 0.0 {
-        let f = [b.inner_osculation, b.outer_osculation];
-        let pair = b
-            .contacts(b.stiffness_contact_angle())
-            .map_err(|e| map_ball_field(e, s, keys, f))?;
-        for ((c, ring, key), q) in [
-            (&pair[0], "inner", keys.inner),
-            (&pair[1], "outer", keys.outer),
-        ]
-        .into_iter()
-        .zip(loads)
-        {
-            if q > 0.0 {
-                let hs = c.solve_force(q)?;
-                contacts.push(
-                    ContactSize::new(
-                        Size::Hertz(point_size(c.geometry(), &hs)),
-                        ["bearing.ball_diameter_mm", &format!("bearing.{key}")],
-                    )
-                    .at(format!("the most loaded ball on the {ring} raceway")),
-                );
-            }
-        }
-    }
-    Ok(contacts)
 }

@@ -28,9 +28,11 @@
 pub mod bearing_case;
 pub mod bearing_design;
 pub mod bearing_model;
+mod bearing_post;
 pub mod bearing_rating;
 pub mod bearing_rib;
 pub mod bearing_slices;
+pub mod bearing_validation;
 pub mod bem_case;
 pub mod case;
 mod common;
