@@ -44,6 +44,7 @@ pub mod load_zone;
 mod newton;
 pub mod profile;
 pub mod roller_equilibrium;
+pub mod roller_speed;
 pub mod speed;
 pub mod stress;
 #[cfg(test)]

@@ -70,6 +70,7 @@ use kontakt_bearing::profile::{Profile, TabulatedProfile};
 use kontakt_bearing::speed::RingSpeeds;
 use serde::{Deserialize, Serialize};
 
+mod roller_speed;
 mod speed;
 pub use speed::BearingSpeedSpec;
 
@@ -239,6 +240,10 @@ pub struct RollerSpec {
     /// With `roller_model = "rib_contact"`: the roller end/rib pair.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub rib_contact: Option<crate::bearing_rib::RibContactSpec>,
+    /// The rollers' density, kg/m³ (default steel 7850): their centrifugal force at speed
+    /// (`roller_model = "rib_contact"`, `docs/bearing-model.md` §15.7).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub roller_density_kg_m3: Option<f64>,
 }
 
 fn default_slices() -> usize {
@@ -526,6 +531,10 @@ pub struct RollerRow {
     /// N (`rib_load_n` is then the inner ring's).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub outer_rib_load_n: Option<f64>,
+    /// `roller_model = "rib_contact"` at speed only: the roller's centrifugal force
+    /// `F_c = m ω_c² r_c`, N (`docs/bearing-model.md` §15.7).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub centrifugal_force_n: Option<f64>,
 }
 
 /// The slices of the most loaded roller.
@@ -984,7 +993,7 @@ pub(crate) fn plan(case: &BearingCase) -> Result<(Planned, &'static str)> {
             );
         }
     };
-    case.speed.require_at_rest(label)?;
+    let speeds = roller_speed::ring_speeds(&case.speed, s, label)?;
     let bearing = roller_bearing(kind, s, label)?;
     if s.slice_model == SliceModel::Coupled {
         if !s.roller_model.is_iso() {
@@ -998,9 +1007,10 @@ pub(crate) fn plan(case: &BearingCase) -> Result<(Planned, &'static str)> {
         return Ok((Planned::Coupled(Box::new(solver)), label));
     }
     let rib = s.rib_contact.as_ref();
-    if let Some(solver) =
+    if let Some(mut solver) =
         crate::bearing_rib::plan_rib(s.roller_model, rib, s.rib_angle_deg, label, &bearing)?
     {
+        roller_speed::set_centrifugal(&mut solver, s, speeds)?;
         return Ok((Planned::RibRoller(Box::new(solver)), label));
     }
     let solver = RollerBearingSolver::new(bearing).map_err(map_bearing_field)?;
@@ -1074,6 +1084,7 @@ fn roller_report<S: SliceSolver>(
             rib_max_pressure_mpa: None,
             skew_moment_nmm: None,
             outer_rib_load_n: None,
+            centrifugal_force_n: None,
         });
     }
     let slice_loads = loads[most * ns..(most + 1) * ns].to_vec();
@@ -1268,6 +1279,7 @@ fn rib_roller_report(
             rib_max_pressure_mpa: Some(r.rib_max_pressure_mpa),
             skew_moment_nmm: Some(r.skew_moment_nmm),
             outer_rib_load_n: solver.arrangement().map(|_| r.outer_rib_n),
+            centrifugal_force_n: None,
         });
     }
     let range = most * ns..(most + 1) * ns;
@@ -1289,6 +1301,7 @@ fn rib_roller_report(
         pressure_map: None,
     };
     let mut report = roller_part_report(case, label, b, &sol, parts, post, warnings);
+    roller_speed::report_speed(&case.speed, solver, &mut report);
     if let BearingElements::Rollers(p) = &mut report.elements {
         p.roller_model = Some("rib_contact");
         p.max_rib_pressure_mpa = Some(solver.max_rib_pressure_mpa());

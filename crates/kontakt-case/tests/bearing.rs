@@ -4,26 +4,11 @@
 #![allow(clippy::unwrap_used)] // tests: a panic is a failure with its message
 
 use kontakt_case::bearing_case::BearingLoadSpec;
-use kontakt_case::{BearingCase, BearingModel, BearingReport, Case, Outcome};
-use std::path::PathBuf;
+use kontakt_case::{BearingCase, BearingModel};
 
-fn examples() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples")
-}
-
-fn run(text: &str) -> kontakt::Result<BearingReport> {
-    match Case::from_toml_str(text)?.run(&examples())? {
-        Outcome::Bearing(r) => Ok(*r),
-        other => panic!(
-            "not a bearing outcome: {}",
-            serde_json::to_string(&other).unwrap()
-        ),
-    }
-}
-
-fn example(name: &str) -> String {
-    std::fs::read_to_string(examples().join(name)).unwrap()
-}
+#[path = "support/bearing_examples.rs"]
+mod bearing_examples;
+use bearing_examples::{example, examples, run};
 
 const EXAMPLES: [&str; 5] = [
     "bearing_nu_crb.toml",
@@ -546,7 +531,10 @@ fn speed_errors_name_the_case_key() {
     let crb = example("bearing_nu_crb.toml");
     let e = err(&crb.replace("[load]", "[speed]\nouter_rpm = 100.0\n\n[load]"));
     assert_eq!(e.field(), Some("speed.outer_rpm"), "{e}");
-    assert!(e.to_string().contains("ball bearings only"), "{e}");
+    assert!(
+        e.to_string().contains("use roller_model = \"rib_contact\""),
+        "{e}"
+    );
 }
 
 // `[bearing] slice_model = "coupled"` (docs/bearing-model.md §12): the pressure along every

@@ -9,7 +9,8 @@
 //! ```
 //!
 //! The library takes rad/s ([`RingSpeeds`]); the case speaks r/min, as the friction
-//! case's `[speed]` does. Roller bearings take no speed yet (an error names the key).
+//! case's `[speed]` does. Roller bearings take a speed with `roller_model = "rib_contact"`
+//! (`roller_speed.rs`, `docs/bearing-model.md` §15.7); otherwise an error names the key.
 
 use super::BallRow;
 use kontakt::{Error, Result};
@@ -60,25 +61,6 @@ impl BearingSpeedSpec {
             }
         }
         Ok((!self.at_rest()).then(|| RingSpeeds::from_rpm(self.inner_rpm, self.outer_rpm)))
-    }
-
-    /// Refuse a speed for a bearing type without speed effects.
-    pub(crate) fn require_at_rest(&self, label: &str) -> Result<()> {
-        for (key, v) in [
-            ("speed.inner_rpm", self.inner_rpm),
-            ("speed.outer_rpm", self.outer_rpm),
-        ] {
-            if v != 0.0 {
-                return Err(Error::invalid(
-                    key,
-                    v,
-                    format!(
-                        "0 for type = \"{label}\": the speed effects (centrifugal force, gyroscopic moment) are modelled for ball bearings only"
-                    ),
-                ));
-            }
-        }
-        Ok(())
     }
 }
 
