@@ -1096,6 +1096,16 @@ impl RibContactSolver {
     /// checked against the rib arrangement first and left out of the ISO check (returned
     /// load).
     fn check_load(&self, load: &RingLoad) -> Result<RingLoad> {
+        // At speed the centrifugal force presses every roller onto the outer ring (and a
+        // tapered one against the rib): with nothing applied the inner ring is not held
+        // (no equilibrium, Newton would run to its limit).
+        if self.centrifugal_n() > 0.0 && load.dofs.iter().all(|d| *d == Dof::Force(0.0)) {
+            return Err(Error::invalid(
+                "load.fz_n",
+                0.0,
+                "a load at speed: the centrifugal force presses every roller onto the outer ring, and with no force, moment or prescribed displacement the inner ring has no equilibrium",
+            ));
+        }
         let mut radial = *load;
         if let Some(arrangement) = self.arrangement {
             crate::equilibrium::check_finite(load)?;
