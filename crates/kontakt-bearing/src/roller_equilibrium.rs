@@ -685,7 +685,13 @@ impl RibContactSolver {
             ));
         };
         let gap = pair.gap()?;
-        let table = tabulate(model, &gap, self.ribs[0].p0, range)?;
+        // the roller's line contact at pressure p: Q = π L (D/2) p² / E* (Hertz 1881)
+        let b = self.iso.bearing();
+        let (l, r) = (b.effective_length_mm, 0.5 * b.roller_diameter_mm);
+        let steel = ElasticMaterial::STEEL;
+        let e_star = kontakt::material::effective_modulus(&steel, &steel);
+        let limit = move |p: f64| PI * l * r * p * p / e_star;
+        let table = tabulate(model, &gap, self.ribs[0].p0, &limit, range)?;
         for rib in &mut self.ribs {
             rib.law = RibLaw::Table(Box::new(table.clone()));
         }

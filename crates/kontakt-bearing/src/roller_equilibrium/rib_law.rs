@@ -53,9 +53,13 @@ impl RibModel {
     }
 }
 
-/// The load range and knot count of a tabulated rib law, given as Hertz pressures of the
-/// rib contact (so that it fits any pair): the knots lie at the loads where Hertz's
-/// maximum pressure is `min_pressure_mpa` ... `max_pressure_mpa`, geometrically spaced.
+/// The load range and knot count of a tabulated rib law, given as pressures (so that it
+/// fits any pair and bearing): the first knot lies at the load where the rib contact's
+/// Hertz pressure is `min_pressure_mpa`, the last at the smaller of the load where it is
+/// `max_pressure_mpa` and the load at which the roller's line contact (length `L_we`,
+/// radius `D_we/2`, steel) reaches `max_pressure_mpa` — a rib carries a fraction of its
+/// roller's load, and on a conformal pair Hertz's pressure would put the last knot at
+/// loads no rib sees; the knots between are spaced geometrically in load.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct RibTableRange {
     /// Hertz pressure of the first knot, MPa (> 0; default 100).
@@ -251,7 +255,8 @@ impl RibTable {
 }
 
 /// Solve `gap` by `model` at the knots of `range` (Hertz pressures through `p0`, the Hertz
-/// pressure at 1 N in MPa) and tabulate. Knots where the solver fails (a zone beyond the
+/// pressure at 1 N in MPa; `line_load_limit(p)` the roller's load at the line-contact
+/// pressure p, N) and tabulate. Knots where the solver fails (a zone beyond the
 /// face's edge at the largest loads) end the table there; at least 4 must remain.
 ///
 /// # Errors
@@ -262,6 +267,7 @@ pub fn tabulate(
     model: RibModel,
     gap: &dyn GapSource,
     p0: f64,
+    line_load_limit: &dyn Fn(f64) -> f64,
     range: &RibTableRange,
 ) -> Result<RibTable> {
     range.validate()?;
@@ -292,7 +298,18 @@ pub fn tabulate(
     };
     let n = range.knots;
     let q_lo = (range.min_pressure_mpa / p0).powi(3);
-    let q_hi = (range.max_pressure_mpa / p0).powi(3);
+    let q_hi = (range.max_pressure_mpa / p0)
+        .powi(3)
+        .min(line_load_limit(range.max_pressure_mpa));
+    if !(q_hi > q_lo) {
+        return Err(Error::invalid(
+            "rib_table.max_pressure_mpa",
+            range.max_pressure_mpa,
+            format!(
+                "a pressure whose roller line-contact load ({q_hi:.4} N) exceeds the rib's load at min_pressure_mpa ({q_lo:.4} N)"
+            ),
+        ));
+    }
     let mut knots = Vec::with_capacity(n);
     let mut first_error = None;
     for k in 0..n {
