@@ -431,6 +431,44 @@ mod tests {
         }
     }
 
+    /// The bench's TRB with the torus-cone-28 pairing (far from Hertz) and the PimP law:
+    /// the condensed stiffness matches central differences of the solved load (the
+    /// table's derivative is that of its force), at a combined load with a ring tilt.
+    #[test]
+    fn pimp_condensed_stiffness_matches_central_differences() {
+        use crate::equilibrium::RingLoad;
+        use crate::roller_equilibrium::{RibContact, RibContactSolver};
+        let mut b = crate::geometry::RollerBearing::tapered(
+            108.5,
+            20,
+            17.0,
+            20.7,
+            16.0_f64.to_radians(),
+            11.7_f64.to_radians(),
+        );
+        b.slices = 31;
+        let spec = kontakt::bearing::RollerRibSpec::builtin("torus-cone-28").unwrap();
+        let rc = RibContact {
+            face: spec.face,
+            rib: spec.rib,
+            contact_height_mm: spec.contact_height,
+        };
+        let mut s = RibContactSolver::new(b, rc).unwrap();
+        s.set_rib_model(RibModel::Pimp, &RibTableRange::default())
+            .unwrap();
+        let sol = s
+            .solve(&RingLoad::forces([20_000.0, 5_000.0, 12_000.0, 0.0, 0.0]).with_tilts_held())
+            .unwrap();
+        assert!(sol.status.converged(), "{:?}", sol.status);
+        let mut u = sol.displacement;
+        u[3] = 2e-5;
+        u[4] = -1e-5;
+        crate::test_support::assert_stiffness_matches_central_differences(
+            |u| s.load_at(u).unwrap(),
+            u,
+        );
+    }
+
     #[test]
     fn bad_tables_are_named() {
         let e = RibTable::from_knots(&[(1e-4, 1.0, 1.0), (2e-4, 2.0, 1.0)]).unwrap_err();
