@@ -214,12 +214,15 @@ fn torus_cone_pairing_pimp_follows_the_half_space_balance_and_hertz_does_not() {
 #[test]
 fn the_pimp_balance_is_in_equilibrium_and_switches_back() {
     let (mut s, p) = solved(RibModel::Pimp, &RibTableRange::default());
+    let mut worst = 0.0_f64;
     for (j, r) in p.iter().enumerate() {
         let [fr, fz, m] = s.roller_balance(j);
         let scale = r.outer_n.max(r.rib_n);
+        worst = worst.max(fr.abs().max(fz.abs()).max(m.abs() / 16.0) / scale);
         assert!(fr.abs().max(fz.abs()) < 1e-9 * scale, "roller {j}: {fr} {fz}");
         assert!(m.abs() < 1e-9 * scale * 16.0, "roller {j}: {m}");
     }
+    println!("PimP balance: worst roller residual {worst:.2e} of its load");
     s.set_rib_model(RibModel::Hertz, &RibTableRange::default())
         .unwrap();
     assert!(s.rib_table().is_none());
