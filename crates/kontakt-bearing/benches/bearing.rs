@@ -123,7 +123,10 @@ fn bench_bearing(c: &mut Criterion) {
     group.bench_function("trb_rib_pimp_20x31_warm_1pc", |b| {
         b.iter(|| {
             let s = pimp_solver
-                .solve_from(black_box(&loads[pimp_turn]), black_box(pimp_starts[pimp_turn]))
+                .solve_from(
+                    black_box(&loads[pimp_turn]),
+                    black_box(pimp_starts[pimp_turn]),
+                )
                 .expect("solve");
             pimp_turn = 1 - pimp_turn;
             s

@@ -73,8 +73,8 @@ use nalgebra::{Matrix3, Matrix5, Matrix5x3, Vector2, Vector3, Vector5};
 use std::f64::consts::PI;
 
 mod rib_law;
-pub use rib_law::{RibModel, RibTable, RibTableRange, tabulate};
 use rib_law::RibLaw;
+pub use rib_law::{RibModel, RibTable, RibTableRange, tabulate};
 
 /// The roller-end/rib pair of a tapered roller bearing, in the vocabulary of the rib study
 /// (`kontakt::bearing::roller_rib`, Wirsching et al. 2020): the roller's large-end face, the

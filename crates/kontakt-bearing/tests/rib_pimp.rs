@@ -2,6 +2,8 @@
 //! al. 2020), with kontakt's FFT half-space solver as the accuracy reference
 //! (docs/bearing-model.md §15.7, docs/VALIDATION.md).
 
+#![allow(clippy::unwrap_used)] // tests: a panic is a failure with its message
+
 use kontakt::bearing::{FaceShape, RibShape};
 use kontakt::halfspace::{Bem, BemOptions};
 use kontakt::material::ElasticMaterial;
@@ -124,7 +126,11 @@ fn against_half_space(rc: RibContact, label: &str) -> ([f64; 4], f64) {
         let mut s = RibContactSolver::new(rib_study_bearing(), rc).unwrap();
         s.set_rib_model(model, range).unwrap();
         let sol = s.solve(&combined()).unwrap();
-        assert!(sol.status.converged(), "{label} {model:?}: {:?}", sol.status);
+        assert!(
+            sol.status.converged(),
+            "{label} {model:?}: {:?}",
+            sol.status
+        );
         let rollers = s.roller_loads().to_vec();
         (s, rollers)
     };
@@ -189,7 +195,10 @@ fn rib_study_pairing_hertz_and_pimp_against_the_half_space_balance() {
     assert!(e[0] < 1e-5 && e[2] < 1e-5, "rib loads {e:?}");
     assert!(e[1] < 1e-3, "Hertz rib pressure {:.3e}", e[1]);
     assert!(e[3] < 1e-3, "PimP rib pressure {:.3e}", e[3]);
-    assert!(post < 1e-3, "PimP law vs half-space at its approach {post:.3e}");
+    assert!(
+        post < 1e-3,
+        "PimP law vs half-space at its approach {post:.3e}"
+    );
 }
 
 /// The same bearing with Wirsching et al. (2020)'s torus-cone-28 pairing, whose contact is
@@ -203,9 +212,16 @@ fn torus_cone_pairing_pimp_follows_the_half_space_balance_and_hertz_does_not() {
     // the pressure: PimP +10.2 % on this pairing in the single-contact validation
     // (docs/VALIDATION.md, PimP against the coupled solver), Hertz −17.7 %
     assert!(e[3] < 0.12, "PimP rib pressure {:.3e}", e[3]);
-    assert!(e[1] > 0.15 && e[1] > e[3], "Hertz rib pressure {:.3e}", e[1]);
+    assert!(
+        e[1] > 0.15 && e[1] > e[3],
+        "Hertz rib pressure {:.3e}",
+        e[1]
+    );
     // the stiffness: PimP's approach at a load is too large on this zone (recorded)
-    assert!(post < 0.45, "PimP law vs half-space at its approach {post:.3e}");
+    assert!(
+        post < 0.45,
+        "PimP law vs half-space at its approach {post:.3e}"
+    );
 }
 
 /// Every roller of the PimP balance is in force and moment balance to 1e-9 of its load,
@@ -219,7 +235,10 @@ fn the_pimp_balance_is_in_equilibrium_and_switches_back() {
         let [fr, fz, m] = s.roller_balance(j);
         let scale = r.outer_n.max(r.rib_n);
         worst = worst.max(fr.abs().max(fz.abs()).max(m.abs() / 16.0) / scale);
-        assert!(fr.abs().max(fz.abs()) < 1e-9 * scale, "roller {j}: {fr} {fz}");
+        assert!(
+            fr.abs().max(fz.abs()) < 1e-9 * scale,
+            "roller {j}: {fr} {fz}"
+        );
         assert!(m.abs() < 1e-9 * scale * 16.0, "roller {j}: {m}");
     }
     println!("PimP balance: worst roller residual {worst:.2e} of its load");
@@ -232,4 +251,3 @@ fn the_pimp_balance_is_in_equilibrium_and_switches_back() {
         assert!(rel(a.rib_max_pressure_mpa, b.rib_max_pressure_mpa) < 1e-9);
     }
 }
-

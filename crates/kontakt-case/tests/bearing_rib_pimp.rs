@@ -75,7 +75,10 @@ fn the_pimp_rib_model_is_run_and_reported() {
     let got = p.max_rib_pressure_mpa.unwrap();
     assert!((got / want - 1.0).abs() < 1e-9, "{got} vs {want}");
     let ratio = got / h.max_rib_pressure_mpa.unwrap();
-    assert!(ratio > 1.3 && ratio < 1.45, "PimP/Hertz rib pressure {ratio}");
+    assert!(
+        ratio > 1.3 && ratio < 1.45,
+        "PimP/Hertz rib pressure {ratio}"
+    );
     for (a, c) in h.roller_loads.iter().zip(&p.roller_loads) {
         assert!((a.rib_load_n / c.rib_load_n - 1.0).abs() < 1e-3);
         assert!(c.rib_max_pressure_mpa.unwrap() > a.rib_max_pressure_mpa.unwrap());
@@ -92,7 +95,10 @@ fn a_bad_rib_model_is_named_by_its_case_key() {
     assert!(e.contains("hertz") && e.contains("pimp"), "{e}");
     // a cylindrical bearing's ribs are Hertz's only
     let crb = std::fs::read_to_string(examples().join("bearing_nj_crb_rib_contact.toml")).unwrap();
-    let crb = crb.replace("[bearing.rib_contact]\n", "[bearing.rib_contact]\nmodel = \"pimp\"\n");
+    let crb = crb.replace(
+        "[bearing.rib_contact]\n",
+        "[bearing.rib_contact]\nmodel = \"pimp\"\n",
+    );
     let e = run(&crb).unwrap_err().to_string();
     assert!(
         e.starts_with("invalid bearing.rib_contact.model = pimp"),

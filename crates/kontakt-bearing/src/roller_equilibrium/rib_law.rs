@@ -92,8 +92,7 @@ impl RibTableRange {
                 "a finite pressure > 0 MPa",
             ));
         }
-        if !(self.max_pressure_mpa.is_finite() && self.max_pressure_mpa > self.min_pressure_mpa)
-        {
+        if !(self.max_pressure_mpa.is_finite() && self.max_pressure_mpa > self.min_pressure_mpa) {
             return Err(Error::invalid(
                 "rib_table.max_pressure_mpa",
                 self.max_pressure_mpa,
@@ -104,7 +103,11 @@ impl RibTableRange {
             ));
         }
         if !(4..=200).contains(&self.knots) {
-            return Err(Error::invalid("rib_table.knots", self.knots, "4 <= knots <= 200"));
+            return Err(Error::invalid(
+                "rib_table.knots",
+                self.knots,
+                "4 <= knots <= 200",
+            ));
         }
         Ok(())
     }
@@ -340,7 +343,10 @@ pub fn tabulate(
 #[derive(Debug, Clone)]
 pub(crate) enum RibLaw {
     /// `Q = k δ^(3/2)`, `p = p0 Q^(1/3)`.
-    Hertz { k: f64, p0: f64 },
+    Hertz {
+        k: f64,
+        p0: f64,
+    },
     Table(Box<RibTable>),
 }
 
@@ -477,6 +483,11 @@ mod tests {
             knots: 2,
             ..RibTableRange::default()
         };
-        assert!(r.validate().unwrap_err().to_string().contains("rib_table.knots"));
+        assert!(
+            r.validate()
+                .unwrap_err()
+                .to_string()
+                .contains("rib_table.knots")
+        );
     }
 }
