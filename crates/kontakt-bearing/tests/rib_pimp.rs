@@ -4,35 +4,22 @@
 
 #![allow(clippy::unwrap_used)] // tests: a panic is a failure with its message
 
-use kontakt::bearing::{FaceShape, RibShape};
+#[allow(dead_code)] // the shared cases; this file uses the rib study's
+#[path = "support/cases.rs"]
+mod cases;
+
+use cases::{rib_pairing as pairing, rib_study_bearing};
 use kontakt::halfspace::{Bem, BemOptions};
 use kontakt::material::ElasticMaterial;
 use kontakt::pimp::{Pimp, PimpOptions};
 use kontakt_bearing::equilibrium::RingLoad;
-use kontakt_bearing::geometry::RollerBearing;
 use kontakt_bearing::roller_equilibrium::{
     RibContact, RibContactSolver, RibModel, RibRollerLoad, RibTableRange,
 };
 
-/// The rib study's bearing (examples/bearing_rib_contact_60mm.toml, its numbers).
-fn rib_study_bearing() -> RollerBearing {
-    RollerBearing::tapered(
-        74.141904,
-        17,
-        10.161476,
-        16.0,
-        25.481595648_f64.to_radians(),
-        19.481595648_f64.to_radians(),
-    )
-}
-
 /// The rib study's pairing sphere-torus-57 at its contact height 2.75 mm.
 fn sphere_torus_57() -> RibContact {
-    RibContact {
-        face: FaceShape::Sphere { radius: 57.0 },
-        rib: RibShape::Torus { radius: 30.0 },
-        contact_height_mm: 2.75,
-    }
+    pairing("sphere-torus-57")
 }
 
 /// The example's combined load: 6 kN radial, 15 kN axial, tilts held.
@@ -51,16 +38,6 @@ fn solved(model: RibModel, range: &RibTableRange) -> (RibContactSolver, Vec<RibR
     assert!(sol.status.converged(), "{model:?}: {:?}", sol.status);
     let rollers = s.roller_loads().to_vec();
     (s, rollers)
-}
-
-/// Builtin pairing `name` of Wirsching et al. (2020) Table 1 at its contact height.
-fn pairing(name: &str) -> RibContact {
-    let spec = kontakt::bearing::RollerRibSpec::builtin(name).unwrap();
-    RibContact {
-        face: spec.face,
-        rib: spec.rib,
-        contact_height_mm: spec.contact_height,
-    }
 }
 
 /// The PimP table against direct PimP solves between its knots (where the interpolation

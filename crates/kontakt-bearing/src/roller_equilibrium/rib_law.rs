@@ -444,15 +444,7 @@ mod tests {
     fn pimp_condensed_stiffness_matches_central_differences() {
         use crate::equilibrium::RingLoad;
         use crate::roller_equilibrium::{RibContact, RibContactSolver};
-        let mut b = crate::geometry::RollerBearing::tapered(
-            108.5,
-            20,
-            17.0,
-            20.7,
-            16.0_f64.to_radians(),
-            11.7_f64.to_radians(),
-        );
-        b.slices = 31;
+        let b = crate::roller_equilibrium::tests::trb();
         let spec = kontakt::bearing::RollerRibSpec::builtin("torus-cone-28").unwrap();
         let rc = RibContact {
             face: spec.face,
