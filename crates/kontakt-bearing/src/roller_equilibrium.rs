@@ -27,7 +27,10 @@
 //! contacts in series at equal load have the approach `2 (q/c)^(9/10)`, which is the
 //! ISO/TS 16281 slice law `q = c_s δ^(10/9)` of both contacts (`c_s = 35948 L^(8/9)/n`).
 //! The rib carries Hertz's `Q_f = K_f δ_f₊^(3/2)` of the face/rib pair of
-//! `kontakt::bearing::roller_rib` at its contact point (`kontakt::hertz`, steel on steel).
+//! `kontakt::bearing::roller_rib` at its contact point (`kontakt::hertz`, steel on steel),
+//! or, with [`RibContactSolver::set_rib_model`], PimP's or the half-space solver's
+//! load-approach curve of the same pair, tabulated once (`rib_law`, docs/bearing-model.md
+//! §15.7).
 //! A given centrifugal force `F_c` (N per roller, along `+e_r`, at O) loads the roller.
 //!
 //! **Solver.** The total potential

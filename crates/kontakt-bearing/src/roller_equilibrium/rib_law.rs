@@ -6,9 +6,9 @@
 //! **Why a table.** In the balance the rib contact's point and normal are those of the
 //! unloaded construction (§15), so its force is a function of the approach alone,
 //! `Q_f(δ)`. The roller Newton evaluates it (with `dQ_f/dδ` and the potential
-//! `W = ∫ Q_f dδ` for its line search) some 10³ times per bearing solve; a PimP solve
-//! per evaluation (the contact element's path, tens of µs each) would cost tens of ms,
-//! against issue 29's 2 ms for the whole friction step. The curve is therefore solved at
+//! `W = ∫ Q_f dδ` for its line search) 673 times in a cold solve of the bench's 20-roller
+//! TRB (172 warm); the contact element's PimP path (18-20 µs a call) would cost some
+//! 13 ms, against issue 29's 2 ms for the whole friction step. The curve is therefore solved at
 //! `n` loads once and interpolated.
 //!
 //! **Interpolant.** With `s = √δ`, Hertz's law `Q = K s³` is a cubic: the table is a
