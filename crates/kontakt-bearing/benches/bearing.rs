@@ -5,7 +5,8 @@
 //! a combined load, cold, at rest and at 10 000 r/min; a cylindrical roller bearing of 14
 //! rollers × 31 slices under a radial load, cold, for reference; the same TRB with the
 //! rib-contact roller model (`roller_equilibrium`: every roller in its own balance, Hertz
-//! rib contacts), cold and warm after a 1 % load change; the TRB with coupled slices
+//! rib contacts), cold and warm after a 1 % load change, and with the PimP rib law
+//! (tabulated at plan time; the plan timed too); the TRB with coupled slices
 //! (half-space strips), cold. The solvers are built once outside the timed closure; the
 //! timed call is the solve. The Newton iterations of each case are printed once (stderr).
 //! Figures in docs/PERFORMANCE.md, "Bearing load distribution (issue 28)".
@@ -19,7 +20,7 @@ use kontakt_bearing::ball_equilibrium::BallBearingSolver;
 use kontakt_bearing::ball_speed::{BallSpeedSolver, RaceControl};
 use kontakt_bearing::equilibrium::RollerBearingSolver;
 use kontakt_bearing::equilibrium::coupled::CoupledSliceSolver;
-use kontakt_bearing::roller_equilibrium::RibContactSolver;
+use kontakt_bearing::roller_equilibrium::{RibContactSolver, RibModel, RibTableRange};
 use std::hint::black_box;
 
 fn bench_bearing(c: &mut Criterion) {
@@ -88,6 +89,54 @@ fn bench_bearing(c: &mut Criterion) {
                 .expect("solve");
             turn = 1 - turn;
             s
+        })
+    });
+
+    // The same TRB with the PimP rib law (Wirsching et al. 2020; a load-approach curve
+    // tabulated once at plan time, docs/bearing-model.md §15.8), cold and warm: the load
+    // distribution under issue 29's 2 ms for the friction step with PimP. The plan (24
+    // PimP solves) is timed on its own.
+    let mut pimp_solver = RibContactSolver::new(trb(), trb_rib()).expect("valid TRB and rib");
+    pimp_solver
+        .set_rib_model(RibModel::Pimp, &RibTableRange::default())
+        .expect("PimP rib table");
+    let pimp_cold = pimp_solver.solve(&load).expect("solve");
+    assert!(pimp_cold.status.converged(), "{:?}", pimp_cold.status);
+    let pimp_warm = pimp_solver
+        .solve_from(&load_1pc, pimp_cold.displacement)
+        .expect("solve");
+    assert!(pimp_warm.status.converged(), "{:?}", pimp_warm.status);
+    eprintln!(
+        "trb_rib_pimp_20x31: cold {} iterations (residual {:.1e}), warm after +1 % {} iterations, rib {:.0} N, rib pressure {:.0} MPa (Hertz {:.0} MPa)",
+        pimp_cold.status.iterations,
+        pimp_cold.status.residual,
+        pimp_warm.status.iterations,
+        pimp_solver.max_rib_load_n(),
+        pimp_solver.max_rib_pressure_mpa(),
+        rib_solver.max_rib_pressure_mpa(),
+    );
+    group.bench_function("trb_rib_pimp_20x31_cold", |b| {
+        b.iter(|| pimp_solver.solve(black_box(&load)).expect("solve"))
+    });
+    let pimp_starts = [pimp_cold.displacement, pimp_warm.displacement];
+    let mut pimp_turn = 0;
+    group.bench_function("trb_rib_pimp_20x31_warm_1pc", |b| {
+        b.iter(|| {
+            let s = pimp_solver
+                .solve_from(
+                    black_box(&loads[pimp_turn]),
+                    black_box(pimp_starts[pimp_turn]),
+                )
+                .expect("solve");
+            pimp_turn = 1 - pimp_turn;
+            s
+        })
+    });
+    group.bench_function("trb_rib_pimp_plan", |b| {
+        b.iter(|| {
+            pimp_solver
+                .set_rib_model(RibModel::Pimp, black_box(&RibTableRange::default()))
+                .expect("PimP rib table")
         })
     });
 

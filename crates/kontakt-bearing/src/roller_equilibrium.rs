@@ -27,7 +27,10 @@
 //! contacts in series at equal load have the approach `2 (q/c)^(9/10)`, which is the
 //! ISO/TS 16281 slice law `q = c_s δ^(10/9)` of both contacts (`c_s = 35948 L^(8/9)/n`).
 //! The rib carries Hertz's `Q_f = K_f δ_f₊^(3/2)` of the face/rib pair of
-//! `kontakt::bearing::roller_rib` at its contact point (`kontakt::hertz`, steel on steel).
+//! `kontakt::bearing::roller_rib` at its contact point (`kontakt::hertz`, steel on steel),
+//! or, with [`RibContactSolver::set_rib_model`], PimP's or the half-space solver's
+//! load-approach curve of the same pair, tabulated once (`rib_law`, docs/bearing-model.md
+//! §15.8).
 //! A given centrifugal force `F_c` (N per roller, along `+e_r`, at O) loads the roller.
 //!
 //! **Solver.** The total potential
@@ -71,6 +74,10 @@ use kontakt::solve::{SolveStatus, Termination};
 use kontakt::{Error, Result};
 use nalgebra::{Matrix3, Matrix5, Matrix5x3, Vector2, Vector3, Vector5};
 use std::f64::consts::PI;
+
+mod rib_law;
+use rib_law::RibLaw;
+pub use rib_law::{RibModel, RibTable, RibTableRange, tabulate};
 
 /// The roller-end/rib pair of a tapered roller bearing, in the vocabulary of the rib study
 /// (`kontakt::bearing::roller_rib`, Wirsching et al. 2020): the roller's large-end face, the
@@ -217,6 +224,8 @@ struct Rib {
     hertz: HertzPointContact,
     k: f64,
     p0: f64,
+    /// The force law in the balance (Hertz's `k`, `p0` or a tabulated model).
+    law: RibLaw,
 }
 
 /// The ring approaches of one roller: the cone slices' `G0 + x G1` and each rib's.
@@ -294,8 +303,10 @@ pub struct RibContactSolver {
     centrifugal_n: f64,
     /// The force scale of one roller for the roller's own tolerance, N (set per solve).
     roller_scale: f64,
-    /// Multiplies the rib's Hertz load coefficient (1 by default; a large factor makes the
-    /// rib rigid, a study and test device).
+    /// The rib contact's force law (Hertz by default; [`RibContactSolver::set_rib_model`]).
+    rib_model: RibModel,
+    /// Multiplies the rib's load (Hertz's load coefficient or the tabulated law; 1 by
+    /// default; a large factor makes the rib rigid, a study and test device).
     pub rib_stiffness_factor: f64,
     /// Hold every roller's tilt at 0 (false by default; a study and test device).
     pub hold_roller_tilt: bool,
@@ -324,6 +335,10 @@ fn make_rib(
         gap: 0.0,
         k: hertz.load_coefficient(),
         p0: hertz.max_pressure_at_unit_force(),
+        law: RibLaw::Hertz {
+            k: hertz.load_coefficient(),
+            p0: hertz.max_pressure_at_unit_force(),
+        },
         hertz,
     }
 }
@@ -591,6 +606,7 @@ impl RibContactSolver {
             centrifugal_n: 0.0,
             roller_scale: 0.0,
             x,
+            rib_model: RibModel::Hertz,
             rib_stiffness_factor: 1.0,
             hold_roller_tilt: false,
             tolerance: 1e-11,
@@ -638,6 +654,80 @@ impl RibContactSolver {
     /// `Q = K_f δ^(3/2)`, N/mm^1.5.
     pub fn rib_load_coefficient(&self) -> f64 {
         self.ribs[0].k
+    }
+
+    /// The rib contact's force law in the balance (default [`RibModel::Hertz`]).
+    pub fn rib_model(&self) -> RibModel {
+        self.rib_model
+    }
+
+    /// Give the rib contact of a tapered bearing the force law of `model`: Hertz (the
+    /// closed form) or PimP or the half-space solver, each solved once here over `range`
+    /// and tabulated as a load-approach curve (docs/bearing-model.md §15.8); the solves
+    /// after it allocate nothing. The pressure reported on the rib is that model's.
+    ///
+    /// # Errors
+    /// `rib_contact.model` for a cylindrical bearing (its rib pair is Hertz's only) or when
+    /// the model cannot solve the contact at 4 knots; `rib_table.*` out of range.
+    pub fn set_rib_model(&mut self, model: RibModel, range: &RibTableRange) -> Result<()> {
+        if model == RibModel::Hertz {
+            for rib in &mut self.ribs {
+                rib.law = RibLaw::Hertz {
+                    k: rib.k,
+                    p0: rib.p0,
+                };
+            }
+            self.rib_model = model;
+            return Ok(());
+        }
+        let Some(pair) = &self.pair else {
+            return Err(Error::invalid(
+                "rib_contact.model",
+                model.as_str(),
+                "hertz for a cylindrical roller bearing (PimP and the half-space law need the roller end/rib pair of a tapered bearing)",
+            ));
+        };
+        let gap = pair.gap()?;
+        // the roller's line contact at pressure p: Q = π L (D/2) p² / E* (Hertz 1881)
+        let b = self.iso.bearing();
+        let (l, r) = (b.effective_length_mm, 0.5 * b.roller_diameter_mm);
+        let steel = ElasticMaterial::STEEL;
+        let e_star = kontakt::material::effective_modulus(&steel, &steel);
+        let limit = move |p: f64| PI * l * r * p * p / e_star;
+        let table = tabulate(model, &gap, self.ribs[0].p0, &limit, range)?;
+        for rib in &mut self.ribs {
+            rib.law = RibLaw::Table(Box::new(table.clone()));
+        }
+        self.rib_model = model;
+        Ok(())
+    }
+
+    /// The tabulated rib law (`None` for Hertz).
+    pub fn rib_table(&self) -> Option<&RibTable> {
+        match &self.ribs[0].law {
+            RibLaw::Table(t) => Some(t),
+            RibLaw::Hertz { .. } => None,
+        }
+    }
+
+    /// The rib contact's load `Q` (N), its derivative `dQ/dδ` (N/mm) and potential
+    /// `∫ Q dδ` (N·mm) at the approach `delta` (mm) by the law in the balance (0 when
+    /// open), before `rib_stiffness_factor`.
+    pub fn rib_law(&self, delta: f64) -> (f64, f64, f64) {
+        if delta > 0.0 {
+            self.ribs[0].law.eval(delta, 1.0)
+        } else {
+            (0.0, 0.0, 0.0)
+        }
+    }
+
+    /// The maximum pressure on the rib at the load `q` (N) by the law in the balance, MPa.
+    pub fn rib_pressure(&self, q: f64) -> f64 {
+        if q > 0.0 {
+            self.ribs[0].law.pressure(q)
+        } else {
+            0.0
+        }
     }
 
     /// The centrifugal force on every roller, N (default 0).
@@ -786,12 +876,11 @@ impl RibContactSolver {
             e.df[r] = df;
             let mut qf = 0.0;
             if df > 0.0 {
-                let kf = rib.k * self.rib_stiffness_factor;
-                let sq = df.sqrt();
-                qf = kf * df * sq;
+                let (q, k, w) = rib.law.eval(df, self.rib_stiffness_factor);
+                qf = q;
                 e.qf[r] = qf;
-                e.kf[r] = 1.5 * kf * sq;
-                e.pi += 0.4 * qf * df;
+                e.kf[r] = k;
+                e.pi += w;
                 e.grad += rib.d * qf;
                 h += rib.d * rib.d.transpose() * e.kf[r];
             }
@@ -1000,7 +1089,7 @@ impl RibContactSolver {
                     outer_rib += q;
                 }
                 if q > 0.0 {
-                    p_rib = p_rib.max(rib.p0 * q.cbrt());
+                    p_rib = p_rib.max(rib.law.pressure(q));
                 }
                 if k > 0.0 && rib.inner {
                     rib_stiff += k;

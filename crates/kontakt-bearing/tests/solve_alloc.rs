@@ -85,3 +85,22 @@ fn rib_contact_solves_allocate_nothing_cold_or_warm() {
     assert!(warm.status.converged());
     assert_eq!(n, 0, "warm rib-contact solve");
 }
+
+/// The PimP rib law (tabulated at plan time) in the rib-contact roller balance: cold and
+/// warm solves allocate nothing.
+#[test]
+fn rib_contact_solves_with_the_pimp_rib_law_allocate_nothing() {
+    use kontakt_bearing::roller_equilibrium::{RibModel, RibTableRange};
+    let mut solver = RibContactSolver::new(trb(), trb_rib()).expect("valid TRB and rib");
+    solver
+        .set_rib_model(RibModel::Pimp, &RibTableRange::default())
+        .expect("PimP table");
+    let (cold, n) = allocations(|| solver.solve(&trb_load(1.0)).expect("solve"));
+    assert!(cold.status.converged());
+    assert!(solver.max_rib_pressure_mpa() > 0.0);
+    assert_eq!(n, 0, "cold TRB solve, PimP rib");
+    let start = cold.displacement;
+    let (warm, n) = allocations(|| solver.solve_from(&trb_load(1.01), start).expect("solve"));
+    assert!(warm.status.converged());
+    assert_eq!(n, 0, "warm TRB solve, PimP rib");
+}

@@ -708,6 +708,11 @@ pub struct RollerPart {
     /// of the roller end/rib pair, measured like the contact angles, degrees.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub rib_normal_deg: Option<f64>,
+    /// `roller_model = "rib_contact"` only: the rib contact's force law in the balance,
+    /// `"hertz"` or `"pimp"` (`bearing.rib_contact.model`); `max_rib_pressure_mpa` and the
+    /// rollers' `rib_max_pressure_mpa` are that model's.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rib_model: Option<&'static str>,
 }
 
 /// The report keys of a ball bearing.
@@ -1221,6 +1226,7 @@ fn roller_part_report(
         roller_model: None,
         max_rib_pressure_mpa: None,
         rib_normal_deg: None,
+        rib_model: None,
     });
     let mut report = report(case, label, elements, sol.displacement, sol.load);
     report.solver = solver_echo(&sol.status);
@@ -1308,6 +1314,7 @@ fn rib_roller_report(
         p.rib_normal_deg = solver
             .rib_pair()
             .map(|_| solver.rib_normal_angle().to_degrees());
+        p.rib_model = Some(solver.rib_model().as_str());
     }
     Ok(report)
 }

@@ -14,6 +14,7 @@
 //! # face = { shape = "sphere", radius_mm = 57.0 }
 //! # rib = { shape = "torus", radius_mm = 30.0 }
 //! contact_height_mm = 2.75         # above the roller axis; default 2.75 with a pairing
+//! model = "pimp"                   # the rib's force law: "hertz" (default) or "pimp"
 //! ```
 //!
 //! The rib normal then follows from the face and the contact height; a `rib_angle_deg`
@@ -23,7 +24,7 @@ use kontakt::bearing::{CONTACT_HEIGHT, FaceShape, RibShape, RollerRibSpec};
 use kontakt::{Error, Result};
 use kontakt_bearing::geometry::RollerBearing;
 use kontakt_bearing::roller_equilibrium::{
-    CylindricalRibs, RibArrangement, RibContact, RibContactSolver,
+    CylindricalRibs, RibArrangement, RibContact, RibContactSolver, RibModel, RibTableRange,
 };
 use serde::{Deserialize, Serialize};
 
@@ -76,6 +77,33 @@ pub struct RibContactSpec {
     /// one ring, mm (>= 0).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub end_play_mm: Option<f64>,
+    /// The rib contact's force law in the roller balance: `"hertz"` (default, closed form)
+    /// or `"pimp"` (Wirsching et al. 2020, a load-approach curve tabulated once at plan
+    /// time; tapered only). The rib pressure reported is the model's, MPa.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub model: Option<RibModelSpec>,
+}
+
+/// `bearing.rib_contact.model`: the rib contact's force law in the roller balance.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum RibModelSpec {
+    /// Hertz's point contact at the contact point.
+    #[default]
+    Hertz,
+    /// PimP, tabulated at plan time (docs/bearing-model.md §15.8).
+    Pimp,
+}
+
+/// Give `solver` the rib law of `model` (Hertz: nothing to do); errors named
+/// `bearing.rib_contact.model` (a cylindrical bearing; a pair PimP cannot solve).
+fn set_model(solver: &mut RibContactSolver, model: Option<RibModelSpec>) -> Result<()> {
+    if let Some(RibModelSpec::Pimp) = model {
+        solver
+            .set_rib_model(RibModel::Pimp, &RibTableRange::default())
+            .map_err(|e| e.map_field(|f| format!("bearing.{f}")))?;
+    }
+    Ok(())
 }
 
 /// `bearing.rib_contact.arrangement` of a cylindrical roller bearing.
@@ -187,7 +215,9 @@ pub(crate) fn plan_rib(
         ),
     })?;
     if label == "cylindrical" {
-        return cylindrical(spec, bearing).map(Some);
+        let mut solver = cylindrical(spec, bearing)?;
+        set_model(&mut solver, spec.model)?;
+        return Ok(Some(solver));
     }
     for (key, given) in [
         ("arrangement", spec.arrangement.is_some()),
@@ -206,7 +236,7 @@ pub(crate) fn plan_rib(
     // the rib normal comes from the pair; a rib_angle_deg given as well must agree
     let mut free = bearing.clone();
     free.rib_angle_rad = None;
-    let solver = RibContactSolver::new(free, pair).map_err(|e| {
+    let mut solver = RibContactSolver::new(free, pair).map_err(|e| {
         e.map_field(|f| match f.strip_prefix("rib_contact.") {
             Some(k) => format!("{KEY}.{k}"),
             None => format!("bearing.{f}"),
@@ -225,6 +255,7 @@ pub(crate) fn plan_rib(
             ),
         ));
     }
+    set_model(&mut solver, spec.model)?;
     Ok(Some(solver))
 }
 

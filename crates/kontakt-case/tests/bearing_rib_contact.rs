@@ -2,14 +2,21 @@
 //! bearing under its axial load gives the rib study's 2-D roller loads to 1e-9 with every
 //! roller in its own balance; the combined-load example balances its load; the new keys
 //! pass the unknown-key and finiteness checks and bad input is named by its case key.
+//! `[bearing.rib_contact] model = "pimp"` runs the library's PimP rib law and reports it.
 
 #![allow(clippy::unwrap_used)] // tests: a panic is a failure with its message
 
 use kontakt::bearing::{RollerRib, RollerRibSpec, TaperedKinematics, roller_loads};
+use kontakt_bearing::equilibrium::RingLoad;
+use kontakt_bearing::roller_equilibrium::{RibContactSolver, RibModel, RibTableRange};
 
 #[path = "support/bearing_examples.rs"]
 mod bearing_examples;
 use bearing_examples::{example, run};
+
+#[allow(dead_code)] // the shared cases; this file uses the rib study's
+#[path = "../../kontakt-bearing/tests/support/cases.rs"]
+mod cases;
 
 /// The rib study's bearing case with the rib contact in the loop.
 fn rib_study_with_rib_contact() -> String {
@@ -195,4 +202,78 @@ fn the_nj_example_carries_its_axial_load_on_the_ribs() {
         e.starts_with("invalid bearing.rib_contact.end_play_mm"),
         "{e}"
     );
+}
+
+// `[bearing.rib_contact] model` (docs/bearing-model.md §15.8)
+
+/// The combined-load rib-contact example with the pairing `pairing` and `extra` lines in
+/// `[bearing.rib_contact]`.
+fn with_pairing(pairing: &str, extra: &str) -> String {
+    let text = example("bearing_rib_contact_60mm.toml");
+    text.replace(
+        "pairing = \"sphere-torus-57\"\n",
+        &format!("pairing = \"{pairing}\"\n{extra}"),
+    )
+    .replace("rib_angle_deg = 109.716252089\n", "")
+}
+
+/// With torus-cone-28 (a pair far from Hertz's ellipse) the report's rib pressure is the
+/// library's PimP balance's, about 36 % above Hertz's; the rib loads barely change; the
+/// report names the model.
+#[test]
+fn the_pimp_rib_model_is_run_and_reported() {
+    let hertz = run(&with_pairing("torus-cone-28", "")).unwrap();
+    let pimp = run(&with_pairing("torus-cone-28", "model = \"pimp\"\n")).unwrap();
+    let explicit = run(&with_pairing("torus-cone-28", "model = \"hertz\"\n")).unwrap();
+    let (h, p) = (hertz.rollers().unwrap(), pimp.rollers().unwrap());
+    assert_eq!(h.rib_model, Some("hertz"));
+    assert_eq!(p.rib_model, Some("pimp"));
+    assert_eq!(
+        explicit.rollers().unwrap().max_rib_pressure_mpa,
+        h.max_rib_pressure_mpa
+    );
+    // the library's PimP balance of the same bearing and load
+    let mut s = RibContactSolver::new(
+        cases::rib_study_bearing(),
+        cases::rib_pairing("torus-cone-28"),
+    )
+    .unwrap();
+    s.set_rib_model(RibModel::Pimp, &RibTableRange::default())
+        .unwrap();
+    s.solve(&RingLoad::forces([6000.0, 0.0, 15000.0, 0.0, 0.0]).with_tilts_held())
+        .unwrap();
+    let want = s.max_rib_pressure_mpa();
+    let got = p.max_rib_pressure_mpa.unwrap();
+    assert!((got / want - 1.0).abs() < 1e-9, "{got} vs {want}");
+    let ratio = got / h.max_rib_pressure_mpa.unwrap();
+    assert!(
+        ratio > 1.3 && ratio < 1.45,
+        "PimP/Hertz rib pressure {ratio}"
+    );
+    for (a, c) in h.roller_loads.iter().zip(&p.roller_loads) {
+        assert!((a.rib_load_n / c.rib_load_n - 1.0).abs() < 1e-3);
+        assert!(c.rib_max_pressure_mpa.unwrap() > a.rib_max_pressure_mpa.unwrap());
+    }
+}
+
+/// `model = "fem"`, or PimP on a cylindrical bearing: one error naming the case key.
+#[test]
+fn a_bad_rib_model_is_named_by_its_case_key() {
+    let e = run(&with_pairing("sphere-torus-57", "model = \"fem\"\n"))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("bearing.rib_contact.model"), "{e}");
+    assert!(e.contains("hertz") && e.contains("pimp"), "{e}");
+    // a cylindrical bearing's ribs are Hertz's only
+    let crb = example("bearing_nj_crb_rib_contact.toml");
+    let crb = crb.replace(
+        "[bearing.rib_contact]\n",
+        "[bearing.rib_contact]\nmodel = \"pimp\"\n",
+    );
+    let e = run(&crb).unwrap_err().to_string();
+    assert!(
+        e.starts_with("invalid bearing.rib_contact.model = pimp"),
+        "{e}"
+    );
+    assert!(run(&crb.replace("model = \"pimp\"", "model = \"hertz\"")).is_ok());
 }

@@ -472,3 +472,28 @@ fn rating_lives_and_static_safety() {
         "{w}"
     );
 }
+
+/// `[bearing.rib_contact] model = "pimp"`: the table names the PimP rib contact and its
+/// pressure, the JSON says `rib_model = "pimp"`; the Hertz example says Hertz.
+#[test]
+fn the_rib_model_is_named_in_the_table_and_json() {
+    let hertz = table_of("bearing_rib_contact_60mm.toml");
+    assert!(hertz.contains("Hertz rib contact"), "{hertz}");
+    let dir = support::tempdir("bearing", "rib_pimp");
+    let p = edited_example(
+        &dir,
+        "bearing_rib_contact_60mm.toml",
+        "contact_height_mm = 2.75\n",
+        "contact_height_mm = 2.75\nmodel = \"pimp\"\n",
+    );
+    let out = kontakt()
+        .args(["bearing", p.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("PimP rib contact"), "{text}");
+    let json = run_json(&["bearing", p.to_str().unwrap()]);
+    assert_eq!(json["rib_model"], "pimp");
+    assert!(num(&json["max_rib_pressure_mpa"]) > 700.0);
+}

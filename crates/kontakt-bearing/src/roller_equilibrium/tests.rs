@@ -30,7 +30,7 @@ fn sphere_torus_57() -> RibContact {
 }
 
 /// The bench's TRB (32216 geometry, 20 rollers × 31 slices) with a spherical face.
-fn trb() -> RollerBearing {
+pub(super) fn trb() -> RollerBearing {
     let mut b = RollerBearing::tapered(
         108.5,
         20,

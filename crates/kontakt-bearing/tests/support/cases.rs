@@ -71,3 +71,32 @@ pub fn trb_rib() -> kontakt_bearing::roller_equilibrium::RibContact {
         contact_height_mm: 4.5,
     }
 }
+
+/// The rib study's tapered roller bearing (examples/bearing_rib_contact_60mm.toml, its
+/// numbers): d_m 74.141904 mm, 17 rollers 10.161476 × 16 mm, cup 25.481595648°, cone
+/// 19.481595648°, ISO profile, zero clearance, 31 slices.
+#[allow(dead_code)] // not every includer uses every case
+pub fn rib_study_bearing() -> RollerBearing {
+    let mut b = RollerBearing::tapered(
+        74.141904,
+        17,
+        10.161476,
+        16.0,
+        25.481595648_f64.to_radians(),
+        19.481595648_f64.to_radians(),
+    );
+    b.slices = 31;
+    b
+}
+
+/// The built-in pairing `name` of Wirsching et al. (2020) Table 1 at its contact height,
+/// as the rib-contact model's pair.
+#[allow(dead_code)] // not every includer uses every case
+pub fn rib_pairing(name: &str) -> kontakt_bearing::roller_equilibrium::RibContact {
+    let spec = kontakt::bearing::RollerRibSpec::builtin(name).expect("a built-in pairing");
+    kontakt_bearing::roller_equilibrium::RibContact {
+        face: spec.face,
+        rib: spec.rib,
+        contact_height_mm: spec.contact_height,
+    }
+}

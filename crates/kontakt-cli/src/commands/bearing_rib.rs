@@ -15,7 +15,11 @@ pub fn rib_roller_table(out: &mut impl Write, p: &RollerPart) -> Result<()> {
         .map_or_else(String::new, |d| format!(" (rib normal {:.3} deg)", Num(d)));
     writeln!(
         out,
-        "  rollers in their own balance, Hertz rib contact{normal}; largest rib pressure {:.0} MPa; skew moments 0 (no friction)",
+        "  rollers in their own balance, {} rib contact{normal}; largest rib pressure {:.0} MPa; skew moments 0 (no friction)",
+        match p.rib_model {
+            Some("pimp") => "PimP",
+            _ => "Hertz",
+        },
         Num(p.max_rib_pressure_mpa.unwrap_or(f64::NAN))
     )?;
     if let Some(fc) = p.roller_loads.first().and_then(|r| r.centrifugal_force_n) {
