@@ -209,6 +209,13 @@ fn lifted_off_is_a_status_with_zero_force() {
         };
         e.set_damping(1e-3).unwrap();
         let o = e.evaluate(u, [1.0, 2.0, 3.0, 0.1, 0.1]).unwrap();
+        if text.contains("[speed]") && e.model().bearing_type() == "tapered" {
+            // at speed the centrifugal force drives every tapered roller along the cup into
+            // the wedge against the cone's rib: the cone pulled out is followed, not freed
+            assert_eq!(o.status, BearingElementStatus::Loaded, "{name}");
+            assert!(reaction(&o)[2] < 0.0, "{name}: {:?}", reaction(&o));
+            continue;
+        }
         assert_eq!(o.status, BearingElementStatus::LiftedOff, "{name}");
         assert_eq!(reaction(&o), [0.0; 5], "{name}");
         assert_eq!(o.stiffness, [[0.0; 5]; 5], "{name}");

@@ -44,7 +44,8 @@ use kontakt_bearing::geometry::RollerBearing;
 /// What the rolling elements of an evaluated bearing do.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum BearingElementStatus {
-    /// Every rolling element is lifted off: zero force and stiffness.
+    /// The inner ring touches no rolling element: zero force and stiffness (at speed the
+    /// elements may still press the outer ring).
     LiftedOff,
     /// At least one rolling element carries load.
     Loaded,
@@ -288,7 +289,10 @@ impl BearingElement {
                 ),
             ));
         }
-        let loaded = max_load > 0.0;
+        // lifted off: the inner ring touches no element (at speed the rollers of the
+        // rib-contact model still press the outer ring with their centrifugal force, so
+        // the largest element load alone does not say it)
+        let loaded = max_load > 0.0 && force.iter().any(|f| *f != 0.0);
         self.model.last = loaded.then_some(u);
         Ok(BearingElementOutput {
             status: if loaded {
