@@ -573,6 +573,45 @@ impl BearingFrictionModel {
     }
 }
 
+/// The cup and cone slice loads \[N\] (roller-major) of the last solve of the ISO/TS 16281
+/// slice model `solver`, written into `cup` and `cone` (each `Z × slices` long): the model
+/// has one load per slice along the cup normal; the cone's slices carry it scaled by the
+/// roller's `inner_n / outer_n` (a tapered roller's cone load differs by the rib's share).
+/// Allocates nothing.
+///
+/// # Errors
+/// Field `cup_slices` / `cone_slices` when a buffer has the wrong length.
+pub fn iso_slice_loads(
+    solver: &crate::equilibrium::RollerBearingSolver,
+    cup: &mut [f64],
+    cone: &mut [f64],
+) -> Result<()> {
+    let loads = solver.slice_loads();
+    let n = solver.bearing().slices;
+    for (field, b) in [("cup_slices", cup.len()), ("cone_slices", cone.len())] {
+        if b != loads.len() {
+            return Err(Error::invalid(
+                field,
+                b,
+                format!("{} slice loads (rollers × slices)", loads.len()),
+            ));
+        }
+    }
+    for (j, r) in solver.roller_loads().iter().enumerate() {
+        let ratio = if r.outer_n > 0.0 {
+            r.inner_n / r.outer_n
+        } else {
+            1.0
+        };
+        for k in 0..n {
+            let q = loads[j * n + k];
+            cup[j * n + k] = q;
+            cone[j * n + k] = q * ratio;
+        }
+    }
+    Ok(())
+}
+
 #[cfg(test)]
 #[path = "torque_tests.rs"]
 mod tests;
