@@ -130,6 +130,16 @@ fn rib_share_equals_the_rib_friction_study() {
     );
     // the cage speed of the friction model is the rib study's kinematics
     assert!((f.cage_speed_rad_s / k.cage_speed - 1.0).abs() < 1e-12);
+    // the bench's 20-roller variant of this bearing is valid
+    let twenty = RollerSet {
+        count: 20,
+        ..RollerSet::default()
+    };
+    BearingFrictionModel::new(
+        RollerBearing::of_roller_rib(rib.pair(), &twenty).unwrap(),
+        losses(&lub, 70.0, true),
+    )
+    .unwrap();
 }
 
 /// The 32008 X (examples/bearing_32008x.toml geometry, Liu 2022 internal data) at
