@@ -56,7 +56,13 @@ fn setup() -> Setup {
         .expect("solve");
     let n = bearing.rollers * bearing.slices;
     let (mut cup, mut cone) = (vec![0.0; n], vec![0.0; n]);
-    iso_slice_loads(&solver, &mut cup, &mut cone).expect("slices");
+    iso_slice_loads(
+        solver.slice_loads(),
+        solver.roller_loads(),
+        &mut cup,
+        &mut cone,
+    )
+    .expect("slices");
     let cups = solver
         .roller_loads()
         .iter()

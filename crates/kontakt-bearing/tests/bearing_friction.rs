@@ -46,7 +46,13 @@ fn solved(bearing: &RollerBearing, axial: f64) -> (Vec<f64>, Vec<f64>, RollerBea
     assert!(s.status.converged());
     let n = bearing.rollers * bearing.slices;
     let (mut cup, mut cone) = (vec![0.0; n], vec![0.0; n]);
-    iso_slice_loads(&solver, &mut cup, &mut cone).unwrap();
+    iso_slice_loads(
+        solver.slice_loads(),
+        solver.roller_loads(),
+        &mut cup,
+        &mut cone,
+    )
+    .unwrap();
     (cup, cone, solver)
 }
 

@@ -94,6 +94,19 @@ pub struct BearingCase {
     pub bearing: BearingSpec,
     /// The load of the inner ring.
     pub load: BearingLoadSpec,
+    /// `[operating]`: ring speeds and oil supply of the friction torque (issue 29;
+    /// `crate::bearing_friction`). Absent: no friction section.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub operating: Option<crate::bearing_friction::OperatingSpec>,
+    /// `[lubricant]` of the friction torque (the friction case's schema).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub lubricant: Option<crate::friction_case::LubricantSpec>,
+    /// `[friction]`: the friction law of the raceways and ribs (the friction case's schema).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub friction: Option<crate::friction_case::FrictionSpec>,
+    /// `[catalogue]`: envelope and series for the catalogue torques.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub catalogue: Option<crate::bearing_friction::CatalogueSpec>,
 }
 
 /// `[bearing]`: the type (`type = "cylindrical" | "tapered" | "thrust"`) and its internal
@@ -612,6 +625,10 @@ pub struct BearingReport {
     pub contacts: Vec<ContactSize>,
     /// Static safety and rating lives (`docs/bearing-model.md`, "Life and static safety").
     pub rating: RatingReport,
+    /// The friction torque, contact by contact, beside the catalogue torques (with
+    /// `[operating]`; `docs/bearing-friction.md`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub friction: Option<crate::bearing_friction::FrictionReport>,
 }
 
 /// The rolling elements of a [`BearingReport`], their keys flattened into the report.
@@ -899,7 +916,16 @@ pub fn run_bearing_case(case: &BearingCase) -> Result<BearingReport> {
 /// solve, the first solve of a [`crate::BearingModel`].
 pub(crate) fn run_bearing_case_unchecked(case: &BearingCase) -> Result<BearingReport> {
     let (mut planned, label) = plan(case)?;
-    solve_planned(case, label, &mut planned, &case.load, None)
+    let mut report = solve_planned(case, label, &mut planned, &case.load, None)?;
+    if let Some(op) = &case.operating {
+        report.friction = Some(crate::bearing_friction::of_planned(
+            case,
+            op,
+            &planned,
+            report.force_n,
+        )?);
+    }
+    Ok(report)
 }
 
 /// The solver of a bearing case, planned once (the state of a [`crate::BearingModel`]).
@@ -1394,6 +1420,7 @@ fn report(
         warnings: Vec::new(),
         contacts: Vec::new(),
         rating: RatingReport::default(),
+        friction: None,
     }
 }
 

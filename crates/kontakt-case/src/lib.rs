@@ -27,6 +27,7 @@
 
 pub mod bearing_case;
 pub mod bearing_design;
+pub mod bearing_friction;
 pub mod bearing_model;
 pub mod bearing_rating;
 pub mod bearing_rib;

@@ -573,38 +573,48 @@ impl BearingFrictionModel {
     }
 }
 
-/// The cup and cone slice loads \[N\] (roller-major) of the last solve of the ISO/TS 16281
-/// slice model `solver`, written into `cup` and `cone` (each `Z × slices` long): the model
-/// has one load per slice along the cup normal; the cone's slices carry it scaled by the
-/// roller's `inner_n / outer_n` (a tapered roller's cone load differs by the rib's share).
+/// The cup and cone slice loads \[N\] (roller-major) of an ISO/TS 16281 slice model's
+/// solve (`slice_loads`, `rollers` of `RollerBearingSolver` or the coupled-slice solver),
+/// written into `cup` and `cone` (each as long as `slice_loads`): the model has one load per
+/// slice along the cup normal; the cone's slices carry it scaled by the roller's
+/// `inner_n / outer_n` (a tapered roller's cone load differs by the rib's share).
 /// Allocates nothing.
 ///
 /// # Errors
-/// Field `cup_slices` / `cone_slices` when a buffer has the wrong length.
+/// Field `cup_slices` / `cone_slices` when a buffer has the wrong length, `slice_loads`
+/// when it is not a whole number of slices per roller.
 pub fn iso_slice_loads(
-    solver: &crate::equilibrium::RollerBearingSolver,
+    slice_loads: &[f64],
+    rollers: &[crate::equilibrium::RollerLoad],
     cup: &mut [f64],
     cone: &mut [f64],
 ) -> Result<()> {
-    let loads = solver.slice_loads();
-    let n = solver.bearing().slices;
+    let z = rollers.len();
+    if z == 0 || slice_loads.len() % z != 0 {
+        return Err(Error::invalid(
+            "slice_loads",
+            slice_loads.len(),
+            format!("a whole number of slices for each of {z} rollers"),
+        ));
+    }
+    let n = slice_loads.len() / z;
     for (field, b) in [("cup_slices", cup.len()), ("cone_slices", cone.len())] {
-        if b != loads.len() {
+        if b != slice_loads.len() {
             return Err(Error::invalid(
                 field,
                 b,
-                format!("{} slice loads (rollers × slices)", loads.len()),
+                format!("{} slice loads (rollers × slices)", slice_loads.len()),
             ));
         }
     }
-    for (j, r) in solver.roller_loads().iter().enumerate() {
+    for (j, r) in rollers.iter().enumerate() {
         let ratio = if r.outer_n > 0.0 {
             r.inner_n / r.outer_n
         } else {
             1.0
         };
         for k in 0..n {
-            let q = loads[j * n + k];
+            let q = slice_loads[j * n + k];
             cup[j * n + k] = q;
             cone[j * n + k] = q * ratio;
         }

@@ -1,0 +1,140 @@
+//! The friction section of a bearing case (issue 29 §1-2): `[operating]`, `[lubricant]`,
+//! `[friction]` and `[catalogue]` of a bearing case, the report's `friction` section, and
+//! errors that name the key.
+
+#![allow(clippy::unwrap_used)] // tests: a panic is a failure with its message
+
+use kontakt_case::{BearingReport, Case, Outcome};
+use std::path::PathBuf;
+
+fn examples() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples")
+}
+
+fn run(text: &str) -> kontakt::Result<BearingReport> {
+    match Case::from_toml_str(text)?.run(&examples())? {
+        Outcome::Bearing(r) => Ok(*r),
+        _ => panic!("not a bearing outcome"),
+    }
+}
+
+fn example(name: &str) -> String {
+    std::fs::read_to_string(examples().join(name)).unwrap()
+}
+
+const RIB_OIL: &str = r#"
+[operating]
+inner_rpm = 1500.0
+
+[lubricant]
+iso_vg = 68
+density_kg_m3 = 860.0
+alpha_per_mpa = 0.02
+temperature_c = 70.0
+roughness_mm = [0.0002, 0.0002]
+"#;
+
+fn rel(a: f64, b: f64) -> f64 {
+    (a / b - 1.0).abs()
+}
+
+/// The 32008 X example: the shares add up to the torque, the power balances it, the SKF
+/// torque is beside it (875.7 N·mm at ν = 44.59 mm²/s, the catalogue model's own value),
+/// the per-roller table sums to the raceway shares.
+#[test]
+fn the_32008x_example_reports_its_friction_beside_skf() {
+    let r = run(&example("bearing_32008x_friction.toml")).unwrap();
+    let f = r.friction.as_ref().unwrap();
+    let shares = f.cone_rolling_nmm
+        + f.cone_sliding_nmm
+        + f.cup_rolling_nmm
+        + f.cup_sliding_nmm
+        + f.rib_nmm
+        + f.drag_nmm;
+    assert!(rel(shares, f.total_nmm) < 1e-12);
+    let w = f.inner_rpm * std::f64::consts::PI / 30.0;
+    assert!(rel(f.inner_ring_nmm * w * 1e-3, f.power_w) < 1e-12);
+    let rollers: f64 = f.rollers.iter().map(|r| r.torque_nmm).sum();
+    assert!(rel(rollers, f.total_nmm) < 1e-12);
+    assert_eq!(f.rollers.len(), 23);
+    let skf = f.catalogue.skf_total_nmm.unwrap();
+    println!(
+        "32008 X at 1000 r/min: {:.1} N·mm (cone {:.1}, cup {:.1}), SKF {skf:.1}",
+        f.total_nmm,
+        f.cone_rolling_nmm + f.cone_sliding_nmm,
+        f.cup_rolling_nmm + f.cup_sliding_nmm
+    );
+    assert!((skf - 875.74).abs() < 0.05, "{skf}");
+    assert!(f.total_nmm > 0.0 && f.rib_nmm == 0.0);
+    assert!(
+        f.warnings
+            .iter()
+            .any(|w| w.contains("rib friction not computed"))
+    );
+    // JSON carries it
+    let json = serde_json::to_value(&r).unwrap();
+    assert!(json["friction"]["total_nmm"].as_f64().unwrap() > 0.0);
+    // without [operating] there is no friction section
+    let plain = run(&example("bearing_32008x.toml")).unwrap();
+    assert!(plain.friction.is_none());
+}
+
+/// The rib-contact TRB: the rib share is there, the starting torque at standstill is
+/// finite (no NaN) and has no power.
+#[test]
+fn rib_contact_bearing_has_a_rib_share_and_a_starting_torque() {
+    let base = example("bearing_rib_contact_60mm.toml");
+    let r = run(&format!("{base}\n{RIB_OIL}")).unwrap();
+    let f = r.friction.unwrap();
+    assert!(f.rib_nmm > 0.0 && f.rib_power_w > 0.0);
+    assert!(f.rollers.iter().all(|r| r.rib_w >= 0.0));
+    let s = run(&format!("{base}\n{}", RIB_OIL.replace("1500.0", "0.0"))).unwrap();
+    let s = s.friction.unwrap();
+    assert!(s.starting && s.total_nmm.is_finite() && s.total_nmm > 0.0);
+    assert_eq!(s.power_w, 0.0);
+    assert!(s.rib_nmm > 0.0);
+}
+
+/// Bad input: one line naming the key.
+#[test]
+fn bad_friction_input_names_the_key() {
+    let base = example("bearing_32008x_friction.toml");
+    for (from, to, key) in [
+        (
+            "inner_rpm = 1000.0",
+            "inner_rpm = 1000.0\nspeed = 3",
+            "speed",
+        ),
+        (
+            "supply = \"circulating\"",
+            "supply = \"oil_bath\"",
+            "operating.oil_level_mm",
+        ),
+        (
+            "temperature_c = 55.0",
+            "temperature_c = 400.0",
+            "lubricant.temperature_c",
+        ),
+        (
+            "skf_series = \"320 X\"",
+            "skf_series = \"999\"",
+            "catalogue.skf_series",
+        ),
+        ("y = 1.6\n", "", "catalogue.y"),
+        (
+            "inner_rpm = 1000.0",
+            "inner_rpm = 1000.0\ndrag = \"schaeffler_m0\"",
+            "operating.drag",
+        ),
+        ("[lubricant]", "[lubricant_x]", "lubricant"),
+    ] {
+        let text = base.replace(from, to);
+        assert_ne!(text, base, "{from}");
+        let e = run(&text).unwrap_err().to_string();
+        assert!(e.contains(key), "{key}: {e}");
+        println!("{key}: {e}");
+    }
+    let ball = example("bearing_6205.toml");
+    let e = run(&format!("{ball}\n{RIB_OIL}")).unwrap_err().to_string();
+    assert!(e.contains("operating"), "{e}");
+}
