@@ -3,6 +3,8 @@
 //! `kontakt friction` study, the 32008 X at Manjunath et al.'s (2023) conditions beside the
 //! SKF model, and no allocation per operating point.
 
+#![allow(clippy::unwrap_used)] // tests: a panic is a failure with its message
+
 #[path = "../../kontakt/tests/support/counting_alloc.rs"]
 mod counting_alloc;
 

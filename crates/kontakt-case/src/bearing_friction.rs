@@ -418,7 +418,7 @@ pub(crate) fn friction_report(
             match solver.rib_pair() {
                 Some(pair) => {
                     let rib = RibFrictionModel::new(
-                        pair.spec.clone(),
+                        pair.spec,
                         RollerSet {
                             count: bearing.rollers,
                             length: bearing.effective_length_mm,

@@ -590,7 +590,7 @@ pub fn iso_slice_loads(
     cone: &mut [f64],
 ) -> Result<()> {
     let z = rollers.len();
-    if z == 0 || slice_loads.len() % z != 0 {
+    if z == 0 || !slice_loads.len().is_multiple_of(z) {
         return Err(Error::invalid(
             "slice_loads",
             slice_loads.len(),
