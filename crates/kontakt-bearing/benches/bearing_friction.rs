@@ -5,20 +5,15 @@
 //! rib friction, the 1240 raceway slices; target ≤ 1 ms) and a 50-point speed sweep
 //! (target ≤ 50 ms). Run by the lead: `cargo bench -p kontakt-bearing --bench bearing_friction`.
 
+#[path = "../tests/support/friction.rs"]
+#[allow(dead_code)]
+mod support;
+
 use criterion::{Criterion, criterion_group, criterion_main};
-use kontakt::bearing::{
-    PressureModel, RibFrictionModel, RibLubrication, RollerCup, RollerRibSpec, RollerSet,
-};
-use kontakt::friction::FrictionLaw;
-use kontakt::lubrication::{
-    FilmFormula, Lubricant, RollingResistanceModel, viscosity_temperature_slope,
-};
-use kontakt_bearing::equilibrium::{RingLoad, RollerBearingSolver};
-use kontakt_bearing::friction::raceway::{RacewayLosses, RacewayLubrication};
+use kontakt::bearing::{PressureModel, RibFrictionModel, RollerCup};
 use kontakt_bearing::friction::torque::{
-    BearingFrictionModel, DragModel, FrictionOperating, iso_slice_loads,
+    BearingFrictionModel, DragModel, FrictionOperating, roller_cups,
 };
-use kontakt_bearing::geometry::RollerBearing;
 use std::hint::black_box;
 
 struct Setup {
@@ -30,63 +25,14 @@ struct Setup {
 }
 
 fn setup() -> Setup {
-    let oil = Lubricant::iso_vg(68, 860.0, 0.02).expect("oil");
-    let set = RollerSet {
-        count: 20,
-        ..RollerSet::default()
-    };
-    let rib = RibFrictionModel::new(
-        RollerRibSpec::builtin("sphere-torus-57").expect("pair"),
-        set,
-        FrictionLaw::mixed(0.12).expect("law"),
-        Some(RibLubrication {
-            lubricant: oil,
-            temperature: 70.0,
-            roughness: [0.2e-3, 0.2e-3],
-            formula: FilmFormula::Chittenden,
-        }),
-        true,
-    )
-    .expect("rib model");
-    let mut bearing = RollerBearing::of_roller_rib(rib.pair(), &set).expect("bearing");
+    let (rib, mut bearing) = support::rib_study(20);
     bearing.slices = 31;
-    let mut solver = RollerBearingSolver::new(bearing.clone()).expect("solver");
-    solver
-        .solve(&RingLoad::forces([0.0, 0.0, 15_000.0, 0.0, 0.0]).with_tilts_held())
-        .expect("solve");
-    let n = bearing.rollers * bearing.slices;
-    let (mut cup, mut cone) = (vec![0.0; n], vec![0.0; n]);
-    iso_slice_loads(
-        solver.slice_loads(),
-        solver.roller_loads(),
-        &mut cup,
-        &mut cone,
-    )
-    .expect("slices");
-    let cups = solver
-        .roller_loads()
-        .iter()
-        .map(|r| RollerCup {
-            azimuth: r.azimuth_rad,
-            outer_raceway: r.outer_n,
-        })
-        .collect();
-    let losses = RacewayLosses::new(RacewayLubrication {
-        viscosity: oil.dynamic_viscosity(70.0).expect("viscosity"),
-        alpha: oil.alpha(),
-        viscosity_slope: Some(viscosity_temperature_slope(&oil, 70.0).expect("slope")),
-        conductivity: 0.134,
-        film_starvation: 1.0,
-        starvation_degree: None,
-        roughness: 0.2e-3,
-        law: FrictionLaw::mixed(0.12).expect("law"),
-        rolling: RollingResistanceModel::BibouletHoupert,
-    })
-    .expect("losses");
+    let (cup, cone, solver) = support::solved(&bearing, 15_000.0);
     Setup {
-        model: BearingFrictionModel::new(bearing, losses).expect("model"),
+        model: BearingFrictionModel::new(bearing, support::losses(&support::vg68(), 70.0, true))
+            .expect("model"),
+        cups: roller_cups(solver.roller_loads()),
         rib,
-        cups,
         cup,
         cone,
     }

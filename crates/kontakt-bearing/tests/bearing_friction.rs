@@ -5,57 +5,45 @@
 
 #![allow(clippy::unwrap_used)] // tests: a panic is a failure with its message
 
+#[path = "support/cases.rs"]
+#[allow(dead_code)]
+mod cases;
 #[path = "../../kontakt/tests/support/counting_alloc.rs"]
 mod counting_alloc;
+#[path = "support/friction.rs"]
+mod support;
 
 use counting_alloc::allocations;
-use kontakt::bearing::{
-    PressureModel, RibFrictionModel, RibLubrication, RollerCup, RollerRibSpec, RollerSet,
-};
-use kontakt::friction::FrictionLaw;
-use kontakt::lubrication::{
-    FilmFormula, Lubricant, RollingResistanceModel, viscosity_temperature_slope,
-};
-use kontakt_bearing::equilibrium::{RingLoad, RollerBearingSolver};
-use kontakt_bearing::friction::raceway::{RacewayLosses, RacewayLubrication};
+use kontakt::bearing::{PressureModel, RollerSet};
+use kontakt::lubrication::Lubricant;
 use kontakt_bearing::friction::skf2004::{SkfBearing, SkfOptions, TaperedSeries, skf2004};
 use kontakt_bearing::friction::torque::{
-    BearingFrictionModel, DragModel, FrictionOperating, iso_slice_loads,
+    BearingFriction, BearingFrictionModel, DragModel, FrictionOperating, roller_cups,
 };
 use kontakt_bearing::friction::{Envelope, Lubrication, OperatingPoint, RPM_PER_RAD_S};
 use kontakt_bearing::geometry::RollerBearing;
+use support::{losses, rib_study, solved, vg68};
 
-fn losses(oil: &Lubricant, temperature: f64, thermal: bool) -> RacewayLosses {
-    RacewayLosses::new(RacewayLubrication {
-        viscosity: oil.dynamic_viscosity(temperature).unwrap(),
-        alpha: oil.alpha(),
-        viscosity_slope: thermal.then(|| viscosity_temperature_slope(oil, temperature).unwrap()),
-        conductivity: 0.134,
-        film_starvation: 1.0,
-        starvation_degree: None,
-        roughness: 0.2e-3,
-        law: FrictionLaw::mixed(0.12).unwrap(),
-        rolling: RollingResistanceModel::BibouletHoupert,
-    })
-    .unwrap()
-}
-
-fn solved(bearing: &RollerBearing, axial: f64) -> (Vec<f64>, Vec<f64>, RollerBearingSolver) {
-    let mut solver = RollerBearingSolver::new(bearing.clone()).unwrap();
-    let s = solver
-        .solve(&RingLoad::forces([0.0, 0.0, axial, 0.0, 0.0]).with_tilts_held())
-        .unwrap();
-    assert!(s.status.converged());
-    let n = bearing.rollers * bearing.slices;
-    let (mut cup, mut cone) = (vec![0.0; n], vec![0.0; n]);
-    iso_slice_loads(
-        solver.slice_loads(),
-        solver.roller_loads(),
-        &mut cup,
-        &mut cone,
-    )
-    .unwrap();
-    (cup, cone, solver)
+/// The bearing's friction at the inner-ring speed `w` \[rad/s\] (outer ring fixed).
+fn at(
+    model: &mut BearingFrictionModel,
+    w: f64,
+    (cup, cone): (&[f64], &[f64]),
+    rib: Option<&[f64]>,
+    basis: Option<(f64, f64)>,
+) -> BearingFriction {
+    model
+        .evaluate(&FrictionOperating {
+            inner_speed: w,
+            outer_speed: 0.0,
+            cup_slices: cup,
+            cone_slices: cone,
+            tilts: None,
+            rib,
+            drag: DragModel::None,
+            coefficient_basis: basis,
+        })
+        .unwrap()
 }
 
 /// The rib study bearing (sphere-torus-57, 17 rollers) under 15 kN axial at 1500 r/min:
@@ -65,53 +53,20 @@ fn solved(bearing: &RollerBearing, axial: f64) -> (Vec<f64>, Vec<f64>, RollerBea
 /// Q_e = F_a/(Z sin α_o)) to 1e-9.
 #[test]
 fn rib_share_equals_the_rib_friction_study() {
-    let oil = RibLubrication {
-        lubricant: Lubricant::iso_vg(68, 860.0, 0.02).unwrap(),
-        temperature: 70.0,
-        roughness: [0.2e-3, 0.2e-3],
-        formula: FilmFormula::Chittenden,
-    };
-    let rib = RibFrictionModel::new(
-        RollerRibSpec::builtin("sphere-torus-57").unwrap(),
-        RollerSet::default(),
-        FrictionLaw::mixed(0.12).unwrap(),
-        Some(oil),
-        true,
-    )
-    .unwrap();
-    let mut bearing = RollerBearing::of_roller_rib(rib.pair(), &RollerSet::default()).unwrap();
-    bearing.slices = 15;
+    let (rib, bearing) = rib_study(17);
     let fa = 15_000.0;
     let w = 1500.0 / RPM_PER_RAD_S;
     let (cup, cone, solver) = solved(&bearing, fa);
     let k = rib.kinematics(w, 0.0).unwrap();
-    let cups: Vec<RollerCup> = solver
-        .roller_loads()
-        .iter()
-        .map(|r| RollerCup {
-            azimuth: r.azimuth_rad,
-            outer_raceway: r.outer_n,
-        })
-        .collect();
-    let loads = rib.roller_loads_on_cups(&k, &cups).unwrap();
+    let loads = rib
+        .roller_loads_on_cups(&k, &roller_cups(solver.roller_loads()))
+        .unwrap();
     let per_roller = rib
         .evaluate_rollers(PressureModel::Hertz, &k, &loads)
         .unwrap();
     let powers: Vec<f64> = per_roller.rollers.iter().map(|r| r.power()).collect();
-    let lub = Lubricant::iso_vg(68, 860.0, 0.02).unwrap();
-    let mut model = BearingFrictionModel::new(bearing, losses(&lub, 70.0, true)).unwrap();
-    let f = model
-        .evaluate(&FrictionOperating {
-            inner_speed: w,
-            outer_speed: 0.0,
-            cup_slices: &cup,
-            cone_slices: &cone,
-            tilts: None,
-            rib: Some(&powers),
-            drag: DragModel::None,
-            coefficient_basis: None,
-        })
-        .unwrap();
+    let mut model = BearingFrictionModel::new(bearing, losses(&vg68(), 70.0, true)).unwrap();
+    let f = at(&mut model, w, (&cup, &cone), Some(&powers), None);
     let study = rib
         .evaluate(
             PressureModel::Hertz,
@@ -145,7 +100,7 @@ fn rib_share_equals_the_rib_friction_study() {
     };
     BearingFrictionModel::new(
         RollerBearing::of_roller_rib(rib.pair(), &twenty).unwrap(),
-        losses(&lub, 70.0, true),
+        losses(&vg68(), 70.0, true),
     )
     .unwrap();
 }
@@ -184,18 +139,7 @@ fn trb_32008x_at_manjunath_conditions_beside_skf() {
     );
     for n in [200.0, 400.0, 600.0, 1000.0, 1400.0, 1800.0, 2200.0] {
         let w = n / RPM_PER_RAD_S;
-        let f = model
-            .evaluate(&FrictionOperating {
-                inner_speed: w,
-                outer_speed: 0.0,
-                cup_slices: &cup,
-                cone_slices: &cone,
-                tilts: None,
-                rib: None,
-                drag: DragModel::None,
-                coefficient_basis: Some((fa, 40.0)),
-            })
-            .unwrap();
+        let f = at(&mut model, w, (&cup, &cone), None, Some((fa, 40.0)));
         let skf = skf2004(
             &skf_bearing,
             &env,
@@ -230,18 +174,9 @@ fn trb_32008x_at_manjunath_conditions_beside_skf() {
 /// Issue 29, "Speed": after planning, one operating point allocates nothing.
 #[test]
 fn friction_of_an_operating_point_allocates_nothing() {
-    let mut b = RollerBearing::tapered(
-        108.5,
-        20,
-        17.0,
-        20.7,
-        16.0_f64.to_radians(),
-        11.7_f64.to_radians(),
-    );
-    b.slices = 31;
+    let b = cases::trb();
     let (cup, cone, _) = solved(&b, 20_000.0);
-    let oil = Lubricant::iso_vg(68, 860.0, 0.02).unwrap();
-    let mut model = BearingFrictionModel::new(b, losses(&oil, 70.0, true)).unwrap();
+    let mut model = BearingFrictionModel::new(b, losses(&vg68(), 70.0, true)).unwrap();
     let rib = vec![1.0; 20];
     let tilts = vec![1e-4; 20];
     let (r, n) = allocations(|| {

@@ -12,15 +12,16 @@ use crate::friction_case::{FrictionSpec, LubricantSpec};
 use kontakt::bearing::{
     PressureModel, RibFrictionModel, RibLubrication, RollerLoads, RollerRibLoad, RollerSet,
 };
-use kontakt::lubrication::{RollingResistanceModel, viscosity_temperature_slope};
+use kontakt::lubrication::RollingResistanceModel;
 use kontakt::{Error, Result};
-use kontakt_bearing::friction::raceway::{RacewayLosses, RacewayLubrication};
+use kontakt_bearing::friction::raceway::RacewayLosses;
 use kontakt_bearing::friction::schaeffler::m0;
 use kontakt_bearing::friction::skf2004::{
     CylindricalSeries, SkfBearing, SkfOptions, TaperedSeries, skf2004,
 };
 use kontakt_bearing::friction::torque::{
     BearingFriction, BearingFrictionModel, DragModel, FrictionOperating, iso_slice_loads,
+    raceway_lubrication,
 };
 use kontakt_bearing::friction::{Envelope, Lubrication, OperatingPoint, RPM_PER_RAD_S};
 use kontakt_bearing::geometry::{RollerBearing, RollerBearingKind};
@@ -354,25 +355,21 @@ pub(crate) fn friction_report(
         .map_err(|e| e.map_field(|_| "lubricant.temperature_c".to_string()))?;
     let law = friction.copied().unwrap_or_default().law(true)?;
     let sigma = lub.roughness_mm[0].hypot(lub.roughness_mm[1]);
-    let losses = RacewayLosses::new(RacewayLubrication {
-        viscosity: oil.dynamic_viscosity(t)?,
-        alpha: oil.alpha(),
-        viscosity_slope: if op.thermal {
-            Some(viscosity_temperature_slope(&oil, t)?)
-        } else {
-            None
-        },
-        conductivity: op.conductivity_w_mk,
-        film_starvation: op.film_starvation,
-        starvation_degree: op.starvation_degree,
-        roughness: sigma,
+    let mut raceway = raceway_lubrication(
+        &oil,
+        t,
+        op.thermal,
+        sigma,
         law,
-        rolling: match op.rolling_resistance {
+        match op.rolling_resistance {
             RollingSpec::BibouletHoupert => RollingResistanceModel::BibouletHoupert,
             RollingSpec::ZhouHoeprich => RollingResistanceModel::ZhouHoeprich,
         },
-    })
-    .map_err(|e| {
+    )?;
+    raceway.conductivity = op.conductivity_w_mk;
+    raceway.film_starvation = op.film_starvation;
+    raceway.starvation_degree = op.starvation_degree;
+    let losses = RacewayLosses::new(raceway).map_err(|e| {
         e.map_field(|f| match f {
             "conductivity" => "operating.conductivity_w_mk".into(),
             "starvation_factor" => "operating.film_starvation".into(),

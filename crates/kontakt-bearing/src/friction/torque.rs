@@ -622,6 +622,54 @@ pub fn iso_slice_loads(
     Ok(())
 }
 
+/// Every roller's cup load at its azimuth, as the rib friction takes them
+/// (`kontakt::bearing::RibFrictionModel::roller_loads_on_cups`), from an ISO slice model's
+/// rollers. Allocates the list.
+pub fn roller_cups(rollers: &[crate::equilibrium::RollerLoad]) -> Vec<kontakt::bearing::RollerCup> {
+    rollers
+        .iter()
+        .map(|r| kontakt::bearing::RollerCup {
+            azimuth: r.azimuth_rad,
+            outer_raceway: r.outer_n,
+        })
+        .collect()
+}
+
+/// The raceway lubrication of `oil` at `temperature_c` \[°C\]: its dynamic viscosity and
+/// pressure-viscosity coefficient, the temperature slope of the viscosity when `thermal`
+/// (Zhu-Cheng factor), conductivity 0.134 W/(m·K) (mineral oil), fully flooded, composite
+/// roughness `roughness` \[mm\], the law `law` and the fit `rolling`.
+///
+/// # Errors
+/// Those of the lubricant at `temperature_c` (field `temperature_c`).
+pub fn raceway_lubrication(
+    oil: &kontakt::lubrication::Lubricant,
+    temperature_c: f64,
+    thermal: bool,
+    roughness: f64,
+    law: kontakt::friction::FrictionLaw,
+    rolling: kontakt::lubrication::RollingResistanceModel,
+) -> Result<super::raceway::RacewayLubrication> {
+    Ok(super::raceway::RacewayLubrication {
+        viscosity: oil.dynamic_viscosity(temperature_c)?,
+        alpha: oil.alpha(),
+        viscosity_slope: if thermal {
+            Some(kontakt::lubrication::viscosity_temperature_slope(
+                oil,
+                temperature_c,
+            )?)
+        } else {
+            None
+        },
+        conductivity: 0.134,
+        film_starvation: 1.0,
+        starvation_degree: None,
+        roughness,
+        law,
+        rolling,
+    })
+}
+
 #[cfg(test)]
 #[path = "torque_tests.rs"]
 mod tests;
