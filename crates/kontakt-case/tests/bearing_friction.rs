@@ -4,23 +4,10 @@
 
 #![allow(clippy::unwrap_used)] // tests: a panic is a failure with its message
 
-use kontakt_case::{BearingReport, Case, Outcome};
-use std::path::PathBuf;
+#[path = "support/bearing_run.rs"]
+mod bearing_run;
 
-fn examples() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples")
-}
-
-fn run(text: &str) -> kontakt::Result<BearingReport> {
-    match Case::from_toml_str(text)?.run(&examples())? {
-        Outcome::Bearing(r) => Ok(*r),
-        _ => panic!("not a bearing outcome"),
-    }
-}
-
-fn example(name: &str) -> String {
-    std::fs::read_to_string(examples().join(name)).unwrap()
-}
+use bearing_run::{example, run};
 
 const RIB_OIL: &str = r#"
 [operating]

@@ -5,34 +5,25 @@
 
 mod support;
 
-use support::{bad, kontakt};
+use support::{bad, kontakt, run_json};
 
 #[test]
 fn friction_section_in_text_json_and_csv() {
     let path = support::example("bearing_32008x_friction.toml");
+    let path = path.to_str().unwrap();
     let dir = support::tempdir("bearing_friction", "csv");
     let csv = dir.join("rollers.csv");
     let out = kontakt()
-        .args(["bearing", path.to_str().unwrap(), "--csv"])
-        .arg(&csv)
+        .args(["bearing", path, "--csv", csv.to_str().unwrap()])
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
     let text = String::from_utf8(out.stdout).unwrap();
     assert!(text.contains("friction at 1000/0 r/min"), "{text}");
     assert!(text.contains("SKF 2004: 875.74 N·mm"), "{text}");
     let rows = support::read_csv(&dir.join("rollers.friction.csv"));
     assert_eq!(rows.len(), 23);
     assert!(rows[0].contains_key("cone_rolling_w"));
-    let json = kontakt()
-        .args(["bearing", path.to_str().unwrap(), "--json"])
-        .output()
-        .unwrap();
-    let v: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
+    let v = run_json(&["bearing", path]);
     assert!(v["friction"]["total_nmm"].as_f64().unwrap() > 0.0);
 }
 

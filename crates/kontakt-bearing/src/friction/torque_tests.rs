@@ -1,21 +1,12 @@
 use super::*;
-use crate::friction::raceway::RacewayLubrication;
 use kontakt::friction::{FluidShear, FrictionLaw, LoadSharing};
 use kontakt::lubrication::RollingResistanceModel;
 
+/// ISO VG 68 at 40 °C (η₀ ≈ 0.058 Pa·s), isothermal, σ = 0.2 µm.
 fn lub(law: FrictionLaw, rolling: RollingResistanceModel) -> RacewayLosses {
-    RacewayLosses::new(RacewayLubrication {
-        viscosity: 0.03e-6,
-        alpha: 0.02,
-        viscosity_slope: None,
-        conductivity: 0.134,
-        film_starvation: 1.0,
-        starvation_degree: None,
-        roughness: 0.2e-3,
-        law,
-        rolling,
-    })
-    .unwrap()
+    let oil = kontakt::lubrication::Lubricant::iso_vg(68, 860.0, 0.02).unwrap();
+    RacewayLosses::new(raceway_lubrication(&oil, 40.0, false, 0.2e-3, law, rolling).unwrap())
+        .unwrap()
 }
 
 fn boundary(mu: f64) -> FrictionLaw {
