@@ -918,14 +918,53 @@ pub(crate) fn run_bearing_case_unchecked(case: &BearingCase) -> Result<BearingRe
     let (mut planned, label) = plan(case)?;
     let mut report = solve_planned(case, label, &mut planned, &case.load, None)?;
     if let Some(op) = &case.operating {
-        report.friction = Some(crate::bearing_friction::of_planned(
-            case,
-            op,
-            &planned,
-            report.force_n,
-        )?);
+        report.friction = Some(friction_of_planned(case, op, &planned, report.force_n)?);
     }
     Ok(report)
+}
+
+/// The friction section (`crate::bearing_friction`) of a case whose `planned` solver has
+/// just solved; an error naming `operating` for a ball bearing.
+fn friction_of_planned(
+    case: &BearingCase,
+    op: &crate::bearing_friction::OperatingSpec,
+    planned: &Planned,
+    force: [f64; 3],
+) -> Result<crate::bearing_friction::FrictionReport> {
+    use crate::bearing_friction::Solved;
+    let (bearing, solved) = match planned {
+        Planned::Roller(s) => (
+            s.bearing(),
+            Solved::Iso {
+                slice_loads: s.slice_loads(),
+                rollers: s.roller_loads(),
+            },
+        ),
+        Planned::Coupled(s) => (
+            s.bearing(),
+            Solved::Iso {
+                slice_loads: s.slice_loads(),
+                rollers: s.roller_loads(),
+            },
+        ),
+        Planned::RibRoller(s) => (s.bearing(), Solved::Rib(s)),
+        Planned::Ball { .. } => {
+            return Err(Error::invalid(
+                "operating",
+                "given for a ball bearing",
+                "[operating] with a tapered or cylindrical roller bearing (the friction torque of ball bearings is not built yet)",
+            ));
+        }
+    };
+    crate::bearing_friction::friction_report(
+        op,
+        case.lubricant.as_ref(),
+        case.friction.as_ref(),
+        case.catalogue.as_ref(),
+        bearing,
+        solved,
+        force,
+    )
 }
 
 /// The solver of a bearing case, planned once (the state of a [`crate::BearingModel`]).

@@ -262,52 +262,6 @@ pub(crate) enum Solved<'a> {
     Rib(&'a RibContactSolver),
 }
 
-/// The friction section of a bearing case whose `planned` solver has just solved.
-///
-/// # Errors
-/// As [`friction_report`]; key `operating` for a ball bearing.
-pub(crate) fn of_planned(
-    case: &crate::bearing_case::BearingCase,
-    op: &OperatingSpec,
-    planned: &crate::bearing_case::Planned,
-    force: [f64; 3],
-) -> Result<FrictionReport> {
-    use crate::bearing_case::Planned;
-    let (bearing, solved) = match planned {
-        Planned::Roller(s) => (
-            s.bearing(),
-            Solved::Iso {
-                slice_loads: s.slice_loads(),
-                rollers: s.roller_loads(),
-            },
-        ),
-        Planned::Coupled(s) => (
-            s.bearing(),
-            Solved::Iso {
-                slice_loads: s.slice_loads(),
-                rollers: s.roller_loads(),
-            },
-        ),
-        Planned::RibRoller(s) => (s.bearing(), Solved::Rib(s)),
-        Planned::Ball { .. } => {
-            return Err(Error::invalid(
-                "operating",
-                "given for a ball bearing",
-                "[operating] with a tapered or cylindrical roller bearing (the friction torque of ball bearings is not built yet)",
-            ));
-        }
-    };
-    friction_report(
-        op,
-        case.lubricant.as_ref(),
-        case.friction.as_ref(),
-        case.catalogue.as_ref(),
-        bearing,
-        solved,
-        force,
-    )
-}
-
 fn key(prefix: &str) -> impl Fn(&str) -> String + '_ {
     move |f: &str| format!("{prefix}.{f}")
 }
