@@ -438,6 +438,23 @@ pub(crate) fn friction_report(
             })?,
         },
     };
+    if let Lubrication::OilBath { level_mm } = lubrication {
+        if !(level_mm.is_finite() && level_mm >= 0.0) {
+            return Err(Error::invalid(
+                "operating.oil_level_mm",
+                level_mm,
+                "a finite oil level >= 0 mm above the lowest point of the outer raceway",
+            ));
+        }
+        // The bearing's centre lies the outer raceway's mid radius above its lowest point.
+        let centre = 0.5 * bearing.pitch_diameter_mm
+            + 0.5 * bearing.roller_diameter_mm * bearing.contact_angle_rad.cos();
+        if level_mm > centre {
+            warnings.push(format!(
+                "oil level {level_mm} mm is above the bearing's centre ({centre:.1} mm above the lowest point of the outer raceway): outside what the catalogue drag models were fitted for"
+            ));
+        }
+    }
     let (fr, fa) = (force[0].hypot(force[1]), force[2].abs());
     let point = OperatingPoint {
         speed_rad_s: (wi - wo).abs(),

@@ -121,6 +121,22 @@ fn bad_friction_input_names_the_key() {
         assert!(e.contains(key), "{key}: {e}");
         println!("{key}: {e}");
     }
+    let bath = base.replace(
+        "supply = \"circulating\"",
+        "supply = \"oil_bath\"\noil_level_mm = 40.0",
+    );
+    let f = run(&bath).unwrap().friction.unwrap();
+    assert!(
+        f.warnings
+            .iter()
+            .any(|w| w.contains("above the bearing's centre")),
+        "{:?}",
+        f.warnings
+    );
+    let e = run(&bath.replace("oil_level_mm = 40.0", "oil_level_mm = -1.0"))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("operating.oil_level_mm"), "{e}");
     let ball = example("bearing_6205.toml");
     let e = run(&format!("{ball}\n{RIB_OIL}")).unwrap_err().to_string();
     assert!(e.contains("operating"), "{e}");
