@@ -12,8 +12,11 @@ use crate::friction_case::{FrictionSpec, LubricantSpec};
 use kontakt::bearing::{
     PressureModel, RibFrictionModel, RibLubrication, RollerLoads, RollerRibLoad, RollerSet,
 };
-use kontakt::lubrication::RollingResistanceModel;
+use kontakt::lubrication::{RollingResistanceModel, viscosity_temperature_slope};
 use kontakt::{Error, Result};
+use kontakt_bearing::friction::aihara::{
+    AiharaBearing, AiharaLubricant, aihara, rib_film_parameter,
+};
 use kontakt_bearing::friction::raceway::RacewayLosses;
 use kontakt_bearing::friction::schaeffler::m0;
 use kontakt_bearing::friction::skf2004::{
@@ -190,6 +193,12 @@ pub struct CatalogueTorques {
     /// Schaeffler M0 (absent without f0).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub schaeffler_m0_nmm: Option<f64>,
+    /// Aihara (1987) rolling part M_R (running TRB under pure axial load).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub aihara_rolling_nmm: Option<f64>,
+    /// Aihara (1987) total M_R + M_S (with the rib of `roller_model = "rib_contact"`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub aihara_total_nmm: Option<f64>,
 }
 
 /// The report's `friction` section.
@@ -344,6 +353,9 @@ pub(crate) fn friction_report(
     let mut rib_loads = vec![0.0; bearing.rollers];
     let mut azimuths = vec![0.0; bearing.rollers];
     let mut rib_values: Option<Vec<f64>> = None;
+    // Aihara's rib height e and rib film parameter (1.25 h_min/σ) from the most loaded
+    // rib contact (running only).
+    let mut aihara_rib: Option<(f64, f64)> = None;
     match solved {
         Solved::Iso {
             slice_loads,
@@ -398,6 +410,15 @@ pub(crate) fn friction_report(
                         })
                         .collect();
                     let f = rib.evaluate_rollers(PressureModel::Hertz, &k, &loads)?;
+                    if let Some(c) = f.most_loaded().and_then(|r| r.friction.as_ref())
+                        && let Some(film) = &c.film_thickness
+                    {
+                        let sigma_rib = rib_lub.roughness[0].hypot(rib_lub.roughness[1]);
+                        aihara_rib = Some((
+                            c.contact_height,
+                            rib_film_parameter(film.minimum, sigma_rib)?,
+                        ));
+                    }
                     rib_values = Some(
                         f.rollers
                             .iter()
@@ -502,6 +523,51 @@ pub(crate) fn friction_report(
         }
     } else {
         warnings.push("catalogue torques not computed: give [catalogue] (bore_mm, outer_mm, width_mm, skf_series, y)".to_string());
+    }
+    if bearing.kind == RollerBearingKind::Tapered {
+        if fa > 0.0 && fr <= 1e-9 * fa && !starting {
+            let (ri0, ro0, _) = model.pitch_radii();
+            let slope = viscosity_temperature_slope(&oil, t)?;
+            let eta = oil.dynamic_viscosity(t)?;
+            let (e, lambda_r) = aihara_rib.unwrap_or((0.0, 0.0));
+            let a = aihara(
+                &AiharaBearing {
+                    rollers: u32::try_from(bearing.rollers).unwrap_or(u32::MAX),
+                    roller_diameter_mm: bearing.roller_diameter_mm,
+                    inner_radius_mm: ri0,
+                    outer_radius_mm: ro0,
+                    effective_length_mm: bearing.effective_length_mm,
+                    cup_angle_rad: bearing.contact_angle_rad,
+                    roller_half_angle_rad: 0.5
+                        * (bearing.contact_angle_rad - bearing.cone_angle_rad),
+                    rib_height_mm: e,
+                    reduced_modulus_mpa: 2.0
+                        * kontakt::material::effective_modulus(
+                            &kontakt::material::ElasticMaterial::STEEL,
+                            &kontakt::material::ElasticMaterial::STEEL,
+                        ),
+                },
+                &AiharaLubricant {
+                    viscosity_mpa_s: eta,
+                    pressure_viscosity_per_mpa: oil.alpha(),
+                    temperature_viscosity_per_k: if op.thermal { -slope / eta } else { 0.0 },
+                    thermal_conductivity_w_mk: op.conductivity_w_mk,
+                },
+                (wi - wo).abs(),
+                fa,
+                lambda_r,
+            )?;
+            cat.aihara_rolling_nmm = Some(a.rolling_nmm);
+            if aihara_rib.is_some() {
+                cat.aihara_total_nmm = Some(a.total_nmm);
+            } else {
+                warnings.push("Aihara (1987): rolling part only (the rib needs roller_model = \"rib_contact\")".into());
+            }
+        } else {
+            warnings.push(
+                "Aihara (1987) not computed: it is for a running TRB under pure axial load".into(),
+            );
+        }
     }
     let drag = match op.drag {
         DragSpec::None => DragModel::None,
@@ -666,6 +732,12 @@ impl FrictionReport {
             out.push(match c.schaeffler_total_nmm {
                 Some(t) => format!("  Schaeffler: M0 + M1 = {t:.2} N·mm (M0 {m:.2})"),
                 None => format!("  Schaeffler: M0 = {m:.2} N·mm"),
+            });
+        }
+        if let Some(m) = c.aihara_rolling_nmm {
+            out.push(match c.aihara_total_nmm {
+                Some(t) => format!("  Aihara 1987: {t:.2} N·mm (rolling {m:.2})"),
+                None => format!("  Aihara 1987: rolling {m:.2} N·mm (rib not computed)"),
             });
         }
         out.extend(self.warnings.iter().map(|w| format!("  warning: {w}")));

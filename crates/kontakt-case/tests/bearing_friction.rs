@@ -74,6 +74,21 @@ fn rib_contact_bearing_has_a_rib_share_and_a_starting_torque() {
     let r = run(&format!("{base}\n{RIB_OIL}")).unwrap();
     let f = r.friction.unwrap();
     assert!(f.rib_nmm > 0.0 && f.rib_power_w > 0.0);
+    // under combined load Aihara is not computed (pure axial load only)
+    assert!(f.catalogue.aihara_total_nmm.is_none());
+    let axial = run(&format!("{base}\n{RIB_OIL}").replace(
+        "force_n = [6000.0, 0.0, 15000.0]",
+        "force_n = [0.0, 0.0, 15000.0]",
+    ))
+    .unwrap()
+    .friction
+    .unwrap();
+    let aihara = axial.catalogue.aihara_total_nmm.unwrap();
+    assert!(aihara > axial.catalogue.aihara_rolling_nmm.unwrap());
+    println!(
+        "rib-contact TRB, 15 kN axial, 1500 r/min: {:.1} N·mm (rib {:.1}), Aihara {aihara:.1}",
+        axial.total_nmm, axial.rib_nmm
+    );
     assert!(f.rollers.iter().all(|r| r.rib_w >= 0.0));
     let s = run(&format!("{base}\n{}", RIB_OIL.replace("1500.0", "0.0"))).unwrap();
     let s = s.friction.unwrap();
