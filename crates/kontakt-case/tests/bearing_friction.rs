@@ -156,3 +156,32 @@ fn bad_friction_input_names_the_key() {
     let e = run(&format!("{ball}\n{RIB_OIL}")).unwrap_err().to_string();
     assert!(e.contains("operating"), "{e}");
 }
+
+/// The 32008 X example over Manjunath et al.'s (2023) speeds (200-2200 r/min): the torque
+/// breakdown beside SKF 2004 and Aihara (1987, rolling part), recorded in
+/// docs/bearing-friction.md §6; the raceway torque grows with speed (the rolling
+/// resistance, ∝ u^~0.6).
+#[test]
+fn the_32008x_over_speed_beside_the_catalogue_models() {
+    let base = example("bearing_32008x_friction.toml");
+    let mut last = 0.0;
+    println!("n r/min | cone | cup | total | SKF (rolling, sliding) | Aihara rolling | min Λ");
+    for n in [200, 400, 600, 1000, 1400, 1800, 2200] {
+        let text = base.replace("inner_rpm = 1000.0", &format!("inner_rpm = {n}.0"));
+        let f = run(&text).unwrap().friction.unwrap();
+        let c = &f.catalogue;
+        println!(
+            "{n} | {:.1} | {:.1} | {:.1} | {:.1} ({:.1}, {:.1}) | {:.1} | {:.2}",
+            f.cone_rolling_nmm + f.cone_sliding_nmm,
+            f.cup_rolling_nmm + f.cup_sliding_nmm,
+            f.total_nmm,
+            c.skf_total_nmm.unwrap(),
+            c.skf_rolling_nmm.unwrap(),
+            c.skf_sliding_nmm.unwrap(),
+            c.aihara_rolling_nmm.unwrap(),
+            f.min_lambda.unwrap()
+        );
+        assert!(f.total_nmm > last);
+        last = f.total_nmm;
+    }
+}
