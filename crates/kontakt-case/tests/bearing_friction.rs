@@ -185,3 +185,18 @@ fn the_32008x_over_speed_beside_the_catalogue_models() {
         last = f.total_nmm;
     }
 }
+
+/// A cylindrical roller bearing: its rollers do not slide (§1), so all its raceway torque
+/// is rolling resistance; a thrust bearing with `[operating]` is an error naming the table.
+#[test]
+fn cylindrical_bearing_rolls_without_sliding_and_thrust_is_refused() {
+    let r = run(&format!("{}\n{RIB_OIL}", example("bearing_nu_crb.toml"))).unwrap();
+    let f = r.friction.unwrap();
+    assert!(f.total_nmm > 0.0);
+    assert!(f.sliding_power_w.abs() <= 1e-12 * f.power_w, "{}", f.sliding_power_w);
+    assert_eq!(f.rib_nmm, 0.0);
+    let e = run(&format!("{}\n{RIB_OIL}", example("bearing_81107_thrust.toml")))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("operating"), "{e}");
+}
