@@ -32,7 +32,7 @@ use kontakt_bearing::roller_equilibrium::RibContactSolver;
 use serde::{Deserialize, Serialize};
 
 /// `[operating]`: the operating point of the friction torque.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct OperatingSpec {
     /// Inner ring speed \[r/min\].
@@ -65,6 +65,10 @@ pub struct OperatingSpec {
     /// Biboulet-Houpert degree of starvation S_a (default: fully flooded).
     #[serde(default)]
     pub starvation_degree: Option<f64>,
+    /// Inner ring speeds of a speed sweep \[r/min\] on the same load distribution, each
+    /// beside the catalogue models (`friction.speed_sweep`; 1 to 10 000 speeds).
+    #[serde(default)]
+    pub sweep_inner_rpm: Option<Vec<f64>>,
 }
 
 fn yes() -> bool {
@@ -258,9 +262,42 @@ pub struct FrictionReport {
     /// Results to treat with care.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<String>,
+    /// With `operating.sweep_inner_rpm`: the torque at each of its speeds.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub speed_sweep: Vec<FrictionSweepRow>,
+}
+
+/// One speed of `operating.sweep_inner_rpm` (torques N·mm, power W).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct FrictionSweepRow {
+    /// Inner ring speed \[r/min\].
+    pub inner_rpm: f64,
+    /// Bearing torque \[N·mm\].
+    pub total_nmm: f64,
+    /// Cone share (rolling + sliding) \[N·mm\].
+    pub cone_nmm: f64,
+    /// Cup share (rolling + sliding) \[N·mm\].
+    pub cup_nmm: f64,
+    /// Rib share \[N·mm\].
+    pub rib_nmm: f64,
+    /// Drag share \[N·mm\].
+    pub drag_nmm: f64,
+    /// Total power \[W\].
+    pub power_w: f64,
+    /// Friction coefficient μ.
+    pub coefficient: Option<f64>,
+    /// Smallest raceway Λ.
+    pub min_lambda: Option<f64>,
+    /// SKF 2004 total \[N·mm\].
+    pub skf_total_nmm: Option<f64>,
+    /// Aihara (1987) total, or its rolling part without the rib \[N·mm\].
+    pub aihara_nmm: Option<f64>,
+    /// Schaeffler M0 (+ M1) \[N·mm\].
+    pub schaeffler_nmm: Option<f64>,
 }
 
 /// The solved state a friction evaluation reads.
+#[derive(Clone, Copy)]
 pub(crate) enum Solved<'a> {
     /// The ISO (or coupled) slice model: its slice loads and rollers.
     Iso {
@@ -282,6 +319,58 @@ fn key(prefix: &str) -> impl Fn(&str) -> String + '_ {
 /// [`Error::InvalidInput`] naming the case key (`operating.inner_rpm`, `lubricant.*`,
 /// `friction.*`, `catalogue.*`, `operating.drag`).
 pub(crate) fn friction_report(
+    op: &OperatingSpec,
+    lubricant: Option<&LubricantSpec>,
+    friction: Option<&FrictionSpec>,
+    catalogue: Option<&CatalogueSpec>,
+    bearing: &RollerBearing,
+    solved: Solved<'_>,
+    force: [f64; 3],
+) -> Result<FrictionReport> {
+    let at = |o: &OperatingSpec| point(o, lubricant, friction, catalogue, bearing, solved, force);
+    let mut report = at(op)?;
+    if let Some(speeds) = &op.sweep_inner_rpm {
+        if speeds.is_empty() || speeds.len() > 10_000 {
+            return Err(Error::invalid(
+                "operating.sweep_inner_rpm",
+                format!("{} speeds", speeds.len()),
+                "1 to 10000 speeds in r/min",
+            ));
+        }
+        for &n in speeds {
+            let o = OperatingSpec {
+                inner_rpm: n,
+                sweep_inner_rpm: None,
+                ..op.clone()
+            };
+            let p = at(&o).map_err(|e| {
+                e.map_field(|f| match f {
+                    "operating.inner_rpm" => "operating.sweep_inner_rpm".to_string(),
+                    other => other.to_string(),
+                })
+            })?;
+            let c = &p.catalogue;
+            report.speed_sweep.push(FrictionSweepRow {
+                inner_rpm: n,
+                total_nmm: p.total_nmm,
+                cone_nmm: p.cone_rolling_nmm + p.cone_sliding_nmm,
+                cup_nmm: p.cup_rolling_nmm + p.cup_sliding_nmm,
+                rib_nmm: p.rib_nmm,
+                drag_nmm: p.drag_nmm,
+                power_w: p.power_w,
+                coefficient: p.coefficient,
+                min_lambda: p.min_lambda,
+                skf_total_nmm: c.skf_total_nmm,
+                aihara_nmm: c.aihara_total_nmm.or(c.aihara_rolling_nmm),
+                schaeffler_nmm: c.schaeffler_total_nmm.or(c.schaeffler_m0_nmm),
+            });
+        }
+    }
+    Ok(report)
+}
+
+/// [`friction_report`] at `op.inner_rpm`.
+fn point(
     op: &OperatingSpec,
     lubricant: Option<&LubricantSpec>,
     friction: Option<&FrictionSpec>,
@@ -667,6 +756,7 @@ pub(crate) fn friction_report(
         catalogue: cat,
         rollers,
         warnings,
+        speed_sweep: Vec::new(),
     })
 }
 
@@ -741,6 +831,24 @@ impl FrictionReport {
             });
         }
         out.extend(self.warnings.iter().map(|w| format!("  warning: {w}")));
+        if !self.speed_sweep.is_empty() {
+            out.push("  speed sweep (N·mm): n r/min | total | cone | cup | rib | drag | SKF | Aihara | min Λ".into());
+            let opt = |v: Option<f64>, d: usize| v.map_or("-".to_string(), |x| format!("{x:.d$}"));
+            for r in &self.speed_sweep {
+                out.push(format!(
+                    "    {:8.1} | {:9.2} | {:8.2} | {:8.2} | {:8.2} | {:7.2} | {:>9} | {:>9} | {:>6}",
+                    r.inner_rpm,
+                    r.total_nmm,
+                    r.cone_nmm,
+                    r.cup_nmm,
+                    r.rib_nmm,
+                    r.drag_nmm,
+                    opt(r.skf_total_nmm, 2),
+                    opt(r.aihara_nmm, 2),
+                    opt(r.min_lambda, 3)
+                ));
+            }
+        }
         out
     }
 }
