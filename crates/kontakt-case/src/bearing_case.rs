@@ -916,11 +916,7 @@ pub fn run_bearing_case(case: &BearingCase) -> Result<BearingReport> {
 /// solve, the first solve of a [`crate::BearingModel`].
 pub(crate) fn run_bearing_case_unchecked(case: &BearingCase) -> Result<BearingReport> {
     let (mut planned, label) = plan(case)?;
-    let mut report = solve_planned(case, label, &mut planned, &case.load, None)?;
-    if let Some(op) = &case.operating {
-        report.friction = Some(friction_of_planned(case, op, &planned, report.force_n)?);
-    }
-    Ok(report)
+    solve_planned(case, label, &mut planned, &case.load, None)
 }
 
 /// The friction section (`crate::bearing_friction`) of a case whose `planned` solver has
@@ -1036,14 +1032,18 @@ pub(crate) fn solve_planned(
     start: Option<[f64; 5]>,
 ) -> Result<BearingReport> {
     let load = ring_load(load)?;
-    match planned {
+    let mut report = match planned {
         Planned::Roller(solver) => roller_report(case, label, solver, &load, start),
         Planned::Coupled(solver) => roller_report(case, label, solver.as_mut(), &load, start),
         Planned::RibRoller(solver) => rib_roller_report(case, label, solver, &load, start),
         Planned::Ball { solver, spec, keys } => {
             ball_report(case, label, solver, spec, keys, &load, start)
         }
+    }?;
+    if let Some(op) = &case.operating {
+        report.friction = Some(friction_of_planned(case, op, planned, report.force_n)?);
     }
+    Ok(report)
 }
 
 /// The report of a roller bearing's solve.
