@@ -2,20 +2,21 @@
 //! bearing of 20 rollers × 31 slices (ISO/TS 16281 slice law) under a combined load with
 //! the tilts held, cold (from the closed-form start) and warm after a 1 % load change
 //! (`solve_from` the previous displacement); a deep-groove ball bearing with 10 balls under
-//! a combined load, cold; a cylindrical roller bearing of 14 rollers × 31 slices under a
-//! radial load, cold, for reference; the same TRB with the rib-contact roller model
-//! (`roller_equilibrium`: every roller in its own balance, Hertz rib contacts), cold and
-//! warm after a 1 % load change; the TRB with coupled slices (half-space strips), cold.
-//! The solvers are built once outside the timed closure; the timed call is the solve.
-//! The Newton iterations of each case are printed once (stderr). Figures in
-//! docs/PERFORMANCE.md, "Bearing load distribution (issue 28)".
+//! a combined load, cold, at rest and at 10 000 r/min; a cylindrical roller bearing of 14
+//! rollers × 31 slices under a radial load, cold, for reference; the same TRB with the
+//! rib-contact roller model (`roller_equilibrium`: every roller in its own balance, Hertz
+//! rib contacts), cold and warm after a 1 % load change; the TRB with coupled slices
+//! (half-space strips), cold. The solvers are built once outside the timed closure; the
+//! timed call is the solve. The Newton iterations of each case are printed once (stderr).
+//! Figures in docs/PERFORMANCE.md, "Bearing load distribution (issue 28)".
 
 #[path = "../tests/support/cases.rs"]
 mod cases;
 
-use cases::{crb, crb_load, dgbb, dgbb_load, trb, trb_load, trb_rib};
+use cases::{crb, crb_load, dgbb, dgbb_load, dgbb_speeds, trb, trb_load, trb_rib};
 use criterion::{Criterion, criterion_group, criterion_main};
 use kontakt_bearing::ball_equilibrium::BallBearingSolver;
+use kontakt_bearing::ball_speed::{BallSpeedSolver, RaceControl};
 use kontakt_bearing::equilibrium::RollerBearingSolver;
 use kontakt_bearing::equilibrium::coupled::CoupledSliceSolver;
 use kontakt_bearing::roller_equilibrium::RibContactSolver;
@@ -101,6 +102,21 @@ fn bench_bearing(c: &mut Criterion) {
     );
     group.bench_function("dgbb_10_combined_cold", |b| {
         b.iter(|| ball_solver.solve(black_box(&ball_load)).expect("solve"))
+    });
+
+    // The same ball bearing at 10 000 r/min (Jones's high-speed model, outer-race
+    // control), cold: the quasi-static start, then every ball's own Newton inside the
+    // ring's (issue 28: at most 50 µs).
+    let mut speed_solver = BallSpeedSolver::new(dgbb(), dgbb_speeds(), RaceControl::Outer)
+        .expect("valid ball bearing");
+    let s = speed_solver.solve(&ball_load).expect("solve");
+    assert!(s.status.converged(), "{:?}", s.status);
+    eprintln!(
+        "dgbb_10_speed: cold {} iterations at speed (residual {:.1e}), Q_max {:.0} N, load zone {:?}",
+        s.status.iterations, s.status.residual, s.max_ball_load_n, s.load_zone,
+    );
+    group.bench_function("dgbb_10_combined_10000rpm_cold", |b| {
+        b.iter(|| speed_solver.solve(black_box(&ball_load)).expect("solve"))
     });
 
     // CRB, 14 rollers × 31 slices, radial load, cold.

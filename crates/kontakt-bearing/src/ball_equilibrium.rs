@@ -59,23 +59,31 @@ pub struct BallSolution {
     pub status: SolveStatus,
     /// A message when the status is not plain convergence or every ball lifted off.
     pub note: Option<&'static str>,
-    /// The largest ball load, N.
+    /// The largest ball load, N (at speed, [`crate::ball_speed`], the largest on the inner
+    /// ring: 0 when every ball is lifted off it).
     pub max_ball_load_n: f64,
     /// The largest Hertz pressure on the inner and on the outer raceway, MPa.
     pub max_pressure_mpa: [f64; 2],
+    /// The load-zone parameter ε (Sjövall 1933) along the radial displacement, from the
+    /// balls' approach around the ring (`docs/bearing-model.md` §16.5); `None` without a
+    /// radial displacement or with no ball loaded there. Exact for rigid rings without
+    /// tilt.
+    pub load_zone: Option<f64>,
 }
 
 /// Per ball: the rows of `G` (radial and axial motion of the inner groove centre).
 #[derive(Debug, Clone, Copy)]
-struct BallFrame {
-    gr: Vector5<f64>,
-    gz: Vector5<f64>,
+pub(crate) struct BallFrame {
+    pub(crate) gr: Vector5<f64>,
+    pub(crate) gz: Vector5<f64>,
 }
 
 /// The solver of one ball bearing.
 #[derive(Debug, Clone)]
 pub struct BallBearingSolver {
     bearing: BallBearing,
+    /// The inner groove's curvature centre at rest `(ℜ_i, z_i)`, mm.
+    centre: [f64; 2],
     frames: Vec<BallFrame>,
     offset: [f64; 2],
     a0: f64,
@@ -105,15 +113,11 @@ impl BallBearingSolver {
         let alpha_n = offset[1].atan2(offset[0]);
         // the inner groove centre at rest, (radial, axial), about the bearing centre
         let lever = (bearing.inner_osculation - 0.5) * bearing.ball_diameter_mm;
-        let (pr, pz) = (r + lever * alpha_n.cos(), lever * alpha_n.sin());
+        let centre = [r + lever * alpha_n.cos(), lever * alpha_n.sin()];
         let frames: Vec<BallFrame> = (0..z)
             .map(|j| {
                 let psi = bearing.first_ball_azimuth_rad + 2.0 * PI * j as f64 / z as f64;
-                let (s, c) = psi.sin_cos();
-                BallFrame {
-                    gr: Vector5::new(c, s, 0.0, -pz * s, pz * c),
-                    gz: Vector5::new(0.0, 0.0, 1.0, pr * s, -pr * c),
-                }
+                frame_at(centre, psi)
             })
             .collect();
         let probe = frames.iter().fold(Matrix5::zeros(), |p, f| {
@@ -123,6 +127,7 @@ impl BallBearingSolver {
         let k_n = bearing.ball_stiffness(alpha_k)?;
         let [ci, co] = bearing.contacts(alpha_k)?;
         Ok(BallBearingSolver {
+            centre,
             frames,
             offset,
             a0: bearing.centre_distance_mm(),
@@ -154,6 +159,23 @@ impl BallBearingSolver {
     /// Per-ball loads of the last solve.
     pub fn ball_loads(&self) -> &[BallLoad] {
         &self.balls
+    }
+
+    /// The map `G` of a ball at the azimuth `psi` (rad); the balls' own in
+    /// [`BallBearingSolver::frames`].
+    pub(crate) fn frame(&self, psi: f64) -> BallFrame {
+        frame_at(self.centre, psi)
+    }
+
+    /// The maps `G_j` of the balls.
+    pub(crate) fn frames(&self) -> &[BallFrame] {
+        &self.frames
+    }
+
+    /// The unloaded offset `a` of the groove centres and their distance `B D` with both
+    /// grooves touching, mm.
+    pub(crate) fn offsets(&self) -> ([f64; 2], f64) {
+        (self.offset, self.a0)
     }
 
     /// The load the balls carry at `u`, the stiffness and the potential; fills the
@@ -190,7 +212,7 @@ impl BallBearingSolver {
         (f.into(), to_rows(&k))
     }
 
-    fn check_load(&self, load: &RingLoad) -> Result<()> {
+    pub(crate) fn check_load(&self, load: &RingLoad) -> Result<()> {
         check_finite(load)?;
         if self.bearing.kind == BallBearingKind::AngularContact
             && let Dof::Force(fz) = load.dofs[2]
@@ -355,6 +377,11 @@ impl BallBearingSolver {
         if termination == Termination::Converged && qmax == 0.0 {
             note = Some("every ball is lifted off: zero load");
         }
+        let (offset, a0) = (self.offset, self.a0);
+        let load_zone = crate::load_zone::load_zone(&u, |psi| {
+            let fr = frame_at(self.centre, psi);
+            (offset[0] + fr.gr.dot(&u)).hypot(offset[1] + fr.gz.dot(&u)) - a0
+        });
         BallSolution {
             displacement: u.into(),
             load: f.into(),
@@ -363,7 +390,19 @@ impl BallBearingSolver {
             note,
             max_ball_load_n: qmax,
             max_pressure_mpa: pmax,
+            load_zone,
         }
+    }
+}
+
+/// The rows of `G` of a ball at the azimuth `psi` (rad) for the inner groove centre at
+/// rest `centre = (ℜ_i, z_i)` (mm), `docs/bearing-model.md` §8.2.
+fn frame_at(centre: [f64; 2], psi: f64) -> BallFrame {
+    let [pr, pz] = centre;
+    let (s, c) = psi.sin_cos();
+    BallFrame {
+        gr: Vector5::new(c, s, 0.0, -pz * s, pz * c),
+        gz: Vector5::new(0.0, 0.0, 1.0, pr * s, -pr * c),
     }
 }
 

@@ -35,6 +35,7 @@
 #![forbid(unsafe_code)]
 
 pub mod ball_equilibrium;
+pub mod ball_speed;
 pub mod equilibrium;
 pub mod friction;
 pub mod geometry;
@@ -43,6 +44,8 @@ pub mod load_zone;
 mod newton;
 pub mod profile;
 pub mod roller_equilibrium;
+pub mod roller_speed;
+pub mod speed;
 pub mod stress;
 #[cfg(test)]
 mod test_support;

@@ -19,6 +19,9 @@
 //! [`discrete`]. These are the closed forms the 5-DoF solver of [`crate::equilibrium`] is
 //! tested against; they are not results for real bearings (ring deformation, profiles
 //! and clearance change them).
+//!
+//! For a ball bearing the solvers give ε from the approach of a ball placed at any azimuth
+//! (`docs/bearing-model.md` §16.5), exact for rigid rings without tilt.
 
 use kontakt::{Error, Result};
 use std::f64::consts::PI;
@@ -131,6 +134,60 @@ pub fn discrete(eps: f64, n: f64, elements: usize, phase_rad: f64) -> Result<Loa
         j_r: jr / z,
         j_a: ja / z,
     })
+}
+
+/// The load-zone parameter ε (Sjövall 1933) from the approach `d(ψ)` of a ball at the
+/// azimuth ψ (rad, > 0 loaded) and the ring displacement u: along the radial displacement
+/// ψ₀, `ε = (1 − cos ψ_l)/2` with `d(ψ₀ ± ψ_l) = 0` when the ring is partly loaded, and
+/// `d(ψ₀)/(d(ψ₀) − d(ψ₀ + π))` when it is loaded all round (the roller bearings' linear
+/// form, continuous at ε = 1). `None` without a radial displacement or with no ball loaded
+/// at ψ₀.
+pub(crate) fn load_zone(u: &nalgebra::Vector5<f64>, mut d: impl FnMut(f64) -> f64) -> Option<f64> {
+    let ur = u[0].hypot(u[1]);
+    // a radial displacement at the round-off level of the axial one is none
+    let tiny = 1e-12 * u[0].abs().max(u[1].abs()).max(u[2].abs());
+    if !(ur > tiny) {
+        return None;
+    }
+    let psi0 = u[1].atan2(u[0]);
+    let (d0, dpi) = (d(psi0), d(psi0 + PI));
+    if !(d0 > 0.0 && d0 > dpi) {
+        return None;
+    }
+    if dpi >= 0.0 {
+        return Some(d0 / (d0 - dpi));
+    }
+    // Illinois regula falsi for d(ψ₀ + t) = 0 on (0, π)
+    let (mut a, mut fa, mut b, mut fb) = (0.0, d0, PI, dpi);
+    let mut side = 0;
+    let mut t = 0.5 * PI;
+    for _ in 0..200 {
+        t = (a * fb - b * fa) / (fb - fa);
+        let ft = d(psi0 + t);
+        if ft == 0.0 || b - a < 1e-15 {
+            break;
+        }
+        if ft < 0.0 {
+            b = t;
+            fb = ft;
+            if side == -1 {
+                fa *= 0.5;
+            }
+            side = -1;
+        } else {
+            a = t;
+            fa = ft;
+            if side == 1 {
+                fb *= 0.5;
+            }
+            side = 1;
+        }
+        if ft.abs() <= 1e-15 * d0 {
+            break;
+        }
+    }
+    let eps = 0.5 * (1.0 - t.cos());
+    (eps.is_finite() && eps > 0.0).then_some(eps)
 }
 
 #[cfg(test)]

@@ -101,32 +101,7 @@ pub(crate) fn newton<M: ConvexRing>(
             break;
         }
         iterations += 1;
-        // the Newton system on the free directions; a direction without contact
-        // stiffness borrows the diagonal of the all-elements-in-contact shape (a descent
-        // direction still)
-        let mut rhs = Vector5::zeros();
-        let mut jac = k;
-        let mut weak = false;
-        for i in 0..5 {
-            if free[i] {
-                rhs[i] = target[i] - f[i];
-                if !(k[(i, i)] > 1e-6 * scale * probe[(i, i)]) {
-                    weak = true;
-                    // only the weak direction borrows: the others keep Newton's rate
-                    jac[(i, i)] += scale * probe[(i, i)];
-                }
-            }
-        }
-        for i in 0..5 {
-            jac[(i, i)] += 1e-12 * scale * probe[(i, i)];
-            if !free[i] {
-                for j in 0..5 {
-                    jac[(i, j)] = 0.0;
-                    jac[(j, i)] = 0.0;
-                }
-                jac[(i, i)] = 1.0;
-            }
-        }
+        let (jac, rhs, weak) = newton_system(&k, &f, &target, &free, scale, &probe);
         let Some(chol) = jac.cholesky() else {
             termination = Termination::Diverged;
             note = Some("the Newton system is singular: the load cannot be carried");
@@ -165,21 +140,12 @@ pub(crate) fn newton<M: ConvexRing>(
         }
         if !accepted {
             buffers_at_u = false;
-            termination = if res <= 1e3 * tolerance {
-                Termination::Stagnated
-            } else {
-                Termination::Diverged
-            };
-            note = Some(
-                "the line search found no decrease (round-off floor or a load the bearing cannot carry)",
-            );
+            (termination, note) = no_decrease(res, tolerance);
             break;
         }
-        if (0..3).any(|i| u[i].abs() > limit) || (3..5).any(|i| (u[i] * r).abs() > limit) {
+        if beyond_limit(&u, r, limit) {
             termination = Termination::Diverged;
-            note = Some(
-                "the ring displacement exceeds the element diameter: the load cannot be carried (e.g. a moment or radial load a single row cannot balance; hold the tilts)",
-            );
+            note = Some(BEYOND_LIMIT);
             break;
         }
     }
@@ -199,6 +165,68 @@ pub(crate) fn newton<M: ConvexRing>(
         k,
         buffers_at_u,
     }
+}
+
+/// The Newton system `jac · step = rhs` on the `free` directions at the load `f` and
+/// stiffness `k`: a direction without contact stiffness borrows the diagonal of the
+/// all-elements-in-contact shape `probe` times `scale` (a descent direction still; only the
+/// weak direction borrows, the others keep Newton's rate), every diagonal a 1e-12 of it, a
+/// prescribed direction the identity. Also whether a direction was weak.
+pub(crate) fn newton_system(
+    k: &Matrix5<f64>,
+    f: &Vector5<f64>,
+    target: &Vector5<f64>,
+    free: &[bool; 5],
+    scale: f64,
+    probe: &Matrix5<f64>,
+) -> (Matrix5<f64>, Vector5<f64>, bool) {
+    let mut rhs = Vector5::zeros();
+    let mut jac = *k;
+    let mut weak = false;
+    for i in 0..5 {
+        if free[i] {
+            rhs[i] = target[i] - f[i];
+            if !(k[(i, i)] > 1e-6 * scale * probe[(i, i)]) {
+                weak = true;
+                jac[(i, i)] += scale * probe[(i, i)];
+            }
+        }
+    }
+    for i in 0..5 {
+        jac[(i, i)] += 1e-12 * scale * probe[(i, i)];
+        if !free[i] {
+            for j in 0..5 {
+                jac[(i, j)] = 0.0;
+                jac[(j, i)] = 0.0;
+            }
+            jac[(i, i)] = 1.0;
+        }
+    }
+    (jac, rhs, weak)
+}
+
+/// How an iteration ends whose line search found no decrease at the residual `res`:
+/// stagnated near the round-off floor (1000 times the tolerance), else diverged.
+pub(crate) fn no_decrease(res: f64, tolerance: f64) -> (Termination, Option<&'static str>) {
+    let termination = if res <= 1e3 * tolerance {
+        Termination::Stagnated
+    } else {
+        Termination::Diverged
+    };
+    (
+        termination,
+        Some(
+            "the line search found no decrease (round-off floor or a load the bearing cannot carry)",
+        ),
+    )
+}
+
+/// The note of a ring displacement beyond [`ConvexRing::limit`].
+pub(crate) const BEYOND_LIMIT: &str = "the ring displacement exceeds the element diameter: the load cannot be carried (e.g. a moment or radial load a single row cannot balance; hold the tilts)";
+
+/// Whether a translation of `u` or a tilt times the pitch radius `r` exceeds `limit` (mm).
+pub(crate) fn beyond_limit(u: &Vector5<f64>, r: f64, limit: f64) -> bool {
+    (0..3).any(|i| u[i].abs() > limit) || (3..5).any(|i| (u[i] * r).abs() > limit)
 }
 
 /// The load scale of a reaction `f`: its largest force, or moment over `r` (mm).

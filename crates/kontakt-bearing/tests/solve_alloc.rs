@@ -8,9 +8,10 @@ mod cases;
 #[path = "../../kontakt/tests/support/counting_alloc.rs"]
 mod counting_alloc;
 
-use cases::{crb, crb_load, dgbb, dgbb_load, trb, trb_load, trb_rib};
+use cases::{crb, crb_load, dgbb, dgbb_load, dgbb_speeds, trb, trb_load, trb_rib};
 use counting_alloc::allocations;
 use kontakt_bearing::ball_equilibrium::BallBearingSolver;
+use kontakt_bearing::ball_speed::{BallSpeedSolver, RaceControl};
 use kontakt_bearing::equilibrium::RollerBearingSolver;
 use kontakt_bearing::equilibrium::coupled::CoupledSliceSolver;
 use kontakt_bearing::roller_equilibrium::RibContactSolver;
@@ -42,6 +43,19 @@ fn ball_bearing_solves_allocate_nothing_cold_or_warm() {
     let (warm, n) = allocations(|| solver.solve_from(&dgbb_load(1.01), start).expect("solve"));
     assert!(warm.status.converged());
     assert_eq!(n, 0, "warm ball solve");
+}
+
+#[test]
+fn ball_bearing_solves_at_speed_allocate_nothing_cold_or_warm() {
+    let mut solver = BallSpeedSolver::new(dgbb(), dgbb_speeds(), RaceControl::Outer)
+        .expect("valid ball bearing");
+    let (cold, n) = allocations(|| solver.solve(&dgbb_load(1.0)).expect("solve"));
+    assert!(cold.status.converged());
+    assert_eq!(n, 0, "cold ball solve at speed");
+    let start = cold.displacement;
+    let (warm, n) = allocations(|| solver.solve_from(&dgbb_load(1.01), start).expect("solve"));
+    assert!(warm.status.converged());
+    assert_eq!(n, 0, "warm ball solve at speed");
 }
 
 /// The coupled slices (docs/bearing-model.md §12) on the TRB: none after the first solve,

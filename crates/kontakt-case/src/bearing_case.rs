@@ -52,26 +52,27 @@
 //! methods; a solve that stagnates at the round-off floor (residual at most 1e-8 of the
 //! load, 1000 times the tolerance) is reported with a warning.
 
-use crate::bearing_rating::{
-    LifeInput, RatingReport, RatingSpec, checked_spec, rating, roller_pressures,
-};
+use crate::bearing_post::{BallPost, Post, RollerPost, applied_moment};
+use crate::bearing_rating::{RatingReport, RatingSpec};
 use crate::bearing_slices::{RollerPressures, SliceModel, SliceSolver, pressure_map};
 use crate::common::{MaterialSpec, SCHEMA_VERSION, in_degrees, material};
-use crate::validity::{ContactSize, Size, checked, checked_report};
-use kontakt::hertz::validity::point_size;
+use crate::validity::{ContactSize, checked, checked_report};
 use kontakt::solve::{SolveStatus, Termination};
 use kontakt::{Error, Result};
-use kontakt_bearing::ball_equilibrium::BallBearingSolver;
+use kontakt_bearing::ball_equilibrium::{BallBearingSolver, BallSolution};
+use kontakt_bearing::ball_speed::{BallSpeedSolver, RaceControl};
 use kontakt_bearing::equilibrium::coupled::CoupledSliceSolver;
-use kontakt_bearing::equilibrium::{
-    Dof, RingLoad, RollerBearingSolver, RollerLoad, RollerSolution,
-};
+use kontakt_bearing::equilibrium::{Dof, RingLoad, RollerBearingSolver, RollerSolution};
 use kontakt_bearing::geometry::{
     BallBearing, BallBearingKind, DEFAULT_SLICES, RollerBearing, RollerBearingKind,
 };
-use kontakt_bearing::life::RatingType;
 use kontakt_bearing::profile::{Profile, TabulatedProfile};
+use kontakt_bearing::speed::RingSpeeds;
 use serde::{Deserialize, Serialize};
+
+mod roller_speed;
+mod speed;
+pub use speed::BearingSpeedSpec;
 
 /// The contact modulus of two steel bodies (E = 210 GPa, ν = 0.3), MPa: the default of the
 /// design-load profiles.
@@ -107,6 +108,9 @@ pub struct BearingCase {
     /// `[catalogue]`: envelope and series for the catalogue torques.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub catalogue: Option<crate::bearing_friction::CatalogueSpec>,
+    /// `[speed]`: the ring speeds in r/min (default at rest), [`BearingSpeedSpec`].
+    #[serde(default)]
+    pub speed: BearingSpeedSpec,
 }
 
 /// `[bearing]`: the type (`type = "cylindrical" | "tapered" | "thrust"`) and its internal
@@ -177,6 +181,10 @@ pub struct BallSpec {
     /// safety (`docs/bearing-model.md`, "Life and static safety").
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub rating: Option<RatingSpec>,
+    /// The balls' density, kg/m³ (default steel 7850; silicon nitride about 3200, with its
+    /// `ball_material`): their centrifugal force and gyroscopic moment at speed.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ball_density_kg_m3: Option<f64>,
 }
 
 /// The internal geometry of a roller bearing. Lengths in mm, angles in degrees.
@@ -245,6 +253,10 @@ pub struct RollerSpec {
     /// With `roller_model = "rib_contact"`: the roller end/rib pair.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub rib_contact: Option<crate::bearing_rib::RibContactSpec>,
+    /// The rollers' density, kg/m³ (default steel 7850): their centrifugal force at speed
+    /// (`roller_model = "rib_contact"`, `docs/bearing-model.md` §15.7).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub roller_density_kg_m3: Option<f64>,
 }
 
 fn default_slices() -> usize {
@@ -532,6 +544,10 @@ pub struct RollerRow {
     /// N (`rib_load_n` is then the inner ring's).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub outer_rib_load_n: Option<f64>,
+    /// `roller_model = "rib_contact"` at speed only: the roller's centrifugal force
+    /// `F_c = m ω_c² r_c`, N (`docs/bearing-model.md` §15.7).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub centrifugal_force_n: Option<f64>,
 }
 
 /// The slices of the most loaded roller.
@@ -603,8 +619,9 @@ pub struct BearingReport {
     /// How the equilibrium solve ended.
     pub solver: BearingSolverEcho,
     /// The load-zone parameter ε (Sjövall 1933) from the ring displacement; absent without
-    /// a radial displacement, for thrust bearings and for ball bearings. Exact for rigid
-    /// rings without tilt.
+    /// a radial displacement and for thrust bearings. Exact for rigid rings without tilt.
+    /// Ball bearings: from the balls' approach around the ring (at speed the inner
+    /// contact's), `docs/bearing-model.md` §16.5.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub load_zone_epsilon: Option<f64>,
     /// The names of the degrees of freedom, the order of the stiffness matrix's rows and
@@ -618,6 +635,9 @@ pub struct BearingReport {
     /// Results to treat with care. Absent when none applies.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub warnings: Vec<String>,
+    /// The ring speeds `[inner, outer]`, r/min, when not at rest (`[speed]`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ring_speeds_rpm: Option<[f64; 2]>,
     /// The Hertz contacts of the most loaded ball, inner and outer raceway, or of the most
     /// loaded roller's most loaded slice on each raceway, sized for the validity check. Not
     /// in the JSON.
@@ -634,6 +654,8 @@ pub struct BearingReport {
 /// The rolling elements of a [`BearingReport`], their keys flattened into the report.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 #[serde(untagged)]
+// a report, built once per solve: the roller part's size does not matter
+#[allow(clippy::large_enum_variant)]
 pub enum BearingElements {
     /// A roller bearing (cylindrical, tapered, thrust).
     Rollers(RollerPart),
@@ -724,6 +746,10 @@ pub struct BallPart {
     pub max_outer_pressure_mpa: f64,
     /// Per ball, in azimuth order.
     pub ball_loads: Vec<BallRow>,
+    /// At speed: the race-control assumption of the balls' kinematics and gyroscopic
+    /// moment, `"outer"` (Jones 1960; `docs/bearing-model.md` §16).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub race_control: Option<&'static str>,
 }
 
 /// One ball of the report.
@@ -731,10 +757,11 @@ pub struct BallPart {
 pub struct BallRow {
     /// Azimuth ψ from x toward y, degrees.
     pub azimuth_deg: f64,
-    /// The ball's load Q, N: the same on both raceways (no speed effects).
+    /// The ball's load Q, N: the same on both raceways at rest; at speed the inner
+    /// raceway's (`inner_load_n`), the load the ring feels.
     pub load_n: f64,
-    /// The loaded contact angle α, degrees, the same at both raceways (no speed effects;
-    /// negative: a deep groove's other shoulder). The balls carry the applied force as
+    /// The loaded contact angle α, degrees, the same at both raceways at rest (negative: a
+    /// deep groove's other shoulder); at speed the inner one (`inner_contact_angle_deg`). The balls carry the applied force as
     /// `Σ Q (cos α cos ψ, cos α sin ψ, sin α)`.
     pub contact_angle_deg: f64,
     /// The total approach of both contacts, mm (negative: lifted off by that much).
@@ -743,6 +770,20 @@ pub struct BallRow {
     pub inner_max_pressure_mpa: f64,
     /// Maximum Hertz pressure on the outer raceway, MPa.
     pub outer_max_pressure_mpa: f64,
+    /// Inner raceway load Q_i, N (at rest: `load_n`).
+    pub inner_load_n: f64,
+    /// Outer raceway load Q_o, N (at rest: `load_n`; at speed it carries the centrifugal
+    /// force too).
+    pub outer_load_n: f64,
+    /// Inner contact angle α_i, degrees (at rest: `contact_angle_deg`).
+    pub inner_contact_angle_deg: f64,
+    /// Outer contact angle α_o, degrees (at rest: `contact_angle_deg`; it falls with speed).
+    pub outer_contact_angle_deg: f64,
+    /// Centrifugal force of the ball `F_c = ½ m d_m ω_c²`, N (0 at rest).
+    pub centrifugal_force_n: f64,
+    /// Gyroscopic moment of the ball `M_g = J ω_R ω_c sin β`, N·mm (0 at rest), held by
+    /// the outer contact (outer-race control).
+    pub gyroscopic_moment_nmm: f64,
 }
 
 checked_report!(BearingReport);
@@ -944,7 +985,7 @@ fn friction_of_planned(
             },
         ),
         Planned::RibRoller(s) => (s.bearing(), Solved::Rib(s)),
-        Planned::Ball { .. } => {
+        Planned::Ball { .. } | Planned::BallAtSpeed { .. } => {
             return Err(Error::invalid(
                 "operating",
                 "given for a ball bearing",
@@ -978,6 +1019,12 @@ pub(crate) enum Planned {
         spec: Box<BallSpec>,
         keys: GrooveKeys,
     },
+    /// A ball bearing at speed (`[speed]` not at rest).
+    BallAtSpeed {
+        solver: Box<BallSpeedSolver>,
+        spec: Box<BallSpec>,
+        keys: GrooveKeys,
+    },
 }
 
 /// Plan the solver of `case`'s bearing: errors named by the case key.
@@ -994,12 +1041,20 @@ pub(crate) fn plan(case: &BearingCase) -> Result<(Planned, &'static str)> {
         BearingSpec::Tapered(s) => (RollerBearingKind::Tapered, s, "tapered"),
         BearingSpec::Thrust(s) => (RollerBearingKind::Thrust, s, "thrust"),
         BearingSpec::DeepGrooveBall(s) => {
-            return plan_ball(BallBearingKind::DeepGroove, s, "deep_groove_ball");
+            let speeds = case.speed.ring_speeds()?;
+            return plan_ball(BallBearingKind::DeepGroove, s, "deep_groove_ball", speeds);
         }
         BearingSpec::AngularContactBall(s) => {
-            return plan_ball(BallBearingKind::AngularContact, s, "angular_contact_ball");
+            let speeds = case.speed.ring_speeds()?;
+            return plan_ball(
+                BallBearingKind::AngularContact,
+                s,
+                "angular_contact_ball",
+                speeds,
+            );
         }
     };
+    let speeds = roller_speed::ring_speeds(&case.speed, s, label)?;
     let bearing = roller_bearing(kind, s, label)?;
     if s.slice_model == SliceModel::Coupled {
         if !s.roller_model.is_iso() {
@@ -1013,9 +1068,10 @@ pub(crate) fn plan(case: &BearingCase) -> Result<(Planned, &'static str)> {
         return Ok((Planned::Coupled(Box::new(solver)), label));
     }
     let rib = s.rib_contact.as_ref();
-    if let Some(solver) =
+    if let Some(mut solver) =
         crate::bearing_rib::plan_rib(s.roller_model, rib, s.rib_angle_deg, label, &bearing)?
     {
+        roller_speed::set_centrifugal(&mut solver, s, speeds)?;
         return Ok((Planned::RibRoller(Box::new(solver)), label));
     }
     let solver = RollerBearingSolver::new(bearing).map_err(map_bearing_field)?;
@@ -1037,6 +1093,11 @@ pub(crate) fn solve_planned(
         Planned::Coupled(solver) => roller_report(case, label, solver.as_mut(), &load, start),
         Planned::RibRoller(solver) => rib_roller_report(case, label, solver, &load, start),
         Planned::Ball { solver, spec, keys } => {
+            let solver = BallSolver::AtRest(solver);
+            ball_report(case, label, solver, spec, keys, &load, start)
+        }
+        Planned::BallAtSpeed { solver, spec, keys } => {
+            let solver = BallSolver::AtSpeed(solver);
             ball_report(case, label, solver, spec, keys, &load, start)
         }
     }?;
@@ -1064,21 +1125,11 @@ fn roller_report<S: SliceSolver>(
     let width = b.effective_length_mm / ns as f64;
     let loads = solver.slice_loads();
     let approaches = solver.slice_approaches();
-    let most = most_loaded(solver.roller_loads());
-    // Hertz line contacts of the independent slices (and the most loaded slice's contact
-    // for the validity check); a model with its own slice pressures (coupled slices)
-    // reports those instead.
-    let mut pressures = roller_pressures(b, solver.roller_loads(), loads, most)?;
-    if let Some((inner, outer)) = solver.slice_pressures() {
-        let peak = |p: &[f64]| p.iter().copied().fold(0.0, f64::max);
-        pressures.per_roller = inner
-            .chunks_exact(ns)
-            .zip(outer.chunks_exact(ns))
-            .map(|(i, o)| [peak(i), peak(o)])
-            .collect();
-        pressures.most_inner = inner[most * ns..(most + 1) * ns].to_vec();
-        pressures.most_outer = outer[most * ns..(most + 1) * ns].to_vec();
-    }
+    let moment = applied_moment(load);
+    let (post, warnings, mut pressures) = roller_post(case, b, &sol, |p, w, each| {
+        p.run(&*solver, &sol, moment, w, each)
+    })?;
+    let most = pressures.most;
     let mut rows = Vec::with_capacity(b.rollers);
     for (j, r) in solver.roller_loads().iter().enumerate() {
         let slice_max = loads[j * ns..(j + 1) * ns]
@@ -1098,6 +1149,7 @@ fn roller_report<S: SliceSolver>(
             rib_max_pressure_mpa: None,
             skew_moment_nmm: None,
             outer_rib_load_n: None,
+            centrifugal_force_n: None,
         });
     }
     let slice_loads = loads[most * ns..(most + 1) * ns].to_vec();
@@ -1122,20 +1174,66 @@ fn roller_report<S: SliceSolver>(
         most_loaded,
         slice_loads: loads,
         pressure_map: map,
-        pressures,
     };
-    roller_part_report(case, label, b, &sol, load, parts, solver.roller_loads())
+    Ok(roller_part_report(
+        case, label, b, &sol, parts, post, warnings,
+    ))
 }
 
-/// The index of the roller with the largest outer raceway load (the first of equals).
-fn most_loaded(rollers: &[RollerLoad]) -> usize {
-    (0..rollers.len()).fold(0, |m, j| {
-        if rollers[j].outer_n > rollers[m].outer_n {
-            j
-        } else {
-            m
+/// The rating spec of a roller bearing case (`[bearing.rating]`).
+pub(crate) fn roller_rating(case: &BearingCase) -> Option<&crate::bearing_rating::RatingSpec> {
+    match &case.bearing {
+        BearingSpec::Cylindrical(s) | BearingSpec::Tapered(s) | BearingSpec::Thrust(s) => {
+            s.rating.as_ref()
         }
-    })
+        _ => None,
+    }
+}
+
+/// The pressures, rating and most loaded contacts of a roller model's solve `sol`: the
+/// solver's warnings, then `run` ([`RollerPost::run`] or [`RollerPost::run_rib`]), the one
+/// post-solve path of the report and the sweep's rows ([`crate::bearing_post`]), with the
+/// pressures collected for the report.
+fn roller_post(
+    case: &BearingCase,
+    b: &RollerBearing,
+    sol: &RollerSolution,
+    run: impl FnOnce(
+        &mut RollerPost,
+        &mut Vec<String>,
+        &mut dyn FnMut(usize, [f64; 2], &[f64], &[f64], bool),
+    ) -> Result<Post>,
+) -> Result<(Post, Vec<String>, Pressures)> {
+    let mut warnings = solver_warnings(&sol.status, sol.note)?;
+    let mut pressures = Pressures::default();
+    let mut post = RollerPost::new(b, roller_rating(case))?;
+    let post = run(
+        &mut post,
+        &mut warnings,
+        &mut |j, peaks, inner, outer, most| pressures.add(j, peaks, inner, outer, most),
+    )?;
+    Ok((post, warnings, pressures))
+}
+
+/// The slice pressures the post gives a report: per roller `[inner, outer]` maxima and
+/// the slices of the most loaded roller, MPa.
+#[derive(Default)]
+struct Pressures {
+    per_roller: Vec<[f64; 2]>,
+    most: usize,
+    most_inner: Vec<f64>,
+    most_outer: Vec<f64>,
+}
+
+impl Pressures {
+    fn add(&mut self, j: usize, peaks: [f64; 2], inner: &[f64], outer: &[f64], most: bool) {
+        self.per_roller.push(peaks);
+        if most {
+            self.most = j;
+            self.most_inner = inner.to_vec();
+            self.most_outer = outer.to_vec();
+        }
+    }
 }
 
 /// What a roller model's solve gives the shared part of its report.
@@ -1145,7 +1243,6 @@ struct RollerParts<'a> {
     /// The outer raceway's slice loads, roller-major, N.
     slice_loads: &'a [f64],
     pressure_map: Option<Box<RollerPressures>>,
-    pressures: crate::bearing_rating::RollerPressures,
 }
 
 /// The report of a roller bearing from its solution, its rows and the slices of its most
@@ -1156,46 +1253,11 @@ fn roller_part_report(
     label: &'static str,
     b: &RollerBearing,
     sol: &RollerSolution,
-    load: &RingLoad,
     parts: RollerParts<'_>,
-    rollers: &[RollerLoad],
-) -> Result<BearingReport> {
-    let mut warnings = solver_warnings(&sol.status, sol.note)?;
-    warnings.extend(coarse_slices_warning(b.slices));
-    let spec = match &case.bearing {
-        BearingSpec::Cylindrical(s) | BearingSpec::Tapered(s) | BearingSpec::Thrust(s) => {
-            s.rating.as_ref()
-        }
-        _ => None,
-    };
-    let spec = checked_spec(spec, false)?;
-    let p_max = parts
-        .pressures
-        .per_roller
-        .iter()
-        .fold([0.0_f64; 2], |m, p| [m[0].max(p[0]), m[1].max(p[1])]);
-    let kind = match b.kind {
-        RollerBearingKind::Cylindrical => RatingType::Cylindrical,
-        RollerBearingKind::Thrust => RatingType::Thrust,
-        RollerBearingKind::Tapered => RatingType::Tapered {
-            contact_angle_rad: b.contact_angle_rad,
-        },
-    };
-    let r_most = rollers[parts.most_loaded.roller];
-    let inner_ratio = if r_most.outer_n > 0.0 {
-        r_most.inner_n / r_most.outer_n
-    } else {
-        1.0
-    };
-    let rated = rating(
-        kind,
-        &spec,
-        sol.load,
-        applied_moment(load),
-        p_max[0].max(p_max[1]),
-        LifeInput::Rollers(b, parts.slice_loads, inner_ratio),
-        &mut warnings,
-    )?;
+    post: Post,
+    warnings: Vec<String>,
+) -> BearingReport {
+    let p_max = post.max_pressure_mpa;
     let ns = b.slices;
     let width = b.effective_length_mm / ns as f64;
     let elements = BearingElements::Rollers(RollerPart {
@@ -1230,28 +1292,9 @@ fn roller_part_report(
     report.load_zone_epsilon = sol.load_zone;
     report.stiffness_matrix = sol.stiffness;
     report.warnings = warnings;
-    report.contacts = parts.pressures.contacts;
-    report.rating = rated;
-    Ok(report)
-}
-
-/// The warning of a roller bearing with fewer slices than the default (a property of the
-/// bearing, the same for every load).
-pub(crate) fn coarse_slices_warning(slices: usize) -> Option<String> {
-    (slices < DEFAULT_SLICES).then(|| {
-        format!(
-            "{slices} slices per roller: fewer than the recommended {DEFAULT_SLICES}, the roller loads are coarse (docs/bearing-model.md §6)"
-        )
-    })
-}
-
-/// The magnitude of the applied (force-controlled) moment, N·mm.
-fn applied_moment(load: &RingLoad) -> f64 {
-    let m = |d: Dof| match d {
-        Dof::Force(v) => v,
-        Dof::Displacement(_) => 0.0,
-    };
-    m(load.dofs[3]).hypot(m(load.dofs[4]))
+    report.contacts = post.contact_sizes();
+    report.rating = post.rating;
+    report
 }
 
 /// The report of a rib-contact solve: the ISO report's keys (cup load as `outer_load_n`,
@@ -1276,20 +1319,12 @@ fn rib_roller_report(
     let ns = b.slices;
     let width = b.effective_length_mm / ns as f64;
     let (cup, cone) = (solver.cup_slice_loads(), solver.cone_slice_loads());
-    // the raceway loads of every roller as the shared report part reads them
-    let ring: Vec<RollerLoad> = solver
-        .roller_loads()
-        .iter()
-        .map(|r| RollerLoad {
-            azimuth_rad: r.azimuth_rad,
-            outer_n: r.outer_n,
-            inner_n: r.inner_n,
-            rib_n: r.rib_n,
-            max_approach_mm: r.max_approach_mm,
-        })
-        .collect();
-    let most = most_loaded(&ring);
-    let mut pressures = roller_pressures(b, &ring, cup, most)?;
+    // the rib contact's size check included
+    let moment = applied_moment(load);
+    let (post, warnings, mut pressures) = roller_post(case, b, &sol, |p, w, each| {
+        p.run_rib(solver, &sol, moment, w, each)
+    })?;
+    let most = pressures.most;
     let mut rows = Vec::with_capacity(b.rollers);
     for (j, r) in solver.roller_loads().iter().enumerate() {
         let slice_max = cup[j * ns..(j + 1) * ns]
@@ -1309,6 +1344,7 @@ fn rib_roller_report(
             rib_max_pressure_mpa: Some(r.rib_max_pressure_mpa),
             skew_moment_nmm: Some(r.skew_moment_nmm),
             outer_rib_load_n: solver.arrangement().map(|_| r.outer_rib_n),
+            centrifugal_force_n: None,
         });
     }
     let range = most * ns..(most + 1) * ns;
@@ -1328,22 +1364,9 @@ fn rib_roller_report(
         most_loaded,
         slice_loads: cup,
         pressure_map: None,
-        pressures,
     };
-    let mut report = roller_part_report(case, label, b, &sol, load, parts, &ring)?;
-    // the most loaded rib contact, sized against the face's and the rib's radii
-    let rib_max = solver.max_rib_load_n();
-    if rib_max > 0.0 {
-        let hertz = solver.rib_hertz();
-        let hs = hertz.solve_force(rib_max)?;
-        report.contacts.push(
-            ContactSize::new(
-                Size::Hertz(point_size(hertz.geometry(), &hs)),
-                ["bearing.rib_contact.face", "bearing.rib_contact.rib"],
-            )
-            .at("the most loaded roller's rib contact"),
-        );
-    }
+    let mut report = roller_part_report(case, label, b, &sol, parts, post, warnings);
+    roller_speed::report_speed(&case.speed, solver, &mut report);
     if let BearingElements::Rollers(p) = &mut report.elements {
         p.roller_model = Some("rib_contact");
         p.max_rib_pressure_mpa = Some(solver.max_rib_pressure_mpa());
@@ -1453,6 +1476,7 @@ fn report(
             residual: 0.0,
         },
         load_zone_epsilon: None,
+        ring_speeds_rpm: None,
         stiffness_dofs: DOFS,
         stiffness_matrix: [[0.0; 5]; 5],
         stiffness_units: stiffness_units(),
@@ -1557,6 +1581,9 @@ fn ball_bearing(
     if let Some(m) = &s.ring_material {
         b.ring_material = material(m, "bearing.ring_material")?;
     }
+    if let Some(rho) = s.ball_density_kg_m3 {
+        b.ball_density_kg_m3 = rho;
+    }
     b.validate()
         .map_err(|e| map_ball_field(e, s, &keys, [f_i, f_o]))?;
     Ok((b, keys))
@@ -1564,7 +1591,7 @@ fn ball_bearing(
 
 /// The library's field names of [`BallBearing`] as the case file's keys, in the units the
 /// file gives them (degrees, a groove radius in mm).
-fn map_ball_field(e: Error, s: &BallSpec, keys: &GrooveKeys, f: [f64; 2]) -> Error {
+pub(crate) fn map_ball_field(e: Error, s: &BallSpec, keys: &GrooveKeys, f: [f64; 2]) -> Error {
     let d = s.ball_diameter_mm;
     // a groove typed as a radius: its value and range in mm
     let e = match e {
@@ -1617,52 +1644,96 @@ fn plan_ball(
     kind: BallBearingKind,
     s: &BallSpec,
     label: &'static str,
+    speeds: Option<RingSpeeds>,
 ) -> Result<(Planned, &'static str)> {
     let (bearing, keys) = ball_bearing(kind, s, label)?;
     let f = [bearing.inner_osculation, bearing.outer_osculation];
-    let solver = BallBearingSolver::new(bearing).map_err(|e| map_ball_field(e, s, &keys, f))?;
     let spec = Box::new(s.clone());
+    if let Some(speeds) = speeds {
+        let solver = BallSpeedSolver::new(bearing, speeds, RaceControl::Outer)
+            .map_err(|e| map_ball_field(e, s, &keys, f))?;
+        let solver = Box::new(solver);
+        return Ok((Planned::BallAtSpeed { solver, spec, keys }, label));
+    }
+    let solver = BallBearingSolver::new(bearing).map_err(|e| map_ball_field(e, s, &keys, f))?;
     Ok((Planned::Ball { solver, spec, keys }, label))
 }
 
-/// The report of a ball bearing's solve: the library's quasi-static equilibrium (Jones 1960, Harris &
-/// Kotzalas 2006) and the Hertz contacts of the most loaded ball for the validity check.
+/// A ball bearing's solver: at rest, or at speed.
+pub(crate) enum BallSolver<'a> {
+    /// The quasi-static equilibrium (§8).
+    AtRest(&'a mut BallBearingSolver),
+    /// The high-speed model (§16).
+    AtSpeed(&'a mut BallSpeedSolver),
+}
+
+/// The report of a ball bearing's solve: the library's equilibrium (Jones 1960, Harris &
+/// Kotzalas 2006; at rest or at speed) and the Hertz contacts of the most loaded ball on
+/// each raceway for the validity check.
 fn ball_report(
     case: &BearingCase,
     label: &'static str,
-    solver: &mut BallBearingSolver,
+    mut solver: BallSolver<'_>,
     s: &BallSpec,
     keys: &GrooveKeys,
     load: &RingLoad,
     start: Option<[f64; 5]>,
 ) -> Result<BearingReport> {
-    let f = {
-        let b = solver.bearing();
-        [b.inner_osculation, b.outer_osculation]
-    };
-    let sol = match start {
-        Some(u) => solver.solve_from(load, u),
-        None => solver.solve(load),
+    let sol = match (&mut solver, start) {
+        (BallSolver::AtRest(s), Some(u)) => s.solve_from(load, u),
+        (BallSolver::AtRest(s), None) => s.solve(load),
+        (BallSolver::AtSpeed(s), Some(u)) => s.solve_from(load, u),
+        (BallSolver::AtSpeed(s), None) => s.solve(load),
     }
     .map_err(map_load)?;
+    let (rows, q_max) = match &solver {
+        BallSolver::AtRest(solver) => rest_rows(solver, &sol),
+        BallSolver::AtSpeed(solver) => speed::speed_rows(solver),
+    };
+    let (b, k_n, race_control) = match &solver {
+        BallSolver::AtRest(solver) => (solver.bearing(), solver.ball_stiffness(), None),
+        BallSolver::AtSpeed(solver) => (solver.bearing(), solver.ball_stiffness(), Some("outer")),
+    };
     let mut warnings = solver_warnings(&sol.status, sol.note)?;
-    let spec = checked_spec(s.rating.as_ref(), true)?;
-    let b = solver.bearing();
-    let kind = match b.kind {
-        BallBearingKind::DeepGroove => RatingType::DeepGrooveBall,
-        BallBearingKind::AngularContact => RatingType::AngularContactBall {
-            contact_angle_rad: b.contact_angle_rad,
-        },
-    };
-    let p_max = sol.max_pressure_mpa[0].max(sol.max_pressure_mpa[1]);
-    let moment = applied_moment(load);
-    let nominal = match b.kind {
-        BallBearingKind::DeepGroove => 0.0,
-        BallBearingKind::AngularContact => b.contact_angle_rad,
-    };
-    let q: Vec<f64> = solver.ball_loads().iter().map(|q| q.load_n).collect();
-    let life = LifeInput::Balls(b, nominal, &q);
-    let rated = rating(kind, &spec, sol.load, moment, p_max, life, &mut warnings)?;
+    // rating and the most loaded ball's contacts: the one post-solve path of the report
+    // and the sweep's rows (crate::bearing_post); the balls' loads on the inner ring (at
+    // speed the inner contact's; the outer contact's centrifugal share is not in the life
+    // yet), the contacts sized with each raceway's largest load
+    let f = [b.inner_osculation, b.outer_osculation];
+    let post = BallPost::new(b, s.rating.as_ref(), [keys.inner, keys.outer])?.run(
+        b,
+        &sol,
+        rows.iter().map(|r| r.load_n),
+        q_max,
+        applied_moment(load),
+        &mut warnings,
+        |e| map_ball_field(e, s, keys, f),
+    )?;
+    let elements = BearingElements::Balls(BallPart {
+        balls: b.balls,
+        free_contact_angle_deg: b.free_contact_angle().to_degrees(),
+        ball_stiffness_n_per_mm1_5: k_n,
+        max_ball_load_n: sol.max_ball_load_n,
+        max_inner_pressure_mpa: sol.max_pressure_mpa[0],
+        max_outer_pressure_mpa: sol.max_pressure_mpa[1],
+        ball_loads: rows,
+        race_control,
+    });
+    let mut report = report(case, label, elements, sol.displacement, sol.load);
+    report.solver = solver_echo(&sol.status);
+    report.load_zone_epsilon = sol.load_zone;
+    report.stiffness_matrix = sol.stiffness;
+    report.warnings = warnings;
+    report.contacts = post.contact_sizes();
+    report.rating = post.rating;
+    if race_control.is_some() {
+        report.ring_speeds_rpm = Some([case.speed.inner_rpm, case.speed.outer_rpm]);
+    }
+    Ok(report)
+}
+
+/// The ball rows of a quasi-static solve and the largest ball load on each raceway.
+fn rest_rows(solver: &BallBearingSolver, sol: &BallSolution) -> (Vec<BallRow>, [f64; 2]) {
     let rows: Vec<BallRow> = solver
         .ball_loads()
         .iter()
@@ -1673,43 +1744,14 @@ fn ball_report(
             approach_mm: q.approach_mm,
             inner_max_pressure_mpa: q.inner_max_pressure_mpa,
             outer_max_pressure_mpa: q.outer_max_pressure_mpa,
+            inner_load_n: q.load_n,
+            outer_load_n: q.load_n,
+            inner_contact_angle_deg: q.contact_angle_rad.to_degrees(),
+            outer_contact_angle_deg: q.contact_angle_rad.to_degrees(),
+            centrifugal_force_n: 0.0,
+            gyroscopic_moment_nmm: 0.0,
         })
         .collect();
-    // The pressures are those of the library's Hertz contacts at the stiffness contact
-    // angle: size the most loaded ball's two contacts against the ball and the groove.
-    let mut contacts = Vec::new();
-    if sol.max_ball_load_n > 0.0 {
-        let pair = b
-            .contacts(b.stiffness_contact_angle())
-            .map_err(|e| map_ball_field(e, s, keys, f))?;
-        for (c, ring, key) in [
-            (&pair[0], "inner", keys.inner),
-            (&pair[1], "outer", keys.outer),
-        ] {
-            let hs = c.solve_force(sol.max_ball_load_n)?;
-            contacts.push(
-                ContactSize::new(
-                    Size::Hertz(point_size(c.geometry(), &hs)),
-                    ["bearing.ball_diameter_mm", &format!("bearing.{key}")],
-                )
-                .at(format!("the most loaded ball on the {ring} raceway")),
-            );
-        }
-    }
-    let elements = BearingElements::Balls(BallPart {
-        balls: b.balls,
-        free_contact_angle_deg: b.free_contact_angle().to_degrees(),
-        ball_stiffness_n_per_mm1_5: solver.ball_stiffness(),
-        max_ball_load_n: sol.max_ball_load_n,
-        max_inner_pressure_mpa: sol.max_pressure_mpa[0],
-        max_outer_pressure_mpa: sol.max_pressure_mpa[1],
-        ball_loads: rows,
-    });
-    let mut report = report(case, label, elements, sol.displacement, sol.load);
-    report.solver = solver_echo(&sol.status);
-    report.stiffness_matrix = sol.stiffness;
-    report.warnings = warnings;
-    report.contacts = contacts;
-    report.rating = rated;
-    Ok(report)
+    let q = sol.max_ball_load_n;
+    (rows, [q, q])
 }

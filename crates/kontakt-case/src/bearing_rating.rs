@@ -1,10 +1,11 @@
 //! The rating part of a whole-bearing report (`[bearing.rating]` in, `rating` out): the
-//! raceway pressures of every roller slice, the ISO 76 static safety from the contact
-//! pressure and from a given C0, the ISO 281 basic rating life from a given C and the
-//! ISO/TS 16281 reference life (the lamina method of roller bearings, the ball loads of ball
-//! bearings), on [`kontakt_bearing::stress`] and
-//! [`kontakt_bearing::life`]. Loads in N, pressures in MPa, lives in millions of
-//! revolutions; `docs/bearing-model.md`, "Life and static safety".
+//! ISO 76 static safety from the contact pressure and from a given C0, the ISO 281 basic
+//! rating life from a given C and the ISO/TS 16281 reference life (the lamina method of
+//! roller bearings, the ball loads of ball bearings), on [`kontakt_bearing::life`]. The
+//! raceway pressures it starts from ([`kontakt_bearing::stress`]) and the call of
+//! `rating` after every solve, the report's and a sweep row's alike, are in
+//! `crate::bearing_post`. Loads in N, pressures in MPa, lives in millions of revolutions;
+//! `docs/bearing-model.md`, "Life and static safety".
 //!
 //! ```toml
 //! [bearing.rating]
@@ -14,17 +15,13 @@
 //! edge_stress_factor = false  # ISO/TS 16281's edge factor on the lamina loads (rollers)
 //! ```
 
-use crate::validity::{ContactSize, Size};
-use kontakt::hertz::validity::line_size;
 use kontakt::{Error, Result};
-use kontakt_bearing::equilibrium::RollerLoad;
 use kontakt_bearing::geometry::{BallBearing, RollerBearing};
 use kontakt_bearing::life::{
     BALL_PRESSURE_LIMIT_MPA, Contact, LaminaOptions, ROLLER_PRESSURE_LIMIT_MPA, RatingType,
     RotatingRing, ball_reference_life, basic_rating_life, dynamic_equivalent_load, lamina_life,
     static_equivalent_load, static_safety_from_pressure,
 };
-use kontakt_bearing::stress::RollerStress;
 use serde::{Deserialize, Serialize};
 
 /// `[bearing.rating]`: the catalogue's load ratings and the lamina life's options.
@@ -153,76 +150,6 @@ pub(crate) fn checked_spec(spec: Option<&RatingSpec>, balls: bool) -> Result<Rat
         ));
     }
     Ok(s)
-}
-
-/// The raceway pressures of every roller: per roller `[inner, outer]` maxima (MPa), the
-/// slice pressures of roller `most` (MPa), and the Hertz contact of the most loaded slice on
-/// each raceway of that roller sized for the validity check.
-pub(crate) struct RollerPressures {
-    pub per_roller: Vec<[f64; 2]>,
-    pub most_inner: Vec<f64>,
-    pub most_outer: Vec<f64>,
-    pub contacts: Vec<ContactSize>,
-}
-
-/// The pressures of `rollers` whose outer raceway slice loads are `loads` (roller-major).
-pub(crate) fn roller_pressures(
-    b: &RollerBearing,
-    rollers: &[RollerLoad],
-    loads: &[f64],
-    most: usize,
-) -> Result<RollerPressures> {
-    let stress = RollerStress::new(b)?;
-    let ns = b.slices;
-    let (mut inner, mut outer) = (vec![0.0; ns], vec![0.0; ns]);
-    let mut per_roller = Vec::with_capacity(rollers.len());
-    let (mut most_inner, mut most_outer) = (Vec::new(), Vec::new());
-    let ratio = |r: &RollerLoad| {
-        if r.outer_n > 0.0 {
-            r.inner_n / r.outer_n
-        } else {
-            1.0
-        }
-    };
-    for (j, r) in rollers.iter().enumerate() {
-        let q = &loads[j * ns..(j + 1) * ns];
-        per_roller.push(stress.roller(q, ratio(r), &mut inner, &mut outer)?);
-        if j == most {
-            most_inner.clone_from(&inner);
-            most_outer.clone_from(&outer);
-        }
-    }
-    let mut contacts = Vec::new();
-    let q = &loads[most * ns..(most + 1) * ns];
-    for (ring, p, name) in [(0, &most_inner, "inner"), (1, &most_outer, "outer")] {
-        let Some(k) = (0..ns).max_by(|a, c| p[*a].total_cmp(&p[*c])) else {
-            continue;
-        };
-        if p[k] > 0.0 {
-            let load = if ring == 0 {
-                q[k] * ratio(&rollers[most])
-            } else {
-                q[k]
-            };
-            let c = stress.contact(k, ring);
-            let sol = c.solve(load / stress.slice_width())?;
-            contacts.push(
-                ContactSize::new(
-                    Size::Hertz(line_size(c.radii(), &sol)),
-                    ["bearing.roller_diameter_mm", "bearing.pitch_diameter_mm"],
-                )
-                .at(format!(
-                    "the most loaded slice of roller {most} on the {name} raceway"
-                )),
-            );
-        }
-    }
-    Ok(RollerPressures {
-        per_roller,
-        most_inner,
-        most_outer,
-        contacts,
-    })
 }
 
 /// The rolling elements' loads for the reference life L10r.

@@ -2,7 +2,7 @@
 //! slice law (independent slices, the default) or coupled slices (the slices of a roller
 //! interact through the elastic half-space, so that the pressure along a crowned or tilted
 //! roller and the edge peak at its ends come out; `docs/bearing-model.md` §12). Both
-//! solvers answer the report's questions through [`SliceSolver`].
+//! solvers answer the report's questions through `SliceSolver`.
 
 use kontakt::Result;
 use kontakt_bearing::equilibrium::coupled::CoupledSliceSolver;

@@ -120,17 +120,9 @@ pub trait Checked {
 /// [`Error::Geometry`] naming the body's key for a contact as large as a body's radius
 /// of curvature, or the report key of a NaN or infinite number.
 pub fn checked<R: Checked>(mut report: R) -> Result<R> {
-    let mut size_warnings = Vec::new();
-    for c in report.contacts() {
-        if let Some(w) = c.verdict()?
-            && !size_warnings.contains(&w)
-        {
-            size_warnings.push(w);
-        }
-    }
+    let size_warnings = size_verdicts(report.contacts())?;
     if let Some(warnings) = report.warnings_mut() {
-        size_warnings.retain(|w| !warnings.contains(w));
-        warnings.splice(0..0, size_warnings);
+        add_size_warnings(size_warnings, warnings);
     }
     // Finite inputs at the extremes of f64 can overflow a result (found by fuzzing: a
     // Carter saturation creepage of inf): an error naming the report key, never inf
@@ -146,6 +138,29 @@ pub fn checked<R: Checked>(mut report: R) -> Result<R> {
         });
     }
     Ok(report)
+}
+
+/// The contact-size verdicts of `contacts`: their warnings without repeats, in order.
+///
+/// # Errors
+/// The first refusal ([`ContactSize::verdict`]).
+pub(crate) fn size_verdicts(contacts: &[ContactSize]) -> Result<Vec<String>> {
+    let mut size_warnings = Vec::new();
+    for c in contacts {
+        if let Some(w) = c.verdict()?
+            && !size_warnings.contains(&w)
+        {
+            size_warnings.push(w);
+        }
+    }
+    Ok(size_warnings)
+}
+
+/// Put the size warnings `size` first in `warnings`, leaving out those already there (as
+/// [`checked`] does; a bearing sweep's row, which has no report, does the same).
+pub(crate) fn add_size_warnings(mut size: Vec<String>, warnings: &mut Vec<String>) {
+    size.retain(|w| !warnings.contains(w));
+    warnings.splice(0..0, size);
 }
 
 /// The key path (`rows[3].power_w`) and value of the first NaN or infinite number in `v`.

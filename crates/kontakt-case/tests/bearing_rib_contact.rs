@@ -6,23 +6,10 @@
 #![allow(clippy::unwrap_used)] // tests: a panic is a failure with its message
 
 use kontakt::bearing::{RollerRib, RollerRibSpec, TaperedKinematics, roller_loads};
-use kontakt_case::{BearingReport, Case, Outcome};
-use std::path::PathBuf;
 
-fn examples() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples")
-}
-
-fn run(text: &str) -> kontakt::Result<BearingReport> {
-    match Case::from_toml_str(text)?.run(&examples())? {
-        Outcome::Bearing(r) => Ok(*r),
-        _ => panic!("not a bearing outcome"),
-    }
-}
-
-fn example(name: &str) -> String {
-    std::fs::read_to_string(examples().join(name)).unwrap()
-}
+#[path = "support/bearing_examples.rs"]
+mod bearing_examples;
+use bearing_examples::{example, run};
 
 /// The rib study's bearing case with the rib contact in the loop.
 fn rib_study_with_rib_contact() -> String {

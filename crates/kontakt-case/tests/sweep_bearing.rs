@@ -76,6 +76,26 @@ fn report(s: &Sweep, i: u64) -> kontakt::Result<BearingReport> {
     }
 }
 
+/// The example bearing `name` with a rating: its own, else a copy with `[bearing.rating]`
+/// appended (representative capacities: test inputs that set the rating's scales, not a
+/// catalogue's).
+fn rated(name: &str) -> PathBuf {
+    let examples = sweeps_dir().join("..");
+    let text = std::fs::read_to_string(examples.join(name)).unwrap();
+    if text.contains("\n[bearing.rating]") {
+        return examples.join(name);
+    }
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("sweep_bearing_rated");
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(name);
+    let rating = "\n[bearing.rating]\ndynamic_n = 60000.0\nstatic_n = 50000.0\n";
+    // tests run in parallel: write aside, then rename (atomic)
+    let aside = dir.join(format!("{name}.{:?}", std::thread::current().id()));
+    std::fs::write(&aside, text + rating).unwrap();
+    std::fs::rename(&aside, &path).unwrap();
+    path
+}
+
 /// The columns that must equal the cold report's numbers, with the report's value.
 fn expected(r: &BearingReport) -> Vec<(String, f64)> {
     let mut v = Vec::new();
@@ -101,6 +121,10 @@ fn expected(r: &BearingReport) -> Vec<(String, f64)> {
             .map(|q| q.rib_load_n)
             .fold(0.0, f64::max);
         v.push(("max_rib_load_n".into(), rib));
+    }
+    if let Some(p) = r.rollers() {
+        v.push(("max_inner_pressure_mpa".into(), p.max_inner_pressure_mpa));
+        v.push(("max_outer_pressure_mpa".into(), p.max_outer_pressure_mpa));
     }
     if let Some(p) = r.balls() {
         v.push(("max_inner_pressure_mpa".into(), p.max_inner_pressure_mpa));
@@ -180,6 +204,25 @@ fn rows_match_the_cold_reports(s: &Sweep, tol: f64) -> (i64, i64) {
                         (got - v).abs() <= tol * floor,
                         "case {i} {name}: sweep {got}, report {v} (scale {floor})"
                     );
+                }
+                // the rating: null where the report has none, else its value (a life
+                // scales as a power of the load: relative to the value itself)
+                let g = &r.rating;
+                for (name, want) in [
+                    ("static_safety_from_pressure", g.static_safety_from_pressure),
+                    ("static_safety", g.static_safety),
+                    ("l10_mrev", g.l10_mrev),
+                    ("l10r_mrev", g.l10r_mrev),
+                ] {
+                    let got = f64s(batch, name)[i];
+                    match (got, want) {
+                        (None, None) => {}
+                        (Some(got), Some(want)) => assert!(
+                            (got - want).abs() <= 1e3 * tol * want.abs(),
+                            "case {i} {name}: sweep {got}, report {want}"
+                        ),
+                        _ => panic!("case {i} {name}: sweep {got:?}, report {want:?}"),
+                    }
                 }
                 warm += iterations[i].unwrap();
                 cold += r.solver.iterations as i64;
@@ -310,7 +353,10 @@ fn numbers_do_not_depend_on_the_thread_count() {
 }
 
 /// No allocation per case: 16 and 256 cases (one block each) on the current thread make
-/// the same allocations but for a few of the table's; one per case would be 240 more.
+/// the same allocations but for a few of the table's; one per case would be 240 more. The
+/// TRB without a rating, and the CRB, the DGBB and the rib-contact TRB with theirs (the
+/// post-solve path: slice pressures, ISO 281/76 and ISO/TS 16281 lives, the contacts'
+/// validity check).
 #[test]
 fn a_case_allocates_nothing() {
     let pool = rayon::ThreadPoolBuilder::new()
@@ -318,27 +364,163 @@ fn a_case_allocates_nothing() {
         .use_current_thread()
         .build()
         .unwrap();
-    let count = |n: usize| {
-        let s = sweep(
-            "bearing_32008x.toml",
-            &format!(
-                "[[parameter]]\nkey = \"load.force_n[0]\"\nstart = 0.0\nstop = 5000.0\ncount = {n}\n"
-            ),
+    for (base, from, to) in [
+        ("bearing_32008x.toml", 0.0, 5000.0),
+        ("bearing_nu_crb.toml", 1000.0, 5000.0),
+        ("bearing_6205.toml", 100.0, 3000.0),
+        ("bearing_rib_contact_60mm.toml", 1000.0, 6000.0),
+    ] {
+        // the 32008 X as it is (no rating), the others rated
+        let base = match base {
+            "bearing_32008x.toml" => sweeps_dir().join("..").join(base),
+            _ => rated(base),
+        };
+        let count = |n: usize| {
+            let s = Sweep::from_toml_str(
+                &format!(
+                    "base = \"{}\"\n[[parameter]]\nkey = \"load.force_n[0]\"\nstart = {from:?}\nstop = {to:?}\ncount = {n}\n",
+                    base.display()
+                ),
+                &sweeps_dir(),
+            )
+            .unwrap();
+            let (t, n) = counting_alloc::allocations(|| pool.install(|| s.chunk_table(0).unwrap()));
+            assert_eq!(
+                strs(&t, "status")
+                    .iter()
+                    .flatten()
+                    .filter(|s| *s == "ok")
+                    .count(),
+                t.num_rows(),
+                "{}",
+                base.display()
+            );
+            if !base.ends_with("bearing_32008x.toml") {
+                assert!(
+                    f64s(&t, "l10r_mrev").iter().all(Option::is_some),
+                    "{}",
+                    base.display()
+                );
+            }
+            n
+        };
+        let (small, large) = (count(16), count(256));
+        assert!(
+            large.abs_diff(small) < 24,
+            "{}: 16 cases: {small} allocations, 256 cases: {large}",
+            base.display()
         );
-        let (t, n) = counting_alloc::allocations(|| pool.install(|| s.chunk_table(0).unwrap()));
-        assert_eq!(
-            strs(&t, "status")
+    }
+}
+
+/// The warnings of a row are the report's, whatever adds them (issue 28: the rating's
+/// warnings were once added by the report only): every example bearing, with a rating
+/// (its own, else representative capacities appended to a copy) from a light load to
+/// twenty times the example's, and the coupled slices once. Every row must equal the
+/// cold report, warnings and refusals included, and the sweep must meet each kind of
+/// warning (pressure above ISO 76's limit, s0 < 1, contact size), for rollers and balls,
+/// so that the comparison is not vacuous.
+#[test]
+fn row_warnings_are_the_reports_for_every_example_bearing() {
+    let examples = sweeps_dir().join("..");
+    let mut names: Vec<_> = std::fs::read_dir(&examples)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .filter(|n| n.starts_with("bearing_") && n.ends_with(".toml"))
+        .collect();
+    names.sort();
+    assert!(names.len() >= 8, "{names:?}");
+    let mut seen: Vec<(String, String)> = Vec::new();
+    for name in &names {
+        let base = rated(name);
+        let text = std::fs::read_to_string(&base).unwrap();
+        let v: toml::Value = toml::from_str(&text).unwrap();
+        let f: Vec<f64> = v["load"]["force_n"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_float().unwrap())
+            .collect();
+        let loads: Vec<String> = [0.25, 1.0, 4.0, 10.0, 20.0]
+            .iter()
+            .map(|k| format!("[{}, {}, {}]", k * f[0], k * f[1], k * f[2]))
+            .collect();
+        let mut variants = vec![(base.clone(), loads.clone())];
+        if name == "bearing_32008x.toml" {
+            // coupled slices (slower: two loads)
+            let coupled = text.replacen("[bearing]\n", "[bearing]\nslice_model = \"coupled\"\n", 1);
+            assert_ne!(coupled, text);
+            let path = base.with_file_name("coupled_bearing_32008x.toml");
+            std::fs::write(&path, coupled).unwrap();
+            variants.push((path, vec![loads[1].clone(), loads[4].clone()]));
+        }
+        for (base, loads) in variants {
+            let s = Sweep::from_toml_str(
+                &format!(
+                    "base = \"{}\"\n[[parameter]]\nkey = \"load.force_n\"\nvalues = [{}]\n",
+                    base.display(),
+                    loads.join(", ")
+                ),
+                &sweeps_dir(),
+            )
+            .unwrap();
+            rows_match_the_cold_reports(&s, 1e-9);
+            let batch = &tables(&s, 1)[0];
+            for w in strs(batch, "warnings").into_iter().flatten() {
+                seen.push((name.clone(), w));
+            }
+            let solved = strs(batch, "status")
                 .iter()
-                .flatten()
-                .filter(|s| *s == "ok")
-                .count(),
-            t.num_rows()
-        );
-        n
+                .filter(|s| s.as_deref() != Some("invalid"))
+                .count();
+            assert!(solved >= 1, "{name}: no case solved");
+        }
+    }
+    let met = |ball: bool, text: &str| {
+        seen.iter().any(|(n, w)| {
+            let is_ball = n.contains("6205") || n.contains("7205");
+            is_ball == ball && w.contains(text)
+        })
     };
-    let (small, large) = (count(16), count(256));
-    assert!(
-        large.abs_diff(small) < 24,
-        "16 cases: {small} allocations, 256 cases: {large}"
+    for ball in [false, true] {
+        assert!(met(ball, "exceeds ISO 76's"), "ball {ball}: {seen:#?}");
+        assert!(
+            met(ball, "static safety s0 = C0/P0"),
+            "ball {ball}: {seen:#?}"
+        );
+    }
+    assert!(met(true, "contact size"), "{seen:#?}");
+}
+
+/// A sweep over the ring speed (`speed.inner_rpm`) plans the bearing again for every new
+/// `[speed]`: each row is the cold report of its case (displacement, largest load, ε), not
+/// the first case's speed (before, every row repeated the rest solution).
+#[test]
+fn a_speed_sweep_plans_each_speed() {
+    let s = sweep(
+        "bearing_7205_speed.toml",
+        "[[parameter]]\nkey = \"speed.inner_rpm\"\nvalues = [0.0, 5000.0, 12000.0, 30000.0]\n",
     );
+    let batch = &tables(&s, 1)[0];
+    let dz = f64s(batch, "displacement_mm[2]");
+    let eps = f64s(batch, "load_zone_epsilon");
+    let text = std::fs::read_to_string(sweeps_dir().join("../bearing_7205_speed.toml")).unwrap();
+    for (i, n) in [0.0, 5000.0, 12000.0, 30000.0].iter().enumerate() {
+        let case = text.replace("inner_rpm = 15000.0", &format!("inner_rpm = {n:.1}"));
+        let Case::Bearing(c) = Case::from_toml_str(&case).unwrap() else {
+            panic!("not a bearing case")
+        };
+        let r = run_bearing_case(&c).unwrap();
+        let got = dz[i].unwrap();
+        assert!(
+            (got - r.displacement_mm[2]).abs() <= 1e-9 * r.displacement_mm[0].abs(),
+            "{n} r/min: sweep {got}, report {}",
+            r.displacement_mm[2]
+        );
+        assert!(
+            (eps[i].unwrap() - r.load_zone_epsilon.unwrap()).abs() < 1e-9,
+            "{n}"
+        );
+    }
+    assert!(eps[3].unwrap() > eps[0].unwrap());
 }

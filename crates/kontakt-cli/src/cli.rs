@@ -81,7 +81,8 @@ pub enum Command {
     Demo(DemoArgs),
     /// Compare PimP and Hertz with the coupled half-space solver for the roller-end/rib
     /// pairings (Wirsching et al. (2020) Figures 7-10) and write a report (Markdown, plots, CSV;
-    /// docs/pimp.md, docs/halfspace.md).
+    /// docs/pimp.md, docs/halfspace.md); with --bearing: the whole-bearing friction torque
+    /// against the measured datasets of validation/measured/ (docs/measured-torque.md).
     Validate(ValidateArgs),
     #[command(about = traction_about())]
     Traction(TractionArgs),
@@ -260,6 +261,11 @@ pub struct ValidateArgs {
     /// Print the results as JSON instead of the summary table.
     #[arg(long)]
     pub json: bool,
+    /// Instead of the rib-contact study: the measured friction torque of whole bearings
+    /// (validation/measured/) beside the SKF (2004) model at the same conditions, as a
+    /// table, bearing_torque.csv, bearing_report.md and plots (torque in N·mm).
+    #[arg(long, conflicts_with = "cells")]
+    pub bearing: bool,
 }
 
 #[derive(Debug, Args)]

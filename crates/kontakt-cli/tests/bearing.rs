@@ -40,6 +40,16 @@ fn table_rows(text: &str, header: &str) -> usize {
         .count()
 }
 
+/// The text table of `kontakt bearing examples/<name>`, which must succeed.
+fn table_of(name: &str) -> String {
+    let out = kontakt()
+        .args(["bearing", example(name).to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    String::from_utf8(out.stdout).unwrap()
+}
+
 /// The table: the header, the solver line and one row per roller (16 for the 32216).
 #[test]
 fn table_of_the_32216() {
@@ -275,12 +285,7 @@ fn plots_are_written() {
 fn ball_bearing_table_json_csv_and_plots() {
     let dir = support::tempdir("bearing", "balls");
     let path = example("bearing_6205.toml");
-    let out = kontakt()
-        .args(["bearing", path.to_str().unwrap()])
-        .output()
-        .unwrap();
-    assert!(out.status.success());
-    let text = String::from_utf8(out.stdout).unwrap();
+    let text = table_of("bearing_6205.toml");
     assert!(
         text.contains("deep groove ball bearing: 6205 class DGBB"),
         "{text}"
@@ -347,7 +352,7 @@ fn ball_bearing_table_json_csv_and_plots() {
     let mut lines = text.lines();
     assert_eq!(
         lines.next().unwrap(),
-        "azimuth_deg,load_n,contact_angle_deg,approach_mm,inner_max_pressure_mpa,outer_max_pressure_mpa"
+        "azimuth_deg,load_n,contact_angle_deg,approach_mm,inner_max_pressure_mpa,outer_max_pressure_mpa,inner_load_n,outer_load_n,inner_contact_angle_deg,outer_contact_angle_deg,centrifugal_force_n,gyroscopic_moment_nmm"
     );
     assert_eq!(lines.count(), 12);
     let svg = std::fs::read_to_string(&plot).unwrap();
@@ -378,6 +383,34 @@ fn ball_bearing_table_json_csv_and_plots() {
     let p = edited_example(&dir, "bearing_6205.toml", "balls = 9", "balls = 16");
     let e = bad(&["bearing", p.to_str().unwrap()]);
     assert!(e.contains("bearing.balls"), "{e}");
+}
+
+/// A ball bearing at speed (`[speed]`): the table shows both contacts' loads and angles,
+/// the centrifugal force and the gyroscopic moment per ball and the load zone; the JSON
+/// echoes the speeds; a speed on a roller bearing is an input error naming the key.
+#[test]
+fn ball_bearing_at_speed_table_and_json() {
+    let path = example("bearing_7205_speed.toml");
+    let text = table_of("bearing_7205_speed.toml");
+    assert!(
+        text.contains("speed: inner ring 15000 r/min, outer ring 0 r/min; outer-race control"),
+        "{text}"
+    );
+    assert!(text.contains("load zone ε = 1."), "{text}");
+    assert_eq!(table_rows(&text, "M_g N mm"), 12, "{text}");
+    let v = run_json(&["bearing", path.to_str().unwrap()]);
+    assert_eq!(v["ring_speeds_rpm"][0], 15_000.0);
+    assert!(num(&v["ball_loads"][0]["centrifugal_force_n"]) > 10.0);
+    assert!(num(&v["ball_loads"][0]["outer_contact_angle_deg"]) < 40.0);
+    let dir = support::tempdir("bearing", "speed");
+    let crb = edited_example(
+        &dir,
+        "bearing_nu_crb.toml",
+        "[load]",
+        "[speed]\ninner_rpm = 3000.0\n\n[load]",
+    );
+    let msg = bad(&["bearing", crb.to_str().unwrap()]);
+    assert!(msg.contains("speed.inner_rpm"), "{msg}");
 }
 
 /// `[bearing.rating]`: with C and C0 the table and the JSON give the ISO 281 life, the

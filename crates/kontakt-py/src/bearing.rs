@@ -278,15 +278,40 @@ impl BearingResult {
         self.column(py, |r| r.azimuth_deg, |b| b.azimuth_deg)
     }
     /// Inner raceway load of each element [N] (a ball's load is the same on both
-    /// raceways), shape (Z,).
+    /// raceways at rest), shape (Z,).
     #[getter]
     fn inner_load_n<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        self.column(py, |r| r.inner_load_n, |b| b.load_n)
+        self.column(py, |r| r.inner_load_n, |b| b.inner_load_n)
     }
-    /// Outer raceway load of each element [N], shape (Z,).
+    /// Outer raceway load of each element [N] (a ball's carries its centrifugal force
+    /// too at speed), shape (Z,).
     #[getter]
     fn outer_load_n<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        self.column(py, |r| r.outer_load_n, |b| b.load_n)
+        self.column(py, |r| r.outer_load_n, |b| b.outer_load_n)
+    }
+    /// Inner contact angle of each element [deg] (a ball's; a roller's cone angle),
+    /// shape (Z,).
+    #[getter]
+    fn inner_contact_angle_deg<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        let cone = self.report.rollers().map_or(0.0, |r| r.cone_angle_deg);
+        self.column(py, |_| cone, |b| b.inner_contact_angle_deg)
+    }
+    /// Outer contact angle of each element [deg] (a ball's, falling with speed; a
+    /// roller's cup angle), shape (Z,).
+    #[getter]
+    fn outer_contact_angle_deg<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        let cup = self.report.rollers().map_or(0.0, |r| r.contact_angle_deg);
+        self.column(py, |_| cup, |b| b.outer_contact_angle_deg)
+    }
+    /// Centrifugal force of each ball [N] (0 at rest and for rollers), shape (Z,).
+    #[getter]
+    fn centrifugal_force_n<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        self.column(py, |_| 0.0, |b| b.centrifugal_force_n)
+    }
+    /// Gyroscopic moment of each ball [N·mm] (0 at rest and for rollers), shape (Z,).
+    #[getter]
+    fn gyroscopic_moment_nmm<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        self.column(py, |_| 0.0, |b| b.gyroscopic_moment_nmm)
     }
     /// Rib load of each element [N] (tapered rollers; 0 otherwise), shape (Z,).
     #[getter]

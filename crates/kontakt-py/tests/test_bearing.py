@@ -84,10 +84,18 @@ def test_every_example_is_kontakt_run(path):
     else:
         rows = d["ball_loads"]
         z = d["balls"]
-        same = {"azimuth_deg": "azimuth_deg", "inner_load_n": "load_n", "outer_load_n": "load_n",
-                "contact_angle_deg": "contact_angle_deg", "approach_mm": "approach_mm",
+        same = {"azimuth_deg": "azimuth_deg", "inner_load_n": "inner_load_n",
+                "outer_load_n": "outer_load_n", "contact_angle_deg": "contact_angle_deg",
+                "approach_mm": "approach_mm", "inner_contact_angle_deg": "inner_contact_angle_deg",
+                "outer_contact_angle_deg": "outer_contact_angle_deg",
+                "centrifugal_force_n": "centrifugal_force_n",
+                "gyroscopic_moment_nmm": "gyroscopic_moment_nmm",
                 "inner_max_pressure_mpa": "inner_max_pressure_mpa",
                 "outer_max_pressure_mpa": "outer_max_pressure_mpa"}
+        # at rest a ball's one load and angle on both raceways
+        if "ring_speeds_rpm" not in d:
+            np.testing.assert_array_equal(r.outer_load_n, [row["load_n"] for row in rows])
+            np.testing.assert_array_equal(r.outer_contact_angle_deg, [row["contact_angle_deg"] for row in rows])
         assert r.max_element_load_n == d["max_ball_load_n"]
         np.testing.assert_array_equal(r.rib_load_n, np.zeros(z))
         assert r.slices is None and r.max_load_per_length_n_per_mm is None
@@ -284,3 +292,37 @@ def test_a_load_it_cannot_carry_is_a_convergence_error_or_named():
     b = kt.Bearing(case)
     with pytest.raises((kt.InputError, kt.ConvergenceError)):
         b.solve(force=(5000.0, 0.0, -3000.0), hold_tilts=True)
+
+
+def test_a_ball_bearing_at_speed():
+    """The [speed] of the case: the outer contact angles fall below the free 40 deg and the
+    inner ones rise, the outer loads exceed the inner ones by about the centrifugal force;
+    every ball balances Q_i n_i - Q_o n_o + F_c e_r + (2 M_g / D) t_o = 0; the inner
+    contacts carry the applied force; more speed, more split."""
+    path = REPO / "examples/bearing_7205_speed.toml"
+    case = tomllib.loads(path.read_text())
+    b = kt.Bearing(case)
+    r = b.solve(**solve_args(case))
+    close(r.to_dict(), kt.run(path).to_dict())
+    ai, ao = np.radians(r.inner_contact_angle_deg), np.radians(r.outer_contact_angle_deg)
+    qi, qo, fc = r.inner_load_n, r.outer_load_n, r.centrifugal_force_n
+    to = 2.0 * r.gyroscopic_moment_nmm / 7.938
+    radial = qi * np.cos(ai) - qo * np.cos(ao) + fc - to * np.sin(ao)
+    axial = qi * np.sin(ai) - qo * np.sin(ao) + to * np.cos(ao)
+    assert np.all(np.hypot(radial, axial) <= 1e-9 * qo)
+    assert np.all(ao < np.radians(40.0)) and np.all(qo > qi) and np.all(fc > 10.0)
+    psi = np.radians(r.azimuth_deg)
+    f = [np.sum(qi * np.cos(ai) * np.cos(psi)), np.sum(qi * np.cos(ai) * np.sin(psi)), np.sum(qi * np.sin(ai))]
+    np.testing.assert_allclose(f, [2000.0, 0.0, 2000.0], rtol=0, atol=1e-9 * 2000.0)
+    assert r.load_zone_epsilon > 1.0
+    # under pure axial load the split grows with the speed (under a combined load the
+    # ring's displacement changes too, and a ball's inner angle may fall)
+    axial = dict(force=(0.0, 0.0, 2000.0))
+    slow = b.solve(**axial)
+    faster = dict(case, speed={"inner_rpm": 30000.0, "outer_rpm": 0.0})
+    fast = kt.Bearing(faster).solve(**axial)
+    assert fast.outer_contact_angle_deg[0] < slow.outer_contact_angle_deg[0] < 40.0
+    assert fast.inner_contact_angle_deg[0] > slow.inner_contact_angle_deg[0] > 40.0
+    bad = dict(case, speed={"inner_rpm": float("nan")})
+    with pytest.raises(kt.InputError, match="speed.inner_rpm"):
+        kt.Bearing(bad)

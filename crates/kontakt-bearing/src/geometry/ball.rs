@@ -8,6 +8,9 @@ use kontakt::material::ElasticMaterial;
 use kontakt::{Error, Result};
 use std::f64::consts::{FRAC_PI_2, PI};
 
+/// The density of bearing steel, kg/m³: the default of [`BallBearing::ball_density_kg_m3`].
+pub const STEEL_DENSITY_KG_M3: f64 = 7850.0;
+
 /// Which kind of ball bearing.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
@@ -55,6 +58,10 @@ pub struct BallBearing {
     pub ring_material: ElasticMaterial,
     /// Azimuth ψ₀ of ball 0 from the x axis, rad; ball j sits at `ψ₀ + 2π j/Z`.
     pub first_ball_azimuth_rad: f64,
+    /// Density of the balls, kg/m³ (default bearing steel, 7850; silicon nitride about
+    /// 3200): their centrifugal force and gyroscopic moment at speed
+    /// ([`crate::ball_speed`]).
+    pub ball_density_kg_m3: f64,
 }
 
 impl BallBearing {
@@ -77,6 +84,7 @@ impl BallBearing {
             ball_material: ElasticMaterial::STEEL,
             ring_material: ElasticMaterial::STEEL,
             first_ball_azimuth_rad: 0.0,
+            ball_density_kg_m3: STEEL_DENSITY_KG_M3,
         }
     }
 
@@ -297,6 +305,16 @@ impl BallBearing {
                 "first_ball_azimuth_rad",
                 self.first_ball_azimuth_rad,
                 "a finite angle in rad",
+            ));
+        }
+        if !(self.ball_density_kg_m3.is_finite()
+            && self.ball_density_kg_m3 > 0.0
+            && self.ball_density_kg_m3 <= 1e5)
+        {
+            return Err(Error::invalid(
+                "ball_density_kg_m3",
+                self.ball_density_kg_m3,
+                "a density 0 < density <= 100000 kg/m^3 (steel 7850, silicon nitride about 3200)",
             ));
         }
         self.contacts(self.stiffness_contact_angle()).map(|_| ())

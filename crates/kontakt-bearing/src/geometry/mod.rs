@@ -19,7 +19,7 @@ mod ball;
 pub mod design;
 mod rib_study;
 
-pub use ball::{BallBearing, BallBearingKind};
+pub use ball::{BallBearing, BallBearingKind, STEEL_DENSITY_KG_M3};
 
 use crate::profile::Profile;
 use kontakt::{Error, Result};
@@ -394,8 +394,10 @@ impl RollerBearing {
 
 /// The field that bounds a profile's length, its value and the half-length it covers
 /// (mm): `length_mm` of the profiles that have one, the last `x_mm` of a table (beyond it
-/// the table extends its last drop); `None` for the profiles without an end.
-fn profile_reach(p: &Profile) -> Option<(String, f64, f64)> {
+/// the table extends its last drop); `None` for the profiles without an end. The name is
+/// borrowed but for a table's, so that a validation (done by the life per solve, as in a
+/// sweep's case) allocates nothing.
+fn profile_reach(p: &Profile) -> Option<(std::borrow::Cow<'static, str>, f64, f64)> {
     match p {
         Profile::IsoLogarithmic { length_mm, .. }
         | Profile::Logarithmic { length_mm, .. }
@@ -408,7 +410,7 @@ fn profile_reach(p: &Profile) -> Option<(String, f64, f64)> {
         Profile::Tabulated(t) => {
             let n = t.x_mm().len();
             let last = *t.x_mm().last()?;
-            Some((format!("x_mm[{}]", n - 1), last, last))
+            Some((format!("x_mm[{}]", n - 1).into(), last, last))
         }
         Profile::Straight | Profile::Circular { .. } => None,
     }

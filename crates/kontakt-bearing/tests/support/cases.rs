@@ -3,6 +3,7 @@
 
 use kontakt_bearing::equilibrium::RingLoad;
 use kontakt_bearing::geometry::{BallBearing, RollerBearing};
+use kontakt_bearing::speed::RingSpeeds;
 
 /// The 32216 geometry of examples/bearing_32216.toml (d_m 108.5 mm, rollers 17 × 20.7 mm,
 /// cup 16.0°, cone 11.7°, ISO profile, zero clearance) with issue 28's 20 rollers
@@ -36,6 +37,12 @@ pub fn dgbb() -> BallBearing {
 /// 5 kN radial and 2 kN axial times `scale`.
 pub fn dgbb_load(scale: f64) -> RingLoad {
     RingLoad::forces([5_000.0 * scale, 0.0, 2_000.0 * scale, 0.0, 0.0])
+}
+
+/// The ring speeds of the ball bearing at speed: the inner ring at 10 000 r/min (about the
+/// oil-lubricated limit of a 6210), the outer ring fixed.
+pub fn dgbb_speeds() -> RingSpeeds {
+    RingSpeeds::from_rpm(10_000.0, 0.0)
 }
 
 /// A cylindrical roller bearing of 14 rollers 10 × 12 mm on a 60 mm pitch circle (the

@@ -177,14 +177,8 @@ impl BearingElement {
             Planned::Roller(s) => roller_limits(s.bearing()),
             Planned::Coupled(s) => roller_limits(s.bearing()),
             Planned::RibRoller(s) => roller_limits(s.bearing()),
-            Planned::Ball { solver, .. } => {
-                let b = solver.bearing();
-                (
-                    b.ball_diameter_mm,
-                    0.5 * b.pitch_diameter_mm,
-                    "bearing.ball_diameter_mm",
-                )
-            }
+            Planned::Ball { solver, .. } => ball_limits(solver.bearing()),
+            Planned::BallAtSpeed { solver, .. } => ball_limits(solver.bearing()),
         }
     }
 
@@ -254,13 +248,15 @@ impl BearingElement {
                     Some(w) => solver.solve_from(&load, w),
                     None => solver.solve(&load),
                 }?;
-                (
-                    sol.load,
-                    sol.stiffness,
-                    sol.status,
-                    sol.note,
-                    sol.max_ball_load_n,
-                )
+                ball_step(sol)
+            }
+            // at speed: the stiffness is not symmetric (the gyroscopic friction)
+            Planned::BallAtSpeed { solver, .. } => {
+                let sol = match start {
+                    Some(w) => solver.solve_from(&load, w),
+                    None => solver.solve(&load),
+                }?;
+                ball_step(sol)
             }
         };
         if !matches!(
@@ -350,4 +346,32 @@ fn roller_step<S: SliceSolver>(
         sol.note,
         sol.max_roller_load_n,
     ))
+}
+
+/// The limits of a ball bearing: the ball diameter, the pitch radius and the key.
+fn ball_limits(b: &kontakt_bearing::geometry::BallBearing) -> (f64, f64, &'static str) {
+    (
+        b.ball_diameter_mm,
+        0.5 * b.pitch_diameter_mm,
+        "bearing.ball_diameter_mm",
+    )
+}
+
+/// A ball bearing's solution as the element's step.
+fn ball_step(
+    sol: kontakt_bearing::ball_equilibrium::BallSolution,
+) -> (
+    [f64; 5],
+    [[f64; 5]; 5],
+    kontakt::solve::SolveStatus,
+    Option<&'static str>,
+    f64,
+) {
+    (
+        sol.load,
+        sol.stiffness,
+        sol.status,
+        sol.note,
+        sol.max_ball_load_n,
+    )
 }

@@ -6,8 +6,8 @@
 //!   numbers only) are set on the load directly: no TOML is edited or read per case.
 //! - **Other parameters** (geometry, clearance, profile, `bearing.type`, ...): when one of
 //!   them changes from one case to the next, the case is read from the edited base table
-//!   as any sweep case is; the bearing is planned again only when its `[bearing]` table
-//!   differs from the planned one.
+//!   as any sweep case is; the bearing is planned again only when its `[bearing]` or
+//!   `[speed]` table differs from the planned one.
 //! - **Warm starts**: the cases run in blocks of [`BLOCK`] consecutive cases (aligned to
 //!   case indices, so the blocks and hence the numbers do not depend on the thread count);
 //!   a block plans its bearing once and solves every case from the last converged
@@ -19,23 +19,30 @@
 //!   every row (null where a value does not apply). A case whose elements all lift off is
 //!   status `lifted_off` with zero force and its message in `warnings`, not an error.
 //!
-//! A case allocates nothing on the way (the solver owns its buffers; a row is `Copy` data
-//! but for its warnings and error texts, which exist only when there are any).
+//! - **After the solve** a row goes through the report's own post-solve path
+//!   (`crate::bearing_post`, planned once per block): raceway pressures, rating
+//!   (`[bearing.rating]`) with its warnings, and the validity check of the most loaded
+//!   contacts, so that the row's warnings and refusals are the report's.
+//!
+//! A case allocates nothing on the way (the solver and the post own their buffers; a row is
+//! `Copy` data but for its warnings and error texts, which exist only when there are any).
 
 use super::table::Status;
 use super::{Sweep, ValueKind};
 use crate::bearing_case::{
-    BearingCase, BearingLoadSpec, Planned, coarse_slices_warning, map_load, plan, ring_load,
-    solver_warnings,
+    BallSpec, BearingCase, BearingLoadSpec, BearingSpec, GrooveKeys, Planned, map_ball_field,
+    map_load, plan, ring_load, solver_warnings,
 };
+use crate::bearing_post::{BallPost, Post, RollerPost, applied_moment};
 use crate::bearing_slices::SliceSolver;
 use crate::case::Case;
-use crate::validity::{ContactSize, Size};
 use arrow_array::{ArrayRef, BooleanArray, Float64Array, Int64Array, StringArray};
-use kontakt::hertz::HertzPointContact;
-use kontakt::hertz::validity::point_size;
 use kontakt::solve::SolveStatus;
-use kontakt_bearing::equilibrium::RingLoad;
+use kontakt_bearing::ball_equilibrium::{BallBearingSolver, BallSolution};
+use kontakt_bearing::ball_speed::BallSpeedSolver;
+use kontakt_bearing::equilibrium::{RingLoad, RollerSolution};
+use kontakt_bearing::geometry::BallBearing;
+use kontakt_bearing::roller_equilibrium::RibContactSolver;
 use std::ops::Range;
 use std::sync::Arc;
 
@@ -138,6 +145,12 @@ pub(crate) struct BearingOut {
     load_zone_epsilon: Option<f64>,
     /// The diagonal of the stiffness matrix: N/mm (x, y, z), N·mm/rad (tilts).
     stiffness: [f64; 5],
+    /// The rating (`[bearing.rating]`, the report's `rating`): ISO 76's static safety from
+    /// the pressure and C0/P0, ISO 281's L10 and ISO/TS 16281's L10r (Mrev).
+    static_safety_from_pressure: Option<f64>,
+    static_safety: Option<f64>,
+    l10_mrev: Option<f64>,
+    l10r_mrev: Option<f64>,
     converged: bool,
     termination: &'static str,
     iterations: usize,
@@ -166,7 +179,7 @@ impl BearingRow {
 
 /// The output columns of a bearing sweep, after `case`, the parameters, `status` and
 /// `error`, with their units.
-pub const COLUMNS: [(&str, &str); 30] = [
+pub const COLUMNS: [(&str, &str); 34] = [
     (
         "bearing_type",
         "cylindrical, tapered, thrust, deep_groove_ball, angular_contact_ball",
@@ -197,11 +210,11 @@ pub const COLUMNS: [(&str, &str); 30] = [
     ),
     (
         "max_inner_pressure_mpa",
-        "largest Hertz pressure, inner raceway, MPa (balls)",
+        "largest raceway pressure, inner raceway, MPa",
     ),
     (
         "max_outer_pressure_mpa",
-        "largest Hertz pressure, outer raceway, MPa (balls)",
+        "largest raceway pressure, outer raceway, MPa",
     ),
     (
         "load_zone_epsilon",
@@ -224,6 +237,22 @@ pub const COLUMNS: [(&str, &str); 30] = [
         "the report's warnings joined by \"; \" (null: none)",
     ),
     ("lifted_off", "every element lifted off (zero force)"),
+    (
+        "static_safety_from_pressure",
+        "ISO 76 static safety from the largest raceway pressure (null without load)",
+    ),
+    (
+        "static_safety",
+        "ISO 76 static safety C0/P0 (null without bearing.rating.static_n or load)",
+    ),
+    (
+        "l10_mrev",
+        "ISO 281 basic rating life L10, 1e6 rev (null without bearing.rating.dynamic_n or load)",
+    ),
+    (
+        "l10r_mrev",
+        "ISO/TS 16281 reference rating life L10r, 1e6 rev (null without bearing.rating.dynamic_n or load)",
+    ),
 ];
 
 /// A bearing planned for a block of cases: the solver, the warm start and what the rows
@@ -233,32 +262,50 @@ struct BlockModel {
     label: &'static str,
     planned: Planned,
     last: Option<[f64; 5]>,
-    /// The warning of a roller bearing with few slices, the same for every load.
-    coarse: Option<String>,
-    /// A ball bearing's two Hertz contacts at its stiffness contact angle, for the
-    /// validity check of the most loaded ball.
-    contacts: Option<[HertzPointContact; 2]>,
+    /// What follows the equilibrium (pressures, rating, contact sizes), planned once, the
+    /// report's own ([`crate::bearing_post`]); its error is the row's after the solve, as
+    /// in the report.
+    post: Result<PostPlan, kontakt::Error>,
 }
+
+/// The post-solve plan of a block's bearing.
+enum PostPlan {
+    Roller(RollerPost),
+    Ball(Box<BallPost>),
+}
+
+/// A row's failure: its status and error text.
+type Failure = (Status, String);
 
 impl BlockModel {
     fn new(case: BearingCase) -> kontakt::Result<Self> {
         let (planned, label) = plan(&case)?;
-        let (coarse, contacts) = match &planned {
-            Planned::Roller(s) => (coarse_slices_warning(s.bearing().slices), None),
-            Planned::Coupled(s) => (coarse_slices_warning(s.bearing().slices), None),
-            Planned::RibRoller(s) => (coarse_slices_warning(s.bearing().slices), None),
-            Planned::Ball { solver, .. } => {
-                let b = solver.bearing();
-                (None, Some(b.contacts(b.stiffness_contact_angle())?))
-            }
+        let roller = |b: &kontakt_bearing::geometry::RollerBearing| {
+            let spec = match &case.bearing {
+                BearingSpec::Cylindrical(s) | BearingSpec::Tapered(s) | BearingSpec::Thrust(s) => {
+                    s.rating.as_ref()
+                }
+                _ => None,
+            };
+            RollerPost::new(b, spec).map(PostPlan::Roller)
+        };
+        let ball = |b: &BallBearing, spec: &BallSpec, keys: &GrooveKeys| {
+            BallPost::new(b, spec.rating.as_ref(), [keys.inner, keys.outer])
+                .map(|p| PostPlan::Ball(Box::new(p)))
+        };
+        let post = match &planned {
+            Planned::Roller(s) => roller(s.bearing()),
+            Planned::Coupled(s) => roller(s.bearing()),
+            Planned::RibRoller(s) => roller(s.bearing()),
+            Planned::Ball { solver, spec, keys } => ball(solver.bearing(), spec, keys),
+            Planned::BallAtSpeed { solver, spec, keys } => ball(solver.bearing(), spec, keys),
         };
         Ok(BlockModel {
             case,
             label,
             planned,
             last: None,
-            coarse,
-            contacts,
+            post,
         })
     }
 
@@ -274,45 +321,38 @@ impl BlockModel {
         } else {
             self.last
         };
+        let label = self.label;
+        let post = &mut self.post;
+        let same = |e| e;
         let solved = match &mut self.planned {
-            Planned::Roller(solver) => roller_out(solver, self.label, &ring, start),
-            Planned::Coupled(solver) => roller_out(solver.as_mut(), self.label, &ring, start),
-            Planned::RibRoller(solver) => rib_roller_out(solver, self.label, &ring, start),
-            Planned::Ball { solver, .. } => match start {
-                Some(u) => solver.solve_from(&ring, u),
-                None => solver.solve(&ring),
+            Planned::Roller(solver) => element_row(solver, label, &ring, start, post, &same),
+            Planned::Coupled(solver) => {
+                element_row(solver.as_mut(), label, &ring, start, post, &same)
             }
-            .map(|sol| {
-                let balls = solver.ball_loads();
-                let out = BearingOut {
-                    bearing_type: self.label,
-                    elements: balls.len(),
-                    displacement: sol.displacement,
-                    load: sol.load,
-                    max_element_load_n: sol.max_ball_load_n,
-                    loaded_elements: balls.iter().filter(|b| b.load_n > 0.0).count(),
-                    max_rib_load_n: None,
-                    max_load_per_length_n_per_mm: None,
-                    max_pressure_mpa: Some(sol.max_pressure_mpa),
-                    load_zone_epsilon: None,
-                    stiffness: std::array::from_fn(|i| sol.stiffness[i][i]),
-                    ..status_out(&sol.status)
+            Planned::RibRoller(solver) => {
+                element_row(solver.as_mut(), label, &ring, start, post, &same)
+            }
+            Planned::Ball { solver, spec, keys } => {
+                let f = {
+                    let b = solver.bearing();
+                    [b.inner_osculation, b.outer_osculation]
                 };
-                (out, sol.status, sol.note)
-            }),
+                let field = |e| map_ball_field(e, spec, keys, f);
+                element_row(solver, label, &ring, start, post, &field)
+            }
+            Planned::BallAtSpeed { solver, spec, keys } => {
+                let f = {
+                    let b = solver.bearing();
+                    [b.inner_osculation, b.outer_osculation]
+                };
+                let field = |e| map_ball_field(e, spec, keys, f);
+                element_row(solver.as_mut(), label, &ring, start, post, &field)
+            }
         };
-        let (out, status, note) = match solved.map_err(map_load) {
+        let (out, warnings) = match solved {
             Ok(s) => s,
-            Err(e) => return BearingRow::failed(Status::Invalid, e.to_string()),
+            Err((status, e)) => return BearingRow::failed(status, e),
         };
-        let mut warnings = match solver_warnings(&status, note) {
-            Ok(w) => w,
-            Err(e) => return BearingRow::failed(Status::Failed, e.to_string()),
-        };
-        warnings.extend(self.coarse.iter().cloned());
-        if let Err(e) = self.size_warnings(out.max_element_load_n, &mut warnings) {
-            return BearingRow::failed(Status::Invalid, e.to_string());
-        }
         if let Some(name) = non_finite(&out) {
             return BearingRow::failed(
                 Status::Invalid,
@@ -336,40 +376,240 @@ impl BlockModel {
             warnings,
         }
     }
+}
 
-    /// The validity check of the report path (`crate::validity::checked`) for the most
-    /// loaded ball's two Hertz contacts: a warning above 0.4 of a radius, a refusal at 1.
-    fn size_warnings(&self, q_max: f64, warnings: &mut Vec<String>) -> kontakt::Result<()> {
-        let (Some(pair), Planned::Ball { keys, .. }) = (&self.contacts, &self.planned) else {
-            return Ok(());
-        };
-        if q_max <= 0.0 {
-            return Ok(());
-        }
-        let mut size = Vec::new();
-        for (c, ring, key) in [
-            (&pair[0], "inner", keys.inner),
-            (&pair[1], "outer", keys.outer),
-        ] {
-            let check = point_size(c.geometry(), &c.solve_force(q_max)?);
-            // texts only for a contact the check speaks about
-            if check.ratio > kontakt::hertz::validity::WARN_SIZE_RATIO {
-                let c = ContactSize::new(
-                    Size::Hertz(check),
-                    ["bearing.ball_diameter_mm", &format!("bearing.{key}")],
-                )
-                .at(format!("the most loaded ball on the {ring} raceway"));
-                if let Some(w) = c.verdict()?
-                    && !size.contains(&w)
-                {
-                    size.push(w);
-                }
+/// `Element::solve_at` and `Element::status` of a solver with `solve` and `solve_from`
+/// whose solution has `status` and `note`.
+macro_rules! warm_solve {
+    () => {
+        fn solve_at(
+            &mut self,
+            ring: &RingLoad,
+            start: Option<[f64; 5]>,
+        ) -> kontakt::Result<Self::Solution> {
+            match start {
+                Some(u) => self.solve_from(ring, u),
+                None => self.solve(ring),
             }
         }
-        // first in the warnings, in the contacts' order, as `checked` puts them
-        size.retain(|w| !warnings.contains(w));
-        warnings.splice(0..0, size);
-        Ok(())
+
+        fn status(sol: &Self::Solution) -> (&SolveStatus, Option<&'static str>) {
+            (&sol.status, sol.note)
+        }
+    };
+}
+
+/// A planned solver of a sweep's block: a roller bearing (either slice model) or a ball
+/// bearing.
+trait Element {
+    type Solution;
+    /// Solve from `start` (the closed forms when `None`).
+    fn solve_at(
+        &mut self,
+        ring: &RingLoad,
+        start: Option<[f64; 5]>,
+    ) -> kontakt::Result<Self::Solution>;
+    /// The solver's status and note.
+    fn status(sol: &Self::Solution) -> (&SolveStatus, Option<&'static str>);
+    /// The post-solve path of the report ([`crate::bearing_post`]).
+    fn post(&self, sol: &Self::Solution, a: PostArgs<'_>) -> kontakt::Result<Post>;
+    /// The row's numbers but for the post's.
+    fn out(&self, label: &'static str, sol: &Self::Solution) -> BearingOut;
+}
+
+/// The row of a case: the solve from `start`, the solver's warnings (a failure to
+/// converge is the row's `failed`), then the one post-solve path of the report with the
+/// validity check of its contacts as [`crate::validity::checked`] makes it.
+fn element_row<E: Element>(
+    solver: &mut E,
+    label: &'static str,
+    ring: &RingLoad,
+    start: Option<[f64; 5]>,
+    post: &mut Result<PostPlan, kontakt::Error>,
+    field: &dyn Fn(kontakt::Error) -> kontakt::Error,
+) -> Result<(BearingOut, Vec<String>), Failure> {
+    let invalid = |e: kontakt::Error| (Status::Invalid, e.to_string());
+    let sol = solver
+        .solve_at(ring, start)
+        .map_err(|e| invalid(map_load(e)))?;
+    let (status, note) = E::status(&sol);
+    let mut warnings =
+        solver_warnings(status, note).map_err(|e| (Status::Failed, e.to_string()))?;
+    let plan = post.as_mut().map_err(|e| invalid(e.clone()))?;
+    let args = PostArgs {
+        plan,
+        moment: applied_moment(ring),
+        warnings: &mut warnings,
+        field,
+    };
+    let post = solver.post(&sol, args).map_err(invalid)?;
+    post.check_sizes(&mut warnings).map_err(invalid)?;
+    let r = &post.rating;
+    let out = BearingOut {
+        max_pressure_mpa: Some(post.max_pressure_mpa),
+        static_safety_from_pressure: r.static_safety_from_pressure,
+        static_safety: r.static_safety,
+        l10_mrev: r.l10_mrev,
+        l10r_mrev: r.l10r_mrev,
+        ..solver.out(label, &sol)
+    };
+    Ok((out, warnings))
+}
+
+/// What a row's post takes besides the solution: the plan, the applied moment (N·mm), the
+/// row's warnings and the case key of a geometry error (`field`).
+struct PostArgs<'a> {
+    plan: &'a mut PostPlan,
+    moment: f64,
+    warnings: &'a mut Vec<String>,
+    field: &'a dyn Fn(kontakt::Error) -> kontakt::Error,
+}
+
+impl PostPlan {
+    /// The roller post, or an error for a post planned for a ball bearing (a defect: the
+    /// plan makes the solver and its post together).
+    fn roller(&mut self) -> kontakt::Result<&mut RollerPost> {
+        match self {
+            PostPlan::Roller(p) => Ok(p),
+            PostPlan::Ball(_) => Err(wrong_post("roller")),
+        }
+    }
+
+    /// The ball post (as [`PostPlan::roller`]).
+    fn ball(&mut self) -> kontakt::Result<&mut BallPost> {
+        match self {
+            PostPlan::Ball(p) => Ok(p),
+            PostPlan::Roller(_) => Err(wrong_post("ball")),
+        }
+    }
+}
+
+/// A post planned for another bearing type.
+fn wrong_post(label: &str) -> kontakt::Error {
+    kontakt::Error::invalid(
+        "bearing.type",
+        label,
+        "the bearing type the sweep's block was planned for",
+    )
+}
+
+impl<S: SliceSolver> Element for S {
+    type Solution = RollerSolution;
+
+    warm_solve!();
+
+    fn post(&self, sol: &RollerSolution, a: PostArgs<'_>) -> kontakt::Result<Post> {
+        a.plan
+            .roller()?
+            .run(self, sol, a.moment, a.warnings, |_, _, _, _, _| {})
+    }
+
+    fn out(&self, label: &'static str, sol: &RollerSolution) -> BearingOut {
+        let ns = self.bearing().slices;
+        let width = self.bearing().effective_length_mm / ns as f64;
+        let per_length = self.slice_loads().iter().copied().fold(0.0, f64::max) / width;
+        let rollers = self.roller_loads();
+        let rib = rollers.iter().map(|r| r.rib_n).fold(0.0, f64::max);
+        let loaded = rollers.iter().filter(|r| r.outer_n > 0.0).count();
+        roller_row_out(label, sol, [rollers.len(), loaded], rib, per_length)
+    }
+}
+
+/// A roller model's row numbers from its solution `sol`: `[elements, loaded elements]`,
+/// the largest rib load (N) and slice load per length (N/mm).
+fn roller_row_out(
+    label: &'static str,
+    sol: &RollerSolution,
+    elements: [usize; 2],
+    rib: f64,
+    per_length: f64,
+) -> BearingOut {
+    BearingOut {
+        bearing_type: label,
+        elements: elements[0],
+        displacement: sol.displacement,
+        load: sol.load,
+        max_element_load_n: sol.max_roller_load_n,
+        loaded_elements: elements[1],
+        max_rib_load_n: Some(rib),
+        max_load_per_length_n_per_mm: Some(per_length),
+        load_zone_epsilon: sol.load_zone,
+        stiffness: std::array::from_fn(|i| sol.stiffness[i][i]),
+        ..status_out(&sol.status)
+    }
+}
+
+/// The rib-contact roller model (`roller_model = "rib_contact"`): the cup and cone slices
+/// each with their own loads, the rib a Hertz contact.
+impl Element for RibContactSolver {
+    type Solution = RollerSolution;
+
+    warm_solve!();
+
+    fn post(&self, sol: &RollerSolution, a: PostArgs<'_>) -> kontakt::Result<Post> {
+        a.plan
+            .roller()?
+            .run_rib(self, sol, a.moment, a.warnings, |_, _, _, _, _| {})
+    }
+
+    fn out(&self, label: &'static str, sol: &RollerSolution) -> BearingOut {
+        let b = self.bearing();
+        let width = b.effective_length_mm / b.slices as f64;
+        let per_length = self
+            .cup_slice_loads()
+            .iter()
+            .chain(self.cone_slice_loads())
+            .copied()
+            .fold(0.0, f64::max)
+            / width;
+        let rollers = self.roller_loads();
+        let loaded = rollers.iter().filter(|r| r.outer_n > 0.0).count();
+        let rib = self.max_rib_load_n();
+        roller_row_out(label, sol, [rollers.len(), loaded], rib, per_length)
+    }
+}
+
+impl Element for BallBearingSolver {
+    type Solution = BallSolution;
+
+    warm_solve!();
+
+    fn post(&self, sol: &BallSolution, a: PostArgs<'_>) -> kontakt::Result<Post> {
+        let loads = self.ball_loads().iter().map(|q| q.load_n);
+        let q = sol.max_ball_load_n;
+        let b = self.bearing();
+        a.plan
+            .ball()?
+            .run(b, sol, loads, [q, q], a.moment, a.warnings, a.field)
+    }
+
+    fn out(&self, label: &'static str, sol: &BallSolution) -> BearingOut {
+        ball_out(label, sol, self.ball_loads().iter().map(|b| b.load_n))
+    }
+}
+
+/// A ball bearing at speed (`[speed]`, the outer raceway controlling): the balls' inner
+/// contact loads in the life, each raceway's contact sized with its own largest load, as
+/// the report.
+impl Element for BallSpeedSolver {
+    type Solution = BallSolution;
+
+    warm_solve!();
+
+    fn post(&self, sol: &BallSolution, a: PostArgs<'_>) -> kontakt::Result<Post> {
+        let balls = self.ball_loads();
+        let q_max = balls.iter().fold([0.0_f64; 2], |m, q| {
+            [m[0].max(q.inner_load_n), m[1].max(q.outer_load_n)]
+        });
+        let loads = balls.iter().map(|q| q.inner_load_n);
+        let b = self.bearing();
+        a.plan
+            .ball()?
+            .run(b, sol, loads, q_max, a.moment, a.warnings, a.field)
+    }
+
+    fn out(&self, label: &'static str, sol: &BallSolution) -> BearingOut {
+        ball_out(label, sol, self.ball_loads().iter().map(|b| b.inner_load_n))
     }
 }
 
@@ -387,6 +627,10 @@ fn status_out(s: &SolveStatus) -> BearingOut {
         max_pressure_mpa: None,
         load_zone_epsilon: None,
         stiffness: [0.0; 5],
+        static_safety_from_pressure: None,
+        static_safety: None,
+        l10_mrev: None,
+        l10r_mrev: None,
         converged: s.converged(),
         termination: s.termination.as_str(),
         iterations: s.iterations,
@@ -421,11 +665,16 @@ fn non_finite(o: &BearingOut) -> Option<&'static str> {
         o.stiffness[3],
         o.stiffness[4],
         o.residual,
+        opt(o.static_safety_from_pressure),
+        opt(o.static_safety),
+        opt(o.l10_mrev),
+        opt(o.l10r_mrev),
     ];
     // the numeric columns in COLUMNS order, skipping bearing_type, elements (integers),
-    // loaded_elements and the solver's flags
-    const NAMES: [usize; 22] = [
-        2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 27,
+    // loaded_elements, the solver's flags, the warnings and lifted_off
+    const NAMES: [usize; 26] = [
+        2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 14, 15, 16, 17, 18, 19, 20, 21, 22, 23, 27, 30, 31, 32,
+        33,
     ];
     values
         .iter()
@@ -550,7 +799,9 @@ impl Sweep {
             Err(e) => return Err(e.to_string()),
         };
         match previous {
-            Some(mut m) if m.case.bearing == case.bearing => {
+            // the ring speeds are part of the plan (a ball bearing at speed has its own
+            // solver): a new `[speed]` plans again, as a new `[bearing]` does
+            Some(mut m) if m.case.bearing == case.bearing && m.case.speed == case.speed => {
                 m.case = case;
                 Ok(m)
             }
@@ -620,7 +871,36 @@ pub(crate) fn bearing_columns(rows: &[BearingRow]) -> Vec<(&'static str, ArrayRe
             .map(|r| r.out.as_ref().map(|o| o.max_element_load_n == 0.0))
             .collect::<Vec<_>>(),
     )));
+    arrays.push(f(&|o| o.static_safety_from_pressure));
+    arrays.push(f(&|o| o.static_safety));
+    arrays.push(f(&|o| o.l10_mrev));
+    arrays.push(f(&|o| o.l10r_mrev));
     COLUMNS.iter().map(|(name, _)| *name).zip(arrays).collect()
+}
+
+/// The row numbers of a ball bearing's solution but for the post's; `loads` are the balls'
+/// loads on the inner ring.
+fn ball_out(
+    label: &'static str,
+    sol: &BallSolution,
+    loads: impl Iterator<Item = f64>,
+) -> BearingOut {
+    let (mut elements, mut loaded) = (0, 0);
+    for q in loads {
+        elements += 1;
+        loaded += usize::from(q > 0.0);
+    }
+    BearingOut {
+        bearing_type: label,
+        elements,
+        displacement: sol.displacement,
+        load: sol.load,
+        max_element_load_n: sol.max_ball_load_n,
+        loaded_elements: loaded,
+        load_zone_epsilon: sol.load_zone,
+        stiffness: std::array::from_fn(|i| sol.stiffness[i][i]),
+        ..status_out(&sol.status)
+    }
 }
 
 #[cfg(test)]
@@ -661,82 +941,4 @@ mod tests {
         assert_eq!(l.prescribed.dz_mm, Some(0.01));
         assert_eq!(l.moment_nmm, [5.0, 0.0]);
     }
-}
-
-/// The row of a roller bearing's solve from `start` (the closed forms when `None`), for
-/// either slice model.
-fn roller_out<S: SliceSolver>(
-    solver: &mut S,
-    label: &'static str,
-    ring: &RingLoad,
-    start: Option<[f64; 5]>,
-) -> kontakt::Result<(BearingOut, SolveStatus, Option<&'static str>)> {
-    let sol = match start {
-        Some(u) => solver.solve_from(ring, u),
-        None => solver.solve(ring),
-    }?;
-    let ns = solver.bearing().slices;
-    let width = solver.bearing().effective_length_mm / ns as f64;
-    let per_length = solver.slice_loads().iter().copied().fold(0.0, f64::max) / width;
-    let max_pressure_mpa = solver.slice_pressures().map(|(inner, outer)| {
-        let peak = |p: &[f64]| p.iter().copied().fold(0.0, f64::max);
-        [peak(inner), peak(outer)]
-    });
-    let rollers = solver.roller_loads();
-    let rib = rollers.iter().map(|r| r.rib_n).fold(0.0, f64::max);
-    let loaded = rollers.iter().filter(|r| r.outer_n > 0.0).count();
-    let out = BearingOut {
-        bearing_type: label,
-        elements: rollers.len(),
-        displacement: sol.displacement,
-        load: sol.load,
-        max_element_load_n: sol.max_roller_load_n,
-        loaded_elements: loaded,
-        max_rib_load_n: Some(rib),
-        max_load_per_length_n_per_mm: Some(per_length),
-        max_pressure_mpa,
-        load_zone_epsilon: sol.load_zone,
-        stiffness: std::array::from_fn(|i| sol.stiffness[i][i]),
-        ..status_out(&sol.status)
-    };
-    Ok((out, sol.status, sol.note))
-}
-
-/// The row of a rib-contact roller model's solve (`roller_model = "rib_contact"`): the cup
-/// and cone slices each with their own loads, the rib a Hertz contact.
-fn rib_roller_out(
-    solver: &mut kontakt_bearing::roller_equilibrium::RibContactSolver,
-    label: &'static str,
-    ring: &RingLoad,
-    start: Option<[f64; 5]>,
-) -> kontakt::Result<(BearingOut, SolveStatus, Option<&'static str>)> {
-    let sol = match start {
-        Some(u) => solver.solve_from(ring, u),
-        None => solver.solve(ring),
-    }?;
-    let b = solver.bearing();
-    let width = b.effective_length_mm / b.slices as f64;
-    let per_length = solver
-        .cup_slice_loads()
-        .iter()
-        .chain(solver.cone_slice_loads())
-        .copied()
-        .fold(0.0, f64::max)
-        / width;
-    let rollers = solver.roller_loads();
-    let out = BearingOut {
-        bearing_type: label,
-        elements: rollers.len(),
-        displacement: sol.displacement,
-        load: sol.load,
-        max_element_load_n: sol.max_roller_load_n,
-        loaded_elements: rollers.iter().filter(|r| r.outer_n > 0.0).count(),
-        max_rib_load_n: Some(solver.max_rib_load_n()),
-        max_load_per_length_n_per_mm: Some(per_length),
-        max_pressure_mpa: None,
-        load_zone_epsilon: sol.load_zone,
-        stiffness: std::array::from_fn(|i| sol.stiffness[i][i]),
-        ..status_out(&sol.status)
-    };
-    Ok((out, sol.status, sol.note))
 }

@@ -87,7 +87,7 @@ pub fn print_report(out: &mut impl Write, r: &BearingReport, json: bool) -> Resu
     )?;
     match &r.elements {
         BearingElements::Rollers(p) => roller_table(out, r, p)?,
-        BearingElements::Balls(p) => ball_table(out, p)?,
+        BearingElements::Balls(p) => ball_table(out, r, p)?,
     }
     rating_lines(out, &r.rating)?;
     if let Some(f) = &r.friction {
@@ -229,15 +229,21 @@ fn roller_table(out: &mut impl Write, r: &BearingReport, p: &RollerPart) -> Resu
     Ok(())
 }
 
-fn ball_table(out: &mut impl Write, p: &BallPart) -> Result<()> {
+fn ball_table(out: &mut impl Write, r: &BearingReport, p: &BallPart) -> Result<()> {
+    let eps = r
+        .load_zone_epsilon
+        .map_or_else(|| "-".to_string(), |e| format!("{:.4}", Num(e)));
     writeln!(
         out,
-        "  largest ball load {:.1} N; largest Hertz pressure {:.0} MPa inner, {:.0} MPa outer raceway",
+        "  load zone ε = {eps}; largest ball load {:.1} N; largest Hertz pressure {:.0} MPa inner, {:.0} MPa outer raceway",
         Num(p.max_ball_load_n),
         Num(p.max_inner_pressure_mpa),
         Num(p.max_outer_pressure_mpa)
     )?;
     writeln!(out)?;
+    if let Some([ni, no]) = r.ring_speeds_rpm {
+        return ball_speed_table(out, p, [ni, no]);
+    }
     writeln!(
         out,
         "  {:>6} {:>10} {:>8} {:>12} {:>10} {:>10}",
@@ -251,6 +257,47 @@ fn ball_table(out: &mut impl Write, p: &BallPart) -> Result<()> {
             Num(row.load_n),
             Num(row.contact_angle_deg),
             Num(row.approach_mm),
+            Num(row.inner_max_pressure_mpa),
+            Num(row.outer_max_pressure_mpa)
+        )?;
+    }
+    Ok(())
+}
+
+/// The balls at speed: both contacts' loads and angles, the centrifugal force and the
+/// gyroscopic moment.
+fn ball_speed_table(out: &mut impl Write, p: &BallPart, rpm: [f64; 2]) -> Result<()> {
+    writeln!(
+        out,
+        "  speed: inner ring {:.0} r/min, outer ring {:.0} r/min; {}-race control (Jones 1960)",
+        Num(rpm[0]),
+        Num(rpm[1]),
+        p.race_control.unwrap_or("outer")
+    )?;
+    writeln!(
+        out,
+        "  {:>6} {:>10} {:>10} {:>8} {:>8} {:>8} {:>10} {:>9} {:>9}",
+        "ψ deg",
+        "Q_in N",
+        "Q_out N",
+        "α_in°",
+        "α_out°",
+        "F_c N",
+        "M_g N mm",
+        "p_in MPa",
+        "p_out MPa"
+    )?;
+    for row in &p.ball_loads {
+        writeln!(
+            out,
+            "  {:>6.1} {:>10.1} {:>10.1} {:>8.2} {:>8.2} {:>8.1} {:>10.1} {:>9.0} {:>9.0}",
+            Num(row.azimuth_deg),
+            Num(row.inner_load_n),
+            Num(row.outer_load_n),
+            Num(row.inner_contact_angle_deg),
+            Num(row.outer_contact_angle_deg),
+            Num(row.centrifugal_force_n),
+            Num(row.gyroscopic_moment_nmm),
             Num(row.inner_max_pressure_mpa),
             Num(row.outer_max_pressure_mpa)
         )?;

@@ -18,6 +18,13 @@ pub fn rib_roller_table(out: &mut impl Write, p: &RollerPart) -> Result<()> {
         "  rollers in their own balance, Hertz rib contact{normal}; largest rib pressure {:.0} MPa; skew moments 0 (no friction)",
         Num(p.max_rib_pressure_mpa.unwrap_or(f64::NAN))
     )?;
+    if let Some(fc) = p.roller_loads.first().and_then(|r| r.centrifugal_force_n) {
+        writeln!(
+            out,
+            "  at speed: centrifugal force F_c = m ω_c² r_c = {:.4} N on every roller (on the cup)",
+            Num(fc)
+        )?;
+    }
     let outer = p.roller_loads.iter().any(|r| r.outer_rib_load_n.is_some());
     let (rib, extra) = if outer {
         ("Q_irib N", format!(" {:>10}", "Q_orib N"))

@@ -22,6 +22,7 @@ pub mod rough;
 pub mod sweep;
 pub mod traction;
 pub mod validate;
+pub mod validate_bearing;
 use std::io::Write;
 
 pub use crate::error::{InputError, cannot_write};
@@ -208,6 +209,9 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
             }
         }
         Command::Demo(args) => pimp::demo(&args.out, out, args.json),
+        Command::Validate(args) if args.bearing => {
+            validate_bearing::validate_bearing(&args.out, out, args.json)
+        }
         Command::Validate(args) => validate::validate(&args.out, args.cells, out, args.json),
         Command::Traction(args) => traction::run(args, out),
         Command::Mindlin(args) => mindlin::run(args, out),

@@ -19,8 +19,8 @@ pub use kinematics::{
 };
 pub use rib_friction::{
     BearingRibFriction, Operating, PressureModel, RibFriction, RibFrictionModel, RibLubrication,
-    RollerCup, RollerLoads, RollerMass, RollerRibFriction, RollerRibLoad, RollerSet, roller_loads,
-    roller_loads_on_cup,
+    RollerCup, RollerLoads, RollerMass, RollerRibFriction, RollerRibLoad, RollerSet, frustum,
+    roller_loads, roller_loads_on_cup,
 };
 pub use roller_rib::{
     CONTACT_HEIGHT, FaceShape, RibShape, RollerRib, RollerRibSpec, STUDY_FORCES, TABLE1,

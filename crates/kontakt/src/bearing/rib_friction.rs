@@ -222,10 +222,7 @@ impl RollerSet {
             ));
         }
         let small = big - self.length * beta.tan();
-        let sum = big * big + big * small + small * small;
-        let volume = std::f64::consts::PI * self.length * sum / 3.0; // mm³
-        let from_large =
-            self.length * (big * big + 2.0 * big * small + 3.0 * small * small) / (4.0 * sum);
+        let (volume, from_large) = frustum(big, small, self.length); // mm³, mm
         let apex_distance = s_large - from_large;
         let alpha_m = (rr.raceway_angle_deg + rr.spec.bearing.roller_half_angle_deg).to_radians();
         Ok(RollerMass {
@@ -234,6 +231,19 @@ impl RollerSet {
             radius: apex_distance * alpha_m.sin(),
         })
     }
+}
+
+/// The volume \[mm³\] of a frustum of radii `large` and `small` \[mm\] and length `length`
+/// \[mm\], `V = π l (R² + R r + r²)/3`, and the distance of its centroid from the large
+/// end, `l (R² + 2 R r + 3 r²) / (4 (R² + R r + r²))` \[mm\] (a cylinder for `R = r`: `l/2`).
+/// The rollers of [`RollerSet::mass`] and of the whole bearing at speed
+/// (`kontakt_bearing::roller_speed`).
+pub fn frustum(large: f64, small: f64, length: f64) -> (f64, f64) {
+    let sum = large * large + large * small + small * small;
+    let volume = std::f64::consts::PI * length * sum / 3.0;
+    let from_large =
+        length * (large * large + 2.0 * large * small + 3.0 * small * small) / (4.0 * sum);
+    (volume, from_large)
 }
 
 /// The normal forces on one roller \[N\].

@@ -1,0 +1,243 @@
+//! `kontakt validate --bearing`: it runs on every dataset of validation/measured/, writes
+//! the CSV with its documented columns, draws a plot per dataset, and the plot is right:
+//! each measured point is a filled marker where its value says in the plot's pixel frame,
+//! and not beside it.
+
+#![allow(clippy::unwrap_used)] // tests: a panic is a failure with its message
+
+mod support;
+
+use std::collections::HashMap;
+use std::path::Path;
+use support::{kontakt, read_csv, tempdir};
+
+const COLUMNS: &str = "dataset,status,speed_rpm,axial_load_n,radial_load_n,temperature_c,viscosity_mm2_s,measured_nmm,band_pct,skf_nmm,skf_rolling_nmm,skf_sliding_nmm,skf_drag_nmm,skf_deviation_pct,aihara_nmm,aihara_deviation_pct,contact_nmm,contact_deviation_pct";
+
+const DATASETS: [&str; 6] = [
+    "manjunath2023_fig13",
+    "manjunath2023_fig13_alt",
+    "wingertszahn2023_axial",
+    "wingertszahn2023_combined",
+    "wingertszahn2023_radial",
+    "zhou_hoeprich1991_fig9",
+];
+
+fn run(dir: &Path) -> String {
+    let out = kontakt()
+        .args(["validate", "--bearing", "--out", dir.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).unwrap()
+}
+
+#[test]
+fn validate_bearing_runs_on_every_dataset() {
+    let dir = tempdir("validate-bearing", "all");
+    let stdout = run(&dir);
+    for id in DATASETS {
+        assert!(stdout.contains(id), "{id} missing in\n{stdout}");
+        assert!(
+            dir.join(format!("bearing_{id}.png")).is_file(),
+            "plot of {id}"
+        );
+    }
+    assert!(stdout.contains("SKF against measured: mean |dev|"));
+    let text = std::fs::read_to_string(dir.join("bearing_torque.csv")).unwrap();
+    assert_eq!(text.lines().next().unwrap(), COLUMNS);
+    let rows = read_csv(&dir.join("bearing_torque.csv"));
+    assert_eq!(rows.len(), 14 + 14 + 4 + 8 + 5 + 8);
+    for r in &rows {
+        // no model value where there is no model: Aihara's inputs and the contact model
+        for k in ["aihara_nmm", "contact_nmm", "contact_deviation_pct"] {
+            assert_eq!(r[k], "", "{k} of {r:?}");
+        }
+        assert_eq!(r["status"], "unverified");
+        let has_skf = r["dataset"] != "zhou_hoeprich1991_fig9";
+        assert_eq!(!r["skf_nmm"].is_empty(), has_skf, "{r:?}");
+        if has_skf {
+            let (m, s): (f64, f64) = (
+                r["measured_nmm"].parse().unwrap(),
+                r["skf_nmm"].parse().unwrap(),
+            );
+            let d: f64 = r["skf_deviation_pct"].parse().unwrap();
+            assert!((d - 100.0 * (s / m - 1.0)).abs() < 0.01, "{r:?}");
+            let parts: f64 = ["skf_rolling_nmm", "skf_sliding_nmm", "skf_drag_nmm"]
+                .iter()
+                .map(|k| r[*k].parse::<f64>().unwrap())
+                .sum();
+            assert!((parts - s).abs() < 0.01, "{r:?}");
+        }
+    }
+    let curves = read_csv(&dir.join("bearing_skf_curves.csv"));
+    assert!(curves.iter().any(|c| c["x_name"] == "radial_load_n"));
+    let report = std::fs::read_to_string(dir.join("bearing_report.md")).unwrap();
+    assert!(report.contains("Y = 1.6") && report.contains("Y = 1.4"));
+    // JSON
+    let out = kontakt()
+        .args([
+            "validate",
+            "--bearing",
+            "--json",
+            "--out",
+            dir.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(v["datasets"].as_array().unwrap().len(), 6);
+    assert_eq!(v["unit_torque"], "N·mm");
+}
+
+/// `--cells` belongs to the rib-contact study: with `--bearing` it is an input error.
+#[test]
+fn validate_bearing_refuses_cells() {
+    let out = kontakt()
+        .args(["validate", "--bearing", "--cells", "32"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--cells"));
+}
+
+fn near(p: &image::Rgb<u8>, c: (u8, u8, u8), tol: i32) -> bool {
+    (i32::from(p[0]) - i32::from(c.0)).abs() <= tol
+        && (i32::from(p[1]) - i32::from(c.1)).abs() <= tol
+        && (i32::from(p[2]) - i32::from(c.2)).abs() <= tol
+}
+
+/// The plot frame (left, top, right, bottom) in pixels: the outermost rows and columns
+/// that are black over more than half the image.
+fn frame(img: &image::RgbImage) -> (u32, u32, u32, u32) {
+    let (w, h) = img.dimensions();
+    let dark = |x: u32, y: u32| near(img.get_pixel(x, y), (0, 0, 0), 60);
+    let rows: Vec<u32> = (0..h)
+        .filter(|&y| (0..w).filter(|&x| dark(x, y)).count() as u32 > w / 2)
+        .collect();
+    let top = *rows.first().unwrap();
+    let bottom = *rows.last().unwrap();
+    let cols: Vec<u32> = (0..w)
+        .filter(|&x| {
+            (top..=bottom).filter(|&y| dark(x, y)).count() as u32 > (bottom - top) * 9 / 10
+        })
+        .collect();
+    (*cols.first().unwrap(), top, *cols.last().unwrap(), bottom)
+}
+
+/// How many of the 5 × 5 pixels around (x, y) have colour `c`: a filled marker covers all
+/// 25, a line (the error bar, a dashed curve) at most a stripe.
+fn marker_cover(img: &image::RgbImage, (x, y): (f64, f64), c: (u8, u8, u8)) -> usize {
+    let (cx, cy) = (x.round() as i64, y.round() as i64);
+    let mut n = 0;
+    for dy in -2..=2 {
+        for dx in -2..=2 {
+            let (px, py) = (cx + dx, cy + dy);
+            if px >= 0
+                && py >= 0
+                && let Some(p) = img.get_pixel_checked(px as u32, py as u32)
+            {
+                n += usize::from(near(p, c, 40));
+            }
+        }
+    }
+    n
+}
+
+/// The measured points of the Manjunath plot land where their values say: the axes span the
+/// data padded by 4 % (x) and 0 to the largest value + 4 % (y, from zero), as kontakt-plot
+/// draws a line plot; the data are the measured points, their error bars and the SKF
+/// curves, all read back from the CSV files the command wrote. At each point's pixel there
+/// is a filled marker of its temperature's colour; 12 pixels beside it (still on its error
+/// bar, vertically) there is none. A marker that another one partly hides is skipped.
+#[test]
+fn measured_points_land_where_their_values_say() {
+    let dir = tempdir("validate-bearing", "pixels");
+    run(&dir);
+    let id = "manjunath2023_fig13";
+    let rows: Vec<_> = read_csv(&dir.join("bearing_torque.csv"))
+        .into_iter()
+        .filter(|r| r["dataset"] == id)
+        .collect();
+    let curves: Vec<_> = read_csv(&dir.join("bearing_skf_curves.csv"))
+        .into_iter()
+        .filter(|r| r["dataset"] == id)
+        .collect();
+    let f = |r: &HashMap<String, String>, k: &str| r[k].parse::<f64>().unwrap();
+    let (mut x0, mut x1, mut y1) = (f64::MAX, f64::MIN, f64::MIN);
+    for r in &rows {
+        let (x, y, band) = (f(r, "speed_rpm"), f(r, "measured_nmm"), f(r, "band_pct"));
+        x0 = x0.min(x);
+        x1 = x1.max(x);
+        y1 = y1.max(y * (1.0 + band / 100.0));
+    }
+    for c in &curves {
+        x0 = x0.min(f(c, "x"));
+        x1 = x1.max(f(c, "x"));
+        y1 = y1.max(f(c, "skf_nmm"));
+    }
+    let span = x1 - x0;
+    let (x0, x1) = (x0 - 0.04 * span, x1 + 0.04 * span);
+    let (y0, y1) = (0.0, 1.04 * y1);
+
+    let img = image::open(dir.join(format!("bearing_{id}.png")))
+        .unwrap()
+        .to_rgb8();
+    let (left, top, right, bottom) = frame(&img);
+    assert!(
+        right > left + 400 && bottom > top + 300,
+        "{left} {top} {right} {bottom}"
+    );
+    let pixel = |x: f64, y: f64| {
+        (
+            f64::from(left) + (x - x0) / (x1 - x0) * f64::from(right - left),
+            f64::from(bottom) - (y - y0) / (y1 - y0) * f64::from(bottom - top),
+        )
+    };
+    // the temperatures take the palette's colours in order of appearance: 55 °C, 65 °C
+    let colour = |t: f64| {
+        if t == 55.0 {
+            kontakt_plot::PALETTE[0]
+        } else {
+            kontakt_plot::PALETTE[1]
+        }
+    };
+    let at: Vec<(f64, f64)> = rows
+        .iter()
+        .map(|r| pixel(f(r, "speed_rpm"), f(r, "measured_nmm")))
+        .collect();
+    let mut checked = 0;
+    for (k, r) in rows.iter().enumerate() {
+        let c = colour(f(r, "temperature_c"));
+        let (px, py) = at[k];
+        // a marker partly hidden under another one (55 and 65 °C close together) is skipped
+        let hidden = at
+            .iter()
+            .enumerate()
+            .any(|(j, q)| j != k && (q.0 - px).hypot(q.1 - py) < 16.0);
+        if hidden {
+            continue;
+        }
+        checked += 1;
+        let at = marker_cover(&img, (px, py), c);
+        assert!(
+            at >= 21,
+            "{r:?}: {at}/25 marker pixels at ({px:.1}, {py:.1})"
+        );
+        for (dx, dy) in [(0.0, -12.0), (0.0, 12.0), (12.0, 0.0), (-12.0, 0.0)] {
+            let beside = marker_cover(&img, (px + dx, py + dy), c);
+            assert!(
+                beside < 21,
+                "{r:?}: a marker {dx},{dy} px off ({beside}/25)"
+            );
+        }
+    }
+    assert!(
+        checked >= 10,
+        "only {checked} of {} points free of overlap",
+        rows.len()
+    );
+}
