@@ -72,6 +72,7 @@ use serde::{Deserialize, Serialize};
 
 mod roller_speed;
 mod speed;
+pub(crate) use roller_speed::iso_speed_warning;
 pub use speed::BearingSpeedSpec;
 
 /// The contact modulus of two steel bodies (E = 210 GPa, ν = 0.3), MPa: the default of the
@@ -995,6 +996,7 @@ fn friction_of_planned(
     };
     crate::bearing_friction::friction_report(
         op,
+        [case.speed.inner_rpm, case.speed.outer_rpm],
         case.lubricant.as_ref(),
         case.friction.as_ref(),
         case.catalogue.as_ref(),
@@ -1175,9 +1177,9 @@ fn roller_report<S: SliceSolver>(
         slice_loads: loads,
         pressure_map: map,
     };
-    Ok(roller_part_report(
-        case, label, b, &sol, parts, post, warnings,
-    ))
+    let mut report = roller_part_report(case, label, b, &sol, parts, post, warnings);
+    roller_speed::report_iso_speed(&case.speed, &mut report);
+    Ok(report)
 }
 
 /// The rating spec of a roller bearing case (`[bearing.rating]`).

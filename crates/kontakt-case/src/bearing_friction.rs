@@ -1,5 +1,6 @@
 //! The friction torque of a roller bearing case (issue 29 §1-2): the optional tables
-//! `[operating]` (ring speeds, supply, drag), `[lubricant]` and `[friction]` (the friction
+//! `[operating]` (supply, drag, film options, speed sweep; the ring speeds are the case's
+//! one `[speed]` table, `speed.inner_rpm` and `speed.outer_rpm`), `[lubricant]` and `[friction]` (the friction
 //! case's own vocabulary, [`crate::friction_case::LubricantSpec`] and
 //! [`crate::friction_case::FrictionSpec`]) and `[catalogue]` (envelope, SKF series and Y,
 //! Schaeffler factors) of a bearing case, and the report's `friction` section: the torque
@@ -31,15 +32,16 @@ use kontakt_bearing::geometry::{RollerBearing, RollerBearingKind};
 use kontakt_bearing::roller_equilibrium::RibContactSolver;
 use serde::{Deserialize, Serialize};
 
-/// `[operating]`: the operating point of the friction torque.
+/// The largest ring speed, r/min: `[speed]`'s (`bearing_case::speed::MAX_RING_RPM`, not
+/// imported: `bearing_case` imports this module), for the sweep's speeds.
+const MAX_RING_RPM: f64 = 100_000.0;
+
+/// `[operating]`: the operating point of the friction torque but for the ring speeds, which
+/// are the case's `[speed]` (`speed.inner_rpm`, `speed.outer_rpm`, r/min; at rest: the
+/// starting torque).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct OperatingSpec {
-    /// Inner ring speed \[r/min\].
-    pub inner_rpm: f64,
-    /// Outer ring speed \[r/min\] (default 0).
-    #[serde(default)]
-    pub outer_rpm: f64,
     /// `"circulating"` (default) or `"oil_bath"`.
     #[serde(default)]
     pub supply: Supply,
@@ -65,8 +67,9 @@ pub struct OperatingSpec {
     /// Biboulet-Houpert degree of starvation S_a (default: fully flooded).
     #[serde(default)]
     pub starvation_degree: Option<f64>,
-    /// Inner ring speeds of a speed sweep \[r/min\] on the same load distribution, each
-    /// beside the catalogue models (`friction.speed_sweep`; 1 to 10 000 speeds).
+    /// Inner ring speeds of a speed sweep \[r/min\] on the same load distribution (the one
+    /// solved at `[speed]`), the outer ring at `speed.outer_rpm`, each beside the catalogue
+    /// models (`friction.speed_sweep`; 1 to 10 000 speeds).
     #[serde(default)]
     pub sweep_inner_rpm: Option<Vec<f64>>,
 }
@@ -313,13 +316,16 @@ fn key(prefix: &str) -> impl Fn(&str) -> String + '_ {
 }
 
 /// The friction section of `bearing` under the force `force` \[N\] (its magnitude is the
-/// P of the coefficient).
+/// P of the coefficient) at the ring speeds `rpm` = `[speed.inner_rpm, speed.outer_rpm]`
+/// (r/min).
 ///
 /// # Errors
-/// [`Error::InvalidInput`] naming the case key (`operating.inner_rpm`, `lubricant.*`,
-/// `friction.*`, `catalogue.*`, `operating.drag`).
+/// [`Error::InvalidInput`] naming the case key (`speed.inner_rpm`, `lubricant.*`,
+/// `friction.*`, `catalogue.*`, `operating.drag`, `operating.sweep_inner_rpm`).
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn friction_report(
     op: &OperatingSpec,
+    rpm: [f64; 2],
     lubricant: Option<&LubricantSpec>,
     friction: Option<&FrictionSpec>,
     catalogue: Option<&CatalogueSpec>,
@@ -327,8 +333,12 @@ pub(crate) fn friction_report(
     solved: Solved<'_>,
     force: [f64; 3],
 ) -> Result<FrictionReport> {
-    let at = |o: &OperatingSpec| point(o, lubricant, friction, catalogue, bearing, solved, force);
-    let mut report = at(op)?;
+    let at = |rpm: [f64; 2]| {
+        point(
+            op, rpm, lubricant, friction, catalogue, bearing, solved, force,
+        )
+    };
+    let mut report = at(rpm)?;
     if let Some(speeds) = &op.sweep_inner_rpm {
         if speeds.is_empty() || speeds.len() > 10_000 {
             return Err(Error::invalid(
@@ -338,14 +348,9 @@ pub(crate) fn friction_report(
             ));
         }
         for &n in speeds {
-            let o = OperatingSpec {
-                inner_rpm: n,
-                sweep_inner_rpm: None,
-                ..op.clone()
-            };
-            let p = at(&o).map_err(|e| {
+            let p = at([n, rpm[1]]).map_err(|e| {
                 e.map_field(|f| match f {
-                    "operating.inner_rpm" => "operating.sweep_inner_rpm".to_string(),
+                    "speed.inner_rpm" => "operating.sweep_inner_rpm".to_string(),
                     other => other.to_string(),
                 })
             })?;
@@ -369,9 +374,11 @@ pub(crate) fn friction_report(
     Ok(report)
 }
 
-/// [`friction_report`] at `op.inner_rpm`.
+/// [`friction_report`] at the ring speeds `rpm` (r/min).
+#[allow(clippy::too_many_arguments)]
 fn point(
     op: &OperatingSpec,
+    rpm: [f64; 2],
     lubricant: Option<&LubricantSpec>,
     friction: Option<&FrictionSpec>,
     catalogue: Option<&CatalogueSpec>,
@@ -386,12 +393,13 @@ fn point(
             "[operating] with a tapered or cylindrical roller bearing (thrust: not yet)",
         ));
     }
-    for (k, v) in [
-        ("operating.inner_rpm", op.inner_rpm),
-        ("operating.outer_rpm", op.outer_rpm),
-    ] {
-        if !(v.is_finite() && v.abs() <= 1e6) {
-            return Err(Error::invalid(k, v, "a finite speed within ±1e6 r/min"));
+    for (k, v) in [("speed.inner_rpm", rpm[0]), ("speed.outer_rpm", rpm[1])] {
+        if !(v.is_finite() && v.abs() <= MAX_RING_RPM) {
+            return Err(Error::invalid(
+                k,
+                v,
+                format!("a finite speed with |speed| <= {MAX_RING_RPM} r/min"),
+            ));
         }
     }
     let lub = lubricant.ok_or_else(|| Error::CaseFile {
@@ -431,7 +439,7 @@ fn point(
         })
     })?;
     let mut model = BearingFrictionModel::new(bearing.clone(), losses)?;
-    let (wi, wo) = (op.inner_rpm / RPM_PER_RAD_S, op.outer_rpm / RPM_PER_RAD_S);
+    let (wi, wo) = (rpm[0] / RPM_PER_RAD_S, rpm[1] / RPM_PER_RAD_S);
     let starting = wi == wo;
     let mut warnings = Vec::new();
 
@@ -730,8 +738,8 @@ fn point(
         })
         .collect();
     Ok(FrictionReport {
-        inner_rpm: op.inner_rpm,
-        outer_rpm: op.outer_rpm,
+        inner_rpm: rpm[0],
+        outer_rpm: rpm[1],
         cage_rpm: f.cage_speed_rad_s * RPM_PER_RAD_S,
         temperature_c: t,
         viscosity_mm2_s: nu,

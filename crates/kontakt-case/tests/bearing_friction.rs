@@ -9,9 +9,13 @@ mod bearing_run;
 
 use bearing_run::{example, run};
 
+/// The ring speed of the friction tests (the case's one `[speed]` table).
+const SPEED: &str = "\n[speed]\ninner_rpm = 1500.0\n";
+
+/// The operating point and oil but for the speed.
 const RIB_OIL: &str = r#"
 [operating]
-inner_rpm = 1500.0
+supply = "circulating"
 
 [lubricant]
 iso_vg = 68
@@ -44,6 +48,16 @@ fn the_32008x_example_reports_its_friction_beside_skf() {
     let rollers: f64 = f.rollers.iter().map(|r| r.torque_nmm).sum();
     assert!(rel(rollers, f.total_nmm) < 1e-12);
     assert_eq!(f.rollers.len(), 23);
+    // the speed is [speed]'s; the ISO model solved its loads without centrifugal force and
+    // says so first
+    assert_eq!((f.inner_rpm, f.outer_rpm), (1000.0, 0.0));
+    assert_eq!(r.ring_speeds_rpm, Some([1000.0, 0.0]));
+    assert!(
+        r.warnings[0].contains("without the rollers' centrifugal force")
+            && r.warnings[0].contains("roller_model = \"rib_contact\""),
+        "{:?}",
+        r.warnings
+    );
     let skf = f.catalogue.skf_total_nmm.unwrap();
     println!(
         "32008 X at 1000 r/min: {:.1} N·mm (cone {:.1}, cup {:.1}), SKF {skf:.1}",
@@ -71,12 +85,17 @@ fn the_32008x_example_reports_its_friction_beside_skf() {
 #[test]
 fn rib_contact_bearing_has_a_rib_share_and_a_starting_torque() {
     let base = example("bearing_rib_contact_60mm.toml");
-    let r = run(&format!("{base}\n{RIB_OIL}")).unwrap();
+    let r = run(&format!("{base}\n{RIB_OIL}{SPEED}")).unwrap();
+    // the rib-contact model's rollers carry their centrifugal force at [speed]
+    let fc = r.rollers().unwrap().roller_loads[0].centrifugal_force_n;
+    assert!(fc.unwrap() > 0.0, "{fc:?}");
+    assert!(r.warnings.iter().all(|w| !w.contains("centrifugal")));
     let f = r.friction.unwrap();
+    assert_eq!(f.inner_rpm, 1500.0);
     assert!(f.rib_nmm > 0.0 && f.rib_power_w > 0.0);
     // under combined load Aihara is not computed (pure axial load only)
     assert!(f.catalogue.aihara_total_nmm.is_none());
-    let axial = run(&format!("{base}\n{RIB_OIL}").replace(
+    let axial = run(&format!("{base}\n{RIB_OIL}{SPEED}").replace(
         "force_n = [6000.0, 0.0, 15000.0]",
         "force_n = [0.0, 0.0, 15000.0]",
     ))
@@ -90,7 +109,11 @@ fn rib_contact_bearing_has_a_rib_share_and_a_starting_torque() {
         axial.total_nmm, axial.rib_nmm
     );
     assert!(f.rollers.iter().all(|r| r.rib_w >= 0.0));
-    let s = run(&format!("{base}\n{}", RIB_OIL.replace("1500.0", "0.0"))).unwrap();
+    let s = run(&format!(
+        "{base}\n{RIB_OIL}{}",
+        SPEED.replace("1500.0", "0.0")
+    ))
+    .unwrap();
     let s = s.friction.unwrap();
     assert!(s.starting && s.total_nmm.is_finite() && s.total_nmm > 0.0);
     assert_eq!(s.power_w, 0.0);
@@ -102,10 +125,17 @@ fn rib_contact_bearing_has_a_rib_share_and_a_starting_torque() {
 fn bad_friction_input_names_the_key() {
     let base = example("bearing_32008x_friction.toml");
     for (from, to, key) in [
+        // the ring speeds are [speed]'s alone: [operating] has none
         (
-            "inner_rpm = 1000.0",
-            "inner_rpm = 1000.0\nspeed = 3",
-            "speed",
+            "supply = \"circulating\"",
+            "supply = \"circulating\"\ninner_rpm = 1000.0",
+            "operating.inner_rpm",
+        ),
+        ("inner_rpm = 1000.0", "inner_rpm = inf", "speed.inner_rpm"),
+        (
+            "sweep_inner_rpm = [0.0,",
+            "sweep_inner_rpm = [2e5,",
+            "operating.sweep_inner_rpm",
         ),
         (
             "supply = \"circulating\"",
@@ -124,8 +154,8 @@ fn bad_friction_input_names_the_key() {
         ),
         ("y = 1.6\n", "", "catalogue.y"),
         (
-            "inner_rpm = 1000.0",
-            "inner_rpm = 1000.0\ndrag = \"schaeffler_m0\"",
+            "supply = \"circulating\"",
+            "supply = \"circulating\"\ndrag = \"schaeffler_m0\"",
             "operating.drag",
         ),
         ("[lubricant]", "[lubricant_x]", "lubricant"),
@@ -153,7 +183,9 @@ fn bad_friction_input_names_the_key() {
         .to_string();
     assert!(e.contains("operating.oil_level_mm"), "{e}");
     let ball = example("bearing_6205.toml");
-    let e = run(&format!("{ball}\n{RIB_OIL}")).unwrap_err().to_string();
+    let e = run(&format!("{ball}\n{RIB_OIL}{SPEED}"))
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("operating"), "{e}");
 }
 
@@ -202,7 +234,11 @@ fn the_32008x_over_speed_beside_the_catalogue_models() {
 /// is rolling resistance; a thrust bearing with `[operating]` is an error naming the table.
 #[test]
 fn cylindrical_bearing_rolls_without_sliding_and_thrust_is_refused() {
-    let r = run(&format!("{}\n{RIB_OIL}", example("bearing_nu_crb.toml"))).unwrap();
+    let r = run(&format!(
+        "{}\n{RIB_OIL}{SPEED}",
+        example("bearing_nu_crb.toml")
+    ))
+    .unwrap();
     let f = r.friction.unwrap();
     assert!(f.total_nmm > 0.0);
     assert!(

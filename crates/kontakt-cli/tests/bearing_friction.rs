@@ -32,11 +32,7 @@ fn friction_input_errors_name_the_key() {
     let dir = support::tempdir("bearing_friction", "errors");
     let text = std::fs::read_to_string(support::example("bearing_32008x_friction.toml")).unwrap();
     for (from, to, key) in [
-        (
-            "inner_rpm = 1000.0",
-            "inner_rpm = inf",
-            "operating.inner_rpm",
-        ),
+        ("inner_rpm = 1000.0", "inner_rpm = inf", "speed.inner_rpm"),
         (
             "supply = \"circulating\"",
             "supply = \"oil_bath\"",
