@@ -72,6 +72,7 @@ use serde::{Deserialize, Serialize};
 
 mod roller_speed;
 mod speed;
+pub(crate) use roller_speed::iso_speed_warning;
 pub use speed::BearingSpeedSpec;
 
 /// The contact modulus of two steel bodies (E = 210 GPa, ν = 0.3), MPa: the default of the
@@ -95,6 +96,19 @@ pub struct BearingCase {
     pub bearing: BearingSpec,
     /// The load of the inner ring.
     pub load: BearingLoadSpec,
+    /// `[operating]`: ring speeds and oil supply of the friction torque (issue 29;
+    /// `crate::bearing_friction`). Absent: no friction section.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub operating: Option<crate::bearing_friction::OperatingSpec>,
+    /// `[lubricant]` of the friction torque (the friction case's schema).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub lubricant: Option<crate::friction_case::LubricantSpec>,
+    /// `[friction]`: the friction law of the raceways and ribs (the friction case's schema).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub friction: Option<crate::friction_case::FrictionSpec>,
+    /// `[catalogue]`: envelope and series for the catalogue torques.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub catalogue: Option<crate::bearing_friction::CatalogueSpec>,
     /// `[speed]`: the ring speeds in r/min (default at rest), [`BearingSpeedSpec`].
     #[serde(default)]
     pub speed: BearingSpeedSpec,
@@ -632,6 +646,10 @@ pub struct BearingReport {
     pub contacts: Vec<ContactSize>,
     /// Static safety and rating lives (`docs/bearing-model.md`, "Life and static safety").
     pub rating: RatingReport,
+    /// The friction torque, contact by contact, beside the catalogue torques (with
+    /// `[operating]`; `docs/bearing-friction.md`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub friction: Option<crate::bearing_friction::FrictionReport>,
 }
 
 /// The rolling elements of a [`BearingReport`], their keys flattened into the report.
@@ -948,6 +966,51 @@ pub(crate) fn run_bearing_case_unchecked(case: &BearingCase) -> Result<BearingRe
     solve_planned(case, label, &mut planned, &case.load, None)
 }
 
+/// The friction section (`crate::bearing_friction`) of a case whose `planned` solver has
+/// just solved; an error naming `operating` for a ball bearing.
+fn friction_of_planned(
+    case: &BearingCase,
+    op: &crate::bearing_friction::OperatingSpec,
+    planned: &Planned,
+    force: [f64; 3],
+) -> Result<crate::bearing_friction::FrictionReport> {
+    use crate::bearing_friction::Solved;
+    let (bearing, solved) = match planned {
+        Planned::Roller(s) => (
+            s.bearing(),
+            Solved::Iso {
+                slice_loads: s.slice_loads(),
+                rollers: s.roller_loads(),
+            },
+        ),
+        Planned::Coupled(s) => (
+            s.bearing(),
+            Solved::Iso {
+                slice_loads: s.slice_loads(),
+                rollers: s.roller_loads(),
+            },
+        ),
+        Planned::RibRoller(s) => (s.bearing(), Solved::Rib(s)),
+        Planned::Ball { .. } | Planned::BallAtSpeed { .. } => {
+            return Err(Error::invalid(
+                "operating",
+                "given for a ball bearing",
+                "[operating] with a tapered or cylindrical roller bearing (the friction torque of ball bearings is not built yet)",
+            ));
+        }
+    };
+    crate::bearing_friction::friction_report(
+        op,
+        [case.speed.inner_rpm, case.speed.outer_rpm],
+        case.lubricant.as_ref(),
+        case.friction.as_ref(),
+        case.catalogue.as_ref(),
+        bearing,
+        solved,
+        force,
+    )
+}
+
 /// The solver of a bearing case, planned once (the state of a [`crate::BearingModel`]).
 #[derive(Debug, Clone)]
 pub(crate) enum Planned {
@@ -1032,7 +1095,7 @@ pub(crate) fn solve_planned(
     start: Option<[f64; 5]>,
 ) -> Result<BearingReport> {
     let load = ring_load(load)?;
-    match planned {
+    let mut report = match planned {
         Planned::Roller(solver) => roller_report(case, label, solver, &load, start),
         Planned::Coupled(solver) => roller_report(case, label, solver.as_mut(), &load, start),
         Planned::RibRoller(solver) => rib_roller_report(case, label, solver, &load, start),
@@ -1044,7 +1107,11 @@ pub(crate) fn solve_planned(
             let solver = BallSolver::AtSpeed(solver);
             ball_report(case, label, solver, spec, keys, &load, start)
         }
+    }?;
+    if let Some(op) = &case.operating {
+        report.friction = Some(friction_of_planned(case, op, planned, report.force_n)?);
     }
+    Ok(report)
 }
 
 /// The report of a roller bearing's solve.
@@ -1115,9 +1182,9 @@ fn roller_report<S: SliceSolver>(
         slice_loads: loads,
         pressure_map: map,
     };
-    Ok(roller_part_report(
-        case, label, b, &sol, parts, post, warnings,
-    ))
+    let mut report = roller_part_report(case, label, b, &sol, parts, post, warnings);
+    roller_speed::report_iso_speed(&case.speed, &mut report);
+    Ok(report)
 }
 
 /// The rating spec of a roller bearing case (`[bearing.rating]`).
@@ -1425,6 +1492,7 @@ fn report(
         warnings: Vec::new(),
         contacts: Vec::new(),
         rating: RatingReport::default(),
+        friction: None,
     }
 }
 

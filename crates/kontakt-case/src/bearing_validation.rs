@@ -11,9 +11,14 @@
 //! Units: speed r/min (the catalogues' unit; the library's rad/s inside), loads N, torque
 //! N·mm, viscosity mm²/s, temperature °C.
 //!
+//! The contact-based whole-bearing torque (issue 29 §1-2), [`ComparisonRow::contact_nmm`],
+//! is the friction section of a bearing case at each point ([`contact`]; the dataset's
+//! [`Dataset::contact`], with its assumptions): Manjunath et al.'s 40 × 68 × 19 TRB from
+//! the internal data of Liu (2022), raceways only (no rib geometry).
+//!
 //! What is not filled, and why, rather than a number without a source:
-//! - the contact-based whole-bearing torque (issue 29 §1-2) is a column of its own,
-//!   [`ComparisonRow::contact_nmm`], `None` until that model exists;
+//! - the contact-based torque where the internal geometry is not stated (Wingertszahn et
+//!   al. 2023's 32216, Zhou & Hoeprich 1991's LM12700 without its load and oil);
 //! - Aihara (1987) ([`ComparisonRow::aihara_nmm`]) needs the rib contact height, the roller
 //!   geometry and the oil's pressure-viscosity coefficient, which none of the datasets
 //!   states: `None`, and the dataset's `aihara_note` says which input is missing;
@@ -26,6 +31,9 @@ use kontakt_bearing::friction::skf2004::{
     SkfBearing, SkfOptions, SkfTorque, TaperedSeries, skf2004,
 };
 use kontakt_bearing::friction::{Envelope, Lubrication, OperatingPoint, RPM_PER_RAD_S};
+
+pub mod contact;
+pub use contact::{ContactSetup, contact_at};
 
 /// How far a measured value can be trusted.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
@@ -178,6 +186,9 @@ pub struct Dataset {
     pub assumptions: &'static [&'static str],
     /// Why Aihara (1987) is not evaluated.
     pub aihara_note: &'static str,
+    /// The contact-based model's case and assumptions; `None` where the internal geometry
+    /// is not stated.
+    pub contact: Option<ContactSetup>,
     /// Model curves for the plots (explicit where there are no measured points).
     pub curves: Vec<CurveSpec>,
 }
@@ -370,6 +381,7 @@ pub fn datasets() -> Result<Vec<Dataset>> {
         oil: FVA3A,
         assumptions: MANJUNATH_ASSUMPTIONS,
         aihara_note: MANJUNATH_AIHARA,
+        contact: Some(contact::MANJUNATH_CONTACT),
         curves: Vec::new(),
     };
     let mut sets = vec![
@@ -390,6 +402,7 @@ pub fn datasets() -> Result<Vec<Dataset>> {
             oil: FVA3,
             assumptions: WINGERTSZAHN_ASSUMPTIONS,
             aihara_note: "the raceway angles, the rib geometry and the oil's pressure-viscosity coefficient at the test temperature are not given (the paper's Table 4 lacks the angles)",
+            contact: None,
             curves: Vec::new(),
         },
         Dataset {
@@ -402,6 +415,7 @@ pub fn datasets() -> Result<Vec<Dataset>> {
             oil: FVA3,
             assumptions: WINGERTSZAHN_ASSUMPTIONS,
             aihara_note: "Aihara (1987) is for axial load only, and its inputs are missing as for the axial test",
+            contact: None,
             curves: Vec::new(),
         },
         Dataset {
@@ -414,6 +428,7 @@ pub fn datasets() -> Result<Vec<Dataset>> {
             oil: FVA3,
             assumptions: WINGERTSZAHN_ASSUMPTIONS,
             aihara_note: "Aihara (1987) is for axial load only",
+            contact: None,
             curves: vec![CurveSpec {
                 temperature_c: 50.0,
                 axial_load_n: 6500.0,
@@ -434,6 +449,7 @@ pub fn datasets() -> Result<Vec<Dataset>> {
                 "SKF not evaluated: the paper states neither the load of Fig. 9 nor the viscosity of its SAE 75 oil at 80 °C (a third party back-calculated 3.6 kN axial; unverified, not used)",
             ],
             aihara_note: "the load, the oil data and the rib geometry are not stated",
+            contact: None,
             curves: Vec::new(),
         },
     ];
@@ -515,8 +531,8 @@ pub struct ComparisonRow {
     pub skf: Option<SkfParts>,
     /// Aihara (1987) \[N·mm\]: `None` (inputs not stated; the dataset's `aihara_note`).
     pub aihara_nmm: Option<f64>,
-    /// The contact-based whole-bearing torque (issue 29 §1-2) \[N·mm\]: `None` until that
-    /// model is available.
+    /// The contact-based whole-bearing torque (issue 29 §1-2) \[N·mm\]: `None` where the
+    /// dataset has no [`Dataset::contact`] (internal geometry not stated).
     pub contact_nmm: Option<f64>,
 }
 
@@ -597,19 +613,33 @@ impl DatasetComparison {
     /// (mean |deviation|, smallest, largest) of SKF against the measurement \[%\], `None`
     /// without SKF values.
     pub fn skf_deviation_stats(&self) -> Option<(f64, f64, f64)> {
-        let d: Vec<f64> = self
-            .rows
-            .iter()
-            .filter_map(ComparisonRow::skf_deviation_pct)
-            .collect();
-        if d.is_empty() {
-            return None;
-        }
-        let mean = d.iter().map(|x| x.abs()).sum::<f64>() / d.len() as f64;
-        let lo = d.iter().copied().fold(f64::INFINITY, f64::min);
-        let hi = d.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-        Some((mean, lo, hi))
+        deviation_stats(
+            self.rows
+                .iter()
+                .filter_map(ComparisonRow::skf_deviation_pct),
+        )
     }
+
+    /// As [`DatasetComparison::skf_deviation_stats`] for the contact-based model.
+    pub fn contact_deviation_stats(&self) -> Option<(f64, f64, f64)> {
+        deviation_stats(
+            self.rows
+                .iter()
+                .filter_map(ComparisonRow::contact_deviation_pct),
+        )
+    }
+}
+
+/// (mean |d|, smallest, largest) of the deviations `d` \[%\], `None` for none.
+fn deviation_stats(d: impl Iterator<Item = f64>) -> Option<(f64, f64, f64)> {
+    let d: Vec<f64> = d.collect();
+    if d.is_empty() {
+        return None;
+    }
+    let mean = d.iter().map(|x| x.abs()).sum::<f64>() / d.len() as f64;
+    let lo = d.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = d.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    Some((mean, lo, hi))
 }
 
 /// Points along each model curve.
@@ -618,7 +648,7 @@ pub const CURVE_POINTS: usize = 57;
 /// Evaluate the models for every point and along the curves of `dataset`.
 ///
 /// # Errors
-/// Those of [`Oil::viscosity_mm2_s`] and [`skf2004`].
+/// Those of [`Oil::viscosity_mm2_s`], [`skf2004`] and [`contact_at`].
 pub fn compare(dataset: &Dataset) -> Result<DatasetComparison> {
     let mut warnings: Vec<String> = Vec::new();
     let mut note = |t: &SkfTorque| {
@@ -644,9 +674,10 @@ pub fn compare(dataset: &Dataset) -> Result<DatasetComparison> {
             viscosity_mm2_s: nu,
             skf,
             aihara_nmm: None,
-            // The contact-based torque (issue 29 §1-2) goes here, at the same point, once
-            // that model exists; the CSV, table, report and JSON already carry the column.
-            contact_nmm: None,
+            contact_nmm: match &dataset.contact {
+                Some(setup) => contact_at(setup, p)?,
+                None => None,
+            },
         });
     }
     let mut skf_curves = Vec::new();

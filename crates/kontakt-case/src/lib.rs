@@ -27,6 +27,7 @@
 
 pub mod bearing_case;
 pub mod bearing_design;
+pub mod bearing_friction;
 pub mod bearing_model;
 mod bearing_post;
 pub mod bearing_rating;

@@ -528,13 +528,11 @@ fn speed_errors_name_the_case_key() {
     assert!(e.to_string().contains("speed.rpm"), "{e}");
     let e = err(&acbb.replace("ball_density_kg_m3 = 7850.0", "ball_density_kg_m3 = -1.0"));
     assert_eq!(e.field(), Some("bearing.ball_density_kg_m3"), "{e}");
+    // the ISO roller model takes a speed with a warning (bearing_roller_speed.rs), a bad one
+    // is still named
     let crb = example("bearing_nu_crb.toml");
-    let e = err(&crb.replace("[load]", "[speed]\nouter_rpm = 100.0\n\n[load]"));
+    let e = err(&crb.replace("[load]", "[speed]\nouter_rpm = -1e6\n\n[load]"));
     assert_eq!(e.field(), Some("speed.outer_rpm"), "{e}");
-    assert!(
-        e.to_string().contains("use roller_model = \"rib_contact\""),
-        "{e}"
-    );
 }
 
 // `[bearing] slice_model = "coupled"` (docs/bearing-model.md §12): the pressure along every

@@ -2,8 +2,8 @@
 //! §15.7): every roller carries `F_c = m ω_c² r_c`. At rest nothing changes (bit for bit);
 //! a radially loaded NU CRB's rollers balance `Q_o − Q_i = F_c`; the rib study's TRB under
 //! pure axial load at speed gives the rib study's own 2-D roller loads with the rib study's
-//! own centrifugal force (to 1e-9); F_c ∝ ω² and ∝ ρ; the ISO model at speed is refused with
-//! the way out; a sweep over `speed.inner_rpm` plans every speed, its rows the reports'.
+//! own centrifugal force (to 1e-9); F_c ∝ ω² and ∝ ρ; the ISO model at speed solves the
+//! load distribution at rest with a warning giving the way out; a sweep over `speed.inner_rpm` plans every speed, its rows the reports'.
 
 #![allow(clippy::unwrap_used)] // tests: a panic is a failure with its message
 
@@ -193,17 +193,68 @@ fn centrifugal_force_scales_with_speed_squared_and_density() {
     assert!(rel(backward, base) < 1e-15);
 }
 
-/// The ISO model and thrust bearings at speed, a bad density: one error naming the key.
+/// The ISO model at speed (TRB and CRB, ISO and coupled slices): the load distribution is
+/// the one at rest bit for bit (the model has no centrifugal force), the report carries the
+/// ring speeds and, first among its warnings, the one saying so with the way out; a sweep's
+/// rows carry the same warning as the report.
+#[test]
+fn iso_model_at_speed_warns_and_keeps_the_load_distribution_at_rest() {
+    for (name, coupled) in [
+        ("bearing_rib_study_60mm.toml", false),
+        ("bearing_nu_crb.toml", false),
+        ("bearing_32216.toml", true),
+    ] {
+        let mut rest = example(name);
+        if coupled {
+            rest = rest.replacen("[bearing]\n", "[bearing]\nslice_model = \"coupled\"\n", 1);
+        }
+        let r0 = run(&rest).unwrap();
+        for (ni, no) in [(3000.0, 0.0), (0.0, -50.0)] {
+            let r = run(&at_speed(&rest, ni, no)).unwrap();
+            assert_eq!(r.displacement_mm, r0.displacement_mm, "{name}");
+            assert_eq!(r.tilt_rad, r0.tilt_rad, "{name}");
+            assert_eq!(r.ring_speeds_rpm, Some([ni, no]), "{name}");
+            assert_eq!(r.warnings.len(), r0.warnings.len() + 1, "{name}");
+            assert_eq!(r.warnings[1..], r0.warnings[..], "{name}");
+            let w = &r.warnings[0];
+            assert!(
+                w.contains("without the rollers' centrifugal force")
+                    && w.contains("use roller_model = \"rib_contact\""),
+                "{w}"
+            );
+        }
+        assert!(r0.ring_speeds_rpm.is_none());
+    }
+    let dir = std::env::temp_dir().join(format!("kontakt-iso-speed-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let base = dir.join("case.toml");
+    let text = at_speed(&example("bearing_rib_study_60mm.toml"), 3000.0, 0.0);
+    std::fs::write(&base, &text).unwrap();
+    let s = Sweep::from_toml_str(
+        &format!(
+            "base = \"{}\"\n[[parameter]]\nkey = \"speed.inner_rpm\"\nvalues = [0.0, 3000.0]\n",
+            base.display()
+        ),
+        &dir,
+    )
+    .unwrap();
+    let batch = s.chunk_table(0).unwrap();
+    let warnings = column::<StringArray>(&batch, "warnings");
+    let report = run(&text).unwrap();
+    assert_eq!(warnings.value(1), report.warnings.join("; "));
+    assert!(warnings.is_null(0) || !warnings.value(0).contains("centrifugal"));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Thrust bearings at speed, a bad speed or density: one error naming the key.
 #[test]
 fn bad_speed_and_density_are_named() {
     let err = |t: &str| run(t).unwrap_err();
-    let iso = at_speed(&example("bearing_rib_study_60mm.toml"), 3000.0, 0.0);
-    let e = err(&iso);
-    assert_eq!(e.field(), Some("speed.inner_rpm"), "{e}");
-    let msg = e.to_string();
-    assert!(msg.starts_with("invalid speed.inner_rpm = 3000"), "{msg}");
-    assert!(msg.contains("use roller_model = \"rib_contact\""), "{msg}");
-    let e = err(&at_speed(&example("bearing_nu_crb.toml"), 0.0, -50.0));
+    let e = err(&example("bearing_nu_crb.toml").replacen(
+        "\n[load]\n",
+        "\n[speed]\nouter_rpm = nan\n\n[load]\n",
+        1,
+    ));
     assert_eq!(e.field(), Some("speed.outer_rpm"), "{e}");
     let e = err(&at_speed(&example("bearing_81107_thrust.toml"), 100.0, 0.0));
     assert!(e.to_string().contains("type = \"thrust\""), "{e}");

@@ -403,13 +403,25 @@ fn ball_bearing_at_speed_table_and_json() {
     assert!(num(&v["ball_loads"][0]["centrifugal_force_n"]) > 10.0);
     assert!(num(&v["ball_loads"][0]["outer_contact_angle_deg"]) < 40.0);
     let dir = support::tempdir("bearing", "speed");
+    // the ISO roller model at speed: solved without centrifugal force, with a warning
     let crb = edited_example(
         &dir,
         "bearing_nu_crb.toml",
         "[load]",
         "[speed]\ninner_rpm = 3000.0\n\n[load]",
     );
-    let msg = bad(&["bearing", crb.to_str().unwrap()]);
+    let v = run_json(&["bearing", crb.to_str().unwrap()]);
+    assert_eq!(v["ring_speeds_rpm"][0], 3000.0);
+    let w = v["warnings"][0].as_str().unwrap();
+    assert!(w.contains("roller_model = \"rib_contact\""), "{w}");
+    // a thrust bearing at speed is refused, naming the key
+    let thrust = edited_example(
+        &dir,
+        "bearing_81107_thrust.toml",
+        "[load]",
+        "[speed]\ninner_rpm = 3000.0\n\n[load]",
+    );
+    let msg = bad(&["bearing", thrust.to_str().unwrap()]);
     assert!(msg.contains("speed.inner_rpm"), "{msg}");
 }
 

@@ -52,9 +52,20 @@ fn validate_bearing_runs_on_every_dataset() {
     let rows = read_csv(&dir.join("bearing_torque.csv"));
     assert_eq!(rows.len(), 14 + 14 + 4 + 8 + 5 + 8);
     for r in &rows {
-        // no model value where there is no model: Aihara's inputs and the contact model
-        for k in ["aihara_nmm", "contact_nmm", "contact_deviation_pct"] {
-            assert_eq!(r[k], "", "{k} of {r:?}");
+        // no model value where there is no model: Aihara's inputs, and the contact model
+        // without the internal geometry (Manjunath's TRB has Liu 2022's)
+        assert_eq!(r["aihara_nmm"], "", "{r:?}");
+        let has_contact = r["dataset"].starts_with("manjunath2023");
+        for k in ["contact_nmm", "contact_deviation_pct"] {
+            assert_eq!(!r[k].is_empty(), has_contact, "{k} of {r:?}");
+        }
+        if has_contact {
+            let (m, c): (f64, f64) = (
+                r["measured_nmm"].parse().unwrap(),
+                r["contact_nmm"].parse().unwrap(),
+            );
+            let d: f64 = r["contact_deviation_pct"].parse().unwrap();
+            assert!(c > 0.0 && (d - 100.0 * (c / m - 1.0)).abs() < 0.01, "{r:?}");
         }
         assert_eq!(r["status"], "unverified");
         let has_skf = r["dataset"] != "zhou_hoeprich1991_fig9";
@@ -77,6 +88,8 @@ fn validate_bearing_runs_on_every_dataset() {
     assert!(curves.iter().any(|c| c["x_name"] == "radial_load_n"));
     let report = std::fs::read_to_string(dir.join("bearing_report.md")).unwrap();
     assert!(report.contains("Y = 1.6") && report.contains("Y = 1.4"));
+    assert!(report.contains("Liu (2022)") && report.contains("Contact-based (raceways only)"));
+    assert!(stdout.contains("contact-based against measured: mean |dev|"));
     // JSON
     let out = kontakt()
         .args([
@@ -91,6 +104,13 @@ fn validate_bearing_runs_on_every_dataset() {
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(v["datasets"].as_array().unwrap().len(), 6);
     assert_eq!(v["unit_torque"], "N·mm");
+    assert!(
+        v["datasets"][0]["contact_deviation_mean_abs_pct"]
+            .as_f64()
+            .unwrap()
+            > 0.0
+    );
+    assert!(v["datasets"][2]["contact_assumptions"].is_null());
 }
 
 /// `--cells` belongs to the rib-contact study: with `--bearing` it is an input error.

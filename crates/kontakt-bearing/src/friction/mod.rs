@@ -48,6 +48,7 @@ pub mod aihara;
 pub mod raceway;
 pub mod schaeffler;
 pub mod skf2004;
+pub mod torque;
 
 use kontakt::error::positive_as;
 use kontakt::{Error, Result};

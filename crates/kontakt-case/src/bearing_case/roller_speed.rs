@@ -3,8 +3,10 @@
 //! [`kontakt_bearing::roller_speed`] (`docs/bearing-model.md` §15.7), the roller's density
 //! `bearing.roller_density_kg_m3` (kg/m³, default steel 7850); the report gains each
 //! roller's `centrifugal_force_n` and the bearing's `ring_speeds_rpm`. The ISO model (both
-//! raceway contacts in series, no roller in its own balance) and thrust bearings refuse a
-//! speed, naming the key.
+//! raceway contacts in series, no roller in its own balance) takes a speed for the friction
+//! torque (`crate::bearing_friction`) but solves its load distribution without centrifugal
+//! force, with a warning saying so ([`iso_speed_warning`]); thrust bearings refuse a speed,
+//! naming the key.
 
 use super::{BearingElements, BearingReport, BearingSpeedSpec, RollerSpec};
 use kontakt::{Error, Result};
@@ -13,11 +15,12 @@ use kontakt_bearing::roller_speed::{STEEL_DENSITY_KG_M3, roller_centrifugal};
 use kontakt_bearing::speed::RingSpeeds;
 
 /// The ring speeds of a roller bearing case (`None` at rest), after checking
-/// `bearing.roller_density_kg_m3` and that the model takes a speed.
+/// `bearing.roller_density_kg_m3` and that the bearing takes a speed (the ISO roller model
+/// takes it without centrifugal force: [`iso_speed_warning`]).
 ///
 /// # Errors
 /// [`Error::InvalidInput`] naming `speed.inner_rpm` or `speed.outer_rpm` for a speed out
-/// of range, for a thrust bearing or the ISO roller model at speed;
+/// of range or for a thrust bearing;
 /// `bearing.roller_density_kg_m3` unless finite, > 0 and <= 100 000 kg/m³.
 pub(super) fn ring_speeds(
     speed: &BearingSpeedSpec,
@@ -48,16 +51,29 @@ pub(super) fn ring_speeds(
             "0 for type = \"thrust\": the speed effects are modelled for ball bearings and for cylindrical and tapered roller bearings with roller_model = \"rib_contact\"",
         ));
     }
-    if s.roller_model.is_iso() {
-        return Err(Error::invalid(
-            key,
-            v,
-            format!(
-                "0 with roller_model = \"iso\" (both raceway contacts in series, no roller in its own balance to carry a centrifugal force): for a {label} roller bearing at speed use roller_model = \"rib_contact\""
-            ),
-        ));
-    }
     Ok(Some(speeds))
+}
+
+/// The warning of the ISO roller model at speed (`None` at rest): its load distribution has
+/// no centrifugal force (both raceway contacts in series, no roller in its own balance to
+/// carry one); the speed enters the friction section only.
+pub(crate) fn iso_speed_warning(speed: &BearingSpeedSpec) -> Option<String> {
+    (!speed.at_rest()).then(|| {
+        format!(
+            "speed.inner_rpm = {}, speed.outer_rpm = {} r/min with roller_model = \"iso\": the load distribution is computed without the rollers' centrifugal force (the speed enters only the friction section); for the centrifugal force use roller_model = \"rib_contact\"",
+            speed.inner_rpm, speed.outer_rpm
+        )
+    })
+}
+
+/// The ISO roller model at speed: the ring speeds (r/min) in the report and
+/// [`iso_speed_warning`] first among its warnings (the sweep's rows put it there too); at
+/// rest the report is left as it is.
+pub(super) fn report_iso_speed(speed: &BearingSpeedSpec, report: &mut BearingReport) {
+    if let Some(w) = iso_speed_warning(speed) {
+        report.ring_speeds_rpm = Some([speed.inner_rpm, speed.outer_rpm]);
+        report.warnings.insert(0, w);
+    }
 }
 
 /// Load every roller of `solver` with its centrifugal force at `speeds` (nothing at rest).

@@ -10,7 +10,9 @@
 //!
 //! The library takes rad/s ([`RingSpeeds`]); the case speaks r/min, as the friction
 //! case's `[speed]` does. Roller bearings take a speed with `roller_model = "rib_contact"`
-//! (`roller_speed.rs`, `docs/bearing-model.md` §15.7); otherwise an error names the key.
+//! (`roller_speed.rs`, `docs/bearing-model.md` §15.7); the ISO roller model takes it without
+//! centrifugal force and warns; thrust bearings refuse it, naming the key. The friction
+//! section (`[operating]`, `crate::bearing_friction`) takes its ring speeds from here.
 
 use super::BallRow;
 use kontakt::{Error, Result};

@@ -349,10 +349,16 @@ impl BlockModel {
                 element_row(solver.as_mut(), label, &ring, start, post, &field)
             }
         };
-        let (out, warnings) = match solved {
+        let (out, mut warnings) = match solved {
             Ok(s) => s,
             Err((status, e)) => return BearingRow::failed(status, e),
         };
+        // the ISO roller model at speed: first among the warnings, as in the report
+        if matches!(self.planned, Planned::Roller(_) | Planned::Coupled(_))
+            && let Some(w) = crate::bearing_case::iso_speed_warning(&self.case.speed)
+        {
+            warnings.insert(0, w);
+        }
         if let Some(name) = non_finite(&out) {
             return BearingRow::failed(
                 Status::Invalid,

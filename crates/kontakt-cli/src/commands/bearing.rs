@@ -90,6 +90,12 @@ pub fn print_report(out: &mut impl Write, r: &BearingReport, json: bool) -> Resu
         BearingElements::Balls(p) => ball_table(out, r, p)?,
     }
     rating_lines(out, &r.rating)?;
+    if let Some(f) = &r.friction {
+        writeln!(out)?;
+        for line in f.lines() {
+            writeln!(out, "  {line}")?;
+        }
+    }
     writeln!(out)?;
     writeln!(
         out,
@@ -341,8 +347,17 @@ fn clean(x: f64, scale: f64) -> Num {
     Num(if x.abs() < 1e-9 * scale { 0.0 } else { x })
 }
 
-/// One row per roller or ball: the report's `roller_loads` or `ball_loads` keys.
+/// One row per roller or ball: the report's `roller_loads` or `ball_loads` keys; with a
+/// friction section, its per-roller table too, in `<stem>.friction.csv` beside `path`.
 pub fn write_csv(path: &Path, r: &BearingReport) -> Result<()> {
+    if let Some(f) = &r.friction {
+        let friction_path = path.with_extension("friction.csv");
+        let mut w = crate::commands::CsvFile::create(&friction_path)?;
+        for row in &f.rollers {
+            w.serialize(row)?;
+        }
+        w.finish()?;
+    }
     let mut w = crate::commands::CsvFile::create(path)?;
     match &r.elements {
         BearingElements::Rollers(p) => {

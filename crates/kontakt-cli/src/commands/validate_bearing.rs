@@ -1,6 +1,6 @@
 //! `kontakt validate --bearing`: the measured friction torque of whole bearings
-//! (`validation/measured/`, provenance in its README) beside the SKF (2004) model at the
-//! same conditions: a table on stdout, `bearing_torque.csv` (one row per measured point),
+//! (`validation/measured/`, provenance in its README) beside the SKF (2004) model and,
+//! where the internal geometry is known, the contact-based model at the same conditions: a table on stdout, `bearing_torque.csv` (one row per measured point),
 //! `bearing_skf_curves.csv` (the model curves of the plots), `bearing_report.md` and one
 //! plot per dataset (`bearing_<dataset>.png`). The study is
 //! `kontakt_case::bearing_validation`; this file only writes it out. Torque in N·mm.
@@ -287,10 +287,15 @@ fn table(studies: &[DatasetComparison]) -> String {
             )),
             None => t.push_str("  SKF not evaluated: an input is not stated in the source\n"),
         }
+        if let Some((mean, lo, hi)) = s.contact_deviation_stats() {
+            t.push_str(&format!(
+                "  contact-based against measured: mean |dev| {mean:.1} %, from {lo:+.1} to {hi:+.1} % (raceways only: see the assumptions in bearing_report.md)\n"
+            ));
+        }
     }
     t.push_str(
         "\n(n r/min, F N, T °C, nu mm²/s; u = unverified figure reading; contact: the \
-         contact-based model, not yet available)\n",
+         contact-based model, where the internal geometry is known)\n",
     );
     t
 }
@@ -304,9 +309,11 @@ fn report(studies: &[DatasetComparison]) -> String {
         "# kontakt validate --bearing: whole-bearing friction torque against measurements\n\n\
          Measured points from `validation/measured/` (provenance, reading and error band in its \
          README) beside the SKF (2004) model at the same conditions (speed, loads, the oil's \
-         viscosity at the test temperature). Deviation = `model / measured − 1` in %. The \
-         Aihara (1987) and contact-based columns stay empty until their inputs, or the model, \
-         exist: no value is put in their place.\n\n",
+         viscosity at the test temperature) and, where the internal geometry is known, the \
+         contact-based model (the friction section of a bearing case, its assumptions listed). \
+         Deviation = `model / measured − 1` in %. The Aihara (1987) column, and the \
+         contact-based one without the internal geometry, stay empty: no value is put in their \
+         place.\n\n",
     );
     for s in studies {
         let d = &s.dataset;
@@ -324,6 +331,16 @@ fn report(studies: &[DatasetComparison]) -> String {
         ));
         for w in &s.skf_warnings {
             md.push_str(&format!("- SKF model: {w}\n"));
+        }
+        match &d.contact {
+            Some(c) => {
+                for a in c.assumptions {
+                    md.push_str(&format!("- {a}\n"));
+                }
+            }
+            None => md.push_str(
+                "- contact-based model not evaluated: the internal geometry is not stated\n",
+            ),
         }
         if s.rows.is_empty() {
             md.push_str("\nNo measured numbers: the source has this curve in a figure only, and no reading of it exists. The plot shows the SKF model alone.\n\n");
@@ -354,6 +371,11 @@ fn report(studies: &[DatasetComparison]) -> String {
                     "\nSKF against the measurement: mean |deviation| {mean:.1} %, from {lo:+.1} to {hi:+.1} %.\n"
                 ));
             }
+            if let Some((mean, lo, hi)) = s.contact_deviation_stats() {
+                md.push_str(&format!(
+                    "\nContact-based (raceways only) against the measurement: mean |deviation| {mean:.1} %, from {lo:+.1} to {hi:+.1} %.\n"
+                ));
+            }
             md.push('\n');
         }
         md.push_str(&format!("![{}](bearing_{}.png)\n\n", d.id, d.id));
@@ -371,6 +393,8 @@ fn summary_json(studies: &[DatasetComparison]) -> serde_json::Value {
             "source": s.dataset.source,
             "assumptions": s.dataset.assumptions,
             "aihara_note": s.dataset.aihara_note,
+            "contact_assumptions": s.dataset.contact.as_ref().map(|c| c.assumptions),
+            "contact_deviation_mean_abs_pct": s.contact_deviation_stats().map(|d| d.0),
             "skf_warnings": s.skf_warnings,
             "skf_deviation_mean_abs_pct": s.skf_deviation_stats().map(|d| d.0),
             "rows": s.rows,

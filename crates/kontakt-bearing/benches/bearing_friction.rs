@@ -1,0 +1,85 @@
+//! Criterion benchmark of the whole-bearing friction (issue 29, "Speed"): a 20-roller
+//! tapered roller bearing (the rib study's sphere-torus-57 pair, 31 slices) under 15 kN
+//! axial load, its load distribution solved once outside the timed closures; timed: the
+//! friction at one operating point with Hertz rib contacts (rib loads of every roller, their
+//! rib friction, the 1240 raceway slices; target ≤ 1 ms) and a 50-point speed sweep
+//! (target ≤ 50 ms). Run by the lead: `cargo bench -p kontakt-bearing --bench bearing_friction`.
+
+#[path = "../tests/support/friction.rs"]
+#[allow(dead_code)]
+mod support;
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use kontakt::bearing::{PressureModel, RibFrictionModel, RollerCup};
+use kontakt_bearing::friction::torque::{
+    BearingFrictionModel, DragModel, FrictionOperating, roller_cups,
+};
+use std::hint::black_box;
+
+struct Setup {
+    rib: RibFrictionModel,
+    model: BearingFrictionModel,
+    cups: Vec<RollerCup>,
+    cup: Vec<f64>,
+    cone: Vec<f64>,
+}
+
+fn setup() -> Setup {
+    let (rib, mut bearing) = support::rib_study(20);
+    bearing.slices = 31;
+    let (cup, cone, solver) = support::solved(&bearing, 15_000.0);
+    Setup {
+        model: BearingFrictionModel::new(bearing, support::losses(&support::vg68(), 70.0, true))
+            .expect("model"),
+        cups: roller_cups(solver.roller_loads()),
+        rib,
+        cup,
+        cone,
+    }
+}
+
+fn point(s: &mut Setup, w: f64) -> f64 {
+    let k = s.rib.kinematics(w, 0.0).expect("kinematics");
+    let loads = s.rib.roller_loads_on_cups(&k, &s.cups).expect("rib loads");
+    let rib = s
+        .rib
+        .evaluate_rollers(PressureModel::Hertz, &k, &loads)
+        .expect("rib friction");
+    let mut powers = [0.0; 20];
+    for (p, r) in powers.iter_mut().zip(&rib.rollers) {
+        *p = r.power();
+    }
+    s.model
+        .evaluate(&FrictionOperating {
+            inner_speed: w,
+            outer_speed: 0.0,
+            cup_slices: &s.cup,
+            cone_slices: &s.cone,
+            tilts: None,
+            rib: Some(&powers),
+            drag: DragModel::None,
+            coefficient_basis: None,
+        })
+        .expect("friction")
+        .total_nmm
+}
+
+fn bench(c: &mut Criterion) {
+    let mut s = setup();
+    c.bench_function("bearing_friction_trb20_hertz_rib_one_point", |b| {
+        b.iter(|| black_box(point(&mut s, black_box(157.0))))
+    });
+    let speeds: Vec<f64> = (1..=50).map(|i| 6.0 * i as f64).collect();
+    c.bench_function("bearing_friction_trb20_hertz_rib_sweep_50", |b| {
+        b.iter(|| {
+            let mut total = 0.0;
+            for &w in &speeds {
+                total += point(&mut s, w);
+            }
+            black_box(total)
+        })
+    });
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);
