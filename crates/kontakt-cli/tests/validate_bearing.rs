@@ -1,7 +1,7 @@
 //! `kontakt validate --bearing`: it runs on every dataset of validation/measured/, writes
 //! the CSV with its documented columns, draws a plot per dataset, and the plot is right:
-//! each measured point is a filled marker where its value says in the plot's pixel frame,
-//! and not beside it.
+//! each measured point, and each contact-based value, is a filled marker where its value
+//! says in the plot's pixel frame, and not beside it.
 
 #![allow(clippy::unwrap_used)] // tests: a panic is a failure with its message
 
@@ -172,7 +172,9 @@ fn marker_cover(img: &image::RgbImage, (x, y): (f64, f64), c: (u8, u8, u8)) -> u
 /// draws a line plot; the data are the measured points, their error bars and the SKF
 /// curves, all read back from the CSV files the command wrote. At each point's pixel there
 /// is a filled marker of its temperature's colour; 12 pixels beside it (still on its error
-/// bar, vertically) there is none. A marker that another one partly hides is skipped.
+/// bar, vertically) there is none. The same for the contact-based torque (the `contact_nmm`
+/// column) at the measured speeds, in its own colours. A marker that another one partly
+/// hides is skipped.
 #[test]
 fn measured_points_land_where_their_values_say() {
     let dir = tempdir("validate-bearing", "pixels");
@@ -192,7 +194,7 @@ fn measured_points_land_where_their_values_say() {
         let (x, y, band) = (f(r, "speed_rpm"), f(r, "measured_nmm"), f(r, "band_pct"));
         x0 = x0.min(x);
         x1 = x1.max(x);
-        y1 = y1.max(y * (1.0 + band / 100.0));
+        y1 = y1.max(y * (1.0 + band / 100.0)).max(f(r, "contact_nmm"));
     }
     for c in &curves {
         x0 = x0.min(f(c, "x"));
@@ -258,6 +260,51 @@ fn measured_points_land_where_their_values_say() {
     assert!(
         checked >= 10,
         "only {checked} of {} points free of overlap",
+        rows.len()
+    );
+    // the contact-based torque at the measured speeds: markers in the colours after the
+    // temperatures' (55 °C, 65 °C), skipped where a measured or another contact-based
+    // marker is near
+    let contact_colour = |t: f64| {
+        if t == 55.0 {
+            kontakt_plot::PALETTE[2]
+        } else {
+            kontakt_plot::PALETTE[3]
+        }
+    };
+    let on: Vec<(f64, f64)> = rows
+        .iter()
+        .map(|r| pixel(f(r, "speed_rpm"), f(r, "contact_nmm")))
+        .collect();
+    let mut checked = 0;
+    for (k, r) in rows.iter().enumerate() {
+        let c = contact_colour(f(r, "temperature_c"));
+        let (px, py) = on[k];
+        let hidden = at.iter().any(|q| (q.0 - px).hypot(q.1 - py) < 16.0)
+            || on
+                .iter()
+                .enumerate()
+                .any(|(j, q)| j != k && (q.0 - px).hypot(q.1 - py) < 16.0);
+        if hidden {
+            continue;
+        }
+        checked += 1;
+        let cover = marker_cover(&img, (px, py), c);
+        assert!(
+            cover >= 21,
+            "{r:?}: {cover}/25 contact-based marker pixels at ({px:.1}, {py:.1})"
+        );
+        for (dx, dy) in [(0.0, -12.0), (0.0, 12.0), (12.0, 0.0), (-12.0, 0.0)] {
+            let beside = marker_cover(&img, (px + dx, py + dy), c);
+            assert!(
+                beside < 21,
+                "{r:?}: a contact-based marker {dx},{dy} px off ({beside}/25)"
+            );
+        }
+    }
+    assert!(
+        checked >= 5,
+        "only {checked} of {} contact-based points free of overlap",
         rows.len()
     );
 }

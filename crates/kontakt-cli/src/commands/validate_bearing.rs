@@ -151,7 +151,9 @@ pub fn error_bar(x: f64, torque_nmm: f64, band_pct: f64) -> [(f64, f64); 2] {
 type Curve = (String, Vec<(f64, f64)>, (u8, u8, u8), LineStyle);
 
 /// Draw the dataset's plot: measured points with their error bars in the colour of their
-/// temperature, the SKF curve of that temperature solid. Returns false (nothing drawn)
+/// temperature, the SKF curve of that temperature dashed, and, where the study has it, the
+/// contact-based torque at the measured points as markers of a colour of its own per
+/// temperature. Returns false (nothing drawn)
 /// for a dataset with neither points nor curves.
 fn plot(path: &Path, s: &DatasetComparison) -> Result<bool> {
     let temps = temperatures(s);
@@ -160,11 +162,13 @@ fn plot(path: &Path, s: &DatasetComparison) -> Result<bool> {
         Axis::RadialLoad => r.measured.radial_load_n,
     };
     // (label, points, colour, style)
-    // Drawn in order: every error bar, then the model curves, then the markers on top, so
-    // that no bar or curve of another temperature hides a measured point.
+    // Drawn in order: every error bar, then the model curves, then the contact-based
+    // markers, then the measured markers on top, so that nothing of another series hides
+    // a measured point.
     let mut bars: Vec<Curve> = Vec::new();
     let mut lines: Vec<Curve> = Vec::new();
     let mut markers: Vec<Curve> = Vec::new();
+    let mut contact_markers: Vec<Curve> = Vec::new();
     for (k, &t) in temps.iter().enumerate() {
         let color = PALETTE[k % PALETTE.len()];
         let rows: Vec<&ComparisonRow> = s
@@ -197,8 +201,32 @@ fn plot(path: &Path, s: &DatasetComparison) -> Result<bool> {
         for c in s.skf_curves.iter().filter(|c| c.temperature_c == t) {
             lines.push((c.label.clone(), c.points.clone(), color, LineStyle::Dashed));
         }
+        // the contact-based model at the measured points (where the internal geometry is
+        // known): markers in a colour of its own, after the temperatures' colours, joined by
+        // a thin unlabelled line in speed order
+        let mut contact: Vec<(f64, f64)> = rows
+            .iter()
+            .filter_map(|r| r.contact_nmm.map(|c| (x_of(r), c)))
+            .collect();
+        if !contact.is_empty() {
+            let color = PALETTE[(temps.len() + k) % PALETTE.len()];
+            contact.sort_by(|a, b| a.0.total_cmp(&b.0));
+            lines.push((String::new(), contact.clone(), color, LineStyle::Solid));
+            contact_markers.push((
+                format!("contact-based (kontakt), raceways only, {t} °C"),
+                contact,
+                color,
+                LineStyle::Markers,
+            ));
+        }
     }
-    let data: Vec<Curve> = bars.into_iter().chain(lines).chain(markers).collect();
+    let has_contact = !contact_markers.is_empty();
+    let data: Vec<Curve> = bars
+        .into_iter()
+        .chain(lines)
+        .chain(contact_markers)
+        .chain(markers)
+        .collect();
     if data.is_empty() {
         return Ok(false);
     }
@@ -213,6 +241,8 @@ fn plot(path: &Path, s: &DatasetComparison) -> Result<bool> {
         .collect();
     let title = if s.rows.is_empty() {
         format!("{}: SKF model only (no measured numbers)", s.dataset.id)
+    } else if has_contact {
+        format!("{}: measured, SKF (2004) and contact-based", s.dataset.id)
     } else {
         format!("{}: measured and SKF (2004)", s.dataset.id)
     };
