@@ -148,6 +148,23 @@ fn frame(img: &image::RgbImage) -> (u32, u32, u32, u32) {
     (*cols.first().unwrap(), top, *cols.last().unwrap(), bottom)
 }
 
+/// A marker of colour `c` fills its place (at least 21 of the 25 pixels there) and is not
+/// drawn 12 px off in any direction.
+fn assert_marker_at(img: &image::RgbImage, (px, py): (f64, f64), c: (u8, u8, u8), what: &str) {
+    let cover = marker_cover(img, (px, py), c);
+    assert!(
+        cover >= 21,
+        "{what}: {cover}/25 marker pixels at ({px:.1}, {py:.1})"
+    );
+    for (dx, dy) in [(0.0, -12.0), (0.0, 12.0), (12.0, 0.0), (-12.0, 0.0)] {
+        let beside = marker_cover(img, (px + dx, py + dy), c);
+        assert!(
+            beside < 21,
+            "{what}: a marker {dx},{dy} px off ({beside}/25)"
+        );
+    }
+}
+
 /// How many of the 5 × 5 pixels around (x, y) have colour `c`: a filled marker covers all
 /// 25, a line (the error bar, a dashed curve) at most a stripe.
 fn marker_cover(img: &image::RgbImage, (x, y): (f64, f64), c: (u8, u8, u8)) -> usize {
@@ -244,18 +261,7 @@ fn measured_points_land_where_their_values_say() {
             continue;
         }
         checked += 1;
-        let at = marker_cover(&img, (px, py), c);
-        assert!(
-            at >= 21,
-            "{r:?}: {at}/25 marker pixels at ({px:.1}, {py:.1})"
-        );
-        for (dx, dy) in [(0.0, -12.0), (0.0, 12.0), (12.0, 0.0), (-12.0, 0.0)] {
-            let beside = marker_cover(&img, (px + dx, py + dy), c);
-            assert!(
-                beside < 21,
-                "{r:?}: a marker {dx},{dy} px off ({beside}/25)"
-            );
-        }
+        assert_marker_at(&img, (px, py), c, &format!("{r:?}: measured"));
     }
     assert!(
         checked >= 10,
@@ -289,18 +295,7 @@ fn measured_points_land_where_their_values_say() {
             continue;
         }
         checked += 1;
-        let cover = marker_cover(&img, (px, py), c);
-        assert!(
-            cover >= 21,
-            "{r:?}: {cover}/25 contact-based marker pixels at ({px:.1}, {py:.1})"
-        );
-        for (dx, dy) in [(0.0, -12.0), (0.0, 12.0), (12.0, 0.0), (-12.0, 0.0)] {
-            let beside = marker_cover(&img, (px + dx, py + dy), c);
-            assert!(
-                beside < 21,
-                "{r:?}: a contact-based marker {dx},{dy} px off ({beside}/25)"
-            );
-        }
+        assert_marker_at(&img, (px, py), c, &format!("{r:?}: contact-based"));
     }
     assert!(
         checked >= 5,
