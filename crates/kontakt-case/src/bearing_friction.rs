@@ -32,6 +32,10 @@ use kontakt_bearing::geometry::{RollerBearing, RollerBearingKind};
 use kontakt_bearing::roller_equilibrium::RibContactSolver;
 use serde::{Deserialize, Serialize};
 
+mod sweeps;
+pub(crate) use sweeps::load_sweep;
+pub use sweeps::{FrictionStateRow, MAX_SWEEP_POINTS};
+
 /// The largest ring speed, r/min: `[speed]`'s (`bearing_case::speed::MAX_RING_RPM`, not
 /// imported: `bearing_case` imports this module), for the sweep's speeds.
 const MAX_RING_RPM: f64 = 100_000.0;
@@ -72,6 +76,20 @@ pub struct OperatingSpec {
     /// models (`friction.speed_sweep`; 1 to 10 000 speeds).
     #[serde(default)]
     pub sweep_inner_rpm: Option<Vec<f64>>,
+    /// Axial forces `load.force_n[2]` of a load sweep \[N\], the load distribution
+    /// re-solved at each (`friction.axial_load_sweep`; 1 to 10 000 forces; one sweep at a
+    /// time).
+    #[serde(default)]
+    pub sweep_axial_n: Option<Vec<f64>>,
+    /// Radial force magnitudes of a load sweep \[N\] (≥ 0) along the case's radial force
+    /// (+x when `load.force_n[0..2]` is zero), the load distribution re-solved at each
+    /// (`friction.radial_load_sweep`).
+    #[serde(default)]
+    pub sweep_radial_n: Option<Vec<f64>>,
+    /// Oil temperatures of a temperature sweep \[°C\] on the load distribution of `[load]`,
+    /// the viscosity from the lubricant's data at each (`friction.temperature_sweep`).
+    #[serde(default)]
+    pub sweep_temperature_c: Option<Vec<f64>>,
 }
 
 fn yes() -> bool {
@@ -268,6 +286,15 @@ pub struct FrictionReport {
     /// With `operating.sweep_inner_rpm`: the torque at each of its speeds.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub speed_sweep: Vec<FrictionSweepRow>,
+    /// With `operating.sweep_axial_n`: the torque at each axial force, re-solved.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub axial_load_sweep: Vec<FrictionStateRow>,
+    /// With `operating.sweep_radial_n`: the torque at each radial force, re-solved.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub radial_load_sweep: Vec<FrictionStateRow>,
+    /// With `operating.sweep_temperature_c`: the torque at each oil temperature.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub temperature_sweep: Vec<FrictionStateRow>,
 }
 
 /// One speed of `operating.sweep_inner_rpm` (torques N·mm, power W).
@@ -339,6 +366,25 @@ pub(crate) fn friction_report(
         )
     };
     let mut report = at(rpm)?;
+    if let Some((sweeps::SweepKind::Temperature, temperatures)) = sweeps::sweep_of(op)? {
+        let lub = lubricant.cloned();
+        sweeps::temperature_sweep(&mut report, temperatures, force, |t| {
+            let lub = lub.clone().map(|mut l| {
+                l.temperature_c = t;
+                l
+            });
+            point(
+                op,
+                rpm,
+                lub.as_ref(),
+                friction,
+                catalogue,
+                bearing,
+                solved,
+                force,
+            )
+        })?;
+    }
     if let Some(speeds) = &op.sweep_inner_rpm {
         if speeds.is_empty() || speeds.len() > 10_000 {
             return Err(Error::invalid(
@@ -765,6 +811,9 @@ fn point(
         rollers,
         warnings,
         speed_sweep: Vec::new(),
+        axial_load_sweep: Vec::new(),
+        radial_load_sweep: Vec::new(),
+        temperature_sweep: Vec::new(),
     })
 }
 
@@ -857,6 +906,7 @@ impl FrictionReport {
                 ));
             }
         }
+        out.extend(sweeps::state_sweep_lines(self));
         out
     }
 }
