@@ -32,6 +32,7 @@ use kontakt_bearing::geometry::{RollerBearing, RollerBearingKind};
 use kontakt_bearing::roller_equilibrium::RibContactSolver;
 use serde::{Deserialize, Serialize};
 
+mod checks;
 mod sweeps;
 pub(crate) use sweeps::load_sweep;
 pub use sweeps::{FrictionStateRow, MAX_SWEEP_POINTS};
@@ -603,22 +604,9 @@ fn point(
         },
     };
     if let Lubrication::OilBath { level_mm } = lubrication {
-        if !(level_mm.is_finite() && level_mm >= 0.0) {
-            return Err(Error::invalid(
-                "operating.oil_level_mm",
-                level_mm,
-                "a finite oil level >= 0 mm above the lowest point of the outer raceway",
-            ));
-        }
-        // The bearing's centre lies the outer raceway's mid radius above its lowest point.
-        let centre = 0.5 * bearing.pitch_diameter_mm
-            + 0.5 * bearing.roller_diameter_mm * bearing.contact_angle_rad.cos();
-        if level_mm > centre {
-            warnings.push(format!(
-                "oil level {level_mm} mm is above the bearing's centre ({centre:.1} mm above the lowest point of the outer raceway): outside what the catalogue drag models were fitted for"
-            ));
-        }
+        checks::oil_level(level_mm, bearing)?;
     }
+    warnings.extend(checks::temperature_warning(lub));
     let (fr, fa) = (force[0].hypot(force[1]), force[2].abs());
     let point = OperatingPoint {
         speed_rad_s: (wi - wo).abs(),
@@ -749,12 +737,13 @@ fn point(
         drag,
         coefficient_basis: Some((p, d)),
     })?;
-    if f.warnings.film_out_of_range_slices > 0 {
-        warnings.push(format!(
-            "{} loaded raceway slices outside the Dowson-Higginson fit (Moes M < 10 or h_c < h_min): films extrapolated",
-            f.warnings.film_out_of_range_slices
-        ));
-    }
+    warnings.extend(checks::film_warning(
+        &model,
+        wi,
+        wo,
+        &azimuths,
+        f.warnings.film_out_of_range_slices,
+    )?);
     if f.warnings.starvation_extrapolated {
         warnings.push("starvation degree below Biboulet & Houpert's computed range (S < 2)".into());
     }

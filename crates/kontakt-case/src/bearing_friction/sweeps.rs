@@ -315,7 +315,7 @@ fn warm_start(r: &BearingReport) -> Option<[f64; 5]> {
 
 /// Add each of `point`'s warnings whose kind neither `base` nor `into` holds yet to
 /// `into`, prefixed `<key> = <value> <unit>: ` (the first point that raises it). Two
-/// warnings are of one kind when they differ only in their digits ("736 loaded raceway
+/// warnings are of one kind when they differ only in their numbers ("736 loaded raceway
 /// slices ..." and "724 loaded raceway slices ..."): a sweep of 50 points adds each kind
 /// once, not 50 times.
 fn merge_warnings(
@@ -326,7 +326,11 @@ fn merge_warnings(
     value: f64,
     unit: &str,
 ) {
-    let kind = |w: &str| -> String { w.chars().filter(|c| !c.is_ascii_digit()).collect() };
+    let kind = |w: &str| -> String {
+        w.chars()
+            .filter(|c| !(c.is_ascii_digit() || *c == '.' || *c == '-'))
+            .collect()
+    };
     let prefix = format!("{key} = ");
     for w in point {
         let k = kind(w);
