@@ -288,7 +288,13 @@ pub(crate) fn load_sweep(
         let mut point_warnings = r.warnings.clone();
         point_warnings.extend(f.warnings.iter().cloned());
         merge_warnings(&mut new_warnings, &base_warnings, &point_warnings, key, v, "N");
-        rows.push(f.state_row(r.force_n));
+        // the carried force, the swept components as given (exact, not to the residual)
+        let mut shown = r.force_n;
+        match kind {
+            SweepKind::Axial => shown[2] = l.force_n[2],
+            _ => shown[..2].copy_from_slice(&l.force_n[..2]),
+        }
+        rows.push(f.state_row(shown));
     }
     if let Some(f) = report.friction.as_mut() {
         f.warnings.extend(new_warnings);
