@@ -17,8 +17,9 @@
 //! the internal data of Liu (2022), raceways only (no rib geometry).
 //!
 //! What is not filled, and why, rather than a number without a source:
-//! - the contact-based torque where the internal geometry is not stated (Wingertszahn et
-//!   al. 2023's 32216, Zhou & Hoeprich 1991's LM12700 without its load and oil);
+//! - the contact-based torque where the internal geometry is not stated (Zhou & Hoeprich
+//!   1991's LM12700 without its load and oil); Wingertszahn et al. 2023's 32216 has it with
+//!   assumed raceway angles ([`wingertszahn`]);
 //! - Aihara (1987) ([`ComparisonRow::aihara_nmm`]) needs the rib contact height, the roller
 //!   geometry and the oil's pressure-viscosity coefficient, which none of the datasets
 //!   states: `None`, and the dataset's `aihara_note` says which input is missing;
@@ -34,6 +35,7 @@ use kontakt_bearing::friction::{Envelope, Lubrication, OperatingPoint, RPM_PER_R
 
 pub mod contact;
 pub use contact::{ContactSetup, contact_at};
+pub mod wingertszahn;
 
 /// How far a measured value can be trusted.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
@@ -402,7 +404,7 @@ pub fn datasets() -> Result<Vec<Dataset>> {
             oil: FVA3,
             assumptions: WINGERTSZAHN_ASSUMPTIONS,
             aihara_note: "the raceway angles, the rib geometry and the oil's pressure-viscosity coefficient at the test temperature are not given (the paper's Table 4 lacks the angles)",
-            contact: None,
+            contact: Some(wingertszahn::CONTACT_32216),
             curves: Vec::new(),
         },
         Dataset {
@@ -415,7 +417,7 @@ pub fn datasets() -> Result<Vec<Dataset>> {
             oil: FVA3,
             assumptions: WINGERTSZAHN_ASSUMPTIONS,
             aihara_note: "Aihara (1987) is for axial load only, and its inputs are missing as for the axial test",
-            contact: None,
+            contact: Some(wingertszahn::CONTACT_32216),
             curves: Vec::new(),
         },
         Dataset {
@@ -428,7 +430,7 @@ pub fn datasets() -> Result<Vec<Dataset>> {
             oil: FVA3,
             assumptions: WINGERTSZAHN_ASSUMPTIONS,
             aihara_note: "Aihara (1987) is for axial load only",
-            contact: None,
+            contact: Some(wingertszahn::CONTACT_32216),
             curves: vec![CurveSpec {
                 temperature_c: 50.0,
                 axial_load_n: 6500.0,

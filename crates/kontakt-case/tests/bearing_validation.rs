@@ -121,12 +121,12 @@ fn skf_values_are_the_library_function_at_the_same_inputs() {
         "{:?}",
         c.skf_warnings
     );
-    // Aihara, and the contact-based model without the 32216's internal geometry, are not
-    // filled with anything.
+    // Aihara is not filled with anything; the contact-based model has the 32216 with its
+    // assumed raceway angles (bearing_validation::wingertszahn)
     assert!(
         c.rows
             .iter()
-            .all(|r| r.aihara_nmm.is_none() && r.contact_nmm.is_none())
+            .all(|r| r.aihara_nmm.is_none() && r.contact_nmm.is_some())
     );
 }
 
@@ -289,6 +289,11 @@ fn contact_column_is_the_friction_case_at_each_point() {
     let text = std::fs::read_to_string(path).unwrap();
     let mut seen = 0;
     for c in compare_all().unwrap() {
+        // the 32216's column: bearing_validation::wingertszahn's tests
+        if c.dataset.id.starts_with("wingertszahn2023") {
+            assert!(c.rows.iter().all(|r| r.contact_nmm.is_some()));
+            continue;
+        }
         let has = c.dataset.id.starts_with("manjunath2023");
         assert_eq!(c.dataset.contact.is_some(), has, "{}", c.dataset.id);
         for r in &c.rows {

@@ -62,6 +62,12 @@ pub fn contact_at(setup: &ContactSetup, p: &MeasuredPoint) -> Result<Option<f64>
         .as_mut()
         .ok_or_else(|| missing("operating"))?
         .sweep_inner_rpm = None;
+    if let Some(op) = case.operating.as_mut() {
+        // and the load and temperature sweeps (crate::bearing_friction::sweeps)
+        op.sweep_axial_n = None;
+        op.sweep_radial_n = None;
+        op.sweep_temperature_c = None;
+    }
     case.lubricant
         .as_mut()
         .ok_or_else(|| missing("lubricant"))?
