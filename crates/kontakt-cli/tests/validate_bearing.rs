@@ -53,9 +53,11 @@ fn validate_bearing_runs_on_every_dataset() {
     assert_eq!(rows.len(), 14 + 14 + 4 + 8 + 5 + 8);
     for r in &rows {
         // no model value where there is no model: Aihara's inputs, and the contact model
-        // without the internal geometry (Manjunath's TRB has Liu 2022's)
+        // without the internal geometry (Manjunath's TRB has Liu 2022's, Wingertszahn's
+        // 32216 its assumed raceway angles)
         assert_eq!(r["aihara_nmm"], "", "{r:?}");
-        let has_contact = r["dataset"].starts_with("manjunath2023");
+        let has_contact = r["dataset"].starts_with("manjunath2023")
+            || r["dataset"].starts_with("wingertszahn2023");
         for k in ["contact_nmm", "contact_deviation_pct"] {
             assert_eq!(!r[k].is_empty(), has_contact, "{k} of {r:?}");
         }
@@ -110,7 +112,10 @@ fn validate_bearing_runs_on_every_dataset() {
             .unwrap()
             > 0.0
     );
-    assert!(v["datasets"][2]["contact_assumptions"].is_null());
+    // the 32216 lists its assumed raceway angles; Zhou & Hoeprich's has no contact model
+    let assumed = v["datasets"][2]["contact_assumptions"].to_string();
+    assert!(assumed.contains("cup angle 16.0°"), "{assumed}");
+    assert!(v["datasets"][5]["contact_assumptions"].is_null());
 }
 
 /// `--cells` belongs to the rib-contact study: with `--bearing` it is an input error.
