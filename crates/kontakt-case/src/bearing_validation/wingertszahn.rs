@@ -26,7 +26,7 @@ pub const CONTACT_32216_ASSUMPTIONS: &[&str] = &[
     "geometry from the paper (Table 4): pitch diameter 108.5 mm, 16 rollers of 17 mm, roller length 22.7 mm less the two 1 mm edge radii (20.7 mm effective, the profile's c_p)",
     "not in the paper, assumed: cup angle 16.0° (the catalogue e = 0.43 of a 32216, e = 1.5 tan α), cone angle 11.7° (the roller apex on the bearing axis), zero clearance, the ISO/TS 16281 profile for the paper's logarithmic one, the shaft holding the tilts",
     "ISO slice model (31 slices) without rib contacts and without the rollers' centrifugal force: the rib sliding friction (rib geometry not given) is missing",
-    "oil FVA 3 as the Walther line through the paper's Vogel fit at 40 and 100 °C (ν40 96.88, ν100 11.79 mm²/s; within 0.1 % of the Vogel fit at 42 and 50 °C), ρ 868 kg/m³, α = 0.021 1/MPa assumed; the test temperature (outer ring) taken as the oil's",
+    "oil FVA 3 as the Walther line through the paper's Vogel fit at 40 and 100 °C (ν40 96.88, ν100 11.79 mm²/s; within 0.1 % of the Vogel fit at 42 and 50 °C), ρ 866.6 kg/m³ (Vogel's at 50 °C), α = 0.021 1/MPa assumed; the test temperature (outer ring) taken as the oil's",
     "roughness: the paper's raceway σ = 0.16 µm taken as the composite; the mixed friction preset; Biboulet & Houpert (2010) rolling resistance with the Zhu-Cheng inlet-heating factor, fully flooded (the half-roller bath feeds every contact)",
     "no drag term: SKF's drag factor V_M is a diagram reading not available here, and the Schaeffler f0 of the 322 series in an oil bath was not found in a citable source",
 ];
