@@ -739,9 +739,9 @@ fn point(
     })?;
     warnings.extend(checks::film_warning(
         &model,
-        wi,
-        wo,
+        [wi, wo],
         &azimuths,
+        [&cone, &cup],
         f.warnings.film_out_of_range_slices,
     )?);
     if f.warnings.starvation_extrapolated {

@@ -66,49 +66,50 @@ pub fn temperature_warning(lub: &LubricantSpec) -> Option<String> {
 }
 
 /// The raceway contact farthest outside the film formula's fit, as a warning with the
-/// count `slices` of flagged slices, or `None` when no slice is flagged. Each loaded
-/// roller's cone and cup at its mean load per length and at the midpoint of its line
-/// (reduced radius `1/(cos β/r + cos α_i/R_i)` on the cone, `1/(cos β/r − cos α/R_o)` on
-/// the cup, entrainment speed `|ω_R| r`, untilted: the kinematics of
-/// `kontakt_bearing::friction::torque`); the contact with the smallest Moes M is named.
+/// count `slices` of flagged slices, or `None` when no slice is flagged. Every loaded
+/// slice of `cup` and `cone` (N, roller-major, as the model evaluated them) at its load per
+/// length, with the reduced radius and the entrainment speed of its line's midpoint
+/// (`1/(cos β/r + cos α_i/R_i)` on the cone, `1/(cos β/r − cos α/R_o)` on the cup, `|ω_R| r`,
+/// untilted: the kinematics of `kontakt_bearing::friction::torque`, whose radii vary along
+/// the line by the roller's taper, so M is approximate); the slice with the smallest Moes M
+/// is named (roller, azimuth, raceway, position along the line).
 ///
 /// # Errors
 /// Those of [`line_film_regime`] (a finite model's inputs do not raise them).
 pub fn film_warning(
     model: &BearingFrictionModel,
-    inner_speed: f64,
-    outer_speed: f64,
+    speeds: [f64; 2],
     azimuths_rad: &[f64],
+    slice_loads: [&[f64]; 2],
     slices: usize,
 ) -> Result<Option<String>> {
     if slices == 0 {
         return Ok(None);
     }
     let b = model.bearing();
+    let n = b.slices;
+    let width = b.effective_length_mm / n as f64;
     let lub = model.losses().lubrication();
     let (ri, ro, r) = model.pitch_radii();
-    let (_, spin) = model.speeds(inner_speed, outer_speed);
+    let (_, spin) = model.speeds(speeds[0], speeds[1]);
     let cos_beta = (0.5 * (b.contact_angle_rad - b.cone_angle_rad)).cos();
     let radii = [
         1.0 / (cos_beta / r + b.cone_angle_rad.cos() / ri),
         1.0 / (cos_beta / r - b.contact_angle_rad.cos() / ro),
     ];
     let modulus = crate::bearing_case::STEEL_CONTACT_MODULUS_MPA;
-    // (M, L, roller, raceway, Λ)
-    let mut worst: Option<(f64, f64, usize, &str, f64)> = None;
-    for (j, roller) in model.rollers().iter().enumerate() {
-        for (k, (name, load)) in [("cone", roller.cone_load_n), ("cup", roller.cup_load_n)]
-            .into_iter()
-            .enumerate()
-        {
-            if load <= 0.0 {
+    // (M, L, roller, raceway, slice)
+    let mut worst: Option<(f64, f64, usize, usize, usize)> = None;
+    for (side, loads) in slice_loads.iter().enumerate() {
+        for (i, &q) in loads.iter().enumerate() {
+            if q <= 0.0 {
                 continue;
             }
             let regime = line_film_regime(
                 &LineFilmContact {
-                    radius: radii[k],
+                    radius: radii[side],
                     entrainment_speed: spin * r,
-                    load_per_length: load / b.effective_length_mm,
+                    load_per_length: q / width,
                     reduced_modulus: modulus,
                 },
                 lub.viscosity,
@@ -117,17 +118,20 @@ pub fn film_warning(
             if let Some(m) = regime.moes_m
                 && worst.is_none_or(|w| m < w.0)
             {
-                worst = Some((m, regime.moes_l, j, name, roller.min_lambda));
+                worst = Some((m, regime.moes_l, i / n, side, i % n));
             }
         }
     }
     let mut text = format!(
         "{slices} loaded raceway slices outside the Dowson-Higginson film fit (its range: Moes M >= 10, piezoviscous-elastic, Biboulet & Houpert 2010; or h_c < h_min): films and Λ extrapolated"
     );
-    if let Some((m, l, j, name, lambda)) = worst {
+    if let Some((m, l, j, side, k)) = worst {
         let az = azimuths_rad.get(j).copied().unwrap_or(0.0).to_degrees();
+        let name = ["cone", "cup"][side];
+        let lambda = model.rollers().get(j).map_or(f64::NAN, |r| r.min_lambda);
         text.push_str(&format!(
-            "; farthest: roller {j} (azimuth {az:.1}°) {name}, M = {m:.3}, L = {l:.2} at its mean load per length, Λ = {lambda:.3}"
+            "; farthest: roller {j} (azimuth {az:.1}°) {name}, slice {k} at {x:.2} mm from the line's midpoint, M ≈ {m:.3}, L = {l:.2} (the roller's smallest Λ = {lambda:.3})",
+            x = model.slice_position(k)
         ));
     }
     Ok(Some(text))

@@ -243,6 +243,38 @@ pub(crate) fn load_sweep(
         return Ok(());
     }
     let key = kind.key();
+    // a swept force on a displacement-controlled degree of freedom: the case's own [load]
+    // is a conflict in the file (an error); a solve's load that prescribes it (a
+    // BearingModel solve, the element's way of driving the bearing) skips the sweep
+    let axial = kind == SweepKind::Axial;
+    let held = |l: &BearingLoadSpec| {
+        let p = &l.prescribed;
+        if axial {
+            p.dz_mm.is_some()
+        } else {
+            p.dx_mm.is_some() || p.dy_mm.is_some()
+        }
+    };
+    let names = if axial {
+        "load.prescribed.dz_mm"
+    } else {
+        "load.prescribed.dx_mm or dy_mm"
+    };
+    if held(&case.load) {
+        return Err(Error::invalid(
+            key,
+            format!("given with {names}"),
+            format!("a force-controlled direction: remove {names} or the sweep"),
+        ));
+    }
+    if held(load) {
+        if let Some(f) = report.friction.as_mut() {
+            f.warnings.push(format!(
+                "{key} not run: this solve's load holds the displacement ({names})"
+            ));
+        }
+        return Ok(());
+    }
     // the case of every point: the same, without the sweep (no recursion)
     let mut point_case = case.clone();
     if let Some(o) = point_case.operating.as_mut() {
