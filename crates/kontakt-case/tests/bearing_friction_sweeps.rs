@@ -199,18 +199,27 @@ fn bad_sweep_input_names_the_key() {
             "operating",
             "one sweep at a time",
         ),
-        // a TRB refuses a radial load its axial load cannot hold (Fz <= Fr tan α)
-        (
-            "sweep_radial_n = [1000.0, 60000.0]",
-            "operating.sweep_radial_n",
-            "",
-        ),
     ] {
         let e = run(&x32008(sweep)).unwrap_err().to_string();
         assert!(e.contains(key) && e.contains(range), "{sweep}: {e}");
         assert!(!e.contains('\n'));
         println!("{sweep}: {e}");
     }
+    // a TRB cannot carry a radial load its axial load does not hold (Fz <= Fr tan α): the
+    // point is left out with a warning naming it, the others are reported
+    let f = run(&x32008("sweep_radial_n = [1000.0, 60000.0, 2000.0]"))
+        .unwrap()
+        .friction
+        .unwrap();
+    let rows: Vec<f64> = f.radial_load_sweep.iter().map(|r| r.radial_load_n).collect();
+    assert_eq!(rows, [1000.0, 2000.0]);
+    assert!(
+        f.warnings.iter().any(|w| w.starts_with(
+            "operating.sweep_radial_n = 60000 N: not solved, left out: invalid operating.sweep_radial_n"
+        ) && w.contains("F_r tan(alpha)")),
+        "{:?}",
+        f.warnings
+    );
     // an axial sweep on a prescribed axial displacement
     let text = x32008("sweep_axial_n = [1000.0]").replace(
         "force_n = [0.0, 0.0, 12850.0]",

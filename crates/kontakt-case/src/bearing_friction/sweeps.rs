@@ -223,9 +223,12 @@ pub(super) fn temperature_sweep(
 /// point, warm-started from the last equilibrium, and write the rows into
 /// `report.friction`. Without a load sweep: nothing.
 ///
+/// A point whose solve fails (a load the bearing cannot carry, no convergence, a refusal
+/// of the validity check) is left out with a warning naming its value and the error.
+///
 /// # Errors
-/// Those of the solve and the friction at a point, a field of `load.force_n` renamed to
-/// the sweep key; the validity check's refusal of a point.
+/// [`Error::InvalidInput`] naming the sweep key for a swept force on a degree of freedom
+/// the case's own `[load]` holds at a displacement.
 pub(crate) fn load_sweep(
     case: &BearingCase,
     label: &'static str,
@@ -291,6 +294,7 @@ pub(crate) fn load_sweep(
         .chain(report.friction.iter().flat_map(|f| f.warnings.iter()))
         .cloned()
         .collect();
+    let unit = "N";
     let mut rows = Vec::with_capacity(values.len());
     let mut new_warnings = Vec::new();
     for &v in values {
@@ -311,15 +315,26 @@ pub(crate) fn load_sweep(
                 }
             })
         };
-        let r = solve_planned(&point_case, label, planned, &l, start).map_err(rename)?;
-        let r = crate::validity::checked(r)?;
+        // a load the bearing cannot carry (a TRB's radial load beyond F_a / tan α, a solve
+        // that does not converge, a contact the validity check refuses) is a limit of the
+        // bearing, not bad input: the point is left out, a warning names it and why
+        let solved = solve_planned(&point_case, label, planned, &l, start)
+            .and_then(crate::validity::checked)
+            .map_err(rename);
+        let r = match solved {
+            Ok(r) => r,
+            Err(e) => {
+                new_warnings.push(format!("{key} = {v} {unit}: not solved, left out: {e}"));
+                continue;
+            }
+        };
         start = warm_start(&r);
         let f = r.friction.as_ref().ok_or_else(|| {
             Error::invalid(key, v, "a sweep of a bearing case with [operating]")
         })?;
         let mut point_warnings = r.warnings.clone();
         point_warnings.extend(f.warnings.iter().cloned());
-        merge_warnings(&mut new_warnings, &base_warnings, &point_warnings, key, v, "N");
+        merge_warnings(&mut new_warnings, &base_warnings, &point_warnings, key, v, unit);
         // the carried force, the swept components as given (exact, not to the residual)
         let mut shown = r.force_n;
         match kind {
