@@ -370,7 +370,7 @@ pub(crate) fn friction_report(
     if let Some((sweeps::SweepKind::Temperature, temperatures)) = sweeps::sweep_of(op)? {
         let lub = lubricant.cloned();
         sweeps::temperature_sweep(&mut report, temperatures, force, |t| {
-            let lub = lub.clone().map(|mut l| {
+            let lub = lub.map(|mut l| {
                 l.temperature_c = t;
                 l
             });

@@ -46,7 +46,12 @@ fn the_32216_radial_sweep_resolves_each_load() {
         let single = run(&text).unwrap().friction.unwrap();
         assert!(rel(single.total_nmm, r.total_nmm) < 1e-9, "{r:?}");
         assert_eq!(single.loaded_rollers(), r.loaded_rollers);
-        assert!(rel(single.catalogue.skf_total_nmm.unwrap(), r.skf_total_nmm.unwrap()) < 1e-9);
+        assert!(
+            rel(
+                single.catalogue.skf_total_nmm.unwrap(),
+                r.skf_total_nmm.unwrap()
+            ) < 1e-9
+        );
         assert!(rel(r.cone_nmm + r.cup_nmm + r.rib_nmm + r.drag_nmm, r.total_nmm) < 1e-12);
         // the axial force is the one carried (to the Newton residual)
         assert!((r.axial_load_n - 6500.0).abs() < 1e-6);
@@ -64,7 +69,10 @@ fn the_32216_radial_sweep_resolves_each_load() {
     assert!(rel(rows[8].coefficient.unwrap(), rows[8].total_nmm / (p * 40.0)) < 1e-12);
     // the JSON carries the rows
     let json = serde_json::to_value(run(&base).unwrap()).unwrap();
-    assert_eq!(json["friction"]["radial_load_sweep"][8]["loaded_rollers"], 11);
+    assert_eq!(
+        json["friction"]["radial_load_sweep"][8]["loaded_rollers"],
+        11
+    );
 }
 
 /// An axial sweep of the 32008 X: each row is the single-point case (1e-9), the torque
@@ -165,7 +173,7 @@ fn a_load_sweep_through_the_bearing_model() {
         "the warm start is the main point's"
     );
     // a solve that holds the radial displacement (the element's way) skips the sweep, saying so
-    let mut held = case.load.clone();
+    let mut held = case.load;
     held.force_n = [0.0, 0.0, 6500.0];
     held.prescribed.dx_mm = Some(r.displacement_mm[0]);
     let h = model.solve(&held).unwrap();
@@ -185,9 +193,21 @@ fn a_load_sweep_through_the_bearing_model() {
 #[test]
 fn bad_sweep_input_names_the_key() {
     for (sweep, key, range) in [
-        ("sweep_axial_n = []", "operating.sweep_axial_n", "1 to 10000"),
-        ("sweep_radial_n = [-5.0]", "operating.sweep_radial_n", ">= 0 N"),
-        ("sweep_radial_n = [nan]", "operating.sweep_radial_n", ">= 0 N"),
+        (
+            "sweep_axial_n = []",
+            "operating.sweep_axial_n",
+            "1 to 10000",
+        ),
+        (
+            "sweep_radial_n = [-5.0]",
+            "operating.sweep_radial_n",
+            ">= 0 N",
+        ),
+        (
+            "sweep_radial_n = [nan]",
+            "operating.sweep_radial_n",
+            ">= 0 N",
+        ),
         ("sweep_axial_n = [inf]", "operating.sweep_axial_n", "finite"),
         (
             "sweep_temperature_c = [55.0, 400.0]",
@@ -211,7 +231,11 @@ fn bad_sweep_input_names_the_key() {
         .unwrap()
         .friction
         .unwrap();
-    let rows: Vec<f64> = f.radial_load_sweep.iter().map(|r| r.radial_load_n).collect();
+    let rows: Vec<f64> = f
+        .radial_load_sweep
+        .iter()
+        .map(|r| r.radial_load_n)
+        .collect();
     assert_eq!(rows, [1000.0, 2000.0]);
     assert!(
         f.warnings.iter().any(|w| w.starts_with(
@@ -257,7 +281,10 @@ fn starting_torque_and_extrapolated_films_are_finite_with_warnings() {
     assert!(cold.total_nmm.is_finite());
     let fast = run(&base
         .replace("inner_rpm = 1000.0", "inner_rpm = 90000.0")
-        .replace("force_n = [0.0, 0.0, 12850.0]", "force_n = [0.0, 0.0, 100.0]"))
+        .replace(
+            "force_n = [0.0, 0.0, 12850.0]",
+            "force_n = [0.0, 0.0, 100.0]",
+        ))
     .unwrap()
     .friction
     .unwrap();

@@ -286,7 +286,11 @@ pub(crate) fn load_sweep(
     }
     let [fx, fy, _] = load.force_n;
     let m = fx.hypot(fy);
-    let dir = if m > 0.0 { [fx / m, fy / m] } else { [1.0, 0.0] };
+    let dir = if m > 0.0 {
+        [fx / m, fy / m]
+    } else {
+        [1.0, 0.0]
+    };
     let mut start = warm_start(report);
     let base_warnings: Vec<String> = report
         .warnings
@@ -298,7 +302,7 @@ pub(crate) fn load_sweep(
     let mut rows = Vec::with_capacity(values.len());
     let mut new_warnings = Vec::new();
     for &v in values {
-        let mut l = load.clone();
+        let mut l = *load;
         match kind {
             SweepKind::Axial => l.force_n[2] = v,
             _ => {
@@ -329,12 +333,20 @@ pub(crate) fn load_sweep(
             }
         };
         start = warm_start(&r);
-        let f = r.friction.as_ref().ok_or_else(|| {
-            Error::invalid(key, v, "a sweep of a bearing case with [operating]")
-        })?;
+        let f = r
+            .friction
+            .as_ref()
+            .ok_or_else(|| Error::invalid(key, v, "a sweep of a bearing case with [operating]"))?;
         let mut point_warnings = r.warnings.clone();
         point_warnings.extend(f.warnings.iter().cloned());
-        merge_warnings(&mut new_warnings, &base_warnings, &point_warnings, key, v, unit);
+        merge_warnings(
+            &mut new_warnings,
+            &base_warnings,
+            &point_warnings,
+            key,
+            v,
+            unit,
+        );
         // the carried force, the swept components as given (exact, not to the residual)
         let mut shown = r.force_n;
         match kind {

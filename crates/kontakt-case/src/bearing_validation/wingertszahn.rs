@@ -157,7 +157,10 @@ mod tests {
                 let m = &r.measured;
                 let text = CONTACT_32216
                     .case_toml
-                    .replace("inner_rpm = 2000.0", &format!("inner_rpm = {:?}", m.speed_rpm))
+                    .replace(
+                        "inner_rpm = 2000.0",
+                        &format!("inner_rpm = {:?}", m.speed_rpm),
+                    )
                     .replace(
                         "force_n = [1000.0, 0.0, 6500.0]",
                         &format!(
