@@ -34,8 +34,8 @@ use serde::{Deserialize, Serialize};
 
 mod checks;
 mod sweeps;
+pub use sweeps::MAX_SWEEP_POINTS;
 pub(crate) use sweeps::load_sweep;
-pub use sweeps::{FrictionStateRow, MAX_SWEEP_POINTS};
 
 /// The largest ring speed, r/min: `[speed]`'s (`bearing_case::speed::MAX_RING_RPM`, not
 /// imported: `bearing_case` imports this module), for the sweep's speeds.
@@ -289,16 +289,18 @@ pub struct FrictionReport {
     pub speed_sweep: Vec<FrictionSweepRow>,
     /// With `operating.sweep_axial_n`: the torque at each axial force, re-solved.
     #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub axial_load_sweep: Vec<FrictionStateRow>,
+    pub axial_load_sweep: Vec<FrictionSweepRow>,
     /// With `operating.sweep_radial_n`: the torque at each radial force, re-solved.
     #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub radial_load_sweep: Vec<FrictionStateRow>,
+    pub radial_load_sweep: Vec<FrictionSweepRow>,
     /// With `operating.sweep_temperature_c`: the torque at each oil temperature.
     #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub temperature_sweep: Vec<FrictionStateRow>,
+    pub temperature_sweep: Vec<FrictionSweepRow>,
 }
 
-/// One speed of `operating.sweep_inner_rpm` (torques N·mm, power W).
+/// One point of a friction sweep: a speed of `operating.sweep_inner_rpm`, a load of
+/// `sweep_axial_n` / `sweep_radial_n` or a temperature of `sweep_temperature_c` (torques
+/// N·mm, power W).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct FrictionSweepRow {
     /// Inner ring speed \[r/min\].
@@ -325,6 +327,17 @@ pub struct FrictionSweepRow {
     pub aihara_nmm: Option<f64>,
     /// Schaeffler M0 (+ M1) \[N·mm\].
     pub schaeffler_nmm: Option<f64>,
+    /// Axial force `Fz` \[N\] (load sweeps: the swept value as given; otherwise the
+    /// carried one).
+    pub axial_load_n: f64,
+    /// Radial force `|(Fx, Fy)|` \[N\] (as `axial_load_n`).
+    pub radial_load_n: f64,
+    /// Oil temperature \[°C\].
+    pub temperature_c: f64,
+    /// Kinematic viscosity there \[mm²/s\].
+    pub viscosity_mm2_s: f64,
+    /// Rollers that carry load on a raceway.
+    pub loaded_rollers: usize,
 }
 
 /// The solved state a friction evaluation reads.
@@ -401,21 +414,7 @@ pub(crate) fn friction_report(
                     other => other.to_string(),
                 })
             })?;
-            let c = &p.catalogue;
-            report.speed_sweep.push(FrictionSweepRow {
-                inner_rpm: n,
-                total_nmm: p.total_nmm,
-                cone_nmm: p.cone_rolling_nmm + p.cone_sliding_nmm,
-                cup_nmm: p.cup_rolling_nmm + p.cup_sliding_nmm,
-                rib_nmm: p.rib_nmm,
-                drag_nmm: p.drag_nmm,
-                power_w: p.power_w,
-                coefficient: p.coefficient,
-                min_lambda: p.min_lambda,
-                skf_total_nmm: c.skf_total_nmm,
-                aihara_nmm: c.aihara_total_nmm.or(c.aihara_rolling_nmm),
-                schaeffler_nmm: c.schaeffler_total_nmm.or(c.schaeffler_m0_nmm),
-            });
+            report.speed_sweep.push(p.state_row(force));
         }
     }
     Ok(report)

@@ -25,6 +25,24 @@ fn radial_sweep_in_text_json_and_csv() {
     assert_eq!(rows.len(), 9);
     assert_eq!(rows[8]["loaded_rollers"], "11");
     assert_eq!(rows[0]["loaded_rollers"], "16");
+    // the speed sweep's rows go to the same file, with the same columns
+    let speed = support::example("bearing_32008x_friction.toml");
+    let speed_csv = dir.join("speed.csv");
+    let out = kontakt()
+        .args([
+            "bearing",
+            speed.to_str().unwrap(),
+            "--csv",
+            speed_csv.to_str().unwrap(),
+        ])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let speed_rows = support::read_csv(&dir.join("speed.friction_sweep.csv"));
+    assert_eq!(speed_rows.len(), 8);
+    assert_eq!(speed_rows[1]["inner_rpm"], "200.0");
+    assert_eq!(speed_rows[1]["loaded_rollers"], "23");
+    assert_eq!(speed_rows[0].keys().len(), rows[0].keys().len());
     let v = run_json(&["solve", path]);
     assert_eq!(
         v["friction"]["radial_load_sweep"].as_array().unwrap().len(),

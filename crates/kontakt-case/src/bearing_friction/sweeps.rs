@@ -21,53 +21,13 @@
 //!
 //! Units: N, °C, r/min, N·mm, W.
 
-use super::{FrictionReport, OperatingSpec};
+use super::{FrictionReport, FrictionSweepRow, OperatingSpec};
 use crate::bearing_case::{BearingCase, BearingLoadSpec, BearingReport, Planned, solve_planned};
 use kontakt::{Error, Result};
 use serde::Serialize;
 
 /// Most points of a sweep (as `operating.sweep_inner_rpm`).
 pub const MAX_SWEEP_POINTS: usize = 10_000;
-
-/// One point of a load or temperature sweep: the operating point, the torque with its
-/// breakdown, μ, the loaded rollers and the catalogue torques (torques N·mm, power W).
-#[derive(Debug, Clone, PartialEq, Serialize)]
-pub struct FrictionStateRow {
-    /// Axial force `Fz` \[N\].
-    pub axial_load_n: f64,
-    /// Radial force `|(Fx, Fy)|` \[N\].
-    pub radial_load_n: f64,
-    /// Inner ring speed \[r/min\].
-    pub inner_rpm: f64,
-    /// Oil temperature \[°C\].
-    pub temperature_c: f64,
-    /// Kinematic viscosity there \[mm²/s\].
-    pub viscosity_mm2_s: f64,
-    /// Bearing torque \[N·mm\].
-    pub total_nmm: f64,
-    /// Cone share (rolling + sliding) \[N·mm\].
-    pub cone_nmm: f64,
-    /// Cup share (rolling + sliding) \[N·mm\].
-    pub cup_nmm: f64,
-    /// Rib share \[N·mm\].
-    pub rib_nmm: f64,
-    /// Drag share \[N·mm\].
-    pub drag_nmm: f64,
-    /// Total power \[W\].
-    pub power_w: f64,
-    /// Friction coefficient μ = M/(P d/2).
-    pub coefficient: Option<f64>,
-    /// Smallest raceway film parameter Λ.
-    pub min_lambda: Option<f64>,
-    /// Rollers that carry load on a raceway.
-    pub loaded_rollers: usize,
-    /// SKF 2004 total \[N·mm\].
-    pub skf_total_nmm: Option<f64>,
-    /// Aihara (1987) total, or its rolling part without the rib \[N·mm\].
-    pub aihara_nmm: Option<f64>,
-    /// Schaeffler M0 (+ M1) \[N·mm\].
-    pub schaeffler_nmm: Option<f64>,
-}
 
 impl FrictionReport {
     /// The rollers that carry load on a raceway (cone or cup load > 0).
@@ -79,9 +39,9 @@ impl FrictionReport {
     }
 
     /// This point as a sweep row at the loads `force` \[N\].
-    pub(crate) fn state_row(&self, force: [f64; 3]) -> FrictionStateRow {
+    pub(crate) fn state_row(&self, force: [f64; 3]) -> FrictionSweepRow {
         let c = &self.catalogue;
-        FrictionStateRow {
+        FrictionSweepRow {
             axial_load_n: force[2],
             radial_load_n: force[0].hypot(force[1]),
             inner_rpm: self.inner_rpm,
@@ -102,8 +62,18 @@ impl FrictionReport {
         }
     }
 
-    /// The state sweep rows and its case key, if any.
-    pub fn state_sweep(&self) -> Option<(&'static str, &[FrictionStateRow])> {
+    /// The rows of the case's one sweep (speed, load or temperature) and its case key, if
+    /// any.
+    pub fn sweep_rows(&self) -> Option<(&'static str, &[FrictionSweepRow])> {
+        if self.speed_sweep.is_empty() {
+            self.state_sweep()
+        } else {
+            Some((SweepKind::Speed.key(), self.speed_sweep.as_slice()))
+        }
+    }
+
+    /// The load or temperature sweep's rows and its case key, if any.
+    pub fn state_sweep(&self) -> Option<(&'static str, &[FrictionSweepRow])> {
         [
             ("operating.sweep_axial_n", &self.axial_load_sweep),
             ("operating.sweep_radial_n", &self.radial_load_sweep),
