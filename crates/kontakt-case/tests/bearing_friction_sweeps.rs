@@ -12,6 +12,11 @@ use bearing_run::{example, run};
 use kontakt_case::bearing_friction::FrictionReport;
 use kontakt_case::{BearingCase, BearingModel};
 
+/// The friction section of a case text.
+fn friction(text: &str) -> FrictionReport {
+    run(text).unwrap().friction.unwrap()
+}
+
 fn rel(a: f64, b: f64) -> f64 {
     (a / b - 1.0).abs()
 }
@@ -34,7 +39,7 @@ fn x32008(sweep: &str) -> String {
 #[test]
 fn the_32216_radial_sweep_resolves_each_load() {
     let base = example("bearing_32216_friction.toml");
-    let f = run(&base).unwrap().friction.unwrap();
+    let f = friction(&base);
     let rows = &f.radial_load_sweep;
     assert_eq!(rows.len(), 9);
     assert!(f.speed_sweep.is_empty() && f.axial_load_sweep.is_empty());
@@ -43,7 +48,7 @@ fn the_32216_radial_sweep_resolves_each_load() {
             "force_n = [1000.0, 0.0, 6500.0]",
             &format!("force_n = [{:.1}, 0.0, 6500.0]", r.radial_load_n),
         );
-        let single = run(&text).unwrap().friction.unwrap();
+        let single = friction(&text);
         assert!(rel(single.total_nmm, r.total_nmm) < 1e-9, "{r:?}");
         assert_eq!(single.loaded_rollers(), r.loaded_rollers);
         assert!(
@@ -80,17 +85,14 @@ fn the_32216_radial_sweep_resolves_each_load() {
 #[test]
 fn an_axial_sweep_matches_the_single_points() {
     let text = x32008("sweep_axial_n = [2000.0, 6000.0, 12850.0, 20000.0]");
-    let f = run(&text).unwrap().friction.unwrap();
+    let f = friction(&text);
     let rows = &f.axial_load_sweep;
     assert_eq!(rows.len(), 4);
     for r in rows {
-        let single = run(&text.replace(
+        let single = friction(&text.replace(
             "force_n = [0.0, 0.0, 12850.0]",
             &format!("force_n = [0.0, 0.0, {:.1}]", r.axial_load_n),
-        ))
-        .unwrap()
-        .friction
-        .unwrap();
+        ));
         assert!(rel(single.total_nmm, r.total_nmm) < 1e-9, "{r:?}");
         assert_eq!(r.loaded_rollers, 23);
         assert!(r.aihara_nmm.is_some());
@@ -109,17 +111,14 @@ fn an_axial_sweep_matches_the_single_points() {
 #[test]
 fn a_temperature_sweep_follows_the_viscosity() {
     let text = x32008("sweep_temperature_c = [30.0, 40.0, 55.0, 70.0, 90.0]");
-    let f = run(&text).unwrap().friction.unwrap();
+    let f = friction(&text);
     let rows = &f.temperature_sweep;
     assert_eq!(rows.len(), 5);
     for r in rows {
-        let single = run(&text.replace(
+        let single = friction(&text.replace(
             "temperature_c = 55.0",
             &format!("temperature_c = {:.1}", r.temperature_c),
-        ))
-        .unwrap()
-        .friction
-        .unwrap();
+        ));
         assert!(rel(single.total_nmm, r.total_nmm) < 1e-12, "{r:?}");
         assert_eq!(single.viscosity_mm2_s, r.viscosity_mm2_s);
     }
@@ -158,11 +157,7 @@ fn a_load_sweep_through_the_bearing_model() {
     let case = BearingCase::from_toml_str(&example("bearing_32216_friction.toml")).unwrap();
     let mut model = BearingModel::new(&case).unwrap();
     let r = model.solve(&case.load).unwrap();
-    let run_rows = run(&example("bearing_32216_friction.toml"))
-        .unwrap()
-        .friction
-        .unwrap()
-        .radial_load_sweep;
+    let run_rows = friction(&example("bearing_32216_friction.toml")).radial_load_sweep;
     let rows = &r.friction.as_ref().unwrap().radial_load_sweep;
     for (a, b) in rows.iter().zip(&run_rows) {
         assert!(rel(a.total_nmm, b.total_nmm) < 1e-9);
@@ -227,10 +222,7 @@ fn bad_sweep_input_names_the_key() {
     }
     // a TRB cannot carry a radial load its axial load does not hold (Fz <= Fr tan α): the
     // point is left out with a warning naming it, the others are reported
-    let f = run(&x32008("sweep_radial_n = [1000.0, 60000.0, 2000.0]"))
-        .unwrap()
-        .friction
-        .unwrap();
+    let f = friction(&x32008("sweep_radial_n = [1000.0, 60000.0, 2000.0]"));
     let rows: Vec<f64> = f
         .radial_load_sweep
         .iter()
@@ -261,16 +253,10 @@ fn bad_sweep_input_names_the_key() {
 #[test]
 fn starting_torque_and_extrapolated_films_are_finite_with_warnings() {
     let base = example("bearing_32008x_friction.toml");
-    let still: FrictionReport = run(&base.replace("inner_rpm = 1000.0", "inner_rpm = 0.0"))
-        .unwrap()
-        .friction
-        .unwrap();
+    let still: FrictionReport = friction(&base.replace("inner_rpm = 1000.0", "inner_rpm = 0.0"));
     assert!(still.starting && still.total_nmm.is_finite() && still.total_nmm > 0.0);
     assert!(still.warnings.iter().any(|w| w.contains("starting torque")));
-    let cold = run(&base.replace("temperature_c = 55.0", "temperature_c = 10.0"))
-        .unwrap()
-        .friction
-        .unwrap();
+    let cold = friction(&base.replace("temperature_c = 55.0", "temperature_c = 10.0"));
     assert!(
         cold.warnings
             .iter()
@@ -279,15 +265,14 @@ fn starting_torque_and_extrapolated_films_are_finite_with_warnings() {
         cold.warnings
     );
     assert!(cold.total_nmm.is_finite());
-    let fast = run(&base
-        .replace("inner_rpm = 1000.0", "inner_rpm = 90000.0")
-        .replace(
-            "force_n = [0.0, 0.0, 12850.0]",
-            "force_n = [0.0, 0.0, 100.0]",
-        ))
-    .unwrap()
-    .friction
-    .unwrap();
+    let fast = friction(
+        &base
+            .replace("inner_rpm = 1000.0", "inner_rpm = 90000.0")
+            .replace(
+                "force_n = [0.0, 0.0, 12850.0]",
+                "force_n = [0.0, 0.0, 100.0]",
+            ),
+    );
     let w = fast
         .warnings
         .iter()

@@ -24,7 +24,6 @@
 use super::{FrictionReport, FrictionSweepRow, OperatingSpec};
 use crate::bearing_case::{BearingCase, BearingLoadSpec, BearingReport, Planned, solve_planned};
 use kontakt::{Error, Result};
-use serde::Serialize;
 
 /// Most points of a sweep (as `operating.sweep_inner_rpm`).
 pub const MAX_SWEEP_POINTS: usize = 10_000;
