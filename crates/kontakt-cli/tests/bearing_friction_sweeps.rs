@@ -100,3 +100,42 @@ fn friction_bad_input_is_one_line_with_the_range() {
         assert!(line.contains(key) && line.contains(range), "{key}: {line}");
     }
 }
+
+/// Results with a warning, not errors, through `kontakt solve`: zero speed (the starting
+/// torque), an oil temperature outside the viscosity data, films outside the fit.
+#[test]
+fn friction_warnings_through_solve() {
+    let dir = support::tempdir("bearing_friction_sweeps", "warnings");
+    let text = std::fs::read_to_string(support::example("bearing_32008x_friction.toml")).unwrap();
+    let p = dir.join("case.toml");
+    std::fs::write(
+        &p,
+        text.replace("inner_rpm = 1000.0", "inner_rpm = 0.0")
+            .replace("temperature_c = 55.0", "temperature_c = 10.0"),
+    )
+    .unwrap();
+    let v = run_json(&["solve", p.to_str().unwrap()]);
+    let f = &v["friction"];
+    assert_eq!(f["starting"], true);
+    assert!(f["total_nmm"].as_f64().unwrap() > 0.0);
+    let warnings = f["warnings"].to_string();
+    assert!(warnings.contains("starting torque"), "{warnings}");
+    assert!(
+        warnings.contains(
+            "lubricant.temperature_c = 10 °C is outside the oil's viscosity data (40-100 °C"
+        ),
+        "{warnings}"
+    );
+    let v = run_json(&[
+        "solve",
+        support::example("bearing_32216_friction.toml")
+            .to_str()
+            .unwrap(),
+    ]);
+    let warnings = v["friction"]["warnings"].to_string();
+    assert!(
+        warnings.contains("outside the Dowson-Higginson film fit (its range: Moes M >= 10")
+            && warnings.contains("farthest: roller"),
+        "{warnings}"
+    );
+}
