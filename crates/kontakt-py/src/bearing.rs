@@ -33,7 +33,7 @@ fn argument(key: &str) -> Option<String> {
 
 /// A case given as a dict, TOML text (a str with a newline) or a path, as `kontakt.run`
 /// takes it, parsed by the case layer; a case without `[load]` gets the empty one.
-fn parse(case: &Bound<'_, PyAny>) -> PyResult<Case> {
+pub(crate) fn parse(case: &Bound<'_, PyAny>) -> PyResult<Case> {
     let py = case.py();
     let mapping = py.import("collections.abc")?.getattr("Mapping")?;
     if case.is_instance(&mapping)? {
