@@ -336,8 +336,8 @@ def quiet_settings():
     s.linearSolver.solverType = exu.LinearSolverType.EXUdense
     s.staticSolver.verboseMode = 0
     s.timeIntegration.verboseMode = 0
-    s.solutionSettings.writeSolutionToFile = False
-    s.solutionSettings.sensorsWritePeriod = 0.0
+    s.solution.file.write = False
+    s.solution.sensors.writePeriod = 0.0  # every step
     return s
 
 
@@ -431,9 +431,77 @@ def energy(shaft: Shaft, run: Run, load_n, gauss_points: int = 16) -> np.ndarray
     return out - out[0]
 
 
+def to_q0(q_mm, spin: float = 0.0) -> list[float]:
+    """Exudyn's node coordinates (SI, Tait-Bryan xyz) of the pose q (mm, rad), spin γ."""
+    return [1e-3 * q_mm[0], 1e-3 * q_mm[1], 1e-3 * q_mm[2], q_mm[3], q_mm[4], spin]
+
+
+def to_q_mm(q) -> np.ndarray:
+    """The pose (x, y, z [mm], α, β [rad]) of Exudyn's node coordinates (rows or one)."""
+    q = np.asarray(q)
+    return np.concatenate([1e3 * q[..., :3], q[..., 3:5]], axis=-1)
+
+
+def modes(shaft: Shaft, q_mm, load_n):
+    """The shaft's natural frequencies [Hz] at rest on its bearings from kontakt's stiffness
+    matrices (`shaft_stiffness`) and the mass matrix, ascending, with the mode shapes as
+    columns."""
+    lam, vec = np.linalg.eig(np.linalg.solve(mass_matrix(shaft), shaft_stiffness(shaft, q_mm, load_n)))
+    order = np.argsort(lam.real)
+    return np.sqrt(lam.real[order]) / (2 * np.pi), vec.real[:, order]
+
+
+def measured_frequency(run: Run, q_eq_mm, left_vector) -> float:
+    """The frequency [Hz] of a free vibration about q_eq from the zero crossings (linearly
+    interpolated) of the modal coordinate η = w·(q - q_eq), w a left eigenvector."""
+    eta = (to_q_mm(run.q) - q_eq_mm) @ left_vector
+    i = np.where(np.sign(eta[:-1]) * np.sign(eta[1:]) < 0)[0]
+    tc = run.t[i] - eta[i] * (run.t[i + 1] - run.t[i]) / (eta[i + 1] - eta[i])
+    return 0.5 * (len(tc) - 1) / (tc[-1] - tc[0])
+
+
+def free_vibration(shaft: Shaft, load_n, mode: int, amplitude_mm: float = 1e-4, periods: int = 10, steps_per_period: int = 50):
+    """Exudyn's free vibration of the shaft at rest about its equilibrium, started in a mode
+    shape: (kontakt's frequency, Exudyn's frequency) in Hz."""
+    q_eq, _, _ = reference_equilibrium(shaft, load_n)
+    f, vec = modes(shaft, q_eq, load_n)
+    phi = vec[:, mode] / np.max(np.abs(vec[:, mode] * [1.0, 1.0, 1.0, shaft.span_mm, shaft.span_mm]))
+    run = simulate(shaft, periods / f[mode], 1.0 / (f[mode] * steps_per_period), load=lambda t: load_n, q0=to_q0(q_eq + amplitude_mm * phi))
+    return f[mode], measured_frequency(run, q_eq, np.linalg.inv(vec)[mode])
+
+
+def run_up(shaft: Shaft, load_before, load_after, step_at_s: float = 0.01, speed_rad_s: float = 300.0, ramp_s: float = 0.02, end_s: float = 0.04, step_s: float = 2e-5) -> Run:
+    """The shaft at rest in equilibrium under `load_before`; a motor torque about its axis
+    runs it up to `speed_rad_s` in `ramp_s` (constant acceleration), and the load steps to
+    `load_after` at `step_at_s`."""
+    q0, _, _ = reference_equilibrium(shaft, load_before)
+    torque = shaft.inertia_polar_kgm2 * speed_rad_s / ramp_s
+    return simulate(
+        shaft,
+        end_s,
+        step_s,
+        load=lambda t: load_before if t < step_at_s else load_after,
+        q0=to_q0(q0),
+        motor=lambda t: torque if t < ramp_s - 0.5 * step_s else 0.0,
+    )
+
+
 if __name__ == "__main__":
+    import time
+
     shaft = Shaft()
-    q_ref, K, its = reference_equilibrium(shaft, shaft.load_n)
-    print("reference", q_ref, its)
-    q_exu = solve_static(shaft, shaft.load_n)
-    print("exudyn   ", q_exu)
+    load = np.array(shaft.load_n)
+    q_ref, _, its = reference_equilibrium(shaft, load)
+    q_exu = solve_static(shaft, load)
+    print(f"static equilibrium under {load} N at z = {shaft.load_point_mm} mm (x, y, z mm; α, β rad):")
+    print("  kontakt (Newton on 5 DoF):", q_ref, f"({its} iterations)")
+    print("  Exudyn (static solver):   ", q_exu, " largest relative difference", np.max(np.abs(q_exu - q_ref) / np.abs(q_ref)))
+    for mode in (0, 4):
+        f_k, f_e = free_vibration(shaft, load, mode)
+        print(f"mode {mode}: kontakt's stiffness {f_k:.3f} Hz, Exudyn's free vibration {f_e:.3f} Hz ({f_e / f_k - 1:+.1e})")
+    damped = Shaft(damping_s=5e-5)
+    t0 = time.perf_counter()
+    run = run_up(damped, np.array([500.0, 0.0, 0.0]), load)
+    q1, _, _ = reference_equilibrium(shaft, load)
+    print(f"run-up to {run.qd[-1, 5]:.2f} rad/s with a load step: {time.perf_counter() - t0:.1f} s, {run.evaluations} bearing evaluations")
+    print("  end pose - static equilibrium:", to_q_mm(run.q[-1]) - q1)
