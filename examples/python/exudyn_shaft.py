@@ -380,8 +380,9 @@ def solve_static(shaft: Shaft, load_n, tol: float = 1e-12) -> np.ndarray:
     s.staticSolver.newton.relativeTolerance = tol
     s.staticSolver.newton.absoluteTolerance = tol
     s.staticSolver.newton.useModifiedNewton = False
-    # the bearings' stiffness enters the static solver's Jacobian through the loads
-    s.staticSolver.newton.numericalDifferentiation.doSystemWideDifferentiation = True
+    # the bearings' stiffness enters the static solver's Jacobian through the user loads
+    # (numerical differentiation of the loads; Exudyn's default for the static solver)
+    s.staticSolver.computeLoadsJacobian = True
     s.staticSolver.newton.maxIterations = 50
     s.staticSolver.numberOfLoadSteps = 1
     exu.SolveStatic(mbs, s)
