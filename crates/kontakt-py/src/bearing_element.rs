@@ -7,8 +7,8 @@
 use crate::args;
 use crate::bearing::parse;
 use crate::errors::{invalid, to_py};
-use kontakt_case::bearing_model::{BearingElementOutput, BearingElementStatus};
 use kontakt_case::bearing_model::BearingElement as Element;
+use kontakt_case::bearing_model::{BearingElementOutput, BearingElementStatus};
 use kontakt_case::{BearingModel, Case};
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyArrayMethods};
