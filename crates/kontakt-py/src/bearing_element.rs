@@ -5,11 +5,10 @@
 //! evaluation releases the GIL. A thin layer: no physics here.
 
 use crate::args;
-use crate::bearing::parse;
-use crate::errors::{invalid, to_py};
+use crate::bearing::plan;
+use crate::errors::to_py;
 use kontakt_case::bearing_model::BearingElement as Element;
 use kontakt_case::bearing_model::{BearingElementOutput, BearingElementStatus};
-use kontakt_case::{BearingModel, Case};
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyArrayMethods};
 use pyo3::prelude::*;
@@ -31,16 +30,7 @@ impl BearingElement {
     #[new]
     #[pyo3(signature = (case, damping_s = None))]
     fn new(case: &Bound<'_, PyAny>, damping_s: Option<&Bound<'_, PyAny>>) -> PyResult<Self> {
-        let case = parse(case)?;
-        let Case::Bearing(case) = case else {
-            return Err(invalid(
-                "case.method",
-                format!("\"{}\"", case.method()),
-                "\"bearing\": kontakt.BearingElement takes a bearing case",
-            ));
-        };
-        let model = BearingModel::new(&case).map_err(to_py)?;
-        let mut inner = Element::new(model);
+        let mut inner = Element::new(plan(case, "kontakt.BearingElement")?);
         let valid = "a finite damping coefficient beta >= 0 s (the damping matrix is beta times the stiffness)";
         if let Some(b) = args::opt_real(damping_s, "damping_s", valid)? {
             inner.set_damping(b).map_err(to_py)?;

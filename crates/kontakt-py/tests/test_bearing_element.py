@@ -4,15 +4,13 @@ stiffness that load's derivative, its damping -beta K v; arguments are named in 
 
 import math
 import pathlib
-import sys
-import threading
-import time
 import tomllib
 
 import numpy as np
 import pytest
 
 import kontakt as kt
+from conftest import gil_fractions
 
 REPO = pathlib.Path(__file__).resolve().parents[3]
 ACBB = REPO / "examples/bearing_7205.toml"
@@ -125,30 +123,12 @@ def test_the_gil_is_released_during_an_evaluation():
     case = tomllib.loads(TRB.read_text())
     case["bearing"]["slices"] = 10001
     e = kt.BearingElement(case)
-    ticks: list[float] = []
-    stop = threading.Event()
 
-    def tick():
-        while not stop.is_set():
-            ticks.append(time.perf_counter())
+    def evaluate(i):
+        e.reset()
+        e.evaluate(np.array([0.01, 0.0, 0.02 + 1e-4 * i, 0.0, 0.0]))
 
-    interval = sys.getswitchinterval()
-    sys.setswitchinterval(0.001)
-    t = threading.Thread(target=tick)
-    t.start()
-    try:
-        fractions = []
-        for i in range(5):
-            e.reset()
-            t0 = time.perf_counter()
-            e.evaluate(np.array([0.01, 0.0, 0.02 + 1e-4 * i, 0.0, 0.0]))
-            t1 = time.perf_counter()
-            first = next((x for x in ticks[-2000000:] if x > t0), t1)
-            fractions.append((first - t0) / (t1 - t0))
-    finally:
-        stop.set()
-        t.join()
-        sys.setswitchinterval(interval)
+    fractions = gil_fractions(evaluate)
     assert sorted(fractions)[2] < 0.5, fractions
 
 
@@ -182,25 +162,19 @@ def test_bad_arguments_are_named(args, exc, named):
 
 
 def test_bad_cases_and_damping_are_named():
-    with pytest.raises(kt.InputError) as e:
-        kt.BearingElement(REPO / "examples/ball_on_flat.toml")
-    assert e.value.field == "case.method"
     bad = tomllib.loads(ACBB.read_text())
     bad["bearing"]["ball_diameter_mm"] = -1.0
-    with pytest.raises(kt.InputError) as e:
-        kt.BearingElement(bad)
-    assert e.value.field == "bearing.ball_diameter_mm"
-    with pytest.raises(TypeError) as e:
-        kt.BearingElement(3.0)
-    assert str(e.value).startswith("invalid case = 3.0 (float)")
-    for value in (-1.0, math.nan, math.inf):
+    refused = [((REPO / "examples/ball_on_flat.toml",), "case.method"), ((bad,), "bearing.ball_diameter_mm")]
+    refused += [((ACBB, value), "damping_s") for value in (-1.0, math.nan, math.inf)]
+    for args, named in refused:
         with pytest.raises(kt.InputError) as e:
-            kt.BearingElement(ACBB, damping_s=value)
-        assert e.value.field == "damping_s"
+            kt.BearingElement(*args)
+        assert e.value.field == named and "\n" not in str(e.value), str(e.value)
+    with pytest.raises(TypeError, match=r"^invalid case = 3\.0 \(float\)"):
+        kt.BearingElement(3.0)
     el = kt.BearingElement(ACBB, damping_s=1e-5)
     with pytest.raises(kt.InputError) as e:
         el.damping_s = -1e-5
     assert e.value.field == "damping_s" and el.damping_s == 1e-5
-    with pytest.raises(TypeError) as e:
+    with pytest.raises(TypeError, match=r"^invalid damping_s = True \(bool\)"):
         el.damping_s = True
-    assert str(e.value).startswith("invalid damping_s = True (bool)")
