@@ -2,7 +2,7 @@
 
 Two 7205-class angular-contact ball bearings (examples/bearing_7205.toml) in an O
 arrangement (back to back), axially preloaded, carry a rigid shaft. Exudyn (Gerstmayr
-2023, an independent multibody code) integrates the shaft; kontakt's
+2024, an independent multibody code) integrates the shaft; kontakt's
 `kontakt.BearingElement` gives each bearing's reaction and stiffness at the shaft's
 pose. The shaft runs up to speed under a load step.
 
