@@ -706,14 +706,14 @@ pub(crate) fn oil_supply(op: &OperatingSpec) -> Result<Lubrication> {
                 })?,
             },
         };
-    if let Lubrication::OilBath { level_mm } = lubrication {
-        if !(level_mm.is_finite() && level_mm >= 0.0) {
-            return Err(Error::invalid(
-                "operating.oil_level_mm",
-                level_mm,
-                "a finite oil level >= 0 mm above the lowest point of the outer raceway",
-            ));
-        }
+    if let Lubrication::OilBath { level_mm } = lubrication
+        && !(level_mm.is_finite() && level_mm >= 0.0)
+    {
+        return Err(Error::invalid(
+            "operating.oil_level_mm",
+            level_mm,
+            "a finite oil level >= 0 mm above the lowest point of the outer raceway",
+        ));
     }
     Ok(lubrication)
 }

@@ -11,8 +11,8 @@
 //! roller bearings do not yet: [`ElementFrictionStatus::NotBuilt`], every field 0 (the one
 //! match to extend is [`FrictionPlan::new`]).
 //!
-//! **What.** The contact-based torque of `kontakt_bearing::friction::torque` (docs/
-//! bearing-friction.md), exactly as the case's report computes it (the same functions of
+//! **What.** The contact-based torque of `kontakt_bearing::friction::torque`
+//! (docs/bearing-friction.md), exactly as the case's report computes it (the same functions of
 //! `crate::bearing_friction`): the raceway rolling resistance and sliding of every slice,
 //! the rib friction of the roller ends (`roller_model = "rib_contact"` of a tapered
 //! bearing), the drag term of `operating.drag`. Breakdown: cone (inner raceway), cup (outer
