@@ -695,17 +695,17 @@ fn point(
 /// Field `operating.oil_level_mm`: missing with `supply = "oil_bath"`, not finite or < 0.
 pub(crate) fn oil_supply(op: &OperatingSpec) -> Result<Lubrication> {
     let lubrication = match op.supply {
-            Supply::Circulating => Lubrication::OilJet,
-            Supply::OilBath => Lubrication::OilBath {
-                level_mm: op.oil_level_mm.ok_or_else(|| {
-                    Error::invalid(
-                        "operating.oil_level_mm",
-                        "missing",
-                        "the oil level above the lowest point of the outer raceway, mm, with supply = \"oil_bath\"",
-                    )
-                })?,
-            },
-        };
+        Supply::Circulating => Lubrication::OilJet,
+        Supply::OilBath => Lubrication::OilBath {
+            level_mm: op.oil_level_mm.ok_or_else(|| {
+                Error::invalid(
+                    "operating.oil_level_mm",
+                    "missing",
+                    "the oil level above the lowest point of the outer raceway, mm, with supply = \"oil_bath\"",
+                )
+            })?,
+        },
+    };
     if let Lubrication::OilBath { level_mm } = lubrication
         && !(level_mm.is_finite() && level_mm >= 0.0)
     {

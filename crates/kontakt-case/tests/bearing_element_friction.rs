@@ -21,21 +21,22 @@ use kontakt_case::bearing_model::{
     BearingElement, BearingElementOutput, ElementFriction, ElementFrictionStatus,
 };
 
-/// The oil of the rib-contact bearing (as tests/bearing_friction.rs) and its speed.
-const RIB_OIL: &str = r#"
-[operating]
-supply = "circulating"
+/// The `[lubricant]` table of `text` (up to the next table).
+fn lubricant(text: &str) -> String {
+    let start = text.find("[lubricant]").unwrap();
+    let rest = &text[start..];
+    let end = rest[1..].find("\n[").map_or(rest.len(), |i| i + 2);
+    rest[..end].to_string()
+}
 
-[lubricant]
-iso_vg = 68
-density_kg_m3 = 860.0
-alpha_per_mpa = 0.02
-temperature_c = 70.0
-roughness_mm = [0.0002, 0.0002]
-
-[speed]
-inner_rpm = 1500.0
-"#;
+/// The rib-contact bearing's oil, operating point and speed: the 32008 X example's oil
+/// (FVA 3A at 55 °C), circulating, 1500 r/min.
+fn rib_oil() -> String {
+    format!(
+        "\n{}\n[operating]\nsupply = \"circulating\"\n\n[speed]\ninner_rpm = 1500.0\n",
+        lubricant(&example("bearing_32008x_friction.toml"))
+    )
+}
 
 /// The equilibrium displacement `(δx, δy, δz, θx, θy)` of a case under its own `[load]`.
 fn equilibrium(text: &str) -> [f64; 5] {
@@ -200,11 +201,15 @@ fn iso_element_friction_is_the_case_report() {
     );
 }
 
-/// The rib-contact TRB of the rib study (15 kN axial + 6 kN radial, 1500 r/min, ISO VG 68
-/// at 70 °C): the rib share too; and at rest the starting torque with its rib share.
+/// The rib-contact TRB of the rib study (15 kN axial + 6 kN radial, 1500 r/min, FVA 3A at
+/// 55 °C): the rib share too; and at rest the starting torque with its rib share.
 #[test]
 fn rib_contact_element_friction_is_the_case_report() {
-    let base = format!("{}\n{RIB_OIL}", example("bearing_rib_contact_60mm.toml"));
+    let base = format!(
+        "{}\n{}",
+        example("bearing_rib_contact_60mm.toml"),
+        rib_oil()
+    );
     let u = equilibrium(&base);
     let text = prescribed(&base, u);
     let mut e = BearingElement::from_toml(&text).unwrap();
@@ -229,9 +234,9 @@ fn rib_contact_element_friction_is_the_case_report() {
 #[test]
 fn ball_bearing_friction_is_not_built() {
     let text = format!(
-        "{}\n[lubricant]\niso_vg = 68\ndensity_kg_m3 = 860.0\nalpha_per_mpa = 0.02\n\
-         temperature_c = 70.0\nroughness_mm = [0.0002, 0.0002]\n",
-        example("bearing_7205.toml")
+        "{}\n{}",
+        example("bearing_7205.toml"),
+        lubricant(&example("bearing_32008x_friction.toml"))
     );
     let u = equilibrium(&text);
     let mut e = BearingElement::from_toml(&text).unwrap();

@@ -82,10 +82,18 @@ static void expect_error(const char *label, int32_t code) {
     printf("error %s\n", kontakt_last_error_message());
 }
 
-static int run(const char *name, const char *path, const double u[5], const double v[5]) {
+/* The element of a case file, or NULL (the error printed to stderr). */
+static KontaktBearingElement *open_element(const char *path) {
     KontaktBearingElement *e = NULL;
     if (kontakt_bearing_element_from_file(path, &e) != KONTAKT_OK) {
         fprintf(stderr, "%s: %s\n", path, kontakt_last_error_message());
+    }
+    return e;
+}
+
+static int run(const char *name, const char *path, const double u[5], const double v[5]) {
+    KontaktBearingElement *e = open_element(path);
+    if (e == NULL) {
         return 1;
     }
     const double rest[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
@@ -172,9 +180,8 @@ static int run(const char *name, const char *path, const double u[5], const doub
 /* The friction torque of a lubricated bearing at u: at the case's [speed], at rest, with
  * both rings turning (rad/s), and a speed that is not finite (refused, speeds kept). */
 static int friction(const char *path, const double u[5]) {
-    KontaktBearingElement *e = NULL;
-    if (kontakt_bearing_element_from_file(path, &e) != KONTAKT_OK) {
-        fprintf(stderr, "%s: %s\n", path, kontakt_last_error_message());
+    KontaktBearingElement *e = open_element(path);
+    if (e == NULL) {
         return 1;
     }
     const double rest[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
