@@ -137,3 +137,31 @@ fn bearing_element_friction_allocates_nothing() {
         assert_eq!(n, 0, "Rust call {i}");
     }
 }
+
+/// The NJ cylindrical roller bearing of the rib-contact model with a lubricant: its
+/// roller-end/rib friction (the mixed law over each loaded rib's Hertz ellipse) allocates
+/// nothing either.
+#[test]
+fn cylindrical_rib_friction_allocates_nothing() {
+    use kontakt_case::bearing_model::BearingElement;
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples");
+    let read = |name: &str| std::fs::read_to_string(dir.join(name)).unwrap();
+    let oil = read("bearing_32008x_friction.toml");
+    let lubricant = &oil[oil.find("[lubricant]").unwrap()..oil.find("[catalogue]").unwrap()];
+    let text = format!(
+        "{}\n{lubricant}\n[speed]\ninner_rpm = 1500.0\n",
+        read("bearing_nj_crb_rib_contact.toml")
+    );
+    let mut e = BearingElement::from_toml(&text).unwrap();
+    // the case's equilibrium under 10 kN radial + 1.5 kN axial
+    let case = kontakt_case::BearingCase::from_toml_str(&text).unwrap();
+    let r = kontakt_case::run_bearing_case(&case).unwrap();
+    let (d, t) = (r.displacement_mm, r.tilt_rad);
+    let u = [d[0], d[1], d[2], t[0], t[1]];
+    e.evaluate(u, [0.0; 5]).unwrap();
+    for (i, du) in [1.0, 1.01, 0.99].into_iter().enumerate() {
+        let (o, n) = allocations(|| e.evaluate(u.map(|x| du * x), [0.0; 5]).unwrap());
+        assert!(o.friction.rib_nmm > 0.0, "{:?}", o.friction);
+        assert_eq!(n, 0, "call {i}");
+    }
+}

@@ -18,6 +18,7 @@ use kontakt::{Error, Result};
 use kontakt_bearing::friction::aihara::{
     AiharaBearing, AiharaLubricant, aihara, rib_film_parameter,
 };
+use kontakt_bearing::friction::crb_rib::CylindricalRibFriction;
 use kontakt_bearing::friction::raceway::RacewayLosses;
 use kontakt_bearing::friction::schaeffler::m0;
 use kontakt_bearing::friction::skf2004::{
@@ -484,9 +485,13 @@ fn point(
                     }
                     rib_values = Some(values);
                 }
-                None => warnings.push(
-                    "rib friction not computed for cylindrical roller bearings yet".to_string(),
-                ),
+                None => {
+                    // a cylindrical roller bearing's roller ends on its ribs
+                    let crb = crb_rib_model(bearing, law, rib_lub)?;
+                    let mut values = vec![0.0; bearing.rollers];
+                    crb_rib_values(&crb, solver, [wi, wo], &mut values)?;
+                    rib_values = Some(values);
+                }
             }
         }
     }
@@ -889,6 +894,52 @@ pub(crate) fn rib_powers(
         };
     }
     Ok(f)
+}
+
+/// The roller-end/rib friction model of a cylindrical roller bearing with ribs
+/// (`roller_model = "rib_contact"`), steel, with the case's friction law and rib
+/// lubrication.
+///
+/// # Errors
+/// Those of [`CylindricalRibFriction::new`].
+pub(crate) fn crb_rib_model(
+    bearing: &RollerBearing,
+    law: kontakt::friction::FrictionLaw,
+    rib_lub: RibLubrication,
+) -> Result<CylindricalRibFriction> {
+    CylindricalRibFriction::new(
+        bearing.pitch_diameter_mm,
+        bearing.roller_diameter_mm,
+        law,
+        Some(rib_lub),
+    )
+}
+
+/// Every roller's rib value of a cylindrical rib-contact `solver` after its solve, at the
+/// ring speeds `[ω_i, ω_o]` \[rad/s\], into `values` (one per roller): the rib power \[W\],
+/// at standstill the rib starting torque \[N·mm\] (as [`rib_powers`]). Allocates nothing.
+///
+/// # Errors
+/// Those of [`CylindricalRibFriction::roller_value`]; field `rib` for a `values` of the
+/// wrong length.
+pub(crate) fn crb_rib_values(
+    model: &CylindricalRibFriction,
+    solver: &RibContactSolver,
+    speeds: [f64; 2],
+    values: &mut [f64],
+) -> Result<()> {
+    let z = solver.roller_loads().len();
+    if values.len() != z {
+        return Err(Error::invalid(
+            "rib",
+            values.len(),
+            format!("{z} values, one per roller"),
+        ));
+    }
+    for (j, v) in values.iter_mut().enumerate() {
+        *v = model.roller_value(solver, j, speeds[0], speeds[1])?;
+    }
+    Ok(())
 }
 
 impl FrictionReport {

@@ -274,3 +274,62 @@ fn bad_speeds_name_the_argument() {
     let err = BearingElement::from_toml(&bad).unwrap_err().to_string();
     assert!(err.contains("operating.drag"), "{err}");
 }
+
+/// The NJ cylindrical roller bearing with its roller ends on the ribs (10 kN radial +
+/// 1.5 kN axial, 1500 r/min, FVA 3A at 55 °C): the report's torque now has the roller
+/// end/rib share (`kontakt_bearing::friction::crb_rib`), and the element equals the report
+/// to 1e-12, running and at rest (each from the case at that speed: the centrifugal
+/// forces); under pure radial load the ribs, 10 µm away on each side, carry (next to)
+/// nothing and the rib share vanishes.
+#[test]
+fn nj_cylindrical_element_friction_has_the_rib_share_of_the_report() {
+    let base = format!(
+        "{}\n{}",
+        example("bearing_nj_crb_rib_contact.toml"),
+        rib_oil()
+    );
+    let u = equilibrium(&base);
+    let text = prescribed(&base, u);
+    for rpm in [[1500.0, 0.0], [0.0, 0.0]] {
+        // the rib-contact model's load distribution carries the centrifugal force of the
+        // case's [speed]: element and report from the same case
+        let text = at_speed(&text, rpm);
+        let mut e = BearingElement::from_toml(&text).unwrap();
+        let o = e.evaluate(u, [0.0; 5]).unwrap();
+        let report = run(&text).unwrap();
+        let f = report.friction.as_ref().unwrap();
+        let what = format!("NJ at {rpm:?} r/min");
+        assert_same(&what, &o.friction, f);
+        assert_balanced(&what, &o);
+        assert!(o.friction.rib_nmm > 0.0, "{what}: {:?}", o.friction);
+        assert!(
+            f.warnings
+                .iter()
+                .all(|w| !w.contains("rib friction not computed")),
+            "{:?}",
+            f.warnings
+        );
+        println!(
+            "{what}: M = {:.3} N·mm (rib {:.3}, cone {:.3}, cup {:.3}), P = {:.4} W",
+            o.friction.torque_nmm,
+            o.friction.rib_nmm,
+            o.friction.cone_nmm,
+            o.friction.cup_nmm,
+            o.friction.power_w
+        );
+    }
+    let radial = run(&base.replace(
+        "force_n = [10000.0, 0.0, 1500.0]",
+        "force_n = [10000.0, 0.0, 0.0]",
+    ))
+    .unwrap();
+    let f = radial.friction.unwrap();
+    assert!(f.total_nmm > 0.0);
+    // (the solver leaves rib loads of the order of its tolerance: 2e-11 of the torque)
+    assert!(
+        f.rib_nmm <= 1e-9 * f.total_nmm,
+        "{} of {}",
+        f.rib_nmm,
+        f.total_nmm
+    );
+}

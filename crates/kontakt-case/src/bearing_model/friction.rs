@@ -14,8 +14,8 @@
 //! **What.** The contact-based torque of `kontakt_bearing::friction::torque`
 //! (docs/bearing-friction.md), exactly as the case's report computes it (the same functions of
 //! `crate::bearing_friction`): the raceway rolling resistance and sliding of every slice,
-//! the rib friction of the roller ends (`roller_model = "rib_contact"` of a tapered
-//! bearing), the drag term of `operating.drag`. Breakdown: cone (inner raceway), cup (outer
+//! the rib friction of the roller ends (`roller_model = "rib_contact"`: a tapered bearing's
+//! cone rib, a cylindrical bearing's ribs of NJ/NUP/NU/N), the drag term of `operating.drag`. Breakdown: cone (inner raceway), cup (outer
 //! raceway), rib, drag; M = cone + cup + rib + drag ≥ 0.
 //!
 //! **Speeds.** The ring speeds ω_i, ω_o \[rad/s\] start as the case's `[speed]`
@@ -33,19 +33,21 @@
 //! but not applied: `Mz = 0` and `P = 0` (its direction is the one of the drive, which the
 //! element does not know; a multi-body code models the stick phase itself).
 //!
-//! **Cost.** One raceway friction evaluation (every slice of every roller); with the rib
-//! contact also one rib contact field per loaded roller, which allocates (the raceway part
-//! and the ISO slice models allocate nothing).
+//! **Cost.** One raceway friction evaluation (every slice of every roller); with a tapered
+//! bearing's rib contact also one rib contact field per loaded roller, which allocates (the
+//! raceway part, the ISO slice models and a cylindrical bearing's ribs, integrated over
+//! their Hertz ellipses, allocate nothing).
 //!
 //! Units: rad/s, N·mm, W.
 
 use crate::bearing_case::{BearingCase, Planned};
 use crate::bearing_friction::{
-    DragSpec, OperatingSpec, RacewayPlan, oil_supply, plan_raceways, rib_model, rib_powers,
-    skf_bearing,
+    DragSpec, OperatingSpec, RacewayPlan, crb_rib_model, crb_rib_values, oil_supply, plan_raceways,
+    rib_model, rib_powers, skf_bearing,
 };
 use kontakt::bearing::{RibFrictionModel, RollerRibLoad};
 use kontakt::{Error, Result};
+use kontakt_bearing::friction::crb_rib::CylindricalRibFriction;
 use kontakt_bearing::friction::schaeffler::m0;
 use kontakt_bearing::friction::skf2004::{SkfBearing, SkfOptions, skf2004};
 use kontakt_bearing::friction::torque::{
@@ -182,9 +184,20 @@ pub(crate) struct RollerFrictionPlan {
 /// The rib friction of a rib-contact solver: its model and buffers.
 #[derive(Debug, Clone)]
 struct RibPlan {
-    model: RibFrictionModel,
-    loads: Vec<RollerRibLoad>,
+    model: RibModel,
     values: Vec<f64>,
+}
+
+/// The rib friction model of a tapered or a cylindrical bearing.
+#[derive(Debug, Clone)]
+enum RibModel {
+    /// A tapered roller's large end on the cone's rib (the rib study's pair).
+    Tapered {
+        model: Box<RibFrictionModel>,
+        loads: Vec<RollerRibLoad>,
+    },
+    /// A cylindrical roller's ends on the ribs of its arrangement.
+    Cylindrical(Box<CylindricalRibFriction>),
 }
 
 /// The element's friction, planned from its case.
@@ -210,10 +223,10 @@ impl FrictionPlan {
         };
         // The one dispatch on the bearing: a ball bearing's friction (friction/ball.rs)
         // goes here as its own arm.
-        let (bearing, rib_pair) = match planned {
+        let (bearing, rib_solver) = match planned {
             Planned::Roller(s) => (s.bearing(), None),
             Planned::Coupled(s) => (s.bearing(), None),
-            Planned::RibRoller(s) => (s.bearing(), s.rib_pair()),
+            Planned::RibRoller(s) => (s.bearing(), Some(s.as_ref())),
             Planned::Ball { .. } | Planned::BallAtSpeed { .. } => {
                 return Ok(FrictionPlan::NotBuilt);
             }
@@ -229,14 +242,20 @@ impl FrictionPlan {
             law,
             nu,
         } = plan_raceways(op, lub, case.friction.as_ref(), bearing)?;
-        let rib = match rib_pair {
-            Some(pair) => Some(RibPlan {
-                model: rib_model(pair, bearing, law, rib_lub)?,
+        let rib = match rib_solver.map(|s| (s.rib_pair(), s.arrangement())) {
+            Some((Some(pair), _)) => Some(RibModel::Tapered {
+                model: Box::new(rib_model(pair, bearing, law, rib_lub)?),
                 loads: Vec::with_capacity(bearing.rollers),
-                values: vec![0.0; bearing.rollers],
             }),
-            None => None,
-        };
+            Some((None, Some(_))) => Some(RibModel::Cylindrical(Box::new(crb_rib_model(
+                bearing, law, rib_lub,
+            )?))),
+            _ => None,
+        }
+        .map(|model| RibPlan {
+            model,
+            values: vec![0.0; bearing.rollers],
+        });
         let n = bearing.rollers * bearing.slices;
         Ok(FrictionPlan::Roller(Box::new(RollerFrictionPlan {
             drag: drag_plan(case, op, bearing)?,
@@ -286,7 +305,14 @@ impl FrictionPlan {
                     *t = r.tilt_rad;
                 }
                 if let Some(r) = &mut p.rib {
-                    rib_powers(&r.model, s, speeds, &mut r.loads, &mut r.values)?;
+                    match &mut r.model {
+                        RibModel::Tapered { model, loads } => {
+                            rib_powers(model, s, speeds, loads, &mut r.values)?;
+                        }
+                        RibModel::Cylindrical(model) => {
+                            crb_rib_values(model, s, speeds, &mut r.values)?;
+                        }
+                    }
                     rib = Some(r.values.as_slice());
                 }
             }
