@@ -87,6 +87,15 @@ fn at_speed(text: &str, rpm: [f64; 2]) -> String {
     out
 }
 
+/// The example `name` with [`rib_oil`]: the text, its equilibrium displacement and the
+/// text with the five degrees of freedom prescribed there.
+fn with_oil(name: &str) -> (String, [f64; 5], String) {
+    let base = format!("{}\n{}", example(name), rib_oil());
+    let u = equilibrium(&base);
+    let text = prescribed(&base, u);
+    (base, u, text)
+}
+
 fn rel(a: f64, b: f64) -> f64 {
     if a == b {
         0.0
@@ -205,13 +214,7 @@ fn iso_element_friction_is_the_case_report() {
 /// 55 °C): the rib share too; and at rest the starting torque with its rib share.
 #[test]
 fn rib_contact_element_friction_is_the_case_report() {
-    let base = format!(
-        "{}\n{}",
-        example("bearing_rib_contact_60mm.toml"),
-        rib_oil()
-    );
-    let u = equilibrium(&base);
-    let text = prescribed(&base, u);
+    let (_, u, text) = with_oil("bearing_rib_contact_60mm.toml");
     let mut e = BearingElement::from_toml(&text).unwrap();
     let o = e.evaluate(u, [0.0; 5]).unwrap();
     let report = run(&text).unwrap();
@@ -283,13 +286,7 @@ fn bad_speeds_name_the_argument() {
 /// nothing and the rib share vanishes.
 #[test]
 fn nj_cylindrical_element_friction_has_the_rib_share_of_the_report() {
-    let base = format!(
-        "{}\n{}",
-        example("bearing_nj_crb_rib_contact.toml"),
-        rib_oil()
-    );
-    let u = equilibrium(&base);
-    let text = prescribed(&base, u);
+    let (base, u, text) = with_oil("bearing_nj_crb_rib_contact.toml");
     for rpm in [[1500.0, 0.0], [0.0, 0.0]] {
         // the rib-contact model's load distribution carries the centrifugal force of the
         // case's [speed]: element and report from the same case
