@@ -252,7 +252,9 @@ impl BearingElement {
     /// [`Error::InvalidInput`] naming the argument (`displacement[2]`, `velocity[4]`) for a
     /// non-finite value or a displacement beyond the model's validity (above the rolling
     /// element's diameter); [`Error::NotConverged`] if the solver does not converge (not
-    /// expected: every degree of freedom is prescribed). The warm start is kept on error.
+    /// expected: every degree of freedom is prescribed); with a lubricant, those of the
+    /// friction torque (a film or friction integral that fails, naming its field). The warm
+    /// start is kept on error.
     pub fn evaluate(&mut self, u: [f64; 5], v: [f64; 5]) -> Result<BearingElementOutput> {
         for i in 0..5 {
             if !u[i].is_finite() {
