@@ -285,3 +285,20 @@ fn starting_torque_and_extrapolated_films_are_finite_with_warnings() {
     assert!(fast.total_nmm.is_finite() && fast.min_lambda.unwrap().is_finite());
     println!("{w}");
 }
+
+/// The bearing element refuses an oil bath above the bearing's centre as the case does.
+#[test]
+fn the_element_refuses_an_oil_bath_above_the_centre() {
+    let text = example("bearing_32216_friction.toml");
+    let high = text.replace("oil_level_mm = 8.5", "oil_level_mm = 80.0");
+    assert_ne!(high, text);
+    let e = kontakt_case::bearing_model::BearingElement::from_toml(&high)
+        .err()
+        .expect("refused")
+        .to_string();
+    assert!(
+        e.contains("operating.oil_level_mm") && e.contains("0..=62.42 mm"),
+        "{e}"
+    );
+    assert!(kontakt_case::bearing_model::BearingElement::from_toml(&text).is_ok());
+}
