@@ -2,8 +2,11 @@
 //! tapered roller bearing (the rib study's sphere-torus-57 pair, 31 slices) under 15 kN
 //! axial load, its load distribution solved once outside the timed closures; timed: the
 //! friction at one operating point with Hertz rib contacts (rib loads of every roller, their
-//! rib friction, the 1240 raceway slices; target ≤ 1 ms) and a 50-point speed sweep
-//! (target ≤ 50 ms). Run by the lead: `cargo bench -p kontakt-bearing --bench bearing_friction`.
+//! rib friction, the 1240 raceway slices; target ≤ 1 ms), the same with PimP rib contacts
+//! (target ≤ 2 ms), a 50-point speed sweep (target ≤ 50 ms), and one point under combined
+//! load (20 kN radial with the 15 kN axial: rollers of different loads, so the rib friction
+//! is solved for each distinct rib load; no target, the cost beside the axial case).
+//! Run by the lead: `cargo bench -p kontakt-bearing --bench bearing_friction`.
 
 #[path = "../tests/support/friction.rs"]
 #[allow(dead_code)]
@@ -11,12 +14,14 @@ mod support;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use kontakt::bearing::{PressureModel, RibFrictionModel, RollerCup};
+use kontakt_bearing::equilibrium::{RingLoad, RollerBearingSolver};
 use kontakt_bearing::friction::torque::{
-    BearingFrictionModel, DragModel, FrictionOperating, roller_cups,
+    BearingFrictionModel, DragModel, FrictionOperating, iso_slice_loads, roller_cups,
 };
 use std::hint::black_box;
 
 struct Setup {
+    pressure: PressureModel,
     rib: RibFrictionModel,
     model: BearingFrictionModel,
     cups: Vec<RollerCup>,
@@ -24,14 +29,34 @@ struct Setup {
     cone: Vec<f64>,
 }
 
-fn setup() -> Setup {
+fn setup(pressure: PressureModel, radial: f64) -> Setup {
     let (rib, mut bearing) = support::rib_study(20);
     bearing.slices = 31;
-    let (cup, cone, solver) = support::solved(&bearing, 15_000.0);
+    let (cup, cone, cups) = if radial == 0.0 {
+        let (cup, cone, solver) = support::solved(&bearing, 15_000.0);
+        (cup, cone, roller_cups(solver.roller_loads()))
+    } else {
+        let mut solver = RollerBearingSolver::new(bearing.clone()).expect("solver");
+        let s = solver
+            .solve(&RingLoad::forces([radial, 0.0, 15_000.0, 0.0, 0.0]).with_tilts_held())
+            .expect("solve");
+        assert!(s.status.converged());
+        let n = bearing.rollers * bearing.slices;
+        let (mut cup, mut cone) = (vec![0.0; n], vec![0.0; n]);
+        iso_slice_loads(
+            solver.slice_loads(),
+            solver.roller_loads(),
+            &mut cup,
+            &mut cone,
+        )
+        .expect("slices");
+        (cup, cone, roller_cups(solver.roller_loads()))
+    };
     Setup {
+        pressure,
         model: BearingFrictionModel::new(bearing, support::losses(&support::vg68(), 70.0, true))
             .expect("model"),
-        cups: roller_cups(solver.roller_loads()),
+        cups,
         rib,
         cup,
         cone,
@@ -43,7 +68,7 @@ fn point(s: &mut Setup, w: f64) -> f64 {
     let loads = s.rib.roller_loads_on_cups(&k, &s.cups).expect("rib loads");
     let rib = s
         .rib
-        .evaluate_rollers(PressureModel::Hertz, &k, &loads)
+        .evaluate_rollers(s.pressure, &k, &loads)
         .expect("rib friction");
     let mut powers = [0.0; 20];
     for (p, r) in powers.iter_mut().zip(&rib.rollers) {
@@ -65,7 +90,7 @@ fn point(s: &mut Setup, w: f64) -> f64 {
 }
 
 fn bench(c: &mut Criterion) {
-    let mut s = setup();
+    let mut s = setup(PressureModel::Hertz, 0.0);
     c.bench_function("bearing_friction_trb20_hertz_rib_one_point", |b| {
         b.iter(|| black_box(point(&mut s, black_box(157.0))))
     });
@@ -78,6 +103,45 @@ fn bench(c: &mut Criterion) {
             }
             black_box(total)
         })
+    });
+    // The two parts of one point apart: the rib friction of the 20 rollers (kinematics,
+    // rib loads, fields, friction integrals) and the 1240 raceway slices.
+    c.bench_function("bearing_friction_trb20_hertz_rib_only", |b| {
+        b.iter(|| {
+            let k = s.rib.kinematics(157.0, 0.0).expect("kinematics");
+            let loads = s.rib.roller_loads_on_cups(&k, &s.cups).expect("rib loads");
+            let rib = s
+                .rib
+                .evaluate_rollers(PressureModel::Hertz, &k, &loads)
+                .expect("rib friction");
+            black_box(rib.power)
+        })
+    });
+    c.bench_function("bearing_friction_trb20_raceways_only", |b| {
+        b.iter(|| {
+            let f = s
+                .model
+                .evaluate(&FrictionOperating {
+                    inner_speed: black_box(157.0),
+                    outer_speed: 0.0,
+                    cup_slices: &s.cup,
+                    cone_slices: &s.cone,
+                    tilts: None,
+                    rib: None,
+                    drag: DragModel::None,
+                    coefficient_basis: None,
+                })
+                .expect("friction");
+            black_box(f.total_nmm)
+        })
+    });
+    let mut pimp = setup(PressureModel::Pimp, 0.0);
+    c.bench_function("bearing_friction_trb20_pimp_rib_one_point", |b| {
+        b.iter(|| black_box(point(&mut pimp, black_box(157.0))))
+    });
+    let mut combined = setup(PressureModel::Hertz, 20_000.0);
+    c.bench_function("bearing_friction_trb20_hertz_rib_one_point_combined_load", |b| {
+        b.iter(|| black_box(point(&mut combined, black_box(157.0))))
     });
 }
 
