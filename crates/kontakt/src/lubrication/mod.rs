@@ -38,7 +38,7 @@ pub use film::{
 };
 pub use line_film::{
     LINE_ELASTIC_REGIME_M, LineFilm, LineFilmContact, LineFilmFormula, LineFilmRegime,
-    LineFilmWarnings, film_starvation_factor, line_film_regime, line_film_thickness,
+    LineFilmPowers, LineFilmWarnings, film_starvation_factor, line_film_regime, line_film_thickness, line_film_with,
     thermal_loading, viscosity_temperature_slope, zhu_cheng_thermal_factor,
 };
 pub use rolling_resistance::{
