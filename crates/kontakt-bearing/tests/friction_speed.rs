@@ -3,18 +3,27 @@
 //! (`RibFrictionModel::evaluate_rollers` solves the friction integral once per distinct rib
 //! load): checked bit for bit against a solve per roller, on the bench's bearing (20 rollers
 //! under axial load, rib loads equal to the last bits) and on rollers that share a rib load
-//! but differ in their raceway loads.
+//! but differ in their raceway loads. A planned load distribution
+//! (`BearingFrictionModel::plan_loads`) gives every speed's friction bit for bit as the
+//! unplanned evaluation, and allocates nothing per operating point.
 
 #![allow(clippy::unwrap_used)] // tests: a panic is a failure with its message
 
+#[path = "../../kontakt/tests/support/counting_alloc.rs"]
+mod counting_alloc;
 #[path = "support/friction.rs"]
 #[allow(dead_code)]
 mod support;
 
+use counting_alloc::allocations;
+
 use kontakt::bearing::{
     Operating, PressureModel, RibFriction, RibFrictionModel, RollerRibLoad, TaperedKinematics,
 };
-use kontakt_bearing::friction::torque::roller_cups;
+use kontakt_bearing::friction::torque::{
+    BearingFriction, BearingFrictionModel, DragModel, FrictionOperating, RollerFriction,
+    roller_cups,
+};
 
 /// Every roller's rib friction solved on its own: the field at the first roller's rib load
 /// within `evaluate_rollers`' reuse tolerance (1e-10, as there), the friction integral
@@ -115,4 +124,135 @@ fn a_shared_rib_load_keeps_each_rollers_own_loads() {
     }
     assert!(got.rollers[1].loads.rib > 0.0 && got.rollers[1].loads.inner_raceway == 0.0);
     assert_ne!(got.rollers[2].loads, got.rollers[0].loads);
+}
+
+/// The bench's bearing (20 rollers, 31 slices, 15 kN axial; thermal film, mixed law), its
+/// model, cup and cone slice loads.
+fn bench_bearing() -> (BearingFrictionModel, Vec<f64>, Vec<f64>) {
+    let (_, mut bearing) = support::rib_study(20);
+    bearing.slices = 31;
+    let (cup, cone, _) = support::solved(&bearing, 15_000.0);
+    let model = BearingFrictionModel::new(bearing, support::losses(&support::vg68(), 70.0, true))
+        .unwrap();
+    (model, cup, cone)
+}
+
+/// The friction and every roller's losses at the ring speeds `(wi, wo)`.
+fn friction_at(
+    m: &mut BearingFrictionModel,
+    (wi, wo): (f64, f64),
+    cup: &[f64],
+    cone: &[f64],
+    tilts: Option<&[f64]>,
+) -> (BearingFriction, Vec<RollerFriction>) {
+    let rib: Vec<f64> = (0..20).map(|j| 0.1 + 0.01 * j as f64).collect();
+    let f = m
+        .evaluate(&FrictionOperating {
+            inner_speed: wi,
+            outer_speed: wo,
+            cup_slices: cup,
+            cone_slices: cone,
+            tilts,
+            rib: Some(&rib),
+            drag: DragModel::Torque { nmm: 3.0 },
+            coefficient_basis: Some((15_000.0, 40.0)),
+        })
+        .unwrap();
+    (f, m.rollers().to_vec())
+}
+
+/// A speed sweep over one planned load distribution (untilted: sliding at round-off; tilted:
+/// real sliding on every slice) gives, at every speed (inner or outer ring turning,
+/// standstill), the unplanned friction and roller losses bit for bit; a plan of another
+/// load distribution falls back to the full computation (still the same numbers); a
+/// cleared plan too.
+#[test]
+fn a_planned_sweep_is_the_unplanned_sweep_bit_for_bit() {
+    let (mut plain, cup, cone) = bench_bearing();
+    let mut planned = plain.clone();
+    let tilted: Vec<f64> = (0..20).map(|j| 2e-4 * (j as f64 - 9.5)).collect();
+    let speeds = [
+        (6.0, 0.0),
+        (157.0, 0.0),
+        (300.0, 0.0),
+        (0.0, -80.0),
+        (40.0, 40.0),
+    ];
+    let mut compared = 0;
+    for tilts in [None, Some(tilted.as_slice())] {
+        planned.plan_loads(&cup, &cone, tilts).unwrap();
+        for &w in &speeds {
+            let want = friction_at(&mut plain, w, &cup, &cone, tilts);
+            let got = friction_at(&mut planned, w, &cup, &cone, tilts);
+            assert_eq!(got, want, "tilts {} speeds {w:?}", tilts.is_some());
+            assert_eq!(got.0.total_nmm.to_bits(), want.0.total_nmm.to_bits());
+            compared += 1;
+        }
+        let f = friction_at(&mut planned, (157.0, 0.0), &cup, &cone, tilts).0;
+        println!(
+            "tilted {}: cone sliding {:.3e} N·mm, rolling {:.4} N·mm, total {:.4} N·mm",
+            tilts.is_some(),
+            f.cone.sliding_nmm,
+            f.cone.rolling_nmm,
+            f.total_nmm
+        );
+    }
+    // the plan of other loads (the tilted plan is current; now untilted and 10 % more load)
+    let heavier: Vec<f64> = cup.iter().map(|q| q * 1.1).collect();
+    for (c, t) in [(&cup, None), (&heavier, Some(tilted.as_slice()))] {
+        let want = friction_at(&mut plain, (157.0, 0.0), c, &cone, t);
+        assert_eq!(friction_at(&mut planned, (157.0, 0.0), c, &cone, t), want);
+    }
+    planned.clear_plan();
+    let want = friction_at(&mut plain, (157.0, 0.0), &cup, &cone, None);
+    assert_eq!(friction_at(&mut planned, (157.0, 0.0), &cup, &cone, None), want);
+    assert_eq!(compared, 10);
+}
+
+/// Planning checks its input as `evaluate` does (the field named), and leaves no plan
+/// behind on an error.
+#[test]
+fn planning_bad_loads_names_the_field() {
+    let (mut m, cup, cone) = bench_bearing();
+    let field = |e: kontakt::Error| e.field().unwrap_or_default().to_string();
+    assert_eq!(field(m.plan_loads(&cup[1..], &cone, None).unwrap_err()), "cup_slices");
+    let mut bad = cone.clone();
+    bad[40] = f64::NAN;
+    assert_eq!(field(m.plan_loads(&cup, &bad, None).unwrap_err()), "cone_slices");
+    assert_eq!(
+        field(m.plan_loads(&cup, &cone, Some(&[0.0; 3])).unwrap_err()),
+        "tilts"
+    );
+}
+
+/// After planning, every operating point allocates nothing (a sweep of four speeds with
+/// tilts, rib powers and drag); re-planning the same model allocates nothing either.
+#[test]
+fn planned_operating_points_allocate_nothing() {
+    let (mut m, cup, cone) = bench_bearing();
+    let tilts = vec![1e-4; 20];
+    m.plan_loads(&cup, &cone, Some(&tilts)).unwrap();
+    let rib = vec![1.0; 20];
+    let (r, n) = allocations(|| {
+        let mut total = 0.0;
+        for w in [0.0, 10.0, 100.0, 300.0] {
+            total += m
+                .evaluate(&FrictionOperating {
+                    inner_speed: w,
+                    outer_speed: 0.0,
+                    cup_slices: &cup,
+                    cone_slices: &cone,
+                    tilts: Some(&tilts),
+                    rib: Some(&rib),
+                    drag: DragModel::Torque { nmm: 10.0 },
+                    coefficient_basis: Some((20_000.0, 80.0)),
+                })
+                .unwrap()
+                .total_nmm;
+        }
+        m.plan_loads(&cup, &cone, None).unwrap();
+        total
+    });
+    assert!(r.is_finite());
+    assert_eq!(n, 0, "allocations per planned operating point");
 }
