@@ -3,7 +3,8 @@
 //! axial load, its load distribution solved once outside the timed closures; timed: the
 //! friction at one operating point with Hertz rib contacts (rib loads of every roller, their
 //! rib friction, the 1240 raceway slices; target ≤ 1 ms), the same with PimP rib contacts
-//! (target ≤ 2 ms), a 50-point speed sweep (target ≤ 50 ms), and one point under combined
+//! (target ≤ 2 ms), a 50-point speed sweep (target ≤ 50 ms; planned once by
+//! `BearingFrictionModel::plan_loads`, and unplanned beside it), and one point under combined
 //! load (20 kN radial with the 15 kN axial: rollers of different loads, so the rib friction
 //! is solved for each distinct rib load; no target, the cost beside the axial case).
 //! Run by the lead: `cargo bench -p kontakt-bearing --bench bearing_friction`.
@@ -95,7 +96,21 @@ fn bench(c: &mut Criterion) {
         b.iter(|| black_box(point(&mut s, black_box(157.0))))
     });
     let speeds: Vec<f64> = (1..=50).map(|i| 6.0 * i as f64).collect();
+    // The sweep plans its load distribution once (`plan_loads`, inside the timed closure):
+    // the speed-independent part of every slice, then 50 operating points.
     c.bench_function("bearing_friction_trb20_hertz_rib_sweep_50", |b| {
+        b.iter(|| {
+            s.model.plan_loads(&s.cup, &s.cone, None).expect("plan");
+            let mut total = 0.0;
+            for &w in &speeds {
+                total += point(&mut s, w);
+            }
+            s.model.clear_plan();
+            black_box(total)
+        })
+    });
+    // The same sweep without the plan: 50 independent operating points.
+    c.bench_function("bearing_friction_trb20_hertz_rib_sweep_50_unplanned", |b| {
         b.iter(|| {
             let mut total = 0.0;
             for &w in &speeds {
@@ -140,9 +155,10 @@ fn bench(c: &mut Criterion) {
         b.iter(|| black_box(point(&mut pimp, black_box(157.0))))
     });
     let mut combined = setup(PressureModel::Hertz, 20_000.0);
-    c.bench_function("bearing_friction_trb20_hertz_rib_one_point_combined_load", |b| {
-        b.iter(|| black_box(point(&mut combined, black_box(157.0))))
-    });
+    c.bench_function(
+        "bearing_friction_trb20_hertz_rib_one_point_combined_load",
+        |b| b.iter(|| black_box(point(&mut combined, black_box(157.0)))),
+    );
 }
 
 criterion_group!(benches, bench);

@@ -81,7 +81,11 @@ fn rollers_with_one_rib_load_share_their_friction_bit_for_bit() {
     let mut distinct: Vec<u64> = loads.iter().map(|r| r.loads.rib.to_bits()).collect();
     distinct.sort_unstable();
     distinct.dedup();
-    println!("{} rollers, {} distinct rib loads", loads.len(), distinct.len());
+    println!(
+        "{} rollers, {} distinct rib loads",
+        loads.len(),
+        distinct.len()
+    );
     assert!(distinct.len() < loads.len());
     for model in [PressureModel::Hertz, PressureModel::Pimp] {
         let got = rib.evaluate_rollers(model, &k, &loads).unwrap();
@@ -132,8 +136,8 @@ fn bench_bearing() -> (BearingFrictionModel, Vec<f64>, Vec<f64>) {
     let (_, mut bearing) = support::rib_study(20);
     bearing.slices = 31;
     let (cup, cone, _) = support::solved(&bearing, 15_000.0);
-    let model = BearingFrictionModel::new(bearing, support::losses(&support::vg68(), 70.0, true))
-        .unwrap();
+    let model =
+        BearingFrictionModel::new(bearing, support::losses(&support::vg68(), 70.0, true)).unwrap();
     (model, cup, cone)
 }
 
@@ -205,7 +209,10 @@ fn a_planned_sweep_is_the_unplanned_sweep_bit_for_bit() {
     }
     planned.clear_plan();
     let want = friction_at(&mut plain, (157.0, 0.0), &cup, &cone, None);
-    assert_eq!(friction_at(&mut planned, (157.0, 0.0), &cup, &cone, None), want);
+    assert_eq!(
+        friction_at(&mut planned, (157.0, 0.0), &cup, &cone, None),
+        want
+    );
     assert_eq!(compared, 10);
 }
 
@@ -215,10 +222,16 @@ fn a_planned_sweep_is_the_unplanned_sweep_bit_for_bit() {
 fn planning_bad_loads_names_the_field() {
     let (mut m, cup, cone) = bench_bearing();
     let field = |e: kontakt::Error| e.field().unwrap_or_default().to_string();
-    assert_eq!(field(m.plan_loads(&cup[1..], &cone, None).unwrap_err()), "cup_slices");
+    assert_eq!(
+        field(m.plan_loads(&cup[1..], &cone, None).unwrap_err()),
+        "cup_slices"
+    );
     let mut bad = cone.clone();
     bad[40] = f64::NAN;
-    assert_eq!(field(m.plan_loads(&cup, &bad, None).unwrap_err()), "cone_slices");
+    assert_eq!(
+        field(m.plan_loads(&cup, &bad, None).unwrap_err()),
+        "cone_slices"
+    );
     assert_eq!(
         field(m.plan_loads(&cup, &cone, Some(&[0.0; 3])).unwrap_err()),
         "tilts"

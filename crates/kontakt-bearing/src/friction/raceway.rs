@@ -28,8 +28,8 @@ use kontakt::error::positive_as as positive;
 use kontakt::friction::{CellLaw, FilmState, FluidShear, FrictionLaw, LoadSharing};
 use kontakt::lubrication::{
     LineFilm, LineFilmContact, LineFilmFormula, LineFilmPowers, LineFilmRegime, LineFilmWarnings,
-    RollingResistanceModel, biboulet_houpert_starvation, film_starvation_factor,
-    line_film_regime, line_film_thickness, line_film_with, rolling_resistance, thermal_loading,
+    RollingResistanceModel, biboulet_houpert_starvation, film_starvation_factor, line_film_regime,
+    line_film_thickness, line_film_with, rolling_resistance, thermal_loading,
     zhu_cheng_thermal_factor,
 };
 use kontakt::{Error, Result};
@@ -429,7 +429,6 @@ impl RacewayLosses {
     }
 }
 
-
 /// The film contact of `slice`.
 fn contact(slice: &RacewaySlice) -> LineFilmContact {
     LineFilmContact {
@@ -764,8 +763,13 @@ mod tests {
                     let powers = LineFilmPowers::of(&plan.regime, LineFilmFormula::DowsonHigginson);
                     assert_eq!(
                         line_film_with(&c, &r, &powers).unwrap(),
-                        line_film_thickness(&c, l.viscosity, l.alpha, LineFilmFormula::DowsonHigginson)
-                            .unwrap()
+                        line_film_thickness(
+                            &c,
+                            l.viscosity,
+                            l.alpha,
+                            LineFilmFormula::DowsonHigginson
+                        )
+                        .unwrap()
                     );
                     checked += 1;
                 }
@@ -774,7 +778,10 @@ mod tests {
                     load_per_length: 300.0,
                     ..slice()
                 };
-                assert_eq!(m.slice_planned(&other, &plan).unwrap(), m.slice(&other).unwrap());
+                assert_eq!(
+                    m.slice_planned(&other, &plan).unwrap(),
+                    m.slice(&other).unwrap()
+                );
                 let empty = RacewaySlice {
                     load_per_length: 0.0,
                     ..slice()
