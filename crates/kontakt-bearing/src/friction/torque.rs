@@ -241,6 +241,8 @@ pub struct FrictionOperating<'a> {
 
 /// The friction model of a roller bearing: geometry and lubrication checked and the
 /// per-roller buffer allocated once; [`BearingFrictionModel::evaluate`] allocates nothing.
+/// A speed sweep over one load distribution plans it once
+/// ([`BearingFrictionModel::plan_loads`]): the same results, bit for bit, for less work.
 #[derive(Debug, Clone)]
 pub struct BearingFrictionModel {
     losses: RacewayLosses,
