@@ -15,9 +15,8 @@ mod support;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use kontakt::bearing::{PressureModel, RibFrictionModel, RollerCup};
-use kontakt_bearing::equilibrium::{RingLoad, RollerBearingSolver};
 use kontakt_bearing::friction::torque::{
-    BearingFrictionModel, DragModel, FrictionOperating, iso_slice_loads, roller_cups,
+    BearingFrictionModel, DragModel, FrictionOperating, roller_cups,
 };
 use std::hint::black_box;
 
@@ -33,26 +32,8 @@ struct Setup {
 fn setup(pressure: PressureModel, radial: f64) -> Setup {
     let (rib, mut bearing) = support::rib_study(20);
     bearing.slices = 31;
-    let (cup, cone, cups) = if radial == 0.0 {
-        let (cup, cone, solver) = support::solved(&bearing, 15_000.0);
-        (cup, cone, roller_cups(solver.roller_loads()))
-    } else {
-        let mut solver = RollerBearingSolver::new(bearing.clone()).expect("solver");
-        let s = solver
-            .solve(&RingLoad::forces([radial, 0.0, 15_000.0, 0.0, 0.0]).with_tilts_held())
-            .expect("solve");
-        assert!(s.status.converged());
-        let n = bearing.rollers * bearing.slices;
-        let (mut cup, mut cone) = (vec![0.0; n], vec![0.0; n]);
-        iso_slice_loads(
-            solver.slice_loads(),
-            solver.roller_loads(),
-            &mut cup,
-            &mut cone,
-        )
-        .expect("slices");
-        (cup, cone, roller_cups(solver.roller_loads()))
-    };
+    let (cup, cone, solver) = support::solved_combined(&bearing, radial, 15_000.0);
+    let cups = roller_cups(solver.roller_loads());
     Setup {
         pressure,
         model: BearingFrictionModel::new(bearing, support::losses(&support::vg68(), 70.0, true))

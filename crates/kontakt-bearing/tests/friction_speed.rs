@@ -25,25 +25,18 @@ use kontakt_bearing::friction::torque::{
     roller_cups,
 };
 
-/// Every roller's rib friction solved on its own: the field at the first roller's rib load
-/// within `evaluate_rollers`' reuse tolerance (1e-10, as there), the friction integral
-/// for every roller.
+/// Every roller's rib friction solved on its own at the operating point `op` (the one
+/// `evaluate_rollers` reports: its axial load is the cups' sum): the field at the first
+/// roller's rib load within `evaluate_rollers`' reuse tolerance (1e-10, as there), the
+/// friction integral for every roller.
 fn one_by_one(
     rib: &RibFrictionModel,
     model: PressureModel,
     k: &TaperedKinematics,
+    op: &Operating,
     rollers: &[RollerRibLoad],
 ) -> Vec<Option<RibFriction>> {
-    let ao = k.outer_raceway_angle();
-    let op = Operating {
-        axial_load: rollers
-            .iter()
-            .map(|r| r.loads.outer_raceway * ao.sin())
-            .sum(),
-        inner_speed: k.inner_speed,
-        outer_speed: k.outer_speed,
-    };
-    let mut fields: Vec<(f64, _)> = Vec::new();
+    let mut first_loads: Vec<f64> = Vec::new();
     rollers
         .iter()
         .map(|r| {
@@ -51,15 +44,17 @@ fn one_by_one(
             if q == 0.0 {
                 return None;
             }
-            let i = match fields.iter().position(|(l, _)| (l - q).abs() <= 1e-10 * q) {
-                Some(i) => i,
+            // the field of the first rib load within 1e-10 of this one
+            let at = match first_loads.iter().find(|&&l| (l - q).abs() <= 1e-10 * q) {
+                Some(&l) => l,
                 None => {
-                    fields.push((q, rib.solve(model, q).unwrap()));
-                    fields.len() - 1
+                    first_loads.push(q);
+                    q
                 }
             };
+            let field = rib.solve(model, at).unwrap();
             Some(
-                rib.friction_share(model, &fields[i].1, &op, k, &r.loads, 1.0)
+                rib.friction_share(model, &field, op, k, &r.loads, 1.0)
                     .unwrap(),
             )
         })
@@ -89,7 +84,8 @@ fn rollers_with_one_rib_load_share_their_friction_bit_for_bit() {
     assert!(distinct.len() < loads.len());
     for model in [PressureModel::Hertz, PressureModel::Pimp] {
         let got = rib.evaluate_rollers(model, &k, &loads).unwrap();
-        let want = one_by_one(&rib, model, &k, &loads);
+        let op = got.rollers[0].friction.as_ref().unwrap().operating;
+        let want = one_by_one(&rib, model, &k, &op, &loads);
         for (j, (g, w)) in got.rollers.iter().zip(&want).enumerate() {
             assert_eq!(g.loads, loads[j].loads, "{model:?} roller {j}: loads");
             assert_eq!(&g.friction, w, "{model:?} roller {j}");
@@ -121,7 +117,8 @@ fn a_shared_rib_load_keeps_each_rollers_own_loads() {
     let got = rib
         .evaluate_rollers(PressureModel::Hertz, &k, &loads)
         .unwrap();
-    let want = one_by_one(&rib, PressureModel::Hertz, &k, &loads);
+    let op = got.rollers[0].friction.as_ref().unwrap().operating;
+    let want = one_by_one(&rib, PressureModel::Hertz, &k, &op, &loads);
     for (j, (g, w)) in got.rollers.iter().zip(&want).enumerate() {
         assert_eq!(g.loads, loads[j].loads, "roller {j}: loads");
         assert_eq!(&g.friction, w, "roller {j}");
@@ -151,18 +148,29 @@ fn friction_at(
 ) -> (BearingFriction, Vec<RollerFriction>) {
     let rib: Vec<f64> = (0..20).map(|j| 0.1 + 0.01 * j as f64).collect();
     let f = m
-        .evaluate(&FrictionOperating {
-            inner_speed: wi,
-            outer_speed: wo,
-            cup_slices: cup,
-            cone_slices: cone,
-            tilts,
-            rib: Some(&rib),
-            drag: DragModel::Torque { nmm: 3.0 },
-            coefficient_basis: Some((15_000.0, 40.0)),
-        })
+        .evaluate(&operating((wi, wo), (cup, cone), tilts, &rib))
         .unwrap();
     (f, m.rollers().to_vec())
+}
+
+/// The operating point at the ring speeds `(wi, wo)` with the slice loads, tilts and rib
+/// powers given, drag 3 N·mm, the coefficient's basis 15 kN on a 40 mm bore.
+fn operating<'a>(
+    (wi, wo): (f64, f64),
+    (cup, cone): (&'a [f64], &'a [f64]),
+    tilts: Option<&'a [f64]>,
+    rib: &'a [f64],
+) -> FrictionOperating<'a> {
+    FrictionOperating {
+        inner_speed: wi,
+        outer_speed: wo,
+        cup_slices: cup,
+        cone_slices: cone,
+        tilts,
+        rib: Some(rib),
+        drag: DragModel::Torque { nmm: 3.0 },
+        coefficient_basis: Some((15_000.0, 40.0)),
+    }
 }
 
 /// A speed sweep over one planned load distribution (untilted: sliding at round-off; tilted:
@@ -239,7 +247,8 @@ fn planning_bad_loads_names_the_field() {
 }
 
 /// After planning, every operating point allocates nothing (a sweep of four speeds with
-/// tilts, rib powers and drag); re-planning the same model allocates nothing either.
+/// tilts, rib powers and drag, standstill included); re-planning the same model allocates
+/// nothing either.
 #[test]
 fn planned_operating_points_allocate_nothing() {
     let (mut m, cup, cone) = bench_bearing();
@@ -249,19 +258,8 @@ fn planned_operating_points_allocate_nothing() {
     let (r, n) = allocations(|| {
         let mut total = 0.0;
         for w in [0.0, 10.0, 100.0, 300.0] {
-            total += m
-                .evaluate(&FrictionOperating {
-                    inner_speed: w,
-                    outer_speed: 0.0,
-                    cup_slices: &cup,
-                    cone_slices: &cone,
-                    tilts: Some(&tilts),
-                    rib: Some(&rib),
-                    drag: DragModel::Torque { nmm: 10.0 },
-                    coefficient_basis: Some((20_000.0, 80.0)),
-                })
-                .unwrap()
-                .total_nmm;
+            let op = operating((w, 0.0), (&cup, &cone), Some(&tilts), &rib);
+            total += m.evaluate(&op).unwrap().total_nmm;
         }
         m.plan_loads(&cup, &cone, None).unwrap();
         total

@@ -490,6 +490,28 @@ mod tests {
         }
     }
 
+    /// Newtonian, Eyring (τ₀ 5 MPa) and limiting-shear (2 MPa + 0.07 p) fluids.
+    fn fluids() -> [FluidShear; 3] {
+        [
+            FluidShear::Newtonian,
+            FluidShear::Eyring { tau0: 5.0 },
+            FluidShear::LimitingShear {
+                tau_l0: 2.0,
+                slope: 0.07,
+            },
+        ]
+    }
+
+    /// μ_b = 0.12 with the sharing exp(−b Λ^c) of `(b, c)`, `fluid`, v_ε `eps`.
+    fn mixed_with(fluid: FluidShear, (b, c): (f64, f64), eps: f64) -> FrictionLaw {
+        FrictionLaw {
+            boundary_coefficient: 0.12,
+            sharing: LoadSharing::Exponential { b, c },
+            fluid,
+            regularisation_speed: eps,
+        }
+    }
+
     fn rel(a: f64, b: f64) -> f64 {
         (a / b - 1.0).abs()
     }
@@ -555,20 +577,8 @@ mod tests {
     fn piezoviscous_traction_matches_an_independent_integral() {
         let (b, ph, v) = (0.1, 800.0, 30.0);
         let w = std::f64::consts::PI / 2.0 * ph * b;
-        for fluid in [
-            FluidShear::Newtonian,
-            FluidShear::Eyring { tau0: 5.0 },
-            FluidShear::LimitingShear {
-                tau_l0: 2.0,
-                slope: 0.07,
-            },
-        ] {
-            let law = FrictionLaw {
-                boundary_coefficient: 0.12,
-                sharing: LoadSharing::Exponential { b: 2.32, c: 0.97 },
-                fluid,
-                regularisation_speed: 0.0,
-            };
+        for fluid in fluids() {
+            let law = mixed_with(fluid, (2.32, 0.97), 0.0);
             let m = RacewayLosses::new(lub(law)).unwrap();
             let film = FilmState::new(0.5e-3, 1.2, 0.03e-6, 0.015).unwrap();
             let cell = law.with_film(&film).unwrap();
@@ -675,20 +685,8 @@ mod tests {
                 (half_pi * b.0).cos().to_bits()
             );
         }
-        for fluid in [
-            FluidShear::Newtonian,
-            FluidShear::Eyring { tau0: 5.0 },
-            FluidShear::LimitingShear {
-                tau_l0: 2.0,
-                slope: 0.07,
-            },
-        ] {
-            let law = FrictionLaw {
-                boundary_coefficient: 0.12,
-                sharing: LoadSharing::Exponential { b: 1.9, c: 0.99 },
-                fluid,
-                regularisation_speed: 1.0,
-            };
+        for fluid in fluids() {
+            let law = mixed_with(fluid, (1.9, 0.99), 1.0);
             let m = RacewayLosses::new(lub(law)).unwrap();
             let film = FilmState::new(0.3e-3, 1.5, 0.03e-6, 0.02).unwrap();
             let cell = law.with_film(&film).unwrap();

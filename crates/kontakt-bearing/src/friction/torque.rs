@@ -412,27 +412,18 @@ impl BearingFrictionModel {
     /// The checks of the load distribution of [`BearingFrictionModel::evaluate`]: lengths
     /// and finite tilts (the slice loads' values are checked slice by slice,
     /// [`slice_load`]).
-    fn check_loads(
-        &self,
-        cup_slices: &[f64],
-        cone_slices: &[f64],
-        tilts: Option<&[f64]>,
-    ) -> Result<()> {
-        let z = self.bearing.rollers;
-        let n = self.slices.len();
-        for (field, s) in [("cup_slices", cup_slices), ("cone_slices", cone_slices)] {
-            if s.len() != z * n {
+    fn check_loads(&self, cup: &[f64], cone: &[f64], tilts: Option<&[f64]>) -> Result<()> {
+        let count = self.bearing.rollers * self.slices.len();
+        for (field, s) in [("cup_slices", cup), ("cone_slices", cone)] {
+            if s.len() != count {
                 return Err(Error::invalid(
                     field,
                     s.len(),
-                    format!("{} slice loads (rollers × slices)", z * n),
+                    format!("{count} slice loads (rollers × slices)"),
                 ));
             }
         }
-        if let Some(s) = tilts {
-            per_roller("tilts", s, z)?;
-        }
-        Ok(())
+        tilts.map_or(Ok(()), |s| per_roller("tilts", s, self.bearing.rollers))
     }
 
     /// The axis of a roller tilted by `tilt` and its spin |ω_R| (`spin0` untilted; the mean

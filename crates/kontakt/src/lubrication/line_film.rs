@@ -148,6 +148,20 @@ pub(crate) const ZERO_ENTRAINMENT: &str =
 /// M below which [`LineFilmWarnings::outside_elastic_regime`] is raised.
 pub const LINE_ELASTIC_REGIME_M: f64 = 10.0;
 
+/// The check of a mean surface speed `speed` \[mm/s\] (field `entrainment_speed`): finite
+/// and ≥ 0. Returns it.
+fn check_entrainment(speed: f64) -> Result<f64> {
+    if speed.is_finite() && speed >= 0.0 {
+        Ok(speed)
+    } else {
+        Err(Error::invalid(
+            "entrainment_speed",
+            speed,
+            "a finite mean surface speed >= 0 mm/s",
+        ))
+    }
+}
+
 /// The checks that the point- and line-contact films share: `entrainment_speed` finite and
 /// ≥ 0 mm/s; `reduced_modulus`, `viscosity`, `alpha` finite and > 0. Returns
 /// (E*, η₀, α).
@@ -157,13 +171,7 @@ pub(crate) fn check_speed_and_oil(
     viscosity: f64,
     alpha: f64,
 ) -> Result<(f64, f64, f64)> {
-    if !(speed.is_finite() && speed >= 0.0) {
-        return Err(Error::invalid(
-            "entrainment_speed",
-            speed,
-            "a finite mean surface speed >= 0 mm/s",
-        ));
-    }
+    check_entrainment(speed)?;
     Ok((
         positive(
             "reduced_modulus",
@@ -273,14 +281,7 @@ impl LineFilmRegime {
     /// [`Error::InvalidInput`] naming `entrainment_speed` (finite, ≥ 0, and U, M, L finite)
     /// or `viscosity` (finite, > 0).
     pub fn at_speed(&self, contact: &LineFilmContact, viscosity: f64) -> Result<LineFilmRegime> {
-        let speed = contact.entrainment_speed;
-        if !(speed.is_finite() && speed >= 0.0) {
-            return Err(Error::invalid(
-                "entrainment_speed",
-                speed,
-                "a finite mean surface speed >= 0 mm/s",
-            ));
-        }
+        let speed = check_entrainment(contact.entrainment_speed)?;
         let eta = positive(
             "viscosity",
             viscosity,
@@ -408,13 +409,7 @@ pub fn thermal_loading(
             "a finite temperature slope of the viscosity <= 0 MPa·s/K (oil thins when heated)",
         ));
     }
-    if !(entrainment_speed.is_finite() && entrainment_speed >= 0.0) {
-        return Err(Error::invalid(
-            "entrainment_speed",
-            entrainment_speed,
-            "a finite mean surface speed >= 0 mm/s",
-        ));
-    }
+    check_entrainment(entrainment_speed)?;
     let k = positive(
         "conductivity",
         conductivity,
