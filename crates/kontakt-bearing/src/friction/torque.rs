@@ -259,6 +259,24 @@ pub struct BearingFrictionModel {
     /// [`BearingFrictionModel::plan_loads`]: the speed-independent part of every slice,
     /// `(roller · slices + slice) · 2 + (0 cone, 1 cup)`; empty without a plan.
     plans: Vec<Option<SlicePlan>>,
+    /// Each roller's raceway warnings of the last evaluation: loaded slices whose film left
+    /// its fit, and whether the starvation degree was extrapolated.
+    roller_warnings: Vec<(usize, bool)>,
+}
+
+/// An earlier roller than `j` with the same tilt and the same cup and cone slice loads (bit
+/// for bit) at `op`, whose raceway losses are therefore roller j's: under axial load every
+/// roller of a bearing has its twins (the rib's and the drag's shares are per roller all
+/// the same). `n` slices per roller.
+fn twin(op: &FrictionOperating<'_>, n: usize, j: usize) -> Option<usize> {
+    let tilt = |r: usize| op.tilts.map_or(0.0, |t| t[r]).to_bits();
+    let same = |a: &[f64], i: usize| {
+        a[i * n..(i + 1) * n]
+            .iter()
+            .zip(&a[j * n..(j + 1) * n])
+            .all(|(x, y)| x.to_bits() == y.to_bits())
+    };
+    (0..j).find(|&i| tilt(i) == tilt(j) && same(op.cup_slices, i) && same(op.cone_slices, i))
 }
 
 /// The load \[N\] of slice `i` (roller-major) of the cup or the cone, checked finite and ≥ 0.
@@ -343,6 +361,7 @@ impl BearingFrictionModel {
             slices,
             rollers: vec![RollerFriction::default(); bearing.rollers],
             plans: Vec::new(),
+            roller_warnings: vec![(0, false); bearing.rollers],
             bearing,
         })
     }
@@ -566,50 +585,67 @@ impl BearingFrictionModel {
         for j in 0..z {
             let tilt = op.tilts.map_or(0.0, |t| t[j]);
             let (t_m, spin) = self.roller_spin(tilt, spin0, om_i, om_o);
-            let mut out = RollerFriction {
-                roller: j,
-                tilt_rad: tilt,
-                spin_rad_s: spin,
-                min_lambda: f64::INFINITY,
-                ..Default::default()
-            };
-            for k in 0..n {
-                let g = self.slices[k];
-                for cup_side in [false, true] {
-                    let q = slice_load(cup_side, op.cup_slices, op.cone_slices, j * n + k)?;
-                    if q == 0.0 {
-                        continue;
-                    }
-                    let ring = if cup_side { om_o } else { om_i };
-                    let s = self.slice(&g, cup_side, &t_m, ring, spin, q / self.width);
-                    let (rolling, sliding) = if starting {
-                        // Boundary friction per unit Δω: μ_b q |v_s(Δω = 1)|, N·mm/s.
-                        (0.0, mu_b * q * s.sliding_speed.abs() * 1e-3)
-                    } else {
-                        let plan = self.plans.get((j * n + k) * 2 + usize::from(cup_side));
-                        let l: SliceLosses = match plan {
-                            Some(Some(plan)) => self.losses.slice_planned(&s, plan)?,
-                            _ => self.losses.slice(&s)?,
-                        };
-                        if !l.warnings.film.is_empty() {
-                            warnings.film_out_of_range_slices += 1;
+            let mut out = if let Some(i) = twin(op, n, j) {
+                // The same slice loads and tilt as roller i: its raceway losses, bit for bit.
+                let (films, starved) = self.roller_warnings[i];
+                warnings.film_out_of_range_slices += films;
+                warnings.starvation_extrapolated |= starved;
+                self.roller_warnings[j] = (films, starved);
+                RollerFriction {
+                    roller: j,
+                    ..self.rollers[i]
+                }
+            } else {
+                let mut out = RollerFriction {
+                    roller: j,
+                    tilt_rad: tilt,
+                    spin_rad_s: spin,
+                    min_lambda: f64::INFINITY,
+                    ..Default::default()
+                };
+                let (mut films, mut starved) = (0, false);
+                for k in 0..n {
+                    let g = self.slices[k];
+                    for cup_side in [false, true] {
+                        let q = slice_load(cup_side, op.cup_slices, op.cone_slices, j * n + k)?;
+                        if q == 0.0 {
+                            continue;
                         }
-                        warnings.starvation_extrapolated |= l.warnings.starvation_extrapolated;
-                        out.min_lambda = out.min_lambda.min(l.lambda);
-                        (l.rolling_power, l.sliding_power)
-                    };
-                    out.max_sliding_mm_s = out.max_sliding_mm_s.max(s.sliding_speed.abs());
-                    if cup_side {
-                        out.cup_load_n += q;
-                        out.cup_rolling_w += rolling;
-                        out.cup_sliding_w += sliding;
-                    } else {
-                        out.cone_load_n += q;
-                        out.cone_rolling_w += rolling;
-                        out.cone_sliding_w += sliding;
+                        let ring = if cup_side { om_o } else { om_i };
+                        let s = self.slice(&g, cup_side, &t_m, ring, spin, q / self.width);
+                        let (rolling, sliding) = if starting {
+                            // Boundary friction per unit Δω: μ_b q |v_s(Δω = 1)|, N·mm/s.
+                            (0.0, mu_b * q * s.sliding_speed.abs() * 1e-3)
+                        } else {
+                            let plan = self.plans.get((j * n + k) * 2 + usize::from(cup_side));
+                            let l: SliceLosses = match plan {
+                                Some(Some(plan)) => self.losses.slice_planned(&s, plan)?,
+                                _ => self.losses.slice(&s)?,
+                            };
+                            if !l.warnings.film.is_empty() {
+                                films += 1;
+                            }
+                            starved |= l.warnings.starvation_extrapolated;
+                            out.min_lambda = out.min_lambda.min(l.lambda);
+                            (l.rolling_power, l.sliding_power)
+                        };
+                        out.max_sliding_mm_s = out.max_sliding_mm_s.max(s.sliding_speed.abs());
+                        if cup_side {
+                            out.cup_load_n += q;
+                            out.cup_rolling_w += rolling;
+                            out.cup_sliding_w += sliding;
+                        } else {
+                            out.cone_load_n += q;
+                            out.cone_rolling_w += rolling;
+                            out.cone_sliding_w += sliding;
+                        }
                     }
                 }
-            }
+                warnings.film_out_of_range_slices += films;
+                warnings.starvation_extrapolated |= starved;
+                self.roller_warnings[j] = (films, starved);
+                out
+            };
             let rib = op.rib.map_or(0.0, |r| r[j]);
             if starting {
                 // Given as torque shares (N·mm): as power at unit Δω (W).
