@@ -403,12 +403,6 @@ impl CellLaw {
         k
     }
 
-    /// The pressure-viscosity coefficient α \[1/MPa\] of the film (the exponent of the Barus
-    /// factor that [`CellLaw::drag_with_barus`] takes).
-    pub fn alpha(&self) -> f64 {
-        self.alpha
-    }
-
     /// `τ_f / |v|` of [`CellLaw::fluid_drag`] with `g = α p` and `barus = exp(g)` given.
     #[inline(always)]
     fn fluid_drag_barus(&self, p: f64, speed: f64, g: f64, barus: f64) -> f64 {
