@@ -71,6 +71,8 @@ pub struct Instance {
     environment: *mut c_void,
     logger: Option<Logger>,
     logging: bool,
+    /// The message of the last call that did not return `fmi2OK` (what the logger got).
+    last_message: String,
     /// The state an FMU state saves.
     pub core: Core,
     /// The state after instantiation, for `fmi2Reset`.
@@ -81,6 +83,12 @@ impl Instance {
     /// Send `message` to the host's logger.
     fn log(&self, status: Status, message: &str) {
         emit(self.logger, self.environment, &self.name, status, message);
+    }
+
+    /// The message of the last call that did not return `fmi2OK`, as logged (empty if
+    /// none).
+    pub fn last_message(&self) -> &str {
+        &self.last_message
     }
 }
 
@@ -149,18 +157,17 @@ unsafe fn call(
             status
         }
         Ok(Err((status, message))) => {
-            instance.log(status, &format!("{function}: {message}"));
+            instance.last_message = format!("{function}: {message}");
+            instance.log(status, &instance.last_message);
             status
         }
         Err(payload) => {
             instance.core.dirty = true;
-            instance.log(
-                Status::Error,
-                &format!(
-                    "{function}: internal panic in kontakt (a bug, please report it): {}",
-                    panic_message(payload.as_ref())
-                ),
+            instance.last_message = format!(
+                "{function}: internal panic in kontakt (a bug, please report it): {}",
+                panic_message(payload.as_ref())
             );
+            instance.log(Status::Error, &instance.last_message);
             Status::Error
         }
     };
@@ -256,6 +263,7 @@ fn instantiate(
         environment: functions.component_environment,
         logger: functions.logger,
         logging,
+        last_message: String::new(),
         initial: core.clone(),
         core,
     })

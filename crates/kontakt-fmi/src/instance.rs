@@ -68,6 +68,9 @@ pub struct Core {
     /// The last evaluation's failure or `Beyond` message, returned again until an input
     /// changes.
     pub last: Option<Failure>,
+    /// The outputs hold the last evaluation (it succeeded, or went beyond the model's
+    /// validity with the outputs computed).
+    pub computed: bool,
     /// The FMI state.
     pub mode: Mode,
     /// ME or CS.
@@ -94,6 +97,7 @@ impl Core {
             inputs,
             dirty: true,
             last: None,
+            computed: false,
             mode: Mode::Instantiated,
             fmu_type,
             time: 0.0,
@@ -189,7 +193,9 @@ impl Core {
             let (head, outputs) = self.values.split_at_mut(first);
             let inputs = &head[self.parameters..];
             self.evaluations += 1;
-            self.last = match self.model.evaluate(inputs, outputs) {
+            let result = self.model.evaluate(inputs, outputs);
+            self.computed = result.is_ok();
+            self.last = match result {
                 Ok(Outcome::Valid) => None,
                 Ok(Outcome::Beyond(message)) => Some((Status::Discard, message)),
                 Err(e) => {
@@ -210,7 +216,8 @@ impl Core {
     }
 
     /// `fmi2GetReal`: evaluates first when an output is asked for and an input changed.
-    /// On `Discard` beyond the contact's validity the outputs are written as well.
+    /// On `Discard` beyond the contact's validity the outputs are written as well; on any
+    /// other failure nothing is written.
     pub fn get_real(&mut self, vr: &[u32], value: &mut [f64]) -> Result<Status, Failure> {
         if self.mode == Mode::Instantiated {
             return Err((
@@ -223,7 +230,9 @@ impl Core {
             output |= self.index(r)? >= self.first_output();
         }
         let status = if output { self.update() } else { Ok(Status::Ok) };
-        if matches!(&status, Ok(_) | Err((Status::Discard, _))) {
+        // on failure nothing is written, except beyond the contact's validity where the
+        // outputs are computed (and the status says Discard)
+        if status.is_ok() || (output && self.computed) {
             for (v, &r) in value.iter_mut().zip(vr) {
                 *v = self.values[r as usize];
             }
