@@ -6,6 +6,7 @@
 
 use crate::description::{MODEL_IDENTIFIER, model_description};
 use crate::fmi2::CASE_FILE;
+use crate::model::Kind;
 use kontakt::Result;
 
 /// The FMI 2.0 platform folder and the shared-library extension of this build's target
@@ -113,12 +114,13 @@ pub fn zip(entries: &[(&str, &[u8])]) -> Result<Vec<u8>> {
 }
 
 /// The FMU of a case text with the shared library `library` (the bytes of
-/// `libkontakt_fmi.so` of this build): model description, binary, case.
+/// `libkontakt_fmi.so` of this build): model description, binary, case; and which
+/// element it is.
 ///
 /// # Errors
 /// Those of [`model_description`] (the case's, named by its key) and [`zip`].
-pub fn fmu(case: &str, library: &[u8]) -> Result<Vec<u8>> {
-    let description = model_description(case)?;
+pub fn fmu(case: &str, library: &[u8]) -> Result<(Vec<u8>, Kind)> {
+    let (description, kind) = model_description(case)?;
     let binary = binary_path();
     let resource = format!("resources/{CASE_FILE}");
     zip(&[
@@ -126,4 +128,5 @@ pub fn fmu(case: &str, library: &[u8]) -> Result<Vec<u8>> {
         (&binary, library),
         (&resource, case.as_bytes()),
     ])
+    .map(|bytes| (bytes, kind))
 }

@@ -71,12 +71,13 @@ fn real(x: f64) -> String {
     format!("{x:?}")
 }
 
-/// The model description of the FMU of a case text (a bearing case or an element case):
-/// the element is planned, so a bad case fails here with its key named.
+/// The model description of the FMU of a case text (a bearing case or an element case)
+/// and which element it is: the element is planned, so a bad case fails here with its
+/// key named.
 ///
 /// # Errors
 /// Those of [`Model::from_case`].
-pub fn model_description(case: &str) -> Result<String> {
+pub fn model_description(case: &str) -> Result<(String, Kind)> {
     let model = Model::from_case(case)?;
     let name = case
         .parse::<toml::Table>()
@@ -190,5 +191,5 @@ pub fn model_description(case: &str) -> Result<String> {
     }
     let _ = writeln!(w, "  </ModelStructure>");
     let _ = writeln!(w, "</fmiModelDescription>");
-    Ok(x)
+    Ok((x, model.kind()))
 }

@@ -22,6 +22,7 @@ from fmpy.validation import validate_fmu
 
 import kontakt as kt
 
+REPO = pathlib.Path(__file__).resolve().parents[3]
 BEARING_CASE = "examples/bearing_32008x.toml"
 CONTACT_CASE = "crates/kontakt-capi/examples/element_ball_on_flat.toml"
 U = ["dx", "dy", "dz", "theta_x", "theta_y"]
@@ -39,8 +40,6 @@ def kontakt_executable(repo: pathlib.Path) -> pathlib.Path:
 def fmus():
     """Both FMUs, built once per module in a folder removed afterwards (each holds the
     debug library, about 60 MB)."""
-    from conftest import REPO
-
     exe = kontakt_executable(REPO)
     with tempfile.TemporaryDirectory(prefix="kontakt-fmu-") as d:
         out = {}

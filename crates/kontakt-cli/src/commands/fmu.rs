@@ -61,9 +61,9 @@ pub fn run(args: &FmuArgs, out: &mut impl Write) -> Result<()> {
     let (label, text) = read_case(&args.case)?;
     let lib = library(args.library.as_deref())?;
     let bytes = std::fs::read(&lib).map_err(|e| InputError(format!("{}: {e}", lib.display())))?;
-    let fmu = kontakt_fmi::archive::fmu(&text, &bytes).with_context(|| label.clone())?;
+    let (fmu, kind) = kontakt_fmi::archive::fmu(&text, &bytes).with_context(|| label.clone())?;
     std::fs::write(&args.out, &fmu).map_err(|e| cannot_write("write", &args.out, e))?;
-    let kind = match kontakt_fmi::model::Model::from_case(&text)?.kind() {
+    let kind = match kind {
         kontakt_fmi::model::Kind::Bearing => "bearing element",
         kontakt_fmi::model::Kind::Contact => "contact element",
     };
