@@ -1,0 +1,71 @@
+//! One model-exchange evaluation of the bearing FMU — `fmi2SetReal` of the inputs and
+//! `fmi2GetReal` of the outputs — allocates nothing, cold and warm, damped, lifted off
+//! (issue 31, "Speed"; hot loops allocate nothing), for a ball and a tapered roller
+//! bearing.
+
+#![allow(unsafe_code)] // calling the C API
+#![allow(clippy::unwrap_used)] // tests: a panic is a failure with its message
+
+// The allocation counter of the kontakt crate's tests, shared rather than copied.
+#[path = "../../kontakt/tests/support/counting_alloc.rs"]
+mod counting_alloc;
+
+use counting_alloc::allocations;
+use kontakt_fmi::description::guid;
+use kontakt_fmi::fmi2::*;
+use std::ffi::CString;
+use std::path::PathBuf;
+
+#[test]
+fn a_model_exchange_call_allocates_nothing() {
+    for name in ["bearing_7205.toml", "bearing_32008x.toml"] {
+        let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../..");
+        let text = std::fs::read_to_string(root.join("examples").join(name)).unwrap();
+        let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+            .join("fmi-alloc")
+            .join(name)
+            .join("resources");
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::write(dir.join(CASE_FILE), &text).unwrap();
+        let uri = CString::new(format!("file://{}", dir.display())).unwrap();
+        let id = CString::new(guid(&text)).unwrap();
+        let functions = CallbackFunctions {
+            logger: None,
+            allocate_memory: None,
+            free_memory: None,
+            step_finished: None,
+            component_environment: std::ptr::null_mut(),
+        };
+        // SAFETY: NUL-terminated strings; the callbacks outlive the instance.
+        let fmu = unsafe { fmi2Instantiate(c"a".as_ptr(), 0, id.as_ptr(), uri.as_ptr(), &functions, 0, 0) };
+        assert!(!fmu.is_null());
+        let inputs: [u32; 10] = std::array::from_fn(|i| i as u32 + 1);
+        let outputs: [u32; 8] = std::array::from_fn(|i| i as u32 + 11);
+        let mut y = [0.0; 8];
+        // SAFETY: a live instance, arrays of the stated lengths.
+        let call = |x: [f64; 10], y: &mut [f64; 8]| unsafe {
+            let a = fmi2SetReal(fmu, inputs.as_ptr(), 10, x.as_ptr());
+            let b = fmi2GetReal(fmu, outputs.as_ptr(), 8, y.as_mut_ptr());
+            (a, b)
+        };
+        // SAFETY: as above.
+        unsafe {
+            assert_eq!(fmi2EnterInitializationMode(fmu), 0);
+            assert_eq!(fmi2SetReal(fmu, &0, 1, &1e-4), 0);
+        }
+        let u = [0.01, 0.003, 0.02, 1e-4, -5e-5];
+        let mut x = [0.0; 10];
+        x[..5].copy_from_slice(&u);
+        assert_eq!(allocations(|| call(x, &mut y)), ((0, 0), 0), "{name} cold");
+        assert_eq!(y[7], 1.0, "loaded");
+        x[5..].copy_from_slice(&[3.0, -1.0, 2.0, 0.05, -0.02]);
+        x[0] *= 1.01;
+        assert_eq!(allocations(|| call(x, &mut y)), ((0, 0), 0), "{name} warm, damped");
+        let lifted = [0.0, 0.0, -0.05, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0];
+        let ((a, b), n) = allocations(|| call(lifted, &mut y));
+        assert_eq!((a, b, y[7]), (0, 0, 0.0), "{name} lifted off");
+        assert_eq!(n, 0, "{name} lifted off");
+        // SAFETY: instantiated above, freed once.
+        unsafe { fmi2FreeInstance(fmu) };
+    }
+}
