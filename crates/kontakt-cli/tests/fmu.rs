@@ -9,6 +9,19 @@
 mod support;
 use support::{bad, example, kontakt, tempdir};
 
+/// Run `kontakt fmu ARGS` without `$KONTAKT_FMI_LIBRARY`, expect success, return stdout.
+fn pack(args: &[&str]) -> String {
+    let run = kontakt()
+        .env_remove("KONTAKT_FMI_LIBRARY")
+        .arg("fmu")
+        .args(args)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert!(run.status.success(), "{args:?}: {stderr}");
+    String::from_utf8(run.stdout).unwrap()
+}
+
 fn contains(haystack: &[u8], needle: &[u8]) -> bool {
     haystack.windows(needle.len()).any(|w| w == needle)
 }
@@ -25,13 +38,14 @@ fn packs_the_case_the_description_and_the_library() {
         (capi, "contact element"),
     ] {
         let out = dir.join("case.fmu");
-        let run = kontakt()
-            .args(["fmu", case.to_str().unwrap(), "-o", out.to_str().unwrap()])
-            .args(["--library", lib.to_str().unwrap()])
-            .output()
-            .unwrap();
-        assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
-        assert!(String::from_utf8_lossy(&run.stdout).contains(kind));
+        let stdout = pack(&[
+            case.to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+            "--library",
+            lib.to_str().unwrap(),
+        ]);
+        assert!(stdout.contains(kind), "{stdout}");
         let zip = std::fs::read(&out).unwrap();
         let text = std::fs::read_to_string(&case).unwrap();
         assert_eq!(&zip[..4], b"PK\x03\x04");
@@ -55,14 +69,8 @@ fn packs_the_case_the_description_and_the_library() {
 #[cfg(target_os = "linux")]
 #[test]
 fn finds_the_library_next_to_the_executable() {
-    let run = kontakt()
-        .env_remove("KONTAKT_FMI_LIBRARY")
-        .args(["fmu", example("bearing_32008x.toml").to_str().unwrap()])
-        .args(["-o", "/dev/null"])
-        .output()
-        .unwrap();
-    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
-    let stdout = String::from_utf8_lossy(&run.stdout);
+    let case = example("bearing_32008x.toml");
+    let stdout = pack(&[case.to_str().unwrap(), "-o", "/dev/null"]);
     assert!(stdout.contains("libkontakt_fmi.so"), "{stdout}");
 }
 
@@ -74,7 +82,10 @@ fn input_errors_are_one_line_with_exit_status_2() {
     let hertz = example("ball_on_flat.toml");
     let line = bad(&["fmu", hertz.to_str().unwrap(), "-o", out, "--library", out]);
     // the library is checked before the case is planned
-    assert!(line.contains("--library") && line.contains("no such file"), "{line}");
+    assert!(
+        line.contains("--library") && line.contains("no such file"),
+        "{line}"
+    );
     let lib = dir.join("lib.so");
     std::fs::write(&lib, b"x").unwrap();
     let lib = lib.to_str().unwrap();
@@ -83,12 +94,20 @@ fn input_errors_are_one_line_with_exit_status_2() {
         line.contains("method = hertz") && line.contains("\"bearing\""),
         "{line}"
     );
-    assert!(!std::path::Path::new(out).exists(), "no FMU written on error");
+    assert!(
+        !std::path::Path::new(out).exists(),
+        "no FMU written on error"
+    );
     let line = bad(&["fmu", "missing.toml", "-o", out, "--library", lib]);
     assert!(line.contains("missing.toml"), "{line}");
     let run = kontakt()
         .env("KONTAKT_FMI_LIBRARY", dir.join("none.so"))
-        .args(["fmu", example("bearing_32008x.toml").to_str().unwrap(), "-o", out])
+        .args([
+            "fmu",
+            example("bearing_32008x.toml").to_str().unwrap(),
+            "-o",
+            out,
+        ])
         .output()
         .unwrap();
     assert_eq!(run.status.code(), Some(2));

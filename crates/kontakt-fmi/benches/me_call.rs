@@ -13,65 +13,44 @@ use criterion::{Criterion, criterion_group, criterion_main};
 use kontakt_case::bearing_model::BearingElement;
 use kontakt_fmi::description::guid;
 use kontakt_fmi::fmi2::{
-    CASE_FILE, CallbackFunctions, EventInfo, fmi2EnterContinuousTimeMode,
-    fmi2EnterInitializationMode, fmi2ExitInitializationMode, fmi2FreeInstance, fmi2GetReal,
-    fmi2Instantiate, fmi2NewDiscreteStates, fmi2SetReal,
+    EventInfo, fmi2EnterContinuousTimeMode, fmi2EnterInitializationMode,
+    fmi2ExitInitializationMode, fmi2FreeInstance, fmi2GetReal, fmi2NewDiscreteStates, fmi2SetReal,
 };
-use std::ffi::CString;
 use std::hint::black_box;
-use std::path::PathBuf;
 
-fn case_text(name: &str) -> String {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../../examples")
-        .join(name);
-    std::fs::read_to_string(path).expect("the example bearing case")
-}
+#[path = "../tests/support/mod.rs"]
+mod support;
+
+/// The bearings, displacements, velocity and damping of kontakt-capi's `bearing_element`
+/// bench, so that the Rust, C and FMU rows compare.
+const CASES: [(&str, &str, [f64; 5]); 2] = [
+    (
+        "acbb_7205",
+        include_str!("../../../examples/bearing_7205.toml"),
+        [0.01, 0.003, 0.02, 2e-4, -1e-4],
+    ),
+    (
+        "trb_32008x",
+        include_str!("../../../examples/bearing_32008x.toml"),
+        [0.01, -0.002, 0.015, 1e-4, 5e-5],
+    ),
+];
 
 fn bench_me_call(c: &mut Criterion) {
     let mut group = c.benchmark_group("fmu_me_call");
     let v = [3.0, -1.0, 2.0, 0.05, -0.02];
     let damping_s = 1e-4;
-    for (label, file, u) in [
-        (
-            "acbb_7205",
-            "bearing_7205.toml",
-            [0.01, 0.003, 0.02, 2e-4, -1e-4],
-        ),
-        (
-            "trb_32008x",
-            "bearing_32008x.toml",
-            [0.01, -0.002, 0.015, 1e-4, 5e-5],
-        ),
-    ] {
-        let text = case_text(file);
-        let mut rust = BearingElement::from_toml(&text).expect("valid case");
+    for (label, text, u) in CASES {
+        let mut rust = BearingElement::from_toml(text).expect("valid case");
         rust.set_damping(damping_s).expect("valid damping");
         let reference = rust.evaluate(u, v).expect("evaluate");
         group.bench_function(format!("{label}_rust"), |b| {
             b.iter(|| rust.evaluate(black_box(u), black_box(v)).expect("evaluate"))
         });
 
-        // the FMU instance, its case in a resources folder of its own
-        let dir = std::env::temp_dir()
-            .join(format!("kontakt-fmi-bench-{}-{label}", std::process::id()))
-            .join("resources");
-        std::fs::create_dir_all(&dir).expect("a temporary folder");
-        std::fs::write(dir.join(CASE_FILE), &text).expect("the case written");
-        let uri = CString::new(format!("file://{}/", dir.display())).expect("no NUL");
-        let name = CString::new(label).expect("no NUL");
-        let id = CString::new(guid(&text)).expect("no NUL");
-        let functions = CallbackFunctions {
-            logger: None,
-            allocate_memory: None,
-            free_memory: None,
-            step_finished: None,
-            component_environment: std::ptr::null_mut(),
-        };
-        // SAFETY: NUL-terminated strings; the callbacks outlive the instance.
-        let fmu = unsafe {
-            fmi2Instantiate(name.as_ptr(), 0, id.as_ptr(), uri.as_ptr(), &functions, 0, 0)
-        };
+        let dir =
+            std::env::temp_dir().join(format!("kontakt-fmi-bench-{}-{label}", std::process::id()));
+        let fmu = support::instantiate(text, 0, &dir, &guid(text));
         assert!(!fmu.is_null(), "instantiated");
         // value references: damping_s 0, the inputs 1..=10, the outputs 11..=18
         let inputs: [u32; 10] = std::array::from_fn(|i| i as u32 + 1);
@@ -104,7 +83,7 @@ fn bench_me_call(c: &mut Criterion) {
         });
         // SAFETY: instantiated above, freed once.
         unsafe { fmi2FreeInstance(fmu) };
-        let _ = std::fs::remove_dir_all(dir.parent().expect("the instance folder"));
+        let _ = std::fs::remove_dir_all(&dir);
     }
     group.finish();
 }

@@ -31,7 +31,11 @@ pub fn binary_path() -> String {
 /// (`libkontakt_fmi.so`).
 pub fn library_file_name() -> String {
     let (_, ext) = platform();
-    let prefix = if cfg!(target_os = "windows") { "" } else { "lib" };
+    let prefix = if cfg!(target_os = "windows") {
+        ""
+    } else {
+        "lib"
+    };
     format!("{prefix}{MODEL_IDENTIFIER}.{ext}")
 }
 

@@ -12,7 +12,10 @@ pub const MODEL_IDENTIFIER: &str = "kontakt_fmi";
 
 /// The log categories (`fmi2SetDebugLogging`) and what they carry.
 pub const LOG_CATEGORIES: &[(&str, &str)] = &[
-    ("logStatusWarning", "calls that return fmi2Warning (always logged)"),
+    (
+        "logStatusWarning",
+        "calls that return fmi2Warning (always logged)",
+    ),
     (
         "logStatusDiscard",
         "calls that return fmi2Discard: a state beyond the model's validity (always logged)",
@@ -21,7 +24,10 @@ pub const LOG_CATEGORIES: &[(&str, &str)] = &[
         "logStatusError",
         "calls that return fmi2Error: bad input, an illegal call (always logged)",
     ),
-    ("logStatusFatal", "calls that return fmi2Fatal (always logged)"),
+    (
+        "logStatusFatal",
+        "calls that return fmi2Fatal (always logged)",
+    ),
     ("logAll", "every call (with loggingOn)"),
 ];
 
@@ -150,7 +156,10 @@ pub fn model_description(case: &str) -> Result<(String, Kind)> {
         );
     }
     let _ = writeln!(w, "  </LogCategories>");
-    let _ = writeln!(w, r#"  <DefaultExperiment startTime="0.0" stopTime="1.0"/>"#);
+    let _ = writeln!(
+        w,
+        r#"  <DefaultExperiment startTime="0.0" stopTime="1.0"/>"#
+    );
     let _ = writeln!(w, "  <ModelVariables>");
     for (vr, v) in variables.iter().enumerate() {
         let attributes = match v.causality {

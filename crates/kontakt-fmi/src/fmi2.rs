@@ -22,14 +22,8 @@ pub const CASE_FILE: &str = "case.toml";
 
 /// `fmi2CallbackLogger`: `(componentEnvironment, instanceName, status, category,
 /// message, ...)`, message a printf format.
-pub type Logger = unsafe extern "C" fn(
-    *mut c_void,
-    *const c_char,
-    c_int,
-    *const c_char,
-    *const c_char,
-    ...
-);
+pub type Logger =
+    unsafe extern "C" fn(*mut c_void, *const c_char, c_int, *const c_char, *const c_char, ...);
 
 /// `fmi2CallbackFunctions`.
 #[repr(C)]
@@ -393,10 +387,7 @@ pub unsafe extern "C" fn fmi2SetDebugLogging(
                     .iter()
                     .any(|(c, _)| *c == name)
                 {
-                    return Err((
-                        Status::Error,
-                        format!("unknown log category {name:?}"),
-                    ));
+                    return Err((Status::Error, format!("unknown log category {name:?}")));
                 }
             }
             i.logging = logging_on != 0;
@@ -421,7 +412,8 @@ pub unsafe extern "C" fn fmi2SetupExperiment(
     // SAFETY: by contract.
     unsafe {
         call(c, "fmi2SetupExperiment", |i| {
-            i.core.require("fmi2SetupExperiment", &[Mode::Instantiated])?;
+            i.core
+                .require("fmi2SetupExperiment", &[Mode::Instantiated])?;
             i.core.time = start_time;
             Ok(Status::Ok)
         })
@@ -551,7 +543,9 @@ fn none_of(kind: &str, vr: &[c_uint]) -> Result<Status, Failure> {
         None => Ok(Status::Ok),
         Some(r) => Err((
             Status::Error,
-            format!("value reference {r}: this FMU has no {kind} variables (every variable is a Real)"),
+            format!(
+                "value reference {r}: this FMU has no {kind} variables (every variable is a Real)"
+            ),
         )),
     }
 }
@@ -570,7 +564,11 @@ macro_rules! no_variables {
             _value: *mut $t,
         ) -> c_int {
             // SAFETY: by contract.
-            unsafe { call(c, stringify!($get), |_| none_of($kind, slice(vr, nvr, "vr")?)) }
+            unsafe {
+                call(c, stringify!($get), |_| {
+                    none_of($kind, slice(vr, nvr, "vr")?)
+                })
+            }
         }
 
         /// No variables of this type: `fmi2OK` for `nvr = 0`, else `fmi2Error`.
@@ -585,7 +583,11 @@ macro_rules! no_variables {
             _value: *const $t,
         ) -> c_int {
             // SAFETY: by contract.
-            unsafe { call(c, stringify!($set), |_| none_of($kind, slice(vr, nvr, "vr")?)) }
+            unsafe {
+                call(c, stringify!($set), |_| {
+                    none_of($kind, slice(vr, nvr, "vr")?)
+                })
+            }
         }
     };
 }
@@ -633,10 +635,7 @@ pub unsafe extern "C" fn fmi2SetFMUstate(c: *mut c_void, state: *mut c_void) -> 
             }
             let saved = &*state.cast::<Core>();
             if saved.names != i.core.names {
-                return Err((
-                    Status::Error,
-                    "the FMUstate belongs to another FMU".into(),
-                ));
+                return Err((Status::Error, "the FMUstate belongs to another FMU".into()));
             }
             i.core = saved.clone();
             Ok(Status::Ok)
@@ -886,7 +885,11 @@ macro_rules! state_vector {
         #[unsafe(no_mangle)]
         pub unsafe extern "C" fn $name(c: *mut c_void, _x: $t, nx: usize) -> c_int {
             // SAFETY: by contract.
-            unsafe { call(c, stringify!($name), |i| no_states(i, stringify!($name), nx)) }
+            unsafe {
+                call(c, stringify!($name), |i| {
+                    no_states(i, stringify!($name), nx)
+                })
+            }
         }
     };
 }

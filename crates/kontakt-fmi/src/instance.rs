@@ -229,7 +229,11 @@ impl Core {
         for &r in vr {
             output |= self.index(r)? >= self.first_output();
         }
-        let status = if output { self.update() } else { Ok(Status::Ok) };
+        let status = if output {
+            self.update()
+        } else {
+            Ok(Status::Ok)
+        };
         // on failure nothing is written, except beyond the contact's validity where the
         // outputs are computed (and the status says Discard)
         if status.is_ok() || (output && self.computed) {

@@ -47,6 +47,9 @@ pub struct Variable {
 }
 
 /// A planned element with its parameters.
+// One per instance: the bearing's last output (336 bytes) stays inline so that an
+// evaluation allocates nothing.
+#[allow(clippy::large_enum_variant)]
 #[derive(Debug, Clone)]
 pub enum Model {
     /// The bearing element.
@@ -232,11 +235,7 @@ impl Model {
                 c.friction.mu = Some(p[2]);
                 // the ramp is checked even while the damping is off
                 if !(p[1].is_finite() && p[1] > 0.0) {
-                    return Err(Error::invalid(
-                        "damping_ramp",
-                        p[1],
-                        "a finite ramp > 0 mm",
-                    ));
+                    return Err(Error::invalid("damping_ramp", p[1], "a finite ramp > 0 mm"));
                 }
                 let planned = element_from_case(&c).map_err(|e| {
                     e.map_field(|f| match f {
@@ -283,7 +282,10 @@ impl Model {
                 let pose1 = pose(&x[0..7], "pose1")?;
                 let pose2 = pose(&x[7..14], "pose2")?;
                 let twist = |t: &[f64]| {
-                    Twist::new(Vector3::new(t[0], t[1], t[2]), Vector3::new(t[3], t[4], t[5]))
+                    Twist::new(
+                        Vector3::new(t[0], t[1], t[2]),
+                        Vector3::new(t[3], t[4], t[5]),
+                    )
                 };
                 let r = element
                     .evaluate(&pose1, &pose2, &twist(&x[14..20]), &twist(&x[20..26]))

@@ -145,8 +145,18 @@ pub const CONTACT_PARAMETERS: &[Parameter] = &[
     Parameter { name: "mu", unit: None, description: "boundary friction coefficient (case key friction.mu)" },
 ];
 
-const fn body(name: &'static str, unit: &'static str, description: &'static str, start: f64) -> Input {
-    Input { name, unit: Some(unit), description, start }
+const fn body(
+    name: &'static str,
+    unit: &'static str,
+    description: &'static str,
+    start: f64,
+) -> Input {
+    Input {
+        name,
+        unit: Some(unit),
+        description,
+        start,
+    }
 }
 
 /// The contact element's inputs: the two bodies' poses (position of the reference point,
@@ -195,7 +205,13 @@ const fn vector(
     description: &'static str,
     value: fn(&ElementResult) -> f64,
 ) -> Output<ElementResult> {
-    Output { name, unit, description, value, derivative: Derivative::Differences }
+    Output {
+        name,
+        unit,
+        description,
+        value,
+        derivative: Derivative::Differences,
+    }
 }
 
 /// The contact element's outputs (world frame; the normal points from body 2 into body 1;

@@ -13,8 +13,9 @@ mod counting_alloc;
 use counting_alloc::allocations;
 use kontakt_fmi::description::guid;
 use kontakt_fmi::fmi2::*;
-use std::ffi::CString;
 use std::path::PathBuf;
+
+mod support;
 
 #[test]
 fn a_model_exchange_call_allocates_nothing() {
@@ -23,21 +24,8 @@ fn a_model_exchange_call_allocates_nothing() {
         let text = std::fs::read_to_string(root.join("examples").join(name)).unwrap();
         let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
             .join("fmi-alloc")
-            .join(name)
-            .join("resources");
-        std::fs::create_dir_all(&dir).unwrap();
-        std::fs::write(dir.join(CASE_FILE), &text).unwrap();
-        let uri = CString::new(format!("file://{}", dir.display())).unwrap();
-        let id = CString::new(guid(&text)).unwrap();
-        let functions = CallbackFunctions {
-            logger: None,
-            allocate_memory: None,
-            free_memory: None,
-            step_finished: None,
-            component_environment: std::ptr::null_mut(),
-        };
-        // SAFETY: NUL-terminated strings; the callbacks outlive the instance.
-        let fmu = unsafe { fmi2Instantiate(c"a".as_ptr(), 0, id.as_ptr(), uri.as_ptr(), &functions, 0, 0) };
+            .join(name);
+        let fmu = support::instantiate(&text, 0, &dir, &guid(&text));
         assert!(!fmu.is_null());
         let inputs: [u32; 10] = std::array::from_fn(|i| i as u32 + 1);
         let outputs: [u32; 8] = std::array::from_fn(|i| i as u32 + 11);
@@ -60,7 +48,11 @@ fn a_model_exchange_call_allocates_nothing() {
         assert_eq!(y[7], 1.0, "loaded");
         x[5..].copy_from_slice(&[3.0, -1.0, 2.0, 0.05, -0.02]);
         x[0] *= 1.01;
-        assert_eq!(allocations(|| call(x, &mut y)), ((0, 0), 0), "{name} warm, damped");
+        assert_eq!(
+            allocations(|| call(x, &mut y)),
+            ((0, 0), 0),
+            "{name} warm, damped"
+        );
         let lifted = [0.0, 0.0, -0.05, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0];
         let ((a, b), n) = allocations(|| call(lifted, &mut y));
         assert_eq!((a, b, y[7]), (0, 0, 0.0), "{name} lifted off");

@@ -12,7 +12,9 @@ use kontakt_fmi::description::guid;
 use kontakt_fmi::fmi2::*;
 use kontakt_fmi::model::Model;
 use nalgebra::{Isometry3, Translation3, UnitQuaternion, Vector3};
-use std::ffi::{CString, c_void};
+use std::ffi::c_void;
+
+mod support;
 use std::path::PathBuf;
 
 const OK: i32 = 0;
@@ -120,36 +122,12 @@ impl Drop for Fmu {
     }
 }
 
-/// `fmi2Instantiate` with a resources folder holding `case`, no logger.
+/// `fmi2Instantiate` of `case` in a folder of the test's own.
 fn instantiate(case: &str, fmu_type: i32, tag: &str, guid: &str) -> *mut c_void {
     let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
         .join("fmi2")
-        .join(tag)
-        .join("resources");
-    std::fs::create_dir_all(&dir).unwrap();
-    std::fs::write(dir.join(CASE_FILE), case).unwrap();
-    let uri = CString::new(format!("file://{}/", dir.display()).replace(' ', "%20")).unwrap();
-    let name = CString::new(tag).unwrap();
-    let guid = CString::new(guid).unwrap();
-    let functions = Box::leak(Box::new(CallbackFunctions {
-        logger: None,
-        allocate_memory: None,
-        free_memory: None,
-        step_finished: None,
-        component_environment: std::ptr::null_mut(),
-    }));
-    // SAFETY: NUL-terminated strings, callbacks that outlive the instance.
-    unsafe {
-        fmi2Instantiate(
-            name.as_ptr(),
-            fmu_type,
-            guid.as_ptr(),
-            uri.as_ptr(),
-            functions,
-            0,
-            0,
-        )
-    }
+        .join(tag);
+    support::instantiate(case, fmu_type, &dir, guid)
 }
 
 const U: [&str; 5] = ["dx", "dy", "dz", "theta_x", "theta_y"];
@@ -288,7 +266,10 @@ fn bearing_derivatives_are_minus_the_stiffness_and_the_difference_quotients() {
     let minus = fmu.get(&["Fx"]).1[0];
     let q = (plus - minus) / (2.0 * h);
     assert!((q - d[0]).abs() <= 1e-5 * k[0][0].abs(), "{q} vs {}", d[0]);
-    assert!((d[0] + k[0][0] * 1.0).abs() > 1e-4 * k[0][0].abs(), "no velocity term?");
+    assert!(
+        (d[0] + k[0][0] * 1.0).abs() > 1e-4 * k[0][0].abs(),
+        "no velocity term?"
+    );
     // the derivative does not move the element's warm start: same outputs after it
     fmu.set(&["dx"], &[u[0]]);
     let before = fmu.get(&R).1;
@@ -348,14 +329,34 @@ fn bad_input_is_an_error_naming_the_variable_and_never_a_crash() {
 fn illegal_calls_and_mismatched_fmus_are_refused() {
     let case = bearing_case();
     // a model description of another case
-    assert!(instantiate(&case, 0, "bearing-guid", "{00000000-0000-0000-0000-000000000000}").is_null());
+    assert!(
+        instantiate(
+            &case,
+            0,
+            "bearing-guid",
+            "{00000000-0000-0000-0000-000000000000}"
+        )
+        .is_null()
+    );
     // a resources folder without the case, a method that is no element
-    assert!(instantiate("method = \"hertz\"", 0, "hertz", &guid("method = \"hertz\"")).is_null());
+    assert!(
+        instantiate(
+            "method = \"hertz\"",
+            0,
+            "hertz",
+            &guid("method = \"hertz\"")
+        )
+        .is_null()
+    );
     let fmu = Fmu::new(&case, 0, "bearing-sequence");
     let mut x = 0.0;
     // SAFETY: an instance; one value.
     unsafe {
-        assert_eq!(fmi2GetReal(fmu.c, &11, 1, &mut x), ERROR, "before initialization");
+        assert_eq!(
+            fmi2GetReal(fmu.c, &11, 1, &mut x),
+            ERROR,
+            "before initialization"
+        );
         assert_eq!(fmi2ExitInitializationMode(fmu.c), ERROR);
         assert_eq!(fmi2DoStep(fmu.c, 0.0, 0.1, 1), ERROR, "a CS call on ME");
     }
@@ -364,7 +365,11 @@ fn illegal_calls_and_mismatched_fmus_are_refused() {
     unsafe {
         assert_eq!(fmi2GetDerivatives(fmu.c, std::ptr::null_mut(), 0), OK);
         assert_eq!(fmi2GetContinuousStates(fmu.c, &mut x, 1), ERROR);
-        assert_eq!(fmu.set(&["damping_s"], &[0.1]), ERROR, "parameter in continuous time");
+        assert_eq!(
+            fmu.set(&["damping_s"], &[0.1]),
+            ERROR,
+            "parameter in continuous time"
+        );
         assert!(fmu.message().contains("damping_s"));
         assert_eq!(fmi2EnterEventMode(fmu.c), OK);
         assert_eq!(fmu.set(&["damping_s"], &[0.1]), OK, "tunable in event mode");
@@ -411,10 +416,32 @@ fn pose(t: [f64; 3], angle: f64) -> [f64; 7] {
 }
 
 const CONTACT_IN: [&str; 26] = [
-    "pose1.x", "pose1.y", "pose1.z", "pose1.qw", "pose1.qx", "pose1.qy", "pose1.qz", "pose2.x",
-    "pose2.y", "pose2.z", "pose2.qw", "pose2.qx", "pose2.qy", "pose2.qz", "twist1.vx",
-    "twist1.vy", "twist1.vz", "twist1.wx", "twist1.wy", "twist1.wz", "twist2.vx", "twist2.vy",
-    "twist2.vz", "twist2.wx", "twist2.wy", "twist2.wz",
+    "pose1.x",
+    "pose1.y",
+    "pose1.z",
+    "pose1.qw",
+    "pose1.qx",
+    "pose1.qy",
+    "pose1.qz",
+    "pose2.x",
+    "pose2.y",
+    "pose2.z",
+    "pose2.qw",
+    "pose2.qx",
+    "pose2.qy",
+    "pose2.qz",
+    "twist1.vx",
+    "twist1.vy",
+    "twist1.vz",
+    "twist1.wx",
+    "twist1.wy",
+    "twist1.wz",
+    "twist2.vx",
+    "twist2.vy",
+    "twist2.vz",
+    "twist2.wx",
+    "twist2.wy",
+    "twist2.wz",
 ];
 
 #[test]
@@ -444,7 +471,13 @@ fn contact_outputs_equal_the_element_bit_for_bit() {
         let p2 = pose([0.0, 0.0, 0.0], 0.0);
         let t1 = [10.0, 0.0, -1.0, 0.0, 2.0, 0.5];
         let t2 = [0.0; 6];
-        let x: Vec<f64> = p1.iter().chain(&p2).chain(&t1).chain(&t2).copied().collect();
+        let x: Vec<f64> = p1
+            .iter()
+            .chain(&p2)
+            .chain(&t1)
+            .chain(&t2)
+            .copied()
+            .collect();
         assert_eq!(fmu.set(&CONTACT_IN, &x), OK);
         let (s, got) = fmu.get(&out);
         assert_eq!(s, OK, "{}", fmu.message());
@@ -461,7 +494,9 @@ fn contact_outputs_equal_the_element_bit_for_bit() {
                 Vector3::new(t[3], t[4], t[5]),
             )
         };
-        let r = element.evaluate(&iso(p1), &iso(p2), &tw(t1), &tw(t2)).unwrap();
+        let r = element
+            .evaluate(&iso(p1), &iso(p2), &tw(t1), &tw(t2))
+            .unwrap();
         let want = [
             r.force1.x,
             r.force1.y,
@@ -494,7 +529,11 @@ fn contact_derivative_of_the_force_is_the_hertz_stiffness() {
     assert_eq!(s, OK, "{}", fmu.message());
     // Hertz: F ∝ δ^(3/2), so dF/dz = −dF/dδ = −(3/2) F/δ
     let want = -1.5 * f[0] / delta;
-    assert!((d[0] - want).abs() <= 1e-6 * want.abs(), "{} vs {want}", d[0]);
+    assert!(
+        (d[0] - want).abs() <= 1e-6 * want.abs(),
+        "{} vs {want}",
+        d[0]
+    );
     assert_eq!(d[1], 0.0);
     // a quaternion far from unit: an error naming it; NaN: an error naming the input
     assert_eq!(fmu.set(&["pose1.qw"], &[1.5]), OK);
@@ -530,7 +569,10 @@ fn contact_parameters_replan_the_element() {
     assert_eq!(f2[1], f1[1]);
     assert!((f2[0] / f1[0] - 2.0).abs() < 1e-12, "{f1:?} {f2:?}");
     // damping: approaching at 1 mm/s through the ramp adds c·δ̇ with c = 50 at full ramp
-    assert_eq!(fmu.set(&["damping_coefficient", "twist1.vz"], &[50.0, -1.0]), OK);
+    assert_eq!(
+        fmu.set(&["damping_coefficient", "twist1.vz"], &[50.0, -1.0]),
+        OK
+    );
     let d = fmu.get(&["damping_force"]).1[0];
     assert!((d - 50.0).abs() < 1e-9, "{d}");
     assert_eq!(fmu.set(&["mu"], &[-1.0]), ERROR);

@@ -73,6 +73,14 @@ def test_fmpy_finds_no_problems(fmus):
         assert {v.unit for v in md.modelVariables if v.unit} <= units
 
 
+def simulate(path, fmi_type, table, output, step=0.05, stop_time=1.0, **kw):
+    """FMPy's simulation from 0 to `stop_time` with the input table: outputs every `step`
+    (model exchange) or steps of `step` (co-simulation)."""
+    return fmpy.simulate_fmu(
+        path, fmi_type=fmi_type, stop_time=stop_time, step_size=step, output_interval=step, input=table, output=output, **kw
+    )
+
+
 def bearing_input():
     """An input table of the 32008 X: radial, axial and tilt displacements that load the
     bearing and lift it off (dz < 0 pulls the cone out)."""
@@ -96,14 +104,7 @@ def kontakt_bearing_reaction(bearing, u):
 
 
 def test_bearing_model_exchange_equals_kontakt(fmus, repo):
-    result = fmpy.simulate_fmu(
-        fmus["bearing"],
-        fmi_type="ModelExchange",
-        stop_time=1.0,
-        output_interval=0.05,
-        input=bearing_input(),
-        output=U + R + ["max_element_load", "status"],
-    )
+    result = simulate(fmus["bearing"], "ModelExchange", bearing_input(), U + R + ["max_element_load", "status"])
     bearing = kt.Bearing(repo / BEARING_CASE)
     loaded = 0
     for row in result:
@@ -120,14 +121,7 @@ def test_bearing_model_exchange_equals_kontakt(fmus, repo):
 
 def test_bearing_co_simulation_holds_the_inputs_over_a_step(fmus, repo):
     table = bearing_input()
-    result = fmpy.simulate_fmu(
-        fmus["bearing"],
-        fmi_type="CoSimulation",
-        stop_time=1.0,
-        step_size=0.1,
-        input=table,
-        output=U + R,
-    )
+    result = simulate(fmus["bearing"], "CoSimulation", table, U + R, step=0.1)
     bearing = kt.Bearing(repo / BEARING_CASE)
     # FMPy sets the inputs at t, steps to t + h and reads the variables: the row at t + h
     # holds the inputs of t (a communication-step delay) and the outputs of those inputs
@@ -161,14 +155,7 @@ def test_contact_model_exchange_equals_kontakt(fmus, repo):
     table["pose1.qw"], table["pose1.qz"] = np.cos(a / 2), np.sin(a / 2)
     table["twist1.vx"] = 50.0
     table["twist1.wy"] = 3.0
-    result = fmpy.simulate_fmu(
-        fmus["contact"],
-        fmi_type="ModelExchange",
-        stop_time=1.0,
-        output_interval=0.05,
-        input=table,
-        output=CONTACT_IN + CONTACT_OUT,
-    )
+    result = simulate(fmus["contact"], "ModelExchange", table, CONTACT_IN + CONTACT_OUT)
     element = kt.ContactElement.from_file(repo / CONTACT_CASE)
     touching = 0
     for row in result:
@@ -212,15 +199,7 @@ ME_TRANSITIONS = {
 
 def test_the_call_sequence_is_legal_and_every_call_ok(fmus):
     calls = []
-    fmpy.simulate_fmu(
-        fmus["bearing"],
-        fmi_type="ModelExchange",
-        stop_time=0.2,
-        output_interval=0.1,
-        input=bearing_input(),
-        output=R,
-        fmi_call_logger=calls.append,
-    )
+    simulate(fmus["bearing"], "ModelExchange", bearing_input(), R, step=0.1, stop_time=0.2, fmi_call_logger=calls.append)
     state = None
     names = []
     for line in calls:
@@ -237,52 +216,38 @@ def test_the_call_sequence_is_legal_and_every_call_ok(fmus):
     assert names.count("fmi2GetReal") >= 3 and "fmi2Terminate" in names
 
 
-def test_nan_input_is_an_error_with_a_logged_message_not_a_crash(fmus):
-    table = bearing_input()
-    table["dz"][3] = np.nan
+def failed_run(path, fmi_type, table):
+    """Simulate until the FMU refuses: the FMPy exception and the messages the FMU's
+    logger received (status, category, message)."""
     messages = []
 
     def logger(component, instance, status, category, message):
         messages.append((status, category.decode(), message.decode()))
 
     with pytest.raises(FMICallException) as e:
-        fmpy.simulate_fmu(
-            fmus["bearing"],
-            fmi_type="ModelExchange",
-            stop_time=1.0,
-            output_interval=0.1,
-            input=table,
-            output=R,
-            logger=logger,
-        )
-    assert e.value.function == "fmi2SetReal" and e.value.status == 3  # fmi2Error
-    assert any(
-        s == 3 and c == "logStatusError" and "dz = NaN" in m for s, c, m in messages
-    ), messages
+        simulate(path, fmi_type, table, R, step=0.1, logger=logger)
+    return e.value, messages
+
+
+def test_nan_input_is_an_error_with_a_logged_message_not_a_crash(fmus):
+    table = bearing_input()
+    table["dz"][3] = np.nan
+    e, messages = failed_run(fmus["bearing"], "ModelExchange", table)
+    assert e.function == "fmi2SetReal" and e.status == 3  # fmi2Error
+    assert any(s == 3 and c == "logStatusError" and "dz = NaN" in m for s, c, m in messages), messages
     # the process lives on: the same FMU simulates again
-    fmpy.simulate_fmu(fmus["bearing"], fmi_type="CoSimulation", stop_time=0.1, step_size=0.1, input=bearing_input(), output=R)
+    simulate(fmus["bearing"], "CoSimulation", bearing_input(), R, step=0.1, stop_time=0.1)
 
 
 def test_a_displacement_beyond_validity_is_a_discard_naming_the_input(fmus):
     table = bearing_input()
     table["dx"][5:] = 7.0  # above the roller diameter (6.49 mm)
-    messages = []
-
-    def logger(component, instance, status, category, message):
-        messages.append((status, message.decode()))
-
-    with pytest.raises(FMICallException) as e:
-        fmpy.simulate_fmu(
-            fmus["bearing"],
-            fmi_type="CoSimulation",
-            stop_time=1.0,
-            step_size=0.1,
-            input=table,
-            output=R,
-            logger=logger,
-        )
-    assert e.value.status == 2  # fmi2Discard
-    assert any(s == 2 and "invalid dx = " in m and "roller_diameter_mm" in m for s, m in messages), messages
+    e, messages = failed_run(fmus["bearing"], "CoSimulation", table)
+    assert e.status == 2  # fmi2Discard
+    assert any(
+        s == 2 and c == "logStatusDiscard" and "invalid dx = " in m and "roller_diameter_mm" in m
+        for s, c, m in messages
+    ), messages
 
 
 def test_tunable_damping_parameter(fmus, repo):
@@ -290,15 +255,7 @@ def test_tunable_damping_parameter(fmus, repo):
     t = np.array([0.0, 1.0])
     table = np.zeros(2, dtype=[("time", float), ("dx", float), ("dz", float), ("vx", float)])
     table["time"], table["dx"], table["dz"], table["vx"] = t, 0.01, 0.02, 10.0
-    result = fmpy.simulate_fmu(
-        fmus["bearing"],
-        fmi_type="ModelExchange",
-        stop_time=1.0,
-        output_interval=0.5,
-        input=table,
-        output=R,
-        start_values={"damping_s": 1e-3},
-    )
+    result = simulate(fmus["bearing"], "ModelExchange", table, R, step=0.5, start_values={"damping_s": 1e-3})
     r = kt.Bearing(repo / BEARING_CASE).solve(
         prescribed={"dx_mm": 0.01, "dy_mm": 0.0, "dz_mm": 0.02, "tilt_x_rad": 0.0, "tilt_y_rad": 0.0}
     )
