@@ -198,8 +198,9 @@ unsafe fn slice_mut<'a, T>(p: *mut T, n: usize, name: &str) -> Result<&'a mut [T
     Ok(unsafe { std::slice::from_raw_parts_mut(p, n) })
 }
 
-/// The folder of a `file:` URI (`file:///tmp/x/resources/`, `file:/tmp/x`,
-/// `file://localhost/tmp/x`), percent-decoded.
+/// The folder of a `file:` URI, percent-decoded: `file:` followed by `//` and an empty or
+/// `localhost` authority and the absolute path (what FMPy and most hosts send), or by the
+/// absolute path alone.
 pub fn uri_to_path(uri: &str) -> Option<PathBuf> {
     let rest = uri.strip_prefix("file:")?;
     let rest = match rest.strip_prefix("//") {
@@ -217,7 +218,7 @@ pub fn uri_to_path(uri: &str) -> Option<PathBuf> {
         }
     }
     let mut path = String::from_utf8(bytes).ok()?;
-    // file:///C:/x on Windows
+    // a drive letter on Windows: `/C:/x` after the authority
     if cfg!(windows) && path.len() > 2 && path.as_bytes()[2] == b':' {
         path.remove(0);
     }
