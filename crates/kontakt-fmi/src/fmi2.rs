@@ -242,7 +242,11 @@ fn instantiate(
     let dir = uri_to_path(resources).ok_or_else(|| {
         format!("fmuResourceLocation = {resources:?}: expected a file: URI of the FMU's resources folder")
     })?;
-    let path = dir.join(CASE_FILE);
+    // some hosts pass the FMU's folder instead of its resources/ folder
+    let path = [dir.join(CASE_FILE), dir.join("resources").join(CASE_FILE)]
+        .into_iter()
+        .find(|p| p.is_file())
+        .unwrap_or_else(|| dir.join(CASE_FILE));
     let text = std::fs::read_to_string(&path)
         .map_err(|e| format!("cannot read the FMU's case {}: {e}", path.display()))?;
     let expected = crate::description::guid(&text);

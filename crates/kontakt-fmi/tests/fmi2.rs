@@ -338,7 +338,18 @@ fn illegal_calls_and_mismatched_fmus_are_refused() {
         )
         .is_null()
     );
-    // a resources folder without the case, a method that is no element
+    // a host that passes the FMU's folder instead of resources/
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+        .join("fmi2")
+        .join("unzipped");
+    let resources = support::instantiate(&case, 0, &dir, &guid(&case));
+    // SAFETY: from fmi2Instantiate, freed once.
+    unsafe { fmi2FreeInstance(resources) };
+    let c = support::instantiate_at(&dir, 0, &guid(&case));
+    assert!(!c.is_null());
+    // SAFETY: from fmi2Instantiate, freed once.
+    unsafe { fmi2FreeInstance(c) };
+    // a method that is no element
     assert!(
         instantiate(
             "method = \"hertz\"",

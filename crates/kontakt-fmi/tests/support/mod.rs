@@ -14,7 +14,12 @@ pub fn instantiate(case: &str, fmu_type: i32, dir: &Path, guid: &str) -> *mut c_
     let resources = dir.join("resources");
     std::fs::create_dir_all(&resources).expect("a resources folder");
     std::fs::write(resources.join(CASE_FILE), case).expect("the case written");
-    let uri = format!("{}//{}/", "file:", resources.display()).replace(' ', "%20");
+    instantiate_at(&resources, fmu_type, guid)
+}
+
+/// `fmi2Instantiate` with the resource location `folder` (a `file:` URI of it).
+pub fn instantiate_at(folder: &Path, fmu_type: i32, guid: &str) -> *mut c_void {
+    let uri = format!("{}//{}/", "file:", folder.display()).replace(' ', "%20");
     let uri = CString::new(uri).expect("no NUL");
     let guid = CString::new(guid).expect("no NUL");
     // the callbacks outlive every instance
