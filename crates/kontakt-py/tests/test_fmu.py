@@ -263,3 +263,42 @@ def test_tunable_damping_parameter(fmus, repo):
     want = -np.asarray(r.load_carried)[:5] - 1e-3 * k[:, 0] * 10.0
     got = np.array([result[-1][n] for n in R])
     assert np.abs(got - want).max() <= 1e-9 * np.abs(want).max(), (got, want)
+
+
+def test_directional_derivative_and_fmu_state_through_fmpy(fmus, repo):
+    """FMPy's low-level API calls the C functions themselves: the directional derivative of
+    the reaction is minus kontakt's stiffness, column by column, and an FMU state saved at
+    one displacement restores its outputs."""
+    import shutil
+
+    from fmpy.fmi2 import FMU2Model
+
+    path = fmus["bearing"]
+    md = fmpy.read_model_description(path)
+    vr = {v.name: v.valueReference for v in md.modelVariables}
+    unzipped = fmpy.extract(path)
+    fmu = FMU2Model(guid=md.guid, unzipDirectory=unzipped, modelIdentifier=md.modelExchange.modelIdentifier, instanceName="k")
+    try:
+        fmu.instantiate()
+        fmu.setupExperiment(startTime=0.0)
+        fmu.enterInitializationMode()
+        fmu.exitInitializationMode()
+        fmu.enterContinuousTimeMode()
+        u = [0.01, 0.003, 0.02, 1e-4, -5e-5]
+        fmu.setReal([vr[n] for n in U], u)
+        before = fmu.getReal([vr[n] for n in R])
+        keys = ["dx_mm", "dy_mm", "dz_mm", "tilt_x_rad", "tilt_y_rad"]
+        k = np.asarray(kt.Bearing(repo / BEARING_CASE).solve(prescribed=dict(zip(keys, u))).stiffness)
+        for j, name in enumerate(U):
+            d = fmu.getDirectionalDerivative([vr[n] for n in R], [vr[name]], [1.0])
+            np.testing.assert_allclose(d, -k[:, j], rtol=1e-12, atol=1e-12 * np.abs(k).max())
+        state = fmu.getFMUstate()
+        fmu.setReal([vr["dx"]], [0.02])
+        assert fmu.getReal([vr["Fx"]])[0] != before[0]
+        fmu.setFMUstate(state)
+        assert fmu.getReal([vr[n] for n in R]) == before
+        fmu.freeFMUstate(state)
+        fmu.terminate()
+    finally:
+        fmu.freeInstance()
+        shutil.rmtree(unzipped, ignore_errors=True)
