@@ -18,6 +18,7 @@ use kontakt::{Error, Result};
 use kontakt_bearing::friction::aihara::{
     AiharaBearing, AiharaLubricant, aihara, rib_film_parameter,
 };
+use kontakt_bearing::friction::crb_rib::CylindricalRibFriction;
 use kontakt_bearing::friction::raceway::RacewayLosses;
 use kontakt_bearing::friction::schaeffler::m0;
 use kontakt_bearing::friction::skf2004::{
@@ -72,6 +73,23 @@ pub struct OperatingSpec {
     /// models (`friction.speed_sweep`; 1 to 10 000 speeds).
     #[serde(default)]
     pub sweep_inner_rpm: Option<Vec<f64>>,
+}
+
+/// The `[operating]` of a case without the table: every key at its default.
+impl Default for OperatingSpec {
+    fn default() -> Self {
+        OperatingSpec {
+            supply: Supply::default(),
+            oil_level_mm: None,
+            drag: DragSpec::default(),
+            rolling_resistance: RollingSpec::default(),
+            thermal: yes(),
+            conductivity_w_mk: conductivity(),
+            film_starvation: one(),
+            starvation_degree: None,
+            sweep_inner_rpm: None,
+        }
+    }
 }
 
 fn yes() -> bool {
@@ -407,38 +425,14 @@ fn point(
         key: "lubricant".into(),
         message: "missing table `[lubricant]`: [operating] needs the oil (iso_vg or nu40_mm2_s and nu100_mm2_s, density_kg_m3, alpha_per_mpa, temperature_c, roughness_mm)".into(),
     })?;
-    let rib_lub: RibLubrication = lub.lubrication()?;
+    let RacewayPlan {
+        mut model,
+        rib_lub,
+        law,
+        nu,
+    } = plan_raceways(op, lub, friction, bearing)?;
     let oil = rib_lub.lubricant;
     let t = lub.temperature_c;
-    let nu = oil
-        .kinematic_viscosity(t)
-        .map_err(|e| e.map_field(|_| "lubricant.temperature_c".to_string()))?;
-    let law = friction.copied().unwrap_or_default().law(true)?;
-    let sigma = lub.roughness_mm[0].hypot(lub.roughness_mm[1]);
-    let mut raceway = raceway_lubrication(
-        &oil,
-        t,
-        op.thermal,
-        sigma,
-        law,
-        match op.rolling_resistance {
-            RollingSpec::BibouletHoupert => RollingResistanceModel::BibouletHoupert,
-            RollingSpec::ZhouHoeprich => RollingResistanceModel::ZhouHoeprich,
-        },
-    )?;
-    raceway.conductivity = op.conductivity_w_mk;
-    raceway.film_starvation = op.film_starvation;
-    raceway.starvation_degree = op.starvation_degree;
-    let losses = RacewayLosses::new(raceway).map_err(|e| {
-        e.map_field(|f| match f {
-            "conductivity" => "operating.conductivity_w_mk".into(),
-            "starvation_factor" => "operating.film_starvation".into(),
-            "starvation_degree" => "operating.starvation_degree".into(),
-            "roughness" => "lubricant.roughness_mm".into(),
-            other => format!("friction.{other}"),
-        })
-    })?;
-    let mut model = BearingFrictionModel::new(bearing.clone(), losses)?;
     let (wi, wo) = (rpm[0] / RPM_PER_RAD_S, rpm[1] / RPM_PER_RAD_S);
     let starting = wi == wo;
     let mut warnings = Vec::new();
@@ -477,36 +471,9 @@ fn point(
             }
             match solver.rib_pair() {
                 Some(pair) => {
-                    let rib = RibFrictionModel::new(
-                        pair.spec,
-                        RollerSet {
-                            count: bearing.rollers,
-                            length: bearing.effective_length_mm,
-                            density: 7850.0,
-                        },
-                        law,
-                        Some(rib_lub),
-                        false,
-                    )?;
-                    // At standstill: the kinematics of Δω = 1 rad/s, and each rib's
-                    // starting torque μ_b Q_f v_s(Δω = 1) (boundary friction at the
-                    // contact point's sliding speed per unit Δω, no film).
-                    let (ri, ro) = if starting { (1.0, 0.0) } else { (wi, wo) };
-                    let k = rib.kinematics(ri, ro)?;
-                    let loads: Vec<RollerRibLoad> = solver
-                        .roller_loads()
-                        .iter()
-                        .map(|r| RollerRibLoad {
-                            azimuth: r.azimuth_rad,
-                            loads: RollerLoads {
-                                outer_raceway: r.outer_n,
-                                inner_raceway: r.inner_n,
-                                rib: r.rib_n,
-                                centrifugal: solver.centrifugal_n(),
-                            },
-                        })
-                        .collect();
-                    let f = rib.evaluate_rollers(PressureModel::Hertz, &k, &loads)?;
+                    let rib = rib_model(pair, bearing, law, rib_lub)?;
+                    let mut values = vec![0.0; bearing.rollers];
+                    let f = rib_powers(&rib, solver, [wi, wo], &mut Vec::new(), &mut values)?;
                     if let Some(c) = f.most_loaded().and_then(|r| r.friction.as_ref())
                         && let Some(film) = &c.film_thickness
                     {
@@ -516,22 +483,15 @@ fn point(
                             rib_film_parameter(film.minimum, sigma_rib)?,
                         ));
                     }
-                    rib_values = Some(
-                        f.rollers
-                            .iter()
-                            .map(|r| match (&r.friction, starting) {
-                                (Some(c), true) => {
-                                    law.boundary_coefficient * r.loads.rib * c.sliding_speed.abs()
-                                }
-                                (_, true) | (None, false) => 0.0,
-                                (Some(_), false) => r.power(),
-                            })
-                            .collect(),
-                    );
+                    rib_values = Some(values);
                 }
-                None => warnings.push(
-                    "rib friction not computed for cylindrical roller bearings yet".to_string(),
-                ),
+                None => {
+                    // a cylindrical roller bearing's roller ends on its ribs
+                    let crb = crb_rib_model(bearing, law, rib_lub)?;
+                    let mut values = vec![0.0; bearing.rollers];
+                    crb_rib_values(&crb, solver, [wi, wo], &mut values)?;
+                    rib_values = Some(values);
+                }
             }
         }
     }
@@ -544,26 +504,8 @@ fn point(
         ),
         None => None,
     };
-    let lubrication = match op.supply {
-        Supply::Circulating => Lubrication::OilJet,
-        Supply::OilBath => Lubrication::OilBath {
-            level_mm: op.oil_level_mm.ok_or_else(|| {
-                Error::invalid(
-                    "operating.oil_level_mm",
-                    "missing",
-                    "the oil level above the lowest point of the outer raceway, mm, with supply = \"oil_bath\"",
-                )
-            })?,
-        },
-    };
+    let lubrication = oil_supply(op)?;
     if let Lubrication::OilBath { level_mm } = lubrication {
-        if !(level_mm.is_finite() && level_mm >= 0.0) {
-            return Err(Error::invalid(
-                "operating.oil_level_mm",
-                level_mm,
-                "a finite oil level >= 0 mm above the lowest point of the outer raceway",
-            ));
-        }
         // The bearing's centre lies the outer raceway's mid radius above its lowest point.
         let centre = 0.5 * bearing.pitch_diameter_mm
             + 0.5 * bearing.roller_diameter_mm * bearing.contact_angle_rad.cos();
@@ -584,23 +526,7 @@ fn point(
     let mut cat = CatalogueTorques::default();
     if let (Some(c), Some(env)) = (catalogue, envelope.as_ref()) {
         if let Some(series) = &c.skf_series {
-            let skf = match bearing.kind {
-                RollerBearingKind::Tapered => SkfBearing::TaperedRoller {
-                    series: TaperedSeries::from_name(series)
-                        .map_err(|e| e.map_field(|_| "catalogue.skf_series".to_string()))?,
-                    y: c.y.ok_or_else(|| {
-                        Error::invalid(
-                            "catalogue.y",
-                            "missing",
-                            "the axial load factor Y of the product table with skf_series",
-                        )
-                    })?,
-                },
-                _ => SkfBearing::CylindricalRoller {
-                    series: CylindricalSeries::from_name(series)
-                        .map_err(|e| e.map_field(|_| "catalogue.skf_series".to_string()))?,
-                },
-            };
+            let skf = skf_bearing(c, series, bearing)?;
             let t = skf2004(&skf, env, &point, &SkfOptions::default())
                 .map_err(|e| e.map_field(key("catalogue")))?;
             cat.skf_total_nmm = Some(t.total_nmm);
@@ -766,6 +692,254 @@ fn point(
         warnings,
         speed_sweep: Vec::new(),
     })
+}
+
+/// The oil supply of `[operating]` as the catalogue models take it.
+///
+/// # Errors
+/// Field `operating.oil_level_mm`: missing with `supply = "oil_bath"`, not finite or < 0.
+pub(crate) fn oil_supply(op: &OperatingSpec) -> Result<Lubrication> {
+    let lubrication = match op.supply {
+        Supply::Circulating => Lubrication::OilJet,
+        Supply::OilBath => Lubrication::OilBath {
+            level_mm: op.oil_level_mm.ok_or_else(|| {
+                Error::invalid(
+                    "operating.oil_level_mm",
+                    "missing",
+                    "the oil level above the lowest point of the outer raceway, mm, with supply = \"oil_bath\"",
+                )
+            })?,
+        },
+    };
+    if let Lubrication::OilBath { level_mm } = lubrication
+        && !(level_mm.is_finite() && level_mm >= 0.0)
+    {
+        return Err(Error::invalid(
+            "operating.oil_level_mm",
+            level_mm,
+            "a finite oil level >= 0 mm above the lowest point of the outer raceway",
+        ));
+    }
+    Ok(lubrication)
+}
+
+/// The SKF 2004 bearing of `[catalogue]` with the series `series` for `bearing`'s kind.
+///
+/// # Errors
+/// Fields `catalogue.skf_series` (unknown series) and `catalogue.y` (missing, tapered).
+pub(crate) fn skf_bearing(
+    c: &CatalogueSpec,
+    series: &str,
+    bearing: &RollerBearing,
+) -> Result<SkfBearing> {
+    Ok(match bearing.kind {
+        RollerBearingKind::Tapered => SkfBearing::TaperedRoller {
+            series: TaperedSeries::from_name(series)
+                .map_err(|e| e.map_field(|_| "catalogue.skf_series".to_string()))?,
+            y: c.y.ok_or_else(|| {
+                Error::invalid(
+                    "catalogue.y",
+                    "missing",
+                    "the axial load factor Y of the product table with skf_series",
+                )
+            })?,
+        },
+        _ => SkfBearing::CylindricalRoller {
+            series: CylindricalSeries::from_name(series)
+                .map_err(|e| e.map_field(|_| "catalogue.skf_series".to_string()))?,
+        },
+    })
+}
+
+/// The planned raceway friction of a case: the model of `bearing` with the raceway
+/// lubrication of `[lubricant]`, `[friction]` and `[operating]`, the rib lubrication and
+/// friction law, and the kinematic viscosity ν \[mm²/s\] at the oil temperature.
+pub(crate) struct RacewayPlan {
+    /// The raceway friction model.
+    pub model: BearingFrictionModel,
+    /// The rib contacts' lubrication (`[lubricant]`).
+    pub rib_lub: RibLubrication,
+    /// The friction law (`[friction]`, film-dependent).
+    pub law: kontakt::friction::FrictionLaw,
+    /// Kinematic viscosity at `lubricant.temperature_c` \[mm²/s\].
+    pub nu: f64,
+}
+
+/// Plan the raceway friction of `bearing` (tapered or cylindrical) from the case's
+/// tables.
+///
+/// # Errors
+/// [`Error::InvalidInput`] naming the case key (`lubricant.*`, `friction.*`,
+/// `operating.*`).
+pub(crate) fn plan_raceways(
+    op: &OperatingSpec,
+    lub: &LubricantSpec,
+    friction: Option<&FrictionSpec>,
+    bearing: &RollerBearing,
+) -> Result<RacewayPlan> {
+    let rib_lub: RibLubrication = lub.lubrication()?;
+    let oil = rib_lub.lubricant;
+    let t = lub.temperature_c;
+    let nu = oil
+        .kinematic_viscosity(t)
+        .map_err(|e| e.map_field(|_| "lubricant.temperature_c".to_string()))?;
+    let law = friction.copied().unwrap_or_default().law(true)?;
+    let sigma = lub.roughness_mm[0].hypot(lub.roughness_mm[1]);
+    let mut raceway = raceway_lubrication(
+        &oil,
+        t,
+        op.thermal,
+        sigma,
+        law,
+        match op.rolling_resistance {
+            RollingSpec::BibouletHoupert => RollingResistanceModel::BibouletHoupert,
+            RollingSpec::ZhouHoeprich => RollingResistanceModel::ZhouHoeprich,
+        },
+    )?;
+    raceway.conductivity = op.conductivity_w_mk;
+    raceway.film_starvation = op.film_starvation;
+    raceway.starvation_degree = op.starvation_degree;
+    let losses = RacewayLosses::new(raceway).map_err(|e| {
+        e.map_field(|f| match f {
+            "conductivity" => "operating.conductivity_w_mk".into(),
+            "starvation_factor" => "operating.film_starvation".into(),
+            "starvation_degree" => "operating.starvation_degree".into(),
+            "roughness" => "lubricant.roughness_mm".into(),
+            other => format!("friction.{other}"),
+        })
+    })?;
+    Ok(RacewayPlan {
+        model: BearingFrictionModel::new(bearing.clone(), losses)?,
+        rib_lub,
+        law,
+        nu,
+    })
+}
+
+/// The rib friction model of a rib-contact solver's roller end/rib pair `pair` (steel
+/// rollers of `bearing`, no centrifugal term: the solver's load distribution has it).
+///
+/// # Errors
+/// Those of [`RibFrictionModel::new`].
+pub(crate) fn rib_model(
+    pair: &kontakt::bearing::RollerRib,
+    bearing: &RollerBearing,
+    law: kontakt::friction::FrictionLaw,
+    rib_lub: RibLubrication,
+) -> Result<RibFrictionModel> {
+    RibFrictionModel::new(
+        pair.spec,
+        RollerSet {
+            count: bearing.rollers,
+            length: bearing.effective_length_mm,
+            density: 7850.0,
+        },
+        law,
+        Some(rib_lub),
+        false,
+    )
+}
+
+/// Every roller's rib friction of a rib-contact `solver` after its solve, at the ring
+/// speeds `[ω_i, ω_o]` \[rad/s\], written to `values` (one per roller): the rib power \[W\]
+/// while the rings turn relative to each other, and at standstill (`ω_i = ω_o`) each rib's
+/// starting torque `μ_b Q_f v_s(Δω = 1)` \[N·mm\] (boundary friction at the contact point's
+/// sliding speed per unit Δω, no film) — what
+/// [`kontakt_bearing::friction::torque::FrictionOperating::rib`] takes. `loads` is a
+/// buffer (reused: no allocation once it holds the rollers; the contact fields of the
+/// rib friction itself are allocated).
+///
+/// # Errors
+/// Those of [`RibFrictionModel::kinematics`] and
+/// [`RibFrictionModel::evaluate_rollers`]; field `rib` for a `values` of the wrong length.
+pub(crate) fn rib_powers(
+    rib: &RibFrictionModel,
+    solver: &RibContactSolver,
+    speeds: [f64; 2],
+    loads: &mut Vec<RollerRibLoad>,
+    values: &mut [f64],
+) -> Result<kontakt::bearing::BearingRibFriction> {
+    let starting = speeds[0] == speeds[1];
+    // At standstill: the kinematics of Δω = 1 rad/s.
+    let (ri, ro) = if starting {
+        (1.0, 0.0)
+    } else {
+        (speeds[0], speeds[1])
+    };
+    let k = rib.kinematics(ri, ro)?;
+    loads.clear();
+    loads.extend(solver.roller_loads().iter().map(|r| RollerRibLoad {
+        azimuth: r.azimuth_rad,
+        loads: RollerLoads {
+            outer_raceway: r.outer_n,
+            inner_raceway: r.inner_n,
+            rib: r.rib_n,
+            centrifugal: solver.centrifugal_n(),
+        },
+    }));
+    if values.len() != loads.len() {
+        return Err(Error::invalid(
+            "rib",
+            values.len(),
+            format!("{} values, one per roller", loads.len()),
+        ));
+    }
+    let f = rib.evaluate_rollers(PressureModel::Hertz, &k, loads)?;
+    let mu_b = rib.law().boundary_coefficient;
+    for (v, r) in values.iter_mut().zip(&f.rollers) {
+        *v = match (&r.friction, starting) {
+            (Some(c), true) => mu_b * r.loads.rib * c.sliding_speed.abs(),
+            (_, true) | (None, false) => 0.0,
+            (Some(_), false) => r.power(),
+        };
+    }
+    Ok(f)
+}
+
+/// The roller-end/rib friction model of a cylindrical roller bearing with ribs
+/// (`roller_model = "rib_contact"`), steel, with the case's friction law and rib
+/// lubrication.
+///
+/// # Errors
+/// Those of [`CylindricalRibFriction::new`].
+pub(crate) fn crb_rib_model(
+    bearing: &RollerBearing,
+    law: kontakt::friction::FrictionLaw,
+    rib_lub: RibLubrication,
+) -> Result<CylindricalRibFriction> {
+    CylindricalRibFriction::new(
+        bearing.pitch_diameter_mm,
+        bearing.roller_diameter_mm,
+        law,
+        Some(rib_lub),
+    )
+}
+
+/// Every roller's rib value of a cylindrical rib-contact `solver` after its solve, at the
+/// ring speeds `[ω_i, ω_o]` \[rad/s\], into `values` (one per roller): the rib power \[W\],
+/// at standstill the rib starting torque \[N·mm\] (as [`rib_powers`]). Allocates nothing.
+///
+/// # Errors
+/// Those of [`CylindricalRibFriction::roller_value`]; field `rib` for a `values` of the
+/// wrong length.
+pub(crate) fn crb_rib_values(
+    model: &CylindricalRibFriction,
+    solver: &RibContactSolver,
+    speeds: [f64; 2],
+    values: &mut [f64],
+) -> Result<()> {
+    let z = solver.roller_loads().len();
+    if values.len() != z {
+        return Err(Error::invalid(
+            "rib",
+            values.len(),
+            format!("{z} values, one per roller"),
+        ));
+    }
+    for (j, v) in values.iter_mut().enumerate() {
+        *v = model.roller_value(solver, j, speeds[0], speeds[1])?;
+    }
+    Ok(())
 }
 
 impl FrictionReport {
