@@ -183,12 +183,21 @@ impl Model {
                 start: Some(start),
             })
             .collect();
+        // the bearing's ring speeds start at the case's [speed]
+        let speeds = match self {
+            Model::Bearing { element, .. } => element.speeds(),
+            Model::Contact { .. } => [0.0; 2],
+        };
         v.extend(self.input_rows().iter().map(|i| Variable {
             name: i.name,
             causality: "input",
             unit: i.unit,
             description: i.description,
-            start: Some(i.start),
+            start: Some(match i.name {
+                "omega_inner" => speeds[0],
+                "omega_outer" => speeds[1],
+                _ => i.start,
+            }),
         }));
         let output = |name, unit, description| Variable {
             name,
@@ -266,12 +275,16 @@ impl Model {
             Model::Bearing { element, last } => {
                 let u = std::array::from_fn(|i| x[i]);
                 let v = std::array::from_fn(|i| x[5 + i]);
-                let r = element.evaluate(u, v).map_err(|e| {
+                let rename = |e: Error| {
                     e.map_field(|f| match BEARING_ARGUMENTS.iter().position(|a| *a == f) {
                         Some(i) => BEARING_INPUTS[i].name.into(),
                         None => f.into(),
                     })
-                })?;
+                };
+                if element.speeds() != [x[10], x[11]] {
+                    element.set_speeds(x[10], x[11]).map_err(rename)?;
+                }
+                let r = element.evaluate(u, v).map_err(rename)?;
                 for (o, row) in out.iter_mut().zip(BEARING_OUTPUTS) {
                     *o = (row.value)(&r);
                 }
@@ -345,8 +358,12 @@ impl Model {
                             .iter()
                             .zip(seed)
                             .map(|(&j, s)| {
-                                let k = r.stiffness[i][j % 5];
-                                s * if j < 5 { -k } else { -beta * k }
+                                // the ring speeds move the friction torque only
+                                s * match j {
+                                    0..5 => -r.stiffness[i][j],
+                                    5..10 => -beta * r.stiffness[i][j - 5],
+                                    _ => 0.0,
+                                }
                             })
                             .sum(),
                     };

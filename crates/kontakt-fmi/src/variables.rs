@@ -104,6 +104,8 @@ pub const BEARING_INPUTS: &[Input] = &[
     Input { name: "vz", unit: Some("mm/s"), description: "velocity of the inner ring along z", start: 0.0 },
     Input { name: "omega_x", unit: Some("rad/s"), description: "tilt rate of the inner ring about x", start: 0.0 },
     Input { name: "omega_y", unit: Some("rad/s"), description: "tilt rate of the inner ring about y", start: 0.0 },
+    Input { name: "omega_inner", unit: Some("rad/s"), description: "inner ring speed about +z for the friction torque (start: the case's [speed])", start: 0.0 },
+    Input { name: "omega_outer", unit: Some("rad/s"), description: "outer ring speed about +z for the friction torque (start: the case's [speed])", start: 0.0 },
 ];
 
 /// The bearing element's outputs: the bearing's reaction on the inner ring (the outer ring
@@ -115,14 +117,17 @@ pub const BEARING_OUTPUTS: &[Output<BearingElementOutput>] = &[
     Output { name: "Fz", unit: Some("N"), description: "force of the bearing on the inner ring along z (the bearing axis)", value: |o| o.force_n[2], derivative: Derivative::Reaction(2) },
     Output { name: "Mx", unit: Some("N.mm"), description: "moment of the bearing on the inner ring about x through the bearing centre", value: |o| o.moment_nmm[0], derivative: Derivative::Reaction(3) },
     Output { name: "My", unit: Some("N.mm"), description: "moment of the bearing on the inner ring about y through the bearing centre", value: |o| o.moment_nmm[1], derivative: Derivative::Reaction(4) },
-    Output { name: "Mz", unit: Some("N.mm"), description: "moment of the bearing on the inner ring about z (the element's moment_nmm[2])", value: |o| o.moment_nmm[2], derivative: Derivative::Differences },
+    Output { name: "Mz", unit: Some("N.mm"), description: "friction moment of the bearing on the inner ring about z, -friction_torque sign(omega_inner - omega_outer) (0 without a [lubricant])", value: |o| o.moment_nmm[2], derivative: Derivative::Differences },
+    Output { name: "friction_torque", unit: Some("N.mm"), description: "the bearing's friction torque M >= 0 (the starting torque at equal ring speeds; 0 without a [lubricant])", value: |o| o.friction.torque_nmm, derivative: Derivative::Differences },
+    Output { name: "friction_power", unit: Some("W"), description: "friction power 1e-3 M |omega_inner - omega_outer|", value: |o| o.friction.power_w, derivative: Derivative::Differences },
     Output { name: "max_element_load", unit: Some("N"), description: "largest rolling-element load", value: |o| o.max_element_load_n, derivative: Derivative::Differences },
     Output { name: "status", unit: None, description: "0: every rolling element lifted off (zero force), 1: loaded", value: |o| match o.status { BearingElementStatus::LiftedOff => 0.0, BearingElementStatus::Loaded => 1.0 }, derivative: Derivative::Zero },
 ];
 
 /// The names the bearing element's errors give its arguments, and the FMI variables they
-/// are: `displacement[i]` is input i, `velocity[i]` input 5 + i.
-pub const BEARING_ARGUMENTS: [&str; 10] = [
+/// are: `displacement[i]` is input i, `velocity[i]` input 5 + i, the ring speeds of
+/// `set_speeds` inputs 10 and 11.
+pub const BEARING_ARGUMENTS: [&str; 12] = [
     "displacement[0]",
     "displacement[1]",
     "displacement[2]",
@@ -133,6 +138,8 @@ pub const BEARING_ARGUMENTS: [&str; 10] = [
     "velocity[2]",
     "velocity[3]",
     "velocity[4]",
+    "inner_rad_s",
+    "outer_rad_s",
 ];
 
 // ---------------------------------------------------------------- the contact element

@@ -279,6 +279,54 @@ fn bearing_derivatives_are_minus_the_stiffness_and_the_difference_quotients() {
 }
 
 #[test]
+fn bearing_friction_outputs_follow_the_ring_speed_inputs() {
+    let case =
+        std::fs::read_to_string(repo().join("examples/bearing_32008x_friction.toml")).unwrap();
+    let fmu = Fmu::new(&case, 0, "bearing-friction");
+    fmu.start(0);
+    let mut element = BearingElement::from_toml(&case).unwrap();
+    // the speed inputs start at the case's [speed]
+    let start = fmu.get(&["omega_inner", "omega_outer"]).1;
+    assert_eq!(start, element.speeds().to_vec());
+    assert!(start[0] != start[1], "{start:?}");
+    let u = [0.01, -0.002, 0.015, 1e-4, 5e-5];
+    let out = ["Mz", "friction_torque", "friction_power", "Fx"];
+    for w in [[100.0, 0.0], [-50.0, 20.0], [10.0, 10.0]] {
+        fmu.set(&U, &u);
+        assert_eq!(fmu.set(&["omega_inner", "omega_outer"], &w), OK);
+        let (s, got) = fmu.get(&out);
+        assert_eq!(s, OK, "{}", fmu.message());
+        element.set_speeds(w[0], w[1]).unwrap();
+        let r = element.evaluate(u, [0.0; 5]).unwrap();
+        let want = [
+            r.moment_nmm[2],
+            r.friction.torque_nmm,
+            r.friction.power_w,
+            r.force_n[0],
+        ];
+        assert_eq!(got, want, "{w:?}");
+        // M > 0 against the relative rotation; the power is 1e-3 M |Δω| W
+        let dw = w[0] - w[1];
+        assert!(got[1] > 0.0);
+        assert_eq!(
+            got[0],
+            -got[1] * dw.signum() * f64::from(u8::from(dw != 0.0))
+        );
+        assert!((got[2] - 1e-3 * got[1] * dw.abs()).abs() <= 1e-12 * got[2].abs().max(1.0));
+    }
+    // the ring speeds do not move the reaction: zero derivative of Fx, the torque's by
+    // differences
+    let (s, d) = fmu.derivative(&["Fx", "friction_torque"], &["omega_inner"], &[1.0]);
+    assert_eq!(s, OK);
+    assert_eq!(d[0], 0.0);
+    assert!(d[1].is_finite());
+    // a ring speed beyond 100 000 r/min: discard naming the input
+    fmu.set(&["omega_inner"], &[1e5]);
+    assert_eq!(fmu.get(&["Fx"]).0, DISCARD);
+    assert!(fmu.message().contains("omega_inner"), "{}", fmu.message());
+}
+
+#[test]
 fn bad_input_is_an_error_naming_the_variable_and_never_a_crash() {
     let case = bearing_case();
     let fmu = Fmu::new(&case, 0, "bearing-bad");

@@ -5,6 +5,7 @@
 #![allow(dead_code, unsafe_code)] // each user takes what it needs; calling the C API
 
 use kontakt_fmi::fmi2::{CASE_FILE, CallbackFunctions, fmi2Instantiate};
+use kontakt_fmi::model::Model;
 use std::ffi::{CString, c_void};
 use std::path::Path;
 
@@ -42,4 +43,21 @@ pub fn instantiate_at(folder: &Path, fmu_type: i32, guid: &str) -> *mut c_void {
             0,
         )
     }
+}
+
+/// The value references of a bearing FMU's displacement and velocity inputs (the first
+/// ten inputs) and of all its outputs, and the position of `status` among the outputs.
+pub fn bearing_references(case: &str) -> (Vec<u32>, Vec<u32>, usize) {
+    let variables = Model::from_case(case).expect("a bearing case").variables();
+    let of = |causality: &str| -> Vec<u32> {
+        (0..variables.len() as u32)
+            .filter(|&i| variables[i as usize].causality == causality)
+            .collect()
+    };
+    let outputs = of("output");
+    let status = outputs
+        .iter()
+        .position(|&i| variables[i as usize].name == "status")
+        .expect("a status output");
+    (of("input")[..10].to_vec(), outputs, status)
 }
