@@ -8,7 +8,9 @@ use crate::args;
 use crate::bearing::plan;
 use crate::errors::to_py;
 use kontakt_case::bearing_model::BearingElement as Element;
-use kontakt_case::bearing_model::{BearingElementOutput, BearingElementStatus};
+use kontakt_case::bearing_model::{
+    BearingElementOutput, BearingElementStatus, ElementFrictionStatus,
+};
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyArrayMethods};
 use pyo3::prelude::*;
@@ -30,7 +32,7 @@ impl BearingElement {
     #[new]
     #[pyo3(signature = (case, damping_s = None))]
     fn new(case: &Bound<'_, PyAny>, damping_s: Option<&Bound<'_, PyAny>>) -> PyResult<Self> {
-        let mut inner = Element::new(plan(case, "kontakt.BearingElement")?);
+        let mut inner = Element::new(plan(case, "kontakt.BearingElement")?).map_err(to_py)?;
         let valid = "a finite damping coefficient beta >= 0 s (the damping matrix is beta times the stiffness)";
         if let Some(b) = args::opt_real(damping_s, "damping_s", valid)? {
             inner.set_damping(b).map_err(to_py)?;
@@ -88,6 +90,20 @@ impl BearingElement {
         Ok(BearingElementResult { out })
     }
 
+    /// Set the ring speeds `inner_rad_s`, `outer_rad_s` [rad/s about +z] of the friction
+    /// torque (a lubricated case; they start at the case's `[speed]`). They change the
+    /// friction only, not the load distribution. Equal speeds give the starting torque.
+    fn set_speeds(
+        &mut self,
+        inner_rad_s: &Bound<'_, PyAny>,
+        outer_rad_s: &Bound<'_, PyAny>,
+    ) -> PyResult<()> {
+        let valid = "a finite ring speed in rad/s, |omega| <= 100000 r/min";
+        let wi = args::real(inner_rad_s, "inner_rad_s", valid)?;
+        let wo = args::real(outer_rad_s, "outer_rad_s", valid)?;
+        self.inner.set_speeds(wi, wo).map_err(to_py)
+    }
+
     /// Forget the last evaluation's warm start.
     fn reset(&mut self) {
         self.inner.reset();
@@ -138,7 +154,7 @@ impl BearingElementResult {
         PyArray1::from_slice(py, &self.out.force_n)
     }
     /// Moment on the inner ring about the bearing centre (Mx, My, Mz) [N·mm], shape (3,);
-    /// Mz = 0 (no friction torque in this model).
+    /// Mz is the friction moment `friction_inner_ring_nmm` (0 without a lubricant).
     #[getter]
     fn moment<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
         PyArray1::from_slice(py, &self.out.moment_nmm)
@@ -170,6 +186,46 @@ impl BearingElementResult {
     fn message(&self) -> &'static str {
         self.out.message
     }
+    /// The friction model's status: "off" (no `[lubricant]` in the case), "running",
+    /// "starting" (equal ring speeds: `friction_torque_nmm` is the starting torque, not
+    /// applied) or "not_built" (no friction model for this bearing type yet).
+    #[getter]
+    fn friction_status(&self) -> &'static str {
+        match self.out.friction.status {
+            ElementFrictionStatus::Off => "off",
+            ElementFrictionStatus::Running => "running",
+            ElementFrictionStatus::Starting => "starting",
+            ElementFrictionStatus::NotBuilt => "not_built",
+        }
+    }
+    /// The bearing's friction torque M >= 0 [N·mm] (running, or the starting torque).
+    #[getter]
+    fn friction_torque_nmm(&self) -> f64 {
+        self.out.friction.torque_nmm
+    }
+    /// The friction moment on the inner ring about +z, -M sign(ω_i - ω_o) [N·mm] (= Mz).
+    #[getter]
+    fn friction_inner_ring_nmm(&self) -> f64 {
+        self.out.friction.inner_ring_nmm
+    }
+    /// The friction power M |ω_i - ω_o| [W].
+    #[getter]
+    fn friction_power_w(&self) -> f64 {
+        self.out.friction.power_w
+    }
+    /// The ring speeds (ω_i, ω_o) [rad/s] the friction used, shape (2,).
+    #[getter]
+    fn ring_speeds<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        let f = &self.out.friction;
+        PyArray1::from_slice(py, &[f.inner_speed_rad_s, f.outer_speed_rad_s])
+    }
+    /// The torque's shares (cone, cup, rib, drag) [N·mm], shape (4,), summing to
+    /// `friction_torque_nmm`.
+    #[getter]
+    fn friction_breakdown<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        let f = &self.out.friction;
+        PyArray1::from_slice(py, &[f.cone_nmm, f.cup_nmm, f.rib_nmm, f.drag_nmm])
+    }
     /// Every field, keys with unit suffixes (arrays as lists).
     fn to_dict<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let o = &self.out;
@@ -185,6 +241,19 @@ impl BearingElementResult {
         d.set_item("max_element_load_n", o.max_element_load_n)?;
         d.set_item("iterations", o.iterations)?;
         d.set_item("message", o.message)?;
+        let f = &o.friction;
+        d.set_item("friction_status", self.friction_status())?;
+        d.set_item("friction_torque_nmm", f.torque_nmm)?;
+        d.set_item("friction_inner_ring_nmm", f.inner_ring_nmm)?;
+        d.set_item("friction_power_w", f.power_w)?;
+        d.set_item(
+            "ring_speeds_rad_s",
+            vec![f.inner_speed_rad_s, f.outer_speed_rad_s],
+        )?;
+        d.set_item(
+            "friction_breakdown_nmm",
+            vec![f.cone_nmm, f.cup_nmm, f.rib_nmm, f.drag_nmm],
+        )?;
         Ok(d)
     }
     fn __repr__(&self) -> String {

@@ -178,3 +178,44 @@ def test_bad_cases_and_damping_are_named():
     assert e.value.field == "damping_s" and el.damping_s == 1e-5
     with pytest.raises(TypeError, match=r"^invalid damping_s = True \(bool\)"):
         el.damping_s = True
+
+
+FRICTION = REPO / "examples/bearing_32008x_friction.toml"
+
+
+def test_the_friction_torque_is_the_case_reports_at_its_equilibrium():
+    """A lubricated case: at the displacement the case's own solve finds, the element's
+    friction torque is the report's (kontakt.run, the same load distribution and speeds) to
+    1e-9; Mz is the friction moment on the inner ring (minus the report's driving torque
+    on it), the power is M |Δω|, the breakdown adds up; equal speeds give the starting
+    torque, reported and not applied."""
+    report = kt.run(FRICTION)
+    f = report["friction"]
+    e = kt.BearingElement(FRICTION)
+    r = e.evaluate(np.array(report["displacement_mm"] + report["tilt_rad"]))
+    assert r.friction_status == "running"
+    assert r.friction_torque_nmm == pytest.approx(f["total_nmm"], rel=1e-9)
+    assert r.moment[2] == r.friction_inner_ring_nmm == pytest.approx(-f["inner_ring_nmm"], rel=1e-9)
+    dw = (f["inner_rpm"] - f["outer_rpm"]) * math.pi / 30.0
+    assert r.friction_power_w == pytest.approx(1e-3 * r.friction_torque_nmm * dw, rel=1e-12)
+    assert r.friction_power_w == pytest.approx(f["power_w"], rel=1e-9)
+    assert np.sum(r.friction_breakdown) == pytest.approx(r.friction_torque_nmm, rel=1e-12)
+    np.testing.assert_allclose(r.ring_speeds, [dw, 0.0], rtol=1e-15)
+    e.set_speeds(5.0, 5.0)
+    s = e.evaluate(np.array(report["displacement_mm"] + report["tilt_rad"]))
+    assert s.friction_status == "starting" and s.friction_torque_nmm > 0.0
+    assert s.moment[2] == 0.0 and s.friction_power_w == 0.0
+    assert s.to_dict()["friction_status"] == "starting"
+
+
+def test_ring_speeds_are_named_when_bad():
+    e = kt.BearingElement(FRICTION)
+    with pytest.raises(ValueError, match="outer_rad_s"):
+        e.set_speeds(10.0, float("nan"))
+    with pytest.raises(ValueError, match="inner_rad_s"):
+        e.set_speeds(1e9, 0.0)
+
+
+def test_without_a_lubricant_the_friction_is_off():
+    r = kt.BearingElement(TRB).evaluate(np.array(POINTS[TRB][0]))
+    assert r.friction_status == "off" and r.friction_torque_nmm == 0.0 and r.moment[2] == 0.0
