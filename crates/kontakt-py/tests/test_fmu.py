@@ -24,6 +24,7 @@ import kontakt as kt
 
 REPO = pathlib.Path(__file__).resolve().parents[3]
 BEARING_CASE = "examples/bearing_32008x.toml"
+FRICTION_CASE = "examples/bearing_32008x_friction.toml"
 CONTACT_CASE = "crates/kontakt-capi/examples/element_ball_on_flat.toml"
 U = ["dx", "dy", "dz", "theta_x", "theta_y"]
 R = ["Fx", "Fy", "Fz", "Mx", "My"]
@@ -43,13 +44,13 @@ def fmus():
     exe = kontakt_executable(REPO)
     with tempfile.TemporaryDirectory(prefix="kontakt-fmu-") as d:
         out = {}
-        for kind, case in [("bearing", BEARING_CASE), ("contact", CONTACT_CASE)]:
+        for kind, case in [("bearing", BEARING_CASE), ("contact", CONTACT_CASE), ("friction", FRICTION_CASE)]:
             path = pathlib.Path(d) / f"{kind}.fmu"
             run = subprocess.run(
                 [exe, "fmu", REPO / case, "-o", path], capture_output=True, text=True
             )
             assert run.returncode == 0, run.stderr
-            assert f"{kind} element" in run.stdout
+            assert ("bearing" if kind == "friction" else kind) + " element" in run.stdout
             out[kind] = str(path)
         yield out
 
@@ -63,7 +64,7 @@ def test_fmpy_finds_no_problems(fmus):
         assert md.numberOfContinuousStates == 0  # ME without states: the host integrates
         units = {u.name for u in md.unitDefinitions}
         variables = {v.name: v for v in md.modelVariables}
-        if kind == "bearing":
+        if kind != "contact":
             assert variables["dx"].unit == "mm" and variables["Mx"].unit == "N.mm"
             assert variables["damping_s"].causality == "parameter"
             assert variables["damping_s"].variability == "tunable"
@@ -130,6 +131,27 @@ def test_bearing_co_simulation_holds_the_inputs_over_a_step(fmus, repo):
         want, _ = kontakt_bearing_reaction(bearing, [row[n] for n in U])
         got = np.array([row[n] for n in R])
         assert np.abs(got - want).max() <= 1e-12 * max(np.abs(want).max(), 1.0), row["time"]
+
+
+def test_bearing_run_up_with_friction_equals_kontakt(fmus, repo):
+    """The lubricated 32008 X under a fixed displacement while the inner ring runs up
+    from rest to 300 rad/s: the friction torque, its power and the moment about the axis
+    equal kontakt's Python BearingElement at the same ring speeds."""
+    t = np.linspace(0.0, 1.0, 11)
+    table = np.zeros(len(t), dtype=[("time", float)] + [(n, float) for n in U + ["omega_inner", "omega_outer"]])
+    table["time"] = t
+    table["dx"], table["dz"] = 0.01, 0.015
+    table["omega_inner"] = 300.0 * t
+    out = ["omega_inner", "omega_outer", "Fx", "Fz", "Mz", "friction_torque", "friction_power"]
+    result = simulate(fmus["friction"], "ModelExchange", table, out)
+    element = kt.BearingElement(repo / FRICTION_CASE)
+    for row in result:
+        element.set_speeds(row["omega_inner"], row["omega_outer"])
+        r = element.evaluate([0.01, 0.0, 0.015, 0.0, 0.0])
+        want = [r.force[0], r.force[2], r.moment[2], r.friction_torque_nmm, r.friction_power_w]
+        got = [row[n] for n in out[2:]]
+        np.testing.assert_allclose(got, want, rtol=1e-12, atol=1e-12 * abs(r.force[0]))
+    assert result[-1]["friction_power"] > 0.0 and result[-1]["Mz"] < 0.0
 
 
 CONTACT_IN = [f"pose1.{c}" for c in ("x", "y", "z", "qw", "qx", "qy", "qz")] + [
