@@ -61,6 +61,7 @@ fn packs_the_case_the_description_and_the_library() {
         let guid = kontakt_fmi::description::guid(&text);
         assert!(contains(&zip, format!("guid=\"{guid}\"").as_bytes()));
     }
+    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 /// Without `--library` the command takes the library that `cargo test` left next to the
@@ -112,4 +113,5 @@ fn input_errors_are_one_line_with_exit_status_2() {
         .unwrap();
     assert_eq!(run.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&run.stderr).contains("KONTAKT_FMI_LIBRARY"));
+    std::fs::remove_dir_all(&dir).unwrap();
 }
