@@ -649,7 +649,8 @@ pub struct DatasetComparison {
     pub dataset: Dataset,
     /// One row per measured point.
     pub rows: Vec<ComparisonRow>,
-    /// SKF curves along the dataset's axis (empty without SKF inputs).
+    /// SKF curves along the dataset's axis (empty without SKF inputs): the total, or its
+    /// rolling term for a dataset of rolling-resistance torques.
     pub skf_curves: Vec<ModelCurve>,
     /// The SKF model's warnings, once each (e.g. the omitted drag term).
     pub skf_warnings: Vec<String>,
@@ -732,6 +733,9 @@ pub fn compare(dataset: &Dataset) -> Result<DatasetComparison> {
         });
     }
     let mut skf_curves = Vec::new();
+    // the SKF term that stands for the measured quantity: its rolling term beside a
+    // rolling-resistance torque, its total otherwise
+    let rolling_only = rib_study::is_rolling_resistance(dataset);
     if let Some(setup) = &dataset.skf {
         for c in &dataset.curves {
             let Some(nu) = dataset.oil.viscosity_mm2_s(c.temperature_c)? else {
@@ -745,10 +749,14 @@ pub fn compare(dataset: &Dataset) -> Result<DatasetComparison> {
                     Axis::RadialLoad => skf_at(setup, c.speed_rpm, nu, c.axial_load_n, x)?,
                 };
                 note(&t);
-                pts.push((x, t.total_nmm));
+                pts.push((x, if rolling_only { t.rolling_nmm } else { t.total_nmm }));
             }
             skf_curves.push(ModelCurve {
-                label: format!("SKF 2004, {} °C", c.temperature_c),
+                label: if rolling_only {
+                    format!("SKF 2004 rolling term, {} °C", c.temperature_c)
+                } else {
+                    format!("SKF 2004, {} °C", c.temperature_c)
+                },
                 temperature_c: c.temperature_c,
                 points: pts,
             });
