@@ -749,7 +749,14 @@ pub fn compare(dataset: &Dataset) -> Result<DatasetComparison> {
                     Axis::RadialLoad => skf_at(setup, c.speed_rpm, nu, c.axial_load_n, x)?,
                 };
                 note(&t);
-                pts.push((x, if rolling_only { t.rolling_nmm } else { t.total_nmm }));
+                pts.push((
+                    x,
+                    if rolling_only {
+                        t.rolling_nmm
+                    } else {
+                        t.total_nmm
+                    },
+                ));
             }
             skf_curves.push(ModelCurve {
                 label: if rolling_only {

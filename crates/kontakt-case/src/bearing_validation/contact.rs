@@ -133,7 +133,15 @@ pub fn contact_parts_at(
     let Some(fa) = p.axial_load_n else {
         return Ok(None);
     };
-    contact_parts(setup, variation, p.speed_rpm, fa, p.radial_load_n, p.temperature_c).map(Some)
+    contact_parts(
+        setup,
+        variation,
+        p.speed_rpm,
+        fa,
+        p.radial_load_n,
+        p.temperature_c,
+    )
+    .map(Some)
 }
 
 /// As [`contact_parts_at`] at a speed \[r/min\], loads \[N\] and oil temperature \[°C\].
@@ -163,7 +171,10 @@ pub fn contact_parts(
         .as_mut()
         .ok_or_else(|| missing("operating"))?
         .sweep_inner_rpm = None;
-    let lubricant = case.lubricant.as_mut().ok_or_else(|| missing("lubricant"))?;
+    let lubricant = case
+        .lubricant
+        .as_mut()
+        .ok_or_else(|| missing("lubricant"))?;
     lubricant.temperature_c = temperature_c + variation.temperature_rise_k;
     if let Some(a) = variation.alpha_per_mpa {
         lubricant.alpha_per_mpa = a;

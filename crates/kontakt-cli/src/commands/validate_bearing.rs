@@ -63,6 +63,9 @@ pub const BREAKDOWN_COLUMNS: [&str; 11] = [
 /// Image size of the plots (pixels).
 pub const PLOT_SIZE: (u32, u32) = (900, 600);
 
+/// Image size of the breakdown plots (pixels): wider, for their longer legend.
+pub const BREAKDOWN_SIZE: (u32, u32) = (1200, 600);
+
 /// Run the comparison and write the report folder.
 pub fn validate_bearing(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
     std::fs::create_dir_all(out_dir).map_err(|e| cannot_write("create", out_dir, e))?;
@@ -397,8 +400,7 @@ fn table(studies: &[DatasetComparison]) -> String {
                 nmm(r.contact_parts.map(|c| c.rib_nmm)),
             ));
         }
-        if s
-            .rows
+        if s.rows
             .iter()
             .any(|r| r.measured.quantity == Quantity::RollingResistance)
         {
@@ -567,7 +569,12 @@ fn breakdown_plot(path: &Path, s: &DatasetComparison, c: &BreakdownCurve) -> Res
     for r in &rows {
         data.push((
             String::new(),
-            error_bar(r.measured.speed_rpm, r.measured.torque_nmm, r.measured.band_pct).to_vec(),
+            error_bar(
+                r.measured.speed_rpm,
+                r.measured.torque_nmm,
+                r.measured.band_pct,
+            )
+            .to_vec(),
             c_meas,
             LineStyle::Solid,
         ));
@@ -591,7 +598,12 @@ fn breakdown_plot(path: &Path, s: &DatasetComparison, c: &BreakdownCurve) -> Res
             LineStyle::Dashed,
         ));
     }
-    data.push(("cone".into(), line(&|p| p.cone_nmm), c_cone, LineStyle::Solid));
+    data.push((
+        "cone".into(),
+        line(&|p| p.cone_nmm),
+        c_cone,
+        LineStyle::Solid,
+    ));
     data.push((
         "cone + cup (raceways)".into(),
         line(&|p| p.cone_nmm + p.cup_nmm),
@@ -659,7 +671,7 @@ fn breakdown_plot(path: &Path, s: &DatasetComparison, c: &BreakdownCurve) -> Res
             x_log: false,
             y_from_zero: true,
         },
-        PLOT_SIZE,
+        BREAKDOWN_SIZE,
     )
     .with_context(|| format!("drawing {}", path.display()))?;
     Ok(())
