@@ -245,7 +245,11 @@ fn plot(path: &Path, s: &DatasetComparison) -> Result<bool> {
         if let Some(first) = rows.first() {
             markers.push((
                 format!(
-                    "measured, {t} °C ({}, ±{} %)",
+                    "measured{}, {t} °C ({}, ±{} %)",
+                    match first.measured.quantity {
+                        Quantity::Total => "",
+                        Quantity::RollingResistance => " M_rr",
+                    },
                     first.measured.status.name(),
                     first.measured.band_pct
                 ),
