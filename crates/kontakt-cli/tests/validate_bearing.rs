@@ -136,7 +136,18 @@ fn validate_bearing_runs_on_every_dataset() {
     );
     assert!(stdout.contains("rib and oil sensitivity"));
     let b = read_csv(&dir.join("bearing_breakdown.csv"));
-    assert_eq!(b.len(), 2 * 2 * 23);
+    assert_eq!(
+        b.len(),
+        2 * 2 * 23 + 3 * 23,
+        "Manjunath 2 × 2 curves, LM12700 3 loads"
+    );
+    assert!(
+        dir.join("bearing_zhou_hoeprich1991_fig9_breakdown_80C.png")
+            .is_file()
+    );
+    assert!(stdout.contains(
+        "zhou_hoeprich1991_fig9: contact-based, 3600 N axial, 80 °C: the raceways' torque exceeds the rib's above"
+    ));
     // JSON
     let out = kontakt()
         .args([
@@ -158,7 +169,8 @@ fn validate_bearing_runs_on_every_dataset() {
             > 0.0
     );
     assert!(v["datasets"][2]["contact_assumptions"].is_null());
-    assert_eq!(v["rib_study"].as_array().unwrap().len(), 2);
+    assert_eq!(v["rib_study"].as_array().unwrap().len(), 3, "2 Manjunath, LM12700");
+    assert_eq!(v["rib_study"][2]["dataset"], "zhou_hoeprich1991_fig9");
     assert_eq!(
         v["rib_study"][0]["sensitivity"].as_array().unwrap().len(),
         15

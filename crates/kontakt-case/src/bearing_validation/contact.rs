@@ -229,3 +229,19 @@ pub fn contact_parts(
     }
     Ok(parts)
 }
+
+/// The LM12700 of Zhou & Hoeprich (1991), Fig. 9, with an assumed internal geometry, rib,
+/// load and oil (`examples/bearing_lm12700_rib_friction.toml`): its rib and raceway torque
+/// against speed beside their Fig. 9 totals (`super::rib_study::lm12700_breakdown`).
+pub const LM12700_CONTACT: ContactSetup = ContactSetup {
+    case_toml: include_str!("../../../../examples/bearing_lm12700_rib_friction.toml"),
+    assumptions: LM12700_CONTACT_ASSUMPTIONS,
+};
+
+/// What the contact-based LM12700 case assumes beyond the caption of Zhou & Hoeprich's Fig. 9.
+pub const LM12700_CONTACT_ASSUMPTIONS: &[&str] = &[
+    "stated by the paper (Fig. 9 caption): cup work-point diameter 41.5 mm, cup angle 11°32', roller length 10.8 mm, 17 rollers, SAE 75 oil at 80 °C",
+    "roller mean diameter 5.6493 mm (rollers filling 85 % of the pitch circle), pitch diameter 35.965 mm = 41.5 − D_we cos α_o, cone angle 8.4162° from the common apex (roller half-angle 1.5585°)",
+    "rib as the 32008 X case's, scaled: spherical roller end of radius 98.4 mm (0.9 × apex distance 109.3 mm), conical rib, contact 0.868 mm above the inner raceway line (2.1035 mm from the roller axis)",
+    "axial load 3.6 kN (a third party's back-calculation, not in the paper), also 2 and 6 kN; oil ISO VG 32 for SAE 75 (viscosity not stated), ρ 870 kg/m³, α 0.018 1/MPa; roughness 0.14 µm on every surface; mixed friction preset; no drag",
+];

@@ -389,3 +389,62 @@ pub fn is_rolling_resistance(dataset: &Dataset) -> bool {
             .iter()
             .all(|p| p.quantity == Quantity::RollingResistance)
 }
+
+/// The axial loads of the LM12700 study \[N\]: the third party's back-calculated 3.6 kN
+/// (not in the paper) and a bracket around it.
+pub const LM12700_LOADS_N: [f64; 3] = [3600.0, 2000.0, 6000.0];
+
+/// The speeds of the LM12700 study \[r/min\]: Zhou & Hoeprich's Fig. 9 range, 100 to
+/// 4800 r/min.
+pub const LM12700_SPEEDS: (f64, f64) = (100.0, 4800.0);
+
+/// The contact-based breakdown of the LM12700 (`super::contact::LM12700_CONTACT`, every
+/// assumption there) along the speed at its 80 °C, one curve per axial load of `loads_n`,
+/// [`BREAKDOWN_POINTS`] speeds over [`LM12700_SPEEDS`]; no SKF (the envelope's series
+/// constants are not known for this inch bearing).
+///
+/// # Errors
+/// Those of [`contact_parts`].
+pub fn lm12700_breakdown(loads_n: &[f64]) -> Result<Vec<BreakdownCurve>> {
+    let setup = &super::contact::LM12700_CONTACT;
+    let (lo, hi) = LM12700_SPEEDS;
+    loads_n
+        .iter()
+        .map(|&fa| {
+            let points = (0..BREAKDOWN_POINTS)
+                .map(|k| {
+                    let n = lo + (hi - lo) * k as f64 / (BREAKDOWN_POINTS - 1) as f64;
+                    Ok(BreakdownPoint {
+                        speed_rpm: n,
+                        contact: contact_parts(
+                            setup,
+                            &ContactVariation::default(),
+                            n,
+                            fa,
+                            0.0,
+                            80.0,
+                        )?,
+                        skf: None,
+                    })
+                })
+                .collect::<Result<Vec<_>>>()?;
+            Ok(BreakdownCurve {
+                temperature_c: 80.0,
+                axial_load_n: fa,
+                radial_load_n: 0.0,
+                points,
+            })
+        })
+        .collect()
+}
+
+/// The speed \[r/min\] above which the raceways' torque (cone + cup) exceeds the rib's, by
+/// linear interpolation between the curve's speeds; `None` if it does not change sign.
+pub fn crossover_rpm(curve: &BreakdownCurve) -> Option<f64> {
+    let diff = |p: &BreakdownPoint| p.contact.raceways_nmm() - p.contact.rib_nmm;
+    curve.points.windows(2).find_map(|w| {
+        let (a, b) = (diff(&w[0]), diff(&w[1]));
+        (a < 0.0 && b >= 0.0)
+            .then(|| w[0].speed_rpm + (w[1].speed_rpm - w[0].speed_rpm) * (-a) / (b - a))
+    })
+}

@@ -8,7 +8,8 @@
 use crate::commands::{CsvFile, cannot_write};
 use anyhow::{Context, Result};
 use kontakt_case::bearing_validation::rib_study::{
-    BreakdownCurve, SensitivityRow, VARIATIONS, breakdown, sensitivity,
+    BreakdownCurve, LM12700_LOADS_N, SensitivityRow, VARIATIONS, breakdown, crossover_rpm,
+    lm12700_breakdown, sensitivity,
 };
 use kontakt_case::bearing_validation::{
     Axis, ComparisonRow, DatasetComparison, Quantity, compare_all,
@@ -46,9 +47,10 @@ pub const TORQUE_COLUMNS: [&str; 24] = [
 ];
 
 /// The columns of `bearing_breakdown.csv`.
-pub const BREAKDOWN_COLUMNS: [&str; 11] = [
+pub const BREAKDOWN_COLUMNS: [&str; 12] = [
     "dataset",
     "temperature_c",
+    "axial_load_n",
     "speed_rpm",
     "cone_nmm",
     "cup_nmm",
@@ -92,6 +94,18 @@ pub fn validate_bearing(out_dir: &Path, out: &mut impl Write, json: bool) -> Res
         }
         let sens = sensitivity(&s.dataset).context("the rib sensitivity study")?;
         rib.push((s.dataset.id, curves, sens));
+    }
+    // the LM12700 of Zhou & Hoeprich (1991): its rib and raceways against speed with an
+    // assumed geometry, load and oil, beside their Fig. 9 totals (the load not stated)
+    if let Some(s) = studies
+        .iter()
+        .find(|s| s.dataset.id == "zhou_hoeprich1991_fig9")
+    {
+        let curves = lm12700_breakdown(&LM12700_LOADS_N).context("the LM12700 breakdown")?;
+        let path = out_dir.join(breakdown_file(s.dataset.id, curves[0].temperature_c));
+        breakdown_plot(&path, s, &curves[0])?;
+        plots += 1;
+        rib.push((s.dataset.id, curves, Vec::new()));
     }
     write_breakdown_csv(&out_dir.join("bearing_breakdown.csv"), &rib)?;
     write_sensitivity_csv(&out_dir.join("bearing_rib_sensitivity.csv"), &rib)?;
@@ -694,6 +708,7 @@ fn write_breakdown_csv(path: &Path, rib: &[RibStudy]) -> Result<()> {
                 w.record([
                     (*id).to_string(),
                     format!("{}", c.temperature_c),
+                    format!("{}", c.axial_load_n),
                     format!("{}", p.speed_rpm),
                     format!("{:.3}", k.cone_nmm),
                     format!("{:.3}", k.cup_nmm),
@@ -756,7 +771,21 @@ fn write_sensitivity_csv(path: &Path, rib: &[RibStudy]) -> Result<()> {
 /// variation (raceways against M_rr, total against the values as if they were totals).
 fn rib_table(rib: &[RibStudy]) -> String {
     let mut t = String::new();
-    for (id, _, sens) in rib {
+    for (id, curves, sens) in rib {
+        for c in curves {
+            if let Some(x) = crossover_rpm(c) {
+                t.push_str(&format!(
+                    "\n{id}: contact-based, {} N axial, {} °C: the raceways' torque exceeds the rib's above {x:.0} r/min",
+                    c.axial_load_n, c.temperature_c
+                ));
+            }
+        }
+        if !curves.is_empty() {
+            t.push('\n');
+        }
+        if sens.is_empty() {
+            continue;
+        }
         t.push_str(&format!(
             "\n{id}: rib and oil sensitivity of the contact-based model (mean |dev| %: raceways | total; at the lowest speed: raceways | total)\n"
         ));
@@ -786,12 +815,30 @@ fn rib_report(rib: &[RibStudy]) -> String {
     md.push_str("Every variation moves one uncertain input of the contact-based case over a physical range (the reason in the last column), the others as assumed; none is fitted to the measurement. Mean |deviation| of the raceways (cone + cup, the comparison for a rolling-resistance torque M_rr) and of the total (the comparison if the measured values were the total torque), and both at the lowest measured speed.\n\n");
     for (id, curves, sens) in rib {
         md.push_str(&format!("## {id}\n\n"));
+        let mut drawn: Vec<f64> = Vec::new();
         for c in curves {
+            if let Some(x) = crossover_rpm(c) {
+                md.push_str(&format!(
+                    "- {} N axial, {} °C: the raceways' torque exceeds the rib's above {x:.0} r/min\n",
+                    c.axial_load_n, c.temperature_c
+                ));
+            }
+        }
+        md.push('\n');
+        for c in curves {
+            if drawn.contains(&c.temperature_c) {
+                continue;
+            }
+            drawn.push(c.temperature_c);
             md.push_str(&format!(
                 "![{id} breakdown at {} °C]({})\n\n",
                 c.temperature_c,
                 breakdown_file(id, c.temperature_c)
             ));
+        }
+        if sens.is_empty() {
+            md.push_str("The LM12700's geometry beyond the caption of Fig. 9, its load and its oil are assumed (`examples/bearing_lm12700_rib_friction.toml`); the curves at 2 and 6 kN are in `bearing_breakdown.csv`.\n\n");
+            continue;
         }
         md.push_str("| input | value | raceways mean \\|dev\\| | total mean \\|dev\\| | raceways at start | total at start | rib at start [N·mm] | why this value |\n|---|---|---|---|---|---|---|---|\n");
         for r in sens {
