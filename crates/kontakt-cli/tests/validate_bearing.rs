@@ -169,7 +169,11 @@ fn validate_bearing_runs_on_every_dataset() {
             > 0.0
     );
     assert!(v["datasets"][2]["contact_assumptions"].is_null());
-    assert_eq!(v["rib_study"].as_array().unwrap().len(), 3, "2 Manjunath, LM12700");
+    assert_eq!(
+        v["rib_study"].as_array().unwrap().len(),
+        3,
+        "2 Manjunath, LM12700"
+    );
     assert_eq!(v["rib_study"][2]["dataset"], "zhou_hoeprich1991_fig9");
     assert_eq!(
         v["rib_study"][0]["sensitivity"].as_array().unwrap().len(),
