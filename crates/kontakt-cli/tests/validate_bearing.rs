@@ -216,6 +216,32 @@ fn frame(img: &image::RgbImage) -> (u32, u32, u32, u32) {
     (*cols.first().unwrap(), top, *cols.last().unwrap(), bottom)
 }
 
+/// The plot image at `path` and its data-to-pixel map: the axes span the data's x range
+/// `x0..x1` padded by 4 % and 0 to `y1` + 4 %, as kontakt-plot draws a line plot with y
+/// from zero, inside the frame (at least `min_width` pixels wide).
+fn open_plot(
+    path: &Path,
+    (x0, x1, y1): (f64, f64, f64),
+    min_width: u32,
+) -> (image::RgbImage, impl Fn(f64, f64) -> (f64, f64) + use<>) {
+    let span = x1 - x0;
+    let (x0, x1) = (x0 - 0.04 * span, x1 + 0.04 * span);
+    let (y0, y1) = (0.0, 1.04 * y1);
+    let img = image::open(path).unwrap().to_rgb8();
+    let (left, top, right, bottom) = frame(&img);
+    assert!(
+        right > left + min_width && bottom > top + 300,
+        "{left} {top} {right} {bottom}"
+    );
+    let pixel = move |x: f64, y: f64| {
+        (
+            f64::from(left) + (x - x0) / (x1 - x0) * f64::from(right - left),
+            f64::from(bottom) - (y - y0) / (y1 - y0) * f64::from(bottom - top),
+        )
+    };
+    (img, pixel)
+}
+
 /// A marker of colour `c` fills its place (at least 21 of the 25 pixels there) and is not
 /// drawn 12 px off in any direction.
 fn assert_marker_at(img: &image::RgbImage, (px, py): (f64, f64), c: (u8, u8, u8), what: &str) {
@@ -286,24 +312,7 @@ fn measured_points_land_where_their_values_say() {
         x1 = x1.max(f(c, "x"));
         y1 = y1.max(f(c, "skf_nmm"));
     }
-    let span = x1 - x0;
-    let (x0, x1) = (x0 - 0.04 * span, x1 + 0.04 * span);
-    let (y0, y1) = (0.0, 1.04 * y1);
-
-    let img = image::open(dir.join(format!("bearing_{id}.png")))
-        .unwrap()
-        .to_rgb8();
-    let (left, top, right, bottom) = frame(&img);
-    assert!(
-        right > left + 400 && bottom > top + 300,
-        "{left} {top} {right} {bottom}"
-    );
-    let pixel = |x: f64, y: f64| {
-        (
-            f64::from(left) + (x - x0) / (x1 - x0) * f64::from(right - left),
-            f64::from(bottom) - (y - y0) / (y1 - y0) * f64::from(bottom - top),
-        )
-    };
+    let (img, pixel) = open_plot(&dir.join(format!("bearing_{id}.png")), (x0, x1, y1), 400);
     // the temperatures take the palette's colours in order of appearance: 55 °C, 65 °C
     let colour = |t: f64| {
         if t == 55.0 {
@@ -406,23 +415,11 @@ fn breakdown_plot_lands_where_its_values_say() {
             y1 = y1.max(f(c, k));
         }
     }
-    let span = x1 - x0;
-    let (x0, x1) = (x0 - 0.04 * span, x1 + 0.04 * span);
-    let (y0, y1) = (0.0, 1.04 * y1);
-    let img = image::open(dir.join(format!("bearing_{id}_breakdown_55C.png")))
-        .unwrap()
-        .to_rgb8();
-    let (left, top, right, bottom) = frame(&img);
-    assert!(
-        right > left + 300 && bottom > top + 300,
-        "{left} {top} {right} {bottom}"
+    let (img, pixel) = open_plot(
+        &dir.join(format!("bearing_{id}_breakdown_55C.png")),
+        (x0, x1, y1),
+        300,
     );
-    let pixel = |x: f64, y: f64| {
-        (
-            f64::from(left) + (x - x0) / (x1 - x0) * f64::from(right - left),
-            f64::from(bottom) - (y - y0) / (y1 - y0) * f64::from(bottom - top),
-        )
-    };
     for r in &rows {
         let at = pixel(f(r, "speed_rpm"), f(r, "measured_nmm"));
         assert_marker_at(&img, at, (0, 0, 0), &format!("{r:?}: measured"));
@@ -450,6 +447,6 @@ fn breakdown_plot_lands_where_its_values_say() {
     // and not where the raceways alone would put it at the lowest speed, where the rib is
     // the difference (40 N·mm or more, well over 5 px here)
     let c0 = &curve[0];
-    let gap = f(c0, "rib_nmm") / (y1 - y0) * f64::from(bottom - top);
+    let gap = pixel(0.0, 0.0).1 - pixel(0.0, f(c0, "rib_nmm")).1;
     assert!(gap > 8.0, "{gap}");
 }

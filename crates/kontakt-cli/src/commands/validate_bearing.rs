@@ -12,7 +12,7 @@ use kontakt_case::bearing_validation::rib_study::{
     lm12700_breakdown, sensitivity,
 };
 use kontakt_case::bearing_validation::{
-    Axis, ComparisonRow, DatasetComparison, Quantity, compare_all,
+    Axis, ComparisonRow, ContactParts, DatasetComparison, Quantity, compare_all,
 };
 use kontakt_plot::{LinePlot, LineStyle, PALETTE, Series};
 use std::io::Write;
@@ -52,11 +52,11 @@ pub const BREAKDOWN_COLUMNS: [&str; 12] = [
     "temperature_c",
     "axial_load_n",
     "speed_rpm",
+    "total_nmm",
     "cone_nmm",
     "cup_nmm",
     "rib_nmm",
     "drag_nmm",
-    "total_nmm",
     "skf_nmm",
     "skf_rolling_nmm",
     "skf_sliding_nmm",
@@ -149,7 +149,7 @@ fn write_torque_csv(path: &Path, studies: &[DatasetComparison]) -> Result<()> {
     for s in studies {
         for r in &s.rows {
             let m = &r.measured;
-            w.record([
+            let cells = [
                 s.dataset.id.to_string(),
                 m.status.name().to_string(),
                 format!("{}", m.speed_rpm),
@@ -169,16 +169,29 @@ fn write_torque_csv(path: &Path, studies: &[DatasetComparison]) -> Result<()> {
                 opt(r.contact_nmm, 3),
                 opt(r.contact_deviation_pct(), 2),
                 m.quantity.name().to_string(),
-                opt(r.contact_parts.map(|c| c.total_nmm), 3),
-                opt(r.contact_parts.map(|c| c.cone_nmm), 3),
-                opt(r.contact_parts.map(|c| c.cup_nmm), 3),
-                opt(r.contact_parts.map(|c| c.rib_nmm), 3),
-                opt(r.contact_parts.map(|c| c.drag_nmm), 3),
-            ])?;
+            ];
+            w.record(
+                cells
+                    .into_iter()
+                    .chain(parts_cells(r.contact_parts.as_ref())),
+            )?;
         }
     }
     w.finish()?;
     Ok(())
+}
+
+/// The cells of a contact-based breakdown, total, cone, cup, rib, drag \[N·mm\] (empty
+/// without one).
+fn parts_cells(c: Option<&ContactParts>) -> [String; 5] {
+    let f = |g: fn(&ContactParts) -> f64| opt(c.map(g), 3);
+    [
+        f(|c| c.total_nmm),
+        f(|c| c.cone_nmm),
+        f(|c| c.cup_nmm),
+        f(|c| c.rib_nmm),
+        f(|c| c.drag_nmm),
+    ]
 }
 
 fn write_curves_csv(path: &Path, studies: &[DatasetComparison]) -> Result<()> {
@@ -324,6 +337,23 @@ fn plot(path: &Path, s: &DatasetComparison) -> Result<bool> {
     if data.is_empty() {
         return Ok(false);
     }
+    let title = if s.rows.is_empty() {
+        format!("{}: SKF model only (no measured numbers)", s.dataset.id)
+    } else if has_contact {
+        format!("{}: measured, SKF (2004) and contact-based", s.dataset.id)
+    } else {
+        format!("{}: measured and SKF (2004)", s.dataset.id)
+    };
+    let x_label = match s.dataset.axis {
+        Axis::Speed => "inner-ring speed [r/min]",
+        Axis::RadialLoad => "radial load [N]",
+    };
+    draw(path, &title, x_label, &data, PLOT_SIZE)?;
+    Ok(true)
+}
+
+/// Draw `data` as a torque plot (y from 0) of `size` pixels.
+fn draw(path: &Path, title: &str, x_label: &str, data: &[Curve], size: (u32, u32)) -> Result<()> {
     let series: Vec<Series> = data
         .iter()
         .map(|(label, points, color, style)| Series {
@@ -333,30 +363,19 @@ fn plot(path: &Path, s: &DatasetComparison) -> Result<bool> {
             style: *style,
         })
         .collect();
-    let title = if s.rows.is_empty() {
-        format!("{}: SKF model only (no measured numbers)", s.dataset.id)
-    } else if has_contact {
-        format!("{}: measured, SKF (2004) and contact-based", s.dataset.id)
-    } else {
-        format!("{}: measured and SKF (2004)", s.dataset.id)
-    };
     kontakt_plot::line_plot(
         path,
         &LinePlot {
-            title: &title,
-            x_label: match s.dataset.axis {
-                Axis::Speed => "inner-ring speed [r/min]",
-                Axis::RadialLoad => "radial load [N]",
-            },
+            title,
+            x_label,
             y_label: "friction torque [N·mm]",
             series: &series,
             x_log: false,
             y_from_zero: true,
         },
-        PLOT_SIZE,
+        size,
     )
-    .with_context(|| format!("drawing {}", path.display()))?;
-    Ok(true)
+    .with_context(|| format!("drawing {}", path.display()))
 }
 
 fn pct(x: Option<f64>) -> String {
@@ -571,7 +590,7 @@ pub const BREAKDOWN_COLOURS: [(u8, u8, u8); 7] = [
 /// (dashed) and the dataset's measured points of that temperature with their error bars.
 fn breakdown_plot(path: &Path, s: &DatasetComparison, c: &BreakdownCurve) -> Result<()> {
     let [c_cone, c_cup, c_rib, c_drag, c_skf, c_skf_rr, c_meas] = BREAKDOWN_COLOURS;
-    let line = |f: &dyn Fn(&kontakt_case::bearing_validation::ContactParts) -> f64| {
+    let line = |f: &dyn Fn(&ContactParts) -> f64| {
         c.points
             .iter()
             .map(|p| (p.speed_rpm, f(&p.contact)))
@@ -664,35 +683,19 @@ fn breakdown_plot(path: &Path, s: &DatasetComparison, c: &BreakdownCurve) -> Res
             LineStyle::Markers,
         ));
     }
-    let series: Vec<Series> = data
-        .iter()
-        .map(|(label, points, color, style)| Series {
-            label,
-            points,
-            color: *color,
-            style: *style,
-        })
-        .collect();
     let title = format!(
         "{}: contact-based breakdown, {} °C, {} kN axial",
         s.dataset.id,
         c.temperature_c,
         c.axial_load_n / 1000.0
     );
-    kontakt_plot::line_plot(
+    draw(
         path,
-        &LinePlot {
-            title: &title,
-            x_label: "inner-ring speed [r/min]",
-            y_label: "friction torque [N·mm]",
-            series: &series,
-            x_log: false,
-            y_from_zero: true,
-        },
+        &title,
+        "inner-ring speed [r/min]",
+        &data,
         BREAKDOWN_SIZE,
     )
-    .with_context(|| format!("drawing {}", path.display()))?;
-    Ok(())
 }
 
 /// The rib study of each dataset with a contact setup: its id, breakdown and sensitivity.
@@ -704,21 +707,22 @@ fn write_breakdown_csv(path: &Path, rib: &[RibStudy]) -> Result<()> {
     for (id, curves, _) in rib {
         for c in curves {
             for p in &c.points {
-                let k = &p.contact;
-                w.record([
+                let head = [
                     (*id).to_string(),
                     format!("{}", c.temperature_c),
                     format!("{}", c.axial_load_n),
                     format!("{}", p.speed_rpm),
-                    format!("{:.3}", k.cone_nmm),
-                    format!("{:.3}", k.cup_nmm),
-                    format!("{:.3}", k.rib_nmm),
-                    format!("{:.3}", k.drag_nmm),
-                    format!("{:.3}", k.total_nmm),
+                ];
+                let skf = [
                     opt(p.skf.map(|x| x.total_nmm), 3),
                     opt(p.skf.map(|x| x.rolling_nmm), 3),
                     opt(p.skf.map(|x| x.sliding_nmm), 3),
-                ])?;
+                ];
+                w.record(
+                    head.into_iter()
+                        .chain(parts_cells(Some(&p.contact)))
+                        .chain(skf),
+                )?;
             }
         }
     }
@@ -731,6 +735,19 @@ fn start_list(v: &[(f64, f64)], unit: &str) -> String {
         .map(|(t, d)| format!("{d:+.0}{unit} ({t} °C)"))
         .collect::<Vec<_>>()
         .join(", ")
+}
+
+/// A sensitivity row as text: input, value, raceways' and total's mean |deviation|, both at
+/// the lowest speed.
+fn sensitivity_cells(r: &SensitivityRow) -> [String; 6] {
+    [
+        r.parameter.to_string(),
+        r.value.to_string(),
+        format!("{:.1} %", r.raceways_mean_abs_pct),
+        format!("{:.1} %", r.total_mean_abs_pct),
+        start_list(&r.raceways_start_pct, " %"),
+        start_list(&r.total_start_pct, " %"),
+    ]
 }
 
 fn write_sensitivity_csv(path: &Path, rib: &[RibStudy]) -> Result<()> {
@@ -790,14 +807,9 @@ fn rib_table(rib: &[RibStudy]) -> String {
             "\n{id}: rib and oil sensitivity of the contact-based model (mean |dev| %: raceways | total; at the lowest speed: raceways | total)\n"
         ));
         for r in sens {
+            let [p, v, rm, tm, rs, ts] = sensitivity_cells(r);
             t.push_str(&format!(
-                "  {:<42} {:<20} {:>5.1} | {:>5.1}   {} | {}\n",
-                r.parameter,
-                r.value,
-                r.raceways_mean_abs_pct,
-                r.total_mean_abs_pct,
-                start_list(&r.raceways_start_pct, " %"),
-                start_list(&r.total_start_pct, " %"),
+                "  {p:<42} {v:<20} {rm:>7} | {tm:>7}   {rs} | {ts}\n"
             ));
         }
     }
@@ -843,13 +855,8 @@ fn rib_report(rib: &[RibStudy]) -> String {
         md.push_str("| input | value | raceways mean \\|dev\\| | total mean \\|dev\\| | raceways at start | total at start | rib at start [N·mm] | why this value |\n|---|---|---|---|---|---|---|---|\n");
         for r in sens {
             md.push_str(&format!(
-                "| {} | {} | {:.1} % | {:.1} % | {} | {} | {} | {} |\n",
-                r.parameter,
-                r.value,
-                r.raceways_mean_abs_pct,
-                r.total_mean_abs_pct,
-                start_list(&r.raceways_start_pct, " %"),
-                start_list(&r.total_start_pct, " %"),
+                "| {} | {} | {} |\n",
+                sensitivity_cells(r).join(" | "),
                 start_list(&r.rib_start_nmm, ""),
                 r.why
             ));
