@@ -1,9 +1,13 @@
 //! `kontakt validate --bearing`: the measured friction torque of whole bearings
 //! (`validation/measured/`, provenance in its README) beside the SKF (2004) model and,
-//! where the internal geometry is known, the contact-based model at the same conditions: a table on stdout, `bearing_torque.csv` (one row per measured point),
-//! `bearing_skf_curves.csv` (the model curves of the plots), `bearing_report.md` and one
-//! plot per dataset (`bearing_<dataset>.png`). The study is
-//! `kontakt_case::bearing_validation`; this file only writes it out. Torque in N·mm.
+//! where the internal geometry is known, the contact-based model at the same conditions: a
+//! table on stdout, `bearing_torque.csv` (one row per measured point),
+//! `bearing_skf_curves.csv` (the model curves of the plots), `bearing_breakdown.csv` and
+//! `bearing_rib_sensitivity.csv` (the rib study), `bearing_report.md`, one plot per dataset
+//! (`bearing_<dataset>.png`) and one breakdown plot per contact-based curve
+//! (`bearing_<dataset>_breakdown_<T>C.png`: cone, cup, rib, drag stacked beside SKF and the
+//! measurement). The study is `kontakt_case::bearing_validation` and its `rib_study`; this
+//! file only writes it out. Torque in N·mm.
 
 use crate::commands::{CsvFile, cannot_write};
 use anyhow::{Context, Result};
