@@ -734,9 +734,17 @@ fn write_breakdown_csv(path: &Path, rib: &[RibStudy]) -> Result<()> {
     Ok(())
 }
 
+/// `(temperature, value)` pairs as "value unit (T °C)", joined; a deviation (unit `" %"`)
+/// with its sign.
 fn start_list(v: &[(f64, f64)], unit: &str) -> String {
     v.iter()
-        .map(|(t, d)| format!("{d:+.0}{unit} ({t} °C)"))
+        .map(|(t, d)| {
+            if unit == " %" {
+                format!("{d:+.0}{unit} ({t} °C)")
+            } else {
+                format!("{d:.0}{unit} ({t} °C)")
+            }
+        })
         .collect::<Vec<_>>()
         .join(", ")
 }
