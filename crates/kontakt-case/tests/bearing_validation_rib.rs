@@ -9,6 +9,7 @@
 use kontakt_case::bearing_validation::contact::{
     MANJUNATH_CONTACT, MANJUNATH_CONTACT_RACEWAYS, contact_parts,
 };
+use kontakt_case::bearing_validation::rib_study;
 use kontakt_case::bearing_validation::rib_study::{
     APEX_DISTANCE_MM, BREAKDOWN_POINTS, LARGE_END_RADIUS_MM, VARIATIONS, breakdown, sensitivity,
 };
@@ -271,5 +272,3 @@ fn lm12700_rib_and_raceways_cross() {
         .unwrap();
     assert!((2..=4).contains(&k), "minimum at {}", reading[k].0);
 }
-
-use kontakt_case::bearing_validation::rib_study;
