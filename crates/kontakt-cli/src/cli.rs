@@ -267,8 +267,10 @@ pub struct ValidateArgs {
     #[arg(long)]
     pub json: bool,
     /// Instead of the rib-contact study: the measured friction torque of whole bearings
-    /// (validation/measured/) beside the SKF (2004) model at the same conditions, as a
-    /// table, bearing_torque.csv, bearing_report.md and plots (torque in N·mm).
+    /// (validation/measured/) beside the SKF (2004) model at the same conditions and, where
+    /// the internal geometry is known, the contact-based model with its breakdown (cone, cup,
+    /// rib, drag) and a rib sensitivity study, as a table, CSVs, bearing_report.md and plots
+    /// (torque in N·mm).
     #[arg(long, conflicts_with = "cells")]
     pub bearing: bool,
 }
