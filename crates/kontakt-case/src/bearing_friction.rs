@@ -185,6 +185,10 @@ pub struct CatalogueSpec {
     /// Schaeffler P1 \[N\].
     #[serde(default)]
     pub schaeffler_p1_n: Option<f64>,
+    /// SKF drag loss factor V_M, read from SKF's diagram at the oil level's H/d_m (oil bath;
+    /// finite, ≥ 0): the SKF 2004 drag term needs it (`operating.drag = "skf"`).
+    #[serde(default)]
+    pub skf_drag_factor_vm: Option<f64>,
 }
 
 /// One roller of the friction table.
@@ -571,7 +575,7 @@ fn point(
     if let (Some(c), Some(env)) = (catalogue, envelope.as_ref()) {
         if let Some(series) = &c.skf_series {
             let skf = skf_bearing(c, series, bearing)?;
-            let t = skf2004(&skf, env, &point, &SkfOptions::default())
+            let t = skf2004(&skf, env, &point, &skf_options(op, Some(c))?)
                 .map_err(|e| e.map_field(key("catalogue")))?;
             cat.skf_total_nmm = Some(t.total_nmm);
             cat.skf_rolling_nmm = Some(t.rolling_nmm);
@@ -746,6 +750,45 @@ fn point(
 ///
 /// # Errors
 /// Field `operating.oil_level_mm`: missing with `supply = "oil_bath"`, not finite or < 0.
+/// The SKF 2004 options of a case: the drag factor `catalogue.skf_drag_factor_vm`. With
+/// `operating.drag = "skf"` the supply must be an oil bath (SKF's drag term is the oil
+/// bath's) and V_M given: no silent zero drag.
+///
+/// # Errors
+/// [`Error::InvalidInput`] naming `operating.drag` or `catalogue.skf_drag_factor_vm`.
+pub(crate) fn skf_options(op: &OperatingSpec, cat: Option<&CatalogueSpec>) -> Result<SkfOptions> {
+    let vm = cat.and_then(|c| c.skf_drag_factor_vm);
+    if let Some(v) = vm
+        && !(v.is_finite() && v >= 0.0)
+    {
+        return Err(Error::invalid(
+            "catalogue.skf_drag_factor_vm",
+            v,
+            "a finite drag loss factor V_M >= 0 (SKF's diagram at H/d_m)",
+        ));
+    }
+    if op.drag == DragSpec::Skf {
+        if op.supply != Supply::OilBath {
+            return Err(Error::invalid(
+                "operating.drag",
+                "skf",
+                "\"none\" or \"schaeffler_m0\" unless supply = \"oil_bath\" (SKF's drag term is the oil bath's)",
+            ));
+        }
+        if vm.is_none() {
+            return Err(Error::invalid(
+                "catalogue.skf_drag_factor_vm",
+                "missing",
+                "V_M read from SKF's diagram at H/d_m (finite, >= 0): operating.drag = \"skf\" needs it",
+            ));
+        }
+    }
+    Ok(SkfOptions {
+        drag_factor_vm: vm,
+        ..SkfOptions::default()
+    })
+}
+
 pub(crate) fn oil_supply(op: &OperatingSpec) -> Result<Lubrication> {
     let lubrication = match op.supply {
         Supply::Circulating => Lubrication::OilJet,
@@ -825,6 +868,17 @@ pub(crate) fn plan_raceways(
     friction: Option<&FrictionSpec>,
     bearing: &RollerBearing,
 ) -> Result<RacewayPlan> {
+    // each surface's roughness, not only the composite σ the raceways use (the rib
+    // contacts check theirs later, without the case's key)
+    for (i, r) in lub.roughness_mm.iter().enumerate() {
+        if !(r.is_finite() && *r >= 0.0) {
+            return Err(Error::invalid(
+                format!("lubricant.roughness_mm[{i}]"),
+                r,
+                "a finite rms roughness >= 0 mm",
+            ));
+        }
+    }
     let rib_lub: RibLubrication = lub.lubrication()?;
     let oil = rib_lub.lubricant;
     let t = lub.temperature_c;

@@ -71,13 +71,18 @@ fn reaction(o: &kontakt_case::bearing_model::BearingElementOutput) -> [f64; 5] {
 }
 
 /// |a − b| <= tol · scale, per component, with the scale the largest |entry| of forces
-/// (0..3) and of moments (3..5) separately.
+/// (0..3) and of moments (3..5) separately; the moments' scale at least the forces' times
+/// 1 mm (a moment of round-off size beside a pure axial load is no scale).
 fn assert_close(what: &str, a: &[f64; 5], b: &[f64; 5], tol: f64) {
-    for range in [0..3, 3..5] {
-        let scale = a[range.clone()]
+    let largest = |r: std::ops::Range<usize>| {
+        a[r.clone()]
             .iter()
-            .chain(&b[range.clone()])
-            .fold(0.0_f64, |m, x| m.max(x.abs()));
+            .chain(&b[r])
+            .fold(0.0_f64, |m, x| m.max(x.abs()))
+    };
+    let force_scale = largest(0..3);
+    for range in [0..3, 3..5] {
+        let scale = largest(range.clone()).max(force_scale * 1.0);
         for i in range {
             assert!(
                 (a[i] - b[i]).abs() <= tol * scale,
@@ -108,7 +113,15 @@ fn reaction_is_minus_the_prescribed_displacement_solution() {
             }
             assert_eq!(o.damping, [0.0; 5]);
             let minus = load.map(|f| -f);
-            assert_close(&format!("{name} call {call}"), &reaction(&o), &minus, 1e-12);
+            // the rib-contact model balances every roller by its own Newton iteration
+            // (ring residual <= 1e-11, rollers 1e-13 of the largest roller load): the element's
+            // warm start and the case's cold solve end at different iterates within that
+            let tol = if text.contains("rib_contact") {
+                1e-10
+            } else {
+                1e-12
+            };
+            assert_close(&format!("{name} call {call}"), &reaction(&o), &minus, tol);
             let kmax = k.iter().flatten().fold(0.0_f64, |m, x| m.max(x.abs()));
             for i in 0..5 {
                 for j in 0..5 {

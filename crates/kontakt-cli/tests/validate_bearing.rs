@@ -90,7 +90,8 @@ fn validate_bearing_runs_on_every_dataset() {
             .map(|k| g(k))
             .sum::<f64>();
             assert!((parts - g("contact_total_nmm")).abs() < 0.01, "{r:?}");
-            assert!(g("contact_rib_nmm") > 0.0, "the rib is in: {r:?}");
+            // the 32008 X's model has its (assumed) rib, the 32216's none (raceways only)
+            assert_eq!(g("contact_rib_nmm") > 0.0, manjunath, "the rib: {r:?}");
         }
         assert_eq!(r["status"], "unverified");
         let has_skf = r["dataset"] != "zhou_hoeprich1991_fig9";

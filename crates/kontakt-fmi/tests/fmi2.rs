@@ -656,16 +656,21 @@ fn the_resource_uri_forms_hosts_send() {
 }
 
 #[test]
-fn crc32_and_zip_layout() {
-    use kontakt_fmi::archive::{crc32, zip};
-    // the check value of CRC-32/ISO-HDLC
-    assert_eq!(crc32(b"123456789"), 0xCBF4_3926);
-    let z = zip(&[("a.txt", b"hello"), ("b/c.txt", b"")]).unwrap();
-    assert_eq!(&z[..4], b"PK\x03\x04");
-    // the end record names two entries and where the central directory starts
-    let end = &z[z.len() - 22..];
-    assert_eq!(&end[..4], b"PK\x05\x06");
-    assert_eq!(u16::from_le_bytes([end[10], end[11]]), 2);
-    let start = u32::from_le_bytes([end[16], end[17], end[18], end[19]]) as usize;
-    assert_eq!(&z[start..start + 4], b"PK\x01\x02");
+fn the_archive_reads_back_entry_by_entry_and_is_reproducible() {
+    use kontakt_fmi::archive::zip;
+    use std::io::Read;
+    let big = vec![7u8; 100_000];
+    let entries: [(&str, &[u8]); 3] = [("a.txt", b"hello"), ("b/c.txt", b""), ("d.bin", &big)];
+    let z = zip(&entries).unwrap();
+    assert_eq!(zip(&entries).unwrap(), z, "same entries, same bytes");
+    assert!(z.len() < 10_000, "deflated: {} bytes", z.len());
+    let mut archive = ::zip::ZipArchive::new(std::io::Cursor::new(z)).unwrap();
+    assert_eq!(archive.len(), 3);
+    for (name, data) in entries {
+        let mut f = archive.by_name(name).unwrap();
+        let mut back = Vec::new();
+        f.read_to_end(&mut back).unwrap();
+        assert_eq!(back, data, "{name}");
+        assert_eq!(f.unix_mode(), Some(0o100644), "{name}");
+    }
 }

@@ -126,6 +126,7 @@ enum DragPlan {
         bearing: SkfBearing,
         envelope: Envelope,
         supply: Lubrication,
+        options: SkfOptions,
     },
     /// `"schaeffler_m0"`: Schaeffler's M0 with f0 and the mean diameter \[mm\].
     M0 { f0: f64, mean_diameter_mm: f64 },
@@ -149,8 +150,9 @@ impl DragPlan {
                 bearing,
                 envelope,
                 supply,
+                options,
             } => DragModel::Torque {
-                nmm: skf2004(bearing, envelope, &point(*supply), &SkfOptions::default())
+                nmm: skf2004(bearing, envelope, &point(*supply), options)
                     .map_err(|e| e.map_field(|f| format!("catalogue.{f}")))?
                     .drag_nmm,
             },
@@ -382,6 +384,7 @@ fn drag_plan(case: &BearingCase, op: &OperatingSpec, bearing: &RollerBearing) ->
                 bearing: skf_bearing(c, series, bearing)?,
                 envelope,
                 supply,
+                options: crate::bearing_friction::skf_options(op, Some(c))?,
             },
             _ => {
                 return Err(Error::invalid(

@@ -32,6 +32,14 @@ pub struct ContactSetup {
     pub assumptions: &'static [&'static str],
 }
 
+impl ContactSetup {
+    /// Whether the setup's case models the roller end/rib contact (`[bearing.rib_contact]`):
+    /// the rib study (`super::rib_study::sensitivity`) varies it.
+    pub fn has_rib(&self) -> bool {
+        self.case_toml.contains("[bearing.rib_contact]")
+    }
+}
+
 /// The 32008 X friction case with its rib (Manjunath et al. 2023 conditions).
 pub const MANJUNATH_CONTACT: ContactSetup = ContactSetup {
     case_toml: include_str!("../../../../examples/bearing_32008x_rib_friction.toml"),
