@@ -45,6 +45,7 @@
 //! about its axis, the same on both rings (the models do not split it).
 
 pub mod aihara;
+pub mod ball;
 pub mod raceway;
 pub mod schaeffler;
 pub mod skf2004;
