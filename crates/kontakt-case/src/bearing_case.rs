@@ -967,7 +967,7 @@ pub(crate) fn run_bearing_case_unchecked(case: &BearingCase) -> Result<BearingRe
 }
 
 /// The friction section (`crate::bearing_friction`) of a case whose `planned` solver has
-/// just solved; an error naming `operating` for a ball bearing.
+/// just solved.
 fn friction_of_planned(
     case: &BearingCase,
     op: &crate::bearing_friction::OperatingSpec,
@@ -991,12 +991,13 @@ fn friction_of_planned(
             },
         ),
         Planned::RibRoller(s) => (s.bearing(), Solved::Rib(s)),
-        Planned::Ball { .. } | Planned::BallAtSpeed { .. } => {
-            return Err(Error::invalid(
-                "operating",
-                "given for a ball bearing",
-                "[operating] with a tapered or cylindrical roller bearing (the friction torque of ball bearings is not built yet)",
-            ));
+        Planned::Ball { solver, .. } => {
+            let balls: Vec<_> = solver.ball_loads().iter().map(Into::into).collect();
+            return ball_friction(case, op, solver.bearing(), &balls, force);
+        }
+        Planned::BallAtSpeed { solver, .. } => {
+            let balls: Vec<_> = solver.ball_loads().iter().map(Into::into).collect();
+            return ball_friction(case, op, solver.bearing(), &balls, force);
         }
     };
     crate::bearing_friction::friction_report(
@@ -1007,6 +1008,26 @@ fn friction_of_planned(
         case.catalogue.as_ref(),
         bearing,
         solved,
+        force,
+    )
+}
+
+/// The friction section of a ball bearing case (`crate::bearing_friction::ball`).
+fn ball_friction(
+    case: &BearingCase,
+    op: &crate::bearing_friction::OperatingSpec,
+    bearing: &kontakt_bearing::geometry::BallBearing,
+    balls: &[kontakt_bearing::friction::ball::BallContacts],
+    force: [f64; 3],
+) -> Result<crate::bearing_friction::FrictionReport> {
+    crate::bearing_friction::ball::friction_report(
+        op,
+        [case.speed.inner_rpm, case.speed.outer_rpm],
+        case.lubricant.as_ref(),
+        case.friction.as_ref(),
+        case.catalogue.as_ref(),
+        bearing,
+        balls,
         force,
     )
 }

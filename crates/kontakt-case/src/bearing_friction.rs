@@ -32,6 +32,8 @@ use kontakt_bearing::geometry::{RollerBearing, RollerBearingKind};
 use kontakt_bearing::roller_equilibrium::RibContactSolver;
 use serde::{Deserialize, Serialize};
 
+pub(crate) mod ball;
+
 /// The largest ring speed, r/min: `[speed]`'s (`bearing_case::speed::MAX_RING_RPM`, not
 /// imported: `bearing_case` imports this module), for the sweep's speeds.
 const MAX_RING_RPM: f64 = 100_000.0;
@@ -144,6 +146,10 @@ pub struct CatalogueSpec {
     /// Schaeffler P1 \[N\].
     #[serde(default)]
     pub schaeffler_p1_n: Option<f64>,
+    /// Basic static load rating C_0 \[N\] (the SKF 2004 deep groove ball bearing's axial
+    /// term needs it).
+    #[serde(default)]
+    pub c0_n: Option<f64>,
 }
 
 /// One roller of the friction table.
@@ -268,6 +274,10 @@ pub struct FrictionReport {
     /// With `operating.sweep_inner_rpm`: the torque at each of its speeds.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub speed_sweep: Vec<FrictionSweepRow>,
+    /// Every ball of a ball bearing (then `cone_*` is the inner race, `cup_*` the outer
+    /// race, `rollers` empty; `bearing_friction::ball`).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub balls: Vec<ball::FrictionBallRow>,
 }
 
 /// One speed of `operating.sweep_inner_rpm` (torques N·mm, power W).
@@ -338,6 +348,20 @@ pub(crate) fn friction_report(
             op, rpm, lubricant, friction, catalogue, bearing, solved, force,
         )
     };
+    with_sweep(op, rpm, at)
+}
+
+/// The report of `at` at the ring speeds `rpm` (r/min) and, with
+/// `operating.sweep_inner_rpm`, its rows at each of the sweep's speeds (roller and ball
+/// bearings).
+///
+/// # Errors
+/// Those of `at`, the sweep's named `operating.sweep_inner_rpm`.
+pub(crate) fn with_sweep(
+    op: &OperatingSpec,
+    rpm: [f64; 2],
+    at: impl Fn([f64; 2]) -> Result<FrictionReport>,
+) -> Result<FrictionReport> {
     let mut report = at(rpm)?;
     if let Some(speeds) = &op.sweep_inner_rpm {
         if speeds.is_empty() || speeds.len() > 10_000 {
@@ -402,42 +426,14 @@ fn point(
             ));
         }
     }
-    let lub = lubricant.ok_or_else(|| Error::CaseFile {
-        line: None,
-        key: "lubricant".into(),
-        message: "missing table `[lubricant]`: [operating] needs the oil (iso_vg or nu40_mm2_s and nu100_mm2_s, density_kg_m3, alpha_per_mpa, temperature_c, roughness_mm)".into(),
-    })?;
-    let rib_lub: RibLubrication = lub.lubrication()?;
-    let oil = rib_lub.lubricant;
-    let t = lub.temperature_c;
-    let nu = oil
-        .kinematic_viscosity(t)
-        .map_err(|e| e.map_field(|_| "lubricant.temperature_c".to_string()))?;
-    let law = friction.copied().unwrap_or_default().law(true)?;
-    let sigma = lub.roughness_mm[0].hypot(lub.roughness_mm[1]);
-    let mut raceway = raceway_lubrication(
-        &oil,
-        t,
-        op.thermal,
-        sigma,
+    let Oil {
+        losses,
+        rib_lub,
+        oil,
+        temperature_c: t,
+        viscosity_mm2_s: nu,
         law,
-        match op.rolling_resistance {
-            RollingSpec::BibouletHoupert => RollingResistanceModel::BibouletHoupert,
-            RollingSpec::ZhouHoeprich => RollingResistanceModel::ZhouHoeprich,
-        },
-    )?;
-    raceway.conductivity = op.conductivity_w_mk;
-    raceway.film_starvation = op.film_starvation;
-    raceway.starvation_degree = op.starvation_degree;
-    let losses = RacewayLosses::new(raceway).map_err(|e| {
-        e.map_field(|f| match f {
-            "conductivity" => "operating.conductivity_w_mk".into(),
-            "starvation_factor" => "operating.film_starvation".into(),
-            "starvation_degree" => "operating.starvation_degree".into(),
-            "roughness" => "lubricant.roughness_mm".into(),
-            other => format!("friction.{other}"),
-        })
-    })?;
+    } = oil(op, lubricant, friction)?;
     let mut model = BearingFrictionModel::new(bearing.clone(), losses)?;
     let (wi, wo) = (rpm[0] / RPM_PER_RAD_S, rpm[1] / RPM_PER_RAD_S);
     let starting = wi == wo;
@@ -544,35 +540,10 @@ fn point(
         ),
         None => None,
     };
-    let lubrication = match op.supply {
-        Supply::Circulating => Lubrication::OilJet,
-        Supply::OilBath => Lubrication::OilBath {
-            level_mm: op.oil_level_mm.ok_or_else(|| {
-                Error::invalid(
-                    "operating.oil_level_mm",
-                    "missing",
-                    "the oil level above the lowest point of the outer raceway, mm, with supply = \"oil_bath\"",
-                )
-            })?,
-        },
-    };
-    if let Lubrication::OilBath { level_mm } = lubrication {
-        if !(level_mm.is_finite() && level_mm >= 0.0) {
-            return Err(Error::invalid(
-                "operating.oil_level_mm",
-                level_mm,
-                "a finite oil level >= 0 mm above the lowest point of the outer raceway",
-            ));
-        }
-        // The bearing's centre lies the outer raceway's mid radius above its lowest point.
-        let centre = 0.5 * bearing.pitch_diameter_mm
-            + 0.5 * bearing.roller_diameter_mm * bearing.contact_angle_rad.cos();
-        if level_mm > centre {
-            warnings.push(format!(
-                "oil level {level_mm} mm is above the bearing's centre ({centre:.1} mm above the lowest point of the outer raceway): outside what the catalogue drag models were fitted for"
-            ));
-        }
-    }
+    // The bearing's centre lies the outer raceway's mid radius above its lowest point.
+    let centre = 0.5 * bearing.pitch_diameter_mm
+        + 0.5 * bearing.roller_diameter_mm * bearing.contact_angle_rad.cos();
+    let lubrication = supply(op, centre, &mut warnings)?;
     let (fr, fa) = (force[0].hypot(force[1]), force[2].abs());
     let point = OperatingPoint {
         speed_rad_s: (wi - wo).abs(),
@@ -666,30 +637,7 @@ fn point(
             );
         }
     }
-    let drag = match op.drag {
-        DragSpec::None => DragModel::None,
-        DragSpec::Skf => DragModel::Torque {
-            nmm: cat.skf_drag_nmm.ok_or_else(|| {
-                Error::invalid(
-                    "operating.drag",
-                    "skf",
-                    "\"none\" or \"schaeffler_m0\" unless [catalogue] has skf_series (the SKF drag term needs its series)",
-                )
-            })?,
-        },
-        DragSpec::SchaefflerM0 => DragModel::Torque {
-            nmm: cat.schaeffler_m0_nmm.ok_or_else(|| {
-                Error::invalid(
-                    "operating.drag",
-                    "schaeffler_m0",
-                    "\"none\" or \"skf\" unless [catalogue] has schaeffler_f0",
-                )
-            })?,
-        },
-    };
-    if op.drag == DragSpec::SchaefflerM0 && nu * point.speed_rpm() < 2000.0 {
-        warnings.push("Schaeffler M0: ν n < 2000, the catalogue's low-speed constant".into());
-    }
+    let drag = drag_model(op, &cat, nu * point.speed_rpm(), &mut warnings)?;
 
     let p = force.iter().map(|f| f * f).sum::<f64>().sqrt();
     let d = envelope.map_or(bearing.pitch_diameter_mm, |e| e.bore_mm);
@@ -765,6 +713,149 @@ fn point(
         rollers,
         warnings,
         speed_sweep: Vec::new(),
+        balls: Vec::new(),
+    })
+}
+
+/// The catalogue models' lubrication of `[operating]`, with a warning when the oil level
+/// is above the bearing's centre, `centre` \[mm\] above the lowest point of the outer
+/// raceway. Errors name `operating.oil_level_mm`.
+pub(crate) fn supply(
+    op: &OperatingSpec,
+    centre: f64,
+    warnings: &mut Vec<String>,
+) -> Result<Lubrication> {
+    let lubrication = match op.supply {
+        Supply::Circulating => Lubrication::OilJet,
+        Supply::OilBath => Lubrication::OilBath {
+            level_mm: op.oil_level_mm.ok_or_else(|| {
+                Error::invalid(
+                    "operating.oil_level_mm",
+                    "missing",
+                    "the oil level above the lowest point of the outer raceway, mm, with supply = \"oil_bath\"",
+                )
+            })?,
+        },
+    };
+    if let Lubrication::OilBath { level_mm } = lubrication {
+        if !(level_mm.is_finite() && level_mm >= 0.0) {
+            return Err(Error::invalid(
+                "operating.oil_level_mm",
+                level_mm,
+                "a finite oil level >= 0 mm above the lowest point of the outer raceway",
+            ));
+        }
+        if level_mm > centre {
+            warnings.push(format!(
+                "oil level {level_mm} mm is above the bearing's centre ({centre:.1} mm above the lowest point of the outer raceway): outside what the catalogue drag models were fitted for"
+            ));
+        }
+    }
+    Ok(lubrication)
+}
+
+/// The drag of `operating.drag` from the catalogue torques `cat`; `nu_n` = ν n
+/// \[mm²/s · r/min\] for the Schaeffler low-speed warning.
+pub(crate) fn drag_model(
+    op: &OperatingSpec,
+    cat: &CatalogueTorques,
+    nu_n: f64,
+    warnings: &mut Vec<String>,
+) -> Result<DragModel> {
+    let drag = match op.drag {
+        DragSpec::None => DragModel::None,
+        DragSpec::Skf => DragModel::Torque {
+            nmm: cat.skf_drag_nmm.ok_or_else(|| {
+                Error::invalid(
+                    "operating.drag",
+                    "skf",
+                    "\"none\" or \"schaeffler_m0\" unless [catalogue] has skf_series (the SKF drag term needs its series)",
+                )
+            })?,
+        },
+        DragSpec::SchaefflerM0 => DragModel::Torque {
+            nmm: cat.schaeffler_m0_nmm.ok_or_else(|| {
+                Error::invalid(
+                    "operating.drag",
+                    "schaeffler_m0",
+                    "\"none\" or \"skf\" unless [catalogue] has schaeffler_f0",
+                )
+            })?,
+        },
+    };
+    if op.drag == DragSpec::SchaefflerM0 && nu_n < 2000.0 {
+        warnings.push("Schaeffler M0: ν n < 2000, the catalogue's low-speed constant".into());
+    }
+
+    Ok(drag)
+}
+
+/// The oil of the raceway contacts from `[lubricant]`, `[friction]` and `[operating]`
+/// (shared by the roller and the ball friction).
+pub(crate) struct Oil {
+    /// The raceway loss model.
+    pub(crate) losses: RacewayLosses,
+    /// The rib lubrication (the oil and the roughness of the case).
+    pub(crate) rib_lub: RibLubrication,
+    /// The oil.
+    pub(crate) oil: kontakt::lubrication::Lubricant,
+    /// Its temperature \[°C\].
+    pub(crate) temperature_c: f64,
+    /// Its kinematic viscosity there \[mm²/s\].
+    pub(crate) viscosity_mm2_s: f64,
+    /// The friction law.
+    pub(crate) law: kontakt::friction::FrictionLaw,
+}
+
+/// [`Oil`] of the case tables; errors named by the case key.
+pub(crate) fn oil(
+    op: &OperatingSpec,
+    lubricant: Option<&LubricantSpec>,
+    friction: Option<&FrictionSpec>,
+) -> Result<Oil> {
+    let lub = lubricant.ok_or_else(|| Error::CaseFile {
+        line: None,
+        key: "lubricant".into(),
+        message: "missing table `[lubricant]`: [operating] needs the oil (iso_vg or nu40_mm2_s and nu100_mm2_s, density_kg_m3, alpha_per_mpa, temperature_c, roughness_mm)".into(),
+    })?;
+    let rib_lub: RibLubrication = lub.lubrication()?;
+    let oil = rib_lub.lubricant;
+    let t = lub.temperature_c;
+    let nu = oil
+        .kinematic_viscosity(t)
+        .map_err(|e| e.map_field(|_| "lubricant.temperature_c".to_string()))?;
+    let law = friction.copied().unwrap_or_default().law(true)?;
+    let sigma = lub.roughness_mm[0].hypot(lub.roughness_mm[1]);
+    let mut raceway = raceway_lubrication(
+        &oil,
+        t,
+        op.thermal,
+        sigma,
+        law,
+        match op.rolling_resistance {
+            RollingSpec::BibouletHoupert => RollingResistanceModel::BibouletHoupert,
+            RollingSpec::ZhouHoeprich => RollingResistanceModel::ZhouHoeprich,
+        },
+    )?;
+    raceway.conductivity = op.conductivity_w_mk;
+    raceway.film_starvation = op.film_starvation;
+    raceway.starvation_degree = op.starvation_degree;
+    let losses = RacewayLosses::new(raceway).map_err(|e| {
+        e.map_field(|f| match f {
+            "conductivity" => "operating.conductivity_w_mk".into(),
+            "starvation_factor" => "operating.film_starvation".into(),
+            "starvation_degree" => "operating.starvation_degree".into(),
+            "roughness" => "lubricant.roughness_mm".into(),
+            other => format!("friction.{other}"),
+        })
+    })?;
+    Ok(Oil {
+        losses,
+        rib_lub,
+        oil,
+        temperature_c: t,
+        viscosity_mm2_s: nu,
+        law,
     })
 }
 
@@ -786,11 +877,21 @@ impl FrictionReport {
                 }
             ),
             format!(
-                "  torque {:.2} N·mm = cone {:.2} (rolling {:.2}, sliding {:.2}) + cup {:.2} (rolling {:.2}, sliding {:.2}) + rib {:.2} + drag {:.2}",
+                "  torque {:.2} N·mm = {} {:.2} (rolling {:.2}, sliding {:.2}) + {} {:.2} (rolling {:.2}, sliding {:.2}) + rib {:.2} + drag {:.2}",
                 self.total_nmm,
+                if self.balls.is_empty() {
+                    "cone"
+                } else {
+                    "inner race"
+                },
                 self.cone_rolling_nmm + self.cone_sliding_nmm,
                 self.cone_rolling_nmm,
                 self.cone_sliding_nmm,
+                if self.balls.is_empty() {
+                    "cup"
+                } else {
+                    "outer race"
+                },
                 self.cup_rolling_nmm + self.cup_sliding_nmm,
                 self.cup_rolling_nmm,
                 self.cup_sliding_nmm,
