@@ -32,7 +32,7 @@ use kontakt_bearing::geometry::{RollerBearing, RollerBearingKind};
 use kontakt_bearing::roller_equilibrium::RibContactSolver;
 use serde::{Deserialize, Serialize};
 
-pub(crate) mod ball;
+pub mod ball;
 
 /// The largest ring speed, r/min: `[speed]`'s (`bearing_case::speed::MAX_RING_RPM`, not
 /// imported: `bearing_case` imports this module), for the sweep's speeds.
