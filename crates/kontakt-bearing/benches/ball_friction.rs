@@ -9,15 +9,16 @@
 #[allow(dead_code)]
 mod cases;
 
+#[path = "../tests/support/friction.rs"]
+#[allow(dead_code)]
+mod friction;
+
 use cases::{dgbb, dgbb_load, dgbb_speeds};
 use criterion::{Criterion, criterion_group, criterion_main};
-use kontakt::friction::FrictionLaw;
-use kontakt::lubrication::RollingResistanceModel;
 use kontakt_bearing::ball_speed::{BallSpeedSolver, RaceControl};
 use kontakt_bearing::friction::ball::{
     BallAttitude, BallContacts, BallFrictionModel, BallFrictionOperating,
 };
-use kontakt_bearing::friction::raceway::{RacewayLosses, RacewayLubrication};
 use kontakt_bearing::friction::torque::DragModel;
 use std::hint::black_box;
 
@@ -25,18 +26,7 @@ fn setup() -> (BallFrictionModel, Vec<BallContacts>) {
     let mut s = BallSpeedSolver::new(dgbb(), dgbb_speeds(), RaceControl::Outer).expect("valid");
     s.solve(&dgbb_load(1.0)).expect("solve");
     let balls = s.ball_loads().iter().map(BallContacts::from).collect();
-    let losses = RacewayLosses::new(RacewayLubrication {
-        viscosity: 0.03e-6,
-        alpha: 0.02,
-        viscosity_slope: Some(-1.7e-9),
-        conductivity: 0.134,
-        film_starvation: 1.0,
-        starvation_degree: None,
-        roughness: 0.2e-3,
-        law: FrictionLaw::mixed(0.12).expect("valid law"),
-        rolling: RollingResistanceModel::BibouletHoupert,
-    })
-    .expect("valid lubrication");
+    let losses = friction::losses(&friction::vg68(), 70.0, true);
     let model =
         BallFrictionModel::new(dgbb(), losses, BallAttitude::OuterRaceControl).expect("model");
     (model, balls)

@@ -8,32 +8,21 @@
 mod cases;
 #[path = "../../kontakt/tests/support/counting_alloc.rs"]
 mod counting_alloc;
+#[path = "support/friction.rs"]
+#[allow(dead_code)]
+mod friction;
 
 use cases::{dgbb, dgbb_load, dgbb_speeds};
 use counting_alloc::allocations;
-use kontakt::friction::FrictionLaw;
-use kontakt::lubrication::RollingResistanceModel;
 use kontakt_bearing::ball_equilibrium::BallBearingSolver;
 use kontakt_bearing::ball_speed::{BallSpeedSolver, RaceControl};
 use kontakt_bearing::friction::ball::{
     BallAttitude, BallContacts, BallFrictionModel, BallFrictionOperating,
 };
-use kontakt_bearing::friction::raceway::{RacewayLosses, RacewayLubrication};
 use kontakt_bearing::friction::torque::DragModel;
 
 fn model() -> BallFrictionModel {
-    let losses = RacewayLosses::new(RacewayLubrication {
-        viscosity: 0.03e-6,
-        alpha: 0.02,
-        viscosity_slope: Some(-1.7e-9),
-        conductivity: 0.134,
-        film_starvation: 1.0,
-        starvation_degree: Some(10.0),
-        roughness: 0.2e-3,
-        law: FrictionLaw::mixed(0.12).expect("valid law"),
-        rolling: RollingResistanceModel::BibouletHoupert,
-    })
-    .expect("valid lubrication");
+    let losses = friction::losses(&friction::vg68(), 70.0, true);
     BallFrictionModel::new(dgbb(), losses, BallAttitude::OuterRaceControl).expect("model")
 }
 

@@ -975,6 +975,7 @@ fn friction_of_planned(
     force: [f64; 3],
 ) -> Result<crate::bearing_friction::FrictionReport> {
     use crate::bearing_friction::Solved;
+    use crate::bearing_friction::ball::friction_report as ball_friction;
     let (bearing, solved) = match planned {
         Planned::Roller(s) => (
             s.bearing(),
@@ -1008,26 +1009,6 @@ fn friction_of_planned(
         case.catalogue.as_ref(),
         bearing,
         solved,
-        force,
-    )
-}
-
-/// The friction section of a ball bearing case (`crate::bearing_friction::ball`).
-fn ball_friction(
-    case: &BearingCase,
-    op: &crate::bearing_friction::OperatingSpec,
-    bearing: &kontakt_bearing::geometry::BallBearing,
-    balls: &[kontakt_bearing::friction::ball::BallContacts],
-    force: [f64; 3],
-) -> Result<crate::bearing_friction::FrictionReport> {
-    crate::bearing_friction::ball::friction_report(
-        op,
-        [case.speed.inner_rpm, case.speed.outer_rpm],
-        case.lubricant.as_ref(),
-        case.friction.as_ref(),
-        case.catalogue.as_ref(),
-        bearing,
-        balls,
         force,
     )
 }

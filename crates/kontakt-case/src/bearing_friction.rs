@@ -417,15 +417,7 @@ fn point(
             "[operating] with a tapered or cylindrical roller bearing (thrust: not yet)",
         ));
     }
-    for (k, v) in [("speed.inner_rpm", rpm[0]), ("speed.outer_rpm", rpm[1])] {
-        if !(v.is_finite() && v.abs() <= MAX_RING_RPM) {
-            return Err(Error::invalid(
-                k,
-                v,
-                format!("a finite speed with |speed| <= {MAX_RING_RPM} r/min"),
-            ));
-        }
-    }
+    check_rpm(rpm)?;
     let Oil {
         losses,
         rib_lub,
@@ -533,13 +525,7 @@ fn point(
     }
 
     // Catalogue torques and drag.
-    let envelope = match catalogue {
-        Some(c) => Some(
-            Envelope::new(c.bore_mm, c.outer_mm, c.width_mm)
-                .map_err(|e| e.map_field(key("catalogue")))?,
-        ),
-        None => None,
-    };
+    let envelope = envelope(catalogue)?;
     // The bearing's centre lies the outer raceway's mid radius above its lowest point.
     let centre = 0.5 * bearing.pitch_diameter_mm
         + 0.5 * bearing.roller_diameter_mm * bearing.contact_angle_rad.cos();
@@ -574,21 +560,11 @@ fn point(
             };
             let t = skf2004(&skf, env, &point, &SkfOptions::default())
                 .map_err(|e| e.map_field(key("catalogue")))?;
-            cat.skf_total_nmm = Some(t.total_nmm);
-            cat.skf_rolling_nmm = Some(t.rolling_nmm);
-            cat.skf_sliding_nmm = Some(t.sliding_nmm);
-            cat.skf_drag_nmm = Some(t.drag_nmm);
-            warnings.extend(t.warnings.lines().into_iter().map(|w| format!("SKF: {w}")));
+            cat.add_skf(&t, &mut warnings);
         } else {
             warnings.push("SKF catalogue torque not computed: give catalogue.skf_series (and y for tapered bearings)".to_string());
         }
-        if let Some(f0) = c.schaeffler_f0 {
-            let m = m0(f0, nu * point.speed_rpm(), env.mean_diameter_mm());
-            cat.schaeffler_m0_nmm = Some(m);
-            if let (Some(f1), Some(p1)) = (c.schaeffler_f1, c.schaeffler_p1_n) {
-                cat.schaeffler_total_nmm = Some(m + f1 * p1 * env.mean_diameter_mm());
-            }
-        }
+        cat.add_schaeffler(c, nu * point.speed_rpm(), env);
     } else {
         warnings.push("catalogue torques not computed: give [catalogue] (bore_mm, outer_mm, width_mm, skf_series, y)".to_string());
     }
@@ -715,6 +691,56 @@ fn point(
         speed_sweep: Vec::new(),
         balls: Vec::new(),
     })
+}
+
+/// `speed.inner_rpm` and `speed.outer_rpm` finite and within `|n| <= MAX_RING_RPM`.
+pub(crate) fn check_rpm(rpm: [f64; 2]) -> Result<()> {
+    for (k, v) in [("speed.inner_rpm", rpm[0]), ("speed.outer_rpm", rpm[1])] {
+        if !(v.is_finite() && v.abs() <= MAX_RING_RPM) {
+            return Err(Error::invalid(
+                k,
+                v,
+                format!("a finite speed with |speed| <= {MAX_RING_RPM} r/min"),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The envelope of `[catalogue]` (errors named `catalogue.*`).
+pub(crate) fn envelope(catalogue: Option<&CatalogueSpec>) -> Result<Option<Envelope>> {
+    catalogue
+        .map(|c| {
+            Envelope::new(c.bore_mm, c.outer_mm, c.width_mm)
+                .map_err(|e| e.map_field(key("catalogue")))
+        })
+        .transpose()
+}
+
+impl CatalogueTorques {
+    /// Record the SKF 2004 torque `t` and its warnings.
+    pub(crate) fn add_skf(
+        &mut self,
+        t: &kontakt_bearing::friction::skf2004::SkfTorque,
+        warnings: &mut Vec<String>,
+    ) {
+        self.skf_total_nmm = Some(t.total_nmm);
+        self.skf_rolling_nmm = Some(t.rolling_nmm);
+        self.skf_sliding_nmm = Some(t.sliding_nmm);
+        self.skf_drag_nmm = Some(t.drag_nmm);
+        warnings.extend(t.warnings.lines().into_iter().map(|w| format!("SKF: {w}")));
+    }
+
+    /// Record the Schaeffler M0 (and M0 + M1) of `c` at ν n = `nu_n` \[mm²/s · r/min\].
+    pub(crate) fn add_schaeffler(&mut self, c: &CatalogueSpec, nu_n: f64, env: &Envelope) {
+        if let Some(f0) = c.schaeffler_f0 {
+            let m = m0(f0, nu_n, env.mean_diameter_mm());
+            self.schaeffler_m0_nmm = Some(m);
+            if let (Some(f1), Some(p1)) = (c.schaeffler_f1, c.schaeffler_p1_n) {
+                self.schaeffler_total_nmm = Some(m + f1 * p1 * env.mean_diameter_mm());
+            }
+        }
+    }
 }
 
 /// The catalogue models' lubrication of `[operating]`, with a warning when the oil level

@@ -343,6 +343,32 @@ pub struct BallFrictionWarnings {
     pub starting: bool,
 }
 
+impl BallFrictionWarnings {
+    /// One sentence per raised flag (allocates; for reports).
+    pub fn lines(&self) -> Vec<String> {
+        let mut out = Vec::new();
+        if self.film_out_of_range_contacts > 0 {
+            out.push(format!(
+                "{} loaded ball contacts outside the Hamrock-Dowson fit (ellipticity 1 <= k <= 8): films extrapolated",
+                self.film_out_of_range_contacts
+            ));
+        }
+        if self.film_out_of_range_strips > 0 {
+            out.push(format!(
+                "{} rolling-resistance strips outside the Dowson-Higginson fit: extrapolated",
+                self.film_out_of_range_strips
+            ));
+        }
+        if self.starvation_extrapolated {
+            out.push("starvation degree below Biboulet & Houpert's computed range (S < 2)".into());
+        }
+        if self.starting {
+            out.push("the rings do not turn relative to each other: starting torque (boundary friction of the ball contacts' spin and differential slip, no film)".into());
+        }
+        out
+    }
+}
+
 /// A ball bearing's friction at one operating point.
 #[derive(Debug, Clone, Copy, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
@@ -636,15 +662,7 @@ impl BallFrictionModel {
                 format!("{z} balls (one entry per ball)"),
             ));
         }
-        let drag_nmm = match op.drag {
-            DragModel::None => 0.0,
-            DragModel::Torque { nmm } => {
-                if !(nmm.is_finite() && nmm >= 0.0) {
-                    return Err(Error::invalid("drag", nmm, "a finite torque >= 0 N·mm"));
-                }
-                nmm
-            }
-        };
+        let drag_nmm = op.drag.torque_nmm()?;
         let dw = op.inner_speed - op.outer_speed;
         let starting = dw == 0.0;
         let speeds = if starting {

@@ -9,15 +9,14 @@
 //! Units: r/min in the case (rad/s in the library), mm, N, N·mm, W, °C.
 
 use super::{
-    CatalogueSpec, CatalogueTorques, FrictionReport, OperatingSpec, drag_model, key, oil, supply,
-    with_sweep,
+    CatalogueSpec, CatalogueTorques, FrictionReport, OperatingSpec, check_rpm, drag_model,
+    envelope, key, oil, supply, with_sweep,
 };
-use crate::friction_case::{FrictionSpec, LubricantSpec};
+use crate::bearing_case::BearingCase;
 use kontakt::{Error, Result};
 use kontakt_bearing::friction::ball::{
     BallAttitude, BallContacts, BallFrictionModel, BallFrictionOperating,
 };
-use kontakt_bearing::friction::schaeffler::m0;
 use kontakt_bearing::friction::skf2004::{
     AngularContactSeries, DeepGrooveSeries, SkfBearing, SkfOptions, skf2004,
 };
@@ -54,51 +53,32 @@ pub struct FrictionBallRow {
     pub min_lambda: Option<f64>,
 }
 
-/// The friction section of the ball bearing `bearing` with the solved `balls` under the
-/// force `force` \[N\] at the ring speeds `rpm` (r/min), with the speed sweep of
-/// `operating.sweep_inner_rpm` (on the same load distribution).
+/// The friction section of the ball bearing `bearing` of `case` with the solved `balls`
+/// under the force `force` \[N\] at the ring speeds of `[speed]` (r/min), with the speed
+/// sweep of `operating.sweep_inner_rpm` (on the same load distribution).
 ///
 /// # Errors
 /// [`Error::InvalidInput`] naming the case key (`speed.inner_rpm`, `lubricant.*`,
 /// `friction.*`, `catalogue.*`, `operating.*`).
-#[allow(clippy::too_many_arguments)]
 pub(crate) fn friction_report(
+    case: &BearingCase,
     op: &OperatingSpec,
-    rpm: [f64; 2],
-    lubricant: Option<&LubricantSpec>,
-    friction: Option<&FrictionSpec>,
-    catalogue: Option<&CatalogueSpec>,
     bearing: &BallBearing,
     balls: &[BallContacts],
     force: [f64; 3],
 ) -> Result<FrictionReport> {
-    let oil = oil(op, lubricant, friction)?;
+    let rpm = [case.speed.inner_rpm, case.speed.outer_rpm];
+    let catalogue = case.catalogue.as_ref();
+    let oil = oil(op, case.lubricant.as_ref(), case.friction.as_ref())?;
     let nu = oil.viscosity_mm2_s;
     let model = BallFrictionModel::new(
         bearing.clone(),
         oil.losses.clone(),
         BallAttitude::OuterRaceControl,
     )?;
-    let envelope = match catalogue {
-        Some(c) => Some(
-            Envelope::new(c.bore_mm, c.outer_mm, c.width_mm)
-                .map_err(|e| e.map_field(key("catalogue")))?,
-        ),
-        None => None,
-    };
+    let envelope = envelope(catalogue)?;
     let at = |rpm: [f64; 2]| -> Result<FrictionReport> {
-        for (k, v) in [("speed.inner_rpm", rpm[0]), ("speed.outer_rpm", rpm[1])] {
-            if !(v.is_finite() && v.abs() <= super::MAX_RING_RPM) {
-                return Err(Error::invalid(
-                    k,
-                    v,
-                    format!(
-                        "a finite speed with |speed| <= {} r/min",
-                        super::MAX_RING_RPM
-                    ),
-                ));
-            }
-        }
+        check_rpm(rpm)?;
         let mut warnings = Vec::new();
         // The bearing's centre above the lowest point of the outer raceway.
         let centre = 0.5
@@ -127,25 +107,7 @@ pub(crate) fn friction_report(
             drag,
             coefficient_basis: Some((p, d)),
         })?;
-        if f.warnings.film_out_of_range_contacts > 0 {
-            warnings.push(format!(
-                "{} loaded ball contacts outside the Hamrock-Dowson fit (ellipticity 1 <= k <= 8): films extrapolated",
-                f.warnings.film_out_of_range_contacts
-            ));
-        }
-        if f.warnings.film_out_of_range_strips > 0 {
-            warnings.push(format!(
-                "{} rolling-resistance strips outside the Dowson-Higginson fit: extrapolated",
-                f.warnings.film_out_of_range_strips
-            ));
-        }
-        if f.warnings.starvation_extrapolated {
-            warnings
-                .push("starvation degree below Biboulet & Houpert's computed range (S < 2)".into());
-        }
-        if starting {
-            warnings.push("the rings do not turn relative to each other: starting torque (boundary friction of the ball contacts' spin and differential slip, no film)".into());
-        }
+        warnings.extend(f.warnings.lines());
         let finite = |v: f64| v.is_finite().then_some(v);
         let rows: Vec<FrictionBallRow> = model
             .balls()
@@ -248,27 +210,13 @@ fn catalogue_torques(
         };
         let t = skf2004(&skf, env, point, &SkfOptions::default())
             .map_err(|e| e.map_field(key("catalogue")))?;
-        cat.skf_total_nmm = Some(t.total_nmm);
-        cat.skf_rolling_nmm = Some(t.rolling_nmm);
-        cat.skf_sliding_nmm = Some(t.sliding_nmm);
-        cat.skf_drag_nmm = Some(t.drag_nmm);
-        warnings.extend(t.warnings.lines().into_iter().map(|w| format!("SKF: {w}")));
+        cat.add_skf(&t, warnings);
     } else {
         warnings.push(
             "SKF catalogue torque not computed: give catalogue.skf_series (and c0_n for deep groove ball bearings)"
                 .to_string(),
         );
     }
-    if let Some(f0) = c.schaeffler_f0 {
-        let m = m0(
-            f0,
-            point.viscosity_mm2_s * point.speed_rpm(),
-            env.mean_diameter_mm(),
-        );
-        cat.schaeffler_m0_nmm = Some(m);
-        if let (Some(f1), Some(p1)) = (c.schaeffler_f1, c.schaeffler_p1_n) {
-            cat.schaeffler_total_nmm = Some(m + f1 * p1 * env.mean_diameter_mm());
-        }
-    }
+    cat.add_schaeffler(c, point.viscosity_mm2_s * point.speed_rpm(), env);
     Ok(cat)
 }
