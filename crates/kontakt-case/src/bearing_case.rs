@@ -976,6 +976,12 @@ fn friction_of_planned(
 ) -> Result<crate::bearing_friction::FrictionReport> {
     use crate::bearing_friction::Solved;
     use crate::bearing_friction::ball::friction_report as ball_friction;
+    let tables = crate::bearing_friction::Tables {
+        rpm: [case.speed.inner_rpm, case.speed.outer_rpm],
+        lubricant: case.lubricant.as_ref(),
+        friction: case.friction.as_ref(),
+        catalogue: case.catalogue.as_ref(),
+    };
     let (bearing, solved) = match planned {
         Planned::Roller(s) => (
             s.bearing(),
@@ -994,11 +1000,11 @@ fn friction_of_planned(
         Planned::RibRoller(s) => (s.bearing(), Solved::Rib(s)),
         Planned::Ball { solver, .. } => {
             let balls: Vec<_> = solver.ball_loads().iter().map(Into::into).collect();
-            return ball_friction(case, op, solver.bearing(), &balls, force);
+            return ball_friction(&tables, op, solver.bearing(), &balls, force);
         }
         Planned::BallAtSpeed { solver, .. } => {
             let balls: Vec<_> = solver.ball_loads().iter().map(Into::into).collect();
-            return ball_friction(case, op, solver.bearing(), &balls, force);
+            return ball_friction(&tables, op, solver.bearing(), &balls, force);
         }
     };
     crate::bearing_friction::friction_report(

@@ -693,6 +693,19 @@ fn point(
     })
 }
 
+/// The tables of a bearing case that the friction reads besides `[operating]`.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Tables<'a> {
+    /// `[speed]`: `[inner_rpm, outer_rpm]` \[r/min\].
+    pub(crate) rpm: [f64; 2],
+    /// `[lubricant]`.
+    pub(crate) lubricant: Option<&'a LubricantSpec>,
+    /// `[friction]`.
+    pub(crate) friction: Option<&'a FrictionSpec>,
+    /// `[catalogue]`.
+    pub(crate) catalogue: Option<&'a CatalogueSpec>,
+}
+
 /// `speed.inner_rpm` and `speed.outer_rpm` finite and within `|n| <= MAX_RING_RPM`.
 pub(crate) fn check_rpm(rpm: [f64; 2]) -> Result<()> {
     for (k, v) in [("speed.inner_rpm", rpm[0]), ("speed.outer_rpm", rpm[1])] {

@@ -9,10 +9,9 @@
 //! Units: r/min in the case (rad/s in the library), mm, N, N·mm, W, °C.
 
 use super::{
-    CatalogueSpec, CatalogueTorques, FrictionReport, OperatingSpec, check_rpm, drag_model,
+    CatalogueSpec, CatalogueTorques, FrictionReport, OperatingSpec, Tables, check_rpm, drag_model,
     envelope, key, oil, supply, with_sweep,
 };
-use crate::bearing_case::BearingCase;
 use kontakt::{Error, Result};
 use kontakt_bearing::friction::ball::{
     BallAttitude, BallContacts, BallFrictionModel, BallFrictionOperating,
@@ -53,23 +52,22 @@ pub struct FrictionBallRow {
     pub min_lambda: Option<f64>,
 }
 
-/// The friction section of the ball bearing `bearing` of `case` with the solved `balls`
-/// under the force `force` \[N\] at the ring speeds of `[speed]` (r/min), with the speed
+/// The friction section of the ball bearing `bearing` with the solved `balls` under the
+/// force `force` \[N\] at the case's tables `case` (its `[speed]` in r/min), with the speed
 /// sweep of `operating.sweep_inner_rpm` (on the same load distribution).
 ///
 /// # Errors
 /// [`Error::InvalidInput`] naming the case key (`speed.inner_rpm`, `lubricant.*`,
 /// `friction.*`, `catalogue.*`, `operating.*`).
 pub(crate) fn friction_report(
-    case: &BearingCase,
+    case: &Tables<'_>,
     op: &OperatingSpec,
     bearing: &BallBearing,
     balls: &[BallContacts],
     force: [f64; 3],
 ) -> Result<FrictionReport> {
-    let rpm = [case.speed.inner_rpm, case.speed.outer_rpm];
-    let catalogue = case.catalogue.as_ref();
-    let oil = oil(op, case.lubricant.as_ref(), case.friction.as_ref())?;
+    let (rpm, catalogue) = (case.rpm, case.catalogue);
+    let oil = oil(op, case.lubricant, case.friction)?;
     let nu = oil.viscosity_mm2_s;
     let model = BallFrictionModel::new(
         bearing.clone(),
