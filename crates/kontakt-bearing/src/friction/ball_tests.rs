@@ -514,3 +514,25 @@ fn rolling_strips_integrate_the_line_fit_over_the_ellipse() {
     assert!(rel(force, want) < 2e-5);
     assert!(rel(power, 2.0 * force * u * 1e-3) < 1e-12);
 }
+
+/// Mirror symmetry: a deep groove bearing under +F_z and −F_z (contact angles of opposite
+/// sign, the ball's axis pitched the other way) has the same torque and spin (1e-9).
+#[test]
+fn axial_load_direction_is_mirror_symmetric() {
+    let bearing = dgbb();
+    let mut m = mixed(bearing.clone(), 0.1);
+    let mut torque = |fz: f64| {
+        let balls = solved_balls(&bearing, [1000.0, 0.0, fz]);
+        let r = m.evaluate(&running(&balls, 500.0)).unwrap();
+        (
+            r.total_nmm,
+            r.largest_spin_rad_s,
+            balls[0].inner_contact_angle_rad,
+        )
+    };
+    let (up, down) = (torque(800.0), torque(-800.0));
+    println!("+F_z: {up:?}, −F_z: {down:?}");
+    assert!(up.2 * down.2 < 0.0 && rel(up.2, -down.2) < 1e-9);
+    assert!(rel(up.0, down.0) < 1e-9 && rel(up.1, down.1) < 1e-9);
+    assert!(up.1 > 0.0);
+}
