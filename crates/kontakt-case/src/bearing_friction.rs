@@ -5,6 +5,7 @@
 //! [`crate::friction_case::FrictionSpec`]) and `[catalogue]` (envelope, SKF series and Y,
 //! Schaeffler factors) of a bearing case, and the report's `friction` section: the torque
 //! contact by contact of `kontakt_bearing::friction::torque` beside the catalogue torques.
+//! Ball bearings: [`ball`] (the same tables and report, `kontakt_bearing::friction::ball`).
 //!
 //! Units: r/min in the case (rad/s in the library), mm, N, N·mm, W, °C.
 //! Derivations: `docs/bearing-friction.md`.
