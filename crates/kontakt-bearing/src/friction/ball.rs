@@ -417,6 +417,45 @@ pub struct BallFrictionOperating<'a> {
     pub coefficient_basis: Option<(f64, f64)>,
 }
 
+/// The contact angles `(α_i, α_o)` \[rad\] of the ball's kinematics: its own where both
+/// contacts are loaded; the loaded contact's on both where the other is open (the angle
+/// the solver reports for an open contact is only the direction of its gap, up to π; the
+/// at-speed solver's kinematics pass to the loaded contact's angle there too); `free`, the
+/// bearing's free contact angle, for an idle ball.
+///
+/// # Errors
+/// `inner_contact_angle_rad` / `outer_contact_angle_rad` for a loaded contact at |α| ≥ π/2
+/// (no bearing geometry has one).
+fn kinematic_angles(c: &BallContacts, free: f64) -> Result<(f64, f64)> {
+    for (field, q, a) in [
+        (
+            "inner_contact_angle_rad",
+            c.inner_load_n,
+            c.inner_contact_angle_rad,
+        ),
+        (
+            "outer_contact_angle_rad",
+            c.outer_load_n,
+            c.outer_contact_angle_rad,
+        ),
+    ] {
+        if q > 0.0 && a.abs() >= std::f64::consts::FRAC_PI_2 {
+            return Err(Error::invalid(
+                field,
+                a,
+                "a contact angle of a loaded contact within ±π/2 rad",
+            ));
+        }
+    }
+    let (ai, ao) = (c.inner_contact_angle_rad, c.outer_contact_angle_rad);
+    Ok(match (c.inner_load_n > 0.0, c.outer_load_n > 0.0) {
+        (true, true) => (ai, ao),
+        (false, true) => (ao, ao),
+        (true, false) => (ai, ai),
+        (false, false) => (free, free),
+    })
+}
+
 /// The friction model of a ball bearing: lubrication checked, the rules and the per-ball
 /// buffer built once; [`BallFrictionModel::evaluate`] allocates nothing.
 #[derive(Debug, Clone)]
@@ -701,7 +740,7 @@ impl BallFrictionModel {
                     return Err(Error::invalid(field, v, "a finite ball load >= 0 N"));
                 }
             }
-            let (ai, ao) = (c.inner_contact_angle_rad, c.outer_contact_angle_rad);
+            let (ai, ao) = kinematic_angles(&c, self.bearing.free_contact_angle())?;
             let beta = self.attitude.pitch(d / dm, ai, ao);
             let kin = kinematics(speeds, d, dm, ai, ao, beta);
             let contact = |inner: bool| ContactKinematics {

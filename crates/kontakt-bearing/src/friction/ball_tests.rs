@@ -536,3 +536,23 @@ fn axial_load_direction_is_mirror_symmetric() {
     assert!(rel(up.0, down.0) < 1e-9 && rel(up.1, down.1) < 1e-9);
     assert!(up.1 > 0.0);
 }
+
+/// An open contact's angle is only the direction of its gap (the at-speed solver reports up
+/// to π for a lifted inner contact): the kinematics take the loaded contact's angle there,
+/// the torque stays finite and equals that of the angle replaced; a loaded contact beyond
+/// ±π/2 is an error naming it.
+#[test]
+fn an_open_contact_angle_does_not_enter_the_kinematics() {
+    let bearing = dgbb();
+    let mut balls = solved_balls(&bearing, [2000.0, 0.0, 0.0]);
+    let mut m = mixed(bearing, 0.1);
+    let idle = balls.iter().position(|b| b.inner_load_n == 0.0).unwrap();
+    balls[idle].outer_load_n = 0.6; // the centrifugal force alone
+    let want = m.evaluate(&running(&balls, 300.0)).unwrap().total_nmm;
+    balls[idle].inner_contact_angle_rad = PI;
+    let got = m.evaluate(&running(&balls, 300.0)).unwrap().total_nmm;
+    assert!(got.is_finite() && rel(got, want) < 1e-14, "{got} vs {want}");
+    balls[0].inner_contact_angle_rad = 2.0;
+    let e = m.evaluate(&running(&balls, 300.0)).unwrap_err();
+    assert_eq!(e.field(), Some("inner_contact_angle_rad"));
+}
