@@ -1,8 +1,9 @@
 //! Criterion benchmark of the per-slice raceway losses (issue 29, "Speed", first step): the
 //! losses of 20 rollers × 2 raceways × 31 slices = 1240 slices (a TRB's raceway contacts at
 //! one operating point), with the mixed law (limiting-shear fluid), the Zhu-Cheng thermal
-//! factor and both rolling-resistance fits. The model is built once outside the timed
-//! closure. Run by the lead: `cargo bench -p kontakt-bearing --bench raceway_losses`.
+//! factor and both rolling-resistance fits, each also from the slices' speed-independent
+//! parts (`RacewayLosses::plan_slice`, made outside the timed closure: the cost per speed of
+//! a planned sweep). The model is built once outside the timed closure. Run by the lead: `cargo bench -p kontakt-bearing --bench raceway_losses`.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use kontakt::friction::FrictionLaw;
@@ -61,6 +62,24 @@ fn bench_raceway_losses(c: &mut Criterion) {
                 let mut p = 0.0;
                 for s in &slices {
                     p += model.slice(black_box(s)).expect("valid slice").power();
+                }
+                p
+            })
+        });
+        // The same slices from their speed-independent parts (`plan_slice`, made once
+        // outside the timed closure): what each speed of a planned sweep costs.
+        let plans: Vec<_> = slices
+            .iter()
+            .map(|s| model.plan_slice(s).expect("plan").expect("loaded"))
+            .collect();
+        group.bench_function(format!("{name}_planned"), |b| {
+            b.iter(|| {
+                let mut p = 0.0;
+                for (s, plan) in slices.iter().zip(&plans) {
+                    p += model
+                        .slice_planned(black_box(s), plan)
+                        .expect("valid slice")
+                        .power();
                 }
                 p
             })

@@ -630,6 +630,26 @@ impl RibContactSolver {
         self.arrangement
     }
 
+    /// The Hertz contact of rib contact `r` (in the order of
+    /// [`RibContactSolver::rib_contacts`]; roller end body 1, rib body 2, the first
+    /// principal direction in the axial plane): a cylindrical bearing's inner ring ribs
+    /// are convex about the bearing axis, its outer ring ribs concave.
+    ///
+    /// # Panics
+    /// If `r` is not a rib contact index.
+    pub fn rib_hertz_of(&self, r: usize) -> &HertzPointContact {
+        &self.ribs[r].hertz
+    }
+
+    /// Roller `j`'s load on each of its rib contacts (in the order of
+    /// [`RibContactSolver::rib_contacts`]) at the last evaluation, N.
+    ///
+    /// # Panics
+    /// If `j` is not a roller index.
+    pub fn roller_rib_loads(&self, j: usize) -> &[f64] {
+        &self.rib_load[j * MAX_RIBS..j * MAX_RIBS + self.ribs.len()]
+    }
+
     /// The first rib's normal direction (rib into roller) in the roller's axial plane,
     /// measured like the contact angles, rad (a tapered bearing's only rib, on the cone).
     pub fn rib_normal_angle(&self) -> f64 {

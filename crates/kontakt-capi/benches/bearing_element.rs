@@ -6,7 +6,10 @@
 //! created once outside the timed closure; the timed call is one evaluation, warm-started
 //! from the previous one (a multi-body code's steady use). The difference of the two is the
 //! cost of the C boundary (null checks, `catch_unwind`, the result copy with its 512-byte
-//! message). Run: `cargo bench -p kontakt-capi --bench bearing_element`.
+//! message). `trb_32008x_friction` is the same bearing with a `[lubricant]`
+//! (examples/bearing_32008x_friction.toml, 1000 r/min): the evaluation plus the friction
+//! torque of every slice (issue 29 §5); its difference to `trb_32008x` is the friction's
+//! cost. Run: `cargo bench -p kontakt-capi --bench bearing_element`.
 
 #![allow(unsafe_code)] // calling the C API
 
@@ -42,6 +45,11 @@ fn bench_bearing_element(c: &mut Criterion) {
         (
             "trb_32008x",
             "bearing_32008x.toml",
+            [0.01, -0.002, 0.015, 1e-4, 5e-5],
+        ),
+        (
+            "trb_32008x_friction",
+            "bearing_32008x_friction.toml",
             [0.01, -0.002, 0.015, 1e-4, 5e-5],
         ),
     ] {

@@ -50,6 +50,22 @@
 // [`KontaktBearingResult::status`]: at least one rolling element carries load.
 #define KONTAKT_BEARING_LOADED 1
 
+// [`KontaktBearingResult::friction_status`]: the case has no `[lubricant]`, no friction
+// (every `friction_*` field 0).
+#define KONTAKT_FRICTION_OFF 0
+
+// [`KontaktBearingResult::friction_status`]: the rings turn relative to each other; the
+// running torque, applied as `moment[2]`.
+#define KONTAKT_FRICTION_RUNNING 1
+
+// [`KontaktBearingResult::friction_status`]: equal ring speeds; `friction_torque` is the
+// starting torque, not applied (`moment[2]` and `friction_power` 0).
+#define KONTAKT_FRICTION_STARTING 2
+
+// [`KontaktBearingResult::friction_status`]: a lubricant, but no friction model for this
+// bearing yet (ball and thrust bearings); every `friction_*` field 0.
+#define KONTAKT_FRICTION_NOT_BUILT 3
+
 // A bearing element planned from a bearing case (opaque; create with
 // [`kontakt_bearing_element_from_toml`] or [`kontakt_bearing_element_from_file`], release
 // with [`kontakt_bearing_element_free`]).
@@ -111,7 +127,8 @@ typedef struct KontaktBearingResult {
   // bearing gives `Fz < 0`.
   double force[3];
   // Moment of the bearing on the inner ring about the bearing centre `Mx, My, Mz`
-  // \[N·mm\]; `Mz` is 0 (no friction torque in this version).
+  // \[N·mm\]; `Mz` is the friction moment `friction_inner_ring` (0 without a lubricant
+  // and at equal ring speeds).
   double moment[3];
   // The damping part of `force` and `moment`, `−β K v`, in the order
   // `Fx, Fy, Fz, Mx, My` \[N, N·mm\] (zero while β = 0).
@@ -128,6 +145,21 @@ typedef struct KontaktBearingResult {
   uint64_t iterations;
   // Why the status is what it is, NUL-terminated UTF-8 (empty when loaded).
   char message[KONTAKT_MESSAGE_LEN];
+  // [`KONTAKT_FRICTION_OFF`], [`KONTAKT_FRICTION_RUNNING`],
+  // [`KONTAKT_FRICTION_STARTING`] or [`KONTAKT_FRICTION_NOT_BUILT`].
+  int32_t friction_status;
+  // Ring speeds of the friction `ω_i, ω_o` \[rad/s\] about +z.
+  double ring_speeds[2];
+  // The bearing's friction torque M ≥ 0 \[N·mm\] (at equal speeds the starting torque).
+  double friction_torque;
+  // The friction moment on the inner ring about +z, `−M sign(ω_i − ω_o)` \[N·mm\] (0 at
+  // equal speeds): `moment[2]`.
+  double friction_inner_ring;
+  // Friction power `M |ω_i − ω_o|` \[W\] (0 at equal speeds).
+  double friction_power;
+  // The shares of M: cone (inner raceway), cup (outer raceway), rib (roller ends), drag
+  // \[N·mm\]; they add up to `friction_torque`.
+  double friction_breakdown[4];
 } KontaktBearingResult;
 
 #ifdef __cplusplus
@@ -232,11 +264,29 @@ int32_t kontakt_bearing_element_from_file(const char *path, struct KontaktBearin
 int32_t kontakt_bearing_element_set_damping(struct KontaktBearingElement *element,
                                             double damping_s);
 
+// Set the ring speeds of the element's friction torque: inner ring `inner_rad_s`, outer
+// ring `outer_rad_s`, rad/s about +z (finite, |ω| ≤ 100 000 r/min). They change the
+// friction only, not the load distribution (whose centrifugal forces stay those of the
+// case's `[speed]`). Equal speeds give the starting torque. Without a lubricant in the case
+// the speeds are kept but have no effect.
+//
+// Returns `KONTAKT_OK`, `KONTAKT_INVALID_INPUT` (field `inner_rad_s` or `outer_rad_s`: not
+// finite or too fast; the element keeps its speeds), `KONTAKT_NULL_OR_UTF8` or
+// `KONTAKT_PANIC`.
+//
+// # Safety
+// `element` is null or an element from this API, not yet freed and not used by another
+// thread during the call.
+int32_t kontakt_bearing_element_set_speeds(struct KontaktBearingElement *element,
+                                           double inner_rad_s,
+                                           double outer_rad_s);
+
 // Evaluate the bearing at the inner ring's `displacement` relative to the outer ring
 // (`δx, δy, δz` \[mm\], `θx, θy` \[rad\]; z the bearing axis) and its `velocity`
 // (`mm/s`, `rad/s`, same order), and write the bearing's reaction on the inner ring to
-// `*out` (left unchanged on failure). Warm-started from the element's previous call;
-// allocates nothing.
+// `*out` (left unchanged on failure), with the friction torque at the element's ring
+// speeds when its case has a `[lubricant]`. Warm-started from the element's previous call;
+// allocates nothing (but the rib contact fields of a lubricated rib-contact bearing).
 //
 // Returns `KONTAKT_OK` (also when every rolling element is lifted off: then
 // `status` is [`KONTAKT_BEARING_LIFTED_OFF`], force and stiffness zero),

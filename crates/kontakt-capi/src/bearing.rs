@@ -11,13 +11,22 @@
 //!   bearing centre; the outer ring gets minus it), the 5 × 5 stiffness
 //!   `K = −∂reaction/∂displacement`, the damping part and a status with a message.
 //! - Velocity: a viscous damping `β K` with β set by [`kontakt_bearing_element_set_damping`]
-//!   (s, default 0: no effect). No friction torque yet (`moment[2]` is 0).
+//!   (s, default 0: no effect).
+//! - Friction: with a `[lubricant]` in the case, the bearing's friction torque about z, its
+//!   power and breakdown (`friction_*` fields) at the ring speeds of
+//!   [`kontakt_bearing_element_set_speeds`] (rad/s; initially the case's `[speed]`); while
+//!   the rings turn relative to each other `moment[2]` is the friction moment on the inner
+//!   ring, `−M sign(ω_i − ω_o)`; at equal speeds `friction_torque` is the starting torque and
+//!   `moment[2]` 0. Without a lubricant `friction_status` is
+//!   [`KONTAKT_FRICTION_OFF`] and the fields 0.
 
 use crate::{
     Failure, KONTAKT_MESSAGE_LEN, c_message, create, doubles, from_case_file, guard, library_error,
     null, release, text,
 };
-use kontakt_case::bearing_model::{BearingElement, BearingElementOutput, BearingElementStatus};
+use kontakt_case::bearing_model::{
+    BearingElement, BearingElementOutput, BearingElementStatus, ElementFrictionStatus,
+};
 use std::ffi::c_char;
 
 /// [`KontaktBearingResult::status`]: every rolling element is lifted off (zero force and
@@ -25,6 +34,19 @@ use std::ffi::c_char;
 pub const KONTAKT_BEARING_LIFTED_OFF: i32 = 0;
 /// [`KontaktBearingResult::status`]: at least one rolling element carries load.
 pub const KONTAKT_BEARING_LOADED: i32 = 1;
+
+/// [`KontaktBearingResult::friction_status`]: the case has no `[lubricant]`, no friction
+/// (every `friction_*` field 0).
+pub const KONTAKT_FRICTION_OFF: i32 = 0;
+/// [`KontaktBearingResult::friction_status`]: the rings turn relative to each other; the
+/// running torque, applied as `moment[2]`.
+pub const KONTAKT_FRICTION_RUNNING: i32 = 1;
+/// [`KontaktBearingResult::friction_status`]: equal ring speeds; `friction_torque` is the
+/// starting torque, not applied (`moment[2]` and `friction_power` 0).
+pub const KONTAKT_FRICTION_STARTING: i32 = 2;
+/// [`KontaktBearingResult::friction_status`]: a lubricant, but no friction model for this
+/// bearing yet (ball and thrust bearings); every `friction_*` field 0.
+pub const KONTAKT_FRICTION_NOT_BUILT: i32 = 3;
 
 /// A bearing element planned from a bearing case (opaque; create with
 /// [`kontakt_bearing_element_from_toml`] or [`kontakt_bearing_element_from_file`], release
@@ -45,7 +67,8 @@ pub struct KontaktBearingResult {
     /// bearing gives `Fz < 0`.
     pub force: [f64; 3],
     /// Moment of the bearing on the inner ring about the bearing centre `Mx, My, Mz`
-    /// \[N·mm\]; `Mz` is 0 (no friction torque in this version).
+    /// \[N·mm\]; `Mz` is the friction moment `friction_inner_ring` (0 without a lubricant
+    /// and at equal ring speeds).
     pub moment: [f64; 3],
     /// The damping part of `force` and `moment`, `−β K v`, in the order
     /// `Fx, Fy, Fz, Mx, My` \[N, N·mm\] (zero while β = 0).
@@ -62,11 +85,27 @@ pub struct KontaktBearingResult {
     pub iterations: u64,
     /// Why the status is what it is, NUL-terminated UTF-8 (empty when loaded).
     pub message: [c_char; KONTAKT_MESSAGE_LEN],
+    /// [`KONTAKT_FRICTION_OFF`], [`KONTAKT_FRICTION_RUNNING`],
+    /// [`KONTAKT_FRICTION_STARTING`] or [`KONTAKT_FRICTION_NOT_BUILT`].
+    pub friction_status: i32,
+    /// Ring speeds of the friction `ω_i, ω_o` \[rad/s\] about +z.
+    pub ring_speeds: [f64; 2],
+    /// The bearing's friction torque M ≥ 0 \[N·mm\] (at equal speeds the starting torque).
+    pub friction_torque: f64,
+    /// The friction moment on the inner ring about +z, `−M sign(ω_i − ω_o)` \[N·mm\] (0 at
+    /// equal speeds): `moment[2]`.
+    pub friction_inner_ring: f64,
+    /// Friction power `M |ω_i − ω_o|` \[W\] (0 at equal speeds).
+    pub friction_power: f64,
+    /// The shares of M: cone (inner raceway), cup (outer raceway), rib (roller ends), drag
+    /// \[N·mm\]; they add up to `friction_torque`.
+    pub friction_breakdown: [f64; 4],
 }
 
 impl KontaktBearingResult {
     /// The C record of `r`.
     pub fn from_output(r: &BearingElementOutput) -> Self {
+        let f = &r.friction;
         KontaktBearingResult {
             status: match r.status {
                 BearingElementStatus::LiftedOff => KONTAKT_BEARING_LIFTED_OFF,
@@ -79,6 +118,17 @@ impl KontaktBearingResult {
             max_element_load: r.max_element_load_n,
             iterations: r.iterations as u64,
             message: c_message(r.message),
+            friction_status: match f.status {
+                ElementFrictionStatus::Off => KONTAKT_FRICTION_OFF,
+                ElementFrictionStatus::Running => KONTAKT_FRICTION_RUNNING,
+                ElementFrictionStatus::Starting => KONTAKT_FRICTION_STARTING,
+                ElementFrictionStatus::NotBuilt => KONTAKT_FRICTION_NOT_BUILT,
+            },
+            ring_speeds: [f.inner_speed_rad_s, f.outer_speed_rad_s],
+            friction_torque: f.torque_nmm,
+            friction_inner_ring: f.inner_ring_nmm,
+            friction_power: f.power_w,
+            friction_breakdown: [f.cone_nmm, f.cup_nmm, f.rib_nmm, f.drag_nmm],
         }
     }
 }
@@ -169,11 +219,39 @@ pub unsafe extern "C" fn kontakt_bearing_element_set_damping(
     })
 }
 
+/// Set the ring speeds of the element's friction torque: inner ring `inner_rad_s`, outer
+/// ring `outer_rad_s`, rad/s about +z (finite, |ω| ≤ 100 000 r/min). They change the
+/// friction only, not the load distribution (whose centrifugal forces stay those of the
+/// case's `[speed]`). Equal speeds give the starting torque. Without a lubricant in the case
+/// the speeds are kept but have no effect.
+///
+/// Returns `KONTAKT_OK`, `KONTAKT_INVALID_INPUT` (field `inner_rad_s` or `outer_rad_s`: not
+/// finite or too fast; the element keeps its speeds), `KONTAKT_NULL_OR_UTF8` or
+/// `KONTAKT_PANIC`.
+///
+/// # Safety
+/// `element` is null or an element from this API, not yet freed and not used by another
+/// thread during the call.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn kontakt_bearing_element_set_speeds(
+    element: *mut KontaktBearingElement,
+    inner_rad_s: f64,
+    outer_rad_s: f64,
+) -> i32 {
+    guard(|| {
+        // SAFETY: by the caller's contract.
+        let e = unsafe { self::element(element) }?;
+        e.set_speeds(inner_rad_s, outer_rad_s)
+            .map_err(library_error)
+    })
+}
+
 /// Evaluate the bearing at the inner ring's `displacement` relative to the outer ring
 /// (`δx, δy, δz` \[mm\], `θx, θy` \[rad\]; z the bearing axis) and its `velocity`
 /// (`mm/s`, `rad/s`, same order), and write the bearing's reaction on the inner ring to
-/// `*out` (left unchanged on failure). Warm-started from the element's previous call;
-/// allocates nothing.
+/// `*out` (left unchanged on failure), with the friction torque at the element's ring
+/// speeds when its case has a `[lubricant]`. Warm-started from the element's previous call;
+/// allocates nothing (but the rib contact fields of a lubricated rib-contact bearing).
 ///
 /// Returns `KONTAKT_OK` (also when every rolling element is lifted off: then
 /// `status` is [`KONTAKT_BEARING_LIFTED_OFF`], force and stiffness zero),

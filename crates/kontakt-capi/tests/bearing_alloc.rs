@@ -2,7 +2,8 @@
 //! `BearingElement::evaluate` under it, allocates nothing per call —
 //! cold (the first call, from the closed forms), warm (from the previous call), damped,
 //! lifted off, and after a failed call (the thread's message buffer is reused) — for a
-//! ball and a tapered roller bearing (issue 28, "Speed": hot loops allocate nothing).
+//! ball and a tapered roller bearing (issue 28, "Speed": hot loops allocate nothing), and
+//! with the friction torque of a lubricated one (issue 29 §5).
 
 #![allow(unsafe_code)] // calling the C API
 #![allow(clippy::unwrap_used)] // tests: a panic is a failure with its message
@@ -92,6 +93,75 @@ fn rust_bearing_element_evaluation_allocates_nothing() {
     for (i, du) in [1.0, 1.01, 0.99].into_iter().enumerate() {
         let (o, n) = allocations(|| e.evaluate(u.map(|x| du * x), [1.0; 5]).unwrap());
         assert!(o.max_element_load_n > 0.0);
+        assert_eq!(n, 0, "call {i}");
+    }
+}
+
+/// With a `[lubricant]` (the ISO slice model of the 32008 X) every evaluation also computes
+/// the friction torque, running, after a speed change and at rest (starting torque), and
+/// still allocates nothing, through C and through Rust.
+#[test]
+fn bearing_element_friction_allocates_nothing() {
+    let e = element("bearing_32008x_friction.toml");
+    let u = [0.01, -0.002, 0.015, 1e-4, 5e-5];
+    let loaded = KONTAKT_BEARING_LOADED;
+    for (i, speeds) in [None, Some([200.0, -10.0]), Some([0.0, 0.0])]
+        .into_iter()
+        .enumerate()
+    {
+        if let Some([wi, wo]) = speeds {
+            // SAFETY: a live element.
+            let code = unsafe { kontakt_bearing_element_set_speeds(e, wi, wo) };
+            assert_eq!(code, KONTAKT_OK);
+        }
+        // SAFETY: plain data: all zeros is a valid value.
+        let mut r: KontaktBearingResult = unsafe { std::mem::zeroed() };
+        let (code, n) = allocations(|| {
+            // SAFETY: a live element, arrays of 5 doubles, a writable result.
+            unsafe { kontakt_bearing_element_evaluate(e, u.as_ptr(), [0.0; 5].as_ptr(), &mut r) }
+        });
+        assert_eq!((code, r.status, n), (KONTAKT_OK, loaded, 0), "call {i}");
+        assert!(r.friction_torque > 0.0, "call {i}");
+        assert_ne!(r.friction_status, KONTAKT_FRICTION_OFF, "call {i}");
+    }
+    // SAFETY: created above, freed once.
+    unsafe { kontakt_bearing_element_free(e) };
+
+    use kontakt_case::bearing_model::BearingElement;
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../../examples/bearing_32008x_friction.toml");
+    let mut e = BearingElement::from_toml(&std::fs::read_to_string(path).unwrap()).unwrap();
+    for (i, du) in [1.0, 1.01, 0.99].into_iter().enumerate() {
+        let (o, n) = allocations(|| e.evaluate(u.map(|x| du * x), [0.0; 5]).unwrap());
+        assert!(o.friction.power_w > 0.0);
+        assert_eq!(n, 0, "Rust call {i}");
+    }
+}
+
+/// The NJ cylindrical roller bearing of the rib-contact model with a lubricant: its
+/// roller-end/rib friction (the mixed law over each loaded rib's Hertz ellipse) allocates
+/// nothing either.
+#[test]
+fn cylindrical_rib_friction_allocates_nothing() {
+    use kontakt_case::bearing_model::BearingElement;
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples");
+    let read = |name: &str| std::fs::read_to_string(dir.join(name)).unwrap();
+    let oil = read("bearing_32008x_friction.toml");
+    let lubricant = &oil[oil.find("[lubricant]").unwrap()..oil.find("[catalogue]").unwrap()];
+    let text = format!(
+        "{}\n{lubricant}\n[speed]\ninner_rpm = 1500.0\n",
+        read("bearing_nj_crb_rib_contact.toml")
+    );
+    let mut e = BearingElement::from_toml(&text).unwrap();
+    // the case's equilibrium under 10 kN radial + 1.5 kN axial
+    let case = kontakt_case::BearingCase::from_toml_str(&text).unwrap();
+    let r = kontakt_case::run_bearing_case(&case).unwrap();
+    let (d, t) = (r.displacement_mm, r.tilt_rad);
+    let u = [d[0], d[1], d[2], t[0], t[1]];
+    e.evaluate(u, [0.0; 5]).unwrap();
+    for (i, du) in [1.0, 1.01, 0.99].into_iter().enumerate() {
+        let (o, n) = allocations(|| e.evaluate(u.map(|x| du * x), [0.0; 5]).unwrap());
+        assert!(o.friction.rib_nmm > 0.0, "{:?}", o.friction);
         assert_eq!(n, 0, "call {i}");
     }
 }

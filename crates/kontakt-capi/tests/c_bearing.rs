@@ -5,7 +5,10 @@
 //! prescribed, and its stiffness that solve's, to 1e-12 relative; the stiffness must match
 //! the C program's central differences of the force (1e-6 of `sqrt(K_ii K_jj)`); the damping
 //! must be `−β K v`; pulled out of every contact the status is lifted off with zero force;
-//! and every error path gives its code and a message naming the argument.
+//! and every error path gives its code and a message naming the argument. With
+//! examples/bearing_32008x_friction.toml (a lubricated TRB) the friction fields equal the
+//! Rust `BearingElement`'s at the same displacement and ring speeds to 1e-12, at the case's
+//! speed, at rest and with both rings turning; a NaN speed is refused naming `outer_rad_s`.
 
 #![allow(clippy::unwrap_used)] // tests: a panic is a failure with its message
 
@@ -14,7 +17,9 @@ mod c_program;
 
 use c_program::{Section, numbers, run_c_program, sections};
 use kontakt_capi::{
-    KONTAKT_BEARING_LIFTED_OFF, KONTAKT_BEARING_LOADED, KONTAKT_INVALID_INPUT, KONTAKT_NULL_OR_UTF8,
+    KONTAKT_BEARING_LIFTED_OFF, KONTAKT_BEARING_LOADED, KONTAKT_FRICTION_OFF,
+    KONTAKT_FRICTION_RUNNING, KONTAKT_FRICTION_STARTING, KONTAKT_INVALID_INPUT,
+    KONTAKT_NULL_OR_UTF8,
 };
 use kontakt_case::bearing_model::prescribed_load;
 use kontakt_case::{BearingCase, BearingModel};
@@ -79,7 +84,11 @@ fn assert_error(s: &Section, want: i32, needles: &[&str]) {
 fn c_bearing_element_matches_the_rust_bearing_model() {
     let ball = example("bearing_7205.toml");
     let trb = example("bearing_32008x.toml");
-    let stdout = run_c_program("bearing.c", &[ball.as_os_str(), trb.as_os_str()]);
+    let lubricated = example("bearing_32008x_friction.toml");
+    let stdout = run_c_program(
+        "bearing.c",
+        &[ball.as_os_str(), trb.as_os_str(), lubricated.as_os_str()],
+    );
     println!("{stdout}");
     let all = sections(&stdout);
     let section = |label: &str| {
@@ -98,6 +107,11 @@ fn c_bearing_element_matches_the_rust_bearing_model() {
         let (load, k) = rust_solution(path, &u);
         let (r, mz) = reaction(s);
         assert_eq!(mz, 0.0);
+        assert_eq!(
+            numbers(s, "friction_status"),
+            vec![f64::from(KONTAKT_FRICTION_OFF)]
+        );
+        assert_eq!(numbers(s, "friction_torque"), vec![0.0]);
         assert_close(&format!("{name} reaction"), &r, &load.map(|f| -f), 1e-12);
         let kc = numbers(s, "stiffness");
         let kmax = k.iter().flatten().fold(0.0_f64, |m, x| m.max(x.abs()));
@@ -203,6 +217,7 @@ fn c_bearing_element_matches_the_rust_bearing_model() {
             reaction(section(&format!("{name} damped")))
         );
     }
+    friction_matches_rust(&section, &lubricated);
     assert_error(section("bad case"), KONTAKT_INVALID_INPUT, &["bearing"]);
     assert_eq!(section("bad case")["out_is_null"], "1");
     assert_error(
@@ -222,6 +237,96 @@ fn c_bearing_element_matches_the_rust_bearing_model() {
     );
     assert_error(
         section("null element reset"),
+        KONTAKT_NULL_OR_UTF8,
+        &["element is a null pointer"],
+    );
+}
+
+/// The C program's friction sections against the Rust element at the same displacement and
+/// speeds: every friction field and the reaction to 1e-12 relative.
+fn friction_matches_rust<'a>(section: &dyn Fn(&str) -> &'a Section, path: &PathBuf) {
+    use kontakt_case::bearing_model::BearingElement;
+    let mut rust = BearingElement::from_toml(&std::fs::read_to_string(path).unwrap()).unwrap();
+    let rel = |a: f64, b: f64| {
+        if a == b {
+            0.0
+        } else {
+            (a - b).abs() / a.abs().max(b.abs())
+        }
+    };
+    for (label, speeds, status) in [
+        ("friction case speed", None, KONTAKT_FRICTION_RUNNING),
+        (
+            "friction at rest",
+            Some([0.0, 0.0]),
+            KONTAKT_FRICTION_STARTING,
+        ),
+        (
+            "friction turning",
+            Some([-50.0, 20.0]),
+            KONTAKT_FRICTION_RUNNING,
+        ),
+        (
+            "friction after nan",
+            Some([-50.0, 20.0]),
+            KONTAKT_FRICTION_RUNNING,
+        ),
+    ] {
+        let s = section(label);
+        assert_eq!(code(s), 0, "{label}: {s:?}");
+        if let Some([wi, wo]) = speeds {
+            rust.set_speeds(wi, wo).unwrap();
+        }
+        let u = numbers(s, "displacement");
+        let o = rust
+            .evaluate([u[0], u[1], u[2], u[3], u[4]], [0.0; 5])
+            .unwrap();
+        let f = &o.friction;
+        assert_eq!(
+            numbers(s, "friction_status"),
+            vec![f64::from(status)],
+            "{label}"
+        );
+        assert_eq!(
+            numbers(s, "ring_speeds"),
+            vec![f.inner_speed_rad_s, f.outer_speed_rad_s],
+            "{label}"
+        );
+        let c_values = [
+            numbers(s, "friction_torque"),
+            numbers(s, "friction_inner_ring"),
+            numbers(s, "friction_power"),
+            numbers(s, "friction_breakdown"),
+            numbers(s, "moment"),
+            numbers(s, "force"),
+        ]
+        .concat();
+        let rust_values = [
+            vec![f.torque_nmm, f.inner_ring_nmm, f.power_w],
+            vec![f.cone_nmm, f.cup_nmm, f.rib_nmm, f.drag_nmm],
+            o.moment_nmm.to_vec(),
+            o.force_n.to_vec(),
+        ]
+        .concat();
+        for (i, (a, b)) in c_values.iter().zip(&rust_values).enumerate() {
+            assert!(rel(*a, *b) <= 1e-12, "{label} value {i}: C {a}, Rust {b}");
+        }
+        assert!(f.torque_nmm > 0.0, "{label}");
+        println!("C bearing element, {label}: {f:?}");
+    }
+    // Mz opposes the relative rotation: ω_i − ω_o = −70 rad/s turns the inner ring forward
+    assert!(numbers(section("friction turning"), "moment")[2] > 0.0);
+    assert_eq!(numbers(section("friction at rest"), "moment")[2], 0.0);
+    for label in ["friction set rest", "friction set turning"] {
+        assert_eq!(code(section(label)), 0, "{label}");
+    }
+    assert_error(
+        section("friction nan speed"),
+        KONTAKT_INVALID_INPUT,
+        &["outer_rad_s = NaN"],
+    );
+    assert_error(
+        section("friction null element"),
         KONTAKT_NULL_OR_UTF8,
         &["element is a null pointer"],
     );

@@ -1102,6 +1102,7 @@ pub(crate) fn solve_planned(
     load: &BearingLoadSpec,
     start: Option<[f64; 5]>,
 ) -> Result<BearingReport> {
+    let load_spec = load;
     let load = ring_load(load)?;
     let mut report = match planned {
         Planned::Roller(solver) => roller_report(case, label, solver, &load, start),
@@ -1118,6 +1119,8 @@ pub(crate) fn solve_planned(
     }?;
     if let Some(op) = &case.operating {
         report.friction = Some(friction_of_planned(case, op, planned, report.force_n)?);
+        // operating.sweep_axial_n / sweep_radial_n: re-solve at each point
+        crate::bearing_friction::load_sweep(case, label, planned, load_spec, &mut report)?;
     }
     Ok(report)
 }

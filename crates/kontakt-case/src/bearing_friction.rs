@@ -19,6 +19,7 @@ use kontakt::{Error, Result};
 use kontakt_bearing::friction::aihara::{
     AiharaBearing, AiharaLubricant, aihara, rib_film_parameter,
 };
+use kontakt_bearing::friction::crb_rib::CylindricalRibFriction;
 use kontakt_bearing::friction::raceway::RacewayLosses;
 use kontakt_bearing::friction::schaeffler::m0;
 use kontakt_bearing::friction::skf2004::{
@@ -34,6 +35,11 @@ use kontakt_bearing::roller_equilibrium::RibContactSolver;
 use serde::{Deserialize, Serialize};
 
 pub mod ball;
+mod checks;
+pub(crate) use checks::{oil_level, oil_level_below};
+mod sweeps;
+pub use sweeps::MAX_SWEEP_POINTS;
+pub(crate) use sweeps::load_sweep;
 
 /// The largest ring speed, r/min: `[speed]`'s (`bearing_case::speed::MAX_RING_RPM`, not
 /// imported: `bearing_case` imports this module), for the sweep's speeds.
@@ -75,6 +81,40 @@ pub struct OperatingSpec {
     /// models (`friction.speed_sweep`; 1 to 10 000 speeds).
     #[serde(default)]
     pub sweep_inner_rpm: Option<Vec<f64>>,
+    /// Axial forces `load.force_n[2]` of a load sweep \[N\], the load distribution
+    /// re-solved at each (`friction.axial_load_sweep`; 1 to 10 000 forces; one sweep at a
+    /// time).
+    #[serde(default)]
+    pub sweep_axial_n: Option<Vec<f64>>,
+    /// Radial force magnitudes of a load sweep \[N\] (≥ 0) along the case's radial force
+    /// (+x when `load.force_n[0..2]` is zero), the load distribution re-solved at each
+    /// (`friction.radial_load_sweep`).
+    #[serde(default)]
+    pub sweep_radial_n: Option<Vec<f64>>,
+    /// Oil temperatures of a temperature sweep \[°C\] on the load distribution of `[load]`,
+    /// the viscosity from the lubricant's data at each (`friction.temperature_sweep`).
+    #[serde(default)]
+    pub sweep_temperature_c: Option<Vec<f64>>,
+}
+
+/// The `[operating]` of a case without the table: every key at its default.
+impl Default for OperatingSpec {
+    fn default() -> Self {
+        OperatingSpec {
+            supply: Supply::default(),
+            oil_level_mm: None,
+            drag: DragSpec::default(),
+            rolling_resistance: RollingSpec::default(),
+            thermal: yes(),
+            conductivity_w_mk: conductivity(),
+            film_starvation: one(),
+            starvation_degree: None,
+            sweep_inner_rpm: None,
+            sweep_axial_n: None,
+            sweep_radial_n: None,
+            sweep_temperature_c: None,
+        }
+    }
 }
 
 fn yes() -> bool {
@@ -275,13 +315,24 @@ pub struct FrictionReport {
     /// With `operating.sweep_inner_rpm`: the torque at each of its speeds.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub speed_sweep: Vec<FrictionSweepRow>,
+    /// With `operating.sweep_axial_n`: the torque at each axial force, re-solved.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub axial_load_sweep: Vec<FrictionSweepRow>,
+    /// With `operating.sweep_radial_n`: the torque at each radial force, re-solved.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub radial_load_sweep: Vec<FrictionSweepRow>,
+    /// With `operating.sweep_temperature_c`: the torque at each oil temperature.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub temperature_sweep: Vec<FrictionSweepRow>,
     /// Every ball of a ball bearing (then `cone_*` is the inner race, `cup_*` the outer
     /// race, `rollers` empty; `bearing_friction::ball`).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub balls: Vec<ball::FrictionBallRow>,
 }
 
-/// One speed of `operating.sweep_inner_rpm` (torques N·mm, power W).
+/// One point of a friction sweep: a speed of `operating.sweep_inner_rpm`, a load of
+/// `sweep_axial_n` / `sweep_radial_n` or a temperature of `sweep_temperature_c` (torques
+/// N·mm, power W).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct FrictionSweepRow {
     /// Inner ring speed \[r/min\].
@@ -308,6 +359,17 @@ pub struct FrictionSweepRow {
     pub aihara_nmm: Option<f64>,
     /// Schaeffler M0 (+ M1) \[N·mm\].
     pub schaeffler_nmm: Option<f64>,
+    /// Axial force `Fz` \[N\] (load sweeps: the swept value as given; otherwise the
+    /// carried one).
+    pub axial_load_n: f64,
+    /// Radial force `|(Fx, Fy)|` \[N\] (as `axial_load_n`).
+    pub radial_load_n: f64,
+    /// Oil temperature \[°C\].
+    pub temperature_c: f64,
+    /// Kinematic viscosity there \[mm²/s\].
+    pub viscosity_mm2_s: f64,
+    /// Rollers that carry load on a raceway.
+    pub loaded_rollers: usize,
 }
 
 /// The solved state a friction evaluation reads.
@@ -344,26 +406,36 @@ pub(crate) fn friction_report(
     solved: Solved<'_>,
     force: [f64; 3],
 ) -> Result<FrictionReport> {
-    let at = |rpm: [f64; 2]| {
-        point(
-            op, rpm, lubricant, friction, catalogue, bearing, solved, force,
-        )
-    };
-    with_sweep(op, rpm, at)
+    with_sweeps(op, rpm, lubricant, force, |rpm, lub| {
+        point(op, rpm, lub, friction, catalogue, bearing, solved, force)
+    })
 }
 
-/// The report of `at` at the ring speeds `rpm` (r/min) and, with
-/// `operating.sweep_inner_rpm`, its rows at each of the sweep's speeds (roller and ball
-/// bearings).
+/// The report of `at(rpm, lubricant)` at the ring speeds `rpm` (r/min) and the case's
+/// `[lubricant]`, with the rows of `operating.sweep_temperature_c` (the lubricant at each
+/// temperature) and `operating.sweep_inner_rpm` (each inner ring speed) on the same load
+/// distribution (roller and ball bearings).
 ///
 /// # Errors
-/// Those of `at`, the sweep's named `operating.sweep_inner_rpm`.
-pub(crate) fn with_sweep(
+/// Those of `at`, a sweep's renamed to its key.
+pub(crate) fn with_sweeps(
     op: &OperatingSpec,
     rpm: [f64; 2],
-    at: impl Fn([f64; 2]) -> Result<FrictionReport>,
+    lubricant: Option<&LubricantSpec>,
+    force: [f64; 3],
+    at: impl Fn([f64; 2], Option<&LubricantSpec>) -> Result<FrictionReport>,
 ) -> Result<FrictionReport> {
-    let mut report = at(rpm)?;
+    let mut report = at(rpm, lubricant)?;
+    if let Some((sweeps::SweepKind::Temperature, temperatures)) = sweeps::sweep_of(op)? {
+        let lub = lubricant.cloned();
+        sweeps::temperature_sweep(&mut report, temperatures, force, |t| {
+            let lub = lub.map(|mut l| {
+                l.temperature_c = t;
+                l
+            });
+            at(rpm, lub.as_ref())
+        })?;
+    }
     if let Some(speeds) = &op.sweep_inner_rpm {
         if speeds.is_empty() || speeds.len() > 10_000 {
             return Err(Error::invalid(
@@ -373,27 +445,13 @@ pub(crate) fn with_sweep(
             ));
         }
         for &n in speeds {
-            let p = at([n, rpm[1]]).map_err(|e| {
+            let p = at([n, rpm[1]], lubricant).map_err(|e| {
                 e.map_field(|f| match f {
                     "speed.inner_rpm" => "operating.sweep_inner_rpm".to_string(),
                     other => other.to_string(),
                 })
             })?;
-            let c = &p.catalogue;
-            report.speed_sweep.push(FrictionSweepRow {
-                inner_rpm: n,
-                total_nmm: p.total_nmm,
-                cone_nmm: p.cone_rolling_nmm + p.cone_sliding_nmm,
-                cup_nmm: p.cup_rolling_nmm + p.cup_sliding_nmm,
-                rib_nmm: p.rib_nmm,
-                drag_nmm: p.drag_nmm,
-                power_w: p.power_w,
-                coefficient: p.coefficient,
-                min_lambda: p.min_lambda,
-                skf_total_nmm: c.skf_total_nmm,
-                aihara_nmm: c.aihara_total_nmm.or(c.aihara_rolling_nmm),
-                schaeffler_nmm: c.schaeffler_total_nmm.or(c.schaeffler_m0_nmm),
-            });
+            report.speed_sweep.push(p.state_row(force));
         }
     }
     Ok(report)
@@ -419,15 +477,15 @@ fn point(
         ));
     }
     check_rpm(rpm)?;
-    let Oil {
-        losses,
+    let lub = lubricant_of(lubricant)?;
+    let RacewayPlan {
+        mut model,
         rib_lub,
-        oil,
-        temperature_c: t,
-        viscosity_mm2_s: nu,
         law,
-    } = oil(op, lubricant, friction)?;
-    let mut model = BearingFrictionModel::new(bearing.clone(), losses)?;
+        nu,
+    } = plan_raceways(op, lub, friction, bearing)?;
+    let oil = rib_lub.lubricant;
+    let t = lub.temperature_c;
     let (wi, wo) = (rpm[0] / RPM_PER_RAD_S, rpm[1] / RPM_PER_RAD_S);
     let starting = wi == wo;
     let mut warnings = Vec::new();
@@ -466,36 +524,9 @@ fn point(
             }
             match solver.rib_pair() {
                 Some(pair) => {
-                    let rib = RibFrictionModel::new(
-                        pair.spec,
-                        RollerSet {
-                            count: bearing.rollers,
-                            length: bearing.effective_length_mm,
-                            density: 7850.0,
-                        },
-                        law,
-                        Some(rib_lub),
-                        false,
-                    )?;
-                    // At standstill: the kinematics of Δω = 1 rad/s, and each rib's
-                    // starting torque μ_b Q_f v_s(Δω = 1) (boundary friction at the
-                    // contact point's sliding speed per unit Δω, no film).
-                    let (ri, ro) = if starting { (1.0, 0.0) } else { (wi, wo) };
-                    let k = rib.kinematics(ri, ro)?;
-                    let loads: Vec<RollerRibLoad> = solver
-                        .roller_loads()
-                        .iter()
-                        .map(|r| RollerRibLoad {
-                            azimuth: r.azimuth_rad,
-                            loads: RollerLoads {
-                                outer_raceway: r.outer_n,
-                                inner_raceway: r.inner_n,
-                                rib: r.rib_n,
-                                centrifugal: solver.centrifugal_n(),
-                            },
-                        })
-                        .collect();
-                    let f = rib.evaluate_rollers(PressureModel::Hertz, &k, &loads)?;
+                    let rib = rib_model(pair, bearing, law, rib_lub)?;
+                    let mut values = vec![0.0; bearing.rollers];
+                    let f = rib_powers(&rib, solver, [wi, wo], &mut Vec::new(), &mut values)?;
                     if let Some(c) = f.most_loaded().and_then(|r| r.friction.as_ref())
                         && let Some(film) = &c.film_thickness
                     {
@@ -505,32 +536,26 @@ fn point(
                             rib_film_parameter(film.minimum, sigma_rib)?,
                         ));
                     }
-                    rib_values = Some(
-                        f.rollers
-                            .iter()
-                            .map(|r| match (&r.friction, starting) {
-                                (Some(c), true) => {
-                                    law.boundary_coefficient * r.loads.rib * c.sliding_speed.abs()
-                                }
-                                (_, true) | (None, false) => 0.0,
-                                (Some(_), false) => r.power(),
-                            })
-                            .collect(),
-                    );
+                    rib_values = Some(values);
                 }
-                None => warnings.push(
-                    "rib friction not computed for cylindrical roller bearings yet".to_string(),
-                ),
+                None => {
+                    // a cylindrical roller bearing's roller ends on its ribs
+                    let crb = crb_rib_model(bearing, law, rib_lub)?;
+                    let mut values = vec![0.0; bearing.rollers];
+                    crb_rib_values(&crb, solver, [wi, wo], &mut values)?;
+                    rib_values = Some(values);
+                }
             }
         }
     }
 
     // Catalogue torques and drag.
     let envelope = envelope(catalogue)?;
-    // The bearing's centre lies the outer raceway's mid radius above its lowest point.
-    let centre = 0.5 * bearing.pitch_diameter_mm
-        + 0.5 * bearing.roller_diameter_mm * bearing.contact_angle_rad.cos();
-    let lubrication = supply(op, centre, &mut warnings)?;
+    let lubrication = oil_supply(op)?;
+    if let Lubrication::OilBath { level_mm } = lubrication {
+        checks::oil_level(level_mm, bearing)?;
+    }
+    warnings.extend(checks::temperature_warning(lub));
     let (fr, fa) = (force[0].hypot(force[1]), force[2].abs());
     let point = OperatingPoint {
         speed_rad_s: (wi - wo).abs(),
@@ -542,23 +567,7 @@ fn point(
     let mut cat = CatalogueTorques::default();
     if let (Some(c), Some(env)) = (catalogue, envelope.as_ref()) {
         if let Some(series) = &c.skf_series {
-            let skf = match bearing.kind {
-                RollerBearingKind::Tapered => SkfBearing::TaperedRoller {
-                    series: TaperedSeries::from_name(series)
-                        .map_err(|e| e.map_field(|_| "catalogue.skf_series".to_string()))?,
-                    y: c.y.ok_or_else(|| {
-                        Error::invalid(
-                            "catalogue.y",
-                            "missing",
-                            "the axial load factor Y of the product table with skf_series",
-                        )
-                    })?,
-                },
-                _ => SkfBearing::CylindricalRoller {
-                    series: CylindricalSeries::from_name(series)
-                        .map_err(|e| e.map_field(|_| "catalogue.skf_series".to_string()))?,
-                },
-            };
+            let skf = skf_bearing(c, series, bearing)?;
             let t = skf2004(&skf, env, &point, &SkfOptions::default())
                 .map_err(|e| e.map_field(key("catalogue")))?;
             cat.add_skf(&t, &mut warnings);
@@ -628,12 +637,13 @@ fn point(
         drag,
         coefficient_basis: Some((p, d)),
     })?;
-    if f.warnings.film_out_of_range_slices > 0 {
-        warnings.push(format!(
-            "{} loaded raceway slices outside the Dowson-Higginson fit (Moes M < 10 or h_c < h_min): films extrapolated",
-            f.warnings.film_out_of_range_slices
-        ));
-    }
+    warnings.extend(checks::film_warning(
+        &model,
+        [wi, wo],
+        &azimuths,
+        [&cone, &cup],
+        f.warnings.film_out_of_range_slices,
+    )?);
     if f.warnings.starvation_extrapolated {
         warnings.push("starvation degree below Biboulet & Houpert's computed range (S < 2)".into());
     }
@@ -690,7 +700,67 @@ fn point(
         rollers,
         warnings,
         speed_sweep: Vec::new(),
+        axial_load_sweep: Vec::new(),
+        radial_load_sweep: Vec::new(),
+        temperature_sweep: Vec::new(),
         balls: Vec::new(),
+    })
+}
+
+/// The oil supply of `[operating]` as the catalogue models take it.
+///
+/// # Errors
+/// Field `operating.oil_level_mm`: missing with `supply = "oil_bath"`, not finite or < 0.
+pub(crate) fn oil_supply(op: &OperatingSpec) -> Result<Lubrication> {
+    let lubrication = match op.supply {
+        Supply::Circulating => Lubrication::OilJet,
+        Supply::OilBath => Lubrication::OilBath {
+            level_mm: op.oil_level_mm.ok_or_else(|| {
+                Error::invalid(
+                    "operating.oil_level_mm",
+                    "missing",
+                    "the oil level above the lowest point of the outer raceway, mm, with supply = \"oil_bath\"",
+                )
+            })?,
+        },
+    };
+    if let Lubrication::OilBath { level_mm } = lubrication
+        && !(level_mm.is_finite() && level_mm >= 0.0)
+    {
+        return Err(Error::invalid(
+            "operating.oil_level_mm",
+            level_mm,
+            "a finite oil level >= 0 mm above the lowest point of the outer raceway",
+        ));
+    }
+    Ok(lubrication)
+}
+
+/// The SKF 2004 bearing of `[catalogue]` with the series `series` for `bearing`'s kind.
+///
+/// # Errors
+/// Fields `catalogue.skf_series` (unknown series) and `catalogue.y` (missing, tapered).
+pub(crate) fn skf_bearing(
+    c: &CatalogueSpec,
+    series: &str,
+    bearing: &RollerBearing,
+) -> Result<SkfBearing> {
+    Ok(match bearing.kind {
+        RollerBearingKind::Tapered => SkfBearing::TaperedRoller {
+            series: TaperedSeries::from_name(series)
+                .map_err(|e| e.map_field(|_| "catalogue.skf_series".to_string()))?,
+            y: c.y.ok_or_else(|| {
+                Error::invalid(
+                    "catalogue.y",
+                    "missing",
+                    "the axial load factor Y of the product table with skf_series",
+                )
+            })?,
+        },
+        _ => SkfBearing::CylindricalRoller {
+            series: CylindricalSeries::from_name(series)
+                .map_err(|e| e.map_field(|_| "catalogue.skf_series".to_string()))?,
+        },
     })
 }
 
@@ -719,6 +789,15 @@ pub(crate) fn check_rpm(rpm: [f64; 2]) -> Result<()> {
         }
     }
     Ok(())
+}
+
+/// The case's `[lubricant]`, required with `[operating]`.
+pub(crate) fn lubricant_of(lubricant: Option<&LubricantSpec>) -> Result<&LubricantSpec> {
+    lubricant.ok_or_else(|| Error::CaseFile {
+        line: None,
+        key: "lubricant".into(),
+        message: "missing table `[lubricant]`: [operating] needs the oil (iso_vg or nu40_mm2_s and nu100_mm2_s, density_kg_m3, alpha_per_mpa, temperature_c, roughness_mm)".into(),
+    })
 }
 
 /// The envelope of `[catalogue]` (errors named `catalogue.*`).
@@ -757,45 +836,11 @@ impl CatalogueTorques {
     }
 }
 
-/// The catalogue models' lubrication of `[operating]`, with a warning when the oil level
-/// is above the bearing's centre, `centre` \[mm\] above the lowest point of the outer
-/// raceway. Errors name `operating.oil_level_mm`.
-pub(crate) fn supply(
-    op: &OperatingSpec,
-    centre: f64,
-    warnings: &mut Vec<String>,
-) -> Result<Lubrication> {
-    let lubrication = match op.supply {
-        Supply::Circulating => Lubrication::OilJet,
-        Supply::OilBath => Lubrication::OilBath {
-            level_mm: op.oil_level_mm.ok_or_else(|| {
-                Error::invalid(
-                    "operating.oil_level_mm",
-                    "missing",
-                    "the oil level above the lowest point of the outer raceway, mm, with supply = \"oil_bath\"",
-                )
-            })?,
-        },
-    };
-    if let Lubrication::OilBath { level_mm } = lubrication {
-        if !(level_mm.is_finite() && level_mm >= 0.0) {
-            return Err(Error::invalid(
-                "operating.oil_level_mm",
-                level_mm,
-                "a finite oil level >= 0 mm above the lowest point of the outer raceway",
-            ));
-        }
-        if level_mm > centre {
-            warnings.push(format!(
-                "oil level {level_mm} mm is above the bearing's centre ({centre:.1} mm above the lowest point of the outer raceway): outside what the catalogue drag models were fitted for"
-            ));
-        }
-    }
-    Ok(lubrication)
-}
-
 /// The drag of `operating.drag` from the catalogue torques `cat`; `nu_n` = ν n
 /// \[mm²/s · r/min\] for the Schaeffler low-speed warning.
+///
+/// # Errors
+/// Field `operating.drag` when its catalogue term is not computed.
 pub(crate) fn drag_model(
     op: &OperatingSpec,
     cat: &CatalogueTorques,
@@ -830,34 +875,30 @@ pub(crate) fn drag_model(
     Ok(drag)
 }
 
-/// The oil of the raceway contacts from `[lubricant]`, `[friction]` and `[operating]`
-/// (shared by the roller and the ball friction).
-pub(crate) struct Oil {
+/// The raceway oil of a case: the loss model of `[lubricant]`, `[friction]` and
+/// `[operating]`, the rib lubrication, the friction law and ν \[mm²/s\] at the oil
+/// temperature (roller and ball bearings).
+pub(crate) struct RacewayOil {
     /// The raceway loss model.
-    pub(crate) losses: RacewayLosses,
-    /// The rib lubrication (the oil and the roughness of the case).
-    pub(crate) rib_lub: RibLubrication,
-    /// The oil.
-    pub(crate) oil: kontakt::lubrication::Lubricant,
-    /// Its temperature \[°C\].
-    pub(crate) temperature_c: f64,
-    /// Its kinematic viscosity there \[mm²/s\].
-    pub(crate) viscosity_mm2_s: f64,
-    /// The friction law.
-    pub(crate) law: kontakt::friction::FrictionLaw,
+    pub losses: RacewayLosses,
+    /// The rib contacts' lubrication (`[lubricant]`).
+    pub rib_lub: RibLubrication,
+    /// The friction law (`[friction]`, film-dependent).
+    pub law: kontakt::friction::FrictionLaw,
+    /// Kinematic viscosity at `lubricant.temperature_c` \[mm²/s\].
+    pub nu: f64,
 }
 
-/// [`Oil`] of the case tables; errors named by the case key.
-pub(crate) fn oil(
+/// [`RacewayOil`] of the case's tables.
+///
+/// # Errors
+/// [`Error::InvalidInput`] naming the case key (`lubricant.*`, `friction.*`,
+/// `operating.*`).
+pub(crate) fn raceway_oil(
     op: &OperatingSpec,
-    lubricant: Option<&LubricantSpec>,
+    lub: &LubricantSpec,
     friction: Option<&FrictionSpec>,
-) -> Result<Oil> {
-    let lub = lubricant.ok_or_else(|| Error::CaseFile {
-        line: None,
-        key: "lubricant".into(),
-        message: "missing table `[lubricant]`: [operating] needs the oil (iso_vg or nu40_mm2_s and nu100_mm2_s, density_kg_m3, alpha_per_mpa, temperature_c, roughness_mm)".into(),
-    })?;
+) -> Result<RacewayOil> {
     let rib_lub: RibLubrication = lub.lubrication()?;
     let oil = rib_lub.lubricant;
     let t = lub.temperature_c;
@@ -889,14 +930,178 @@ pub(crate) fn oil(
             other => format!("friction.{other}"),
         })
     })?;
-    Ok(Oil {
+    Ok(RacewayOil {
         losses,
         rib_lub,
-        oil,
-        temperature_c: t,
-        viscosity_mm2_s: nu,
         law,
+        nu,
     })
+}
+
+/// The planned raceway friction of a case: the model of `bearing` with the raceway
+/// lubrication of `[lubricant]`, `[friction]` and `[operating]`, the rib lubrication and
+/// friction law, and the kinematic viscosity ν \[mm²/s\] at the oil temperature.
+pub(crate) struct RacewayPlan {
+    /// The raceway friction model.
+    pub model: BearingFrictionModel,
+    /// The rib contacts' lubrication (`[lubricant]`).
+    pub rib_lub: RibLubrication,
+    /// The friction law (`[friction]`, film-dependent).
+    pub law: kontakt::friction::FrictionLaw,
+    /// Kinematic viscosity at `lubricant.temperature_c` \[mm²/s\].
+    pub nu: f64,
+}
+
+/// Plan the raceway friction of `bearing` (tapered or cylindrical) from the case's
+/// tables.
+///
+/// # Errors
+/// [`Error::InvalidInput`] naming the case key (`lubricant.*`, `friction.*`,
+/// `operating.*`).
+pub(crate) fn plan_raceways(
+    op: &OperatingSpec,
+    lub: &LubricantSpec,
+    friction: Option<&FrictionSpec>,
+    bearing: &RollerBearing,
+) -> Result<RacewayPlan> {
+    let RacewayOil {
+        losses,
+        rib_lub,
+        law,
+        nu,
+    } = raceway_oil(op, lub, friction)?;
+    Ok(RacewayPlan {
+        model: BearingFrictionModel::new(bearing.clone(), losses)?,
+        rib_lub,
+        law,
+        nu,
+    })
+}
+
+/// The rib friction model of a rib-contact solver's roller end/rib pair `pair` (steel
+/// rollers of `bearing`, no centrifugal term: the solver's load distribution has it).
+///
+/// # Errors
+/// Those of [`RibFrictionModel::new`].
+pub(crate) fn rib_model(
+    pair: &kontakt::bearing::RollerRib,
+    bearing: &RollerBearing,
+    law: kontakt::friction::FrictionLaw,
+    rib_lub: RibLubrication,
+) -> Result<RibFrictionModel> {
+    RibFrictionModel::new(
+        pair.spec,
+        RollerSet {
+            count: bearing.rollers,
+            length: bearing.effective_length_mm,
+            density: 7850.0,
+        },
+        law,
+        Some(rib_lub),
+        false,
+    )
+}
+
+/// Every roller's rib friction of a rib-contact `solver` after its solve, at the ring
+/// speeds `[ω_i, ω_o]` \[rad/s\], written to `values` (one per roller): the rib power \[W\]
+/// while the rings turn relative to each other, and at standstill (`ω_i = ω_o`) each rib's
+/// starting torque `μ_b Q_f v_s(Δω = 1)` \[N·mm\] (boundary friction at the contact point's
+/// sliding speed per unit Δω, no film) — what
+/// [`kontakt_bearing::friction::torque::FrictionOperating::rib`] takes. `loads` is a
+/// buffer (reused: no allocation once it holds the rollers; the contact fields of the
+/// rib friction itself are allocated).
+///
+/// # Errors
+/// Those of [`RibFrictionModel::kinematics`] and
+/// [`RibFrictionModel::evaluate_rollers`]; field `rib` for a `values` of the wrong length.
+pub(crate) fn rib_powers(
+    rib: &RibFrictionModel,
+    solver: &RibContactSolver,
+    speeds: [f64; 2],
+    loads: &mut Vec<RollerRibLoad>,
+    values: &mut [f64],
+) -> Result<kontakt::bearing::BearingRibFriction> {
+    let starting = speeds[0] == speeds[1];
+    // At standstill: the kinematics of Δω = 1 rad/s.
+    let (ri, ro) = if starting {
+        (1.0, 0.0)
+    } else {
+        (speeds[0], speeds[1])
+    };
+    let k = rib.kinematics(ri, ro)?;
+    loads.clear();
+    loads.extend(solver.roller_loads().iter().map(|r| RollerRibLoad {
+        azimuth: r.azimuth_rad,
+        loads: RollerLoads {
+            outer_raceway: r.outer_n,
+            inner_raceway: r.inner_n,
+            rib: r.rib_n,
+            centrifugal: solver.centrifugal_n(),
+        },
+    }));
+    if values.len() != loads.len() {
+        return Err(Error::invalid(
+            "rib",
+            values.len(),
+            format!("{} values, one per roller", loads.len()),
+        ));
+    }
+    let f = rib.evaluate_rollers(PressureModel::Hertz, &k, loads)?;
+    let mu_b = rib.law().boundary_coefficient;
+    for (v, r) in values.iter_mut().zip(&f.rollers) {
+        *v = match (&r.friction, starting) {
+            (Some(c), true) => mu_b * r.loads.rib * c.sliding_speed.abs(),
+            (_, true) | (None, false) => 0.0,
+            (Some(_), false) => r.power(),
+        };
+    }
+    Ok(f)
+}
+
+/// The roller-end/rib friction model of a cylindrical roller bearing with ribs
+/// (`roller_model = "rib_contact"`), steel, with the case's friction law and rib
+/// lubrication.
+///
+/// # Errors
+/// Those of [`CylindricalRibFriction::new`].
+pub(crate) fn crb_rib_model(
+    bearing: &RollerBearing,
+    law: kontakt::friction::FrictionLaw,
+    rib_lub: RibLubrication,
+) -> Result<CylindricalRibFriction> {
+    CylindricalRibFriction::new(
+        bearing.pitch_diameter_mm,
+        bearing.roller_diameter_mm,
+        law,
+        Some(rib_lub),
+    )
+}
+
+/// Every roller's rib value of a cylindrical rib-contact `solver` after its solve, at the
+/// ring speeds `[ω_i, ω_o]` \[rad/s\], into `values` (one per roller): the rib power \[W\],
+/// at standstill the rib starting torque \[N·mm\] (as [`rib_powers`]). Allocates nothing.
+///
+/// # Errors
+/// Those of [`CylindricalRibFriction::roller_value`]; field `rib` for a `values` of the
+/// wrong length.
+pub(crate) fn crb_rib_values(
+    model: &CylindricalRibFriction,
+    solver: &RibContactSolver,
+    speeds: [f64; 2],
+    values: &mut [f64],
+) -> Result<()> {
+    let z = solver.roller_loads().len();
+    if values.len() != z {
+        return Err(Error::invalid(
+            "rib",
+            values.len(),
+            format!("{z} values, one per roller"),
+        ));
+    }
+    for (j, v) in values.iter_mut().enumerate() {
+        *v = model.roller_value(solver, j, speeds[0], speeds[1])?;
+    }
+    Ok(())
 }
 
 impl FrictionReport {
@@ -998,6 +1203,7 @@ impl FrictionReport {
                 ));
             }
         }
+        out.extend(sweeps::state_sweep_lines(self));
         out
     }
 }

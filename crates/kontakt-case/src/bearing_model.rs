@@ -103,7 +103,9 @@ pub(crate) fn unloaded(l: &BearingLoadSpec) -> bool {
 }
 
 mod element;
+mod friction;
 pub use element::{BearingElement, BearingElementOutput, BearingElementStatus, prescribed_load};
+pub use friction::{ElementFriction, ElementFrictionStatus};
 
 #[cfg(test)]
 mod tests;

@@ -17,8 +17,9 @@
 //! the internal data of Liu (2022), raceways only (no rib geometry).
 //!
 //! What is not filled, and why, rather than a number without a source:
-//! - the contact-based torque where the internal geometry is not stated (Wingertszahn et
-//!   al. 2023's 32216, Zhou & Hoeprich 1991's LM12700 without its load and oil);
+//! - the contact-based torque where the internal geometry is not stated (Zhou & Hoeprich
+//!   1991's LM12700 without its load and oil); Wingertszahn et al. 2023's 32216 has it with
+//!   assumed raceway angles ([`wingertszahn`]);
 //! - Aihara (1987) ([`ComparisonRow::aihara_nmm`]) needs the rib contact height, the roller
 //!   geometry and the oil's pressure-viscosity coefficient, which none of the datasets
 //!   states: `None`, and the dataset's `aihara_note` says which input is missing;
@@ -33,7 +34,9 @@ use kontakt_bearing::friction::skf2004::{
 use kontakt_bearing::friction::{Envelope, Lubrication, OperatingPoint, RPM_PER_RAD_S};
 
 pub mod contact;
-pub use contact::{ContactSetup, contact_at};
+pub mod rib_study;
+pub mod wingertszahn;
+pub use contact::{ContactParts, ContactSetup, ContactVariation, contact_at, contact_parts_at};
 
 /// How far a measured value can be trusted.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
@@ -56,6 +59,29 @@ impl Status {
     }
 }
 
+/// What a measured torque is.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Quantity {
+    /// The whole bearing's friction torque.
+    Total,
+    /// The raceways' rolling-resistance torque M_rr, as Manjunath et al. (2023) reconstruct
+    /// it from their measurement: the measured total minus their computed rib torque. The
+    /// models' raceway parts are compared with it (SKF: its rolling term; the
+    /// contact-based model: cone + cup).
+    RollingResistance,
+}
+
+impl Quantity {
+    /// The CSV spelling.
+    pub fn name(self) -> &'static str {
+        match self {
+            Quantity::Total => "total",
+            Quantity::RollingResistance => "rolling_resistance",
+        }
+    }
+}
+
 /// One measured point (a row of a `validation/measured/*.csv` file).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct MeasuredPoint {
@@ -73,6 +99,8 @@ pub struct MeasuredPoint {
     pub band_pct: f64,
     /// Table value or unverified figure reading.
     pub status: Status,
+    /// What was measured (the CSV's `quantity`).
+    pub quantity: Quantity,
 }
 
 /// The kinematic viscosity of a test oil against temperature, from the source's data.
@@ -195,7 +223,7 @@ pub struct Dataset {
 
 /// Parse a measured-torque CSV (`speed_rpm,axial_load_n,radial_load_n,temperature_c,
 /// quantity,torque_nmm,band_pct,status`; an empty axial load = not stated; quantity
-/// `total` only, the one quantity measured in every dataset).
+/// `total` or `rolling_resistance`, [`Quantity`]).
 ///
 /// # Errors
 /// [`Error::InvalidInput`] naming `<file> line <k> column` for a missing, non-numeric,
@@ -229,13 +257,17 @@ pub fn parse_points(file: &str, text: &str) -> Result<Vec<MeasuredPoint>> {
                 _ => Err(Error::invalid(at(col), cells[i], "a finite number >= 0")),
             }
         };
-        if cells[4] != "total" {
-            return Err(Error::invalid(
-                at("quantity"),
-                cells[4],
-                "total (the whole bearing's torque)",
-            ));
-        }
+        let quantity = match cells[4] {
+            "total" => Quantity::Total,
+            "rolling_resistance" => Quantity::RollingResistance,
+            q => {
+                return Err(Error::invalid(
+                    at("quantity"),
+                    q,
+                    "total (the whole bearing's torque) | rolling_resistance (the raceways')",
+                ));
+            }
+        };
         let band_pct = number(6, "band_pct")?;
         if band_pct > 100.0 {
             return Err(Error::invalid(at("band_pct"), band_pct, "0..=100 %"));
@@ -257,6 +289,7 @@ pub fn parse_points(file: &str, text: &str) -> Result<Vec<MeasuredPoint>> {
             torque_nmm: number(5, "torque_nmm")?,
             band_pct,
             status,
+            quantity,
         });
     }
     Ok(points)
@@ -327,7 +360,8 @@ const MANJUNATH_ASSUMPTIONS: &[&str] = &[
     "bearing: 32008 X envelope 40 × 68 × 19 mm (the paper's 40 × 68 × 19 TRB)",
     "SKF series row 320 X (R1 2.38e-6, R2 10.9, S1 0.014, S2 2; a single public transcription of the catalogue table)",
     "Y = 1.6: the axial load factor of 32008 X in the SKF product table (e = 0.37), not stated in the paper",
-    "load: 12.85 kN axial, as the third-party reading states for Fig. 13 (the figure's caption could not be checked)",
+    "load: 12.85 kN axial, the caption of Fig. 13 (verified in the paper's text)",
+    "quantity: Fig. 13 shows, by its caption, the rolling-resistance torque M_rr, which the paper reconstructs as the measured total minus its computed rib torque (its eqs. 15-17, 21); so SKF's rolling term and the contact-based model's raceways (cone + cup) are compared with it (the third party labelled the reading 'total')",
     "circulating oil (0.3 l/min) taken as the SKF 'oil jet' (K_rs = 3e-8, no drag term)",
     "viscosity: Walther line (ASTM D341) through the paper's ν40 = 90.02 and ν100 = 10.41 mm²/s at the stated oil temperature (the bearing runs warmer: the viscosity in the contacts is lower)",
     "mu_bl = 0.12, mu_EHL = 0.002 (SKF catalogue values for tapered roller bearings)",
@@ -373,8 +407,8 @@ pub fn datasets() -> Result<Vec<Dataset>> {
     };
     let manjunath = Dataset {
         id: "manjunath2023_fig13",
-        title: "TRB 40×68×19 (32008 X class), 12.85 kN axial, FVA 3A, oil jet 0.3 l/min, 55 and 65 °C",
-        source: "Manjunath, Fauconnier, Ost & De Baets (2023), Machines 11(8):801, Fig. 13; third-party figure reading, unverified",
+        title: "TRB 40×68×19 (32008 X class), rolling-resistance torque M_rr, 12.85 kN axial, FVA 3A, oil jet 0.3 l/min, 55 and 65 °C",
+        source: "Manjunath, Fauconnier, Ost & De Baets (2023), Machines 11(8):801, Fig. 13 (caption: 'TRB rolling-resistance torque models and measured results', 55 and 65 °C supply oil, 12.85 kN axial); third-party figure reading, unverified",
         axis: Axis::Speed,
         points: points("manjunath2023_fig13.csv")?,
         skf: Some(SKF_32008X),
@@ -402,7 +436,7 @@ pub fn datasets() -> Result<Vec<Dataset>> {
             oil: FVA3,
             assumptions: WINGERTSZAHN_ASSUMPTIONS,
             aihara_note: "the raceway angles, the rib geometry and the oil's pressure-viscosity coefficient at the test temperature are not given (the paper's Table 4 lacks the angles)",
-            contact: None,
+            contact: Some(wingertszahn::CONTACT_32216),
             curves: Vec::new(),
         },
         Dataset {
@@ -415,7 +449,7 @@ pub fn datasets() -> Result<Vec<Dataset>> {
             oil: FVA3,
             assumptions: WINGERTSZAHN_ASSUMPTIONS,
             aihara_note: "Aihara (1987) is for axial load only, and its inputs are missing as for the axial test",
-            contact: None,
+            contact: Some(wingertszahn::CONTACT_32216),
             curves: Vec::new(),
         },
         Dataset {
@@ -428,7 +462,7 @@ pub fn datasets() -> Result<Vec<Dataset>> {
             oil: FVA3,
             assumptions: WINGERTSZAHN_ASSUMPTIONS,
             aihara_note: "Aihara (1987) is for axial load only",
-            contact: None,
+            contact: Some(wingertszahn::CONTACT_32216),
             curves: vec![CurveSpec {
                 temperature_c: 50.0,
                 axial_load_n: 6500.0,
@@ -531,9 +565,13 @@ pub struct ComparisonRow {
     pub skf: Option<SkfParts>,
     /// Aihara (1987) \[N·mm\]: `None` (inputs not stated; the dataset's `aihara_note`).
     pub aihara_nmm: Option<f64>,
-    /// The contact-based whole-bearing torque (issue 29 §1-2) \[N·mm\]: `None` where the
-    /// dataset has no [`Dataset::contact`] (internal geometry not stated).
+    /// The contact-based torque (issue 29 §1-2) compared with the measurement \[N·mm\]:
+    /// the whole bearing's for a [`Quantity::Total`], the raceways' (cone + cup) for a
+    /// [`Quantity::RollingResistance`]; `None` where the dataset has no [`Dataset::contact`]
+    /// (internal geometry not stated).
     pub contact_nmm: Option<f64>,
+    /// The contact-based torque's breakdown (cone, cup, rib, drag, total) \[N·mm\].
+    pub contact_parts: Option<ContactParts>,
 }
 
 /// The SKF torque's parts \[N·mm\].
@@ -568,8 +606,18 @@ pub fn deviation_pct(model: f64, measured: f64) -> f64 {
 impl ComparisonRow {
     /// SKF against the measurement \[%\].
     pub fn skf_deviation_pct(&self) -> Option<f64> {
-        self.skf
-            .map(|s| deviation_pct(s.total_nmm, self.measured.torque_nmm))
+        self.skf_compared_nmm()
+            .map(|s| deviation_pct(s, self.measured.torque_nmm))
+    }
+
+    /// The SKF torque compared with the measurement \[N·mm\]: the total for a
+    /// [`Quantity::Total`], the rolling term φ_ish φ_rs M_rr for a
+    /// [`Quantity::RollingResistance`].
+    pub fn skf_compared_nmm(&self) -> Option<f64> {
+        self.skf.map(|s| match self.measured.quantity {
+            Quantity::Total => s.total_nmm,
+            Quantity::RollingResistance => s.rolling_nmm,
+        })
     }
 
     /// Aihara (1987) against the measurement \[%\].
@@ -603,7 +651,8 @@ pub struct DatasetComparison {
     pub dataset: Dataset,
     /// One row per measured point.
     pub rows: Vec<ComparisonRow>,
-    /// SKF curves along the dataset's axis (empty without SKF inputs).
+    /// SKF curves along the dataset's axis (empty without SKF inputs): the total, or its
+    /// rolling term for a dataset of rolling-resistance torques.
     pub skf_curves: Vec<ModelCurve>,
     /// The SKF model's warnings, once each (e.g. the omitted drag term).
     pub skf_warnings: Vec<String>,
@@ -648,7 +697,7 @@ pub const CURVE_POINTS: usize = 57;
 /// Evaluate the models for every point and along the curves of `dataset`.
 ///
 /// # Errors
-/// Those of [`Oil::viscosity_mm2_s`], [`skf2004`] and [`contact_at`].
+/// Those of [`Oil::viscosity_mm2_s`], [`skf2004`] and [`contact_parts_at`].
 pub fn compare(dataset: &Dataset) -> Result<DatasetComparison> {
     let mut warnings: Vec<String> = Vec::new();
     let mut note = |t: &SkfTorque| {
@@ -669,18 +718,26 @@ pub fn compare(dataset: &Dataset) -> Result<DatasetComparison> {
             }
             _ => None,
         };
+        let contact_parts = match &dataset.contact {
+            Some(setup) => contact_parts_at(setup, &ContactVariation::default(), p)?,
+            None => None,
+        };
         rows.push(ComparisonRow {
             measured: *p,
             viscosity_mm2_s: nu,
             skf,
             aihara_nmm: None,
-            contact_nmm: match &dataset.contact {
-                Some(setup) => contact_at(setup, p)?,
-                None => None,
-            },
+            contact_nmm: contact_parts.map(|c| match p.quantity {
+                Quantity::Total => c.total_nmm,
+                Quantity::RollingResistance => c.raceways_nmm(),
+            }),
+            contact_parts,
         });
     }
     let mut skf_curves = Vec::new();
+    // the SKF term that stands for the measured quantity: its rolling term beside a
+    // rolling-resistance torque, its total otherwise
+    let rolling_only = rib_study::is_rolling_resistance(dataset);
     if let Some(setup) = &dataset.skf {
         for c in &dataset.curves {
             let Some(nu) = dataset.oil.viscosity_mm2_s(c.temperature_c)? else {
@@ -694,10 +751,21 @@ pub fn compare(dataset: &Dataset) -> Result<DatasetComparison> {
                     Axis::RadialLoad => skf_at(setup, c.speed_rpm, nu, c.axial_load_n, x)?,
                 };
                 note(&t);
-                pts.push((x, t.total_nmm));
+                pts.push((
+                    x,
+                    if rolling_only {
+                        t.rolling_nmm
+                    } else {
+                        t.total_nmm
+                    },
+                ));
             }
             skf_curves.push(ModelCurve {
-                label: format!("SKF 2004, {} °C", c.temperature_c),
+                label: if rolling_only {
+                    format!("SKF 2004 rolling term, {} °C", c.temperature_c)
+                } else {
+                    format!("SKF 2004, {} °C", c.temperature_c)
+                },
                 temperature_c: c.temperature_c,
                 points: pts,
             });

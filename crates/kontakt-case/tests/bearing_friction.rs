@@ -170,13 +170,11 @@ fn bad_friction_input_names_the_key() {
         "supply = \"circulating\"",
         "supply = \"oil_bath\"\noil_level_mm = 40.0",
     );
-    let f = run(&bath).unwrap().friction.unwrap();
+    // above the bearing's centre (30.15 mm): refused with the range
+    let e = run(&bath).unwrap_err().to_string();
     assert!(
-        f.warnings
-            .iter()
-            .any(|w| w.contains("above the bearing's centre")),
-        "{:?}",
-        f.warnings
+        e.contains("operating.oil_level_mm") && e.contains("0..=30.15 mm"),
+        "{e}"
     );
     let e = run(&bath.replace("oil_level_mm = 40.0", "oil_level_mm = -1.0"))
         .unwrap_err()

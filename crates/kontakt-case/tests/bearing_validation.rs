@@ -9,7 +9,7 @@
 use kontakt_bearing::friction::skf2004::{SkfBearing, SkfOptions, TaperedSeries, skf2004};
 use kontakt_bearing::friction::{Envelope, Lubrication, OperatingPoint};
 use kontakt_case::bearing_validation::{
-    Axis, FVA3, FVA3A, Oil, Status, ZHOU_HOEPRICH_TABLE1, compare, compare_all, datasets,
+    Axis, FVA3, FVA3A, Oil, Quantity, Status, ZHOU_HOEPRICH_TABLE1, compare, compare_all, datasets,
     deviation_pct, parse_points,
 };
 
@@ -78,11 +78,27 @@ fn skf_values_are_the_library_function_at_the_same_inputs() {
     assert!((got.rolling_nmm / want.rolling_nmm - 1.0).abs() < 1e-12);
     assert!((got.sliding_nmm / want.sliding_nmm - 1.0).abs() < 1e-12);
     assert!((row.viscosity_mm2_s.unwrap() / nu55 - 1.0).abs() < 1e-12);
-    // The deviation is model/measured − 1 in %, with its sign.
+    // The deviation is model/measured − 1 in %, with its sign; Manjunath's Fig. 13 is the
+    // rolling-resistance torque (its caption), so SKF's rolling term is compared with it.
+    assert_eq!(row.measured.quantity, Quantity::RollingResistance);
     assert_eq!(
+        row.skf_deviation_pct().unwrap(),
+        deviation_pct(want.rolling_nmm, 970.0)
+    );
+    assert_ne!(
         row.skf_deviation_pct().unwrap(),
         deviation_pct(want.total_nmm, 970.0)
     );
+    // and the curve beside it is the rolling term too
+    let curve = &c.skf_curves[0];
+    assert!(curve.label.contains("rolling term"));
+    let (n, m) = curve.points[0];
+    let op0 = OperatingPoint {
+        speed_rad_s: n * 2.0 * std::f64::consts::PI / 60.0,
+        ..op
+    };
+    let at = skf2004(&bearing, &env, &op0, &SkfOptions::default()).unwrap();
+    assert!((m / at.rolling_nmm - 1.0).abs() < 1e-12, "{m} {at:?}");
     assert!(deviation_pct(110.0, 100.0) > 9.99 && deviation_pct(90.0, 100.0) < -9.99);
 
     // The 32216 under combined load: series 322, Y = 1.4, oil bath at 8.5 mm, drag omitted.
@@ -121,12 +137,12 @@ fn skf_values_are_the_library_function_at_the_same_inputs() {
         "{:?}",
         c.skf_warnings
     );
-    // Aihara, and the contact-based model without the 32216's internal geometry, are not
-    // filled with anything.
+    // Aihara is not filled with anything; the contact-based model has the 32216 with its
+    // assumed raceway angles (bearing_validation::wingertszahn)
     assert!(
         c.rows
             .iter()
-            .all(|r| r.aihara_nmm.is_none() && r.contact_nmm.is_none())
+            .all(|r| r.aihara_nmm.is_none() && r.contact_nmm.is_some())
     );
 }
 
@@ -261,7 +277,14 @@ fn bad_measured_csv_names_the_cell() {
     assert!(err("200,1,0,55,total,abc,15,unverified").contains("x.csv line 2 torque_nmm"));
     assert!(err("200,1,0,55,total,NaN,15,unverified").contains("torque_nmm"));
     assert!(err("200,-1,0,55,total,5,15,unverified").contains("axial_load_n"));
-    assert!(err("200,1,0,55,rib,5,15,unverified").contains("quantity"));
+    assert!(err("200,1,0,55,rib,5,15,unverified").contains("line 2 quantity"));
+    assert!(err("200,1,0,55,rib,5,15,unverified").contains("rolling_resistance"));
+    let q = |body: &str| parse_points("x.csv", &format!("{head}{body}")).unwrap()[0].quantity;
+    assert_eq!(q("200,1,0,55,total,5,15,unverified"), Quantity::Total);
+    assert_eq!(
+        q("200,1,0,55,rolling_resistance,5,15,unverified"),
+        Quantity::RollingResistance
+    );
     assert!(err("200,1,0,55,total,5,150,unverified").contains("band_pct"));
     assert!(err("200,1,0,55,total,5,15,maybe").contains("status"));
     assert!(err("200,1,0").contains("line 2 row"));
@@ -277,18 +300,25 @@ fn bad_measured_csv_names_the_cell() {
 }
 
 /// The contact-based column: Manjunath et al.'s (2023) 40 × 68 × 19 TRB (both readings) is
-/// the friction section of `examples/bearing_32008x_friction.toml` run at each point's speed
-/// and oil temperature, here through the case text (an independent path, to 1e-12); the
-/// other datasets, without internal geometry, have none. The numbers are recorded in
-/// docs/measured-torque.md (raceways only: below the measurement at low speed, where the rib
-/// and the boundary friction dominate).
+/// the friction section of `examples/bearing_32008x_rib_friction.toml` (with its rib) run at
+/// each point's speed and oil temperature, here through the case text (an independent path,
+/// to 1e-12); the measured values being the rolling-resistance torque (Fig. 13's caption),
+/// the compared value is the raceways' (cone + cup), and the breakdown adds up to the total.
+/// The other datasets, without internal geometry, have none. The numbers are recorded in
+/// docs/measured-torque.md.
 #[test]
 fn contact_column_is_the_friction_case_at_each_point() {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../examples/bearing_32008x_friction.toml");
+        .join("../../examples/bearing_32008x_rib_friction.toml");
     let text = std::fs::read_to_string(path).unwrap();
+    assert!(text.contains("roller_model = \"rib_contact\""));
     let mut seen = 0;
     for c in compare_all().unwrap() {
+        // the 32216's column: bearing_validation::wingertszahn's tests
+        if c.dataset.id.starts_with("wingertszahn2023") {
+            assert!(c.rows.iter().all(|r| r.contact_nmm.is_some()));
+            continue;
+        }
         let has = c.dataset.id.starts_with("manjunath2023");
         assert_eq!(c.dataset.contact.is_some(), has, "{}", c.dataset.id);
         for r in &c.rows {
@@ -296,6 +326,7 @@ fn contact_column_is_the_friction_case_at_each_point() {
             let Some(got) = r.contact_nmm else { continue };
             let m = &r.measured;
             assert_eq!((m.axial_load_n, m.radial_load_n), (Some(12850.0), 0.0));
+            assert_eq!(m.quantity, Quantity::RollingResistance);
             let case = text
                 .replace(
                     "inner_rpm = 1000.0",
@@ -310,19 +341,31 @@ fn contact_column_is_the_friction_case_at_each_point() {
             else {
                 panic!("not a bearing case")
             };
-            let want = kontakt_case::run_bearing_case(&b)
+            let f = kontakt_case::run_bearing_case(&b)
                 .unwrap()
                 .friction
-                .unwrap()
-                .total_nmm;
-            assert!((got / want - 1.0).abs() < 1e-12, "{got} {want}");
+                .unwrap();
+            let raceways =
+                f.cone_rolling_nmm + f.cone_sliding_nmm + f.cup_rolling_nmm + f.cup_sliding_nmm;
+            assert!((got / raceways - 1.0).abs() < 1e-12, "{got} {raceways}");
+            let parts = r.contact_parts.unwrap();
+            assert!((parts.total_nmm / f.total_nmm - 1.0).abs() < 1e-12);
+            assert!((parts.rib_nmm / f.rib_nmm - 1.0).abs() < 1e-12);
+            assert!(parts.rib_nmm > 0.0 && parts.drag_nmm == 0.0);
+            let sum = parts.cone_nmm + parts.cup_nmm + parts.rib_nmm + parts.drag_nmm;
+            assert!((sum / parts.total_nmm - 1.0).abs() < 1e-12);
             assert_eq!(
                 r.contact_deviation_pct().unwrap(),
                 deviation_pct(got, m.torque_nmm)
             );
             println!(
-                "{} {} r/min {} °C: measured {} contact {got:.1} N·mm",
-                c.dataset.id, m.speed_rpm, m.temperature_c, m.torque_nmm
+                "{} {} r/min {} °C: measured {} raceways {got:.1} rib {:.1} total {:.1} N·mm",
+                c.dataset.id,
+                m.speed_rpm,
+                m.temperature_c,
+                m.torque_nmm,
+                parts.rib_nmm,
+                parts.total_nmm
             );
             seen += 1;
         }

@@ -21,7 +21,8 @@ use std::path::PathBuf;
       kontakt bearing examples/bearing_32216.toml --csv rollers.csv --plot loads.png\n  \
       kontakt friction examples/rib_friction.toml --plot torque.png\n  \
       kontakt mbs --out kontakt-mbs\n  \
-      kontakt sweep examples/sweeps/hertz_load.toml --out kontakt-sweep\n\n\
+      kontakt sweep examples/sweeps/hertz_load.toml --out kontakt-sweep\n  \
+      kontakt fmu examples/bearing_32008x.toml -o bearing.fmu\n\n\
       Case files: docs/case-schema.md. Exit status: 0 success, 1 computation failed (e.g. not\n\
       converged, an unwritable file), 2 bad input.\n\
       Conventions: radii convex > 0, concave < 0, `inf` for flat; stresses tension positive."
@@ -118,6 +119,10 @@ pub enum Command {
     /// per case, resumable chunk files, combined into results.parquet or results.csv
     /// (schema: docs/sweep.md).
     Sweep(SweepArgs),
+    /// Package the element of a case as an FMU (FMI 2.0, model exchange and co-simulation):
+    /// a bearing case (method = "bearing") gives the bearing element, an element case
+    /// (method = "element") the contact element (docs/fmi.md).
+    Fmu(FmuArgs),
 }
 
 #[derive(Debug, Args)]
@@ -262,8 +267,10 @@ pub struct ValidateArgs {
     #[arg(long)]
     pub json: bool,
     /// Instead of the rib-contact study: the measured friction torque of whole bearings
-    /// (validation/measured/) beside the SKF (2004) model at the same conditions, as a
-    /// table, bearing_torque.csv, bearing_report.md and plots (torque in N·mm).
+    /// (validation/measured/) beside the SKF (2004) model at the same conditions and, where
+    /// the internal geometry is known, the contact-based model with its breakdown (cone, cup,
+    /// rib, drag) and a rib sensitivity study, as a table, CSVs, bearing_report.md and plots
+    /// (torque in N·mm).
     #[arg(long, conflicts_with = "cells")]
     pub bearing: bool,
 }
@@ -461,4 +468,18 @@ pub struct SweepArgs {
     /// Print a JSON summary instead of the text one (no progress bar).
     #[arg(long)]
     pub json: bool,
+}
+
+#[derive(Debug, Args)]
+pub struct FmuArgs {
+    /// The case: a bearing case (method = "bearing") or an element case (method = "element").
+    pub case: PathBuf,
+    /// The FMU file to write.
+    #[arg(short = 'o', long, value_name = "FILE")]
+    pub out: PathBuf,
+    /// The FMU's binary, the shared library of crates/kontakt-fmi (libkontakt_fmi.so on
+    /// Linux). Default: $KONTAKT_FMI_LIBRARY, else the one next to this executable (in
+    /// its folder or its deps/ folder, as `cargo build` and `cargo test` leave it).
+    #[arg(long, value_name = "FILE")]
+    pub library: Option<PathBuf>,
 }

@@ -69,6 +69,20 @@ fn with_load(text: String) -> String {
     }
 }
 
+/// The bearing of a case given as `kontakt.Bearing` takes it, planned; `class` names the
+/// caller in the error for a case of another method.
+pub(crate) fn plan(case: &Bound<'_, PyAny>, class: &str) -> PyResult<BearingModel> {
+    let case = parse(case)?;
+    let Case::Bearing(case) = case else {
+        return Err(invalid(
+            "case.method",
+            format!("\"{}\"", case.method()),
+            &format!("\"bearing\": {class} takes a bearing case (kontakt.run takes the others)"),
+        ));
+    };
+    BearingModel::new(&case).map_err(to_py)
+}
+
 /// A whole rolling bearing, planned once from a bearing case (`method = "bearing"`,
 /// docs/case-schema.md): `case` is a dict with the keys of a case file, TOML text or a
 /// path to a `.toml` file, as `kontakt.run` takes it; its `[load]` table is optional and
@@ -83,17 +97,7 @@ pub struct Bearing {
 impl Bearing {
     #[new]
     fn new(case: &Bound<'_, PyAny>) -> PyResult<Self> {
-        let case = parse(case)?;
-        let Case::Bearing(case) = case else {
-            return Err(invalid(
-                "case.method",
-                format!("\"{}\"", case.method()),
-                "\"bearing\": kontakt.Bearing takes a bearing case (kontakt.run takes the others)",
-            ));
-        };
-        BearingModel::new(&case)
-            .map(|inner| Bearing { inner })
-            .map_err(to_py)
+        plan(case, "kontakt.Bearing").map(|inner| Bearing { inner })
     }
 
     /// The bearing type of the case: "cylindrical", "tapered", "thrust",

@@ -7,7 +7,8 @@
 //! `kontakt_case` (`Case::run`, the one dispatch the CLI uses), so `to_dict()` gives the
 //! CLI's JSON keys and values.
 //! A whole bearing (`Bearing`) is the case layer's `BearingModel`: planned from a bearing
-//! case, solved for many loads.
+//! case, solved for many loads; `BearingElement` is the case layer's `BearingElement`, the
+//! bearing as one force element of a multi-body code.
 //!
 //! Units are the library's: mm, N, MPa, mm/s, rad/s, radians (case dicts and files keep
 //! their degrees). Errors: `kontakt.InputError(ValueError)` with `field`, `value` and
@@ -20,6 +21,7 @@
 
 mod args;
 mod bearing;
+mod bearing_element;
 mod case;
 mod element;
 mod errors;
@@ -55,6 +57,8 @@ fn _kontakt(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<element::ElementResult>()?;
     m.add_class::<bearing::Bearing>()?;
     m.add_class::<bearing::BearingResult>()?;
+    m.add_class::<bearing_element::BearingElement>()?;
+    m.add_class::<bearing_element::BearingElementResult>()?;
     m.add_class::<sweep::Sweep>()?;
     Ok(())
 }

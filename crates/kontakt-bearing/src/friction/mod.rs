@@ -49,6 +49,7 @@
 
 pub mod aihara;
 pub mod ball;
+pub mod crb_rib;
 pub mod raceway;
 pub mod schaeffler;
 pub mod skf2004;

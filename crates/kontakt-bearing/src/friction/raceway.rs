@@ -25,11 +25,12 @@
 //! validity: `docs/raceway-losses.md`.
 
 use kontakt::error::positive_as as positive;
-use kontakt::friction::{CellLaw, FilmState, FrictionLaw};
+use kontakt::friction::{CellLaw, FilmState, FluidShear, FrictionLaw, LoadSharing};
 use kontakt::lubrication::{
-    LineFilm, LineFilmContact, LineFilmFormula, LineFilmWarnings, RollingResistanceModel,
-    biboulet_houpert_starvation, film_starvation_factor, line_film_thickness, rolling_resistance,
-    thermal_loading, zhu_cheng_thermal_factor,
+    LineFilm, LineFilmContact, LineFilmFormula, LineFilmPowers, LineFilmRegime, LineFilmWarnings,
+    RollingResistanceModel, biboulet_houpert_starvation, film_starvation_factor, line_film_regime,
+    line_film_thickness, line_film_with, rolling_resistance, thermal_loading,
+    zhu_cheng_thermal_factor,
 };
 use kontakt::{Error, Result};
 
@@ -133,6 +134,18 @@ impl SliceLosses {
     }
 }
 
+/// The speed-independent part of one loaded slice's losses ([`RacewayLosses::plan_slice`]):
+/// what a speed sweep over one load distribution computes once per slice. `Copy`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SlicePlan {
+    load_per_length: f64,
+    radius: f64,
+    reduced_modulus: f64,
+    regime: LineFilmRegime,
+    powers: LineFilmPowers,
+    barus: Option<[f64; TRACTION_POINTS / 2]>,
+}
+
 /// The raceway-loss model: the checked lubrication data and the quadrature rule, made once;
 /// [`RacewayLosses::slice`] then allocates nothing.
 #[derive(Debug, Clone, PartialEq)]
@@ -184,6 +197,12 @@ impl RacewayLosses {
             let c = (half_pi * x).cos();
             *slot = (c, w * half_pi * c);
         }
+        // The rule is symmetric: θ and −θ share cos θ and the weight. The computed nodes
+        // already agree bit for bit (checked in the tests); the mirror makes it certain, so
+        // that `traction_per_length` may evaluate the kernel once per pair.
+        for i in TRACTION_POINTS / 2..TRACTION_POINTS {
+            rule[i] = rule[TRACTION_POINTS - 1 - i];
+        }
         Ok(RacewayLosses { lubrication, rule })
     }
 
@@ -196,6 +215,10 @@ impl RacewayLosses {
     /// `half_width` b \[mm\] and peak pressure `max_pressure` p_h \[MPa\] sliding at
     /// `sliding_speed` v_s \[mm/s\] under the cell law `law` (a [`FrictionLaw`] with its film):
     /// −v_s b ∫ k(p_h cos θ, |v_s|) cos θ dθ over [−π/2, π/2]. No checks, no allocation.
+    ///
+    /// The kernel (an `exp` of the Barus viscosity and one of the limiting shear per node)
+    /// is evaluated once per symmetric pair of nodes, 16 times instead of 32; the terms are
+    /// summed over all 32 nodes in their order, so the sum is the plain rule's bit for bit.
     pub fn traction_per_length(
         &self,
         law: &CellLaw,
@@ -203,12 +226,34 @@ impl RacewayLosses {
         max_pressure: f64,
         sliding_speed: f64,
     ) -> f64 {
+        self.traction(law, half_width, max_pressure, sliding_speed, None)
+    }
+
+    /// [`RacewayLosses::traction_per_length`], with the Barus factors exp(α p_h cos θ) of
+    /// the first half of the nodes given (a [`SlicePlan`]'s) or computed.
+    fn traction(
+        &self,
+        law: &CellLaw,
+        half_width: f64,
+        max_pressure: f64,
+        sliding_speed: f64,
+        barus: Option<&[f64; TRACTION_POINTS / 2]>,
+    ) -> f64 {
         let speed = sliding_speed.abs();
-        let sum: f64 = self
-            .rule
-            .iter()
-            .map(|&(c, wc)| wc * law.drag(max_pressure * c, speed))
-            .sum();
+        let mut half = [0.0; TRACTION_POINTS / 2];
+        match barus {
+            None => {
+                for (t, &(c, wc)) in half.iter_mut().zip(&self.rule) {
+                    *t = wc * law.drag(max_pressure * c, speed);
+                }
+            }
+            Some(barus) => {
+                for ((t, &(c, wc)), &e) in half.iter_mut().zip(&self.rule).zip(barus) {
+                    *t = wc * law.drag_with_barus(max_pressure * c, speed, e);
+                }
+            }
+        }
+        let sum: f64 = half.iter().chain(half.iter().rev()).sum();
         -sliding_speed * half_width * sum
     }
 
@@ -221,23 +266,8 @@ impl RacewayLosses {
     /// Zhu-Cheng factor leaves its fit.
     pub fn slice(&self, slice: &RacewaySlice) -> Result<SliceLosses> {
         let l = &self.lubrication;
-        positive("width", slice.width, "a finite slice width > 0 mm")?;
-        if !(slice.sliding_speed.is_finite()) {
-            return Err(Error::invalid(
-                "sliding_speed",
-                slice.sliding_speed,
-                "a finite sliding speed in mm/s",
-            ));
-        }
-        let w = slice.load_per_length;
-        if !(w.is_finite() && w >= 0.0) {
-            return Err(Error::invalid(
-                "load_per_length",
-                w,
-                "a finite load per unit length >= 0 N/mm",
-            ));
-        }
-        if w == 0.0 {
+        check_slice(slice)?;
+        if slice.load_per_length == 0.0 {
             return Ok(SliceLosses {
                 film: None,
                 thermal_factor: 1.0,
@@ -253,18 +283,80 @@ impl RacewayLosses {
                 warnings: SliceWarnings::default(),
             });
         }
-        let contact = LineFilmContact {
-            radius: slice.radius,
-            entrainment_speed: slice.entrainment_speed,
-            load_per_length: w,
-            reduced_modulus: slice.reduced_modulus,
-        };
         let film = line_film_thickness(
-            &contact,
+            &contact(slice),
             l.viscosity,
             l.alpha,
             LineFilmFormula::DowsonHigginson,
         )?;
+        self.losses(slice, film, None)
+    }
+
+    /// The speed-independent part of the losses of `slice` (its load, radius and modulus;
+    /// its speeds only need to be valid): the line film's groups G and W, the Hertz
+    /// semi-width and peak pressure, the powers of G and W in the film formula, and the
+    /// Barus factors of the traction nodes when the law has a fluid part. `None` for an
+    /// unloaded slice. [`RacewayLosses::slice_planned`] then gives the losses of the same
+    /// slice at any speeds with 4 `powf`, 2 `sqrt` and 16 `exp` fewer, bit for bit those of
+    /// [`RacewayLosses::slice`]. No allocation.
+    ///
+    /// # Errors
+    /// Those of [`RacewayLosses::slice`] at the slice's speeds.
+    pub fn plan_slice(&self, slice: &RacewaySlice) -> Result<Option<SlicePlan>> {
+        let l = &self.lubrication;
+        check_slice(slice)?;
+        if slice.load_per_length == 0.0 {
+            return Ok(None);
+        }
+        let regime = line_film_regime(&contact(slice), l.viscosity, l.alpha)?;
+        let fluid = !matches!(l.law.fluid, FluidShear::None)
+            && !matches!(l.law.sharing, LoadSharing::Boundary);
+        let barus = fluid.then(|| {
+            let mut e = [0.0; TRACTION_POINTS / 2];
+            for (e, &(c, _)) in e.iter_mut().zip(&self.rule) {
+                *e = (l.alpha * (regime.max_pressure * c)).exp();
+            }
+            e
+        });
+        Ok(Some(SlicePlan {
+            load_per_length: slice.load_per_length,
+            radius: slice.radius,
+            reduced_modulus: slice.reduced_modulus,
+            regime,
+            powers: LineFilmPowers::of(&regime, LineFilmFormula::DowsonHigginson),
+            barus,
+        }))
+    }
+
+    /// The losses of `slice` from the speed-independent part `plan`
+    /// ([`RacewayLosses::plan_slice`] of a slice with the same load per length, radius and
+    /// modulus; any other slice is computed by [`RacewayLosses::slice`]): bit for bit
+    /// [`RacewayLosses::slice`].
+    ///
+    /// # Errors
+    /// As [`RacewayLosses::slice`].
+    pub fn slice_planned(&self, slice: &RacewaySlice, plan: &SlicePlan) -> Result<SliceLosses> {
+        let same = slice.load_per_length.to_bits() == plan.load_per_length.to_bits()
+            && slice.radius.to_bits() == plan.radius.to_bits()
+            && slice.reduced_modulus.to_bits() == plan.reduced_modulus.to_bits();
+        if !same {
+            return self.slice(slice);
+        }
+        check_slice(slice)?;
+        let c = contact(slice);
+        let regime = plan.regime.at_speed(&c, self.lubrication.viscosity)?;
+        let film = line_film_with(&c, &regime, &plan.powers)?;
+        self.losses(slice, film, plan.barus.as_ref())
+    }
+
+    /// The losses of the loaded, checked `slice` with its isothermal film `film`.
+    fn losses(
+        &self,
+        slice: &RacewaySlice,
+        film: LineFilm,
+        barus: Option<&[f64; TRACTION_POINTS / 2]>,
+    ) -> Result<SliceLosses> {
+        let l = &self.lubrication;
         let u = slice.entrainment_speed;
         let thermal_factor = match l.viscosity_slope {
             Some(slope) if u > 0.0 => {
@@ -299,11 +391,12 @@ impl RacewayLosses {
 
         let state = FilmState::new(central_film, lambda, l.viscosity, l.alpha)?;
         let cell = l.law.with_film(&state)?;
-        let per_length = self.traction_per_length(
+        let per_length = self.traction(
             &cell,
             film.regime.half_width,
             film.regime.max_pressure,
             slice.sliding_speed,
+            barus,
         );
         let sliding_force = per_length * slice.width;
         // N · mm/s = 1e-3 W.
@@ -336,10 +429,41 @@ impl RacewayLosses {
     }
 }
 
+/// The film contact of `slice`.
+fn contact(slice: &RacewaySlice) -> LineFilmContact {
+    LineFilmContact {
+        radius: slice.radius,
+        entrainment_speed: slice.entrainment_speed,
+        load_per_length: slice.load_per_length,
+        reduced_modulus: slice.reduced_modulus,
+    }
+}
+
+/// The checks of [`RacewayLosses::slice`] before the film's: `width`, `sliding_speed`,
+/// `load_per_length`.
+fn check_slice(slice: &RacewaySlice) -> Result<()> {
+    positive("width", slice.width, "a finite slice width > 0 mm")?;
+    if !(slice.sliding_speed.is_finite()) {
+        return Err(Error::invalid(
+            "sliding_speed",
+            slice.sliding_speed,
+            "a finite sliding speed in mm/s",
+        ));
+    }
+    let w = slice.load_per_length;
+    if !(w.is_finite() && w >= 0.0) {
+        return Err(Error::invalid(
+            "load_per_length",
+            w,
+            "a finite load per unit length >= 0 N/mm",
+        ));
+    }
+    Ok(())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-    use kontakt::friction::{FluidShear, LoadSharing};
 
     fn lub(law: FrictionLaw) -> RacewayLubrication {
         RacewayLubrication {
@@ -363,6 +487,28 @@ mod tests {
             entrainment_speed: 5_000.0,
             sliding_speed: 50.0,
             reduced_modulus: 115_000.0,
+        }
+    }
+
+    /// Newtonian, Eyring (τ₀ 5 MPa) and limiting-shear (2 MPa + 0.07 p) fluids.
+    fn fluids() -> [FluidShear; 3] {
+        [
+            FluidShear::Newtonian,
+            FluidShear::Eyring { tau0: 5.0 },
+            FluidShear::LimitingShear {
+                tau_l0: 2.0,
+                slope: 0.07,
+            },
+        ]
+    }
+
+    /// μ_b = 0.12 with the sharing exp(−b Λ^c) of `(b, c)`, `fluid`, v_ε `eps`.
+    fn mixed_with(fluid: FluidShear, (b, c): (f64, f64), eps: f64) -> FrictionLaw {
+        FrictionLaw {
+            boundary_coefficient: 0.12,
+            sharing: LoadSharing::Exponential { b, c },
+            fluid,
+            regularisation_speed: eps,
         }
     }
 
@@ -431,20 +577,8 @@ mod tests {
     fn piezoviscous_traction_matches_an_independent_integral() {
         let (b, ph, v) = (0.1, 800.0, 30.0);
         let w = std::f64::consts::PI / 2.0 * ph * b;
-        for fluid in [
-            FluidShear::Newtonian,
-            FluidShear::Eyring { tau0: 5.0 },
-            FluidShear::LimitingShear {
-                tau_l0: 2.0,
-                slope: 0.07,
-            },
-        ] {
-            let law = FrictionLaw {
-                boundary_coefficient: 0.12,
-                sharing: LoadSharing::Exponential { b: 2.32, c: 0.97 },
-                fluid,
-                regularisation_speed: 0.0,
-            };
+        for fluid in fluids() {
+            let law = mixed_with(fluid, (2.32, 0.97), 0.0);
             let m = RacewayLosses::new(lub(law)).unwrap();
             let film = FilmState::new(0.5e-3, 1.2, 0.03e-6, 0.015).unwrap();
             let cell = law.with_film(&film).unwrap();
@@ -532,6 +666,128 @@ mod tests {
             })
             .unwrap();
         assert_eq!(e.power(), 0.0);
+    }
+
+    /// The computed Gauss-Legendre rule is symmetric bit for bit (what the mirror in
+    /// `RacewayLosses::new` relies on to keep the traction sum unchanged), and the folded
+    /// traction equals the plain 32-node sum bit for bit at Newtonian, limiting-shear and
+    /// Eyring kernels, sliding and rolling.
+    #[test]
+    fn folded_traction_is_the_plain_rule_bit_for_bit() {
+        let half_pi = std::f64::consts::FRAC_PI_2;
+        let rule = kontakt::quadrature::gauss_legendre(TRACTION_POINTS);
+        for i in 0..TRACTION_POINTS {
+            let (a, b) = (rule[i], rule[TRACTION_POINTS - 1 - i]);
+            assert_eq!(a.0.to_bits(), (-b.0).to_bits(), "node {i}");
+            assert_eq!(a.1.to_bits(), b.1.to_bits(), "weight {i}");
+            assert_eq!(
+                (half_pi * a.0).cos().to_bits(),
+                (half_pi * b.0).cos().to_bits()
+            );
+        }
+        for fluid in fluids() {
+            let law = mixed_with(fluid, (1.9, 0.99), 1.0);
+            let m = RacewayLosses::new(lub(law)).unwrap();
+            let film = FilmState::new(0.3e-3, 1.5, 0.03e-6, 0.02).unwrap();
+            let cell = law.with_film(&film).unwrap();
+            for v in [-300.0_f64, -1e-10, 0.0, 2e-13, 0.7, 50.0] {
+                let (b, ph) = (0.12, 900.0);
+                let plain: f64 = rule
+                    .iter()
+                    .map(|&(x, w)| {
+                        let c = (half_pi * x).cos();
+                        w * half_pi * c * cell.drag(ph * c, v.abs())
+                    })
+                    .sum();
+                let got = m.traction_per_length(&cell, b, ph, v);
+                assert_eq!(got.to_bits(), (-v * b * plain).to_bits(), "{fluid:?} v {v}");
+            }
+        }
+    }
+
+    /// A planned slice's losses at other speeds are those of the plain computation bit for
+    /// bit: every law (boundary, Newtonian, Eyring, limiting shear), thermal factor and
+    /// starvation on and off, zero and large entrainment, sliding both ways; a plan of
+    /// another slice (other load) falls back to the plain computation; an unloaded slice
+    /// has no plan. Also the film's own parts: `LineFilmRegime::at_speed` and
+    /// `line_film_with` against `line_film_regime` and `line_film_thickness`.
+    #[test]
+    fn planned_slices_are_the_plain_slices_bit_for_bit() {
+        let laws = [
+            boundary(0.1, 1.0),
+            FrictionLaw::mixed(0.12).unwrap(),
+            FrictionLaw {
+                fluid: FluidShear::Newtonian,
+                ..FrictionLaw::mixed(0.12).unwrap()
+            },
+            FrictionLaw {
+                fluid: FluidShear::Eyring { tau0: 5.0 },
+                ..FrictionLaw::mixed(0.12).unwrap()
+            },
+        ];
+        let mut checked = 0;
+        for law in laws {
+            for thermal in [false, true] {
+                let mut l = lub(law);
+                if thermal {
+                    l.viscosity_slope = Some(-1.7e-9);
+                    l.film_starvation = 0.8;
+                    l.starvation_degree = Some(20.0);
+                }
+                let m = RacewayLosses::new(l).unwrap();
+                let plan = m.plan_slice(&slice()).unwrap().unwrap();
+                assert_eq!(plan.barus.is_some(), law.fluid != FluidShear::None);
+                for (u, v) in [
+                    (5_000.0, 50.0),
+                    (0.0, 3.0),
+                    (1.0, -0.2),
+                    (20_000.0, 1e-11),
+                    (700.0, -400.0),
+                ] {
+                    let s = RacewaySlice {
+                        entrainment_speed: u,
+                        sliding_speed: v,
+                        ..slice()
+                    };
+                    let (Ok(want), Ok(got)) = (m.slice(&s), m.slice_planned(&s, &plan)) else {
+                        panic!("{law:?} u {u} v {v}");
+                    };
+                    assert_eq!(got, want, "{law:?} thermal {thermal} u {u} v {v}");
+                    assert_eq!(got.sliding_power.to_bits(), want.sliding_power.to_bits());
+                    assert_eq!(got.rolling_power.to_bits(), want.rolling_power.to_bits());
+                    let c = contact(&s);
+                    let r = line_film_regime(&c, l.viscosity, l.alpha).unwrap();
+                    assert_eq!(plan.regime.at_speed(&c, l.viscosity).unwrap(), r);
+                    let powers = LineFilmPowers::of(&plan.regime, LineFilmFormula::DowsonHigginson);
+                    assert_eq!(
+                        line_film_with(&c, &r, &powers).unwrap(),
+                        line_film_thickness(
+                            &c,
+                            l.viscosity,
+                            l.alpha,
+                            LineFilmFormula::DowsonHigginson
+                        )
+                        .unwrap()
+                    );
+                    checked += 1;
+                }
+                // another slice's plan: the plain computation
+                let other = RacewaySlice {
+                    load_per_length: 300.0,
+                    ..slice()
+                };
+                assert_eq!(
+                    m.slice_planned(&other, &plan).unwrap(),
+                    m.slice(&other).unwrap()
+                );
+                let empty = RacewaySlice {
+                    load_per_length: 0.0,
+                    ..slice()
+                };
+                assert!(m.plan_slice(&empty).unwrap().is_none());
+            }
+        }
+        assert_eq!(checked, 40);
     }
 
     #[test]

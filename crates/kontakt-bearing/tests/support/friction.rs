@@ -61,9 +61,18 @@ pub fn rib_study(count: usize) -> (RibFrictionModel, RollerBearing) {
 /// The cup and cone slice loads of `bearing` under the axial force `axial` \[N\] (tilts
 /// held), and the solver.
 pub fn solved(bearing: &RollerBearing, axial: f64) -> (Vec<f64>, Vec<f64>, RollerBearingSolver) {
+    solved_combined(bearing, 0.0, axial)
+}
+
+/// [`solved`] under the radial force `radial` (x) \[N\] with the axial force `axial`.
+pub fn solved_combined(
+    bearing: &RollerBearing,
+    radial: f64,
+    axial: f64,
+) -> (Vec<f64>, Vec<f64>, RollerBearingSolver) {
     let mut solver = RollerBearingSolver::new(bearing.clone()).expect("solver");
     let s = solver
-        .solve(&RingLoad::forces([0.0, 0.0, axial, 0.0, 0.0]).with_tilts_held())
+        .solve(&RingLoad::forces([radial, 0.0, axial, 0.0, 0.0]).with_tilts_held())
         .expect("solve");
     assert!(s.status.converged());
     let n = bearing.rollers * bearing.slices;

@@ -6,12 +6,16 @@
  * is estimated by central differences of the force, the damping is switched on and the
  * element evaluated with a velocity, the ring is pulled out of every contact (status
  * lifted off), and the error paths are tried (NaN, a displacement beyond validity, null
- * pointers). Then a bad case text and a missing file.
+ * pointers). Then a bad case text and a missing file. With a third case file that has a
+ * [lubricant] (e.g. examples/bearing_32008x_friction.toml): the friction torque, power and
+ * breakdown at the case's speed, at rest (starting torque), with both rings turning, and a
+ * speed that is not finite.
  *
  * Build (from the repository root, after `cargo build -p kontakt-capi`):
  *   cc -std=c99 -Icrates/kontakt-capi/include crates/kontakt-capi/examples/c/bearing.c \
  *      target/debug/libkontakt_capi.a -lpthread -ldl -lm -o bearing
- *   ./bearing examples/bearing_7205.toml examples/bearing_32008x.toml
+ *   ./bearing examples/bearing_7205.toml examples/bearing_32008x.toml \
+ *      examples/bearing_32008x_friction.toml
  *
  * Units: displacement dx, dy, dz [mm], tilts tx, ty [rad]; velocities mm/s, rad/s; force
  * [N], moment [N*mm] of the bearing on the inner ring, in the outer ring's frame (z the
@@ -62,6 +66,12 @@ static int32_t evaluate(KontaktBearingElement *e, const char *label, const doubl
     printf("max_element_load %.17g\n", r->max_element_load);
     printf("iterations %llu\n", (unsigned long long)r->iterations);
     printf("message %s\n", r->message);
+    printf("friction_status %d\n", r->friction_status);
+    print_n("ring_speeds", r->ring_speeds, 2);
+    printf("friction_torque %.17g\n", r->friction_torque);
+    printf("friction_inner_ring %.17g\n", r->friction_inner_ring);
+    printf("friction_power %.17g\n", r->friction_power);
+    print_n("friction_breakdown", r->friction_breakdown, 4);
     return code;
 }
 
@@ -72,10 +82,18 @@ static void expect_error(const char *label, int32_t code) {
     printf("error %s\n", kontakt_last_error_message());
 }
 
-static int run(const char *name, const char *path, const double u[5], const double v[5]) {
+/* The element of a case file, or NULL (the error printed to stderr). */
+static KontaktBearingElement *open_element(const char *path) {
     KontaktBearingElement *e = NULL;
     if (kontakt_bearing_element_from_file(path, &e) != KONTAKT_OK) {
         fprintf(stderr, "%s: %s\n", path, kontakt_last_error_message());
+    }
+    return e;
+}
+
+static int run(const char *name, const char *path, const double u[5], const double v[5]) {
+    KontaktBearingElement *e = open_element(path);
+    if (e == NULL) {
         return 1;
     }
     const double rest[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
@@ -159,9 +177,32 @@ static int run(const char *name, const char *path, const double u[5], const doub
     return 0;
 }
 
+/* The friction torque of a lubricated bearing at u: at the case's [speed], at rest, with
+ * both rings turning (rad/s), and a speed that is not finite (refused, speeds kept). */
+static int friction(const char *path, const double u[5]) {
+    KontaktBearingElement *e = open_element(path);
+    if (e == NULL) {
+        return 1;
+    }
+    const double rest[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
+    KontaktBearingResult r;
+    evaluate(e, "friction case speed", u, rest, &r);
+    expect_error("friction set rest", kontakt_bearing_element_set_speeds(e, 0.0, 0.0));
+    evaluate(e, "friction at rest", u, rest, &r);
+    expect_error("friction set turning", kontakt_bearing_element_set_speeds(e, -50.0, 20.0));
+    evaluate(e, "friction turning", u, rest, &r);
+    expect_error("friction nan speed", kontakt_bearing_element_set_speeds(e, 10.0, NAN));
+    evaluate(e, "friction after nan", u, rest, &r);
+    expect_error("friction null element", kontakt_bearing_element_set_speeds(NULL, 1.0, 0.0));
+    kontakt_bearing_element_free(e);
+    return 0;
+}
+
 int main(int argc, char **argv) {
-    if (argc != 3) {
-        fprintf(stderr, "usage: %s BALL_BEARING.toml TAPERED_ROLLER_BEARING.toml\n", argv[0]);
+    if (argc != 3 && argc != 4) {
+        fprintf(stderr,
+                "usage: %s BALL_BEARING.toml TAPERED_ROLLER_BEARING.toml [LUBRICATED.toml]\n",
+                argv[0]);
         return 2;
     }
     printf("kontakt %s\n", kontakt_version());
@@ -170,6 +211,9 @@ int main(int argc, char **argv) {
     const double u_trb[5] = {0.01, -0.002, 0.015, 1e-4, 5e-5};
     const double v[5] = {3.0, -1.0, 2.0, 0.05, -0.02};
     if (run("ball", argv[1], u_ball, v) != 0 || run("tapered", argv[2], u_trb, v) != 0) {
+        return 1;
+    }
+    if (argc == 4 && friction(argv[3], u_trb) != 0) {
         return 1;
     }
 

@@ -9,9 +9,10 @@
 //! Units: r/min in the case (rad/s in the library), mm, N, N·mm, W, °C.
 
 use super::{
-    CatalogueSpec, CatalogueTorques, FrictionReport, OperatingSpec, Tables, check_rpm, drag_model,
-    envelope, key, oil, supply, with_sweep,
+    CatalogueSpec, CatalogueTorques, FrictionReport, OperatingSpec, RacewayOil, Tables, check_rpm,
+    drag_model, envelope, key, lubricant_of, oil_level_below, oil_supply, raceway_oil, with_sweeps,
 };
+use crate::friction_case::LubricantSpec;
 use kontakt::{Error, Result};
 use kontakt_bearing::friction::ball::{
     BallAttitude, BallContacts, BallFrictionModel, BallFrictionOperating,
@@ -19,7 +20,7 @@ use kontakt_bearing::friction::ball::{
 use kontakt_bearing::friction::skf2004::{
     AngularContactSeries, DeepGrooveSeries, SkfBearing, SkfOptions, skf2004,
 };
-use kontakt_bearing::friction::{Envelope, OperatingPoint, RPM_PER_RAD_S};
+use kontakt_bearing::friction::{Envelope, Lubrication, OperatingPoint, RPM_PER_RAD_S};
 use kontakt_bearing::geometry::{BallBearing, BallBearingKind};
 use serde::Serialize;
 
@@ -53,8 +54,9 @@ pub struct FrictionBallRow {
 }
 
 /// The friction section of the ball bearing `bearing` with the solved `balls` under the
-/// force `force` \[N\] at the case's tables `case` (its `[speed]` in r/min), with the speed
-/// sweep of `operating.sweep_inner_rpm` (on the same load distribution).
+/// force `force` \[N\] at the case's tables `case` (its `[speed]` in r/min), with the
+/// sweeps of `operating.sweep_inner_rpm` and `sweep_temperature_c` on the same load
+/// distribution (the load sweeps re-solve the case and come here per point).
 ///
 /// # Errors
 /// [`Error::InvalidInput`] naming the case key (`speed.inner_rpm`, `lubricant.*`,
@@ -66,111 +68,142 @@ pub(crate) fn friction_report(
     balls: &[BallContacts],
     force: [f64; 3],
 ) -> Result<FrictionReport> {
-    let (rpm, catalogue) = (case.rpm, case.catalogue);
-    let oil = oil(op, case.lubricant, case.friction)?;
-    let nu = oil.viscosity_mm2_s;
-    let model = BallFrictionModel::new(
-        bearing.clone(),
-        oil.losses.clone(),
-        BallAttitude::OuterRaceControl,
-    )?;
-    let envelope = envelope(catalogue)?;
-    let at = |rpm: [f64; 2]| -> Result<FrictionReport> {
-        check_rpm(rpm)?;
-        let mut warnings = Vec::new();
+    let envelope = envelope(case.catalogue)?;
+    let on = Solved {
+        bearing,
+        balls,
+        force,
+        envelope: envelope.as_ref(),
+    };
+    with_sweeps(op, case.rpm, case.lubricant, force, |rpm, lub| {
+        point(case, op, rpm, lub, &on)
+    })
+}
+
+/// The solved bearing a friction point reads.
+struct Solved<'a> {
+    bearing: &'a BallBearing,
+    balls: &'a [BallContacts],
+    force: [f64; 3],
+    envelope: Option<&'a Envelope>,
+}
+
+/// [`friction_report`] at the ring speeds `rpm` (r/min) with the lubricant `lubricant`.
+fn point(
+    case: &Tables<'_>,
+    op: &OperatingSpec,
+    rpm: [f64; 2],
+    lubricant: Option<&LubricantSpec>,
+    on: &Solved<'_>,
+) -> Result<FrictionReport> {
+    let Solved {
+        bearing,
+        balls,
+        force,
+        envelope,
+    } = *on;
+    check_rpm(rpm)?;
+    let lub = lubricant_of(lubricant)?;
+    let RacewayOil { losses, nu, .. } = raceway_oil(op, lub, case.friction)?;
+    let mut model =
+        BallFrictionModel::new(bearing.clone(), losses, BallAttitude::OuterRaceControl)?;
+    let mut warnings = Vec::new();
+    let lubrication = oil_supply(op)?;
+    if let Lubrication::OilBath { level_mm } = lubrication {
         // The bearing's centre above the lowest point of the outer raceway.
         let centre = 0.5
             * (bearing.pitch_diameter_mm
                 + bearing.ball_diameter_mm * bearing.free_contact_angle().cos());
-        let lubrication = supply(op, centre, &mut warnings)?;
-        let (wi, wo) = (rpm[0] / RPM_PER_RAD_S, rpm[1] / RPM_PER_RAD_S);
-        let starting = wi == wo;
-        let point = OperatingPoint {
-            speed_rad_s: (wi - wo).abs(),
-            viscosity_mm2_s: nu,
-            radial_load_n: force[0].hypot(force[1]),
-            axial_load_n: force[2].abs(),
-            lubrication,
-        };
-        let cat = catalogue_torques(catalogue, envelope.as_ref(), bearing, &point, &mut warnings)?;
-        let drag = drag_model(op, &cat, nu * point.speed_rpm(), &mut warnings)?;
-        let p = force.iter().map(|f| f * f).sum::<f64>().sqrt();
-        let d = envelope.map_or(bearing.pitch_diameter_mm, |e| e.bore_mm);
-        // A clone per speed: the closure is `Fn`; the library model allocates nothing.
-        let mut model = model.clone();
-        let f = model.evaluate(&BallFrictionOperating {
-            inner_speed: wi,
-            outer_speed: wo,
-            balls,
-            drag,
-            coefficient_basis: Some((p, d)),
-        })?;
-        warnings.extend(f.warnings.lines());
-        let finite = |v: f64| v.is_finite().then_some(v);
-        let rows: Vec<FrictionBallRow> = model
+        oil_level_below(level_mm, centre)?;
+    }
+    warnings.extend(super::checks::temperature_warning(lub));
+    let (wi, wo) = (rpm[0] / RPM_PER_RAD_S, rpm[1] / RPM_PER_RAD_S);
+    let starting = wi == wo;
+    let point = OperatingPoint {
+        speed_rad_s: (wi - wo).abs(),
+        viscosity_mm2_s: nu,
+        radial_load_n: force[0].hypot(force[1]),
+        axial_load_n: force[2].abs(),
+        lubrication,
+    };
+    let cat = catalogue_torques(case.catalogue, envelope, bearing, &point, &mut warnings)?;
+    let drag = drag_model(op, &cat, nu * point.speed_rpm(), &mut warnings)?;
+    let p = force.iter().map(|f| f * f).sum::<f64>().sqrt();
+    let d = envelope.map_or(bearing.pitch_diameter_mm, |e| e.bore_mm);
+    let f = model.evaluate(&BallFrictionOperating {
+        inner_speed: wi,
+        outer_speed: wo,
+        balls,
+        drag,
+        coefficient_basis: Some((p, d)),
+    })?;
+    warnings.extend(f.warnings.lines());
+    let finite = |v: f64| v.is_finite().then_some(v);
+    let rows: Vec<FrictionBallRow> = model
+        .balls()
+        .iter()
+        .map(|b| FrictionBallRow {
+            ball: b.ball,
+            azimuth_deg: b.azimuth_rad.to_degrees(),
+            inner_load_n: b.inner.load_n,
+            outer_load_n: b.outer.load_n,
+            inner_spin_rad_s: b.inner.spin_rad_s,
+            outer_spin_rad_s: b.outer.spin_rad_s,
+            inner_rolling_w: b.inner.rolling_w,
+            inner_sliding_w: b.inner.sliding_w,
+            outer_rolling_w: b.outer.rolling_w,
+            outer_sliding_w: b.outer.sliding_w,
+            torque_nmm: b.torque_nmm,
+            min_lambda: [&b.inner, &b.outer]
+                .iter()
+                .filter(|c| c.load_n > 0.0 && !starting)
+                .map(|c| c.lambda)
+                .reduce(f64::min),
+        })
+        .collect();
+    let cage = if starting {
+        0.0
+    } else {
+        model
             .balls()
             .iter()
-            .map(|b| FrictionBallRow {
-                ball: b.ball,
-                azimuth_deg: b.azimuth_rad.to_degrees(),
-                inner_load_n: b.inner.load_n,
-                outer_load_n: b.outer.load_n,
-                inner_spin_rad_s: b.inner.spin_rad_s,
-                outer_spin_rad_s: b.outer.spin_rad_s,
-                inner_rolling_w: b.inner.rolling_w,
-                inner_sliding_w: b.inner.sliding_w,
-                outer_rolling_w: b.outer.rolling_w,
-                outer_sliding_w: b.outer.sliding_w,
-                torque_nmm: b.torque_nmm,
-                min_lambda: [&b.inner, &b.outer]
-                    .iter()
-                    .filter(|c| c.load_n > 0.0 && !starting)
-                    .map(|c| c.lambda)
-                    .reduce(f64::min),
-            })
-            .collect();
-        let cage = if starting {
-            0.0
-        } else {
-            model
-                .balls()
-                .iter()
-                .map(|b| b.cage_speed_rad_s)
-                .sum::<f64>()
-                / model.balls().len().max(1) as f64
-        };
-        Ok(FrictionReport {
-            inner_rpm: rpm[0],
-            outer_rpm: rpm[1],
-            cage_rpm: cage * RPM_PER_RAD_S,
-            temperature_c: oil.temperature_c,
-            viscosity_mm2_s: nu,
-            starting,
-            total_nmm: f.total_nmm,
-            inner_ring_nmm: f.inner_ring_nmm,
-            outer_ring_nmm: f.outer_ring_nmm,
-            cone_rolling_nmm: f.inner_race.rolling_nmm,
-            cone_sliding_nmm: f.inner_race.sliding_nmm,
-            cup_rolling_nmm: f.outer_race.rolling_nmm,
-            cup_sliding_nmm: f.outer_race.sliding_nmm,
-            rib_nmm: 0.0,
-            drag_nmm: f.drag_nmm,
-            rolling_power_w: f.power.rolling_w,
-            sliding_power_w: f.power.sliding_w,
-            rib_power_w: 0.0,
-            drag_power_w: f.power.drag_w,
-            power_w: f.power.total_w,
-            coefficient: f.coefficient,
-            coefficient_diameter_mm: d,
-            min_lambda: finite(f.min_lambda),
-            catalogue: cat,
-            rollers: Vec::new(),
-            warnings,
-            speed_sweep: Vec::new(),
-            balls: rows,
-        })
+            .map(|b| b.cage_speed_rad_s)
+            .sum::<f64>()
+            / model.balls().len().max(1) as f64
     };
-    with_sweep(op, rpm, at)
+    Ok(FrictionReport {
+        inner_rpm: rpm[0],
+        outer_rpm: rpm[1],
+        cage_rpm: cage * RPM_PER_RAD_S,
+        temperature_c: lub.temperature_c,
+        viscosity_mm2_s: nu,
+        starting,
+        total_nmm: f.total_nmm,
+        inner_ring_nmm: f.inner_ring_nmm,
+        outer_ring_nmm: f.outer_ring_nmm,
+        cone_rolling_nmm: f.inner_race.rolling_nmm,
+        cone_sliding_nmm: f.inner_race.sliding_nmm,
+        cup_rolling_nmm: f.outer_race.rolling_nmm,
+        cup_sliding_nmm: f.outer_race.sliding_nmm,
+        rib_nmm: 0.0,
+        drag_nmm: f.drag_nmm,
+        rolling_power_w: f.power.rolling_w,
+        sliding_power_w: f.power.sliding_w,
+        rib_power_w: 0.0,
+        drag_power_w: f.power.drag_w,
+        power_w: f.power.total_w,
+        coefficient: f.coefficient,
+        coefficient_diameter_mm: d,
+        min_lambda: finite(f.min_lambda),
+        catalogue: cat,
+        rollers: Vec::new(),
+        warnings,
+        speed_sweep: Vec::new(),
+        axial_load_sweep: Vec::new(),
+        radial_load_sweep: Vec::new(),
+        temperature_sweep: Vec::new(),
+        balls: rows,
+    })
 }
 
 /// The SKF 2004 ball bearing torque and the Schaeffler M0 of `catalogue`.

@@ -20,8 +20,15 @@
 //! finiteness and has no effect). Like any stiffness-proportional (Rayleigh) damping it
 //! vanishes with the contact (every element lifted off: `K = 0`) and, since it is added
 //! as is, a fast separation can make the total reaction pull the rings together while
-//! the elements still touch. The bearing's friction torque about z is not modelled here:
-//! `moment_nmm[2]` is 0.
+//! the elements still touch.
+//!
+//! **Friction.** With a `[lubricant]` in its case the element also returns the bearing's
+//! friction torque about z and its power ([`BearingElementOutput::friction`], module
+//! [`super::friction`]: the contact-based torque of docs/bearing-friction.md from the
+//! loads this call solved, at the ring speeds of [`BearingElement::set_speeds`], rad/s,
+//! initially the case's `[speed]`): while the rings turn relative to each other,
+//! `moment_nmm[2] = −M sign(ω_i − ω_o)` on the inner ring; at Δω = 0 and without a
+//! lubricant `moment_nmm[2]` is 0.
 //!
 //! **Validity.** The model assumes small displacements against the element diameter:
 //! a translation above the roller (ball) diameter, or a tilt that moves the ring by more
@@ -30,16 +37,22 @@
 //! error: [`BearingElementStatus::LiftedOff`], zero force and stiffness.
 //!
 //! **Cost.** Each call is one evaluation of the planned solver (all five degrees of freedom
-//! prescribed, warm-started from the previous call like every [`BearingModel`] solve) and
-//! allocates nothing.
+//! prescribed, warm-started from the previous call like every [`BearingModel`] solve),
+//! plus the friction torque when on, and allocates nothing (but the rib contact fields of
+//! a lubricated `roller_model = "rib_contact"` bearing's rib friction).
 
 use super::BearingModel;
+use super::friction::{ElementFriction, FrictionPlan};
 use crate::bearing_case::{BearingCase, BearingLoadSpec, Planned, PrescribedSpec};
 use crate::bearing_slices::SliceSolver;
 use kontakt::solve::{SolveStatus, Termination};
 use kontakt::{Error, Result};
 use kontakt_bearing::equilibrium::RingLoad;
+use kontakt_bearing::friction::RPM_PER_RAD_S;
 use kontakt_bearing::geometry::RollerBearing;
+
+/// The largest ring speed, r/min (`[speed]`'s).
+const MAX_RING_RPM: f64 = 100_000.0;
 
 /// What the rolling elements of an evaluated bearing do.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -59,8 +72,9 @@ pub struct BearingElementOutput {
     /// Force on the inner ring `(Fx, Fy, Fz)`, N: elastic and damping parts; the outer ring
     /// gets minus this.
     pub force_n: [f64; 3],
-    /// Moment on the inner ring about the bearing centre `(Mx, My, Mz)`, N·mm; `Mz = 0`
-    /// (no friction torque in this model).
+    /// Moment on the inner ring about the bearing centre `(Mx, My, Mz)`, N·mm; `Mz` is the
+    /// friction moment `friction.inner_ring_nmm` (`−M sign(ω_i − ω_o)`; 0 at Δω = 0 and
+    /// without a lubricant).
     pub moment_nmm: [f64; 3],
     /// The damping part of the reaction, `−β K v`, in the order `(Fx, Fy, Fz, Mx, My)`,
     /// N and N·mm (zero when [`BearingElement::damping_s`] is 0).
@@ -76,6 +90,9 @@ pub struct BearingElementOutput {
     /// Why the status is what it is (`"every roller is lifted off: zero load"`), empty
     /// when loaded.
     pub message: &'static str,
+    /// The bearing's friction torque, power and breakdown at the element's ring speeds
+    /// (status off and zeros without a `[lubricant]`).
+    pub friction: ElementFriction,
 }
 
 /// A bearing of a case as one force element: planned once, evaluated at many
@@ -84,6 +101,9 @@ pub struct BearingElementOutput {
 pub struct BearingElement {
     model: BearingModel,
     damping_s: f64,
+    friction: FrictionPlan,
+    /// Ring speeds `[ω_i, ω_o]`, rad/s.
+    speeds: [f64; 2],
 }
 
 /// The `[load]` that holds all five degrees of freedom of the inner ring at `u`
@@ -120,12 +140,23 @@ const VELOCITY_ARGS: [&str; 5] = [
 ];
 
 impl BearingElement {
-    /// The element of a planned bearing (its case's `[load]` is not used), undamped.
-    pub fn new(model: BearingModel) -> Self {
-        BearingElement {
+    /// The element of a planned bearing (its case's `[load]` is not used), undamped, at
+    /// the ring speeds of the case's `[speed]`, with the friction torque when the case has
+    /// a `[lubricant]`.
+    ///
+    /// # Errors
+    /// Those of the case's friction tables, naming the case key (`lubricant.temperature_c`,
+    /// `operating.drag`, `catalogue.skf_series`).
+    pub fn new(model: BearingModel) -> Result<Self> {
+        let friction = FrictionPlan::new(&model.case, &model.planned)?;
+        let s = &model.case.speed;
+        let speeds = [s.inner_rpm / RPM_PER_RAD_S, s.outer_rpm / RPM_PER_RAD_S];
+        Ok(BearingElement {
             model,
             damping_s: 0.0,
-        }
+            friction,
+            speeds,
+        })
     }
 
     /// Plan the element of a bearing case (`method = "bearing"`, TOML text; the schema's
@@ -136,7 +167,7 @@ impl BearingElement {
     /// [`BearingModel::new`] naming the case key.
     pub fn from_toml(text: &str) -> Result<Self> {
         let case = BearingCase::from_toml_str(text)?;
-        Ok(Self::new(BearingModel::new(&case)?))
+        Self::new(BearingModel::new(&case)?)
     }
 
     /// The planned bearing.
@@ -166,6 +197,37 @@ impl BearingElement {
         Ok(())
     }
 
+    /// The ring speeds `[ω_i, ω_o]` of the friction torque, rad/s.
+    pub fn speeds(&self) -> [f64; 2] {
+        self.speeds
+    }
+
+    /// Set the ring speeds of the friction torque: inner ring `inner_rad_s`, outer ring
+    /// `outer_rad_s`, rad/s about +z (finite, |ω| ≤ 100 000 r/min as `[speed]`). They
+    /// change the friction torque only, not the load distribution (whose centrifugal
+    /// forces, if any, stay those of the case's `[speed]`). Equal speeds give the starting
+    /// torque.
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] naming `inner_rad_s` or `outer_rad_s` (the element keeps its
+    /// speeds).
+    pub fn set_speeds(&mut self, inner_rad_s: f64, outer_rad_s: f64) -> Result<()> {
+        let max = MAX_RING_RPM / RPM_PER_RAD_S;
+        for (name, w) in [("inner_rad_s", inner_rad_s), ("outer_rad_s", outer_rad_s)] {
+            if !(w.is_finite() && w.abs() <= max) {
+                return Err(Error::invalid(
+                    name,
+                    w,
+                    format!(
+                        "a finite ring speed with |speed| <= {max:.1} rad/s ({MAX_RING_RPM} r/min)"
+                    ),
+                ));
+            }
+        }
+        self.speeds = [inner_rad_s, outer_rad_s];
+        Ok(())
+    }
+
     /// Forget the last equilibrium (the next call starts from the closed forms).
     pub fn reset(&mut self) {
         self.model.reset();
@@ -190,7 +252,9 @@ impl BearingElement {
     /// [`Error::InvalidInput`] naming the argument (`displacement[2]`, `velocity[4]`) for a
     /// non-finite value or a displacement beyond the model's validity (above the rolling
     /// element's diameter); [`Error::NotConverged`] if the solver does not converge (not
-    /// expected: every degree of freedom is prescribed). The warm start is kept on error.
+    /// expected: every degree of freedom is prescribed); with a lubricant, those of the
+    /// friction torque (a film or friction integral that fails, naming its field). The warm
+    /// start is kept on error.
     pub fn evaluate(&mut self, u: [f64; 5], v: [f64; 5]) -> Result<BearingElementOutput> {
         for i in 0..5 {
             if !u[i].is_finite() {
@@ -293,6 +357,7 @@ impl BearingElement {
         // rib-contact model still press the outer ring with their centrifugal force, so
         // the largest element load alone does not say it)
         let loaded = max_load > 0.0 && force.iter().any(|f| *f != 0.0);
+        let friction = self.friction.evaluate(&self.model.planned, self.speeds)?;
         self.model.last = loaded.then_some(u);
         Ok(BearingElementOutput {
             status: if loaded {
@@ -301,7 +366,7 @@ impl BearingElement {
                 BearingElementStatus::LiftedOff
             },
             force_n: [reaction[0], reaction[1], reaction[2]],
-            moment_nmm: [reaction[3], reaction[4], 0.0],
+            moment_nmm: [reaction[3], reaction[4], friction.inner_ring_nmm],
             damping,
             stiffness,
             max_element_load_n: max_load,
@@ -311,6 +376,7 @@ impl BearingElement {
             } else {
                 note.unwrap_or("every rolling element is lifted off: zero load")
             },
+            friction,
         })
     }
 }

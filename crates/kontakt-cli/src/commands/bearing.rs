@@ -349,7 +349,8 @@ fn clean(x: f64, scale: f64) -> Num {
 
 /// One row per roller or ball: the report's `roller_loads` or `ball_loads` keys; with a
 /// friction section, its per-roller (or per-ball) table too, in `<stem>.friction.csv`
-/// beside `path`.
+/// beside `path`, and a speed, load or temperature sweep's rows in
+/// `<stem>.friction_sweep.csv`.
 pub fn write_csv(path: &Path, r: &BearingReport) -> Result<()> {
     if let Some(f) = &r.friction {
         let friction_path = path.with_extension("friction.csv");
@@ -362,6 +363,15 @@ pub fn write_csv(path: &Path, r: &BearingReport) -> Result<()> {
             w.serialize(row)?;
         }
         w.finish()?;
+        // a speed, load or temperature sweep: one row per point in <stem>.friction_sweep.csv
+        if let Some((_, rows)) = f.sweep_rows() {
+            let sweep_path = path.with_extension("friction_sweep.csv");
+            let mut w = crate::commands::CsvFile::create(&sweep_path)?;
+            for row in rows {
+                w.serialize(row)?;
+            }
+            w.finish()?;
+        }
     }
     let mut w = crate::commands::CsvFile::create(path)?;
     match &r.elements {

@@ -13,6 +13,7 @@ pub mod bearing;
 pub mod bearing_demo;
 pub mod bearing_plot;
 pub mod bearing_rib;
+pub mod fmu;
 pub mod friction;
 pub mod impact;
 pub mod mbs;
@@ -221,6 +222,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
         Command::Friction(args) => friction::run(args, out),
         Command::Mbs(args) => mbs::run(args, out),
         Command::Sweep(args) => sweep::run(args, out),
+        Command::Fmu(args) => fmu::run(args, out),
     }
 }
 

@@ -1,19 +1,29 @@
 //! `kontakt validate --bearing`: the measured friction torque of whole bearings
 //! (`validation/measured/`, provenance in its README) beside the SKF (2004) model and,
-//! where the internal geometry is known, the contact-based model at the same conditions: a table on stdout, `bearing_torque.csv` (one row per measured point),
-//! `bearing_skf_curves.csv` (the model curves of the plots), `bearing_report.md` and one
-//! plot per dataset (`bearing_<dataset>.png`). The study is
-//! `kontakt_case::bearing_validation`; this file only writes it out. Torque in N·mm.
+//! where the internal geometry is known, the contact-based model at the same conditions: a
+//! table on stdout, `bearing_torque.csv` (one row per measured point),
+//! `bearing_skf_curves.csv` (the model curves of the plots), `bearing_breakdown.csv` and
+//! `bearing_rib_sensitivity.csv` (the rib study), `bearing_report.md`, one plot per dataset
+//! (`bearing_<dataset>.png`) and one breakdown plot per contact-based curve
+//! (`bearing_<dataset>_breakdown_<T>C.png`: cone, cup, rib, drag stacked beside SKF and the
+//! measurement). The study is `kontakt_case::bearing_validation` and its `rib_study`; this
+//! file only writes it out. Torque in N·mm.
 
 use crate::commands::{CsvFile, cannot_write};
 use anyhow::{Context, Result};
-use kontakt_case::bearing_validation::{Axis, ComparisonRow, DatasetComparison, compare_all};
+use kontakt_case::bearing_validation::rib_study::{
+    BreakdownCurve, LM12700_LOADS_N, SensitivityRow, VARIATIONS, breakdown, crossover_rpm,
+    lm12700_breakdown, sensitivity,
+};
+use kontakt_case::bearing_validation::{
+    Axis, ComparisonRow, ContactParts, DatasetComparison, Quantity, compare_all,
+};
 use kontakt_plot::{LinePlot, LineStyle, PALETTE, Series};
 use std::io::Write;
 use std::path::Path;
 
 /// The columns of `bearing_torque.csv`.
-pub const TORQUE_COLUMNS: [&str; 18] = [
+pub const TORQUE_COLUMNS: [&str; 24] = [
     "dataset",
     "status",
     "speed_rpm",
@@ -32,10 +42,35 @@ pub const TORQUE_COLUMNS: [&str; 18] = [
     "aihara_deviation_pct",
     "contact_nmm",
     "contact_deviation_pct",
+    "quantity",
+    "contact_total_nmm",
+    "contact_cone_nmm",
+    "contact_cup_nmm",
+    "contact_rib_nmm",
+    "contact_drag_nmm",
+];
+
+/// The columns of `bearing_breakdown.csv`.
+pub const BREAKDOWN_COLUMNS: [&str; 12] = [
+    "dataset",
+    "temperature_c",
+    "axial_load_n",
+    "speed_rpm",
+    "total_nmm",
+    "cone_nmm",
+    "cup_nmm",
+    "rib_nmm",
+    "drag_nmm",
+    "skf_nmm",
+    "skf_rolling_nmm",
+    "skf_sliding_nmm",
 ];
 
 /// Image size of the plots (pixels).
 pub const PLOT_SIZE: (u32, u32) = (900, 600);
+
+/// Image size of the breakdown plots (pixels): wider, for their longer legend.
+pub const BREAKDOWN_SIZE: (u32, u32) = (1200, 600);
 
 /// Run the comparison and write the report folder.
 pub fn validate_bearing(out_dir: &Path, out: &mut impl Write, json: bool) -> Result<()> {
@@ -49,16 +84,59 @@ pub fn validate_bearing(out_dir: &Path, out: &mut impl Write, json: bool) -> Res
             plots += 1;
         }
     }
-    std::fs::write(out_dir.join("bearing_report.md"), report(&studies))
-        .map_err(|e| cannot_write("write", &out_dir.join("bearing_report.md"), e))?;
+    // the contact-based model's breakdown and the rib study, where a dataset has one
+    let mut rib = Vec::new();
+    for s in &studies {
+        let curves = breakdown(&s.dataset).context("the contact-based breakdown")?;
+        if curves.is_empty() {
+            continue;
+        }
+        for c in &curves {
+            let path = out_dir.join(breakdown_file(s.dataset.id, c.temperature_c));
+            breakdown_plot(&path, s, c)?;
+            plots += 1;
+        }
+        let sens = sensitivity(&s.dataset).context("the rib sensitivity study")?;
+        rib.push((s.dataset.id, curves, sens));
+    }
+    // the LM12700 of Zhou & Hoeprich (1991): its rib and raceways against speed with an
+    // assumed geometry, load and oil, beside their Fig. 9 totals (the load not stated)
+    if let Some(s) = studies
+        .iter()
+        .find(|s| s.dataset.id == "zhou_hoeprich1991_fig9")
+    {
+        let curves = lm12700_breakdown(&LM12700_LOADS_N).context("the LM12700 breakdown")?;
+        let path = out_dir.join(breakdown_file(s.dataset.id, curves[0].temperature_c));
+        breakdown_plot(&path, s, &curves[0])?;
+        plots += 1;
+        rib.push((s.dataset.id, curves, Vec::new()));
+    }
+    write_breakdown_csv(&out_dir.join("bearing_breakdown.csv"), &rib)?;
+    write_sensitivity_csv(&out_dir.join("bearing_rib_sensitivity.csv"), &rib)?;
+    std::fs::write(
+        out_dir.join("bearing_report.md"),
+        report(&studies) + &rib_report(&rib),
+    )
+    .map_err(|e| cannot_write("write", &out_dir.join("bearing_report.md"), e))?;
     if json {
-        serde_json::to_writer_pretty(&mut *out, &summary_json(&studies))?;
+        let mut v = summary_json(&studies);
+        v["rib_study"] = serde_json::json!(
+            rib.iter()
+                .map(|(id, curves, sens)| serde_json::json!({
+                    "dataset": id,
+                    "breakdown": curves,
+                    "sensitivity": sens,
+                }))
+                .collect::<Vec<_>>()
+        );
+        serde_json::to_writer_pretty(&mut *out, &v)?;
         writeln!(out)?;
     } else {
         write!(out, "{}", table(&studies))?;
+        write!(out, "{}", rib_table(&rib))?;
         writeln!(
             out,
-            "report written to {}: bearing_report.md, bearing_torque.csv, bearing_skf_curves.csv and {plots} plots",
+            "report written to {}: bearing_report.md, bearing_torque.csv, bearing_skf_curves.csv, bearing_breakdown.csv, bearing_rib_sensitivity.csv and {plots} plots",
             out_dir.display()
         )?;
     }
@@ -75,7 +153,7 @@ fn write_torque_csv(path: &Path, studies: &[DatasetComparison]) -> Result<()> {
     for s in studies {
         for r in &s.rows {
             let m = &r.measured;
-            w.record([
+            let cells = [
                 s.dataset.id.to_string(),
                 m.status.name().to_string(),
                 format!("{}", m.speed_rpm),
@@ -94,11 +172,30 @@ fn write_torque_csv(path: &Path, studies: &[DatasetComparison]) -> Result<()> {
                 opt(r.aihara_deviation_pct(), 2),
                 opt(r.contact_nmm, 3),
                 opt(r.contact_deviation_pct(), 2),
-            ])?;
+                m.quantity.name().to_string(),
+            ];
+            w.record(
+                cells
+                    .into_iter()
+                    .chain(parts_cells(r.contact_parts.as_ref())),
+            )?;
         }
     }
     w.finish()?;
     Ok(())
+}
+
+/// The cells of a contact-based breakdown, total, cone, cup, rib, drag \[N·mm\] (empty
+/// without one).
+fn parts_cells(c: Option<&ContactParts>) -> [String; 5] {
+    let f = |g: fn(&ContactParts) -> f64| opt(c.map(g), 3);
+    [
+        f(|c| c.total_nmm),
+        f(|c| c.cone_nmm),
+        f(|c| c.cup_nmm),
+        f(|c| c.rib_nmm),
+        f(|c| c.drag_nmm),
+    ]
 }
 
 fn write_curves_csv(path: &Path, studies: &[DatasetComparison]) -> Result<()> {
@@ -179,7 +276,11 @@ fn plot(path: &Path, s: &DatasetComparison) -> Result<bool> {
         if let Some(first) = rows.first() {
             markers.push((
                 format!(
-                    "measured, {t} °C ({}, ±{} %)",
+                    "measured{}, {t} °C ({}, ±{} %)",
+                    match first.measured.quantity {
+                        Quantity::Total => "",
+                        Quantity::RollingResistance => " M_rr",
+                    },
                     first.measured.status.name(),
                     first.measured.band_pct
                 ),
@@ -213,7 +314,17 @@ fn plot(path: &Path, s: &DatasetComparison) -> Result<bool> {
             contact.sort_by(|a, b| a.0.total_cmp(&b.0));
             lines.push((String::new(), contact.clone(), color, LineStyle::Solid));
             contact_markers.push((
-                format!("contact-based (kontakt), raceways only, {t} °C"),
+                format!(
+                    "contact-based (kontakt), {}, {t} °C",
+                    if rows
+                        .iter()
+                        .all(|r| r.measured.quantity == Quantity::RollingResistance)
+                    {
+                        "raceways (cone + cup)"
+                    } else {
+                        "total"
+                    }
+                ),
                 contact,
                 color,
                 LineStyle::Markers,
@@ -230,6 +341,23 @@ fn plot(path: &Path, s: &DatasetComparison) -> Result<bool> {
     if data.is_empty() {
         return Ok(false);
     }
+    let title = if s.rows.is_empty() {
+        format!("{}: SKF model only (no measured numbers)", s.dataset.id)
+    } else if has_contact {
+        format!("{}: measured, SKF (2004) and contact-based", s.dataset.id)
+    } else {
+        format!("{}: measured and SKF (2004)", s.dataset.id)
+    };
+    let x_label = match s.dataset.axis {
+        Axis::Speed => "inner-ring speed [r/min]",
+        Axis::RadialLoad => "radial load [N]",
+    };
+    draw(path, &title, x_label, &data, PLOT_SIZE)?;
+    Ok(true)
+}
+
+/// Draw `data` as a torque plot (y from 0) of `size` pixels.
+fn draw(path: &Path, title: &str, x_label: &str, data: &[Curve], size: (u32, u32)) -> Result<()> {
     let series: Vec<Series> = data
         .iter()
         .map(|(label, points, color, style)| Series {
@@ -239,30 +367,19 @@ fn plot(path: &Path, s: &DatasetComparison) -> Result<bool> {
             style: *style,
         })
         .collect();
-    let title = if s.rows.is_empty() {
-        format!("{}: SKF model only (no measured numbers)", s.dataset.id)
-    } else if has_contact {
-        format!("{}: measured, SKF (2004) and contact-based", s.dataset.id)
-    } else {
-        format!("{}: measured and SKF (2004)", s.dataset.id)
-    };
     kontakt_plot::line_plot(
         path,
         &LinePlot {
-            title: &title,
-            x_label: match s.dataset.axis {
-                Axis::Speed => "inner-ring speed [r/min]",
-                Axis::RadialLoad => "radial load [N]",
-            },
+            title,
+            x_label,
             y_label: "friction torque [N·mm]",
             series: &series,
             x_log: false,
             y_from_zero: true,
         },
-        PLOT_SIZE,
+        size,
     )
-    .with_context(|| format!("drawing {}", path.display()))?;
-    Ok(true)
+    .with_context(|| format!("drawing {}", path.display()))
 }
 
 fn pct(x: Option<f64>) -> String {
@@ -285,13 +402,24 @@ fn table(studies: &[DatasetComparison]) -> String {
             continue;
         }
         t.push_str(&format!(
-            "  {:>6} {:>7} {:>7} {:>5} {:>7} {:>16} {:>7} {:>7} {:>8} {:>8}\n",
-            "n", "F_a", "F_r", "T", "nu", "measured", "SKF", "SKF %", "contact", "cont. %"
+            "  {:>6} {:>7} {:>7} {:>5} {:>7} {:>16} {:>7} {:>7} {:>8} {:>8} {:>7} {:>6}\n",
+            "n",
+            "F_a",
+            "F_r",
+            "T",
+            "nu",
+            "measured",
+            "SKF",
+            "SKF %",
+            "contact",
+            "cont. %",
+            "c.total",
+            "c.rib"
         ));
         for r in &s.rows {
             let m = &r.measured;
             t.push_str(&format!(
-                "  {:>6} {:>7} {:>7} {:>5} {:>7} {:>16} {:>7} {:>7} {:>8} {:>8}\n",
+                "  {:>6} {:>7} {:>7} {:>5} {:>7} {:>16} {:>7} {:>7} {:>8} {:>8} {:>7} {:>6}\n",
                 m.speed_rpm,
                 m.axial_load_n
                     .map_or_else(|| "?".to_string(), |v| format!("{v}")),
@@ -305,11 +433,19 @@ fn table(studies: &[DatasetComparison]) -> String {
                     m.band_pct,
                     short(m.status.name())
                 ),
-                nmm(r.skf.map(|k| k.total_nmm)),
+                nmm(r.skf_compared_nmm()),
                 pct(r.skf_deviation_pct()),
                 nmm(r.contact_nmm),
                 pct(r.contact_deviation_pct()),
+                nmm(r.contact_parts.map(|c| c.total_nmm)),
+                nmm(r.contact_parts.map(|c| c.rib_nmm)),
             ));
+        }
+        if s.rows
+            .iter()
+            .any(|r| r.measured.quantity == Quantity::RollingResistance)
+        {
+            t.push_str("  measured: the rolling-resistance torque M_rr (the raceways'); SKF: its rolling term; contact: cone + cup (c.total, c.rib: the whole bearing's, the rib's)\n");
         }
         match s.skf_deviation_stats() {
             Some((mean, lo, hi)) => t.push_str(&format!(
@@ -319,7 +455,7 @@ fn table(studies: &[DatasetComparison]) -> String {
         }
         if let Some((mean, lo, hi)) = s.contact_deviation_stats() {
             t.push_str(&format!(
-                "  contact-based against measured: mean |dev| {mean:.1} %, from {lo:+.1} to {hi:+.1} % (raceways only: see the assumptions in bearing_report.md)\n"
+                "  contact-based against measured: mean |dev| {mean:.1} %, from {lo:+.1} to {hi:+.1} % (assumptions in bearing_report.md)\n"
             ));
         }
     }
@@ -375,11 +511,11 @@ fn report(studies: &[DatasetComparison]) -> String {
         if s.rows.is_empty() {
             md.push_str("\nNo measured numbers: the source has this curve in a figure only, and no reading of it exists. The plot shows the SKF model alone.\n\n");
         } else {
-            md.push_str("\n| n [r/min] | F_a [N] | F_r [N] | T [°C] | ν [mm²/s] | measured [N·mm] | SKF [N·mm] | SKF dev. | contact-based | dev. |\n|---|---|---|---|---|---|---|---|---|---|\n");
+            md.push_str("\n| n [r/min] | F_a [N] | F_r [N] | T [°C] | ν [mm²/s] | measured [N·mm] | SKF [N·mm] | SKF dev. | contact-based | dev. | contact total (rib) |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
             for r in &s.rows {
                 let m = &r.measured;
                 md.push_str(&format!(
-                    "| {} | {} | {} | {} | {} | {} ± {} % ({}) | {} | {} % | {} | {} |\n",
+                    "| {} | {} | {} | {} | {} | {} ± {} % ({}, {}) | {} | {} % | {} | {} | {} ({}) |\n",
                     m.speed_rpm,
                     m.axial_load_n
                         .map_or_else(|| "not stated".to_string(), |v| format!("{v}")),
@@ -390,10 +526,13 @@ fn report(studies: &[DatasetComparison]) -> String {
                     m.torque_nmm,
                     m.band_pct,
                     m.status.name(),
-                    nmm(r.skf.map(|k| k.total_nmm)),
+                    m.quantity.name(),
+                    nmm(r.skf_compared_nmm()),
                     pct(r.skf_deviation_pct()),
                     nmm(r.contact_nmm),
                     pct(r.contact_deviation_pct()),
+                    nmm(r.contact_parts.map(|c| c.total_nmm)),
+                    nmm(r.contact_parts.map(|c| c.rib_nmm)),
                 ));
             }
             if let Some((mean, lo, hi)) = s.skf_deviation_stats() {
@@ -403,7 +542,7 @@ fn report(studies: &[DatasetComparison]) -> String {
             }
             if let Some((mean, lo, hi)) = s.contact_deviation_stats() {
                 md.push_str(&format!(
-                    "\nContact-based (raceways only) against the measurement: mean |deviation| {mean:.1} %, from {lo:+.1} to {hi:+.1} %.\n"
+                    "\nContact-based against the measurement: mean |deviation| {mean:.1} %, from {lo:+.1} to {hi:+.1} %.\n"
                 ));
             }
             md.push('\n');
@@ -431,4 +570,311 @@ fn summary_json(studies: &[DatasetComparison]) -> serde_json::Value {
             "skf_curves": s.skf_curves,
         })).collect::<Vec<_>>(),
     })
+}
+
+/// The file of a breakdown plot: `bearing_<dataset>_breakdown_<T>C.png`.
+pub fn breakdown_file(id: &str, temperature_c: f64) -> String {
+    format!("bearing_{id}_breakdown_{temperature_c}C.png")
+}
+
+/// Colours of the breakdown plot: cone, + cup, + rib, + drag, SKF total, SKF rolling term,
+/// measured (black).
+pub const BREAKDOWN_COLOURS: [(u8, u8, u8); 7] = [
+    PALETTE[0],
+    PALETTE[1],
+    PALETTE[2],
+    PALETTE[3],
+    PALETTE[4],
+    PALETTE[5],
+    (0, 0, 0),
+];
+
+/// The breakdown of the contact-based torque along the speed at one temperature, stacked as
+/// lines (cone; cone + cup; + rib; + drag = total), beside the SKF total and its rolling term
+/// (dashed) and the dataset's measured points of that temperature with their error bars.
+fn breakdown_plot(path: &Path, s: &DatasetComparison, c: &BreakdownCurve) -> Result<()> {
+    let [c_cone, c_cup, c_rib, c_drag, c_skf, c_skf_rr, c_meas] = BREAKDOWN_COLOURS;
+    let line = |f: &dyn Fn(&ContactParts) -> f64| {
+        c.points
+            .iter()
+            .map(|p| (p.speed_rpm, f(&p.contact)))
+            .collect::<Vec<_>>()
+    };
+    let no_drag = c.points.iter().all(|p| p.contact.drag_nmm == 0.0);
+    let mut data: Vec<Curve> = Vec::new();
+    let rows: Vec<&ComparisonRow> = s
+        .rows
+        .iter()
+        .filter(|r| r.measured.temperature_c == c.temperature_c)
+        .collect();
+    for r in &rows {
+        data.push((
+            String::new(),
+            error_bar(
+                r.measured.speed_rpm,
+                r.measured.torque_nmm,
+                r.measured.band_pct,
+            )
+            .to_vec(),
+            c_meas,
+            LineStyle::Solid,
+        ));
+    }
+    let skf: Vec<(f64, f64, f64)> = c
+        .points
+        .iter()
+        .filter_map(|p| p.skf.map(|k| (p.speed_rpm, k.total_nmm, k.rolling_nmm)))
+        .collect();
+    if !skf.is_empty() {
+        data.push((
+            "SKF 2004 total".into(),
+            skf.iter().map(|&(n, t, _)| (n, t)).collect(),
+            c_skf,
+            LineStyle::Dashed,
+        ));
+        data.push((
+            "SKF 2004 rolling term".into(),
+            skf.iter().map(|&(n, _, r)| (n, r)).collect(),
+            c_skf_rr,
+            LineStyle::Dashed,
+        ));
+    }
+    data.push((
+        "cone".into(),
+        line(&|p| p.cone_nmm),
+        c_cone,
+        LineStyle::Solid,
+    ));
+    data.push((
+        "cone + cup (raceways)".into(),
+        line(&|p| p.cone_nmm + p.cup_nmm),
+        c_cup,
+        LineStyle::Solid,
+    ));
+    data.push((
+        if no_drag {
+            "+ rib = total (drag 0: circulating oil)".into()
+        } else {
+            "+ rib".into()
+        },
+        line(&|p| p.cone_nmm + p.cup_nmm + p.rib_nmm),
+        c_rib,
+        LineStyle::Solid,
+    ));
+    if !no_drag {
+        data.push((
+            "+ drag = total".into(),
+            line(&|p| p.total_nmm),
+            c_drag,
+            LineStyle::Solid,
+        ));
+    }
+    if let Some(first) = rows.first() {
+        data.push((
+            format!(
+                "measured {} ({}, ±{} %)",
+                match first.measured.quantity {
+                    Quantity::Total => "total",
+                    Quantity::RollingResistance => "M_rr (raceways)",
+                },
+                first.measured.status.name(),
+                first.measured.band_pct
+            ),
+            rows.iter()
+                .map(|r| (r.measured.speed_rpm, r.measured.torque_nmm))
+                .collect(),
+            c_meas,
+            LineStyle::Markers,
+        ));
+    }
+    let title = format!(
+        "{}: contact-based breakdown, {} °C, {} kN axial",
+        s.dataset.id,
+        c.temperature_c,
+        c.axial_load_n / 1000.0
+    );
+    draw(
+        path,
+        &title,
+        "inner-ring speed [r/min]",
+        &data,
+        BREAKDOWN_SIZE,
+    )
+}
+
+/// The rib study of each dataset with a contact setup: its id, breakdown and sensitivity.
+type RibStudy = (&'static str, Vec<BreakdownCurve>, Vec<SensitivityRow>);
+
+fn write_breakdown_csv(path: &Path, rib: &[RibStudy]) -> Result<()> {
+    let mut w = CsvFile::create(path)?;
+    w.record(BREAKDOWN_COLUMNS)?;
+    for (id, curves, _) in rib {
+        for c in curves {
+            for p in &c.points {
+                let head = [
+                    (*id).to_string(),
+                    format!("{}", c.temperature_c),
+                    format!("{}", c.axial_load_n),
+                    format!("{}", p.speed_rpm),
+                ];
+                let skf = [
+                    opt(p.skf.map(|x| x.total_nmm), 3),
+                    opt(p.skf.map(|x| x.rolling_nmm), 3),
+                    opt(p.skf.map(|x| x.sliding_nmm), 3),
+                ];
+                w.record(
+                    head.into_iter()
+                        .chain(parts_cells(Some(&p.contact)))
+                        .chain(skf),
+                )?;
+            }
+        }
+    }
+    w.finish()?;
+    Ok(())
+}
+
+/// `(temperature, value)` pairs as "value unit (T °C)", joined; a deviation (unit `" %"`)
+/// with its sign.
+fn start_list(v: &[(f64, f64)], unit: &str) -> String {
+    v.iter()
+        .map(|(t, d)| {
+            if unit == " %" {
+                format!("{d:+.0}{unit} ({t} °C)")
+            } else {
+                format!("{d:.0}{unit} ({t} °C)")
+            }
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// A sensitivity row as text: input, value, raceways' and total's mean |deviation|, both at
+/// the lowest speed.
+fn sensitivity_cells(r: &SensitivityRow) -> [String; 6] {
+    [
+        r.parameter.to_string(),
+        r.value.to_string(),
+        format!("{:.1} %", r.raceways_mean_abs_pct),
+        format!("{:.1} %", r.total_mean_abs_pct),
+        start_list(&r.raceways_start_pct, " %"),
+        start_list(&r.total_start_pct, " %"),
+    ]
+}
+
+fn write_sensitivity_csv(path: &Path, rib: &[RibStudy]) -> Result<()> {
+    let mut w = CsvFile::create(path)?;
+    w.record([
+        "dataset",
+        "parameter",
+        "value",
+        "raceways_mean_abs_pct",
+        "total_mean_abs_pct",
+        "temperature_c",
+        "raceways_start_pct",
+        "total_start_pct",
+        "rib_start_nmm",
+    ])?;
+    for (_, _, sens) in rib {
+        for r in sens {
+            for (k, &(t, dr)) in r.raceways_start_pct.iter().enumerate() {
+                w.record([
+                    r.dataset.to_string(),
+                    r.parameter.to_string(),
+                    r.value.to_string(),
+                    format!("{:.2}", r.raceways_mean_abs_pct),
+                    format!("{:.2}", r.total_mean_abs_pct),
+                    format!("{t}"),
+                    format!("{dr:.2}"),
+                    format!("{:.2}", r.total_start_pct[k].1),
+                    format!("{:.3}", r.rib_start_nmm[k].1),
+                ])?;
+            }
+        }
+    }
+    w.finish()?;
+    Ok(())
+}
+
+/// The stdout lines of the rib study: per dataset the mean |deviation| under each
+/// variation (raceways against M_rr, total against the values as if they were totals).
+fn rib_table(rib: &[RibStudy]) -> String {
+    let mut t = String::new();
+    for (id, curves, sens) in rib {
+        for c in curves {
+            if let Some(x) = crossover_rpm(c) {
+                t.push_str(&format!(
+                    "\n{id}: contact-based, {} N axial, {} °C: the raceways' torque exceeds the rib's above {x:.0} r/min",
+                    c.axial_load_n, c.temperature_c
+                ));
+            }
+        }
+        if !curves.is_empty() {
+            t.push('\n');
+        }
+        if sens.is_empty() {
+            continue;
+        }
+        t.push_str(&format!(
+            "\n{id}: rib and oil sensitivity of the contact-based model (mean |dev| %: raceways | total; at the lowest speed: raceways | total)\n"
+        ));
+        for r in sens {
+            let [p, v, rm, tm, rs, ts] = sensitivity_cells(r);
+            t.push_str(&format!(
+                "  {p:<42} {v:<20} {rm:>7} | {tm:>7}   {rs} | {ts}\n"
+            ));
+        }
+    }
+    t
+}
+
+/// The report's section of the rib study: the breakdown plots and the sensitivity table with
+/// the reason for every value.
+fn rib_report(rib: &[RibStudy]) -> String {
+    let mut md = String::new();
+    if rib.is_empty() {
+        return md;
+    }
+    md.push_str("# The contact-based breakdown and the rib study\n\n");
+    md.push_str("Every variation moves one uncertain input of the contact-based case over a physical range (the reason in the last column), the others as assumed; none is fitted to the measurement. Mean |deviation| of the raceways (cone + cup, the comparison for a rolling-resistance torque M_rr) and of the total (the comparison if the measured values were the total torque), and both at the lowest measured speed.\n\n");
+    for (id, curves, sens) in rib {
+        md.push_str(&format!("## {id}\n\n"));
+        let mut drawn: Vec<f64> = Vec::new();
+        for c in curves {
+            if let Some(x) = crossover_rpm(c) {
+                md.push_str(&format!(
+                    "- {} N axial, {} °C: the raceways' torque exceeds the rib's above {x:.0} r/min\n",
+                    c.axial_load_n, c.temperature_c
+                ));
+            }
+        }
+        md.push('\n');
+        for c in curves {
+            if drawn.contains(&c.temperature_c) {
+                continue;
+            }
+            drawn.push(c.temperature_c);
+            md.push_str(&format!(
+                "![{id} breakdown at {} °C]({})\n\n",
+                c.temperature_c,
+                breakdown_file(id, c.temperature_c)
+            ));
+        }
+        if sens.is_empty() {
+            md.push_str("The LM12700's geometry beyond the caption of Fig. 9, its load and its oil are assumed (`examples/bearing_lm12700_rib_friction.toml`); the curves at 2 and 6 kN are in `bearing_breakdown.csv`.\n\n");
+            continue;
+        }
+        md.push_str("| input | value | raceways mean \\|dev\\| | total mean \\|dev\\| | raceways at start | total at start | rib at start [N·mm] | why this value |\n|---|---|---|---|---|---|---|---|\n");
+        for r in sens {
+            md.push_str(&format!(
+                "| {} | {} | {} |\n",
+                sensitivity_cells(r).join(" | "),
+                start_list(&r.rib_start_nmm, ""),
+                r.why
+            ));
+        }
+        md.push('\n');
+    }
+    debug_assert_eq!(VARIATIONS.len(), rib[0].2.len());
+    md
 }

@@ -12,6 +12,8 @@ from typing import Any, Mapping
 from ._sweep import sweep
 from ._kontakt import (
     Bearing,
+    BearingElement,
+    BearingElementResult,
     BearingResult,
     CaseResult,
     ContactElement,
@@ -35,6 +37,8 @@ from ._kontakt import (
 
 __all__ = [
     "Bearing",
+    "BearingElement",
+    "BearingElementResult",
     "BearingResult",
     "CaseResult",
     "ContactElement",

@@ -355,17 +355,23 @@ impl CellLaw {
     /// `speed = 0` the stress is zero whatever `k` is; `k` is finite there.
     #[inline]
     pub fn drag(&self, p: f64, speed: f64) -> f64 {
-        let mut k = 0.0;
-        if self.boundary > 0.0 {
-            let d = (speed * speed + self.eps2).sqrt();
-            if d > 0.0 {
-                k = self.boundary * p / d;
-            }
-        }
+        let mut k = self.boundary_drag(p, speed);
         if self.fluid_share > 0.0 {
             k += self.fluid_share * self.fluid_drag(p, speed);
         }
         k
+    }
+
+    /// The boundary part of [`CellLaw::drag`]: `φ μ_b p / √(|v|² + v_ε²)`.
+    #[inline(always)]
+    fn boundary_drag(&self, p: f64, speed: f64) -> f64 {
+        if self.boundary > 0.0 {
+            let d = (speed * speed + self.eps2).sqrt();
+            if d > 0.0 {
+                return self.boundary * p / d;
+            }
+        }
+        0.0
     }
 
     /// `τ_f(p, γ̇) / |v|`, with its limit `η(p)/h` at `|v| = 0`. Where `exp(α p)`
@@ -377,7 +383,30 @@ impl CellLaw {
             return 0.0;
         }
         let g = self.alpha * p;
-        let eta_h = self.eta_over_h * g.exp();
+        self.fluid_drag_barus(p, speed, g, g.exp())
+    }
+
+    /// [`CellLaw::drag`] with the Barus factor `barus` = `exp(α p)` of this law's film
+    /// (α the [`FilmState`]'s) given: the same number bit for bit when `barus` is that
+    /// exponential, without computing it. For integrals over fixed pressures whose film
+    /// changes (a speed sweep over one load distribution: the factors are computed once).
+    #[inline]
+    pub fn drag_with_barus(&self, p: f64, speed: f64, barus: f64) -> f64 {
+        let mut k = self.boundary_drag(p, speed);
+        if self.fluid_share > 0.0 {
+            k += self.fluid_share
+                * match self.fluid {
+                    FluidShear::None => 0.0,
+                    _ => self.fluid_drag_barus(p, speed, self.alpha * p, barus),
+                };
+        }
+        k
+    }
+
+    /// `τ_f / |v|` of [`CellLaw::fluid_drag`] with `g = α p` and `barus = exp(g)` given.
+    #[inline(always)]
+    fn fluid_drag_barus(&self, p: f64, speed: f64, g: f64, barus: f64) -> f64 {
+        let eta_h = self.eta_over_h * barus;
         // x = η γ̇ = η |v| / h: the Newtonian stress.
         let x = eta_h * speed;
         match self.fluid {

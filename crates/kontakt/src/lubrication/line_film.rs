@@ -148,6 +148,20 @@ pub(crate) const ZERO_ENTRAINMENT: &str =
 /// M below which [`LineFilmWarnings::outside_elastic_regime`] is raised.
 pub const LINE_ELASTIC_REGIME_M: f64 = 10.0;
 
+/// The check of a mean surface speed `speed` \[mm/s\] (field `entrainment_speed`): finite
+/// and ≥ 0. Returns it.
+fn check_entrainment(speed: f64) -> Result<f64> {
+    if speed.is_finite() && speed >= 0.0 {
+        Ok(speed)
+    } else {
+        Err(Error::invalid(
+            "entrainment_speed",
+            speed,
+            "a finite mean surface speed >= 0 mm/s",
+        ))
+    }
+}
+
 /// The checks that the point- and line-contact films share: `entrainment_speed` finite and
 /// ≥ 0 mm/s; `reduced_modulus`, `viscosity`, `alpha` finite and > 0. Returns
 /// (E*, η₀, α).
@@ -157,13 +171,7 @@ pub(crate) fn check_speed_and_oil(
     viscosity: f64,
     alpha: f64,
 ) -> Result<(f64, f64, f64)> {
-    if !(speed.is_finite() && speed >= 0.0) {
-        return Err(Error::invalid(
-            "entrainment_speed",
-            speed,
-            "a finite mean surface speed >= 0 mm/s",
-        ));
-    }
+    check_entrainment(speed)?;
     Ok((
         positive(
             "reduced_modulus",
@@ -204,23 +212,48 @@ pub fn line_film_regime(
     let (e_star, eta, alpha) =
         check_speed_and_oil(speed, contact.reduced_modulus, viscosity, alpha)?;
     let e_prime = 2.0 * e_star;
-    let u = eta * speed / (e_prime * r);
     let g = alpha * e_prime;
     let w = load / (e_prime * r);
+    let regime = speed_groups(
+        LineFilmRegime {
+            u: 0.0,
+            g,
+            w,
+            moes_m: None,
+            moes_l: 0.0,
+            half_width: r * (8.0 * w / std::f64::consts::PI).sqrt(),
+            max_pressure: e_prime * (w / (2.0 * std::f64::consts::PI)).sqrt(),
+        },
+        eta,
+        speed,
+        e_prime,
+        r,
+    )?;
+    if !(g.is_finite() && w.is_finite() && w > 0.0 && regime.half_width.is_finite()) {
+        return Err(Error::invalid(
+            "load_per_length",
+            load,
+            "inputs for which G and W are finite, non-zero f64 (inputs too extreme)",
+        ));
+    }
+    Ok(regime)
+}
+
+/// `regime` with its speed groups U, M and L at the mean speed `speed` \[mm/s\] (η₀ `eta`
+/// \[MPa·s\], E′ `e_prime` \[MPa\], R `r` \[mm\]), checked; the load groups kept.
+fn speed_groups(
+    regime: LineFilmRegime,
+    eta: f64,
+    speed: f64,
+    e_prime: f64,
+    r: f64,
+) -> Result<LineFilmRegime> {
+    let u = eta * speed / (e_prime * r);
     let (moes_m, moes_l) = if speed == 0.0 {
         (None, 0.0)
     } else {
         let us = 2.0 * u;
-        (Some(w / us.sqrt()), g * us.powf(0.25))
-    };
-    let regime = LineFilmRegime {
-        u,
-        g,
-        w,
-        moes_m,
-        moes_l,
-        half_width: r * (8.0 * w / std::f64::consts::PI).sqrt(),
-        max_pressure: e_prime * (w / (2.0 * std::f64::consts::PI)).sqrt(),
+        (Some(regime.w / us.sqrt()), regime.g * us.powf(0.25))
     };
     let speed_ok = u.is_finite() && (speed == 0.0 || u > 0.0) && moes_l.is_finite();
     if !(speed_ok && moes_m.is_none_or(f64::is_finite)) {
@@ -230,14 +263,107 @@ pub fn line_film_regime(
             "a speed for which U, M and L are finite, non-zero f64 (inputs too extreme)",
         ));
     }
-    if !(g.is_finite() && w.is_finite() && w > 0.0 && regime.half_width.is_finite()) {
+    Ok(LineFilmRegime {
+        u,
+        moes_m,
+        moes_l,
+        ..regime
+    })
+}
+
+impl LineFilmRegime {
+    /// The groups of the same contact at the mean speed of `contact` (its radius, load and
+    /// modulus those this regime was made with, by [`line_film_regime`]): U, M and L
+    /// recomputed, G, W and the Hertz values kept. Bit for bit [`line_film_regime`] of
+    /// `contact`, without its load-dependent work (a speed sweep of one load distribution).
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] naming `entrainment_speed` (finite, ≥ 0, and U, M, L finite)
+    /// or `viscosity` (finite, > 0).
+    pub fn at_speed(&self, contact: &LineFilmContact, viscosity: f64) -> Result<LineFilmRegime> {
+        let speed = check_entrainment(contact.entrainment_speed)?;
+        let eta = positive(
+            "viscosity",
+            viscosity,
+            "a finite dynamic viscosity > 0 MPa·s",
+        )?;
+        speed_groups(
+            *self,
+            eta,
+            speed,
+            2.0 * contact.reduced_modulus,
+            contact.radius,
+        )
+    }
+}
+
+/// The speed-independent powers of G and W in a line-film formula (Dowson-Higginson:
+/// G^0.56, W^−0.10 of the central film, G^0.54, W^−0.13 of the minimum film), from a
+/// regime; [`line_film_with`] multiplies them by the speed's power in the formula's order.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LineFilmPowers {
+    formula: LineFilmFormula,
+    central: (f64, f64),
+    minimum: (f64, f64),
+}
+
+impl LineFilmPowers {
+    /// The powers of `regime`'s G and W in `formula`.
+    pub fn of(regime: &LineFilmRegime, formula: LineFilmFormula) -> Self {
+        let (g, w) = (regime.g, regime.w);
+        match formula {
+            LineFilmFormula::DowsonHigginson => LineFilmPowers {
+                formula,
+                central: (g.powf(0.56), w.powf(-0.10)),
+                minimum: (g.powf(0.54), w.powf(-0.13)),
+            },
+        }
+    }
+}
+
+/// The film of `contact` from its groups `regime` ([`line_film_regime`] or
+/// [`LineFilmRegime::at_speed`]) and the powers `powers` of its G and W
+/// ([`LineFilmPowers::of`] of a regime of the same contact at any speed): bit for bit
+/// [`line_film_thickness`] by the powers' formula. No heap allocation.
+///
+/// # Errors
+/// As [`line_film_thickness`] where the film leaves `f64`.
+pub fn line_film_with(
+    contact: &LineFilmContact,
+    regime: &LineFilmRegime,
+    powers: &LineFilmPowers,
+) -> Result<LineFilm> {
+    let u = regime.u;
+    let zero = contact.entrainment_speed == 0.0;
+    let (central, minimum) = if zero {
+        (0.0, 0.0)
+    } else {
+        match powers.formula {
+            LineFilmFormula::DowsonHigginson => (
+                3.06 * u.powf(0.69) * powers.central.0 * powers.central.1 * contact.radius,
+                2.65 * u.powf(0.70) * powers.minimum.0 * powers.minimum.1 * contact.radius,
+            ),
+        }
+    };
+    if !(central.is_finite() && minimum.is_finite()) {
         return Err(Error::invalid(
             "load_per_length",
-            load,
-            "inputs for which G and W are finite, non-zero f64 (inputs too extreme)",
+            contact.load_per_length,
+            "inputs for which the film is a finite f64 (inputs too extreme)",
         ));
     }
-    Ok(regime)
+    let warnings = LineFilmWarnings {
+        zero_entrainment: zero,
+        outside_elastic_regime: regime.moes_m.is_some_and(|m| m < LINE_ELASTIC_REGIME_M),
+        central_below_minimum: !zero && central < minimum,
+    };
+    Ok(LineFilm {
+        central,
+        minimum,
+        formula: powers.formula,
+        regime: *regime,
+        warnings,
+    })
 }
 
 /// The isothermal, fully flooded EHL film of the line contact `contact` lubricated by an
@@ -259,37 +385,7 @@ pub fn line_film_thickness(
     formula: LineFilmFormula,
 ) -> Result<LineFilm> {
     let regime = line_film_regime(contact, viscosity, alpha)?;
-    let LineFilmRegime { u, g, w, .. } = regime;
-    let zero = contact.entrainment_speed == 0.0;
-    let (central, minimum) = if zero {
-        (0.0, 0.0)
-    } else {
-        match formula {
-            LineFilmFormula::DowsonHigginson => (
-                3.06 * u.powf(0.69) * g.powf(0.56) * w.powf(-0.10) * contact.radius,
-                2.65 * u.powf(0.70) * g.powf(0.54) * w.powf(-0.13) * contact.radius,
-            ),
-        }
-    };
-    if !(central.is_finite() && minimum.is_finite()) {
-        return Err(Error::invalid(
-            "load_per_length",
-            contact.load_per_length,
-            "inputs for which the film is a finite f64 (inputs too extreme)",
-        ));
-    }
-    let warnings = LineFilmWarnings {
-        zero_entrainment: zero,
-        outside_elastic_regime: regime.moes_m.is_some_and(|m| m < LINE_ELASTIC_REGIME_M),
-        central_below_minimum: !zero && central < minimum,
-    };
-    Ok(LineFilm {
-        central,
-        minimum,
-        formula,
-        regime,
-        warnings,
-    })
+    line_film_with(contact, &regime, &LineFilmPowers::of(&regime, formula))
 }
 
 /// The thermal loading parameter of Zhu & Cheng, L_T = (−∂η/∂T) u² / K (dimensionless),
@@ -313,13 +409,7 @@ pub fn thermal_loading(
             "a finite temperature slope of the viscosity <= 0 MPa·s/K (oil thins when heated)",
         ));
     }
-    if !(entrainment_speed.is_finite() && entrainment_speed >= 0.0) {
-        return Err(Error::invalid(
-            "entrainment_speed",
-            entrainment_speed,
-            "a finite mean surface speed >= 0 mm/s",
-        ));
-    }
+    check_entrainment(entrainment_speed)?;
     let k = positive(
         "conductivity",
         conductivity,

@@ -37,9 +37,10 @@ pub use film::{
     HAMROCK_DOWSON_K_RANGE, film_thickness,
 };
 pub use line_film::{
-    LINE_ELASTIC_REGIME_M, LineFilm, LineFilmContact, LineFilmFormula, LineFilmRegime,
-    LineFilmWarnings, film_starvation_factor, line_film_regime, line_film_thickness,
-    thermal_loading, viscosity_temperature_slope, zhu_cheng_thermal_factor,
+    LINE_ELASTIC_REGIME_M, LineFilm, LineFilmContact, LineFilmFormula, LineFilmPowers,
+    LineFilmRegime, LineFilmWarnings, film_starvation_factor, line_film_regime,
+    line_film_thickness, line_film_with, thermal_loading, viscosity_temperature_slope,
+    zhu_cheng_thermal_factor,
 };
 pub use rolling_resistance::{
     BIBOULET_HOUPERT_MIN_STARVATION, HERTZ_TO_CLASSICAL, RollingResistance, RollingResistanceModel,

@@ -208,6 +208,18 @@ pub fn roller_loads_on_cup(
     Ok(loads)
 }
 
+/// The friction of an earlier roller whose rib load is `rib_load` bit for bit. Every output
+/// of [`RibFrictionModel::friction_share`] depends on the roller's loads only through its
+/// rib load (the field, the film, the coefficient) apart from the copy of the loads, so such
+/// a roller's friction with its own loads is the result of solving it again, bit for bit
+/// (under axial load every roller has the same rib load: one friction integral instead of
+/// Z; `kontakt-bearing/tests/friction_speed.rs` checks it against a solve per roller).
+fn same_rib_load(done: &[RollerRibFriction], rib_load: f64) -> Option<&RibFriction> {
+    done.iter()
+        .filter(|o| o.loads.rib.to_bits() == rib_load.to_bits())
+        .find_map(|o| o.friction.as_ref())
+}
+
 /// Fields already solved, by rib load.
 struct Fields {
     solved: Vec<(f64, NormalSolution<()>)>,
@@ -330,8 +342,16 @@ impl RibFrictionModel {
                 ));
             }
             let friction = if q > 0.0 {
-                let field = fields.at(self, model, q)?;
-                Some(self.friction_share(model, field, &op, k, &r.loads, 1.0)?)
+                match same_rib_load(&out, q) {
+                    Some(f) => Some(RibFriction {
+                        loads: r.loads,
+                        ..f.clone()
+                    }),
+                    None => {
+                        let field = fields.at(self, model, q)?;
+                        Some(self.friction_share(model, field, &op, k, &r.loads, 1.0)?)
+                    }
+                }
             } else {
                 None
             };
