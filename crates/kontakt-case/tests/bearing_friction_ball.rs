@@ -158,3 +158,39 @@ fn bad_ball_friction_input_names_the_key() {
         println!("{key}: {e}");
     }
 }
+
+/// The friction sweeps reach ball bearings: over the oil temperature (same load
+/// distribution) and over the radial load (re-solved); the rows at the example's 60 °C and
+/// 2 kN are its single point (1e-12); the torque falls as the oil thins and grows with the
+/// load.
+#[test]
+fn temperature_and_load_sweeps_of_a_ball_bearing() {
+    let base = example("bearing_6205_friction.toml");
+    let single = run(&base).unwrap().friction.unwrap().total_nmm;
+    let sweep = |line: &str| {
+        let text = base.replace(
+            "sweep_inner_rpm = [0.0, 100.0, 300.0, 1000.0, 3000.0, 6000.0, 10000.0]",
+            line,
+        );
+        assert_ne!(text, base);
+        run(&text).unwrap().friction.unwrap()
+    };
+    let t = sweep("sweep_temperature_c = [40.0, 60.0, 80.0]").temperature_sweep;
+    let l = sweep("sweep_radial_n = [500.0, 2000.0, 5000.0]").radial_load_sweep;
+    for rows in [&t, &l] {
+        assert_eq!(rows.len(), 3);
+        assert!(rel(rows[1].total_nmm, single) < 1e-12);
+    }
+    assert!(t[0].total_nmm > t[1].total_nmm && t[1].total_nmm > t[2].total_nmm);
+    assert!(l[0].total_nmm < l[1].total_nmm && l[1].total_nmm < l[2].total_nmm);
+    assert_eq!(l[1].loaded_rollers, 3);
+    println!(
+        "40/60/80 °C: {:.2}/{:.2}/{:.2} N·mm; 0.5/2/5 kN: {:.2}/{:.2}/{:.2} N·mm",
+        t[0].total_nmm,
+        t[1].total_nmm,
+        t[2].total_nmm,
+        l[0].total_nmm,
+        l[1].total_nmm,
+        l[2].total_nmm
+    );
+}
