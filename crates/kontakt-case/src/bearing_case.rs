@@ -967,7 +967,7 @@ pub(crate) fn run_bearing_case_unchecked(case: &BearingCase) -> Result<BearingRe
 }
 
 /// The friction section (`crate::bearing_friction`) of a case whose `planned` solver has
-/// just solved; an error naming `operating` for a ball bearing.
+/// just solved.
 fn friction_of_planned(
     case: &BearingCase,
     op: &crate::bearing_friction::OperatingSpec,
@@ -975,6 +975,13 @@ fn friction_of_planned(
     force: [f64; 3],
 ) -> Result<crate::bearing_friction::FrictionReport> {
     use crate::bearing_friction::Solved;
+    use crate::bearing_friction::ball::friction_report as ball_friction;
+    let tables = crate::bearing_friction::Tables {
+        rpm: [case.speed.inner_rpm, case.speed.outer_rpm],
+        lubricant: case.lubricant.as_ref(),
+        friction: case.friction.as_ref(),
+        catalogue: case.catalogue.as_ref(),
+    };
     let (bearing, solved) = match planned {
         Planned::Roller(s) => (
             s.bearing(),
@@ -991,12 +998,13 @@ fn friction_of_planned(
             },
         ),
         Planned::RibRoller(s) => (s.bearing(), Solved::Rib(s)),
-        Planned::Ball { .. } | Planned::BallAtSpeed { .. } => {
-            return Err(Error::invalid(
-                "operating",
-                "given for a ball bearing",
-                "[operating] with a tapered or cylindrical roller bearing (the friction torque of ball bearings is not built yet)",
-            ));
+        Planned::Ball { solver, .. } => {
+            let balls: Vec<_> = solver.ball_loads().iter().map(Into::into).collect();
+            return ball_friction(&tables, op, solver.bearing(), &balls, force);
+        }
+        Planned::BallAtSpeed { solver, .. } => {
+            let balls: Vec<_> = solver.ball_loads().iter().map(Into::into).collect();
+            return ball_friction(&tables, op, solver.bearing(), &balls, force);
         }
     };
     crate::bearing_friction::friction_report(

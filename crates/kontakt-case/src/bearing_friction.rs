@@ -5,6 +5,7 @@
 //! [`crate::friction_case::FrictionSpec`]) and `[catalogue]` (envelope, SKF series and Y,
 //! Schaeffler factors) of a bearing case, and the report's `friction` section: the torque
 //! contact by contact of `kontakt_bearing::friction::torque` beside the catalogue torques.
+//! Ball bearings: [`ball`] (the same tables and report, `kontakt_bearing::friction::ball`).
 //!
 //! Units: r/min in the case (rad/s in the library), mm, N, N·mm, W, °C.
 //! Derivations: `docs/bearing-friction.md`.
@@ -33,8 +34,9 @@ use kontakt_bearing::geometry::{RollerBearing, RollerBearingKind};
 use kontakt_bearing::roller_equilibrium::RibContactSolver;
 use serde::{Deserialize, Serialize};
 
+pub mod ball;
 mod checks;
-pub(crate) use checks::oil_level;
+pub(crate) use checks::{oil_level, oil_level_below};
 mod sweeps;
 pub use sweeps::MAX_SWEEP_POINTS;
 pub(crate) use sweeps::load_sweep;
@@ -185,6 +187,10 @@ pub struct CatalogueSpec {
     /// Schaeffler P1 \[N\].
     #[serde(default)]
     pub schaeffler_p1_n: Option<f64>,
+    /// Basic static load rating C_0 \[N\] (the SKF 2004 deep groove ball bearing's axial
+    /// term needs it).
+    #[serde(default)]
+    pub c0_n: Option<f64>,
     /// SKF drag loss factor V_M, read from SKF's diagram at the oil level's H/d_m (oil bath;
     /// finite, ≥ 0): the SKF 2004 drag term needs it (`operating.drag = "skf"`).
     #[serde(default)]
@@ -322,6 +328,10 @@ pub struct FrictionReport {
     /// With `operating.sweep_temperature_c`: the torque at each oil temperature.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub temperature_sweep: Vec<FrictionSweepRow>,
+    /// Every ball of a ball bearing (then `cone_*` is the inner race, `cup_*` the outer
+    /// race, `rollers` empty; `bearing_friction::ball`).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub balls: Vec<ball::FrictionBallRow>,
 }
 
 /// One point of a friction sweep: a speed of `operating.sweep_inner_rpm`, a load of
@@ -400,12 +410,26 @@ pub(crate) fn friction_report(
     solved: Solved<'_>,
     force: [f64; 3],
 ) -> Result<FrictionReport> {
-    let at = |rpm: [f64; 2]| {
-        point(
-            op, rpm, lubricant, friction, catalogue, bearing, solved, force,
-        )
-    };
-    let mut report = at(rpm)?;
+    with_sweeps(op, rpm, lubricant, force, |rpm, lub| {
+        point(op, rpm, lub, friction, catalogue, bearing, solved, force)
+    })
+}
+
+/// The report of `at(rpm, lubricant)` at the ring speeds `rpm` (r/min) and the case's
+/// `[lubricant]`, with the rows of `operating.sweep_temperature_c` (the lubricant at each
+/// temperature) and `operating.sweep_inner_rpm` (each inner ring speed) on the same load
+/// distribution (roller and ball bearings).
+///
+/// # Errors
+/// Those of `at`, a sweep's renamed to its key.
+pub(crate) fn with_sweeps(
+    op: &OperatingSpec,
+    rpm: [f64; 2],
+    lubricant: Option<&LubricantSpec>,
+    force: [f64; 3],
+    at: impl Fn([f64; 2], Option<&LubricantSpec>) -> Result<FrictionReport>,
+) -> Result<FrictionReport> {
+    let mut report = at(rpm, lubricant)?;
     if let Some((sweeps::SweepKind::Temperature, temperatures)) = sweeps::sweep_of(op)? {
         let lub = lubricant.cloned();
         sweeps::temperature_sweep(&mut report, temperatures, force, |t| {
@@ -413,16 +437,7 @@ pub(crate) fn friction_report(
                 l.temperature_c = t;
                 l
             });
-            point(
-                op,
-                rpm,
-                lub.as_ref(),
-                friction,
-                catalogue,
-                bearing,
-                solved,
-                force,
-            )
+            at(rpm, lub.as_ref())
         })?;
     }
     if let Some(speeds) = &op.sweep_inner_rpm {
@@ -434,7 +449,7 @@ pub(crate) fn friction_report(
             ));
         }
         for &n in speeds {
-            let p = at([n, rpm[1]]).map_err(|e| {
+            let p = at([n, rpm[1]], lubricant).map_err(|e| {
                 e.map_field(|f| match f {
                     "speed.inner_rpm" => "operating.sweep_inner_rpm".to_string(),
                     other => other.to_string(),
@@ -465,20 +480,8 @@ fn point(
             "[operating] with a tapered or cylindrical roller bearing (thrust: not yet)",
         ));
     }
-    for (k, v) in [("speed.inner_rpm", rpm[0]), ("speed.outer_rpm", rpm[1])] {
-        if !(v.is_finite() && v.abs() <= MAX_RING_RPM) {
-            return Err(Error::invalid(
-                k,
-                v,
-                format!("a finite speed with |speed| <= {MAX_RING_RPM} r/min"),
-            ));
-        }
-    }
-    let lub = lubricant.ok_or_else(|| Error::CaseFile {
-        line: None,
-        key: "lubricant".into(),
-        message: "missing table `[lubricant]`: [operating] needs the oil (iso_vg or nu40_mm2_s and nu100_mm2_s, density_kg_m3, alpha_per_mpa, temperature_c, roughness_mm)".into(),
-    })?;
+    check_rpm(rpm)?;
+    let lub = lubricant_of(lubricant)?;
     let RacewayPlan {
         mut model,
         rib_lub,
@@ -551,13 +554,7 @@ fn point(
     }
 
     // Catalogue torques and drag.
-    let envelope = match catalogue {
-        Some(c) => Some(
-            Envelope::new(c.bore_mm, c.outer_mm, c.width_mm)
-                .map_err(|e| e.map_field(key("catalogue")))?,
-        ),
-        None => None,
-    };
+    let envelope = envelope(catalogue)?;
     let lubrication = oil_supply(op)?;
     if let Lubrication::OilBath { level_mm } = lubrication {
         checks::oil_level(level_mm, bearing)?;
@@ -577,21 +574,11 @@ fn point(
             let skf = skf_bearing(c, series, bearing)?;
             let t = skf2004(&skf, env, &point, &skf_options(op, Some(c))?)
                 .map_err(|e| e.map_field(key("catalogue")))?;
-            cat.skf_total_nmm = Some(t.total_nmm);
-            cat.skf_rolling_nmm = Some(t.rolling_nmm);
-            cat.skf_sliding_nmm = Some(t.sliding_nmm);
-            cat.skf_drag_nmm = Some(t.drag_nmm);
-            warnings.extend(t.warnings.lines().into_iter().map(|w| format!("SKF: {w}")));
+            cat.add_skf(&t, &mut warnings);
         } else {
             warnings.push("SKF catalogue torque not computed: give catalogue.skf_series (and y for tapered bearings)".to_string());
         }
-        if let Some(f0) = c.schaeffler_f0 {
-            let m = m0(f0, nu * point.speed_rpm(), env.mean_diameter_mm());
-            cat.schaeffler_m0_nmm = Some(m);
-            if let (Some(f1), Some(p1)) = (c.schaeffler_f1, c.schaeffler_p1_n) {
-                cat.schaeffler_total_nmm = Some(m + f1 * p1 * env.mean_diameter_mm());
-            }
-        }
+        cat.add_schaeffler(c, nu * point.speed_rpm(), env);
     } else {
         warnings.push("catalogue torques not computed: give [catalogue] (bore_mm, outer_mm, width_mm, skf_series, y)".to_string());
     }
@@ -640,30 +627,7 @@ fn point(
             );
         }
     }
-    let drag = match op.drag {
-        DragSpec::None => DragModel::None,
-        DragSpec::Skf => DragModel::Torque {
-            nmm: cat.skf_drag_nmm.ok_or_else(|| {
-                Error::invalid(
-                    "operating.drag",
-                    "skf",
-                    "\"none\" or \"schaeffler_m0\" unless [catalogue] has skf_series (the SKF drag term needs its series)",
-                )
-            })?,
-        },
-        DragSpec::SchaefflerM0 => DragModel::Torque {
-            nmm: cat.schaeffler_m0_nmm.ok_or_else(|| {
-                Error::invalid(
-                    "operating.drag",
-                    "schaeffler_m0",
-                    "\"none\" or \"skf\" unless [catalogue] has schaeffler_f0",
-                )
-            })?,
-        },
-    };
-    if op.drag == DragSpec::SchaefflerM0 && nu * point.speed_rpm() < 2000.0 {
-        warnings.push("Schaeffler M0: ν n < 2000, the catalogue's low-speed constant".into());
-    }
+    let drag = drag_model(op, &cat, nu * point.speed_rpm(), &mut warnings)?;
 
     let p = force.iter().map(|f| f * f).sum::<f64>().sqrt();
     let d = envelope.map_or(bearing.pitch_diameter_mm, |e| e.bore_mm);
@@ -743,6 +707,7 @@ fn point(
         axial_load_sweep: Vec::new(),
         radial_load_sweep: Vec::new(),
         temperature_sweep: Vec::new(),
+        balls: Vec::new(),
     })
 }
 
@@ -842,12 +807,123 @@ pub(crate) fn skf_bearing(
     })
 }
 
-/// The planned raceway friction of a case: the model of `bearing` with the raceway
-/// lubrication of `[lubricant]`, `[friction]` and `[operating]`, the rib lubrication and
-/// friction law, and the kinematic viscosity ν \[mm²/s\] at the oil temperature.
-pub(crate) struct RacewayPlan {
-    /// The raceway friction model.
-    pub model: BearingFrictionModel,
+/// The tables of a bearing case that the friction reads besides `[operating]`.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Tables<'a> {
+    /// `[speed]`: `[inner_rpm, outer_rpm]` \[r/min\].
+    pub(crate) rpm: [f64; 2],
+    /// `[lubricant]`.
+    pub(crate) lubricant: Option<&'a LubricantSpec>,
+    /// `[friction]`.
+    pub(crate) friction: Option<&'a FrictionSpec>,
+    /// `[catalogue]`.
+    pub(crate) catalogue: Option<&'a CatalogueSpec>,
+}
+
+/// `speed.inner_rpm` and `speed.outer_rpm` finite and within `|n| <= MAX_RING_RPM`.
+pub(crate) fn check_rpm(rpm: [f64; 2]) -> Result<()> {
+    for (k, v) in [("speed.inner_rpm", rpm[0]), ("speed.outer_rpm", rpm[1])] {
+        if !(v.is_finite() && v.abs() <= MAX_RING_RPM) {
+            return Err(Error::invalid(
+                k,
+                v,
+                format!("a finite speed with |speed| <= {MAX_RING_RPM} r/min"),
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The case's `[lubricant]`, required with `[operating]`.
+pub(crate) fn lubricant_of(lubricant: Option<&LubricantSpec>) -> Result<&LubricantSpec> {
+    lubricant.ok_or_else(|| Error::CaseFile {
+        line: None,
+        key: "lubricant".into(),
+        message: "missing table `[lubricant]`: [operating] needs the oil (iso_vg or nu40_mm2_s and nu100_mm2_s, density_kg_m3, alpha_per_mpa, temperature_c, roughness_mm)".into(),
+    })
+}
+
+/// The envelope of `[catalogue]` (errors named `catalogue.*`).
+pub(crate) fn envelope(catalogue: Option<&CatalogueSpec>) -> Result<Option<Envelope>> {
+    catalogue
+        .map(|c| {
+            Envelope::new(c.bore_mm, c.outer_mm, c.width_mm)
+                .map_err(|e| e.map_field(key("catalogue")))
+        })
+        .transpose()
+}
+
+impl CatalogueTorques {
+    /// Record the SKF 2004 torque `t` and its warnings.
+    pub(crate) fn add_skf(
+        &mut self,
+        t: &kontakt_bearing::friction::skf2004::SkfTorque,
+        warnings: &mut Vec<String>,
+    ) {
+        self.skf_total_nmm = Some(t.total_nmm);
+        self.skf_rolling_nmm = Some(t.rolling_nmm);
+        self.skf_sliding_nmm = Some(t.sliding_nmm);
+        self.skf_drag_nmm = Some(t.drag_nmm);
+        warnings.extend(t.warnings.lines().into_iter().map(|w| format!("SKF: {w}")));
+    }
+
+    /// Record the Schaeffler M0 (and M0 + M1) of `c` at ν n = `nu_n` \[mm²/s · r/min\].
+    pub(crate) fn add_schaeffler(&mut self, c: &CatalogueSpec, nu_n: f64, env: &Envelope) {
+        if let Some(f0) = c.schaeffler_f0 {
+            let m = m0(f0, nu_n, env.mean_diameter_mm());
+            self.schaeffler_m0_nmm = Some(m);
+            if let (Some(f1), Some(p1)) = (c.schaeffler_f1, c.schaeffler_p1_n) {
+                self.schaeffler_total_nmm = Some(m + f1 * p1 * env.mean_diameter_mm());
+            }
+        }
+    }
+}
+
+/// The drag of `operating.drag` from the catalogue torques `cat`; `nu_n` = ν n
+/// \[mm²/s · r/min\] for the Schaeffler low-speed warning.
+///
+/// # Errors
+/// Field `operating.drag` when its catalogue term is not computed.
+pub(crate) fn drag_model(
+    op: &OperatingSpec,
+    cat: &CatalogueTorques,
+    nu_n: f64,
+    warnings: &mut Vec<String>,
+) -> Result<DragModel> {
+    let drag = match op.drag {
+        DragSpec::None => DragModel::None,
+        DragSpec::Skf => DragModel::Torque {
+            nmm: cat.skf_drag_nmm.ok_or_else(|| {
+                Error::invalid(
+                    "operating.drag",
+                    "skf",
+                    "\"none\" or \"schaeffler_m0\" unless [catalogue] has skf_series (the SKF drag term needs its series)",
+                )
+            })?,
+        },
+        DragSpec::SchaefflerM0 => DragModel::Torque {
+            nmm: cat.schaeffler_m0_nmm.ok_or_else(|| {
+                Error::invalid(
+                    "operating.drag",
+                    "schaeffler_m0",
+                    "\"none\" or \"skf\" unless [catalogue] has schaeffler_f0",
+                )
+            })?,
+        },
+    };
+    if op.drag == DragSpec::SchaefflerM0 && nu_n < 2000.0 {
+        warnings.push("Schaeffler M0: ν n < 2000, the catalogue's low-speed constant".into());
+    }
+
+    Ok(drag)
+}
+
+/// The raceway oil of a case: the loss model of `[lubricant]`, `[friction]` and
+/// `[operating]`, the rib lubrication, the friction law and ν \[mm²/s\] at the oil
+/// temperature (roller and ball bearings).
+pub(crate) struct RacewayOil {
+    /// The raceway loss model.
+    pub losses: RacewayLosses,
     /// The rib contacts' lubrication (`[lubricant]`).
     pub rib_lub: RibLubrication,
     /// The friction law (`[friction]`, film-dependent).
@@ -856,18 +932,16 @@ pub(crate) struct RacewayPlan {
     pub nu: f64,
 }
 
-/// Plan the raceway friction of `bearing` (tapered or cylindrical) from the case's
-/// tables.
+/// [`RacewayOil`] of the case's tables.
 ///
 /// # Errors
 /// [`Error::InvalidInput`] naming the case key (`lubricant.*`, `friction.*`,
 /// `operating.*`).
-pub(crate) fn plan_raceways(
+pub(crate) fn raceway_oil(
     op: &OperatingSpec,
     lub: &LubricantSpec,
     friction: Option<&FrictionSpec>,
-    bearing: &RollerBearing,
-) -> Result<RacewayPlan> {
+) -> Result<RacewayOil> {
     // each surface's roughness, not only the composite σ the raceways use (the rib
     // contacts check theirs later, without the case's key)
     for (i, r) in lub.roughness_mm.iter().enumerate() {
@@ -910,6 +984,46 @@ pub(crate) fn plan_raceways(
             other => format!("friction.{other}"),
         })
     })?;
+    Ok(RacewayOil {
+        losses,
+        rib_lub,
+        law,
+        nu,
+    })
+}
+
+/// The planned raceway friction of a case: the model of `bearing` with the raceway
+/// lubrication of `[lubricant]`, `[friction]` and `[operating]`, the rib lubrication and
+/// friction law, and the kinematic viscosity ν \[mm²/s\] at the oil temperature.
+pub(crate) struct RacewayPlan {
+    /// The raceway friction model.
+    pub model: BearingFrictionModel,
+    /// The rib contacts' lubrication (`[lubricant]`).
+    pub rib_lub: RibLubrication,
+    /// The friction law (`[friction]`, film-dependent).
+    pub law: kontakt::friction::FrictionLaw,
+    /// Kinematic viscosity at `lubricant.temperature_c` \[mm²/s\].
+    pub nu: f64,
+}
+
+/// Plan the raceway friction of `bearing` (tapered or cylindrical) from the case's
+/// tables.
+///
+/// # Errors
+/// [`Error::InvalidInput`] naming the case key (`lubricant.*`, `friction.*`,
+/// `operating.*`).
+pub(crate) fn plan_raceways(
+    op: &OperatingSpec,
+    lub: &LubricantSpec,
+    friction: Option<&FrictionSpec>,
+    bearing: &RollerBearing,
+) -> Result<RacewayPlan> {
+    let RacewayOil {
+        losses,
+        rib_lub,
+        law,
+        nu,
+    } = raceway_oil(op, lub, friction)?;
     Ok(RacewayPlan {
         model: BearingFrictionModel::new(bearing.clone(), losses)?,
         rib_lub,
@@ -1062,11 +1176,21 @@ impl FrictionReport {
                 }
             ),
             format!(
-                "  torque {:.2} N·mm = cone {:.2} (rolling {:.2}, sliding {:.2}) + cup {:.2} (rolling {:.2}, sliding {:.2}) + rib {:.2} + drag {:.2}",
+                "  torque {:.2} N·mm = {} {:.2} (rolling {:.2}, sliding {:.2}) + {} {:.2} (rolling {:.2}, sliding {:.2}) + rib {:.2} + drag {:.2}",
                 self.total_nmm,
+                if self.balls.is_empty() {
+                    "cone"
+                } else {
+                    "inner race"
+                },
                 self.cone_rolling_nmm + self.cone_sliding_nmm,
                 self.cone_rolling_nmm,
                 self.cone_sliding_nmm,
+                if self.balls.is_empty() {
+                    "cup"
+                } else {
+                    "outer race"
+                },
                 self.cup_rolling_nmm + self.cup_sliding_nmm,
                 self.cup_rolling_nmm,
                 self.cup_sliding_nmm,

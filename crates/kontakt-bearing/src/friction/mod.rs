@@ -10,6 +10,9 @@
 //! - [`raceway`]: the contact-based losses of one raceway slice (line-contact EHL film,
 //!   rolling resistance after Zhou & Hoeprich 1991 and Biboulet & Houpert 2010, sliding
 //!   traction of the mixed law), the first brick of the contact-by-contact torque.
+//! - [`ball`]: the contact-based friction of ball bearings: every ball's inner and outer
+//!   contact, spin and Heathcote's differential slip over the Hertz ellipse through the
+//!   friction integral, the Hamrock-Dowson film and the rolling resistance by strips.
 //!
 //! The catalogue models are fits, not contact mechanics: they are the baseline the
 //! contact-based friction is compared with. Their equations, constants, sources, ranges and
@@ -45,6 +48,7 @@
 //! about its axis, the same on both rings (the models do not split it).
 
 pub mod aihara;
+pub mod ball;
 pub mod crb_rib;
 pub mod raceway;
 pub mod schaeffler;

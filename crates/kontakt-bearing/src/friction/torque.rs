@@ -92,6 +92,22 @@ pub enum DragModel {
     },
 }
 
+impl DragModel {
+    /// The drag torque \[N·mm\] (0 for [`DragModel::None`]).
+    ///
+    /// # Errors
+    /// [`Error::InvalidInput`] naming `drag` unless the torque is finite and ≥ 0.
+    pub fn torque_nmm(&self) -> Result<f64> {
+        match *self {
+            DragModel::None => Ok(0.0),
+            DragModel::Torque { nmm } if nmm.is_finite() && nmm >= 0.0 => Ok(nmm),
+            DragModel::Torque { nmm } => {
+                Err(Error::invalid("drag", nmm, "a finite torque >= 0 N·mm"))
+            }
+        }
+    }
+}
+
 /// The losses of one roller \[W\] and its kinematics.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]

@@ -40,7 +40,16 @@ pub fn centre_height_mm(bearing: &RollerBearing) -> f64 {
 /// # Errors
 /// [`Error::InvalidInput`] naming `operating.oil_level_mm` with the valid range.
 pub fn oil_level(level_mm: f64, bearing: &RollerBearing) -> Result<f64> {
-    let centre = centre_height_mm(bearing);
+    oil_level_below(level_mm, centre_height_mm(bearing))
+}
+
+/// The oil bath level `level_mm` \[mm\] checked against the bearing's centre `centre` \[mm\]
+/// above the lowest point of the outer raceway (any bearing; a ball bearing's is
+/// `d_m/2 + (D/2) cos α₀`).
+///
+/// # Errors
+/// As [`oil_level`].
+pub fn oil_level_below(level_mm: f64, centre: f64) -> Result<f64> {
     if level_mm.is_finite() && (0.0..=centre).contains(&level_mm) {
         Ok(level_mm)
     } else {

@@ -29,12 +29,16 @@ use kontakt::{Error, Result};
 pub const MAX_SWEEP_POINTS: usize = 10_000;
 
 impl FrictionReport {
-    /// The rollers that carry load on a raceway (cone or cup load > 0).
+    /// The rollers that carry load on a raceway (cone or cup load > 0), or a ball bearing's
+    /// balls in the load zone (inner load > 0: at speed every ball presses on the outer
+    /// race by its centrifugal force).
     pub fn loaded_rollers(&self) -> usize {
+        let balls = self.balls.iter().filter(|b| b.inner_load_n > 0.0).count();
         self.rollers
             .iter()
             .filter(|r| r.cup_load_n > 0.0 || r.cone_load_n > 0.0)
             .count()
+            + balls
     }
 
     /// This point as a sweep row at the loads `force` \[N\].

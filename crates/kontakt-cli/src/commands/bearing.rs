@@ -348,13 +348,18 @@ fn clean(x: f64, scale: f64) -> Num {
 }
 
 /// One row per roller or ball: the report's `roller_loads` or `ball_loads` keys; with a
-/// friction section, its per-roller table too, in `<stem>.friction.csv` beside `path`, and
-/// a speed, load or temperature sweep's rows in `<stem>.friction_sweep.csv`.
+/// friction section, its per-roller (or per-ball) table too, in `<stem>.friction.csv`
+/// beside `path`, and a speed, load or temperature sweep's rows in
+/// `<stem>.friction_sweep.csv`.
 pub fn write_csv(path: &Path, r: &BearingReport) -> Result<()> {
     if let Some(f) = &r.friction {
         let friction_path = path.with_extension("friction.csv");
         let mut w = crate::commands::CsvFile::create(&friction_path)?;
         for row in &f.rollers {
+            w.serialize(row)?;
+        }
+        // A ball bearing's friction rows (its `rollers` are empty).
+        for row in &f.balls {
             w.serialize(row)?;
         }
         w.finish()?;

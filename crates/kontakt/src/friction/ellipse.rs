@@ -186,6 +186,39 @@ pub fn ellipse_friction(
     }
 }
 
+/// [`ellipse_friction`] for a sliding field that also varies with the square of the
+/// grid-frame y: `v(x, y) = field.sliding_at(x, y) + curvature · y²`, `curvature` \[1/(mm·s)\]
+/// (the differential slip across a curved contact, Heathcote 1921: a ball in its groove).
+/// The sums run through the general loop of the same rule; `curvature = [0, 0]` is
+/// [`ellipse_friction`] itself. Does not allocate.
+///
+/// # Errors
+/// Those of [`ellipse_friction`], and field `curvature` (not finite).
+pub fn ellipse_friction_curved(
+    semi_axes: [f64; 2],
+    orientation: f64,
+    max_pressure: f64,
+    field: &VelocityField,
+    curvature: [f64; 2],
+    law: &CellLaw,
+    rule: &EllipseRule,
+) -> Result<GridFriction> {
+    if !curvature.iter().all(|c| c.is_finite()) {
+        return Err(Error::invalid(
+            "curvature",
+            format!("{curvature:?}"),
+            "finite coefficients in 1/(mm·s)",
+        ));
+    }
+    match checked(semi_axes, orientation, max_pressure, field)? {
+        Some(mut map) => {
+            map.q = curvature;
+            mapped_friction(&map, semi_axes, max_pressure, law, rule)
+        }
+        None => Ok(GridFriction::default()),
+    }
+}
+
 /// The inputs of [`ellipse_friction`] checked, and the map of the unit disc onto the
 /// ellipse with the sliding field on it; `None` where the friction is zero (no pressure,
 /// a degenerate ellipse).
@@ -234,6 +267,9 @@ struct DiscMap {
     o: [f64; 2],
     /// Its change per unit of u and w: `[∂v_x/∂u, ∂v_x/∂w, ∂v_y/∂u, ∂v_y/∂w]` \[mm/s\].
     m: [f64; 4],
+    /// The sliding's part in the square of the grid-frame y, `v += q y²` \[1/(mm·s)\]
+    /// (zero but for [`ellipse_friction_curved`]).
+    q: [f64; 2],
 }
 
 impl DiscMap {
@@ -251,6 +287,7 @@ impl DiscMap {
                 xu * dx[1] + yu * dy[1],
                 xw * dx[1] + yw * dy[1],
             ],
+            q: [0.0; 2],
         }
     }
 
@@ -295,9 +332,10 @@ fn mapped_friction(
     let [vxu, vxw, vyu, vyw] = map.m;
     let (mb, eps2) = (law.boundary_coefficient(), law.regularisation_squared());
     let fluid = law.has_fluid();
+    let q = map.q;
     // Sums over the nodes of w·k̂·(v_x, v_y, u v_y − … , |v|²) with k = p₀ k̂ for the boundary
     // part; the moment x τ_y − y τ_x is summed in the unit-disc coordinates u, w.
-    if !fluid {
+    if !fluid && q == [0.0; 2] {
         let [fx, fy, m, pw] = boundary_sums(
             rule,
             [o[0], vxu, vxw],
@@ -324,8 +362,9 @@ fn mapped_friction(
     );
     for k in 0..n {
         let (u, w) = (ux[k], uy[k]);
-        let vx = o[0] + u * vxu + w * vxw;
-        let vy = o[1] + u * vyu + w * vyw;
+        let y = yu * u + yw * w;
+        let vx = o[0] + u * vxu + w * vxw + q[0] * y * y;
+        let vy = o[1] + u * vyu + w * vyw + q[1] * y * y;
         let s2 = vx * vx + vy * vy;
         let d = (s2 + eps2).sqrt();
         // The weight carries the pressure's share: the boundary part is linear in p.

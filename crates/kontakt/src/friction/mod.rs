@@ -29,7 +29,8 @@ pub mod integral;
 pub mod law;
 
 pub use ellipse::{
-    EllipseRule, HertzFrictionRules, ellipse_friction, sliding_pole_radius, sliding_smoothness,
+    EllipseRule, HertzFrictionRules, ellipse_friction, ellipse_friction_curved,
+    sliding_pole_radius, sliding_smoothness,
 };
 pub use integral::{
     BINNED_TOLERANCE, BLOCK_SHAPES, ContactFriction, GridFriction, binning_blocks, binning_error,
