@@ -189,7 +189,7 @@ def test_the_friction_torque_is_the_case_reports_at_its_equilibrium():
     1e-9; Mz is the friction moment on the inner ring (minus the report's driving torque
     on it), the power is M |Δω|, the breakdown adds up; equal speeds give the starting
     torque, reported and not applied."""
-    report = kt.run(FRICTION)
+    report = kt.run(FRICTION).to_dict()
     f = report["friction"]
     e = kt.BearingElement(FRICTION)
     r = e.evaluate(np.array(report["displacement_mm"] + report["tilt_rad"]))
