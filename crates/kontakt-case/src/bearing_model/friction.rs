@@ -49,7 +49,7 @@ use crate::bearing_friction::{
     DragSpec, OperatingSpec, RacewayOil, RacewayPlan, crb_rib_model, crb_rib_values, oil_supply,
     plan_raceways, raceway_oil, rib_model, rib_powers, skf_bearing,
 };
-use kontakt::bearing::{RibFrictionModel, RollerRibLoad};
+use kontakt::bearing::{PressureModel, RibFrictionModel, RollerRibLoad};
 use kontakt::{Error, Result};
 use kontakt_bearing::friction::ball::{
     BallAttitude, BallContacts, BallFrictionModel, BallFrictionOperating,
@@ -203,6 +203,7 @@ enum RibModel {
     /// A tapered roller's large end on the cone's rib (the rib study's pair).
     Tapered {
         model: Box<RibFrictionModel>,
+        pressure: PressureModel,
         loads: Vec<RollerRibLoad>,
     },
     /// A cylindrical roller's ends on the ribs of its arrangement.
@@ -268,11 +269,15 @@ impl FrictionPlan {
         let rib = match rib_solver.map(|s| (s.rib_pair(), s.arrangement())) {
             Some((Some(pair), _)) => Some(RibModel::Tapered {
                 model: Box::new(rib_model(pair, bearing, law, rib_lub)?),
+                pressure: op.rib_pressure,
                 loads: Vec::with_capacity(bearing.rollers),
             }),
-            Some((None, Some(_))) => Some(RibModel::Cylindrical(Box::new(crb_rib_model(
-                bearing, law, rib_lub,
-            )?))),
+            Some((None, Some(_))) => {
+                crate::bearing_friction::crb_rib_pressure(op)?;
+                Some(RibModel::Cylindrical(Box::new(crb_rib_model(
+                    bearing, law, rib_lub,
+                )?)))
+            }
             _ => None,
         }
         .map(|model| RibPlan {
@@ -348,8 +353,12 @@ impl FrictionPlan {
                 }
                 if let Some(r) = &mut p.rib {
                     match &mut r.model {
-                        RibModel::Tapered { model, loads } => {
-                            rib_powers(model, s, speeds, loads, &mut r.values)?;
+                        RibModel::Tapered {
+                            model,
+                            pressure,
+                            loads,
+                        } => {
+                            rib_powers(model, *pressure, s, speeds, loads, &mut r.values)?;
                         }
                         RibModel::Cylindrical(model) => {
                             crb_rib_values(model, s, speeds, &mut r.values)?;
