@@ -70,7 +70,7 @@ pub fn zip(entries: &[(&str, &[u8])]) -> Result<Vec<u8>> {
 /// element it is.
 ///
 /// # Errors
-/// Those of [`model_description`] (the case's, named by its key) and [`zip`].
+/// Those of [`model_description`] (the case's, named by its key) and [`zip()`](fn@zip).
 pub fn fmu(case: &str, library: &[u8]) -> Result<(Vec<u8>, Kind)> {
     let (description, kind) = model_description(case)?;
     let binary = binary_path();
