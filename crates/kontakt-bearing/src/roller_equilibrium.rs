@@ -83,7 +83,10 @@ pub use rib_law::{RibModel, RibTable, RibTableRange, tabulate};
 /// (`kontakt::bearing::roller_rib`, Wirsching et al. 2020): the roller's large-end face, the
 /// cone's rib and the height of their contact point above the roller axis.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 pub struct RibContact {
     /// The roller's end face (sphere or torus), mm.
     pub face: FaceShape,
@@ -96,7 +99,10 @@ pub struct RibContact {
 /// Which rings of a cylindrical roller bearing have ribs (ISO 15 / catalogue type codes):
 /// they decide whether an axial load passes through the roller end/rib contacts.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(rename_all = "lowercase"))]
 pub enum RibArrangement {
     /// Outer ring ribs at both ends, none on the inner ring: no axial load.
@@ -149,7 +155,10 @@ impl RibArrangement {
 /// whose face is straight in the axial plane at the height h from the roller axis (toward
 /// the rib's ring); the rib's normal there leans by `asin(h/r_R)` from the roller axis.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 pub struct CylindricalRibs {
     /// The end face's sphere radius r_R, mm (>= L_we/2).
     pub face_radius_mm: f64,
@@ -163,7 +172,10 @@ pub struct CylindricalRibs {
 
 /// One roller of the rib-contact model at the solution.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 pub struct RibRollerLoad {
     /// Azimuth ψ_j, rad.
     pub azimuth_rad: f64,

@@ -84,7 +84,7 @@ pub const STEEL_CONTACT_MODULUS_MPA: f64 = 210_000.0 / (2.0 * (1.0 - 0.09));
 pub const MAX_BEARING_SLICES: usize = 1_000_000;
 
 /// A whole-bearing case, as read from TOML.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct BearingCase {
     /// Optional label echoed in the report.
@@ -116,8 +116,9 @@ pub struct BearingCase {
 
 /// `[bearing]`: the type (`type = "cylindrical" | "tapered" | "thrust"`) and its internal
 /// geometry.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(tag = "type", rename_all = "snake_case")]
+#[schemars(transform = crate::bearing_design::tapered_boundary_schema)]
 pub enum BearingSpec {
     /// A cylindrical roller bearing (contact angle 0; carries no axial load).
     Cylindrical(RollerSpec),
@@ -136,8 +137,9 @@ pub enum BearingSpec {
 /// The internal geometry of a ball bearing (`docs/bearing-model.md` §8). Lengths in mm,
 /// angles in degrees. Each groove is given by its osculation `f = r/D` or by its curvature
 /// radius r, one of the two.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
+#[schemars(transform = crate::bearing_design::boundary_schema)]
 pub struct BallSpec {
     /// Pitch diameter d_m through the ball centres, mm.
     pub pitch_diameter_mm: f64,
@@ -189,8 +191,9 @@ pub struct BallSpec {
 }
 
 /// The internal geometry of a roller bearing. Lengths in mm, angles in degrees.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
+#[schemars(transform = crate::bearing_design::boundary_schema)]
 pub struct RollerSpec {
     /// Pitch diameter d_m through the roller centres (thrust: the mean diameter of the
     /// roller path), mm.
@@ -267,7 +270,7 @@ fn default_slices() -> usize {
 /// A roller or raceway profile (`kind = ...`), drops in mm at the axial position from the
 /// roller centre; the formulas are those of `docs/bearing-model.md` §4. `length_mm`
 /// defaults to the roller length, `contact_modulus_mpa` to steel on steel (115 385 MPa).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
 pub enum ProfileSpec {
     /// No profile.
@@ -440,7 +443,7 @@ impl ProfileSpec {
 
 /// `[load]`: forces and moments on the inner ring, and the degrees of freedom held at a
 /// prescribed displacement instead.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct BearingLoadSpec {
     /// `[Fx, Fy, Fz]`, N (default zero); z is the bearing axis.
@@ -457,7 +460,7 @@ pub struct BearingLoadSpec {
 
 /// `[load.prescribed]`: a displacement (mm) or tilt (rad) per degree of freedom; absent
 /// ones are force-controlled.
-#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct PrescribedSpec {
     /// δx, mm.
