@@ -53,10 +53,7 @@ use std::f64::consts::PI;
 
 /// Which contact holds the ball's gyroscopic moment.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum RaceControl {
     /// Outer-race control (Jones 1960): no spin about the outer contact normal, and the

@@ -55,10 +55,7 @@ pub const DISPLACEMENT_NAMES: [&str; 5] = ["dx_mm", "dy_mm", "dz_mm", "tilt_x_ra
 /// One degree of freedom of the inner ring: a given force (N) or moment (N·mm), or a
 /// given displacement (mm) or tilt (rad).
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Dof {
     /// The applied force or moment; the displacement is solved for.
@@ -69,10 +66,7 @@ pub enum Dof {
 
 /// The load case of the inner ring: `(x, y, z, tilt about x, tilt about y)`.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RingLoad {
     /// The five degrees of freedom in the order x, y, z, θx, θy.
     pub dofs: [Dof; 5],
@@ -104,10 +98,7 @@ impl RingLoad {
 
 /// The loads of one roller at the solution.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RollerLoad {
     /// Azimuth ψ_j, rad.
     pub azimuth_rad: f64,

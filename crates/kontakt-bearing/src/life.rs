@@ -294,10 +294,7 @@ pub fn basic_rating_life(c: f64, p: f64, contact: Contact) -> f64 {
 
 /// Which ring rotates relative to the load (the lamina life's rotating-ring exponent).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum RotatingRing {
     /// The inner ring (shaft washer) rotates, the outer ring is stationary.

@@ -33,10 +33,7 @@ pub const POINT_EXPONENT: f64 = 1.5;
 
 /// The pair of Sjövall integrals (or their finite-Z sums) at one ε.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct LoadZoneIntegrals {
     /// Radial integral J_r(ε), dimensionless.
     pub j_r: f64,

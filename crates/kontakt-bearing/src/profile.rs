@@ -21,10 +21,7 @@ use kontakt::{Error, Result};
 
 /// A roller or raceway profile. Lengths in mm, loads in N, moduli in MPa.
 #[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case", tag = "kind"))]
 pub enum Profile {
     /// No profile: `drop(x) = 0`.
@@ -157,10 +154,7 @@ pub enum Profile {
 /// that the profile is symmetric and zero at the centre); beyond the last node the drop
 /// is the last node's value.
 #[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(try_from = "TableData", into = "TableData"))]
 pub struct TabulatedProfile {
     x_mm: Vec<f64>,
@@ -171,7 +165,7 @@ pub struct TabulatedProfile {
 /// The serialized form of a [`TabulatedProfile`]: the table alone, validated and its
 /// slopes recomputed when read.
 #[cfg(feature = "serde")]
-#[derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)]
+#[derive(serde::Serialize, serde::Deserialize)]
 #[serde(deny_unknown_fields)]
 struct TableData {
     x_mm: Vec<f64>,

@@ -83,10 +83,7 @@ pub use rib_law::{RibModel, RibTable, RibTableRange, tabulate};
 /// (`kontakt::bearing::roller_rib`, Wirsching et al. 2020): the roller's large-end face, the
 /// cone's rib and the height of their contact point above the roller axis.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RibContact {
     /// The roller's end face (sphere or torus), mm.
     pub face: FaceShape,
@@ -99,10 +96,7 @@ pub struct RibContact {
 /// Which rings of a cylindrical roller bearing have ribs (ISO 15 / catalogue type codes):
 /// they decide whether an axial load passes through the roller end/rib contacts.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "lowercase"))]
 pub enum RibArrangement {
     /// Outer ring ribs at both ends, none on the inner ring: no axial load.
@@ -155,10 +149,7 @@ impl RibArrangement {
 /// whose face is straight in the axial plane at the height h from the roller axis (toward
 /// the rib's ring); the rib's normal there leans by `asin(h/r_R)` from the roller axis.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct CylindricalRibs {
     /// The end face's sphere radius r_R, mm (>= L_we/2).
     pub face_radius_mm: f64,
@@ -172,10 +163,7 @@ pub struct CylindricalRibs {
 
 /// One roller of the rib-contact model at the solution.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RibRollerLoad {
     /// Azimuth ψ_j, rad.
     pub azimuth_rad: f64,

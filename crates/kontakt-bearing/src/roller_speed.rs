@@ -33,10 +33,7 @@ pub const STEEL_DENSITY_KG_M3: f64 = 7850.0;
 
 /// One roller's inertia for its centrifugal force.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RollerInertia {
     /// The roller's mass m, N·s²/mm (kg × 10⁻³).
     pub mass_n_s2_per_mm: f64,
@@ -49,10 +46,7 @@ pub struct RollerInertia {
 
 /// The centrifugal force of every roller at one pair of ring speeds.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RollerCentrifugal {
     /// The roller's mass and centre.
     pub inertia: RollerInertia,

@@ -33,10 +33,7 @@ pub const MAX_RING_SPEED_RAD_S: f64 = 2.0e5;
 /// The speeds of the two rings about the bearing axis +z, rad/s (positive counter-clockwise
 /// seen from +z). The default is at rest.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RingSpeeds {
     /// Inner-ring speed ω_i, rad/s.
     pub inner_rad_s: f64,

@@ -54,10 +54,7 @@ pub const RIB_FILM_FACTOR: f64 = 1.25;
 
 /// The tapered roller bearing in Aihara's simplified model.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct AiharaBearing {
     /// Number of rollers z, ≥ 1.
     pub rollers: u32,
@@ -81,10 +78,7 @@ pub struct AiharaBearing {
 
 /// The lubricant properties the formula needs, at the operating temperature.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct AiharaLubricant {
     /// Dynamic viscosity at ambient pressure η0 \[MPa·s\].
     pub viscosity_mpa_s: f64,

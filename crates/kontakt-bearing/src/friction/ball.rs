@@ -94,10 +94,7 @@ pub const ROLLING_STRIPS: usize = 12;
 
 /// Which contact the ball's axis is set by (the spin-free contact).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum BallAttitude {
     /// Outer-race control (Jones 1960), as the at-speed model assumes

@@ -63,10 +63,7 @@ pub const RPM_PER_RAD_S: f64 = 60.0 / (2.0 * std::f64::consts::PI);
 
 /// The boundary envelope of a bearing (catalogue dimensions, mm).
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct Envelope {
     /// Bore diameter d \[mm\].
     pub bore_mm: f64,
@@ -123,10 +120,7 @@ impl Envelope {
 
 /// How the bearing is lubricated; the catalogue models differ by it.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Lubrication {
     /// Oil bath with the static oil level `level_mm` above the lowest point of the outer
@@ -147,10 +141,7 @@ pub enum Lubrication {
 
 /// One operating point of a bearing for the catalogue models.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct OperatingPoint {
     /// Speed of the rotating ring relative to the other \[rad/s\], ≥ 0; 0 is the
     /// starting (breakaway) condition.

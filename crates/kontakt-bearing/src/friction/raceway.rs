@@ -39,10 +39,7 @@ pub const TRACTION_POINTS: usize = 32;
 
 /// One slice of a roller-raceway line contact.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RacewaySlice {
     /// Load per unit length w = slice load / slice width \[N/mm\], finite and ≥ 0 (0: an
     /// unloaded slice, no losses).

@@ -34,10 +34,7 @@ pub const LOW_SPEED_JUMP: f64 = 0.007_936_839_915_898_775;
 
 /// The catalogue bearing factors, supplied by the caller from the Schaeffler catalogue.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SchaefflerFactors {
     /// Bearing factor for the speed-dependent torque f0 (series and lubrication method).
     pub f0: f64,

@@ -38,10 +38,7 @@ use kontakt::{Error, Result};
 
 /// Where a table row comes from.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Provenance {
     /// Two independent public transcriptions of the catalogue table agree on the row.
@@ -53,10 +50,7 @@ pub enum Provenance {
 /// The geometric constants of one bearing series (SKF catalogue "Table 2b"/"Table 1b",
 /// geometric constants for rolling and sliding frictional moments). Unused ones are 0.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct GeometryConstants {
     /// R1 (rolling).
     pub r1: f64,
@@ -92,7 +86,7 @@ macro_rules! series {
     ($(#[$doc:meta])* $name:ident { $($(#[$vdoc:meta])* $variant:ident = $label:literal => $consts:expr,)+ }) => {
         $(#[$doc])*
         #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-        #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema))]
+        #[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
         pub enum $name {
             $($(#[$vdoc])* $variant,)+
         }
@@ -269,10 +263,7 @@ series! {
 
 /// The bearing for the SKF model: type, series and the type's extra catalogue datum.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum SkfBearing {
     /// Single row tapered roller bearing; `y` is the axial load factor Y of the product
@@ -350,10 +341,7 @@ impl SkfBearing {
 
 /// The base oil, for μ_EHL of the ball bearings.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum BaseOil {
     /// Mineral oil (μ_EHL = 0.05).
@@ -367,10 +355,7 @@ pub enum BaseOil {
 
 /// The model's free coefficients, with the catalogue's values as defaults.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct SkfOptions {
     /// Boundary sliding coefficient μ_bl while running (0.12, SKF as quoted by Manjunath
     /// et al. 2023; the 2005 catalogue writes "generally ≈ 0.15").

@@ -13,10 +13,7 @@ pub const STEEL_DENSITY_KG_M3: f64 = 7850.0;
 
 /// Which kind of ball bearing.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum BallBearingKind {
     /// Deep-groove ball bearing (60xx, 62xx, ...): symmetric grooves, given by its diametral

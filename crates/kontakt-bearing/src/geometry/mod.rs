@@ -27,10 +27,7 @@ use std::f64::consts::{FRAC_PI_2, PI};
 
 /// Which kind of roller bearing; decides the valid contact angles.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum RollerBearingKind {
     /// Cylindrical roller bearing: both contact angles 0; carries no axial load (the rib
@@ -53,10 +50,7 @@ pub const ISO_ROLLER_STIFFNESS: f64 = 35_948.0;
 /// [`RollerBearing::tapered`] or [`RollerBearing::thrust`] and adjust the public fields;
 /// [`RollerBearing::validate`] (called by the solver) checks them.
 #[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(
-    feature = "serde",
-    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
-)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub struct RollerBearing {
     /// The kind of bearing.
     pub kind: RollerBearingKind,
