@@ -231,9 +231,10 @@ pub(crate) fn tapered_boundary_schema(schema: &mut schemars::Schema) {
     let Some(serde_json::Value::Array(variants)) = schema.get_mut("oneOf") else {
         return;
     };
-    let tapered = variants
-        .iter_mut()
-        .find(|v| v.pointer("/properties/type/const") == Some(&"tapered".into()));
+    let tapered = variants.iter_mut().find(|v| {
+        let tag = |p| v.pointer(p) == Some(&"tapered".into());
+        tag("/properties/type/const") || tag("/properties/type/enum/0")
+    });
     if let Some(serde_json::Value::Object(tapered)) = tapered {
         tapered.insert(
             "if".into(),

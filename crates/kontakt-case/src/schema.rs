@@ -10,7 +10,9 @@
 //! - a `[bearing] boundary` generates the internal keys that it makes optional
 //!   ([`crate::bearing_design`]; see [`crate::bearing_design::boundary_schema`]).
 //!
-//! Draft 7, the draft that editors' TOML language servers (Taplo) and most validators read.
+//! Draft 7 (widely read by validators and editors), in draft-4 words where it costs nothing
+//! (`enum: [x]` for `const: x`): Taplo, the TOML language server of most editors, documents
+//! draft 4; it ignores the one draft-7 rule (`if`/`then`, a tapered bearing's `e`).
 //! JSON has no infinity: where a case file writes `inf` (a flat body's radius), a validator
 //! that converts TOML to JSON has to stand in the largest finite number.
 
@@ -52,6 +54,7 @@ pub fn case_schema() -> Value {
     let mut generator = SchemaSettings::draft07()
         .for_deserialize()
         .with_transform(RecursiveTransform(unescape_brackets))
+        .with_transform(RecursiveTransform(const_as_enum))
         .into_generator();
     let branches: Vec<Value> = Case::METHODS
         .iter()
@@ -60,7 +63,7 @@ pub fn case_schema() -> Value {
             let mut branch = json!({
                 "title": format!("method = \"{method}\""),
                 "allOf": [schema.to_value()],
-                "properties": { "method": { "const": method } },
+                "properties": { "method": { "enum": [method] } },
             });
             // `method` absent reads as a Hertz case; every other method names itself.
             if method != "hertz" {
@@ -92,6 +95,14 @@ pub fn case_schema() -> Value {
     })
 }
 
+/// `const: x` as `enum: [x]`, the same constraint in a form that draft-4 readers (Taplo's
+/// completion) understand too.
+fn const_as_enum(schema: &mut schemars::Schema) {
+    if let Some(value) = schema.remove("const") {
+        schema.insert("enum".into(), Value::Array(vec![value]));
+    }
+}
+
 /// Doc comments escape the brackets of units for rustdoc (`\[mm\]`) and link items
 /// (``[`Name`]``); a description shows them plain (`[mm]`, `` `Name` ``).
 fn unescape_brackets(schema: &mut schemars::Schema) {
@@ -115,7 +126,7 @@ mod tests {
             .as_array()
             .into_iter()
             .flatten()
-            .filter_map(|b| b["properties"]["method"]["const"].as_str())
+            .filter_map(|b| b["properties"]["method"]["enum"][0].as_str())
             .collect();
         assert_eq!(titles, Case::METHODS);
     }

@@ -74,7 +74,7 @@ fn messages(e: &jsonschema::ValidationError<'_>, out: &mut Vec<String>) {
         K::OneOfNotValid { context } | K::AnyOf { context } => {
             let before = out.len();
             for e in context.iter().flatten() {
-                if !matches!(e.kind(), K::Constant { .. }) {
+                if !matches!(e.kind(), K::Constant { .. } | K::Enum { .. }) {
                     messages(e, out);
                 }
             }
@@ -323,7 +323,7 @@ fn method_is_the_tagged_union_of_the_reader() {
         .as_array()
         .unwrap()
         .iter()
-        .map(|b| b["properties"]["method"]["const"].as_str().unwrap())
+        .map(|b| b["properties"]["method"]["enum"][0].as_str().unwrap())
         .collect();
     assert_eq!(methods, Case::METHODS);
     let validator = validator();

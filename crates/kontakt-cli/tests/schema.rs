@@ -10,7 +10,11 @@ use support::kontakt;
 #[test]
 fn schema_prints_the_checked_in_case_schema() {
     let out = kontakt().arg("schema").output().unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let printed = String::from_utf8(out.stdout).unwrap();
     let value: serde_json::Value = serde_json::from_str(&printed).unwrap();
     assert_eq!(value, kontakt_case::case_schema());
