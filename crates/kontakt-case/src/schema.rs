@@ -8,7 +8,7 @@
 //!   a `oneOf` with one branch per entry of [`crate::Case::METHODS`], each fixing `method`
 //!   to its name (required, except for `"hertz"`, the default when `method` is absent);
 //! - a `[bearing] boundary` generates the internal keys that it makes optional
-//!   ([`crate::bearing_design`]; see [`crate::bearing_design::boundary_schema`]).
+//!   ([`crate::bearing_design`]).
 //!
 //! Draft 7 (widely read by validators and editors), in draft-4 words where it costs nothing
 //! (`enum: [x]` for `const: x`): Taplo, the TOML language server of most editors, documents

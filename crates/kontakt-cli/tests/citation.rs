@@ -27,10 +27,7 @@ fn citation_matches_the_workspace() {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../CITATION.cff");
     let cff = std::fs::read_to_string(path).unwrap();
     assert_eq!(value(&cff, "version"), env!("CARGO_PKG_VERSION"));
-    assert_eq!(
-        value(&cff, "repository-code"),
-        env!("CARGO_PKG_REPOSITORY")
-    );
+    assert_eq!(value(&cff, "repository-code"), env!("CARGO_PKG_REPOSITORY"));
     assert_eq!(
         list(&cff, "license").join(" OR "),
         env!("CARGO_PKG_LICENSE"),
