@@ -13,6 +13,10 @@
 
 #![allow(clippy::unwrap_used)] // tests: a panic is a failure with its message
 
+#[allow(dead_code)] // this test walks the examples only
+#[path = "support/toml_keys.rs"]
+mod toml_keys;
+
 use kontakt_case::{Case, case_schema};
 use std::path::{Path, PathBuf};
 use toml::{Table, Value};
@@ -23,12 +27,7 @@ fn root() -> PathBuf {
 
 /// The example case files, `examples/*.toml`, sorted.
 fn examples() -> Vec<PathBuf> {
-    let mut files: Vec<PathBuf> = std::fs::read_dir(root().join("examples"))
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-        .collect();
-    files.sort();
+    let files = toml_keys::example_files();
     assert!(files.len() >= 30, "examples/*.toml: {} files", files.len());
     files
 }
@@ -102,19 +101,34 @@ fn schema_file_is_up_to_date() {
         return;
     }
     let committed = std::fs::read_to_string(&path).unwrap_or_default();
-    if committed != generated {
-        let line = committed
-            .lines()
-            .zip(generated.lines())
-            .position(|(a, b)| a != b)
-            .unwrap_or_else(|| committed.lines().count().min(generated.lines().count()))
-            + 1;
-        panic!(
-            "docs/kontakt-case.schema.json is out of date with the case types (first \
-             difference at line {line}). Refresh it with: \
-             KONTAKT_BLESS=1 cargo test --workspace --test case_schema"
-        );
+    if committed == generated {
+        return;
     }
+    // Name the definitions (or the top-level keys) that differ.
+    let old: serde_json::Value = serde_json::from_str(&committed).unwrap_or_default();
+    let new = case_schema();
+    let differs = |a: &serde_json::Value, b: &serde_json::Value| -> Vec<String> {
+        let (a, b) = (a.as_object(), b.as_object());
+        let keys: std::collections::BTreeSet<&String> =
+            a.into_iter().chain(b).flat_map(|o| o.keys()).collect();
+        keys.into_iter()
+            .filter(|k| a.and_then(|o| o.get(*k)) != b.and_then(|o| o.get(*k)))
+            .cloned()
+            .collect()
+    };
+    let mut changed = differs(&old["definitions"], &new["definitions"]);
+    if changed.is_empty() {
+        changed = differs(&old, &new);
+    }
+    panic!(
+        "docs/kontakt-case.schema.json is out of date with the case types (changed: {}). \
+         Refresh it with: KONTAKT_BLESS=1 cargo test --workspace --test case_schema",
+        if changed.is_empty() {
+            "its text".to_string()
+        } else {
+            changed.join(", ")
+        }
+    );
 }
 
 #[test]
