@@ -114,20 +114,3 @@ fn unescape_brackets(schema: &mut schemars::Schema) {
             .replace("`]", "`");
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn every_method_has_a_branch() {
-        let schema = case_schema();
-        let titles: Vec<&str> = schema["oneOf"]
-            .as_array()
-            .into_iter()
-            .flatten()
-            .filter_map(|b| b["properties"]["method"]["enum"][0].as_str())
-            .collect();
-        assert_eq!(titles, Case::METHODS);
-    }
-}
