@@ -249,10 +249,9 @@ pub struct RollerSpec {
     /// series, the rib load from the roller's force balance) or `"rib_contact"` (every
     /// roller in its own force and moment balance, the rib a Hertz contact;
     /// `docs/bearing-model.md` §15; needs `[bearing.rib_contact]`).
-    #[serde(
-        default,
-        skip_serializing_if = "crate::bearing_rib::RollerModel::is_iso"
-    )]
+    // Serialized even at its default: the unknown-key check compares the file's keys with
+    // what was read, so a skipped default would refuse `roller_model = "iso"` written out.
+    #[serde(default)]
     pub roller_model: crate::bearing_rib::RollerModel,
     /// With `roller_model = "rib_contact"`: the roller end/rib pair.
     #[serde(default, skip_serializing_if = "Option::is_none")]
