@@ -84,7 +84,7 @@ pub const STEEL_CONTACT_MODULUS_MPA: f64 = 210_000.0 / (2.0 * (1.0 - 0.09));
 pub const MAX_BEARING_SLICES: usize = 1_000_000;
 
 /// A whole-bearing case, as read from TOML.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct BearingCase {
     /// Optional label echoed in the report.
@@ -116,8 +116,9 @@ pub struct BearingCase {
 
 /// `[bearing]`: the type (`type = "cylindrical" | "tapered" | "thrust"`) and its internal
 /// geometry.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(tag = "type", rename_all = "snake_case")]
+#[schemars(transform = crate::bearing_design::tapered_boundary_schema)]
 pub enum BearingSpec {
     /// A cylindrical roller bearing (contact angle 0; carries no axial load).
     Cylindrical(RollerSpec),
@@ -136,8 +137,9 @@ pub enum BearingSpec {
 /// The internal geometry of a ball bearing (`docs/bearing-model.md` §8). Lengths in mm,
 /// angles in degrees. Each groove is given by its osculation `f = r/D` or by its curvature
 /// radius r, one of the two.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
+#[schemars(transform = crate::bearing_design::boundary_schema)]
 pub struct BallSpec {
     /// Pitch diameter d_m through the ball centres, mm.
     pub pitch_diameter_mm: f64,
@@ -189,8 +191,9 @@ pub struct BallSpec {
 }
 
 /// The internal geometry of a roller bearing. Lengths in mm, angles in degrees.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
+#[schemars(transform = crate::bearing_design::boundary_schema)]
 pub struct RollerSpec {
     /// Pitch diameter d_m through the roller centres (thrust: the mean diameter of the
     /// roller path), mm.
@@ -246,10 +249,9 @@ pub struct RollerSpec {
     /// series, the rib load from the roller's force balance) or `"rib_contact"` (every
     /// roller in its own force and moment balance, the rib a Hertz contact;
     /// `docs/bearing-model.md` §15; needs `[bearing.rib_contact]`).
-    #[serde(
-        default,
-        skip_serializing_if = "crate::bearing_rib::RollerModel::is_iso"
-    )]
+    // Serialized even at its default: the unknown-key check compares the file's keys with
+    // what was read, so a skipped default would refuse `roller_model = "iso"` written out.
+    #[serde(default)]
     pub roller_model: crate::bearing_rib::RollerModel,
     /// With `roller_model = "rib_contact"`: the roller end/rib pair.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -267,7 +269,7 @@ fn default_slices() -> usize {
 /// A roller or raceway profile (`kind = ...`), drops in mm at the axial position from the
 /// roller centre; the formulas are those of `docs/bearing-model.md` §4. `length_mm`
 /// defaults to the roller length, `contact_modulus_mpa` to steel on steel (115 385 MPa).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
 pub enum ProfileSpec {
     /// No profile.
@@ -440,7 +442,7 @@ impl ProfileSpec {
 
 /// `[load]`: forces and moments on the inner ring, and the degrees of freedom held at a
 /// prescribed displacement instead.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct BearingLoadSpec {
     /// `[Fx, Fy, Fz]`, N (default zero); z is the bearing axis.
@@ -457,7 +459,7 @@ pub struct BearingLoadSpec {
 
 /// `[load.prescribed]`: a displacement (mm) or tilt (rad) per degree of freedom; absent
 /// ones are force-controlled.
-#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct PrescribedSpec {
     /// δx, mm.

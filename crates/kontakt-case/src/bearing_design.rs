@@ -17,7 +17,7 @@ use kontakt_bearing::geometry::design::{Boundary, DesignKind, DesignRules, Given
 use serde::{Deserialize, Serialize};
 
 /// `[bearing] boundary`: the boundary dimensions, mm, and a tapered bearing's factor e.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct BoundarySpec {
     /// Bore d, mm.
@@ -189,4 +189,63 @@ pub(crate) fn expanded(mut table: toml::Table) -> Result<toml::Table> {
         }
     }
     Ok(table)
+}
+
+/// The keys of a `[bearing]` table that a `boundary` generates where absent
+/// ([`expanded`]): required without a boundary, optional with one.
+const GENERATED_KEYS: [&str; 6] = [
+    "pitch_diameter_mm",
+    "rollers",
+    "balls",
+    "roller_diameter_mm",
+    "ball_diameter_mm",
+    "roller_length_mm",
+];
+
+/// The JSON Schema of a roller or ball table (`#[schemars(transform)]` of
+/// `bearing_case::RollerSpec`, `BallSpec`) as the reader takes it: the keys a `boundary`
+/// generates are required unless `boundary` is given (`anyOf`).
+pub(crate) fn boundary_schema(schema: &mut schemars::Schema) {
+    let Some(serde_json::Value::Array(required)) = schema.get_mut("required") else {
+        return;
+    };
+    let (generated, kept): (Vec<_>, Vec<_>) = required
+        .drain(..)
+        .partition(|k| k.as_str().is_some_and(|k| GENERATED_KEYS.contains(&k)));
+    *required = kept;
+    if required.is_empty() {
+        schema.remove("required");
+    }
+    if !generated.is_empty() {
+        schema.insert(
+            "anyOf".into(),
+            serde_json::json!([{ "required": ["boundary"] }, { "required": generated }]),
+        );
+    }
+}
+
+/// The JSON Schema of `[bearing]` (`#[schemars(transform)]` of `bearing_case::BearingSpec`)
+/// with the rule of [`expanded`]: a tapered bearing's `boundary` needs `e` unless
+/// `cup_angle_deg` is given.
+pub(crate) fn tapered_boundary_schema(schema: &mut schemars::Schema) {
+    let Some(serde_json::Value::Array(variants)) = schema.get_mut("oneOf") else {
+        return;
+    };
+    let tapered = variants.iter_mut().find(|v| {
+        let tag = |p| v.pointer(p) == Some(&"tapered".into());
+        tag("/properties/type/const") || tag("/properties/type/enum/0")
+    });
+    if let Some(serde_json::Value::Object(tapered)) = tapered {
+        tapered.insert(
+            "if".into(),
+            serde_json::json!({
+                "required": ["boundary"],
+                "not": { "required": ["cup_angle_deg"] },
+            }),
+        );
+        tapered.insert(
+            "then".into(),
+            serde_json::json!({ "properties": { "boundary": { "required": ["e"] } } }),
+        );
+    }
 }

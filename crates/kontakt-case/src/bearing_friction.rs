@@ -48,7 +48,7 @@ const MAX_RING_RPM: f64 = 100_000.0;
 /// `[operating]`: the operating point of the friction torque but for the ring speeds, which
 /// are the case's `[speed]` (`speed.inner_rpm`, `speed.outer_rpm`, r/min; at rest: the
 /// starting torque).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct OperatingSpec {
     /// `"circulating"` (default) or `"oil_bath"`.
@@ -139,7 +139,9 @@ fn conductivity() -> f64 {
 }
 
 /// Oil supply.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[derive(
+    Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, schemars::JsonSchema, Default,
+)]
 #[serde(rename_all = "snake_case")]
 pub enum Supply {
     /// Circulating oil or oil jet.
@@ -150,7 +152,9 @@ pub enum Supply {
 }
 
 /// Drag model.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[derive(
+    Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, schemars::JsonSchema, Default,
+)]
 #[serde(rename_all = "snake_case")]
 pub enum DragSpec {
     /// No drag.
@@ -163,7 +167,9 @@ pub enum DragSpec {
 }
 
 /// Rolling-resistance fit.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[derive(
+    Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, schemars::JsonSchema, Default,
+)]
 #[serde(rename_all = "snake_case")]
 pub enum RollingSpec {
     /// Biboulet & Houpert (2010).
@@ -174,7 +180,7 @@ pub enum RollingSpec {
 }
 
 /// `[catalogue]`: what the catalogue models need.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct CatalogueSpec {
     /// Bore d \[mm\].

@@ -25,7 +25,7 @@ use kontakt_bearing::life::{
 use serde::{Deserialize, Serialize};
 
 /// `[bearing.rating]`: the catalogue's load ratings and the lamina life's options.
-#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct RatingSpec {
     /// Basic dynamic load rating C, N (radial C_r; axial C_a of a thrust bearing), from the
@@ -47,7 +47,9 @@ pub struct RatingSpec {
 }
 
 /// The rotating ring of `[bearing.rating]`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[derive(
+    Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize, schemars::JsonSchema,
+)]
 #[serde(rename_all = "snake_case")]
 pub enum RotatingRingSpec {
     /// The inner ring rotates.

@@ -29,7 +29,9 @@ use kontakt_bearing::roller_equilibrium::{
 use serde::{Deserialize, Serialize};
 
 /// `bearing.roller_model`: how a tapered roller is held.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[derive(
+    Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize, schemars::JsonSchema,
+)]
 #[serde(rename_all = "snake_case")]
 pub enum RollerModel {
     /// The ISO/TS 16281 slice law of both raceway contacts in series (the default).
@@ -47,7 +49,7 @@ impl RollerModel {
 
 /// `[bearing.rib_contact]`: the roller's large-end face and the cone's rib, by a built-in
 /// pairing or by `face` and `rib`, and the contact height (mm).
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct RibContactSpec {
     /// A built-in pairing of Wirsching et al. (2020) Table 1 (`"sphere-torus-57"`, ...), or
@@ -85,7 +87,9 @@ pub struct RibContactSpec {
 }
 
 /// `bearing.rib_contact.model`: the rib contact's force law in the roller balance.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[derive(
+    Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize, schemars::JsonSchema,
+)]
 #[serde(rename_all = "lowercase")]
 pub enum RibModelSpec {
     /// Hertz's point contact at the contact point.
@@ -107,7 +111,7 @@ fn set_model(solver: &mut RibContactSolver, model: Option<RibModelSpec>) -> Resu
 }
 
 /// `bearing.rib_contact.arrangement` of a cylindrical roller bearing.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(rename_all = "lowercase")]
 pub enum ArrangementSpec {
     /// Ribs on the outer ring only: no axial load.

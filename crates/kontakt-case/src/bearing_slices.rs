@@ -11,7 +11,9 @@ use kontakt_bearing::geometry::RollerBearing;
 use serde::{Deserialize, Serialize};
 
 /// `[bearing] slice_model`: how the slices of a roller carry load.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[derive(
+    Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize, schemars::JsonSchema,
+)]
 #[serde(rename_all = "snake_case")]
 pub enum SliceModel {
     /// `"iso"`: ISO/TS 16281 (2008), `q = c_s δ^(10/9)` per slice, each slice on its own

@@ -593,7 +593,7 @@ fn schema_words(message: &str) -> String {
 }
 
 /// `[body1]` / `[body2]`: the elastic constants.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct MaterialSpec {
     /// Young's modulus \[MPa\], > 0.

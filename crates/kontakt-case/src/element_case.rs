@@ -55,7 +55,7 @@ use kontakt::{Error, Result};
 use serde::{Deserialize, Serialize};
 
 /// An element case, as read from TOML.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct ElementCase {
     /// Optional label.
@@ -85,7 +85,7 @@ pub struct ElementCase {
 }
 
 /// Names of the back-ends.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum BackendName {
     /// Hertz at the contact point's relative curvature.
@@ -97,7 +97,7 @@ pub enum BackendName {
 }
 
 /// `[element]`.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct ElementOptionsSpec {
     /// The normal-contact back-end.
@@ -115,7 +115,7 @@ pub struct ElementOptionsSpec {
 }
 
 /// `[film]`: the lubricant film of the friction law.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct FilmSpec {
     /// Film thickness \[mm\], ≥ 0.
@@ -129,7 +129,7 @@ pub struct FilmSpec {
 }
 
 /// `[damping]`.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct DampingSpec {
     /// Full damping coefficient \[N·s/mm\], ≥ 0.

@@ -68,7 +68,7 @@ use std::collections::BTreeSet;
 const RAD_S_PER_RPM: f64 = std::f64::consts::PI / 30.0;
 
 /// A friction case, as read from TOML.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct FrictionCase {
     /// Optional label echoed in the report.
@@ -105,7 +105,7 @@ fn default_models() -> Vec<PressureModel> {
 /// bearing built by `RollerBearing::of_roller_rib`), its rib load from its own balance
 /// with its centrifugal force (`docs/bearing-model.md`, "The rib friction of every
 /// roller").
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct FrictionLoad {
     /// Axial load of the bearing F_a \[N\], > 0 (a single-row tapered roller bearing
@@ -132,12 +132,13 @@ fn yes() -> bool {
 }
 
 /// `[speed]`: inner-ring speeds \[r/min\] (outer ring fixed), a list or a range.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, Default)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema, Default)]
 #[serde(deny_unknown_fields)]
 pub struct SpeedSpec {
     /// The speeds \[r/min\]: a list, or one number (`rpm = 1500.0`, as a sweep's
     /// parameter on `speed.rpm` sets it).
     #[serde(default, deserialize_with = "one_or_many")]
+    #[schemars(with = "Option<OneOrMany>")]
     pub rpm: Option<Vec<f64>>,
     /// Lowest speed of a range \[r/min\].
     #[serde(default)]
@@ -157,20 +158,24 @@ pub struct SpeedSpec {
 fn one_or_many<'de, D: serde::Deserializer<'de>>(
     d: D,
 ) -> std::result::Result<Option<Vec<f64>>, D::Error> {
-    #[derive(Deserialize)]
-    #[serde(untagged, expecting = "a speed in r/min or a list of them")]
-    enum OneOrMany {
-        One(f64),
-        Many(Vec<f64>),
-    }
     Ok(Some(match OneOrMany::deserialize(d)? {
         OneOrMany::One(v) => vec![v],
         OneOrMany::Many(v) => v,
     }))
 }
 
+/// A speed \[r/min\] or a list of them.
+#[derive(Deserialize, schemars::JsonSchema)]
+#[serde(untagged, expecting = "a speed in r/min or a list of them")]
+enum OneOrMany {
+    One(f64),
+    Many(Vec<f64>),
+}
+
 /// Spacing of a speed range.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[derive(
+    Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, schemars::JsonSchema, Default,
+)]
 #[serde(rename_all = "snake_case")]
 pub enum Spacing {
     /// Evenly in log(speed).
@@ -271,7 +276,7 @@ impl SpeedSpec {
 }
 
 /// `[lubricant]`.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct LubricantSpec {
     /// ISO VG grade (32, 46, 68, 100, 150, 220); or give both viscosities.
@@ -297,7 +302,9 @@ pub struct LubricantSpec {
 }
 
 /// Film formula names of the case file.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[derive(
+    Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, schemars::JsonSchema, Default,
+)]
 #[serde(rename_all = "snake_case")]
 pub enum FormulaSpec {
     /// Chittenden et al. (1985) central film, entrainment at any angle (the default: the
@@ -309,7 +316,7 @@ pub enum FormulaSpec {
 }
 
 /// `[friction]`: a preset and overrides.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema, Default)]
 #[serde(deny_unknown_fields)]
 pub struct FrictionSpec {
     /// The starting law (default: coulomb when dry, mixed when lubricated).
@@ -345,7 +352,7 @@ pub struct FrictionSpec {
 }
 
 /// Friction presets.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum Preset {
     /// Plain Coulomb, μ = 0.1.
@@ -357,7 +364,7 @@ pub enum Preset {
 }
 
 /// Load-sharing names.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum SharingSpec {
     /// φ = 1.
@@ -367,7 +374,7 @@ pub enum SharingSpec {
 }
 
 /// Fluid-law names.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum FluidSpec {
     /// No fluid shear.

@@ -43,7 +43,7 @@ use kontakt::{Error, Result};
 use serde::{Deserialize, Serialize, Serializer};
 
 /// A complete case, as read from a TOML file.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct CaseFile {
     /// Optional label echoed in the report.
@@ -66,7 +66,9 @@ pub struct CaseFile {
 }
 
 /// Solution method.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[derive(
+    Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize, schemars::JsonSchema,
+)]
 #[serde(rename_all = "snake_case")]
 pub enum Method {
     /// Closed-form Hertz theory.
@@ -75,7 +77,7 @@ pub enum Method {
 }
 
 /// Point or line contact.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum ContactKind {
     /// Point contact (elliptical or circular).
@@ -85,7 +87,7 @@ pub enum ContactKind {
 }
 
 /// `[contact]` table.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct ContactSpec {
     /// Point or line.
@@ -99,7 +101,7 @@ pub struct ContactSpec {
 }
 
 /// `[body1]` / `[body2]` table.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct BodySpec {
     /// Principal radii of curvature \[mm\]: two for a point contact, one for a line contact.
@@ -112,7 +114,7 @@ pub struct BodySpec {
 }
 
 /// `[load]` table: exactly one entry.
-#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct LoadSpec {
     /// Normal force \[N\].
@@ -127,7 +129,7 @@ pub struct LoadSpec {
 }
 
 /// `[yield]` table.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct YieldSpec {
     /// Yield stress of the weaker body \[MPa\], > 0.

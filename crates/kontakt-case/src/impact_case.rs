@@ -43,7 +43,7 @@ use kontakt::{Error, Result};
 use serde::{Deserialize, Serialize};
 
 /// An impact case, as read from TOML.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct ImpactCase {
     /// Optional label echoed in the report.
@@ -63,7 +63,7 @@ pub struct ImpactCase {
 }
 
 /// `[sphere]`.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SphereSpec {
     /// Radius \[mm\], > 0.
@@ -84,7 +84,7 @@ pub struct SphereSpec {
 }
 
 /// `[impact]`.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct IncidenceSpec {
     /// Speed of the centre at first contact \[mm/s\], > 0.
@@ -100,7 +100,7 @@ pub struct IncidenceSpec {
 }
 
 /// `[friction]` of an impact case.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct ImpactFrictionSpec {
     /// Coefficient of friction \[-\], > 0.

@@ -15,6 +15,7 @@
 //!   for the field methods, the full solution (pressure, displacement, gap per cell).
 //! - [`BearingModel`]: a bearing case planned once and solved for many loads, warm-started
 //!   from the last equilibrium (Python's `kontakt.Bearing`).
+//! - [`case_schema`]: the JSON Schema of the case files, derived from the serde types.
 //! - [`maps`]: gap and height maps from CSV or NumPy `.npy` files.
 //! - [`files`]: the one size-capped reader of every file a case names.
 //! - [`element_case`]: contact-element cases (`method = "element"`), not a [`Case`]: they
@@ -46,6 +47,7 @@ pub mod maps;
 pub mod mindlin_case;
 pub mod pimp_case;
 pub mod rough_case;
+pub mod schema;
 pub mod sweep;
 pub mod topography;
 pub mod traction_case;
@@ -64,6 +66,7 @@ pub use impact_case::{ImpactCase, ImpactReport, run_impact_case};
 pub use mindlin_case::{MindlinCase, MindlinReport, run_mindlin_case};
 pub use pimp_case::{PimpCase, PimpOutcome, PimpReport, run_pimp_case};
 pub use rough_case::{RoughCase, RoughOutcome, RoughReport, run_rough_case};
+pub use schema::case_schema;
 pub use sweep::{Sweep, SweepError};
 pub use traction_case::{
     ExactMap, MapPoint, TractionCase, TractionReport, run_traction_case, run_traction_case_with_map,

@@ -45,7 +45,7 @@ use kontakt::{Error, Result};
 use serde::{Deserialize, Serialize};
 
 /// A Cattaneo-Mindlin case, as read from TOML.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct MindlinCase {
     /// Optional label echoed in the report.
@@ -68,7 +68,7 @@ pub struct MindlinCase {
 }
 
 /// `[tangential]`: the oscillating tangential force.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct TangentialSpec {
     /// Amplitude `Q*` \[N\] of the tangential force, `0 < Q* <= mu P`.

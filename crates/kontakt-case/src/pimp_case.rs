@@ -62,7 +62,7 @@ use nalgebra::{Point3, Unit, Vector3};
 use serde::{Deserialize, Serialize};
 
 /// A PimP case, as read from TOML.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct PimpCase {
     /// Optional label echoed in the report.
@@ -89,7 +89,7 @@ pub struct PimpCase {
 }
 
 /// `[load]`: a force, an approach, or neither (the approach of the poses).
-#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct PimpLoad {
     /// Normal force \[N\].
@@ -101,7 +101,7 @@ pub struct PimpLoad {
 }
 
 /// `[pimp]`: solver options.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields, default)]
 pub struct PimpSpec {
     /// Bedding law.
@@ -125,7 +125,7 @@ impl Default for PimpSpec {
 
 /// `[geometry]`.
 #[allow(clippy::large_enum_variant)] // parsed once per case file
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
 pub enum GeometrySpec {
     /// Roller end face against the rib (Wirsching et al. 2020).
@@ -188,7 +188,7 @@ pub enum GeometrySpec {
 }
 
 /// A placed analytic surface in a case file.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SurfaceSpec {
     /// `plane`, `sphere`, `cone`, `torus` or `crowned`.
@@ -968,7 +968,7 @@ impl PimpReport {
 }
 
 /// `[bem]`: options of the half-space solver.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields, default)]
 pub struct BemSpec {
     /// Grid cells `[nx, ny]`, each in 8..=4096.

@@ -44,7 +44,7 @@ use serde::{Deserialize, Serialize};
 use std::path::Path;
 
 /// A rough-contact case, as read from TOML.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct RoughCase {
     /// Optional label echoed in the report.
@@ -66,7 +66,7 @@ pub struct RoughCase {
 }
 
 /// `[surface]`.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
 pub enum SurfaceSpec {
     /// A random self-affine surface ([`kontakt::rough::SelfAffineSpec`]).
@@ -115,7 +115,7 @@ pub enum SurfaceSpec {
 }
 
 /// `[load]`.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct RoughLoad {
     /// Nominal pressures \[MPa\], ascending, each > 0; 1..=100 of them.
@@ -129,7 +129,7 @@ pub struct RoughLoad {
 }
 
 /// `[solver]`.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields, default)]
 pub struct RoughSolverSpec {
     /// Relative residual, 1e-14..=1e-2 (default 1e-6).

@@ -92,7 +92,7 @@ use kontakt::{Error, Result};
 use serde::{Deserialize, Serialize};
 
 /// A traction-curve case, as read from TOML.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct TractionCase {
     /// Optional label echoed in the report.
@@ -128,7 +128,7 @@ pub struct TractionCase {
 
 /// `[asperity]`: the rough-surface model of [`kontakt::traction`] on the case's nominal
 /// contact (circular or line), with the case's load, friction and (identical) materials.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct AsperitySpec {
     /// Tip radii of the asperities of body 1 and body 2 \[mm\].
@@ -161,7 +161,7 @@ fn default_models() -> Vec<TractionModel> {
 }
 
 /// A model of a traction curve.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum TractionModel {
     /// Carter's 2D curve ([`Carter`]); for a point contact, of the central strip.
@@ -202,7 +202,7 @@ impl TractionModel {
 }
 
 /// `[geometry]`.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
 pub enum TractionGeometry {
     /// Two bodies by their principal radii: the Hertz ellipse of [`kontakt::hertz`]. The
@@ -238,7 +238,7 @@ pub enum TractionGeometry {
 }
 
 /// `[load]`.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct TractionLoad {
     /// Normal force \[N\], > 0 (exactly one of `force_n` and `line_load_n_per_mm`).
@@ -290,7 +290,7 @@ impl TractionLoad {
 }
 
 /// `[friction]`.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct FrictionSpec {
     /// Coefficient of friction \[-\], > 0.
@@ -298,7 +298,7 @@ pub struct FrictionSpec {
 }
 
 /// `[creepage]`: evenly spaced longitudinal creepages (slide-to-roll ratios) \[-\].
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct CreepageRange {
     /// First creepage \[-\], default 0.
@@ -422,7 +422,7 @@ fn range_point(e: Error, range: &CreepageRange) -> Error {
 }
 
 /// `[fastsim]`: FASTSIM options.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields, default)]
 pub struct FastsimSpec {
     /// Elements `[nx, ny]` (along rolling, strips), each 1..=4096.
@@ -432,7 +432,9 @@ pub struct FastsimSpec {
 }
 
 /// Pressure shape of FASTSIM's traction bound, as written in a case.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[derive(
+    Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize, schemars::JsonSchema,
+)]
 #[serde(rename_all = "snake_case")]
 pub enum PressureSpec {
     /// Kalker's parabolic pressure.
@@ -452,7 +454,7 @@ impl Default for FastsimSpec {
 }
 
 /// `[kalker_exact]`: options of Kalker's exact theory.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields, default)]
 pub struct KalkerExactSpec {
     /// Cells across the contact ellipse `[mx, my]` (along the rolling direction, across),

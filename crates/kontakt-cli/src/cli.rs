@@ -123,6 +123,10 @@ pub enum Command {
     /// a bearing case (method = "bearing") gives the bearing element, an element case
     /// (method = "element") the contact element (docs/fmi.md).
     Fmu(FmuArgs),
+    /// Print the JSON Schema (draft 7) of the case files, derived from the case reader's
+    /// types: every method's keys, their types, defaults and units; for validators and
+    /// editors' completion (docs/case-schema.md, "JSON Schema").
+    Schema,
 }
 
 #[derive(Debug, Args)]

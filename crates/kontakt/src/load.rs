@@ -8,7 +8,10 @@ use crate::units::{Millimetre, Newton};
 
 /// The load control of a normal-contact solve.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum LoadControl {
     /// The normal force \[N\], > 0 (load control).

@@ -11,7 +11,10 @@ use std::borrow::Cow;
 
 /// The reason an iteration stopped.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Termination {
     /// The residual reached the tolerance.
@@ -46,7 +49,10 @@ impl std::fmt::Display for Termination {
 /// How an iterative solve ended: the reason, the iterations it took and the final
 /// residual in the solver's own documented measure (dimensionless).
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 pub struct SolveStatus {
     /// Why the iteration stopped.
     pub termination: Termination,

@@ -25,7 +25,7 @@ pub const MAX_RING_RPM: f64 = 100_000.0;
 
 /// `[speed]`: the speeds of the rings about the bearing axis +z, r/min (positive
 /// counter-clockwise seen from +z), default at rest.
-#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct BearingSpeedSpec {
     /// Inner-ring speed, r/min (default 0), |speed| <= 100 000.

@@ -103,7 +103,10 @@ pub use rollers::{
 
 /// Which model gives the pressure field of the rib contact.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum PressureModel {
     /// Hertz's ellipse from the curvatures at the contact point, sampled on a grid.
@@ -135,7 +138,10 @@ impl PressureModel {
 
 /// The rollers of the bearing: number, length and density (for the centrifugal force).
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(default, deny_unknown_fields))]
 pub struct RollerSet {
     /// Number of rollers Z (≥ 3).

@@ -33,7 +33,10 @@ use nalgebra::{Isometry3, Point3, Translation3, Unit, UnitQuaternion, Vector3};
 /// manufacturer's drawing. The raceway angle follows from the condition of true rolling:
 /// the roller's apex lies on the ring axis, so `sin(alpha_i) = r_i tan(beta) / rho_L`.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
 pub struct TaperedRollerBearing {
     /// Bore diameter d \[mm\]. Bore and outside diameter only check that the roller fits
@@ -69,7 +72,10 @@ impl Default for TaperedRollerBearing {
 
 /// The roller's end face.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(
     feature = "serde",
     serde(tag = "shape", rename_all = "snake_case", deny_unknown_fields)
@@ -94,7 +100,10 @@ pub enum FaceShape {
 
 /// The rib face of the inner ring.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(
     feature = "serde",
     serde(tag = "shape", rename_all = "snake_case", deny_unknown_fields)
@@ -114,7 +123,10 @@ pub enum RibShape {
 
 /// One roller-face / rib pairing.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
 pub struct RollerRibSpec {
     /// The bearing.

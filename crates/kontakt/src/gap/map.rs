@@ -6,7 +6,10 @@ use crate::geometry::Grid2;
 
 /// What the map's values are.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum MapKind {
     /// The undeformed gap between the bodies \[mm\], used as it is (the approach is

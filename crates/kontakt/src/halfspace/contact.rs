@@ -17,7 +17,10 @@ pub use crate::field::domain::ZoneEstimate;
 
 /// Options of [`Bem`].
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(deny_unknown_fields, default))]
 pub struct BemOptions {
     /// Cells `[nx, ny]` of the grid, each in 8..=4096 (default 64 × 64).

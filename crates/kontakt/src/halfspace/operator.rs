@@ -37,7 +37,10 @@ use super::influence::quadrant_table;
 
 /// How the grid's edges behave.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Boundary {
     /// An isolated contact on an unbounded half-space (zero padding to `2n`).

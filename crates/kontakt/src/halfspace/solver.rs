@@ -13,7 +13,10 @@ pub type Control = crate::load::LoadControl;
 
 /// Where the iteration starts.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Start {
     /// From a Hertz-like estimate built from the gap (docs/halfspace.md §3).
@@ -32,7 +35,10 @@ pub enum Start {
 
 /// The preconditioner of the constrained conjugate gradients.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Preconditioner {
     /// None: the search direction is the gap itself (Polonsky and Keer 1999).
@@ -48,7 +54,10 @@ pub enum Preconditioner {
 
 /// Solver settings.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(deny_unknown_fields, default))]
 pub struct SolverOptions {
     /// Relative residual to reach, in \[1e-14, 1e-2\] (default 1e-8). The residual is

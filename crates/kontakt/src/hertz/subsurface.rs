@@ -64,7 +64,10 @@ use std::f64::consts::PI;
 /// Principal stresses on the load axis (`x = y = 0`) at one depth, with the Tresca and
 /// von Mises equivalents. Stresses in MPa, tension positive.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 pub struct AxisStress {
     /// Depth `z` below the surface \[mm\] (>= 0).
     pub depth: Millimetre,
@@ -86,7 +89,10 @@ pub struct AxisStress {
 /// Maxima over depth of the Tresca shear stress and of the von Mises stress on the load
 /// axis, with the depths where they occur.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 pub struct StressPeaks {
     /// Largest Tresca maximum shear stress on the axis \[MPa\].
     pub max_shear: Megapascal,
@@ -106,7 +112,10 @@ pub struct StressPeaks {
 ///
 /// Serialized as `"tresca"` / `"von_mises"`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum YieldCriterion {
     /// Maximum shear stress criterion (Tresca 1864): `sigma_1 - sigma_3 = Y`.

@@ -25,7 +25,10 @@ use crate::error::{Error, Result};
 /// finite and positive: one infinite radius is a line contact and both infinite a flat
 /// gap, neither of which the point-contact formulas describe.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 pub struct FilmContact {
     /// Reduced radius of curvature along the contact's x axis \[mm\], finite and > 0.
     pub rx: f64,
@@ -52,7 +55,10 @@ pub struct FilmContact {
 /// non-exhaustive so that it can be added without breaking callers.
 #[non_exhaustive]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 pub enum FilmFormula {
     /// Hamrock & Dowson (1977), isothermal, fully flooded, Newtonian point contact:
     /// H_c = 2.69 U^0.67 G^0.53 W^−0.067 (1 − 0.61 e^(−0.73k)),

@@ -26,7 +26,10 @@ use crate::error::{Error, Result, positive_as as positive};
 
 /// A lubricated line contact, per unit length.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 pub struct LineFilmContact {
     /// Reduced radius of curvature in the rolling direction R \[mm\], finite and > 0
     /// (1/R = 1/R₁ + 1/R₂; for a roller of radius r on an inner raceway of radius R_i,
@@ -45,7 +48,10 @@ pub struct LineFilmContact {
 /// The line-contact film formula.
 #[non_exhaustive]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 pub enum LineFilmFormula {
     /// Isothermal, fully flooded, Newtonian, smooth line contact: minimum film
     /// H_min = 2.65 U^0.70 G^0.54 W^−0.13 (Dowson & Higginson, 1977 form of their 1966

@@ -30,7 +30,10 @@ use crate::error::{Error, Result, positive_as};
 /// The rolling-resistance fit of an EHL line contact.
 #[non_exhaustive]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 pub enum RollingResistanceModel {
     /// Zhou & Hoeprich (1991), eq. 17: f = 29.2 (R/α)(GU)^0.648 W^0.246, a power-law fit of
     /// their isothermal numerical EHL results (Table 1, G = 3745).

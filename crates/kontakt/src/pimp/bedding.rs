@@ -21,7 +21,10 @@ use std::f64::consts::PI;
 
 /// Which bedding law the PimP solver uses.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Mode {
     /// The method as published (Wirsching et al. 2020, eqs 5-7; Wirsching et al. 2019, eqs 4-6), with the reading

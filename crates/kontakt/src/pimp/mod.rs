@@ -69,7 +69,10 @@ const POLICY: Policy = Policy {
 
 /// Options of the PimP solver.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(deny_unknown_fields, default))]
 pub struct PimpOptions {
     /// The bedding law.

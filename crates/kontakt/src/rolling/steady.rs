@@ -82,7 +82,10 @@ const STEP_TOLERANCE_FACTOR: f64 = 0.1;
 
 /// The method of [`SteadySolver::solve`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum SteadyMethod {
     /// Semismooth Newton on the steady equations, GMRES with the row-block

@@ -206,7 +206,10 @@ pub fn roughness_parameter(
 
 /// Numerical options of [`GreenwoodTripp`].
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 pub struct GreenwoodTrippOptions {
     /// Intervals of the radial grid, 16 to 2000 (default 64: grid-converged to about 1e-4 in p(0) and a*, see docs/rough.md).
     pub nodes: usize,
@@ -260,7 +263,10 @@ pub struct GreenwoodTripp {
 
 /// The smoothed pressure distribution of a Greenwood-Tripp solve.
 #[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 pub struct GreenwoodTrippSolution {
     /// Grid radii \[mm\], from 0 to the outer radius.
     pub radii: Vec<Millimetre>,

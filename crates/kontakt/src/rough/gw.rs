@@ -66,7 +66,10 @@ pub struct GreenwoodWilliamson {
 
 /// The state of a GW contact at one separation (all per unit nominal area).
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 pub struct GwState {
     /// $d$, separation of the flat from the summit datum \[mm\].
     pub separation: Millimetre,

@@ -31,7 +31,10 @@ use std::sync::OnceLock;
 /// The distribution of summit heights about their mean plane (Gaussian) or above the
 /// lowest summit (exponential), in units of the summit-height standard deviation.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum SummitHeights {
     /// $\phi^*(s) = e^{-s^2/2}/\sqrt{2\pi}$; separation measured from the mean summit

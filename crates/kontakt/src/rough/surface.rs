@@ -41,7 +41,10 @@ use std::f64::consts::PI;
 
 /// How the amplitude of a [`SelfAffineSpec`] is fixed.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Amplitude {
     /// Root-mean-square height \[mm\], > 0.
@@ -52,7 +55,10 @@ pub enum Amplitude {
 
 /// The parameters of a random self-affine surface (module docs). Lengths in mm.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 pub struct SelfAffineSpec {
     /// Grid points `[nx, ny]`, each 4..=16384 and even.
     pub points: [usize; 2],

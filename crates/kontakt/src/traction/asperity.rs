@@ -71,7 +71,10 @@ pub const CIRCULARITY_TOLERANCE: f64 = 1e-9;
 /// `max_pressure` is only a cross-check: it must agree with the load within
 /// [`MAX_PRESSURE_TOLERANCE`].
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(
     feature = "serde",
     serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)
@@ -128,7 +131,10 @@ pub enum NominalContact {
 
 /// Shape of the nominal contact.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum ContactShape {
     /// Rectangular strip of length L and width 2a (thesis §3.1.2.2.1).
@@ -140,7 +146,10 @@ pub enum ContactShape {
 /// The contact radius a_i of one asperity pair under its normal force F_i, tagged by
 /// `law` in TOML.
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(
     feature = "serde",
     serde(tag = "law", rename_all = "snake_case", deny_unknown_fields)
@@ -178,7 +187,10 @@ impl Default for AsperityContactLaw {
 
 /// Which surface speed turns the slide-to-roll ratio into slip per distance travelled.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum SlipReference {
     /// $\delta = \xi d$: the asperity junction travels at the rolling speed
@@ -192,7 +204,10 @@ pub enum SlipReference {
 
 /// How the nominal load is shared among the asperities.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum LoadSharing {
     /// Each asperity carries the integral of the nominal pressure over its lattice cell
@@ -236,7 +251,10 @@ pub enum LoadSharing {
 /// half_width_mm = 0.4
 /// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(deny_unknown_fields))]
 pub struct AsperityTractionParams {
     /// The nominal contact and its size.

@@ -50,7 +50,10 @@ use nalgebra::{Matrix3, Point3, Unit, Vector3};
 
 /// Which side of the surface the body's material is on.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(feature = "serde", serde(rename_all = "snake_case"))]
 pub enum Material {
     /// The solid is the region enclosed by the surface: a ball for a sphere, the tube of a
@@ -490,7 +493,7 @@ impl Surface {
 // Serialisation: a tagged table, validated on the way in.
 
 #[cfg(feature = "serde")]
-#[derive(serde::Serialize, serde::Deserialize)]
+#[derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)]
 #[serde(tag = "type", rename_all = "snake_case", deny_unknown_fields)]
 enum SurfaceSpec {
     Plane {
@@ -513,6 +516,18 @@ enum SurfaceSpec {
         profile: Profile,
         material: Material,
     },
+}
+
+/// The schema of a surface is that of its tagged table.
+#[cfg(feature = "serde")]
+impl schemars::JsonSchema for Surface {
+    fn schema_name() -> std::borrow::Cow<'static, str> {
+        "Surface".into()
+    }
+
+    fn json_schema(generator: &mut schemars::SchemaGenerator) -> schemars::Schema {
+        <SurfaceSpec as schemars::JsonSchema>::json_schema(generator)
+    }
 }
 
 #[cfg(feature = "serde")]

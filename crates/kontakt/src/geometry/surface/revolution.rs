@@ -19,7 +19,10 @@ use nalgebra::{Matrix3, Point3, Vector3};
 /// Serialised as a table tagged by `kind`, e.g.
 /// `{ kind = "crowned", radius = 10.0, crown_radius = 500.0, half_length = 8.0 }`.
 #[derive(Debug, Clone, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(
+    feature = "serde",
+    derive(serde::Serialize, serde::Deserialize, schemars::JsonSchema)
+)]
 #[cfg_attr(
     feature = "serde",
     serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)
