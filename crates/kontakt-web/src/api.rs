@@ -199,7 +199,7 @@ async fn case_parse(headers: HeaderMap, body: Result<Bytes, BytesRejection>) -> 
         })?;
         let (case, table) = case_io::parse_case(text, case_io::Source::Toml)?;
         Ok::<_, ApiError>(serde_json::json!({
-            "case": case_io::json_of_table(&table)?,
+            "case": case_io::json_of_table(&table),
             "method": case.method(),
         }))
     })();

@@ -28,15 +28,63 @@ pub fn case_text(case: &serde_json::Value) -> Result<(String, Source), ApiError>
     }
 }
 
-/// A JSON object written as TOML text.
+/// A JSON object written as TOML text ([`toml_of_json_value`]).
 ///
 /// # Errors
-/// 400 when the object holds what TOML cannot (a `null`, mixed arrays TOML refuses).
+/// 400 when the object holds what TOML cannot (a `null`).
 pub fn toml_of_json(case: &serde_json::Value) -> Result<String, ApiError> {
-    let table: toml::Table = serde::Deserialize::deserialize(case)
-        .map_err(|e| ApiError::bad_request(format!("case: not a TOML table: {e}")))?;
+    let toml::Value::Table(table) = toml_of_json_value(case, "case")? else {
+        return Err(ApiError::bad_request("case: expected a JSON object"));
+    };
     toml::to_string(&table)
         .map_err(|e| ApiError::bad_request(format!("case: cannot be written as TOML: {e}")))
+}
+
+/// A JSON value as TOML: numbers without a fraction or exponent are integers, others
+/// floats; the strings `"inf"`, `"+inf"`, `"-inf"` and `"nan"` are TOML's special floats
+/// (JSON has none; [`json_of_table`] writes them so).
+///
+/// # Errors
+/// 400 for a `null` (TOML has none), named by its path in the case.
+pub fn toml_of_json_value(v: &serde_json::Value, path: &str) -> Result<toml::Value, ApiError> {
+    use serde_json::Value as J;
+    Ok(match v {
+        J::Null => {
+            return Err(ApiError::bad_request(format!(
+                "{path}: null has no TOML form (leave the key out instead)"
+            )));
+        }
+        J::Bool(b) => toml::Value::Boolean(*b),
+        J::Number(n) => match n.as_i64() {
+            Some(i) => toml::Value::Integer(i),
+            None => toml::Value::Float(n.as_f64().unwrap_or(f64::NAN)),
+        },
+        J::String(s) => match s.as_str() {
+            "inf" | "+inf" => toml::Value::Float(f64::INFINITY),
+            "-inf" => toml::Value::Float(f64::NEG_INFINITY),
+            "nan" | "+nan" | "-nan" => toml::Value::Float(f64::NAN),
+            _ => toml::Value::String(s.clone()),
+        },
+        J::Array(items) => toml::Value::Array(
+            items
+                .iter()
+                .enumerate()
+                .map(|(i, x)| toml_of_json_value(x, &format!("{path}[{i}]")))
+                .collect::<Result<_, _>>()?,
+        ),
+        J::Object(map) => toml::Value::Table(
+            map.iter()
+                .map(|(k, x)| {
+                    let p = if path == "case" {
+                        k.clone()
+                    } else {
+                        format!("{path}.{k}")
+                    };
+                    Ok((k.clone(), toml_of_json_value(x, &p)?))
+                })
+                .collect::<Result<_, ApiError>>()?,
+        ),
+    })
 }
 
 /// Parse the case as `kontakt solve` does: the same schema, unknown keys refused with the
@@ -51,11 +99,12 @@ pub fn parse_case(text: &str, source: Source) -> Result<(Case, toml::Table), Api
         Ok(t) => t,
         Err(_) => {
             // The case reader's message (line and key) for the syntax error.
-            let message = match Case::from_toml_str(text) {
-                Err(e) => e.to_string(),
-                Ok(_) => "case: not a TOML document".to_string(),
+            let mut e = match Case::from_toml_str(text) {
+                Err(e) => ApiError::from_case(&e),
+                Ok(_) => ApiError::bad_request("case: not a TOML document"),
             };
-            return Err(ApiError::bad_request(message));
+            e.status = axum::http::StatusCode::BAD_REQUEST;
+            return Err(e);
         }
     };
     let case = Case::from_toml_str(text).map_err(|e| match (source, e) {
@@ -116,18 +165,32 @@ fn file_key(table: &toml::Table, prefix: &str) -> Option<String> {
     None
 }
 
-/// The case's tables as JSON (what a form fills itself from).
-///
-/// # Errors
-/// 500 if a TOML value has no JSON form (none of the case schemas has one).
-pub fn json_of_table(table: &toml::Table) -> Result<serde_json::Value, ApiError> {
-    serde_json::to_value(table).map_err(|e| {
-        ApiError::new(
-            axum::http::StatusCode::INTERNAL_SERVER_ERROR,
-            "internal",
-            format!("case: no JSON form: {e}"),
-        )
-    })
+/// The case's tables as JSON (what a form fills itself from): TOML's special floats
+/// (`inf`, `nan`) become the strings `"inf"`, `"-inf"`, `"nan"`, dates their TOML text.
+pub fn json_of_table(table: &toml::Table) -> serde_json::Value {
+    serde_json::Value::Object(
+        table
+            .iter()
+            .map(|(k, v)| (k.clone(), json_of_toml(v)))
+            .collect(),
+    )
+}
+
+fn json_of_toml(v: &toml::Value) -> serde_json::Value {
+    use serde_json::Value as J;
+    match v {
+        toml::Value::String(s) => J::String(s.clone()),
+        toml::Value::Integer(i) => J::from(*i),
+        toml::Value::Float(x) if x.is_nan() => J::String("nan".into()),
+        toml::Value::Float(x) if x.is_infinite() => {
+            J::String(if *x > 0.0 { "inf" } else { "-inf" }.into())
+        }
+        toml::Value::Float(x) => J::from(*x),
+        toml::Value::Boolean(b) => J::Bool(*b),
+        toml::Value::Datetime(d) => J::String(d.to_string()),
+        toml::Value::Array(items) => J::Array(items.iter().map(json_of_toml).collect()),
+        toml::Value::Table(t) => json_of_table(t),
+    }
 }
 
 #[cfg(test)]
@@ -150,7 +213,24 @@ mod tests {
         let text = toml_of_json(&v).unwrap();
         let t: toml::Table = text.parse().unwrap();
         assert_eq!(t["load"]["force_n"].as_integer(), Some(100));
-        assert!(toml_of_json(&serde_json::json!({"a": null})).is_err());
+        // Infinite radii (a flat) survive TOML -> JSON -> TOML.
+        let t: toml::Table = "r = [inf, -inf, 1.5]\nn = 3\n".parse().unwrap();
+        let j = json_of_table(&t);
+        assert_eq!(j["r"], serde_json::json!(["inf", "-inf", 1.5]));
+        let back: toml::Table = toml_of_json(&j).unwrap().parse().unwrap();
+        assert_eq!(back, t);
+        // An integer where the schema takes a float is read as the float.
+        let text = toml_of_json(&serde_json::json!({
+            "method": "hertz",
+            "contact": {"kind": "point"},
+            "body1": {"radii_mm": [10, 10], "e_mpa": 210000, "nu": 0.3},
+            "body2": {"radii_mm": ["inf", "inf"], "e_mpa": 210000, "nu": 0.3},
+            "load": {"force_n": 100}
+        }))
+        .unwrap();
+        parse_case(&text, Source::Json).unwrap();
+        let err = toml_of_json(&serde_json::json!({"a": {"b": [1, null]}})).unwrap_err();
+        assert!(err.message.starts_with("a.b[1]: null"), "{}", err.message);
         assert!(case_text(&serde_json::json!(3)).is_err());
         let err = parse_case("method = \"hertz\"\nbogus = 1\n", Source::Json).unwrap_err();
         assert!(
