@@ -17,6 +17,8 @@ use crate::error::ApiError;
 use axum::http::StatusCode;
 use std::io::{BufRead, Write};
 use std::path::PathBuf;
+#[cfg(all(test, unix))]
+use std::sync::Arc;
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Duration;
@@ -78,27 +80,33 @@ impl Pool {
         limit: Duration,
         cancel: impl std::future::Future<Output = ()>,
     ) -> Result<Answer, ApiError> {
-        if self.waiting.fetch_add(1, Ordering::SeqCst) >= self.max_waiting {
-            self.waiting.fetch_sub(1, Ordering::SeqCst);
-            return Err(ApiError::new(
-                StatusCode::SERVICE_UNAVAILABLE,
-                "overloaded",
-                format!(
-                    "the server is busy ({} solves waiting); try again shortly",
-                    self.max_waiting
-                ),
-            ));
-        }
         tokio::pin!(cancel);
-        let permit = tokio::select! {
-            p = self.permits.acquire() => p,
-            () = &mut cancel => {
-                self.waiting.fetch_sub(1, Ordering::SeqCst);
-                return Err(cancelled());
+        let _permit = match self.permits.try_acquire() {
+            Ok(permit) => permit,
+            Err(_) => {
+                // Every worker is busy: wait, unless `max_waiting` solves already do.
+                let waiting = Waiting::enter(&self.waiting);
+                if waiting.ahead >= self.max_waiting {
+                    return Err(ApiError::new(
+                        StatusCode::SERVICE_UNAVAILABLE,
+                        "overloaded",
+                        format!(
+                            "the server is busy (every worker solving, {} solves waiting); \
+                             try again shortly",
+                            self.max_waiting
+                        ),
+                    ));
+                }
+                // The count is left when `waiting` drops: also when the client goes
+                // away while waiting (this future dropped).
+                let permit = tokio::select! {
+                    p = self.permits.acquire() => p,
+                    () = &mut cancel => return Err(cancelled()),
+                };
+                drop(waiting);
+                permit.map_err(|_| internal("the worker pool is closed"))?
             }
         };
-        self.waiting.fetch_sub(1, Ordering::SeqCst);
-        let _permit = permit.map_err(|_| internal("the worker pool is closed"))?;
         let idle = self.idle.lock().ok().and_then(|mut v| v.pop());
         let mut worker = match idle {
             Some(w) => w,
@@ -175,6 +183,26 @@ async fn exchange(worker: &mut Worker, text: &str) -> std::io::Result<Answer> {
     Ok((status, body.to_string()))
 }
 
+/// One solve counted as waiting for a worker while this lives.
+struct Waiting<'a> {
+    count: &'a AtomicUsize,
+    /// How many were waiting before this one.
+    ahead: usize,
+}
+
+impl<'a> Waiting<'a> {
+    fn enter(count: &'a AtomicUsize) -> Self {
+        let ahead = count.fetch_add(1, Ordering::SeqCst);
+        Waiting { count, ahead }
+    }
+}
+
+impl Drop for Waiting<'_> {
+    fn drop(&mut self) {
+        self.count.fetch_sub(1, Ordering::SeqCst);
+    }
+}
+
 fn internal(message: &str) -> ApiError {
     ApiError::new(StatusCode::INTERNAL_SERVER_ERROR, "internal", message)
 }
@@ -190,6 +218,7 @@ fn cancelled() -> ApiError {
 /// # Errors
 /// Reading or writing the pipes.
 pub fn worker_main(input: impl BufRead, mut output: impl Write) -> std::io::Result<()> {
+    watch_parent();
     for line in input.lines() {
         let line = line?;
         let (status, body) = match serde_json::from_str::<String>(&line) {
@@ -203,6 +232,25 @@ pub fn worker_main(input: impl BufRead, mut output: impl Write) -> std::io::Resu
         output.flush()?;
     }
     Ok(())
+}
+
+/// End this worker when its server is gone. An idle worker sees its input end; a busy
+/// one would finish its solve first, so a thread checks every 200 ms whether the process
+/// was handed to another parent (the server killed without a chance to kill its workers)
+/// and exits if so.
+fn watch_parent() {
+    #[cfg(unix)]
+    {
+        let parent = std::os::unix::process::parent_id();
+        std::thread::spawn(move || {
+            loop {
+                std::thread::sleep(Duration::from_millis(200));
+                if std::os::unix::process::parent_id() != parent {
+                    std::process::exit(3);
+                }
+            }
+        });
+    }
 }
 
 /// Parse and run one case in this process: the API's answer for it.
@@ -233,4 +281,99 @@ pub fn report_body(outcome: &kontakt_case::Outcome) -> Result<String, ApiError> 
     let warnings = serde_json::to_string(outcome.warnings())
         .map_err(|e| internal(&format!("warnings: {e}")))?;
     Ok(format!("{{\"report\":{report},\"warnings\":{warnings}}}"))
+}
+
+#[cfg(all(test, unix))]
+mod tests {
+    use super::*;
+
+    /// A "worker" that never answers (`sleep`), or that exits at once (`true`).
+    fn pool(program: &str, args: &[&str], workers: usize, max_waiting: usize) -> Pool {
+        let command = WorkerCommand {
+            program: program.into(),
+            args: args.iter().map(|a| a.to_string()).collect(),
+        };
+        Pool::new(command, workers, max_waiting)
+    }
+
+    #[tokio::test]
+    async fn time_limit_overload_cancel_and_a_dead_worker() {
+        let p = Arc::new(pool("sleep", &["30"], 1, 0));
+        let limit = Duration::from_millis(300);
+        // The one worker is busy: with no waiting room the next solve is refused (503).
+        let busy = {
+            let p = Arc::clone(&p);
+            tokio::spawn(async move { p.solve("x", limit, std::future::pending()).await })
+        };
+        tokio::time::sleep(Duration::from_millis(100)).await;
+        let e = p
+            .solve("x", limit, std::future::pending())
+            .await
+            .unwrap_err();
+        assert_eq!(e.status, StatusCode::SERVICE_UNAVAILABLE, "{e:?}");
+        // The busy one passes its limit: 408, well before `sleep 30` would end.
+        let t = std::time::Instant::now();
+        let e = busy.await.unwrap().unwrap_err();
+        assert_eq!(e.status, StatusCode::REQUEST_TIMEOUT, "{e:?}");
+        assert!(t.elapsed() < Duration::from_secs(5));
+        // Cancelled while solving.
+        let e = p
+            .solve("x", Duration::from_secs(30), tokio::time::sleep(limit))
+            .await
+            .unwrap_err();
+        assert_eq!(e.kind, "cancelled", "{e:?}");
+        // A waiting solve whose client went away (its future dropped) frees its place.
+        let p = Arc::new(pool("sleep", &["30"], 1, 1));
+        let long = Duration::from_secs(30);
+        let spawn = |p: &Arc<Pool>| {
+            let p = Arc::clone(p);
+            tokio::spawn(async move { p.solve("x", long, std::future::pending()).await })
+        };
+        let busy = spawn(&p);
+        tokio::time::sleep(Duration::from_millis(100)).await;
+        let waiter = spawn(&p);
+        tokio::time::sleep(Duration::from_millis(100)).await;
+        let e = p
+            .solve("x", long, std::future::pending())
+            .await
+            .unwrap_err();
+        assert_eq!(e.status, StatusCode::SERVICE_UNAVAILABLE, "{e:?}");
+        waiter.abort();
+        let _ = waiter.await;
+        let again = spawn(&p);
+        tokio::time::sleep(Duration::from_millis(100)).await;
+        assert!(
+            !again.is_finished(),
+            "the freed place is taken again, not refused"
+        );
+        again.abort();
+        busy.abort();
+        // A worker that dies: 500, not a hang.
+        let dead = pool("true", &[], 1, 4);
+        let e = dead
+            .solve("x", Duration::from_secs(30), std::future::pending())
+            .await
+            .unwrap_err();
+        assert_eq!(e.status, StatusCode::INTERNAL_SERVER_ERROR, "{e:?}");
+        // A worker that cannot be started: 500 naming it.
+        let missing = pool("/nonexistent-kontakt-worker", &[], 1, 4);
+        let e = missing
+            .solve("x", Duration::from_secs(30), std::future::pending())
+            .await
+            .unwrap_err();
+        assert!(e.message.contains("cannot start"), "{e:?}");
+    }
+
+    #[test]
+    fn worker_main_answers_a_line_per_case() {
+        let case = "method = \"hertz\"\nbogus = 1\n";
+        let input = format!("{}\nnot json\n", serde_json::to_string(case).unwrap());
+        let mut out = Vec::new();
+        worker_main(input.as_bytes(), &mut out).unwrap();
+        let out = String::from_utf8(out).unwrap();
+        let lines: Vec<&str> = out.lines().collect();
+        assert_eq!(lines.len(), 2, "{out}");
+        assert!(lines[0].starts_with("422 {\"error\""), "{}", lines[0]);
+        assert!(lines[1].starts_with("400 {\"error\""), "{}", lines[1]);
+    }
 }
