@@ -554,3 +554,81 @@ fn load_test_loses_nothing() {
         answered as f64 / elapsed.as_secs_f64()
     );
 }
+
+/// The flags: a bad time limit or worker count is an input error (status 2); another
+/// address than loopback is warned about (here one not on this machine, so the bind fails
+/// after the warning, status 1); `--open` without an opener is a warning and the server
+/// runs on.
+#[test]
+fn flags_and_warnings() {
+    for (flag, value) in [
+        ("--time-limit", "0"),
+        ("--time-limit", "nan"),
+        ("--workers", "0"),
+    ] {
+        let out = support::kontakt()
+            .args(["serve", "--port", "0", flag, value])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2), "{flag} {value}");
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert!(
+            err.starts_with(&format!("error: invalid {flag} = ")),
+            "{err}"
+        );
+        assert_eq!(err.lines().count(), 1, "{err}");
+    }
+
+    // 192.0.2.1 (TEST-NET-1, RFC 5737) is never an address of this machine.
+    let out = support::kontakt()
+        .args(["serve", "--port", "0", "--address", "192.0.2.1"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        err.starts_with("warning: listening on 192.0.2.1, not on 127.0.0.1"),
+        "{err}"
+    );
+    assert!(err.contains("error: cannot serve on 192.0.2.1:0"), "{err}");
+
+    // --open with no opener on the PATH.
+    let empty =
+        std::env::temp_dir().join(format!("kontakt-serve-test-path-{}", std::process::id()));
+    std::fs::create_dir_all(&empty).unwrap();
+    let mut child = Command::new(env!("CARGO_BIN_EXE_kontakt"))
+        .args(["serve", "--port", "0", "--open"])
+        .env("PATH", &empty)
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut url = String::new();
+    BufReader::new(child.stdout.take().unwrap())
+        .read_line(&mut url)
+        .unwrap();
+    let mut stderr = BufReader::new(child.stderr.take().unwrap());
+    let mut warning = String::new();
+    while !warning.starts_with("warning:") {
+        warning.clear();
+        if stderr.read_line(&mut warning).unwrap() == 0 {
+            break;
+        }
+    }
+    let server = Server {
+        child,
+        addr: url
+            .trim()
+            .trim_start_matches("http://")
+            .trim_end_matches('/')
+            .to_string(),
+    };
+    assert!(
+        warning.starts_with("warning: cannot open a browser"),
+        "{warning}"
+    );
+    assert_eq!(server.get("/api/health").0, 200, "the server runs on");
+    drop(server);
+    std::fs::remove_dir_all(&empty).unwrap();
+}
