@@ -268,7 +268,7 @@ export async function runCase(caseValue, { long = false, status } = {}) {
   if (!long) {
     if (status) setStatus(status, "solving …", "busy");
     const out = await api("/api/run", { case: caseValue });
-    return { report: out.report, warnings: out.warnings || [] };
+    return { report: out.report, warnings: out.warnings || [], fields: out.fields };
   }
   const job = await api("/api/jobs", { case: caseValue });
   const id = job.id;
@@ -301,7 +301,7 @@ export async function runCase(caseValue, { long = false, status } = {}) {
       if (typeof s.progress === "number") bar.value = s.progress;
       else bar.removeAttribute("value");
       if (s.state === "done" || s.report) {
-        return { report: s.report, warnings: s.warnings || [] };
+        return { report: s.report, warnings: s.warnings || [], fields: s.fields };
       }
       if (s.state === "cancelled" || cancelled) throw new Error("cancelled");
       if (s.state === "failed" || s.state === "error" || s.error) {
