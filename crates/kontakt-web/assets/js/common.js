@@ -31,6 +31,15 @@ export function frame(active) {
     nav.append(a);
   }
   document.body.prepend(nav);
+  // A field's name (text and <sub>) in one grid cell, the input and its unit beside it.
+  for (const label of document.querySelectorAll("form.case label:not(.check)")) {
+    const ctrl = label.querySelector("input, select");
+    if (!ctrl) continue;
+    const name = document.createElement("span");
+    name.className = "name";
+    while (label.firstChild && label.firstChild !== ctrl) name.append(label.firstChild);
+    label.prepend(name);
+  }
 }
 
 // ---------------------------------------------------------------- API
@@ -147,10 +156,14 @@ function showValue(el, v) {
     el.checked = v === true;
     return;
   }
-  if (v === undefined || v === null) {
+  if (v === undefined) {
     el.value = "";
+  } else if (v === null) {
+    // The parsed case's JSON has no infinity: a TOML `inf` (a flat body's radius) arrives
+    // as null, the only float JSON cannot hold.
+    el.value = type === "str" ? "" : "inf";
   } else if (Array.isArray(v)) {
-    el.value = v.map(String).join(", ");
+    el.value = v.map((x) => (x === null ? "inf" : String(x))).join(", ");
   } else if (typeof v === "number" && !Number.isFinite(v)) {
     el.value = v > 0 ? "inf" : "-inf";
   } else {
@@ -267,10 +280,10 @@ export function showWarnings(el, ...lists) {
 export async function runCase(caseValue, { long = false, status } = {}) {
   if (!long) {
     if (status) setStatus(status, "solving …", "busy");
-    const out = await api("/api/run", { case: caseValue });
+    const out = await api("/api/run", { case: toToml(caseValue) });
     return { report: out.report, warnings: out.warnings || [], fields: out.fields };
   }
-  const job = await api("/api/jobs", { case: caseValue });
+  const job = await api("/api/jobs", { case: toToml(caseValue) });
   const id = job.id;
   let cancelled = false;
   const cancel = document.createElement("button");
@@ -316,10 +329,45 @@ export async function runCase(caseValue, { long = false, status } = {}) {
 
 // ---------------------------------------------------------------- TOML files
 
-/** Asks the server for the case's TOML and downloads it. */
+const bareKey = (k) => (/^[A-Za-z0-9_-]+$/.test(k) ? k : JSON.stringify(k));
+
+function tomlValue(v) {
+  if (v === "inf" || v === "+inf") return "inf";
+  if (v === "-inf") return "-inf";
+  if (v === null) return "inf"; // see showValue: a non-finite float of a parsed case
+  if (typeof v === "number") return Number.isFinite(v) ? String(v) : v > 0 ? "inf" : "-inf";
+  if (typeof v === "boolean") return String(v);
+  if (typeof v === "string") return JSON.stringify(v);
+  if (Array.isArray(v)) return `[${v.map(tomlValue).join(", ")}]`;
+  return `{ ${Object.entries(v).map(([k, x]) => `${bareKey(k)} = ${tomlValue(x)}`).join(", ")} }`;
+}
+
+const isTable = (v) => v !== null && typeof v === "object" && !Array.isArray(v);
+
+/**
+ * A case object as TOML text: the form's numbers as written (`inf` for a flat body), the
+ * tables as sections. The server reads it with the case parser of `kontakt solve`, so the
+ * errors name the keys as the file does. (JSON has no infinity, so the pages send the
+ * case as TOML text; `POST /api/case/parse` checks it on saving.)
+ */
+export function toToml(obj) {
+  const lines = [];
+  const table = (t, path) => {
+    const scalars = Object.entries(t).filter(([, v]) => !isTable(v));
+    const subs = Object.entries(t).filter(([, v]) => isTable(v));
+    if (path.length && (scalars.length || subs.length === 0)) lines.push("", `[${path.map(bareKey).join(".")}]`);
+    for (const [k, v] of scalars) if (v !== undefined) lines.push(`${bareKey(k)} = ${tomlValue(v)}`);
+    for (const [k, v] of subs) table(v, [...path, k]);
+  };
+  table(obj, []);
+  return lines.join("\n").replace(/^\n+/, "") + "\n";
+}
+
+/** Downloads the case as TOML after the server's case parser has accepted it. */
 export async function saveToml(caseObj, name) {
-  const out = await api("/api/case/toml", { case: caseObj });
-  download(out.toml, `${name}.toml`, "application/toml");
+  const text = toToml(caseObj);
+  await api("/api/case/parse", { toml: text });
+  download(text, `${name}.toml`, "application/toml");
 }
 
 /** Reads an uploaded TOML file into a case object (the server parses and checks it). */
@@ -463,6 +511,15 @@ export function unitOf(key) {
   return "";
 }
 
+// A report key as a quantity's name: its unit suffix off (the unit has its own column).
+function nameOf(path) {
+  const parts = path.split(".");
+  const last = parts.pop();
+  const suffix = SUFFIX_UNITS.find(([s]) => last.endsWith(s) && last.length > s.length);
+  const stem = suffix ? last.slice(0, -suffix[0].length) : last;
+  return [...parts, stem].map((p) => p.replaceAll("_", " ")).join(": ");
+}
+
 export function fmt(v) {
   if (v === null || v === undefined) return "–";
   if (typeof v === "number") {
@@ -496,7 +553,7 @@ export function resultTable(el, report, keys) {
     if (v === undefined) continue;
     if (typeof v === "object" && v !== null && !(Array.isArray(v) && v.length <= 5 && v.every((x) => typeof x !== "object"))) continue;
     const row = body.insertRow();
-    row.insertCell().textContent = k.replaceAll("_", " ").replaceAll(".", ": ");
+    row.insertCell().textContent = nameOf(k);
     const c = row.insertCell();
     c.textContent = fmt(v);
     c.dataset.key = k;
