@@ -78,7 +78,12 @@ async function show(r, warnings) {
       row.forEach((v, j) => {
         const c = tr.insertCell();
         c.className = "num";
-        c.textContent = `${fmt(Math.abs(v) < 1e-6 * Math.abs(r.stiffness_matrix[i][i] || 1) ? 0 : v)} ${r.stiffness_units ? r.stiffness_units[i][j] : ""}`;
+        const small = Math.abs(v) < 1e-9 * Math.max(Math.abs(r.stiffness_matrix[i][i]), Math.abs(r.stiffness_matrix[j][j]), 1);
+        c.textContent = small ? "0" : Number(v.toPrecision(4)).toExponential();
+        const unit = document.createElement("span");
+        unit.className = "unit";
+        unit.textContent = ` ${r.stiffness_units ? r.stiffness_units[i][j].replace("*", "·") : ""}`;
+        c.append(unit);
       });
     });
     st.append(t);
@@ -92,7 +97,7 @@ async function show(r, warnings) {
       { type: "barpolar", theta: el.map((e) => e.az), r: el.map((e) => e.outer), name: `${kind} load, outer raceway [N]`, marker: { color: "#1f77b4" }, width: el.map(() => 360 / Math.max(el.length, 1) * 0.6) },
       ...(el.some((e) => e.rib) ? [{ type: "barpolar", theta: el.map((e) => e.az), r: el.map((e) => e.rib), name: "rib load [N]", marker: { color: "#d62728" }, width: el.map(() => 360 / Math.max(el.length, 1) * 0.3) }] : []),
     ],
-    { polar: { angularaxis: { direction: "counterclockwise", rotation: 0, ticksuffix: "°" }, radialaxis: { title: { text: "N" }, ticksuffix: " N" } }, legend: { orientation: "h", y: -0.1 } },
+    { polar: { angularaxis: { direction: "counterclockwise", rotation: 0, ticksuffix: "°" }, radialaxis: { angle: 90, tickangle: 90, ticksuffix: " N", tickfont: { size: 10 } } }, legend: { orientation: "h", y: -0.1 } },
     `Load distribution (${kind} loads [N] against azimuth [°])`,
   );
   // The pressure along the most loaded roller.

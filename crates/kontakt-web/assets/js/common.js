@@ -691,7 +691,7 @@ export async function plotly(el, data, layout, title) {
     div,
     data,
     { width, height: 360, margin: { l: 70, r: 20, t: 40, b: 55 }, title: { text: title, font: { size: 14 } }, ...layout },
-    { displaylogo: false, responsive: false, staticPlot: false, modeBarButtonsToRemove: ["toImage"] },
+    { displaylogo: false, displayModeBar: false, responsive: false },
   );
   const stem = (title || "plot").toLowerCase().replace(/[^a-z0-9]+/g, "_").replace(/^_|_$/g, "");
   const img = async (format) => {

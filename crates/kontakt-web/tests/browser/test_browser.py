@@ -261,6 +261,7 @@ def test_rib_page_runs_every_pressure_model(server, browser):
 def test_bearing_page_runs_and_cancels(server, browser):
     open_page(browser, server, "bearing.html", "#form")
     WebDriverWait(browser, 30).until(lambda d: d.find_element(By.ID, "dm").get_attribute("value") != "")
+    fill(browser, {"fx": "4000"})  # a radial load beside the example's axial one: a load zone
     browser.find_element(By.ID, "run").click()
     wait_status(browser, r"^solved", 120)
     assert browser.find_elements(By.CSS_SELECTOR, "#plot-loads .js-plotly-plot")
@@ -268,6 +269,11 @@ def test_bearing_page_runs_and_cancels(server, browser):
     assert browser.find_elements(By.CSS_SELECTOR, "#plot-torque .js-plotly-plot")
     assert float(shown(browser, "friction.total_nmm")) > 0
     shot(browser, "bearing")
+    # the whole page, taller, for the README (docs/img/serve_bearing.png is a copy of it)
+    browser.set_window_size(1280, 1500)
+    browser.execute_script("window.scrollTo(0, 0)")
+    shot(browser, "bearing_page")
+    browser.set_window_size(1280, 800)
     # a long solve (the coupled slices, through /api/jobs: about 10 s here) shows a Cancel
     # button that stops it
     # (on the ISO roller model: the example without a rib contact)
