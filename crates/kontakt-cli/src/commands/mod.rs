@@ -20,6 +20,7 @@ pub mod mbs;
 pub mod mindlin;
 pub mod pimp;
 pub mod rough;
+pub mod serve;
 pub mod sweep;
 pub mod traction;
 pub mod validate;
@@ -223,6 +224,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
         Command::Mbs(args) => mbs::run(args, out),
         Command::Sweep(args) => sweep::run(args, out),
         Command::Fmu(args) => fmu::run(args, out),
+        Command::Serve(args) => serve::run(args, out),
     }
 }
 
