@@ -281,7 +281,7 @@ export async function runCase(caseValue, { long = false, status } = {}) {
   if (!long) {
     if (status) setStatus(status, "solving …", "busy");
     const out = await api("/api/run", { case: toToml(caseValue) });
-    return { report: out.report, warnings: out.warnings || [], fields: out.fields };
+    return { report: out.report, warnings: out.warnings || [], fields: out.fields, axisStress: out.axis_stress };
   }
   const job = await api("/api/jobs", { case: toToml(caseValue) });
   const id = job.id;
@@ -314,7 +314,7 @@ export async function runCase(caseValue, { long = false, status } = {}) {
       if (typeof s.progress === "number") bar.value = s.progress;
       else bar.removeAttribute("value");
       if (s.state === "done" || s.report) {
-        return { report: s.report, warnings: s.warnings || [], fields: s.fields };
+        return { report: s.report, warnings: s.warnings || [], fields: s.fields, axisStress: s.axis_stress };
       }
       if (s.state === "cancelled" || cancelled) throw new Error("cancelled");
       if (s.state === "failed" || s.state === "error" || s.error) {

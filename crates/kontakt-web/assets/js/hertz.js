@@ -9,6 +9,7 @@ const form = document.getElementById("form");
 const status = document.getElementById("status");
 let base = { method: "hertz" };
 let last = null;
+let lastStress = null;
 
 const DEFAULT = {
   name: "ball on flat",
@@ -62,7 +63,7 @@ function profile(report) {
   return { s, series };
 }
 
-function show(report, warnings) {
+function show(report, warnings, axisStress) {
   last = report;
   showWarnings(document.getElementById("warnings"), report.warnings || [], warnings);
   resultTable(document.getElementById("results"), report, KEYS);
@@ -74,17 +75,27 @@ function show(report, warnings) {
     ylabel: "pressure [MPa]",
     series,
   });
-  const z = report.axis_stress;
+  // The stresses on the load axis (the server's, from kontakt::hertz::subsurface).
   const el = document.getElementById("plot-stress");
-  if (z && Array.isArray(z.depth_mm)) {
+  lastStress = axisStress || null;
+  if (axisStress) {
+    const series = [];
+    for (const b of axisStress.bodies) {
+      const tag = axisStress.bodies.length > 1 ? ` (body ${b.body}, ν = ${b.nu})` : "";
+      series.push({ label: `τ max (Tresca)${tag}`, y: b.max_shear_mpa });
+      series.push({ label: `von Mises${tag}`, y: b.von_mises_mpa });
+      if (b.body === 1) {
+        series.push({ label: "σx", y: b.sigma_x_mpa, dash: [5, 4] });
+        series.push({ label: "σy", y: b.sigma_y_mpa, dash: [5, 4] });
+        series.push({ label: "σz", y: b.sigma_z_mpa, dash: [2, 3] });
+      }
+    }
     linePlot(el, {
-      title: "Stresses along the axis below the centre",
-      x: z.depth_mm,
+      title: "Stresses along the load axis below the centre",
+      x: axisStress.depth_mm,
       xlabel: "depth z [mm]",
-      ylabel: "stress [MPa]",
-      series: Object.entries(z)
-        .filter(([k, v]) => k !== "depth_mm" && Array.isArray(v))
-        .map(([k, v]) => ({ label: k.replace(/_mpa$/, "").replaceAll("_", " "), y: v })),
+      ylabel: "stress [MPa] (tension > 0)",
+      series,
     });
   } else {
     el.replaceChildren();
@@ -93,7 +104,17 @@ function show(report, warnings) {
 
 function csv() {
   const { s, series } = profile(last);
-  return toCsv([["position_mm", s], ...series.map((x) => [x.label.startsWith("p along y") ? "pressure_y_mpa" : "pressure_x_mpa", x.y])]);
+  let text = toCsv([["position_mm", s], ...series.map((x) => [x.label.startsWith("p along y") ? "pressure_y_mpa" : "pressure_x_mpa", x.y])]);
+  if (lastStress) {
+    const cols = [["depth_mm", lastStress.depth_mm]];
+    for (const b of lastStress.bodies) {
+      for (const k of ["sigma_x_mpa", "sigma_y_mpa", "sigma_z_mpa", "max_shear_mpa", "von_mises_mpa"]) {
+        cols.push([`body${b.body}_${k}`, b[k]]);
+      }
+    }
+    text += "\n" + toCsv(cols);
+  }
+  return text;
 }
 
 form.addEventListener("submit", async (ev) => {
@@ -102,8 +123,8 @@ form.addEventListener("submit", async (ev) => {
   await busy(document.getElementById("run"), async () => {
     try {
       const c = readCase(form, base);
-      const { report, warnings } = await runCase(c, { status });
-      show(report, warnings);
+      const { report, warnings, axisStress } = await runCase(c, { status });
+      show(report, warnings, axisStress);
       setStatus(status, `solved: p0 = ${report.max_pressure_mpa.toFixed(1)} MPa`, "done");
     } catch (err) {
       showError(form, status, err);

@@ -113,9 +113,10 @@ async function show(r, warnings, maps) {
   cmp.replaceChildren(p, table);
   const holder = document.getElementById("maps");
   holder.replaceChildren();
-  for (const m of maps) {
-    const div = document.createElement("div");
-    holder.append(div);
+  // Every cell first, then the plots: each sizes itself to its cell of the grid.
+  const cells = maps.map(() => holder.appendChild(document.createElement("div")));
+  for (const [i, m] of maps.entries()) {
+    const div = cells[i];
     const field = (m.fields || []).find((f) => f.name === "pressure");
     await plotly(div, mapTraces(m.label, field, m.report, true), {
       xaxis: { title: { text: "along the rib (circumferential) [mm]" } },

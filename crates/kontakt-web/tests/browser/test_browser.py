@@ -144,7 +144,14 @@ def shown(driver, key: str) -> str:
 
 
 def shot(driver, name: str) -> None:
+    """The page at 1280 x 800 as a person sees it (`name.png`), and the whole page
+    (`name_page.png`, the window made as tall as the page)."""
     driver.save_screenshot(str(SHOTS / f"{name}.png"))
+    height = driver.execute_script("return document.documentElement.scrollHeight")
+    driver.set_window_size(1280, min(max(int(height) + 140, 800), 4000))
+    driver.execute_script("window.scrollTo(0, 0)")
+    driver.save_screenshot(str(SHOTS / f"{name}_page.png"))
+    driver.set_window_size(1280, 800)
 
 
 # The Hertz case the test types into the form, and the same case for the CLI.
@@ -214,8 +221,9 @@ def test_hertz_page_matches_the_cli(server, browser, tmp_path):
         assert page == pytest.approx(cli[key], rel=1e-5), key
     a, b = (float(x) for x in shown(browser, "semi_axes_mm").split(","))
     assert [a, b] == pytest.approx(cli["semi_axes_mm"], rel=1e-5)
-    # the pressure profile is drawn (a uPlot canvas)
+    # the pressure profile and the stresses along the axis are drawn (uPlot canvases)
     assert browser.find_elements(By.CSS_SELECTOR, "#plot-pressure canvas")
+    assert browser.find_elements(By.CSS_SELECTOR, "#plot-stress canvas")
     shot(browser, "hertz")
     assert console_errors(browser) == []
 
@@ -268,12 +276,7 @@ def test_bearing_page_runs_and_cancels(server, browser):
     assert browser.find_elements(By.CSS_SELECTOR, "#plot-slices canvas")
     assert browser.find_elements(By.CSS_SELECTOR, "#plot-torque .js-plotly-plot")
     assert float(shown(browser, "friction.total_nmm")) > 0
-    shot(browser, "bearing")
-    # the whole page, taller, for the README (docs/img/serve_bearing.png is a copy of it)
-    browser.set_window_size(1280, 1500)
-    browser.execute_script("window.scrollTo(0, 0)")
-    shot(browser, "bearing_page")
-    browser.set_window_size(1280, 800)
+    shot(browser, "bearing")  # bearing_page.png: docs/img/serve_bearing.png is its top
     # a long solve (the coupled slices, through /api/jobs: about 10 s here) shows a Cancel
     # button that stops it
     # (on the ISO roller model: the example without a rib contact)
