@@ -142,6 +142,11 @@ impl Jobs {
                 v["progress"] = 1.0.into();
                 v["report"] = answer["report"].clone();
                 v["warnings"] = answer["warnings"].clone();
+                for key in ["axis_stress", "fields"] {
+                    if let Some(x) = answer.get(key) {
+                        v[key] = x.clone();
+                    }
+                }
             }
             State::Failed(error) => {
                 v["state"] = "failed".into();

@@ -12,6 +12,7 @@ pub mod assets;
 pub mod case_io;
 pub mod error;
 pub mod jobs;
+pub mod page_data;
 pub mod worker;
 
 pub use api::Limits;

@@ -280,7 +280,15 @@ pub fn report_body(outcome: &kontakt_case::Outcome) -> Result<String, ApiError> 
     let report = serde_json::to_string(outcome).map_err(|e| internal(&format!("report: {e}")))?;
     let warnings = serde_json::to_string(outcome.warnings())
         .map_err(|e| internal(&format!("warnings: {e}")))?;
-    Ok(format!("{{\"report\":{report},\"warnings\":{warnings}}}"))
+    // What the pages draw beside the report (crate::page_data): stresses along the axis,
+    // pressure fields.
+    let mut extras = String::new();
+    for (key, value) in crate::page_data::extras(outcome) {
+        extras.push_str(&format!(",\"{key}\":{value}"));
+    }
+    Ok(format!(
+        "{{\"report\":{report},\"warnings\":{warnings}{extras}}}"
+    ))
 }
 
 #[cfg(all(test, unix))]
