@@ -465,6 +465,35 @@ fn time_limit_and_cancellation() {
     assert_eq!(status, 404);
 }
 
+/// A client that gives up mid-solve: its worker is killed, long before the time limit
+/// (60 s). While the client waits the worker computes (its CPU time grows), after it left
+/// the CPU time stands still.
+#[cfg(target_os = "linux")]
+#[test]
+fn a_client_that_leaves_stops_its_solve() {
+    let s = Server::start(&["--time-limit", "60"]);
+    let body = json!({ "case": slow_case() }).to_string();
+    let mut c = TcpStream::connect(&s.addr).unwrap();
+    write!(
+        c,
+        "POST /api/run HTTP/1.1\r\nHost: {}\r\nContent-Type: application/json\r\n\
+         Content-Length: {}\r\n\r\n{body}",
+        s.addr,
+        body.len()
+    )
+    .unwrap();
+    std::thread::sleep(Duration::from_millis(500));
+    let before = s.workers_cpu();
+    std::thread::sleep(Duration::from_millis(500));
+    assert!(
+        s.workers_cpu() > before + 10,
+        "the solve runs while the client waits"
+    );
+    drop(c);
+    assert_no_cpu_burning(&s);
+    assert_eq!(s.get("/api/health").0, 200);
+}
+
 fn poll(s: &Server, id: &str) -> Value {
     let t = Instant::now();
     loop {
