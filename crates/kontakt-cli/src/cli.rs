@@ -127,6 +127,10 @@ pub enum Command {
     /// types: every method's keys, their types, defaults and units; for validators and
     /// editors' completion (docs/case-schema.md, "JSON Schema").
     Schema,
+    /// A local web calculator: an HTTP server on 127.0.0.1 with the calculator's pages and
+    /// a JSON API over the case runner (the same validation, messages and JSON as `kontakt
+    /// solve`); the first line printed is its URL (docs/serve.md).
+    Serve(ServeArgs),
 }
 
 #[derive(Debug, Args)]
@@ -486,4 +490,29 @@ pub struct FmuArgs {
     /// its folder or its deps/ folder, as `cargo build` and `cargo test` leave it).
     #[arg(long, value_name = "FILE")]
     pub library: Option<PathBuf>,
+}
+
+#[derive(Debug, Args)]
+pub struct ServeArgs {
+    /// The port, 1..=65535; 0 picks a free one (the URL printed says which).
+    #[arg(long, value_name = "N", default_value_t = 8080)]
+    pub port: u16,
+    /// Open the calculator in the desktop's browser (a failure to open is a warning).
+    #[arg(long)]
+    pub open: bool,
+    /// The address to listen on. Default 127.0.0.1 (this machine only); another address
+    /// (e.g. 0.0.0.0) lets other machines run solves on this one, and is warned about.
+    #[arg(long, value_name = "ADDR", default_value = "127.0.0.1")]
+    pub address: std::net::IpAddr,
+    /// Longest solve of POST /api/run [s], 0.1..=86400; a longer one is stopped (its
+    /// worker process killed) and answered 408. Jobs get ten times as long.
+    #[arg(long, value_name = "S", default_value_t = 60.0)]
+    pub time_limit: f64,
+    /// Concurrent solves (worker processes), 1..=256; default: the number of cores (at
+    /// least 2).
+    #[arg(long, value_name = "N")]
+    pub workers: Option<usize>,
+    /// Internal: run as a worker process of a server (cases on standard input).
+    #[arg(long, hide = true)]
+    pub worker: bool,
 }

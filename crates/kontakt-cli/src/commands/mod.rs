@@ -21,6 +21,7 @@ pub mod mindlin;
 pub mod pimp;
 pub mod rough;
 pub mod schema;
+pub mod serve;
 pub mod sweep;
 pub mod traction;
 pub mod validate;
@@ -225,6 +226,7 @@ pub fn run(cli: &Cli, out: &mut impl Write) -> Result<()> {
         Command::Sweep(args) => sweep::run(args, out),
         Command::Fmu(args) => fmu::run(args, out),
         Command::Schema => schema::run(out),
+        Command::Serve(args) => serve::run(args, out),
     }
 }
 
