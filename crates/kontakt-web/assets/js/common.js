@@ -712,3 +712,73 @@ export async function busy(button, task) {
     button.disabled = false;
   }
 }
+
+// ---------------------------------------------------------------- a page
+
+/** Turns the form's labels matching `selector` on or off: off ones are hidden and left out of the case. */
+export function toggle(form, selector, on) {
+  for (const el of form.querySelectorAll(selector)) {
+    el.classList.toggle("hidden", !on);
+    if (on) delete el.dataset.off;
+    else el.dataset.off = "1";
+  }
+}
+
+const FILE_BAR = `<select class="examples" id="examples"><option value="">example …</option></select>
+<label class="upload"><input type="file" accept=".toml,text/plain"><span>Load TOML</span></label>
+<button type="button" class="save-toml">Save TOML</button>
+<button type="button" class="save-json">JSON</button>
+<button type="button" class="save-csv">CSV</button>`;
+
+/**
+ * Wires a page whose form is `#form`, status line `#status`, file bar `#filebar` and Solve
+ * button `#run`: `solve(case)` runs the case and draws it, resolving to the status text;
+ * `onSet(case)` after the form is filled (and on every change of the form), `report()` and
+ * `csv()` for the downloads, `start()` the first case. Input errors go beside their
+ * field, a cancelled job into the status line.
+ */
+export async function page({ active, methods, stem, solve, onSet, report, csv, start }) {
+  frame(active);
+  const form = document.getElementById("form");
+  const status = document.getElementById("status");
+  let base = {};
+  const sync = () => onSet && onSet(base);
+  const setCase = (c) => {
+    base = c;
+    fillForm(form, c);
+    sync();
+  };
+  form.addEventListener("change", sync);
+  form.addEventListener("submit", async (ev) => {
+    ev.preventDefault();
+    clearErrors(form);
+    sync();
+    await busy(document.getElementById("run"), async () => {
+      try {
+        setStatus(status, await solve(readCase(form, base), status), "done");
+      } catch (err) {
+        if (err.message === "cancelled") setStatus(status, "cancelled", "error");
+        else showError(form, status, err);
+      }
+    });
+  });
+  const bar = document.getElementById("filebar");
+  bar.innerHTML = FILE_BAR;
+  await fileBar(bar, {
+    methods,
+    get: () => readCase(form, base),
+    set: setCase,
+    report,
+    csv,
+    name: () => (document.getElementById("name").value || stem).replace(/[^A-Za-z0-9_-]+/g, "_"),
+    status,
+  });
+  try {
+    const first = await start();
+    if (first) setCase(first.case);
+    if (first && first.example) bar.querySelector("select.examples").value = first.example;
+  } catch (err) {
+    setStatus(status, err.message, "error");
+  }
+  return { form, status };
+}

@@ -23,6 +23,7 @@ import shutil
 import subprocess
 import threading
 import time
+import urllib.request
 from pathlib import Path
 
 import pytest
@@ -37,6 +38,7 @@ ROOT = Path(__file__).resolve().parents[4]
 TARGET = Path(os.environ.get("CARGO_TARGET_DIR", ROOT / "target"))
 KONTAKT = TARGET / "debug" / "kontakt"
 SHOTS = TARGET / "browser"
+DOWNLOADS = SHOTS / "downloads"
 CHROMIUM = os.environ.get("KONTAKT_CHROMIUM", "/usr/bin/chromium")
 CHROMEDRIVER = os.environ.get("KONTAKT_CHROMEDRIVER", "/usr/bin/chromedriver")
 
@@ -90,6 +92,10 @@ def browser():
     for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--window-size=1280,800"):
         options.add_argument(arg)
     options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+    DOWNLOADS.mkdir(parents=True, exist_ok=True)
+    options.add_experimental_option(
+        "prefs", {"download.default_directory": str(DOWNLOADS), "download.prompt_for_download": False}
+    )
     driver = webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
     driver.set_window_size(1280, 800)
     SHOTS.mkdir(parents=True, exist_ok=True)
@@ -306,4 +312,51 @@ def test_index_page_links_every_page(server, browser):
     hrefs = {a.get_attribute("href").rsplit("/", 1)[-1] for a in browser.find_elements(By.CSS_SELECTOR, ".cards a")}
     assert hrefs == {"hertz.html", "rib.html", "bearing.html", "traction.html"}
     shot(browser, "index")
+    assert console_errors(browser) == []
+
+
+def downloaded(name: str, timeout: float = 20) -> Path:
+    path = DOWNLOADS / name
+    end = time.monotonic() + timeout
+    while time.monotonic() < end:
+        if path.is_file() and path.stat().st_size > 0:
+            return path
+        time.sleep(0.2)
+    pytest.fail(f"{name} was not downloaded into {DOWNLOADS}")
+
+
+def parsed(server: str, text: str) -> dict:
+    """A case file's tables as the server's case parser reads them (`POST /api/case/parse`)."""
+    request = urllib.request.Request(
+        f"{server}/api/case/parse",
+        data=json.dumps({"toml": text}).encode(),
+        headers={"content-type": "application/json"},
+    )
+    with urllib.request.urlopen(request, timeout=30) as answer:
+        return json.load(answer)["case"]
+
+
+def test_toml_load_save_and_downloads(server, browser):
+    """Load TOML (an upload) fills the form, flat radii as inf; Save TOML writes the same
+    case back; JSON and CSV download the result."""
+    for old in DOWNLOADS.glob("*"):
+        old.unlink()
+    open_page(browser, server, "hertz.html", "#form")
+    upload = browser.find_element(By.CSS_SELECTOR, "#filebar input[type=file]")
+    upload.send_keys(str(ROOT / "examples" / "ball_on_flat.toml"))
+    WebDriverWait(browser, 30).until(lambda d: "loaded" in d.find_element(By.ID, "status").text)
+    assert browser.find_element(By.ID, "r2x").get_attribute("value") == "inf"
+    assert browser.find_element(By.ID, "force").get_attribute("value") == "100"
+    browser.find_element(By.CSS_SELECTOR, "#filebar .save-toml").click()
+    saved = parsed(server, downloaded("ball_on_flat.toml").read_text())
+    assert saved == parsed(server, (ROOT / "examples" / "ball_on_flat.toml").read_text())
+    browser.find_element(By.ID, "run").click()
+    wait_status(browser, r"^solved", 30)
+    browser.find_element(By.CSS_SELECTOR, "#filebar .save-json").click()
+    report = json.loads(downloaded("ball_on_flat.json").read_text())
+    assert report["max_pressure_mpa"] == pytest.approx(1855.5955901395419, rel=1e-12)
+    browser.find_element(By.CSS_SELECTOR, "#filebar .save-csv").click()
+    assert downloaded("ball_on_flat.csv").read_text().startswith("position_mm,")
+    browser.find_element(By.CSS_SELECTOR, "#plot-pressure .plot-export button").click()
+    assert downloaded("contact_pressure.png").read_bytes()[:4] == b"\x89PNG"
     assert console_errors(browser) == []
