@@ -165,3 +165,28 @@ fn cylindrical_rib_friction_allocates_nothing() {
         assert_eq!(n, 0, "call {i}");
     }
 }
+
+/// A ball bearing element with a lubricant (the 6205 at 3000 r/min, its balls at speed):
+/// the ball friction over every contact ellipse allocates nothing per call either, also
+/// after a speed change.
+#[test]
+fn ball_bearing_friction_allocates_nothing() {
+    use kontakt_case::bearing_model::BearingElement;
+    let path =
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../examples/bearing_6205_friction.toml");
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut e = BearingElement::from_toml(&text).unwrap();
+    let case = kontakt_case::BearingCase::from_toml_str(&text).unwrap();
+    let r = kontakt_case::run_bearing_case(&case).unwrap();
+    let (d, t) = (r.displacement_mm, r.tilt_rad);
+    let u = [d[0], d[1], d[2], t[0], t[1]];
+    e.evaluate(u, [0.0; 5]).unwrap();
+    for (i, du) in [1.0, 1.01, 0.99].into_iter().enumerate() {
+        if i == 2 {
+            e.set_speeds(200.0, 0.0).unwrap();
+        }
+        let (o, n) = allocations(|| e.evaluate(u.map(|x| du * x), [0.0; 5]).unwrap());
+        assert!(o.friction.torque_nmm > 0.0, "{:?}", o.friction);
+        assert_eq!(n, 0, "call {i}");
+    }
+}

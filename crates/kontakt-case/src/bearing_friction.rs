@@ -95,6 +95,16 @@ pub struct OperatingSpec {
     /// the viscosity from the lubricant's data at each (`friction.temperature_sweep`).
     #[serde(default)]
     pub sweep_temperature_c: Option<Vec<f64>>,
+    /// The pressure field of the roller end/rib contacts' friction (a tapered bearing with
+    /// `roller_model = "rib_contact"`): `"hertz"` (default), `"pimp"` or `"halfspace"`, the
+    /// models of the rib friction case (`kontakt friction`); a cylindrical bearing's ribs
+    /// take `"hertz"` only.
+    #[serde(default = "hertz")]
+    pub rib_pressure: PressureModel,
+}
+
+fn hertz() -> PressureModel {
+    PressureModel::Hertz
 }
 
 /// The `[operating]` of a case without the table: every key at its default.
@@ -113,6 +123,7 @@ impl Default for OperatingSpec {
             sweep_axial_n: None,
             sweep_radial_n: None,
             sweep_temperature_c: None,
+            rib_pressure: hertz(),
         }
     }
 }
@@ -530,7 +541,14 @@ fn point(
                 Some(pair) => {
                     let rib = rib_model(pair, bearing, law, rib_lub)?;
                     let mut values = vec![0.0; bearing.rollers];
-                    let f = rib_powers(&rib, solver, [wi, wo], &mut Vec::new(), &mut values)?;
+                    let f = rib_powers(
+                        &rib,
+                        op.rib_pressure,
+                        solver,
+                        [wi, wo],
+                        &mut Vec::new(),
+                        &mut values,
+                    )?;
                     if let Some(c) = f.most_loaded().and_then(|r| r.friction.as_ref())
                         && let Some(film) = &c.film_thickness
                     {
@@ -544,6 +562,7 @@ fn point(
                 }
                 None => {
                     // a cylindrical roller bearing's roller ends on its ribs
+                    crb_rib_pressure(op)?;
                     let crb = crb_rib_model(bearing, law, rib_lub)?;
                     let mut values = vec![0.0; bearing.rollers];
                     crb_rib_values(&crb, solver, [wi, wo], &mut values)?;
@@ -1070,6 +1089,7 @@ pub(crate) fn rib_model(
 /// [`RibFrictionModel::evaluate_rollers`]; field `rib` for a `values` of the wrong length.
 pub(crate) fn rib_powers(
     rib: &RibFrictionModel,
+    pressure: PressureModel,
     solver: &RibContactSolver,
     speeds: [f64; 2],
     loads: &mut Vec<RollerRibLoad>,
@@ -1100,7 +1120,7 @@ pub(crate) fn rib_powers(
             format!("{} values, one per roller", loads.len()),
         ));
     }
-    let f = rib.evaluate_rollers(PressureModel::Hertz, &k, loads)?;
+    let f = rib.evaluate_rollers(pressure, &k, loads)?;
     let mu_b = rib.law().boundary_coefficient;
     for (v, r) in values.iter_mut().zip(&f.rollers) {
         *v = match (&r.friction, starting) {
@@ -1110,6 +1130,23 @@ pub(crate) fn rib_powers(
         };
     }
     Ok(f)
+}
+
+/// A cylindrical roller bearing's ribs take the Hertz pressure only (their friction
+/// integrates each rib contact's Hertz ellipse).
+///
+/// # Errors
+/// [`Error::InvalidInput`] naming `operating.rib_pressure`.
+pub(crate) fn crb_rib_pressure(op: &OperatingSpec) -> Result<()> {
+    if op.rib_pressure == PressureModel::Hertz {
+        Ok(())
+    } else {
+        Err(Error::invalid(
+            "operating.rib_pressure",
+            op.rib_pressure.as_str(),
+            "\"hertz\" for a cylindrical roller bearing (its roller-end/rib friction integrates the Hertz ellipse; \"pimp\" and \"halfspace\" are for a tapered bearing's rib)",
+        ))
+    }
 }
 
 /// The roller-end/rib friction model of a cylindrical roller bearing with ribs

@@ -6,8 +6,8 @@
 //! prescribed at the element's displacement), to 1e-12: the ISO slice model of the 32008 X
 //! (Manjunath et al. 2023 conditions) at rest, running, with the outer ring turning, and a
 //! rib-contact tapered bearing with its rib share; power = torque × Δω; the sign of
-//! `moment_nmm[2]`; friction off without a lubricant and "not built" for a ball bearing; bad
-//! speeds refused naming the argument.
+//! `moment_nmm[2]`; ball bearings against their report; friction off without a lubricant and
+//! "not built" for a thrust roller bearing; bad speeds refused naming the argument.
 
 #![allow(clippy::unwrap_used)] // tests: a panic is a failure with its message
 
@@ -233,12 +233,52 @@ fn rib_contact_element_friction_is_the_case_report() {
     assert_balanced("rib contact at rest", &s);
 }
 
-/// A ball bearing with a lubricant: friction "not built" (zeros), the forces as ever.
+/// Ball bearings: the element's friction is the case report's at the case's speed, to
+/// 1e-12 — the 6205 (deep groove, oil bath, 3000 r/min) and the 7205 (angular contact, the
+/// 32008 X's oil, 1500 r/min), both at speed (centrifugal forces in the loads); the inner
+/// race is the breakdown's cone, the outer race its cup, no rib; at rest the starting
+/// torque, reported and not applied.
 #[test]
-fn ball_bearing_friction_is_not_built() {
+fn ball_bearing_element_friction_is_the_case_report() {
+    for (what, base) in [
+        ("6205", example("bearing_6205_friction.toml")),
+        (
+            "7205",
+            format!("{}\n{}", example("bearing_7205.toml"), rib_oil()),
+        ),
+    ] {
+        let u = equilibrium(&base);
+        let text = prescribed(&base, u);
+        let mut e = BearingElement::from_toml(&text).unwrap();
+        let o = e.evaluate(u, [0.0; 5]).unwrap();
+        let report = run(&text).unwrap();
+        let f = report.friction.as_ref().unwrap();
+        assert_same(what, &o.friction, f);
+        assert_balanced(what, &o);
+        assert!(
+            o.friction.torque_nmm > 0.0 && o.friction.rib_nmm == 0.0,
+            "{what}"
+        );
+        assert!(
+            o.friction.cone_nmm > 0.0 && o.friction.cup_nmm > 0.0,
+            "{what}"
+        );
+        println!("{what}: {:?}", o.friction);
+        e.set_speeds(0.0, 0.0).unwrap();
+        let s = e.evaluate(u, [0.0; 5]).unwrap();
+        assert_eq!(s.friction.status, ElementFrictionStatus::Starting, "{what}");
+        assert!(s.friction.torque_nmm > 0.0, "{what}");
+        assert_balanced(&format!("{what} at rest"), &s);
+    }
+}
+
+/// A thrust roller bearing with a lubricant: friction "not built" (zeros), the forces as
+/// ever.
+#[test]
+fn thrust_bearing_friction_is_not_built() {
     let text = format!(
         "{}\n{}",
-        example("bearing_7205.toml"),
+        example("bearing_81107_thrust.toml"),
         lubricant(&example("bearing_32008x_friction.toml"))
     );
     let u = equilibrium(&text);

@@ -255,3 +255,49 @@ fn cylindrical_bearing_rolls_without_sliding_and_thrust_is_refused() {
     .to_string();
     assert!(e.contains("operating"), "{e}");
 }
+
+/// `operating.rib_pressure`: the rib-contact TRB's rib share with the PimP and the
+/// half-space pressure fields, beside Hertz's (the library test `rib_share_equals_the_rib_
+/// friction_study` checks each against `kontakt friction` to 1e-9); the raceways do not
+/// change; a cylindrical bearing's ribs refuse anything but Hertz, naming the key.
+#[test]
+fn the_rib_pressure_model_is_the_cases_choice() {
+    let base = format!(
+        "{}\n{RIB_OIL}{SPEED}",
+        example("bearing_rib_contact_60mm.toml")
+    );
+    let with = |model: &str| {
+        run(&base.replace(
+            "[operating]\n",
+            &format!("[operating]\nrib_pressure = \"{model}\"\n"),
+        ))
+        .unwrap()
+        .friction
+        .unwrap()
+    };
+    let hertz = run(&base).unwrap().friction.unwrap();
+    assert_eq!(with("hertz"), hertz);
+    for model in ["pimp", "halfspace"] {
+        let f = with(model);
+        println!(
+            "{model}: rib {:.4} N·mm, Hertz {:.4}",
+            f.rib_nmm, hertz.rib_nmm
+        );
+        assert!(f.rib_nmm > 0.0 && f.rib_nmm != hertz.rib_nmm, "{model}");
+        assert!(rel(f.rib_nmm, hertz.rib_nmm) < 0.05, "{model}");
+        let raceways = |f: &kontakt_case::bearing_friction::FrictionReport| {
+            f.cone_rolling_nmm + f.cone_sliding_nmm + f.cup_rolling_nmm + f.cup_sliding_nmm
+        };
+        assert_eq!(raceways(&f), raceways(&hertz), "{model}");
+    }
+    let crb = format!(
+        "{}\n{}{SPEED}",
+        example("bearing_nj_crb_rib_contact.toml"),
+        RIB_OIL.replace("[operating]\n", "[operating]\nrib_pressure = \"pimp\"\n")
+    );
+    let err = run(&crb).unwrap_err().to_string();
+    assert!(
+        err.contains("operating.rib_pressure") && err.contains("pimp"),
+        "{err}"
+    );
+}

@@ -21,7 +21,12 @@ struct Server {
 
 impl Server {
     fn start(extra: &[&str]) -> Server {
-        let mut child = Command::new(env!("CARGO_BIN_EXE_kontakt"))
+        Self::start_in(extra, &mut Command::new(env!("CARGO_BIN_EXE_kontakt")))
+    }
+
+    /// Start `command` (the binary, with its environment) as `serve --port 0 EXTRA`.
+    fn start_in(extra: &[&str], command: &mut Command) -> Server {
+        let mut child = command
             .args(["serve", "--port", "0"])
             .args(extra)
             .stdin(Stdio::null())
@@ -49,13 +54,7 @@ impl Server {
 
     /// POST a JSON value.
     fn post(&self, path: &str, body: &Value) -> (u16, Value) {
-        let (status, text) = self.request(
-            "POST",
-            path,
-            &[("Content-Type", "application/json")],
-            body.to_string().as_bytes(),
-        );
-        (status, serde_json::from_str(&text).unwrap_or(Value::Null))
+        self.post_raw(path, "application/json", body.to_string().as_bytes())
     }
 
     fn post_raw(&self, path: &str, content_type: &str, body: &[u8]) -> (u16, Value) {
@@ -63,19 +62,9 @@ impl Server {
         (status, serde_json::from_str(&text).unwrap_or(Value::Null))
     }
 
-    /// One HTTP/1.1 request on its own connection: the status and the body.
+    /// One HTTP/1.1 request on its own connection: the status and the body. The `Host`
+    /// header is the server's address unless `headers` name one.
     fn request(
-        &self,
-        method: &str,
-        path: &str,
-        headers: &[(&str, &str)],
-        body: &[u8],
-    ) -> (u16, String) {
-        let host = [("Host", self.addr.as_str())];
-        self.request_with_host(method, path, &[&host[..], headers].concat(), body)
-    }
-
-    fn request_with_host(
         &self,
         method: &str,
         path: &str,
@@ -85,6 +74,9 @@ impl Server {
         let mut s = TcpStream::connect(&self.addr).unwrap();
         s.set_read_timeout(Some(Duration::from_secs(120))).unwrap();
         let mut head = format!("{method} {path} HTTP/1.1\r\nConnection: close\r\n");
+        if !headers.iter().any(|(k, _)| k.eq_ignore_ascii_case("host")) {
+            head.push_str(&format!("Host: {}\r\n", self.addr));
+        }
         for (k, v) in headers {
             head.push_str(&format!("{k}: {v}\r\n"));
         }
@@ -180,6 +172,14 @@ fn slow_case() -> String {
         )
 }
 
+/// `/api/case/parse` of a case text that parses: `{"case", "method"}`.
+fn parsed(s: &Server, text: &str) -> Value {
+    let (status, parsed) = s.post("/api/case/parse", &json!({ "toml": text }));
+    assert_eq!(status, 200, "{parsed}");
+    assert!(parsed["case"].is_object(), "{parsed}");
+    parsed
+}
+
 fn error_of(v: &Value) -> &Value {
     assert!(
         v["error"]["message"].is_string(),
@@ -230,7 +230,8 @@ fn health_examples_and_pages() {
 
 /// The API's report is exactly what `kontakt solve --json` prints, for a Hertz, a PimP
 /// roller-end/rib, a friction, two bearing and a traction case; the case as a JSON object
-/// (from /api/case/parse) gives the same report as its TOML text.
+/// (from /api/case/parse) gives the same report as its TOML text, and /api/case/toml writes
+/// it back as the same tables.
 #[test]
 fn run_equals_solve_json() {
     let s = Server::start(&[]);
@@ -251,28 +252,12 @@ fn run_equals_solve_json() {
         let warnings = expected.get("warnings").cloned().unwrap_or(json!([]));
         assert_eq!(answer["warnings"], warnings, "{name}");
 
-        let (status, parsed) = s.post("/api/case/parse", &json!({ "toml": text }));
-        assert_eq!(status, 200, "{name}: {parsed}");
-        assert!(parsed["case"].is_object());
+        let parsed = parsed(&s, &text);
         let (status, from_json) = s.post("/api/run", &json!({ "case": parsed["case"] }));
         assert_eq!(status, 200, "{name}: {from_json}");
         assert_eq!(from_json["report"], expected, "{name} as a JSON object");
-    }
-}
 
-/// Load a TOML file into a form and save it again: the tables survive the round trip, and
-/// both directions refuse what the case parser refuses.
-#[test]
-fn case_parse_and_toml_round_trip() {
-    let s = Server::start(&[]);
-    for name in [
-        "ball_on_flat.toml",
-        "bearing_6205.toml",
-        "traction_twin_disc.toml",
-    ] {
-        let text = example_text(name);
-        let (status, parsed) = s.post("/api/case/parse", &json!({ "toml": text }));
-        assert_eq!(status, 200, "{parsed}");
+        // Saved again as TOML (a form's "save"): the same tables.
         let (status, saved) = s.post("/api/case/toml", &json!({ "case": parsed["case"] }));
         assert_eq!(status, 200, "{saved}");
         let again: toml::Table = saved["toml"].as_str().unwrap().parse().unwrap();
@@ -280,6 +265,13 @@ fn case_parse_and_toml_round_trip() {
         assert_eq!(again, original, "{name}");
         assert_eq!(saved["method"], parsed["method"]);
     }
+}
+
+/// Loading into a form and saving refuse what the case parser refuses (the round trip of
+/// good cases is in `run_equals_solve_json`).
+#[test]
+fn case_parse_and_toml_round_trip() {
+    let s = Server::start(&[]);
     let (status, v) = s.post(
         "/api/case/parse",
         &json!({ "toml": "method = \"hertz\"\nload = 3\nbogus = 1\n" }),
@@ -398,9 +390,9 @@ fn error_answers() {
     error_of(&serde_json::from_str(&body).unwrap());
     let (status, v) = s.post_raw("/api/run", "text/plain", b"{\"case\": \"\"}");
     assert_eq!(status, 415, "{v}");
-    let (status, _) = s.request_with_host("GET", "/api/health", &[("Host", "evil.example")], b"");
+    let (status, _) = s.request("GET", "/api/health", &[("Host", "evil.example")], b"");
     assert_eq!(status, 421);
-    let (status, _) = s.request_with_host("GET", "/api/health", &[("Host", "localhost:1")], b"");
+    let (status, _) = s.request("GET", "/api/health", &[("Host", "localhost:1")], b"");
     assert_eq!(status, 200);
 }
 
@@ -471,6 +463,35 @@ fn time_limit_and_cancellation() {
     assert_eq!(status, 404);
     let (status, _) = s.request("DELETE", "/api/jobs/nope", &[], b"");
     assert_eq!(status, 404);
+}
+
+/// A client that gives up mid-solve: its worker is killed, long before the time limit
+/// (60 s). While the client waits the worker computes (its CPU time grows), after it left
+/// the CPU time stands still.
+#[cfg(target_os = "linux")]
+#[test]
+fn a_client_that_leaves_stops_its_solve() {
+    let s = Server::start(&["--time-limit", "60"]);
+    let body = json!({ "case": slow_case() }).to_string();
+    let mut c = TcpStream::connect(&s.addr).unwrap();
+    write!(
+        c,
+        "POST /api/run HTTP/1.1\r\nHost: {}\r\nContent-Type: application/json\r\n\
+         Content-Length: {}\r\n\r\n{body}",
+        s.addr,
+        body.len()
+    )
+    .unwrap();
+    std::thread::sleep(Duration::from_millis(500));
+    let before = s.workers_cpu();
+    std::thread::sleep(Duration::from_millis(500));
+    assert!(
+        s.workers_cpu() > before + 10,
+        "the solve runs while the client waits"
+    );
+    drop(c);
+    assert_no_cpu_burning(&s);
+    assert_eq!(s.get("/api/health").0, 200);
 }
 
 fn poll(s: &Server, id: &str) -> Value {
@@ -553,4 +574,66 @@ fn load_test_loses_nothing() {
         "load test: {answered} requests in {elapsed:.2?} ({:.0} requests/s)",
         answered as f64 / elapsed.as_secs_f64()
     );
+}
+
+/// The flags: a bad time limit or worker count is an input error (status 2); another
+/// address than loopback is warned about (here one not on this machine, so the bind fails
+/// after the warning, status 1); `--open` without an opener is a warning and the server
+/// runs on.
+#[test]
+fn flags_and_warnings() {
+    for (flag, value) in [
+        ("--time-limit", "0"),
+        ("--time-limit", "nan"),
+        ("--workers", "0"),
+    ] {
+        let out = support::kontakt()
+            .args(["serve", "--port", "0", flag, value])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2), "{flag} {value}");
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert!(
+            err.starts_with(&format!("error: invalid {flag} = ")),
+            "{err}"
+        );
+        assert_eq!(err.lines().count(), 1, "{err}");
+    }
+
+    // 192.0.2.1 (TEST-NET-1, RFC 5737) is never an address of this machine.
+    let out = support::kontakt()
+        .args(["serve", "--port", "0", "--address", "192.0.2.1"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        err.starts_with("warning: listening on 192.0.2.1, not on 127.0.0.1"),
+        "{err}"
+    );
+    assert!(err.contains("error: cannot serve on 192.0.2.1:0"), "{err}");
+
+    // --open with no opener on the PATH.
+    let empty =
+        std::env::temp_dir().join(format!("kontakt-serve-test-path-{}", std::process::id()));
+    std::fs::create_dir_all(&empty).unwrap();
+    let mut server = Server::start_in(
+        &["--open"],
+        Command::new(env!("CARGO_BIN_EXE_kontakt")).env("PATH", &empty),
+    );
+    let mut stderr = BufReader::new(server.child.stderr.take().unwrap());
+    let mut warning = String::new();
+    while !warning.starts_with("warning:") {
+        warning.clear();
+        if stderr.read_line(&mut warning).unwrap() == 0 {
+            break;
+        }
+    }
+    assert!(
+        warning.starts_with("warning: cannot open a browser"),
+        "{warning}"
+    );
+    assert_eq!(server.get("/api/health").0, 200, "the server runs on");
+    drop(server);
+    std::fs::remove_dir_all(&empty).unwrap();
 }

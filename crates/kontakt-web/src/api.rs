@@ -2,11 +2,11 @@
 
 use crate::assets;
 use crate::case_io;
-use crate::error::ApiError;
+use crate::error::{ApiError, json_response};
 use crate::jobs::Jobs;
 use crate::worker::Pool;
 use axum::Router;
-use axum::body::{Body, Bytes};
+use axum::body::Bytes;
 use axum::extract::rejection::BytesRejection;
 use axum::extract::{DefaultBodyLimit, Path, Request, State};
 use axum::http::{HeaderMap, HeaderValue, StatusCode, Uri, header};
@@ -58,16 +58,6 @@ pub fn router(state: AppState) -> Router {
         .layer(DefaultBodyLimit::max(state.limits.max_body))
         .layer(middleware::from_fn_with_state(state.clone(), guard))
         .with_state(state)
-}
-
-/// A JSON answer.
-pub fn json_response(status: StatusCode, body: String) -> Response {
-    (
-        status,
-        [(header::CONTENT_TYPE, "application/json")],
-        Body::from(body),
-    )
-        .into_response()
 }
 
 fn json(value: &impl serde::Serialize) -> Response {

@@ -89,8 +89,18 @@ impl ApiError {
 
 impl IntoResponse for ApiError {
     fn into_response(self) -> Response {
-        crate::api::json_response(self.status, self.body())
+        json_response(self.status, self.body())
     }
+}
+
+/// A JSON answer: the status and the body, `Content-Type: application/json`.
+pub fn json_response(status: StatusCode, body: String) -> Response {
+    (
+        status,
+        [(axum::http::header::CONTENT_TYPE, "application/json")],
+        axum::body::Body::from(body),
+    )
+        .into_response()
 }
 
 /// Whitespace (newlines of multi-line messages included) collapsed to single spaces.

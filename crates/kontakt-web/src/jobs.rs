@@ -188,3 +188,56 @@ fn unknown(id: &str) -> ApiError {
 fn lock<T>(m: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
     m.lock().unwrap_or_else(std::sync::PoisonError::into_inner)
 }
+
+#[cfg(all(test, unix))]
+mod tests {
+    use super::*;
+    use crate::worker::WorkerCommand;
+
+    /// A worker that never answers (`sleep`): jobs stay running until cancelled.
+    fn sleeping_pool() -> Arc<Pool> {
+        let command = WorkerCommand {
+            program: "sleep".into(),
+            args: vec!["30".into()],
+        };
+        Arc::new(Pool::new(command, 2, 4))
+    }
+
+    #[tokio::test]
+    async fn the_table_is_bounded_and_cancel_frees_a_place() {
+        let jobs = Arc::new(Jobs::new(1));
+        let pool = sleeping_pool();
+        let limit = Duration::from_secs(30);
+        let first = jobs.start(Arc::clone(&pool), "x".into(), limit).unwrap();
+        assert_eq!(jobs.status(&first).unwrap()["state"], "running");
+        // The one place is taken by a running job: refused.
+        let e = jobs
+            .start(Arc::clone(&pool), "x".into(), limit)
+            .unwrap_err();
+        assert_eq!(e.status, StatusCode::SERVICE_UNAVAILABLE, "{e:?}");
+        // Cancelled, the first is forgotten to make room for the next.
+        assert_eq!(jobs.cancel(&first).unwrap()["state"], "cancelled");
+        let second = jobs.start(Arc::clone(&pool), "x".into(), limit).unwrap();
+        assert_ne!(first, second);
+        assert_eq!(
+            jobs.status(&first).unwrap_err().status,
+            StatusCode::NOT_FOUND
+        );
+        assert_eq!(jobs.cancel(&second).unwrap()["state"], "cancelled");
+        // Cancelling twice leaves it cancelled.
+        assert_eq!(jobs.cancel(&second).unwrap()["state"], "cancelled");
+    }
+
+    #[tokio::test]
+    async fn a_job_past_its_limit_fails_with_the_time_limit_error() {
+        let jobs = Arc::new(Jobs::new(4));
+        let id = jobs
+            .start(sleeping_pool(), "x".into(), Duration::from_millis(200))
+            .unwrap();
+        tokio::time::sleep(Duration::from_millis(1500)).await;
+        let v = jobs.status(&id).unwrap();
+        assert_eq!(v["state"], "failed", "{v}");
+        assert_eq!(v["error"]["kind"], "time_limit", "{v}");
+        assert!(v["elapsed_s"].as_f64().unwrap() < 1.4, "{v}");
+    }
+}

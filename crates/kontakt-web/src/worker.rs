@@ -10,7 +10,8 @@
 //! busy after its answer (408) has gone out.
 //!
 //! Protocol (private to this crate): the request is the case's TOML text as one JSON
-//! string and a newline; the answer is `STATUS BODY` and a newline, where BODY is the API's
+//! string and a newline; the answer is `kontakt-worker: STATUS BODY` and a newline (other
+//! lines on the worker's standard output are skipped), where BODY is the API's
 //! JSON answer for that status (`{"report", "warnings"}` for 200, `{"error"}` otherwise).
 
 use crate::error::ApiError;
@@ -158,20 +159,31 @@ impl Pool {
     }
 }
 
+/// The start of an answer line of a worker.
+const ANSWER: &str = "kontakt-worker: ";
+
 /// Send one case, read one answer.
 async fn exchange(worker: &mut Worker, text: &str) -> std::io::Result<Answer> {
     let mut line = serde_json::to_string(text)?;
     line.push('\n');
     worker.stdin.write_all(line.as_bytes()).await?;
     worker.stdin.flush().await?;
+    // Lines without the marker are not answers (something in the solve printed to
+    // standard output): skipped.
     let mut answer = String::new();
-    if worker.stdout.read_line(&mut answer).await? == 0 {
-        return Err(std::io::Error::new(
-            std::io::ErrorKind::UnexpectedEof,
-            "it exited during the solve",
-        ));
-    }
-    let (status, body) = answer
+    let rest = loop {
+        answer.clear();
+        if worker.stdout.read_line(&mut answer).await? == 0 {
+            return Err(std::io::Error::new(
+                std::io::ErrorKind::UnexpectedEof,
+                "it exited during the solve",
+            ));
+        }
+        if let Some(rest) = answer.strip_prefix(ANSWER) {
+            break rest;
+        }
+    };
+    let (status, body) = rest
         .trim_end()
         .split_once(' ')
         .ok_or_else(|| std::io::Error::other("malformed answer"))?;
@@ -212,7 +224,7 @@ fn cancelled() -> ApiError {
 }
 
 /// The worker's side: read cases (one JSON string of TOML text a line) from `input`, run
-/// each through [`kontakt_case::Case::run`] and write `STATUS BODY` lines to `output`,
+/// each through [`kontakt_case::Case::run`] and write `kontakt-worker: STATUS BODY` lines to `output`,
 /// until `input` ends.
 ///
 /// # Errors
@@ -228,7 +240,7 @@ pub fn worker_main(input: impl BufRead, mut output: impl Write) -> std::io::Resu
                 (e.status, e.body())
             }
         };
-        writeln!(output, "{} {body}", status.as_u16())?;
+        writeln!(output, "{ANSWER}{} {body}", status.as_u16())?;
         output.flush()?;
     }
     Ok(())
@@ -372,6 +384,17 @@ mod tests {
         assert!(e.message.contains("cannot start"), "{e:?}");
     }
 
+    #[tokio::test]
+    async fn stray_output_lines_are_skipped() {
+        let script = "read x; echo stray; echo 'kontakt-worker: 200 {\"report\":1}'; read y";
+        let p = pool("sh", &["-c", script], 1, 1);
+        let (status, body) = p
+            .solve("x", Duration::from_secs(10), std::future::pending())
+            .await
+            .unwrap();
+        assert_eq!((status, body.as_str()), (StatusCode::OK, "{\"report\":1}"));
+    }
+
     #[test]
     fn worker_main_answers_a_line_per_case() {
         let case = "method = \"hertz\"\nbogus = 1\n";
@@ -381,7 +404,15 @@ mod tests {
         let out = String::from_utf8(out).unwrap();
         let lines: Vec<&str> = out.lines().collect();
         assert_eq!(lines.len(), 2, "{out}");
-        assert!(lines[0].starts_with("422 {\"error\""), "{}", lines[0]);
-        assert!(lines[1].starts_with("400 {\"error\""), "{}", lines[1]);
+        assert!(
+            lines[0].starts_with("kontakt-worker: 422 {\"error\""),
+            "{}",
+            lines[0]
+        );
+        assert!(
+            lines[1].starts_with("kontakt-worker: 400 {\"error\""),
+            "{}",
+            lines[1]
+        );
     }
 }

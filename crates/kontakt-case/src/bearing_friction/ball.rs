@@ -111,11 +111,7 @@ fn point(
     let mut warnings = Vec::new();
     let lubrication = oil_supply(op)?;
     if let Lubrication::OilBath { level_mm } = lubrication {
-        // The bearing's centre above the lowest point of the outer raceway.
-        let centre = 0.5
-            * (bearing.pitch_diameter_mm
-                + bearing.ball_diameter_mm * bearing.free_contact_angle().cos());
-        oil_level_below(level_mm, centre)?;
+        oil_level_below(level_mm, centre_height_mm(bearing))?;
     }
     warnings.extend(super::checks::temperature_warning(lub));
     let (wi, wo) = (rpm[0] / RPM_PER_RAD_S, rpm[1] / RPM_PER_RAD_S);
@@ -233,22 +229,7 @@ fn catalogue_torques(
         return Ok(cat);
     };
     if let Some(series) = &c.skf_series {
-        let named = |e: Error| e.map_field(|_| "catalogue.skf_series".to_string());
-        let skf = match bearing.kind {
-            BallBearingKind::DeepGroove => SkfBearing::DeepGrooveBall {
-                series: DeepGrooveSeries::from_name(series).map_err(named)?,
-                c0_n: c.c0_n.ok_or_else(|| {
-                    Error::invalid(
-                        "catalogue.c0_n",
-                        "missing",
-                        "the basic static load rating C0 [N] of the product table with skf_series",
-                    )
-                })?,
-            },
-            BallBearingKind::AngularContact => SkfBearing::AngularContactBall {
-                series: AngularContactSeries::from_name(series).map_err(named)?,
-            },
-        };
+        let skf = skf_ball_bearing(c, series, bearing)?;
         let t = skf2004(&skf, env, point, options).map_err(|e| e.map_field(key("catalogue")))?;
         cat.add_skf(&t, warnings);
     } else {
@@ -259,4 +240,39 @@ fn catalogue_torques(
     }
     cat.add_schaeffler(c, point.viscosity_mm2_s * point.speed_rpm(), env);
     Ok(cat)
+}
+
+/// The SKF 2004 bearing of `[catalogue]` with the series `series` for the ball bearing
+/// `bearing` (deep groove: with `catalogue.c0_n`).
+///
+/// # Errors
+/// [`Error::InvalidInput`] naming `catalogue.skf_series` or `catalogue.c0_n`.
+pub(crate) fn skf_ball_bearing(
+    c: &CatalogueSpec,
+    series: &str,
+    bearing: &BallBearing,
+) -> Result<SkfBearing> {
+    let named = |e: Error| e.map_field(|_| "catalogue.skf_series".to_string());
+    Ok(match bearing.kind {
+        BallBearingKind::DeepGroove => SkfBearing::DeepGrooveBall {
+            series: DeepGrooveSeries::from_name(series).map_err(named)?,
+            c0_n: c.c0_n.ok_or_else(|| {
+                Error::invalid(
+                    "catalogue.c0_n",
+                    "missing",
+                    "the basic static load rating C0 [N] of the product table with skf_series",
+                )
+            })?,
+        },
+        BallBearingKind::AngularContact => SkfBearing::AngularContactBall {
+            series: AngularContactSeries::from_name(series).map_err(named)?,
+        },
+    })
+}
+
+/// The height of a ball bearing's centre above the lowest point of its outer raceway
+/// \[mm\]: the highest static oil level of an oil bath.
+pub(crate) fn centre_height_mm(bearing: &BallBearing) -> f64 {
+    0.5 * (bearing.pitch_diameter_mm
+        + bearing.ball_diameter_mm * bearing.free_contact_angle().cos())
 }

@@ -7,16 +7,20 @@
 //! **When.** The friction is on when the element's case has a `[lubricant]` table (with
 //! `[friction]` and `[operating]` as in the case's friction section; `[operating]` may be
 //! absent: its defaults). Without a lubricant it is off: [`ElementFrictionStatus::Off`] and
-//! every field 0. Roller bearings (tapered, cylindrical) have it; ball bearings and thrust
-//! roller bearings do not yet: [`ElementFrictionStatus::NotBuilt`], every field 0 (the one
-//! match to extend is [`FrictionPlan::new`]).
+//! every field 0. Roller bearings (tapered, cylindrical) and ball bearings (deep groove,
+//! angular contact) have it; thrust roller bearings do not yet:
+//! [`ElementFrictionStatus::NotBuilt`], every field 0 (the one match to extend is
+//! [`FrictionPlan::new`]).
 //!
 //! **What.** The contact-based torque of `kontakt_bearing::friction::torque`
 //! (docs/bearing-friction.md), exactly as the case's report computes it (the same functions of
 //! `crate::bearing_friction`): the raceway rolling resistance and sliding of every slice,
 //! the rib friction of the roller ends (`roller_model = "rib_contact"`: a tapered bearing's
 //! cone rib, a cylindrical bearing's ribs of NJ/NUP/NU/N), the drag term of `operating.drag`. Breakdown: cone (inner raceway), cup (outer
-//! raceway), rib, drag; M = cone + cup + rib + drag ≥ 0.
+//! raceway), rib, drag; M = cone + cup + rib + drag ≥ 0. A ball bearing's is
+//! `kontakt_bearing::friction::ball` (spin and differential slip over every contact
+//! ellipse, rolling resistance; outer-race control) as the case's report computes it: its
+//! inner race is the breakdown's cone, its outer race the cup, no rib.
 //!
 //! **Speeds.** The ring speeds ω_i, ω_o \[rad/s\] start as the case's `[speed]`
 //! (`speed.inner_rpm`, `speed.outer_rpm` converted from r/min) and are set by
@@ -36,17 +40,20 @@
 //! **Cost.** One raceway friction evaluation (every slice of every roller); with a tapered
 //! bearing's rib contact also one rib contact field per loaded roller, which allocates (the
 //! raceway part, the ISO slice models and a cylindrical bearing's ribs, integrated over
-//! their Hertz ellipses, allocate nothing).
+//! their Hertz ellipses, allocate nothing; so does a ball bearing's friction).
 //!
 //! Units: rad/s, N·mm, W.
 
 use crate::bearing_case::{BearingCase, Planned};
 use crate::bearing_friction::{
-    DragSpec, OperatingSpec, RacewayPlan, crb_rib_model, crb_rib_values, oil_supply, plan_raceways,
-    rib_model, rib_powers, skf_bearing,
+    DragSpec, OperatingSpec, RacewayOil, RacewayPlan, crb_rib_model, crb_rib_values, oil_supply,
+    plan_raceways, raceway_oil, rib_model, rib_powers, skf_bearing,
 };
-use kontakt::bearing::{RibFrictionModel, RollerRibLoad};
+use kontakt::bearing::{PressureModel, RibFrictionModel, RollerRibLoad};
 use kontakt::{Error, Result};
+use kontakt_bearing::friction::ball::{
+    BallAttitude, BallContacts, BallFrictionModel, BallFrictionOperating,
+};
 use kontakt_bearing::friction::crb_rib::CylindricalRibFriction;
 use kontakt_bearing::friction::schaeffler::m0;
 use kontakt_bearing::friction::skf2004::{SkfBearing, SkfOptions, skf2004};
@@ -54,7 +61,7 @@ use kontakt_bearing::friction::torque::{
     BearingFrictionModel, DragModel, FrictionOperating, iso_slice_loads,
 };
 use kontakt_bearing::friction::{Envelope, Lubrication, OperatingPoint};
-use kontakt_bearing::geometry::{RollerBearing, RollerBearingKind};
+use kontakt_bearing::geometry::{BallBearing, RollerBearing, RollerBearingKind};
 
 /// Whether the element computed the friction torque, and which.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -196,6 +203,7 @@ enum RibModel {
     /// A tapered roller's large end on the cone's rib (the rib study's pair).
     Tapered {
         model: Box<RibFrictionModel>,
+        pressure: PressureModel,
         loads: Vec<RollerRibLoad>,
     },
     /// A cylindrical roller's ends on the ribs of its arrangement.
@@ -211,6 +219,18 @@ pub(crate) enum FrictionPlan {
     NotBuilt,
     /// A roller bearing's friction.
     Roller(Box<RollerFrictionPlan>),
+    /// A ball bearing's friction.
+    Ball(Box<BallFrictionPlan>),
+}
+
+/// The planned friction of a ball bearing element: the ball friction model, the balls'
+/// contacts (a buffer, allocated once), the drag.
+#[derive(Debug, Clone)]
+pub(crate) struct BallFrictionPlan {
+    model: BallFrictionModel,
+    balls: Vec<BallContacts>,
+    drag: DragPlan,
+    nu: f64,
 }
 
 impl FrictionPlan {
@@ -223,21 +243,23 @@ impl FrictionPlan {
         let Some(lub) = &case.lubricant else {
             return Ok(FrictionPlan::Off);
         };
-        // The one dispatch on the bearing: a ball bearing's friction (friction/ball.rs)
-        // goes here as its own arm.
+        let default = OperatingSpec::default();
+        let op = case.operating.as_ref().unwrap_or(&default);
+        // The one dispatch on the bearing.
         let (bearing, rib_solver) = match planned {
             Planned::Roller(s) => (s.bearing(), None),
             Planned::Coupled(s) => (s.bearing(), None),
             Planned::RibRoller(s) => (s.bearing(), Some(s.as_ref())),
-            Planned::Ball { .. } | Planned::BallAtSpeed { .. } => {
-                return Ok(FrictionPlan::NotBuilt);
+            Planned::Ball { solver, .. } => {
+                return Self::ball(case, op, lub, solver.bearing(), solver.ball_loads().len());
+            }
+            Planned::BallAtSpeed { solver, .. } => {
+                return Self::ball(case, op, lub, solver.bearing(), solver.ball_loads().len());
             }
         };
         if bearing.kind == RollerBearingKind::Thrust {
             return Ok(FrictionPlan::NotBuilt);
         }
-        let default = OperatingSpec::default();
-        let op = case.operating.as_ref().unwrap_or(&default);
         let RacewayPlan {
             model,
             rib_lub,
@@ -247,11 +269,15 @@ impl FrictionPlan {
         let rib = match rib_solver.map(|s| (s.rib_pair(), s.arrangement())) {
             Some((Some(pair), _)) => Some(RibModel::Tapered {
                 model: Box::new(rib_model(pair, bearing, law, rib_lub)?),
+                pressure: op.rib_pressure,
                 loads: Vec::with_capacity(bearing.rollers),
             }),
-            Some((None, Some(_))) => Some(RibModel::Cylindrical(Box::new(crb_rib_model(
-                bearing, law, rib_lub,
-            )?))),
+            Some((None, Some(_))) => {
+                crate::bearing_friction::crb_rib_pressure(op)?;
+                Some(RibModel::Cylindrical(Box::new(crb_rib_model(
+                    bearing, law, rib_lub,
+                )?)))
+            }
             _ => None,
         }
         .map(|model| RibPlan {
@@ -260,12 +286,30 @@ impl FrictionPlan {
         });
         let n = bearing.rollers * bearing.slices;
         Ok(FrictionPlan::Roller(Box::new(RollerFrictionPlan {
-            drag: drag_plan(case, op, bearing)?,
+            drag: drag_plan(case, op, DragOf::Roller(bearing))?,
             model,
             cup: vec![0.0; n],
             cone: vec![0.0; n],
             tilts: vec![0.0; bearing.rollers],
             rib,
+            nu,
+        })))
+    }
+
+    /// The friction plan of a ball bearing with `balls` balls: the case's friction section's
+    /// model (outer-race control, as the speed model assumes).
+    fn ball(
+        case: &BearingCase,
+        op: &OperatingSpec,
+        lub: &crate::friction_case::LubricantSpec,
+        bearing: &BallBearing,
+        balls: usize,
+    ) -> Result<Self> {
+        let RacewayOil { losses, nu, .. } = raceway_oil(op, lub, case.friction.as_ref())?;
+        Ok(FrictionPlan::Ball(Box::new(BallFrictionPlan {
+            model: BallFrictionModel::new(bearing.clone(), losses, BallAttitude::OuterRaceControl)?,
+            balls: vec![BallContacts::default(); balls],
+            drag: drag_plan(case, op, DragOf::Ball(bearing))?,
             nu,
         })))
     }
@@ -291,6 +335,7 @@ impl FrictionPlan {
                 ));
             }
             FrictionPlan::Roller(p) => p.as_mut(),
+            FrictionPlan::Ball(p) => return p.evaluate(planned, speeds),
         };
         let mut rib = None;
         match planned {
@@ -308,8 +353,12 @@ impl FrictionPlan {
                 }
                 if let Some(r) = &mut p.rib {
                     match &mut r.model {
-                        RibModel::Tapered { model, loads } => {
-                            rib_powers(model, s, speeds, loads, &mut r.values)?;
+                        RibModel::Tapered {
+                            model,
+                            pressure,
+                            loads,
+                        } => {
+                            rib_powers(model, *pressure, s, speeds, loads, &mut r.values)?;
                         }
                         RibModel::Cylindrical(model) => {
                             crb_rib_values(model, s, speeds, &mut r.values)?;
@@ -358,12 +407,25 @@ impl FrictionPlan {
     }
 }
 
+/// The bearing a drag plan is for: its oil-level check and its SKF 2004 bearing.
+#[derive(Clone, Copy)]
+enum DragOf<'a> {
+    Roller(&'a RollerBearing),
+    Ball(&'a BallBearing),
+}
+
 /// The drag of `operating.drag`, with the errors of the case's friction section.
-fn drag_plan(case: &BearingCase, op: &OperatingSpec, bearing: &RollerBearing) -> Result<DragPlan> {
+fn drag_plan(case: &BearingCase, op: &OperatingSpec, of: DragOf<'_>) -> Result<DragPlan> {
     let supply = oil_supply(op)?;
     // an oil bath above the bearing's centre: refused as by the case's friction section
     if let kontakt_bearing::friction::Lubrication::OilBath { level_mm } = supply {
-        crate::bearing_friction::oil_level(level_mm, bearing)?;
+        match of {
+            DragOf::Roller(b) => crate::bearing_friction::oil_level(level_mm, b)?,
+            DragOf::Ball(b) => crate::bearing_friction::oil_level_below(
+                level_mm,
+                crate::bearing_friction::ball::centre_height_mm(b),
+            )?,
+        };
     }
     let catalogue = case.catalogue.as_ref();
     let envelope = match catalogue {
@@ -381,7 +443,12 @@ fn drag_plan(case: &BearingCase, op: &OperatingSpec, bearing: &RollerBearing) ->
             catalogue.and_then(|c| c.skf_series.as_ref()),
         ) {
             (Some(c), Some(envelope), Some(series)) => DragPlan::Skf {
-                bearing: skf_bearing(c, series, bearing)?,
+                bearing: match of {
+                    DragOf::Roller(b) => skf_bearing(c, series, b)?,
+                    DragOf::Ball(b) => {
+                        crate::bearing_friction::ball::skf_ball_bearing(c, series, b)?
+                    }
+                },
                 envelope,
                 supply,
                 options: crate::bearing_friction::skf_options(op, Some(c))?,
@@ -408,4 +475,57 @@ fn drag_plan(case: &BearingCase, op: &OperatingSpec, bearing: &RollerBearing) ->
             }
         },
     })
+}
+
+impl BallFrictionPlan {
+    /// The friction of a ball bearing's last solve at the ring speeds `[ω_i, ω_o]`
+    /// \[rad/s\]: the inner race is the breakdown's "cone", the outer race its "cup".
+    fn evaluate(&mut self, planned: &Planned, speeds: [f64; 2]) -> Result<ElementFriction> {
+        match planned {
+            Planned::Ball { solver, .. } => {
+                for (b, l) in self.balls.iter_mut().zip(solver.ball_loads()) {
+                    *b = l.into();
+                }
+            }
+            Planned::BallAtSpeed { solver, .. } => {
+                for (b, l) in self.balls.iter_mut().zip(solver.ball_loads()) {
+                    *b = l.into();
+                }
+            }
+            _ => {
+                return Err(Error::invalid(
+                    "bearing",
+                    "a roller bearing",
+                    "the ball bearing the friction was planned for",
+                ));
+            }
+        }
+        let [wi, wo] = speeds;
+        let dw = wi - wo;
+        let f = self.model.evaluate(&BallFrictionOperating {
+            inner_speed: wi,
+            outer_speed: wo,
+            balls: &self.balls,
+            drag: self.drag.at(dw.abs(), self.nu)?,
+            coefficient_basis: None,
+        })?;
+        let starting = dw == 0.0;
+        Ok(ElementFriction {
+            status: if starting {
+                ElementFrictionStatus::Starting
+            } else {
+                ElementFrictionStatus::Running
+            },
+            inner_speed_rad_s: wi,
+            outer_speed_rad_s: wo,
+            torque_nmm: f.total_nmm,
+            // the drive's torque on the inner ring is M sign(Δω); the bearing's is minus it
+            inner_ring_nmm: if starting { 0.0 } else { -f.inner_ring_nmm },
+            power_w: f.power.total_w,
+            cone_nmm: f.inner_race.rolling_nmm + f.inner_race.sliding_nmm,
+            cup_nmm: f.outer_race.rolling_nmm + f.outer_race.sliding_nmm,
+            rib_nmm: 0.0,
+            drag_nmm: f.drag_nmm,
+        })
+    }
 }
