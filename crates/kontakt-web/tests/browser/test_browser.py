@@ -149,6 +149,29 @@ def shown(driver, key: str) -> str:
     return driver.find_element(By.CSS_SELECTOR, f'td[data-key="{key}"]').text
 
 
+def check_layout(driver) -> None:
+    """The page fits 1280 px (no horizontal scrolling), every numeric field has its unit
+    beside it, and printed (print media) the page drops its buttons and keeps the form."""
+    width = driver.execute_script("return document.documentElement.scrollWidth")
+    assert width <= 1280, f"the page is {width} px wide"
+    missing = driver.execute_script(
+        """return [...document.querySelectorAll('form.case [data-key]')]
+             .filter(el => el.type !== 'hidden' && !['str', 'strlist', 'bool'].includes(el.dataset.type))
+             .filter(el => !(el.closest('label')?.querySelector('.unit')?.textContent.trim()))
+             .map(el => el.dataset.key)"""
+    )
+    assert missing == [], f"fields without a unit: {missing}"
+    driver.execute_cdp_cmd("Emulation.setEmulatedMedia", {"media": "print"})
+    try:
+        assert not driver.find_element(By.ID, "filebar").is_displayed()
+        assert not driver.find_element(By.ID, "run").is_displayed()
+        assert driver.find_element(By.ID, "form").is_displayed()
+        name = driver.execute_script("return location.pathname.replace(/\\W/g, '')") or "index"
+        driver.save_screenshot(str(SHOTS / f"{name}_print.png"))
+    finally:
+        driver.execute_cdp_cmd("Emulation.setEmulatedMedia", {"media": ""})
+
+
 def shot(driver, name: str) -> None:
     """The page at 1280 x 800 as a person sees it (`name.png`), and the whole page
     (`name_page.png`, the window made as tall as the page)."""
@@ -231,6 +254,7 @@ def test_hertz_page_matches_the_cli(server, browser, tmp_path):
     assert browser.find_elements(By.CSS_SELECTOR, "#plot-pressure canvas")
     assert browser.find_elements(By.CSS_SELECTOR, "#plot-stress canvas")
     shot(browser, "hertz")
+    check_layout(browser)
     assert console_errors(browser) == []
 
 
@@ -269,6 +293,7 @@ def test_rib_page_runs_every_pressure_model(server, browser):
     # sphere-torus-57 is nearly elliptic: the three agree within 5 % (docs/VALIDATION.md)
     assert pimp == pytest.approx(hertz, rel=0.05) and bem == pytest.approx(hertz, rel=0.05)
     shot(browser, "rib")
+    check_layout(browser)
     assert console_errors(browser) == []
 
 
@@ -283,6 +308,7 @@ def test_bearing_page_runs_and_cancels(server, browser):
     assert browser.find_elements(By.CSS_SELECTOR, "#plot-torque .js-plotly-plot")
     assert float(shown(browser, "friction.total_nmm")) > 0
     shot(browser, "bearing")  # bearing_page.png: docs/img/serve_bearing.png is its top
+    check_layout(browser)
     # a long solve (the coupled slices, through /api/jobs: about 10 s here) shows a Cancel
     # button that stops it
     # (on the ISO roller model: the example without a rib contact)
@@ -304,6 +330,7 @@ def test_traction_page_draws_every_model(server, browser):
     wait_status(browser, r"^solved: 5 curves", 300)
     assert browser.find_elements(By.CSS_SELECTOR, "#plot-traction canvas")
     shot(browser, "traction")
+    check_layout(browser)
     assert console_errors(browser) == []
 
 
