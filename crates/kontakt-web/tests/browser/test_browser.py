@@ -294,6 +294,19 @@ def test_rib_page_runs_every_pressure_model(server, browser):
     assert pimp == pytest.approx(hertz, rel=0.05) and bem == pytest.approx(hertz, rel=0.05)
     shot(browser, "rib")
     check_layout(browser)
+    # the same pair entered as one's own face and rib (sphere r_R = 57 mm on a torus rib
+    # r_B = 30 mm at h = 2.75 mm, Wirsching et al. 2020 Table 1) gives the same pressures
+    approach = browser.find_element(By.CSS_SELECTOR, 'td[data-key="Hertz.approach_mm"]').text
+    Select(browser.find_element(By.ID, "pairing")).select_by_value("")
+    Select(browser.find_element(By.ID, "face_shape")).select_by_value("sphere")
+    Select(browser.find_element(By.ID, "rib_shape")).select_by_value("torus")
+    fill(browser, {"face_r": "57", "face_e": "", "rib_r": "30", "height": "2.75"})
+    browser.find_element(By.ID, "run").click()
+    wait_status(browser, r"^solved", 300)
+    for model, before in (("Hertz", hertz), ("PimP", pimp), ("half-space", bem)):
+        now = float(browser.find_element(By.CSS_SELECTOR, f'td[data-key="{model}.max_pressure_mpa"]').text)
+        assert now == pytest.approx(before, rel=1e-5), model
+    assert browser.find_element(By.CSS_SELECTOR, 'td[data-key="Hertz.approach_mm"]').text == approach
     assert console_errors(browser) == []
 
 
