@@ -142,8 +142,8 @@ async function show(r, warnings) {
         ylabel: "torque [N·mm]",
         series: [
           { label: "total [N·mm]", y: s.map((p) => p.total_nmm) },
-          { label: "cone [N·mm]", y: s.map((p) => p.cone_nmm), dash: [4, 3] },
-          { label: "cup [N·mm]", y: s.map((p) => p.cup_nmm), dash: [4, 3] },
+          { label: `${ball ? "inner race" : "cone"} [N·mm]`, y: s.map((p) => p.cone_nmm), dash: [4, 3] },
+          { label: `${ball ? "outer race" : "cup"} [N·mm]`, y: s.map((p) => p.cup_nmm), dash: [4, 3] },
           { label: "rib [N·mm]", y: s.map((p) => p.rib_nmm), dash: [2, 2] },
           { label: "SKF (2004) [N·mm]", y: s.map((p) => p.skf_total_nmm), colour: "#ff7f0e" },
         ],

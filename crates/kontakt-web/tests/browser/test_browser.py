@@ -322,6 +322,16 @@ def test_bearing_page_runs_and_cancels(server, browser):
     assert float(shown(browser, "friction.total_nmm")) > 0
     shot(browser, "bearing")  # bearing_page.png: docs/img/serve_bearing.png is its top
     check_layout(browser)
+    # a ball bearing: the ball loads, every ball's pressures, the torque beside SKF
+    Select(browser.find_element(By.ID, "examples")).select_by_value("bearing_6205_friction")
+    WebDriverWait(browser, 30).until(lambda d: d.find_element(By.ID, "balls").get_attribute("value") == "9")
+    assert not browser.find_element(By.ID, "rollers").is_displayed()
+    browser.find_element(By.ID, "run").click()
+    wait_status(browser, r"^solved", 120)
+    assert browser.find_elements(By.CSS_SELECTOR, "#plot-slices .js-plotly-plot")
+    assert float(shown(browser, "max_ball_load_n")) == pytest.approx(1060.39, rel=1e-5)
+    assert float(shown(browser, "friction.total_nmm")) > 0
+    shot(browser, "bearing_ball")
     # a long solve (the coupled slices, through /api/jobs: about 10 s here) shows a Cancel
     # button that stops it
     # (on the ISO roller model: the example without a rib contact)
