@@ -542,6 +542,7 @@ export function linePlot(el, { title, x, xlabel, ylabel, series, logx = false })
     width,
     height: 300,
     scales: { x: { time: false, distr: logx ? 3 : 1 } },
+    legend: { live: false },
     axes: [
       { label: xlabel, stroke: "#222" },
       { label: ylabel, stroke: "#222", size: 70 },
