@@ -687,6 +687,25 @@ export function toggle(form, selector, on) {
   }
 }
 
+/**
+ * The `input.model` check boxes and the hidden `#models` input they write: returns the
+ * page's `onSet`, which sets the boxes from a newly loaded case (or `defaults`) and writes
+ * the list.
+ */
+export function modelBoxes(defaults) {
+  const input = document.getElementById("models");
+  const boxes = [...document.querySelectorAll("input.model")];
+  let loaded = null;
+  return (c) => {
+    if (c !== loaded) {
+      loaded = c;
+      const models = c.models || defaults;
+      for (const b of boxes) b.checked = models.includes(b.value);
+    }
+    input.value = boxes.filter((b) => b.checked).map((b) => b.value).join(",");
+  };
+}
+
 const FILE_BAR = `<select class="examples" id="examples"><option value="">example …</option></select>
 <label class="upload"><input type="file" accept=".toml,text/plain"><span>Load TOML</span></label>
 <button type="button" class="save-toml">Save TOML</button>

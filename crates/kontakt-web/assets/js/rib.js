@@ -1,22 +1,14 @@
 // The roller end / rib page: a `method = "friction"` case (the rib friction against speed
 // for each pressure model), then the same pairing as a PimP and a half-space case at the
 // most loaded roller's rib load, their pressure zones beside Hertz's ellipse.
-import { page, toggle, showWarnings, linePlot, plotly, rowsCsv, fmt, runCase, exampleCase } from "./common.js";
+import { page, modelBoxes, toggle, showWarnings, linePlot, plotly, rowsCsv, fmt, runCase, exampleCase } from "./common.js";
 
-const modelsInput = document.getElementById("models");
-const boxes = [...document.querySelectorAll("input.model")];
 let last = null;
 
-// The check boxes write the `models` list (a loaded case sets them); one's own face and
-// rib only without a built-in pairing.
-let loaded = null;
+// The pressure models' boxes; one's own face and rib only without a built-in pairing.
+const syncModels = modelBoxes(["pimp"]);
 function syncForm(c) {
-  if (c !== loaded) {
-    loaded = c;
-    const models = c.models || ["pimp"];
-    for (const b of boxes) b.checked = models.includes(b.value);
-  }
-  modelsInput.value = boxes.filter((b) => b.checked).map((b) => b.value).join(",");
+  syncModels(c);
   toggle(document.getElementById("form"), "label.own", document.getElementById("pairing").value === "");
 }
 

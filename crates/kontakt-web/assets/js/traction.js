@@ -1,20 +1,7 @@
 // The traction page: a `method = "traction"` case, every model's curve on one plot.
-import { page, showWarnings, runCase, resultTable, linePlot, toCsv, exampleCase } from "./common.js";
+import { page, modelBoxes, showWarnings, runCase, resultTable, linePlot, toCsv, exampleCase } from "./common.js";
 
-const modelsInput = document.getElementById("models");
-const boxes = [...document.querySelectorAll("input.model")];
 let last = null;
-
-// The check boxes write the `models` list; a loaded case sets them.
-let loaded = null;
-function syncModels(c) {
-  if (c !== loaded) {
-    loaded = c;
-    const models = c.models || ["carter", "kalker_linear", "fastsim"];
-    for (const b of boxes) b.checked = models.includes(b.value);
-  }
-  modelsInput.value = boxes.filter((b) => b.checked).map((b) => b.value).join(",");
-}
 
 const KEYS = [
   "force_n", "mu", "semi_axes_mm", "max_pressure_mpa", "e_star_mpa", "shear_modulus_mpa",
@@ -48,7 +35,7 @@ page({
   active: "traction.html",
   methods: ["traction"],
   stem: "traction",
-  onSet: syncModels,
+  onSet: modelBoxes(["carter", "kalker_linear", "fastsim"]),
   solve: async (c, status) => {
     const long = (c.models || []).includes("kalker_exact");
     const { report, warnings } = await runCase(c, { long, status });
