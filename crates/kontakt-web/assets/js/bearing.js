@@ -1,40 +1,20 @@
 // The bearing page: a `method = "bearing"` case (a roller or ball bearing), its load
 // distribution, stiffness and, with [operating] and [lubricant], the friction torque.
-import {
-  frame, readCase, fillForm, clearErrors, showError, setStatus, showWarnings, runCase,
-  fileBar, resultTable, linePlot, plotly, rowsCsv, busy, fmt, exampleCase, examples,
-} from "./common.js";
+import { page, toggle, showWarnings, runCase, resultTable, linePlot, plotly, rowsCsv, fmt, exampleCase, examples } from "./common.js";
 
-frame("bearing.html");
-const form = document.getElementById("form");
-const status = document.getElementById("status");
-let base = {};
 let last = null;
 
 const BALL = ["deep_groove_ball", "angular_contact_ball"];
 
 // Inputs that do not apply to the bearing type are off (not written into the case).
 function syncType() {
+  const form = document.getElementById("form");
   const t = document.getElementById("type").value;
   const ball = BALL.includes(t);
-  const show = (cls, on) => {
-    for (const el of form.querySelectorAll("label." + cls)) {
-      el.classList.toggle("hidden", !on);
-      if (on) delete el.dataset.off;
-      else el.dataset.off = "1";
-    }
-  };
-  show("roller", !ball);
-  show("ball", ball);
-  show("tapered", t === "tapered");
-  show("acbb", t === "angular_contact_ball");
-}
-form.addEventListener("change", syncType);
-
-function setCase(c) {
-  base = c;
-  fillForm(form, c);
-  syncType();
+  toggle(form, "label.roller", !ball);
+  toggle(form, "label.ball", ball);
+  toggle(form, "label.tapered", t === "tapered");
+  toggle(form, "label.acbb", t === "angular_contact_ball");
 }
 
 // The slow models (docs/bearing-model.md §12, §15.8) go through a job with a Cancel button.
@@ -162,8 +142,8 @@ async function show(r, warnings) {
         ylabel: "torque [N·mm]",
         series: [
           { label: "total [N·mm]", y: s.map((p) => p.total_nmm) },
-          { label: "cone [N·mm]", y: s.map((p) => p.cone_nmm), dash: [4, 3] },
-          { label: "cup [N·mm]", y: s.map((p) => p.cup_nmm), dash: [4, 3] },
+          { label: `${ball ? "inner race" : "cone"} [N·mm]`, y: s.map((p) => p.cone_nmm), dash: [4, 3] },
+          { label: `${ball ? "outer race" : "cup"} [N·mm]`, y: s.map((p) => p.cup_nmm), dash: [4, 3] },
           { label: "rib [N·mm]", y: s.map((p) => p.rib_nmm), dash: [2, 2] },
           { label: "SKF (2004) [N·mm]", y: s.map((p) => p.skf_total_nmm), colour: "#ff7f0e" },
         ],
@@ -186,42 +166,23 @@ function csv() {
   return text;
 }
 
-form.addEventListener("submit", async (ev) => {
-  ev.preventDefault();
-  clearErrors(form);
-  await busy(document.getElementById("run"), async () => {
-    try {
-      const c = readCase(form, base);
-      const t0 = performance.now();
-      const { report, warnings } = await runCase(c, { long: isLong(c), status });
-      await show(report, warnings);
-      setStatus(status, `solved in ${((performance.now() - t0) / 1000).toFixed(2)} s`, "done");
-    } catch (err) {
-      if (err.message === "cancelled") setStatus(status, "cancelled", "error");
-      else showError(form, status, err);
-    }
-  });
-});
-
-(async () => {
-  await fileBar(document.getElementById("filebar"), {
-    methods: ["bearing"],
-    get: () => readCase(form, base),
-    set: setCase,
-    report: () => last,
-    csv,
-    name: () => (document.getElementById("name").value || "bearing").replace(/[^A-Za-z0-9_-]+/g, "_"),
-    status,
-  });
-  // Start from the friction example of the 32008 X (a tapered bearing with its torque).
-  try {
+page({
+  active: "bearing.html",
+  methods: ["bearing"],
+  stem: "bearing",
+  onSet: syncType,
+  solve: async (c, status) => {
+    const t0 = performance.now();
+    const { report, warnings } = await runCase(c, { long: isLong(c), status });
+    await show(report, warnings);
+    return `solved in ${((performance.now() - t0) / 1000).toFixed(2)} s`;
+  },
+  report: () => last,
+  csv,
+  // Start from the 32008 X with its rib contact and friction torque.
+  start: async () => {
     const list = await examples("bearing");
     const first = list.find((e) => e.name.includes("32008x_rib_friction")) || list[0];
-    if (first) {
-      setCase(await exampleCase(first.name));
-      document.getElementById("examples").value = first.name;
-    }
-  } catch (err) {
-    setStatus(status, err.message, "error");
-  }
-})();
+    return first ? { case: await exampleCase(first.name), example: first.name } : null;
+  },
+});

@@ -130,7 +130,8 @@ export function deletePath(obj, path) {
   }
 }
 
-// The value of an input: numbers accept `inf` (a flat body), lists are comma-separated.
+// The value of an input: numbers accept `inf` (a flat body; the API's JSON spells TOML's
+// special floats "inf", "-inf"), lists are comma-separated.
 function inputValue(el) {
   const type = el.dataset.type || "num";
   if (type === "bool") return el.checked;
@@ -156,14 +157,10 @@ function showValue(el, v) {
     el.checked = v === true;
     return;
   }
-  if (v === undefined) {
+  if (v === undefined || v === null) {
     el.value = "";
-  } else if (v === null) {
-    // The parsed case's JSON has no infinity: a TOML `inf` (a flat body's radius) arrives
-    // as null, the only float JSON cannot hold.
-    el.value = type === "str" ? "" : "inf";
   } else if (Array.isArray(v)) {
-    el.value = v.map((x) => (x === null ? "inf" : String(x))).join(", ");
+    el.value = v.map(String).join(", ");
   } else if (typeof v === "number" && !Number.isFinite(v)) {
     el.value = v > 0 ? "inf" : "-inf";
   } else {
@@ -280,10 +277,10 @@ export function showWarnings(el, ...lists) {
 export async function runCase(caseValue, { long = false, status } = {}) {
   if (!long) {
     if (status) setStatus(status, "solving …", "busy");
-    const out = await api("/api/run", { case: toToml(caseValue) });
+    const out = await api("/api/run", { case: caseValue });
     return { report: out.report, warnings: out.warnings || [], fields: out.fields, axisStress: out.axis_stress };
   }
-  const job = await api("/api/jobs", { case: toToml(caseValue) });
+  const job = await api("/api/jobs", { case: caseValue });
   const id = job.id;
   let cancelled = false;
   const cancel = document.createElement("button");
@@ -329,45 +326,10 @@ export async function runCase(caseValue, { long = false, status } = {}) {
 
 // ---------------------------------------------------------------- TOML files
 
-const bareKey = (k) => (/^[A-Za-z0-9_-]+$/.test(k) ? k : JSON.stringify(k));
-
-function tomlValue(v) {
-  if (v === "inf" || v === "+inf") return "inf";
-  if (v === "-inf") return "-inf";
-  if (v === null) return "inf"; // see showValue: a non-finite float of a parsed case
-  if (typeof v === "number") return Number.isFinite(v) ? String(v) : v > 0 ? "inf" : "-inf";
-  if (typeof v === "boolean") return String(v);
-  if (typeof v === "string") return JSON.stringify(v);
-  if (Array.isArray(v)) return `[${v.map(tomlValue).join(", ")}]`;
-  return `{ ${Object.entries(v).map(([k, x]) => `${bareKey(k)} = ${tomlValue(x)}`).join(", ")} }`;
-}
-
-const isTable = (v) => v !== null && typeof v === "object" && !Array.isArray(v);
-
-/**
- * A case object as TOML text: the form's numbers as written (`inf` for a flat body), the
- * tables as sections. The server reads it with the case parser of `kontakt solve`, so the
- * errors name the keys as the file does. (JSON has no infinity, so the pages send the
- * case as TOML text; `POST /api/case/parse` checks it on saving.)
- */
-export function toToml(obj) {
-  const lines = [];
-  const table = (t, path) => {
-    const scalars = Object.entries(t).filter(([, v]) => !isTable(v));
-    const subs = Object.entries(t).filter(([, v]) => isTable(v));
-    if (path.length && (scalars.length || subs.length === 0)) lines.push("", `[${path.map(bareKey).join(".")}]`);
-    for (const [k, v] of scalars) if (v !== undefined) lines.push(`${bareKey(k)} = ${tomlValue(v)}`);
-    for (const [k, v] of subs) table(v, [...path, k]);
-  };
-  table(obj, []);
-  return lines.join("\n").replace(/^\n+/, "") + "\n";
-}
-
-/** Downloads the case as TOML after the server's case parser has accepted it. */
+/** Asks the server for the case's TOML (checked by its case parser) and downloads it. */
 export async function saveToml(caseObj, name) {
-  const text = toToml(caseObj);
-  await api("/api/case/parse", { toml: text });
-  download(text, `${name}.toml`, "application/toml");
+  const out = await api("/api/case/toml", { case: caseObj });
+  download(out.toml, `${name}.toml`, "application/toml");
 }
 
 /** Reads an uploaded TOML file into a case object (the server parses and checks it). */
@@ -580,6 +542,7 @@ export function linePlot(el, { title, x, xlabel, ylabel, series, logx = false })
     width,
     height: 300,
     scales: { x: { time: false, distr: logx ? 3 : 1 } },
+    legend: { live: false },
     axes: [
       { label: xlabel, stroke: "#222" },
       { label: ylabel, stroke: "#222", size: 70 },
@@ -711,4 +674,93 @@ export async function busy(button, task) {
   } finally {
     button.disabled = false;
   }
+}
+
+// ---------------------------------------------------------------- a page
+
+/** Turns the form's labels matching `selector` on or off: off ones are hidden and left out of the case. */
+export function toggle(form, selector, on) {
+  for (const el of form.querySelectorAll(selector)) {
+    el.classList.toggle("hidden", !on);
+    if (on) delete el.dataset.off;
+    else el.dataset.off = "1";
+  }
+}
+
+/**
+ * The `input.model` check boxes and the hidden `#models` input they write: returns the
+ * page's `onSet`, which sets the boxes from a newly loaded case (or `defaults`) and writes
+ * the list.
+ */
+export function modelBoxes(defaults) {
+  const input = document.getElementById("models");
+  const boxes = [...document.querySelectorAll("input.model")];
+  let loaded = null;
+  return (c) => {
+    if (c !== loaded) {
+      loaded = c;
+      const models = c.models || defaults;
+      for (const b of boxes) b.checked = models.includes(b.value);
+    }
+    input.value = boxes.filter((b) => b.checked).map((b) => b.value).join(",");
+  };
+}
+
+const FILE_BAR = `<select class="examples" id="examples"><option value="">example …</option></select>
+<label class="upload"><input type="file" accept=".toml,text/plain"><span>Load TOML</span></label>
+<button type="button" class="save-toml">Save TOML</button>
+<button type="button" class="save-json">JSON</button>
+<button type="button" class="save-csv">CSV</button>`;
+
+/**
+ * Wires a page whose form is `#form`, status line `#status`, file bar `#filebar` and Solve
+ * button `#run`: `solve(case)` runs the case and draws it, resolving to the status text;
+ * `onSet(case)` after the form is filled (and on every change of the form), `report()` and
+ * `csv()` for the downloads, `start()` the first case. Input errors go beside their
+ * field, a cancelled job into the status line.
+ */
+export async function page({ active, methods, stem, solve, onSet, report, csv, start }) {
+  frame(active);
+  const form = document.getElementById("form");
+  const status = document.getElementById("status");
+  let base = {};
+  const sync = () => onSet && onSet(base);
+  const setCase = (c) => {
+    base = c;
+    fillForm(form, c);
+    sync();
+  };
+  form.addEventListener("change", sync);
+  form.addEventListener("submit", async (ev) => {
+    ev.preventDefault();
+    clearErrors(form);
+    sync();
+    await busy(document.getElementById("run"), async () => {
+      try {
+        setStatus(status, await solve(readCase(form, base), status), "done");
+      } catch (err) {
+        if (err.message === "cancelled") setStatus(status, "cancelled", "error");
+        else showError(form, status, err);
+      }
+    });
+  });
+  const bar = document.getElementById("filebar");
+  bar.innerHTML = FILE_BAR;
+  await fileBar(bar, {
+    methods,
+    get: () => readCase(form, base),
+    set: setCase,
+    report,
+    csv,
+    name: () => (document.getElementById("name").value || stem).replace(/[^A-Za-z0-9_-]+/g, "_"),
+    status,
+  });
+  try {
+    const first = await start();
+    if (first) setCase(first.case);
+    if (first && first.example) bar.querySelector("select.examples").value = first.example;
+  } catch (err) {
+    setStatus(status, err.message, "error");
+  }
+  return { form, status };
 }

@@ -1,13 +1,6 @@
 // The Hertz page: the form is a `method = "hertz"` case; the report is `kontakt solve --json`'s.
-import {
-  frame, readCase, fillForm, clearErrors, showError, setStatus, showWarnings, runCase,
-  fileBar, resultTable, linePlot, toCsv, busy,
-} from "./common.js";
+import { page, toggle, showWarnings, runCase, resultTable, linePlot, toCsv } from "./common.js";
 
-frame("hertz.html");
-const form = document.getElementById("form");
-const status = document.getElementById("status");
-let base = { method: "hertz" };
 let last = null;
 let lastStress = null;
 
@@ -28,23 +21,6 @@ const KEYS = [
   "max_von_mises_stress_mpa", "max_von_mises_depth_mm", "first_yield_load_n",
   "first_yield_line_load_n_per_mm", "first_yield_max_pressure_mpa", "yield_pressure_margin",
 ];
-
-// A line contact has one radius per body: the second inputs are off.
-function syncKind() {
-  const line = document.getElementById("kind").value === "line";
-  for (const el of form.querySelectorAll(".point-only")) {
-    el.classList.toggle("hidden", line);
-    if (line) el.dataset.off = "1";
-    else delete el.dataset.off;
-  }
-}
-form.addEventListener("change", syncKind);
-
-function setCase(c) {
-  base = c;
-  fillForm(form, c);
-  syncKind();
-}
 
 // The Hertz pressure p0 sqrt(1 - (s/c)^2) along each semi-axis c of the report (the
 // distribution the report's p0 and semi-axes define; no other model here).
@@ -117,28 +93,18 @@ function csv() {
   return text;
 }
 
-form.addEventListener("submit", async (ev) => {
-  ev.preventDefault();
-  clearErrors(form);
-  await busy(document.getElementById("run"), async () => {
-    try {
-      const c = readCase(form, base);
-      const { report, warnings, axisStress } = await runCase(c, { status });
-      show(report, warnings, axisStress);
-      setStatus(status, `solved: p0 = ${report.max_pressure_mpa.toFixed(1)} MPa`, "done");
-    } catch (err) {
-      showError(form, status, err);
-    }
-  });
-});
-
-setCase(DEFAULT);
-fileBar(document.getElementById("filebar"), {
+page({
+  active: "hertz.html",
   methods: ["hertz"],
-  get: () => readCase(form, base),
-  set: setCase,
+  stem: "hertz",
+  // A line contact has one radius per body: the second inputs are off.
+  onSet: () => toggle(document.getElementById("form"), ".point-only", document.getElementById("kind").value !== "line"),
+  solve: async (c, status) => {
+    const { report, warnings, axisStress } = await runCase(c, { status });
+    show(report, warnings, axisStress);
+    return `solved: p0 = ${report.max_pressure_mpa.toFixed(1)} MPa`;
+  },
   report: () => last,
   csv,
-  name: () => (document.getElementById("name").value || "hertz").replace(/[^A-Za-z0-9_-]+/g, "_"),
-  status,
+  start: async () => ({ case: DEFAULT }),
 });

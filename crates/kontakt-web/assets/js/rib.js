@@ -1,36 +1,15 @@
 // The roller end / rib page: a `method = "friction"` case (the rib friction against speed
 // for each pressure model), then the same pairing as a PimP and a half-space case at the
 // most loaded roller's rib load, their pressure zones beside Hertz's ellipse.
-import {
-  frame, readCase, fillForm, clearErrors, showError, setStatus, showWarnings, runCase,
-  fileBar, resultTable, linePlot, plotly, rowsCsv, busy, fmt, exampleCase,
-} from "./common.js";
+import { page, modelBoxes, toggle, showWarnings, linePlot, plotly, rowsCsv, fmt, runCase, exampleCase } from "./common.js";
 
-frame("rib.html");
-const form = document.getElementById("form");
-const status = document.getElementById("status");
-const modelsInput = document.getElementById("models");
-const boxes = [...form.querySelectorAll("input.model")];
-let base = {};
 let last = null;
 
-function syncForm() {
-  modelsInput.value = boxes.filter((b) => b.checked).map((b) => b.value).join(",");
-  const own = document.getElementById("pairing").value === "";
-  for (const el of form.querySelectorAll("label.own")) {
-    el.classList.toggle("hidden", !own);
-    if (own) delete el.dataset.off;
-    else el.dataset.off = "1";
-  }
-}
-form.addEventListener("change", syncForm);
-
-function setCase(c) {
-  base = c;
-  fillForm(form, c);
-  const models = c.models || ["pimp"];
-  for (const b of boxes) b.checked = models.includes(b.value);
-  syncForm();
+// The pressure models' boxes; one's own face and rib only without a built-in pairing.
+const syncModels = modelBoxes(["pimp"]);
+function syncForm(c) {
+  syncModels(c);
+  toggle(document.getElementById("form"), "label.own", document.getElementById("pairing").value === "");
 }
 
 const STYLE = { hertz: undefined, pimp: [6, 4], halfspace: [2, 3] };
@@ -130,45 +109,24 @@ function csv() {
   return rowsCsv(last.rows);
 }
 
-form.addEventListener("submit", async (ev) => {
-  ev.preventDefault();
-  clearErrors(form);
-  syncForm();
-  await busy(document.getElementById("run"), async () => {
-    try {
-      const c = readCase(form, base);
-      const long = (c.models || []).includes("halfspace");
-      const { report, warnings } = await runCase(c, { long, status });
-      // The same pairing at the most loaded roller's rib load, PimP and half-space.
-      const load = report.rows[0].rib_load_n;
-      const pair = { geometry: c.geometry, body1: { e_mpa: 210000.0, nu: 0.3 }, body2: { e_mpa: 210000.0, nu: 0.3 }, load: { force_n: load } };
-      const maps = [];
-      const pimp = await runCase({ method: "pimp", ...pair, pimp: { mode: "corrected" } }, { status });
-      maps.push({ label: "PimP", ...pimp });
-      const bem = await runCase({ method: "bem", ...pair }, { long: true, status });
-      maps.push({ label: "half-space", ...bem });
-      await show(report, warnings, maps);
-      setStatus(status, `solved: ${report.rows.length} rows`, "done");
-    } catch (err) {
-      if (err.message === "cancelled") setStatus(status, "cancelled", "error");
-      else showError(form, status, err);
-    }
-  });
+page({
+  active: "rib.html",
+  methods: ["friction"],
+  stem: "rib",
+  onSet: syncForm,
+  solve: async (c, status) => {
+    const long = (c.models || []).includes("halfspace");
+    const { report, warnings } = await runCase(c, { long, status });
+    // The same pairing at the most loaded roller's rib load, PimP and half-space.
+    const load = report.rows[0].rib_load_n;
+    const steel = { e_mpa: 210000.0, nu: 0.3 };
+    const pair = { geometry: c.geometry, body1: steel, body2: steel, load: { force_n: load } };
+    const pimp = await runCase({ method: "pimp", ...pair, pimp: { mode: "corrected" } }, { status });
+    const bem = await runCase({ method: "bem", ...pair }, { long: true, status });
+    await show(report, warnings, [{ label: "PimP", ...pimp }, { label: "half-space", ...bem }]);
+    return `solved: ${report.rows.length} rows`;
+  },
+  report: () => last,
+  csv,
+  start: async () => ({ case: await exampleCase("rib_friction"), example: "rib_friction" }),
 });
-
-(async () => {
-  await fileBar(document.getElementById("filebar"), {
-    methods: ["friction"],
-    get: () => readCase(form, base),
-    set: setCase,
-    report: () => last,
-    csv,
-    name: () => (document.getElementById("name").value || "rib").replace(/[^A-Za-z0-9_-]+/g, "_"),
-    status,
-  });
-  try {
-    setCase(await exampleCase("rib_friction"));
-  } catch (err) {
-    setStatus(status, err.message, "error");
-  }
-})();

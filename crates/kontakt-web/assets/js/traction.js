@@ -1,30 +1,7 @@
 // The traction page: a `method = "traction"` case, every model's curve on one plot.
-import {
-  frame, readCase, fillForm, clearErrors, showError, setStatus, showWarnings, runCase,
-  fileBar, resultTable, linePlot, toCsv, busy, exampleCase,
-} from "./common.js";
+import { page, modelBoxes, showWarnings, runCase, resultTable, linePlot, toCsv, exampleCase } from "./common.js";
 
-frame("traction.html");
-const form = document.getElementById("form");
-const status = document.getElementById("status");
-const modelsInput = document.getElementById("models");
-const boxes = [...form.querySelectorAll("input.model")];
-let base = {};
 let last = null;
-
-// The check boxes write the `models` list.
-function syncModels() {
-  modelsInput.value = boxes.filter((b) => b.checked).map((b) => b.value).join(",");
-}
-for (const b of boxes) b.addEventListener("change", syncModels);
-
-function setCase(c) {
-  base = c;
-  fillForm(form, c);
-  const models = c.models || ["carter", "kalker_linear", "fastsim"];
-  for (const b of boxes) b.checked = models.includes(b.value);
-  syncModels();
-}
 
 const KEYS = [
   "force_n", "mu", "semi_axes_mm", "max_pressure_mpa", "e_star_mpa", "shear_modulus_mpa",
@@ -54,37 +31,18 @@ function csv() {
   return toCsv([["creepage", last.creepage], ...last.curves.map((c) => [`${c.model}_ft_over_mu_fn`, c.normalized_force])]);
 }
 
-form.addEventListener("submit", async (ev) => {
-  ev.preventDefault();
-  clearErrors(form);
-  syncModels();
-  await busy(document.getElementById("run"), async () => {
-    try {
-      const c = readCase(form, base);
-      const long = (c.models || []).includes("kalker_exact");
-      const { report, warnings } = await runCase(c, { long, status });
-      show(report, warnings);
-      setStatus(status, `solved: ${report.curves.length} curves`, "done");
-    } catch (err) {
-      if (err.message === "cancelled") setStatus(status, "cancelled", "error");
-      else showError(form, status, err);
-    }
-  });
+page({
+  active: "traction.html",
+  methods: ["traction"],
+  stem: "traction",
+  onSet: modelBoxes(["carter", "kalker_linear", "fastsim"]),
+  solve: async (c, status) => {
+    const long = (c.models || []).includes("kalker_exact");
+    const { report, warnings } = await runCase(c, { long, status });
+    show(report, warnings);
+    return `solved: ${report.curves.length} curves`;
+  },
+  report: () => last,
+  csv,
+  start: async () => ({ case: await exampleCase("traction_ball_all_models"), example: "traction_ball_all_models" }),
 });
-
-(async () => {
-  await fileBar(document.getElementById("filebar"), {
-    methods: ["traction"],
-    get: () => readCase(form, base),
-    set: setCase,
-    report: () => last,
-    csv,
-    name: () => (document.getElementById("name").value || "traction").replace(/[^A-Za-z0-9_-]+/g, "_"),
-    status,
-  });
-  try {
-    setCase(await exampleCase("traction_ball_all_models"));
-  } catch (err) {
-    setStatus(status, err.message, "error");
-  }
-})();

@@ -23,6 +23,7 @@ import shutil
 import subprocess
 import threading
 import time
+import urllib.request
 from pathlib import Path
 
 import pytest
@@ -37,6 +38,7 @@ ROOT = Path(__file__).resolve().parents[4]
 TARGET = Path(os.environ.get("CARGO_TARGET_DIR", ROOT / "target"))
 KONTAKT = TARGET / "debug" / "kontakt"
 SHOTS = TARGET / "browser"
+DOWNLOADS = SHOTS / "downloads"
 CHROMIUM = os.environ.get("KONTAKT_CHROMIUM", "/usr/bin/chromium")
 CHROMEDRIVER = os.environ.get("KONTAKT_CHROMEDRIVER", "/usr/bin/chromedriver")
 
@@ -90,6 +92,10 @@ def browser():
     for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--window-size=1280,800"):
         options.add_argument(arg)
     options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+    DOWNLOADS.mkdir(parents=True, exist_ok=True)
+    options.add_experimental_option(
+        "prefs", {"download.default_directory": str(DOWNLOADS), "download.prompt_for_download": False}
+    )
     driver = webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
     driver.set_window_size(1280, 800)
     SHOTS.mkdir(parents=True, exist_ok=True)
@@ -141,6 +147,29 @@ def fill(driver, values: dict[str, str]) -> None:
 
 def shown(driver, key: str) -> str:
     return driver.find_element(By.CSS_SELECTOR, f'td[data-key="{key}"]').text
+
+
+def check_layout(driver) -> None:
+    """The page fits 1280 px (no horizontal scrolling), every numeric field has its unit
+    beside it, and printed (print media) the page drops its buttons and keeps the form."""
+    width = driver.execute_script("return document.documentElement.scrollWidth")
+    assert width <= 1280, f"the page is {width} px wide"
+    missing = driver.execute_script(
+        """return [...document.querySelectorAll('form.case [data-key]')]
+             .filter(el => el.type !== 'hidden' && !['str', 'strlist', 'bool'].includes(el.dataset.type))
+             .filter(el => !(el.closest('label')?.querySelector('.unit')?.textContent.trim()))
+             .map(el => el.dataset.key)"""
+    )
+    assert missing == [], f"fields without a unit: {missing}"
+    driver.execute_cdp_cmd("Emulation.setEmulatedMedia", {"media": "print"})
+    try:
+        assert not driver.find_element(By.ID, "filebar").is_displayed()
+        assert not driver.find_element(By.ID, "run").is_displayed()
+        assert driver.find_element(By.ID, "form").is_displayed()
+        name = driver.execute_script("return location.pathname.replace(/\\W/g, '')") or "index"
+        driver.save_screenshot(str(SHOTS / f"{name}_print.png"))
+    finally:
+        driver.execute_cdp_cmd("Emulation.setEmulatedMedia", {"media": ""})
 
 
 def shot(driver, name: str) -> None:
@@ -225,6 +254,7 @@ def test_hertz_page_matches_the_cli(server, browser, tmp_path):
     assert browser.find_elements(By.CSS_SELECTOR, "#plot-pressure canvas")
     assert browser.find_elements(By.CSS_SELECTOR, "#plot-stress canvas")
     shot(browser, "hertz")
+    check_layout(browser)
     assert console_errors(browser) == []
 
 
@@ -263,6 +293,20 @@ def test_rib_page_runs_every_pressure_model(server, browser):
     # sphere-torus-57 is nearly elliptic: the three agree within 5 % (docs/VALIDATION.md)
     assert pimp == pytest.approx(hertz, rel=0.05) and bem == pytest.approx(hertz, rel=0.05)
     shot(browser, "rib")
+    check_layout(browser)
+    # the same pair entered as one's own face and rib (sphere r_R = 57 mm on a torus rib
+    # r_B = 30 mm at h = 2.75 mm, Wirsching et al. 2020 Table 1) gives the same pressures
+    approach = browser.find_element(By.CSS_SELECTOR, 'td[data-key="Hertz.approach_mm"]').text
+    Select(browser.find_element(By.ID, "pairing")).select_by_value("")
+    Select(browser.find_element(By.ID, "face_shape")).select_by_value("sphere")
+    Select(browser.find_element(By.ID, "rib_shape")).select_by_value("torus")
+    fill(browser, {"face_r": "57", "face_e": "", "rib_r": "30", "height": "2.75"})
+    browser.find_element(By.ID, "run").click()
+    wait_status(browser, r"^solved", 300)
+    for model, before in (("Hertz", hertz), ("PimP", pimp), ("half-space", bem)):
+        now = float(browser.find_element(By.CSS_SELECTOR, f'td[data-key="{model}.max_pressure_mpa"]').text)
+        assert now == pytest.approx(before, rel=1e-5), model
+    assert browser.find_element(By.CSS_SELECTOR, 'td[data-key="Hertz.approach_mm"]').text == approach
     assert console_errors(browser) == []
 
 
@@ -277,6 +321,17 @@ def test_bearing_page_runs_and_cancels(server, browser):
     assert browser.find_elements(By.CSS_SELECTOR, "#plot-torque .js-plotly-plot")
     assert float(shown(browser, "friction.total_nmm")) > 0
     shot(browser, "bearing")  # bearing_page.png: docs/img/serve_bearing.png is its top
+    check_layout(browser)
+    # a ball bearing: the ball loads, every ball's pressures, the torque beside SKF
+    Select(browser.find_element(By.ID, "examples")).select_by_value("bearing_6205_friction")
+    WebDriverWait(browser, 30).until(lambda d: d.find_element(By.ID, "balls").get_attribute("value") == "9")
+    assert not browser.find_element(By.ID, "rollers").is_displayed()
+    browser.find_element(By.ID, "run").click()
+    wait_status(browser, r"^solved", 120)
+    assert browser.find_elements(By.CSS_SELECTOR, "#plot-slices .js-plotly-plot")
+    assert float(shown(browser, "max_ball_load_n")) == pytest.approx(1060.39, rel=1e-5)
+    assert float(shown(browser, "friction.total_nmm")) > 0
+    shot(browser, "bearing_ball")
     # a long solve (the coupled slices, through /api/jobs: about 10 s here) shows a Cancel
     # button that stops it
     # (on the ISO roller model: the example without a rib contact)
@@ -298,6 +353,7 @@ def test_traction_page_draws_every_model(server, browser):
     wait_status(browser, r"^solved: 5 curves", 300)
     assert browser.find_elements(By.CSS_SELECTOR, "#plot-traction canvas")
     shot(browser, "traction")
+    check_layout(browser)
     assert console_errors(browser) == []
 
 
@@ -306,4 +362,51 @@ def test_index_page_links_every_page(server, browser):
     hrefs = {a.get_attribute("href").rsplit("/", 1)[-1] for a in browser.find_elements(By.CSS_SELECTOR, ".cards a")}
     assert hrefs == {"hertz.html", "rib.html", "bearing.html", "traction.html"}
     shot(browser, "index")
+    assert console_errors(browser) == []
+
+
+def downloaded(name: str, timeout: float = 20) -> Path:
+    path = DOWNLOADS / name
+    end = time.monotonic() + timeout
+    while time.monotonic() < end:
+        if path.is_file() and path.stat().st_size > 0:
+            return path
+        time.sleep(0.2)
+    pytest.fail(f"{name} was not downloaded into {DOWNLOADS}")
+
+
+def parsed(server: str, text: str) -> dict:
+    """A case file's tables as the server's case parser reads them (`POST /api/case/parse`)."""
+    request = urllib.request.Request(
+        f"{server}/api/case/parse",
+        data=json.dumps({"toml": text}).encode(),
+        headers={"content-type": "application/json"},
+    )
+    with urllib.request.urlopen(request, timeout=30) as answer:
+        return json.load(answer)["case"]
+
+
+def test_toml_load_save_and_downloads(server, browser):
+    """Load TOML (an upload) fills the form, flat radii as inf; Save TOML writes the same
+    case back; JSON and CSV download the result."""
+    for old in DOWNLOADS.glob("*"):
+        old.unlink()
+    open_page(browser, server, "hertz.html", "#form")
+    upload = browser.find_element(By.CSS_SELECTOR, "#filebar input[type=file]")
+    upload.send_keys(str(ROOT / "examples" / "ball_on_flat.toml"))
+    WebDriverWait(browser, 30).until(lambda d: "loaded" in d.find_element(By.ID, "status").text)
+    assert browser.find_element(By.ID, "r2x").get_attribute("value") == "inf"
+    assert browser.find_element(By.ID, "force").get_attribute("value") == "100"
+    browser.find_element(By.CSS_SELECTOR, "#filebar .save-toml").click()
+    saved = parsed(server, downloaded("ball_on_flat.toml").read_text())
+    assert saved == parsed(server, (ROOT / "examples" / "ball_on_flat.toml").read_text())
+    browser.find_element(By.ID, "run").click()
+    wait_status(browser, r"^solved", 30)
+    browser.find_element(By.CSS_SELECTOR, "#filebar .save-json").click()
+    report = json.loads(downloaded("ball_on_flat.json").read_text())
+    assert report["max_pressure_mpa"] == pytest.approx(1855.5955901395419, rel=1e-12)
+    browser.find_element(By.CSS_SELECTOR, "#filebar .save-csv").click()
+    assert downloaded("ball_on_flat.csv").read_text().startswith("position_mm,")
+    browser.find_element(By.CSS_SELECTOR, "#plot-pressure .plot-export button").click()
+    assert downloaded("contact_pressure.png").read_bytes()[:4] == b"\x89PNG"
     assert console_errors(browser) == []
