@@ -196,6 +196,12 @@ fn health_examples_and_pages() {
     let v: Value = serde_json::from_str(&body).unwrap();
     assert_eq!(v["kontakt_version"], env!("CARGO_PKG_VERSION"));
 
+    // the case files' JSON Schema, the one `kontakt schema` prints
+    let (status, body) = s.get("/api/schema");
+    assert_eq!(status, 200);
+    let schema: Value = serde_json::from_str(&body).unwrap();
+    assert_eq!(schema, kontakt_case::case_schema());
+
     let (status, body) = s.get("/api/examples");
     assert_eq!(status, 200);
     let list: Vec<Value> = serde_json::from_str(&body).unwrap();

@@ -45,6 +45,7 @@ pub struct AppState {
 pub fn router(state: AppState) -> Router {
     Router::new()
         .route("/api/health", get(health))
+        .route("/api/schema", get(schema))
         .route("/api/examples", get(list_examples))
         .route("/api/examples/{name}", get(get_example))
         .route("/api/case/parse", post(case_parse))
@@ -168,6 +169,12 @@ fn checked_case(
 
 async fn health() -> Response {
     json(&serde_json::json!({ "kontakt_version": kontakt::VERSION }))
+}
+
+/// The JSON Schema of the case files (`kontakt schema`, docs/kontakt-case.schema.json):
+/// the forms' and editors' description of every key.
+async fn schema() -> Response {
+    json(&kontakt_case::case_schema())
 }
 
 async fn list_examples() -> Response {
