@@ -105,7 +105,42 @@ pub struct ElementFriction {
     pub drag_nmm: f64,
 }
 
+/// A friction evaluation's torques \[N·mm\] and power \[W\] as the library reports them:
+/// `inner_ring` is the drive's torque on the inner ring (`M sign(Δω)`).
+struct Shares {
+    total: f64,
+    inner_ring: f64,
+    power: f64,
+    cone: f64,
+    cup: f64,
+    rib: f64,
+    drag: f64,
+}
+
 impl ElementFriction {
+    /// The element's friction at the ring speeds `[ω_i, ω_o]` \[rad/s\] from the library's
+    /// result: running, or at Δω = 0 the starting torque, reported and not applied.
+    fn of([wi, wo]: [f64; 2], f: Shares) -> Self {
+        let starting = wi == wo;
+        ElementFriction {
+            status: if starting {
+                ElementFrictionStatus::Starting
+            } else {
+                ElementFrictionStatus::Running
+            },
+            inner_speed_rad_s: wi,
+            outer_speed_rad_s: wo,
+            torque_nmm: f.total,
+            // the drive's torque on the inner ring is M sign(Δω); the bearing's is minus it
+            inner_ring_nmm: if starting { 0.0 } else { -f.inner_ring },
+            power_w: f.power,
+            cone_nmm: f.cone,
+            cup_nmm: f.cup,
+            rib_nmm: f.rib,
+            drag_nmm: f.drag,
+        }
+    }
+
     /// No friction (`status` off or not built) at the speeds `[ω_i, ω_o]` \[rad/s\].
     pub fn none(status: ElementFrictionStatus, speeds: [f64; 2]) -> Self {
         ElementFriction {
@@ -386,24 +421,18 @@ impl FrictionPlan {
             drag: p.drag.at(dw.abs(), p.nu)?,
             coefficient_basis: None,
         })?;
-        let starting = dw == 0.0;
-        Ok(ElementFriction {
-            status: if starting {
-                ElementFrictionStatus::Starting
-            } else {
-                ElementFrictionStatus::Running
+        Ok(ElementFriction::of(
+            speeds,
+            Shares {
+                total: f.total_nmm,
+                inner_ring: f.inner_ring_nmm,
+                power: f.power.total_w,
+                cone: f.cone.total_nmm(),
+                cup: f.cup.total_nmm(),
+                rib: f.rib_nmm,
+                drag: f.drag_nmm,
             },
-            inner_speed_rad_s: wi,
-            outer_speed_rad_s: wo,
-            torque_nmm: f.total_nmm,
-            // the drive's torque on the inner ring is M sign(Δω); the bearing's is minus it
-            inner_ring_nmm: if starting { 0.0 } else { -f.inner_ring_nmm },
-            power_w: f.power.total_w,
-            cone_nmm: f.cone.total_nmm(),
-            cup_nmm: f.cup.total_nmm(),
-            rib_nmm: f.rib_nmm,
-            drag_nmm: f.drag_nmm,
-        })
+        ))
     }
 }
 
@@ -509,23 +538,17 @@ impl BallFrictionPlan {
             drag: self.drag.at(dw.abs(), self.nu)?,
             coefficient_basis: None,
         })?;
-        let starting = dw == 0.0;
-        Ok(ElementFriction {
-            status: if starting {
-                ElementFrictionStatus::Starting
-            } else {
-                ElementFrictionStatus::Running
+        Ok(ElementFriction::of(
+            speeds,
+            Shares {
+                total: f.total_nmm,
+                inner_ring: f.inner_ring_nmm,
+                power: f.power.total_w,
+                cone: f.inner_race.rolling_nmm + f.inner_race.sliding_nmm,
+                cup: f.outer_race.rolling_nmm + f.outer_race.sliding_nmm,
+                rib: 0.0,
+                drag: f.drag_nmm,
             },
-            inner_speed_rad_s: wi,
-            outer_speed_rad_s: wo,
-            torque_nmm: f.total_nmm,
-            // the drive's torque on the inner ring is M sign(Δω); the bearing's is minus it
-            inner_ring_nmm: if starting { 0.0 } else { -f.inner_ring_nmm },
-            power_w: f.power.total_w,
-            cone_nmm: f.inner_race.rolling_nmm + f.inner_race.sliding_nmm,
-            cup_nmm: f.outer_race.rolling_nmm + f.outer_race.sliding_nmm,
-            rib_nmm: 0.0,
-            drag_nmm: f.drag_nmm,
-        })
+        ))
     }
 }
