@@ -163,7 +163,7 @@ fn boundary_sums<const REG: bool>(
 }
 
 /// Slots of [`BarusCache`] (a power of two: 2^[`BARUS_BITS`]).
-const BARUS_BITS: u32 = 8;
+const BARUS_BITS: u32 = 10;
 
 /// The Barus factors `exp(α p)` of the pressures met so far, by the pressure's bits
 /// (direct-mapped, the last one per slot): a field symmetric about its axes, as a Hertz
