@@ -69,7 +69,8 @@ impl ContactZone {
         if zone.patches > 0 {
             let (nx, ny) = (grid.nx(), grid.ny());
             zone.patches = count_patches(nx, ny, pressure, scratch);
-            zone.centre_line_curvature = centre_line_curvature(grid, pressure, zone.centroid[0]);
+            zone.centre_line_curvature =
+                centre_line_curvature(grid, pressure, zone.centroid[0], scratch);
         }
         Ok(zone)
     }
@@ -144,17 +145,58 @@ impl ContactZone {
     }
 }
 
-/// The work arrays of [`ContactZone::analyse_in`]'s patch count (a flag and a stack entry
-/// per cell at most), kept between calls so that the analysis allocates nothing.
+/// The work arrays of [`ContactZone::analyse_in`] (the patch count's flag and stack entry
+/// per cell at most, the centre line's two sums per column), kept between calls so that
+/// the analysis allocates nothing.
 #[derive(Debug, Clone, Default)]
 pub struct ZoneScratch {
     seen: Vec<bool>,
     stack: Vec<usize>,
+    column_weight: Vec<f64>,
+    column_moment: Vec<f64>,
+}
+
+/// Connected components of the loaded cells (4-neighbourhood): 1 at once for a zone that
+/// [`one_run_per_row`] shows to be one patch (every convex zone, the Hertz ellipse), else
+/// by flood fill.
+fn count_patches(nx: usize, ny: usize, pressure: &[f64], scratch: &mut ZoneScratch) -> usize {
+    if one_run_per_row(nx, ny, pressure) {
+        return 1;
+    }
+    flood_fill_patches(nx, ny, pressure, scratch)
+}
+
+/// Whether the loaded cells (`p > 0`), at least one, lie in consecutive rows, in one run
+/// of adjacent cells per row, each run sharing a column with the run of the row before:
+/// then every run is joined to the one before through an edge, and the cells form one
+/// patch. `false` says nothing (the flood fill counts). One pass over the rows, no memory.
+fn one_run_per_row(nx: usize, ny: usize, pressure: &[f64]) -> bool {
+    // The run [first, last] of the last loaded row, and whether an empty row followed it.
+    let mut before: Option<(usize, usize)> = None;
+    let mut gap = false;
+    for row in pressure.chunks_exact(nx).take(ny) {
+        let Some(first) = row.iter().position(|&p| p > 0.0) else {
+            gap |= before.is_some();
+            continue;
+        };
+        let run = row[first..].iter().take_while(|&&p| p > 0.0).count();
+        let last = first + run - 1;
+        if gap || row[last + 1..].iter().any(|&p| p > 0.0) {
+            return false;
+        }
+        if let Some((f, l)) = before
+            && (first > l || last < f)
+        {
+            return false;
+        }
+        before = Some((first, last));
+    }
+    before.is_some()
 }
 
 /// Connected components of the loaded cells (4-neighbourhood), by flood fill.
-fn count_patches(nx: usize, ny: usize, pressure: &[f64], scratch: &mut ZoneScratch) -> usize {
-    let ZoneScratch { seen, stack } = scratch;
+fn flood_fill_patches(nx: usize, ny: usize, pressure: &[f64], scratch: &mut ZoneScratch) -> usize {
+    let ZoneScratch { seen, stack, .. } = scratch;
     seen.clear();
     seen.resize(pressure.len(), false);
     stack.clear();
@@ -188,22 +230,42 @@ fn count_patches(nx: usize, ny: usize, pressure: &[f64], scratch: &mut ZoneScrat
 }
 
 /// Weighted least-squares parabola through the column centres `y_c(x)`, curvature at
-/// `x0`: `kappa = y'' / (1 + y'^2)^(3/2)`.
-fn centre_line_curvature(grid: &Grid2, pressure: &[f64], x0: f64) -> Option<f64> {
+/// `x0`: `kappa = y'' / (1 + y'^2)^(3/2)`. The column sums are gathered row by row (in
+/// memory order) into `scratch`, each column's in the order of its rows.
+fn centre_line_curvature(
+    grid: &Grid2,
+    pressure: &[f64],
+    x0: f64,
+    scratch: &mut ZoneScratch,
+) -> Option<f64> {
     let (nx, ny) = (grid.nx(), grid.ny());
+    let ZoneScratch {
+        column_weight,
+        column_moment,
+        ..
+    } = scratch;
+    column_weight.clear();
+    column_weight.resize(nx, 0.0);
+    column_moment.clear();
+    column_moment.resize(nx, 0.0);
+    for (j, row) in pressure.chunks_exact(nx).take(ny).enumerate() {
+        let y = grid.y(j);
+        for ((w, wy), &p) in column_weight
+            .iter_mut()
+            .zip(column_moment.iter_mut())
+            .zip(row)
+        {
+            if p > 0.0 {
+                *w += p;
+                *wy += p * y;
+            }
+        }
+    }
     // Normal equations of y = c0 + c1 t + c2 t², t = x - x0, weights = column force.
     let mut s = [0.0f64; 5]; // sums of w t^k, k = 0..4
     let mut r = [0.0f64; 3]; // sums of w t^k y_c
     let mut columns = 0;
-    for i in 0..nx {
-        let (mut w, mut wy) = (0.0, 0.0);
-        for j in 0..ny {
-            let p = pressure[j * nx + i];
-            if p > 0.0 {
-                w += p;
-                wy += p * grid.y(j);
-            }
-        }
+    for (i, (&w, &wy)) in column_weight.iter().zip(column_moment.iter()).enumerate() {
         if w > 0.0 {
             columns += 1;
             let (t, yc) = (grid.x(i) - x0, wy / w);
@@ -224,4 +286,146 @@ fn centre_line_curvature(grid: &Grid2, pressure: &[f64], x0: f64) -> Option<f64>
     let c = m.lu().solve(&nalgebra::Vector3::new(r[0], r[1], r[2]))?;
     let slope = c[1];
     Some(2.0 * c[2] / (1.0 + slope * slope).powf(1.5))
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)]
+    use super::*;
+
+    /// A uniform number in [0, 1) from a 64-bit LCG (Knuth's MMIX constants).
+    fn uniform(state: &mut u64) -> f64 {
+        *state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (*state >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    /// The centre line's curvature as it was computed before the column sums were gathered
+    /// row by row: column by column, each over its rows.
+    fn curvature_by_columns(grid: &Grid2, pressure: &[f64], x0: f64) -> Option<f64> {
+        let (nx, ny) = (grid.nx(), grid.ny());
+        let mut s = [0.0f64; 5];
+        let mut r = [0.0f64; 3];
+        let mut columns = 0;
+        for i in 0..nx {
+            let (mut w, mut wy) = (0.0, 0.0);
+            for j in 0..ny {
+                let p = pressure[j * nx + i];
+                if p > 0.0 {
+                    w += p;
+                    wy += p * grid.y(j);
+                }
+            }
+            if w > 0.0 {
+                columns += 1;
+                let (t, yc) = (grid.x(i) - x0, wy / w);
+                let mut tk = 1.0;
+                for (k, sk) in s.iter_mut().enumerate() {
+                    *sk += w * tk;
+                    if k < 3 {
+                        r[k] += w * tk * yc;
+                    }
+                    tk *= t;
+                }
+            }
+        }
+        if columns < 5 {
+            return None;
+        }
+        let m = nalgebra::Matrix3::new(s[0], s[1], s[2], s[1], s[2], s[3], s[2], s[3], s[4]);
+        let c = m.lu().solve(&nalgebra::Vector3::new(r[0], r[1], r[2]))?;
+        Some(2.0 * c[2] / (1.0 + c[1] * c[1]).powf(1.5))
+    }
+
+    /// Fields that exercise both paths of the patch count: turned and banana-shaped
+    /// ellipses (one run per row), rings, two blobs, cells touching at a corner only,
+    /// random speckle, NaN cells, and zones with an empty row between loaded ones.
+    fn fields(grid: &Grid2, state: &mut u64) -> Vec<Vec<f64>> {
+        let mut out = Vec::new();
+        let points: Vec<(f64, f64)> = grid.points().collect();
+        for _ in 0..40 {
+            let (a, b) = (0.2 + uniform(state), 0.2 + uniform(state));
+            let (cx, cy) = (uniform(state) - 0.5, uniform(state) - 0.5);
+            let (s, c) = (6.0 * uniform(state)).sin_cos();
+            let bend = 2.0 * uniform(state) - 1.0;
+            let hole = 0.8 * uniform(state);
+            let ellipse = |&(x, y): &(f64, f64)| {
+                let (x, y) = (x - cx, y - cy);
+                let (u, v) = (c * x + s * y, -s * x + c * y - bend * x * x);
+                1.0 - (u / a).powi(2) - (v / b).powi(2)
+            };
+            out.push(points.iter().map(|p| 1e3 * ellipse(p).max(0.0)).collect());
+            out.push(
+                points
+                    .iter()
+                    .map(|p| {
+                        let e = ellipse(p);
+                        if e > 0.0 && e < hole { 5.0 } else { 0.0 }
+                    })
+                    .collect(),
+            );
+            let density = uniform(state);
+            out.push(
+                points
+                    .iter()
+                    .map(|_| if uniform(state) < density { 1.0 } else { -1.0 })
+                    .collect(),
+            );
+        }
+        let nx = grid.nx();
+        out.push(vec![0.0; grid.len()]);
+        if nx < 4 || grid.ny() < 3 {
+            return out;
+        }
+        let mut corner = vec![0.0; grid.len()];
+        corner[nx + 1] = 1.0;
+        corner[2 * nx + 2] = 1.0;
+        out.push(corner.clone());
+        corner[2 * nx + 1] = f64::NAN;
+        out.push(corner.clone());
+        corner[2 * nx + 1] = 2.0;
+        out.push(corner);
+        let mut gap = vec![0.0; grid.len()];
+        gap[3] = 1.0;
+        gap[2 * nx + 3] = 1.0;
+        out.push(gap.clone());
+        gap[nx + 3] = 1.0;
+        out.push(gap);
+        out
+    }
+
+    /// The row-run shortcut of the patch count says 1 only where the flood fill counts one
+    /// patch, and the count with it equals the flood fill's on every field; the curvature
+    /// from the row-gathered column sums equals the column-by-column one bit for bit.
+    #[test]
+    fn shortcuts_equal_the_full_analysis() {
+        let mut state = 29;
+        let mut scratch = ZoneScratch::default();
+        let (mut shortcut, mut filled) = (0, 0);
+        for (nx, ny) in [(64, 64), (17, 9), (5, 31), (1, 12), (12, 1)] {
+            let grid = Grid2::centered(1.3, 0.9, nx, ny).unwrap();
+            for p in fields(&grid, &mut state) {
+                let flood = flood_fill_patches(nx, ny, &p, &mut scratch);
+                if one_run_per_row(nx, ny, &p) {
+                    assert_eq!(flood, 1, "{nx} x {ny}");
+                    shortcut += 1;
+                } else {
+                    filled += 1;
+                }
+                assert_eq!(count_patches(nx, ny, &p, &mut scratch), flood);
+                let zone = ContactZone::analyse_in(&grid, &p, &mut scratch).unwrap();
+                assert_eq!(zone.patches, flood);
+                if flood > 0 {
+                    let x0 = zone.centroid[0];
+                    let old = curvature_by_columns(&grid, &p, x0).map(f64::to_bits);
+                    let new = centre_line_curvature(&grid, &p, x0, &mut scratch);
+                    assert_eq!(new.map(f64::to_bits), old);
+                    assert_eq!(zone.centre_line_curvature.map(f64::to_bits), old);
+                }
+            }
+        }
+        // Both paths taken, many times.
+        assert!(shortcut > 50 && filled > 50, "{shortcut} {filled}");
+    }
 }

@@ -162,11 +162,48 @@ fn boundary_sums<const REG: bool>(
     total
 }
 
+/// Slots of [`BarusCache`] (a power of two: 2^[`BARUS_BITS`]).
+const BARUS_BITS: u32 = 10;
+
+/// The Barus factors `exp(α p)` of the pressures met so far, by the pressure's bits
+/// (direct-mapped, the last one per slot): a field symmetric about its axes, as a Hertz
+/// ellipse sampled on a centred grid, holds most of its pressures two or four times, bit
+/// for bit, and each takes its exponential once. A hit returns the exponential of the same
+/// number, so the sums are those computed without the cache, bit for bit.
+struct BarusCache {
+    keys: [u64; 1 << BARUS_BITS],
+    values: [f64; 1 << BARUS_BITS],
+}
+
+impl BarusCache {
+    fn new() -> Self {
+        // No pressure the cache is asked about (p > 0) has the bits of this NaN.
+        BarusCache {
+            keys: [u64::MAX; 1 << BARUS_BITS],
+            values: [0.0; 1 << BARUS_BITS],
+        }
+    }
+
+    #[inline(always)]
+    fn get(&mut self, law: &CellLaw, p: f64) -> f64 {
+        let bits = p.to_bits();
+        // Fibonacci hashing: the top bits of the product mix all of the pressure's.
+        let slot = (bits.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> (64 - BARUS_BITS)) as usize;
+        if self.keys[slot] != bits {
+            self.keys[slot] = bits;
+            self.values[slot] = law.barus(p);
+        }
+        self.values[slot]
+    }
+}
+
 /// The fluid part `k = (1 − φ) τ_f(p, |v|) / |v|` over the loaded cells:
-/// `[fx, fy, m, power]` (a transcendental function or two per cell, so only where p > 0).
+/// `[fx, fy, m, power]` (a transcendental function or two per cell, so only where p > 0;
+/// the Barus factor from a [`BarusCache`]).
 fn fluid_sums(grid: &Grid2, pressure: &[f64], field: &VelocityField, law: &CellLaw) -> [f64; 4] {
     let [o, dx, dy] = field.sliding;
     let (nx, h, x0) = (grid.nx(), grid.dx(), grid.x(0));
+    let mut barus = BarusCache::new();
     let mut total = [0.0; 4];
     for j in 0..grid.ny() {
         let y = grid.y(j);
@@ -181,7 +218,7 @@ fn fluid_sums(grid: &Grid2, pressure: &[f64], field: &VelocityField, law: &CellL
             let (vx, vy) = (ox + x * dx[0], oy + x * dx[1]);
             let s2 = vx * vx + vy * vy;
             if s2 > 0.0 {
-                let k = law.fluid_part(p, s2.sqrt());
+                let k = law.fluid_part_with_barus(p, s2.sqrt(), barus.get(law, p));
                 let l = i % LANES;
                 acc[0][l] -= k * vx;
                 acc[1][l] -= k * vy;
@@ -704,4 +741,112 @@ pub fn contact_friction<D>(
         moment: frame.normal.into_inner() * sums.moment,
         asperity_share: law.asperity_share(),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    #![allow(clippy::unwrap_used)]
+    use super::*;
+    use crate::friction::law::{FilmState, FluidShear, FrictionLaw};
+
+    /// [`fluid_sums`] as it was before the Barus cache: the exponential in every cell.
+    fn fluid_sums_uncached(
+        grid: &Grid2,
+        pressure: &[f64],
+        field: &VelocityField,
+        law: &CellLaw,
+    ) -> [f64; 4] {
+        let [o, dx, dy] = field.sliding;
+        let (nx, h, x0) = (grid.nx(), grid.dx(), grid.x(0));
+        let mut total = [0.0; 4];
+        for j in 0..grid.ny() {
+            let y = grid.y(j);
+            let row = &pressure[j * nx..(j + 1) * nx];
+            let (ox, oy) = (o[0] + y * dy[0], o[1] + y * dy[1]);
+            let mut acc = [[0.0; LANES]; 4];
+            for (i, &p) in row.iter().enumerate() {
+                if !(p > 0.0) {
+                    continue;
+                }
+                let x = x0 + i as f64 * h;
+                let (vx, vy) = (ox + x * dx[0], oy + x * dx[1]);
+                let s2 = vx * vx + vy * vy;
+                if s2 > 0.0 {
+                    let k = law.fluid_part(p, s2.sqrt());
+                    let l = i % LANES;
+                    acc[0][l] -= k * vx;
+                    acc[1][l] -= k * vy;
+                    acc[2][l] -= x * k * vy;
+                    acc[3][l] += k * s2;
+                }
+            }
+            let [rfx, rfy, rmx, rpw] = acc.map(|a| a.iter().sum::<f64>());
+            total[0] += rfx;
+            total[1] += rfy;
+            total[2] += rmx - y * rfx;
+            total[3] += rpw;
+        }
+        total
+    }
+
+    /// With the Barus cache the fluid sums are the uncached ones bit for bit: on a Hertz
+    /// field sampled on a centred grid (most pressures repeat by symmetry: the cache's
+    /// hits) and on a field of random pressures, many drawn from a short list (repeats in
+    /// any order) and many distinct (every slot overwritten), for the three fluid laws.
+    #[test]
+    fn barus_cache_leaves_the_sums_unchanged() {
+        let grid = Grid2::centered(1.1, 0.4, 64, 48).unwrap();
+        let hertz: Vec<f64> = grid
+            .points()
+            .map(|(x, y)| {
+                1.4e3
+                    * (1.0 - (x / 1.0).powi(2) - (y / 0.36).powi(2))
+                        .max(0.0)
+                        .sqrt()
+            })
+            .collect();
+        let mut state = 7u64;
+        let mut uniform = || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let list: Vec<f64> = (0..40).map(|_| 2e3 * uniform()).collect();
+        let random: Vec<f64> = (0..grid.len())
+            .map(|k| match k % 3 {
+                0 => list[(40.0 * uniform()) as usize],
+                1 => 2e3 * uniform() - 200.0,
+                _ => 0.0,
+            })
+            .collect();
+        let field = VelocityField {
+            sliding: [[350.0, -40.0], [25.0, 80.0], [-60.0, 15.0]],
+            entrainment: [[0.0; 2]; 3],
+        };
+        let film = FilmState::new(4e-4, 0.6, 4e-8, 0.02).unwrap();
+        let fluids = [
+            FluidShear::Newtonian,
+            FluidShear::Eyring { tau0: 5.0 },
+            FluidShear::LimitingShear {
+                tau_l0: 2.0,
+                slope: 0.07,
+            },
+        ];
+        for fluid in fluids {
+            let law = FrictionLaw {
+                fluid,
+                ..FrictionLaw::mixed(0.1).unwrap()
+            }
+            .with_film(&film)
+            .unwrap();
+            assert!(law.has_fluid());
+            for p in [&hertz, &random] {
+                let new = fluid_sums(&grid, p, &field, &law).map(f64::to_bits);
+                let old = fluid_sums_uncached(&grid, p, &field, &law).map(f64::to_bits);
+                assert_eq!(new, old, "{fluid:?}");
+                assert!(old.iter().all(|&b| b != 0));
+            }
+        }
+    }
 }

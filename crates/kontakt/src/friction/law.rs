@@ -349,6 +349,19 @@ impl CellLaw {
         self.fluid_share * self.fluid_drag(p, speed)
     }
 
+    /// The Barus factor `exp(α p)` of this law's film at the pressure `p` \[MPa\].
+    #[inline]
+    pub(crate) fn barus(&self, p: f64) -> f64 {
+        (self.alpha * p).exp()
+    }
+
+    /// [`CellLaw::fluid_part`] with `barus` = [`CellLaw::barus`] of `p` given: the same
+    /// number bit for bit (for a law with a fluid part).
+    #[inline]
+    pub(crate) fn fluid_part_with_barus(&self, p: f64, speed: f64, barus: f64) -> f64 {
+        self.fluid_share * self.fluid_drag_barus(p, speed, self.alpha * p, barus)
+    }
+
     /// The factor `k` \[MPa·s/mm\] with `τ = −k v` the shear stress on body 1 for the
     /// pressure `p` \[MPa\] and the sliding velocity `v` of body 1 \[mm/s\] with speed
     /// `speed = |v|`. `k ≥ 0`; the dissipated power density is `k |v|²` \[MPa·mm/s\]. At

@@ -552,6 +552,20 @@ impl HertzPointSolution {
                 row.fill(0.0);
                 continue;
             }
+            if s == 0.0 && c == 1.0 {
+                // Unturned (the principal grid): `xp = x + 0·y` and `yp = −0·x + y` are
+                // `±x` and `±y`, so the row's `(yp/b)²` is one number (computed once).
+                let ry = (y / b).powi(2);
+                for (i, o) in row.iter_mut().enumerate() {
+                    let r2 = (grid.x(i) / a).powi(2) + ry;
+                    *o = if r2 < 1.0 {
+                        self.max_pressure * (1.0 - r2).sqrt()
+                    } else {
+                        0.0
+                    };
+                }
+                continue;
+            }
             for (i, o) in row.iter_mut().enumerate() {
                 let x = grid.x(i);
                 let xp = c * x + s * y;
@@ -597,15 +611,24 @@ mod tests {
             .unwrap();
         assert!(h.orientation != 0.0);
         let [a, _] = h.semi_axes;
-        for half in [1.6 * a, 0.5 * a] {
-            let grid = Grid2::centered(half, 0.9 * half, 37, 29).unwrap();
-            let sampled = h.sample_pressure(&grid);
-            let mut inside = 0;
-            for ((x, y), p) in grid.points().zip(&sampled) {
-                assert_eq!(p.to_bits(), h.pressure_at(x, y).to_bits(), "({x}, {y})");
-                inside += usize::from(*p > 0.0);
+        // Turned, and unturned as `on_principal_grid` samples it (the row's `(y/b)²` once).
+        let unturned = HertzPointSolution {
+            orientation: 0.0,
+            ..h
+        };
+        for h in [h, unturned] {
+            for half in [1.6 * a, 0.5 * a] {
+                for (nx, ny) in [(37, 29), (64, 64)] {
+                    let grid = Grid2::centered(half, 0.9 * half, nx, ny).unwrap();
+                    let sampled = h.sample_pressure(&grid);
+                    let mut inside = 0;
+                    for ((x, y), p) in grid.points().zip(&sampled) {
+                        assert_eq!(p.to_bits(), h.pressure_at(x, y).to_bits(), "({x}, {y})");
+                        inside += usize::from(*p > 0.0);
+                    }
+                    assert!(inside > 0 && inside < grid.len(), "{inside}");
+                }
             }
-            assert!(inside > 0 && inside < grid.len(), "{inside}");
         }
     }
 
