@@ -173,6 +173,8 @@ const BARUS_BITS: u32 = 10;
 struct BarusCache {
     keys: [u64; 1 << BARUS_BITS],
     values: [f64; 1 << BARUS_BITS],
+    lookups: usize,
+    misses: usize,
 }
 
 impl BarusCache {
@@ -181,6 +183,8 @@ impl BarusCache {
         BarusCache {
             keys: [u64::MAX; 1 << BARUS_BITS],
             values: [0.0; 1 << BARUS_BITS],
+            lookups: 0,
+            misses: 0,
         }
     }
 
@@ -192,10 +196,24 @@ impl BarusCache {
         if self.keys[slot] != bits {
             self.keys[slot] = bits;
             self.values[slot] = law.barus(p);
+            self.misses += 1;
         }
+        self.lookups += 1;
         self.values[slot]
     }
+
+    /// Whether the field repeats its pressures (a Hertz field on a centred grid, mirrored
+    /// in x within each row): after the first rows' [`BARUS_TRIAL`] lookups, at least one in
+    /// four a hit. A field that does not (PimP's, the half-space solver's) computes its
+    /// factors directly from then on: the cache's lookups would only cost. Either way the
+    /// same bits.
+    fn worth_it(&self) -> bool {
+        self.lookups < BARUS_TRIAL || 4 * (self.lookups - self.misses) >= self.lookups
+    }
 }
+
+/// Lookups after which [`BarusCache::worth_it`] judges the field.
+const BARUS_TRIAL: usize = 64;
 
 /// The fluid part `k = (1 − φ) τ_f(p, |v|) / |v|` over the loaded cells:
 /// `[fx, fy, m, power]` (a transcendental function or two per cell, so only where p > 0;
@@ -204,10 +222,12 @@ fn fluid_sums(grid: &Grid2, pressure: &[f64], field: &VelocityField, law: &CellL
     let [o, dx, dy] = field.sliding;
     let (nx, h, x0) = (grid.nx(), grid.dx(), grid.x(0));
     let mut barus = BarusCache::new();
+    let mut cached = true;
     let mut total = [0.0; 4];
     for j in 0..grid.ny() {
         let y = grid.y(j);
         let row = &pressure[j * nx..(j + 1) * nx];
+        cached = cached && barus.worth_it();
         let (ox, oy) = (o[0] + y * dy[0], o[1] + y * dy[1]);
         let mut acc = [[0.0; LANES]; 4];
         for (i, &p) in row.iter().enumerate() {
@@ -218,7 +238,12 @@ fn fluid_sums(grid: &Grid2, pressure: &[f64], field: &VelocityField, law: &CellL
             let (vx, vy) = (ox + x * dx[0], oy + x * dx[1]);
             let s2 = vx * vx + vy * vy;
             if s2 > 0.0 {
-                let k = law.fluid_part_with_barus(p, s2.sqrt(), barus.get(law, p));
+                let factor = if cached {
+                    barus.get(law, p)
+                } else {
+                    law.barus(p)
+                };
+                let k = law.fluid_part_with_barus(p, s2.sqrt(), factor);
                 let l = i % LANES;
                 acc[0][l] -= k * vx;
                 acc[1][l] -= k * vy;
